@@ -1,0 +1,34 @@
+package ifold.geom;
+
+/**
+ * The numerical tolerances of the geometry core, in one place so that no algorithm invents its
+ * own {@code 1e-9}. All are relative: a length is compared with the size of what it belongs to.
+ */
+public final class Tolerance {
+    private Tolerance() {
+    }
+
+    /**
+     * A triangle whose doubled area is at most this times its longest edge squared is treated as
+     * having no area: its smallest angle is then below about 1e-12 radians, far below anything a
+     * model means on purpose, and far above the rounding error of the cross product.
+     */
+    public static final double DEGENERATE_AREA = 1e-12;
+
+    /**
+     * Relative agreement asked of lengths and areas that should be equal after an exact
+     * construction (refinement preserves area, folding preserves edge lengths).
+     */
+    public static final double RELATIVE_EQUALITY = 1e-9;
+
+    /** Whether a triangle with doubled area {@code twiceArea} and longest edge squared {@code longestSquared} has no area. */
+    public static boolean isDegenerateTriangle(double twiceArea, double longestSquared) {
+        return !(twiceArea > DEGENERATE_AREA * longestSquared);
+    }
+
+    /** Whether {@code a} and {@code b} agree to {@link #RELATIVE_EQUALITY} of the larger magnitude (or of 1 near zero). */
+    public static boolean nearlyEqual(double a, double b) {
+        double scale = Math.max(1.0, Math.max(Math.abs(a), Math.abs(b)));
+        return Math.abs(a - b) <= RELATIVE_EQUALITY * scale;
+    }
+}

@@ -1,0 +1,739 @@
+package ifold.mesh;
+
+import ifold.geom.PolygonTriangulator;
+import ifold.geom.Polygons;
+import ifold.geom.Triangles;
+import java.util.Arrays;
+import java.util.EnumMap;
+import java.util.Map;
+
+/**
+ * Turns a polygon soup into a valid {@link HalfedgeMesh}, repairing what real models get wrong
+ * or, in strict mode, refusing it.
+ *
+ * <p>The steps, each linear in the size of the input (up to small per-edge sorts):
+ * <ol>
+ *   <li>clean each face: indices in range, repeated corners removed, faces with fewer than
+ *       three distinct vertices or no area dropped; polygons optionally triangulated by
+ *       {@link PolygonTriangulator} (ear clipping);</li>
+ *   <li>drop faces with the same vertex set as an earlier face;</li>
+ *   <li>group corners by undirected edge (a bucket per lower vertex);</li>
+ *   <li>orient each component consistently by a breadth-first walk over edges shared by exactly
+ *       two faces, turning over the fewer faces; an edge that contradicts the walk (a Moebius
+ *       band) is cut; closed components with negative volume are turned outward;</li>
+ *   <li>pair each edge's two halfedges; an edge with more than two faces keeps one opposite
+ *       pair and the others become boundary, so non-manifold edges are split;</li>
+ *   <li>split pinch vertices: each fan of faces around a vertex gets a vertex of its own;</li>
+ *   <li>link the boundary loops.</li>
+ * </ol>
+ * Every repair is counted by {@link Defect} kind in the result. Input vertices keep their order
+ * (unreferenced ones are left out) and vertices made by splitting pinches come after them.
+ */
+public final class MeshBuilder {
+
+    /**
+     * @param strict refuse any defect instead of repairing it
+     * @param triangulate split polygons into triangles
+     */
+    public record Options(boolean strict, boolean triangulate) {
+        public static final Options REPAIR = new Options(false, false);
+        public static final Options REPAIR_TRIANGULATE = new Options(false, true);
+    }
+
+    /**
+     * What the builder made.
+     *
+     * @param mesh the valid halfedge mesh
+     * @param repairs how many repairs of each kind were made (kinds with none are absent)
+     * @param sourceFace for each mesh face, the input face it came from
+     * @param sourceVertex for each mesh vertex, the input vertex it came from
+     */
+    public record Result(HalfedgeMesh mesh, Map<Defect, Integer> repairs, int[] sourceFace, int[] sourceVertex) {
+        public int repairCount() {
+            return repairs.values().stream().mapToInt(Integer::intValue).sum();
+        }
+    }
+
+    private final IndexedPolygons soup;
+    private final Options options;
+    private final double[] xyz;
+    private final EnumMap<Defect, Integer> repairs = new EnumMap<>(Defect.class);
+
+    // Working faces after cleaning: wStart[f]..wStart[f+1] index wVerts; wSource[f] is the input face.
+    private int[] wStart;
+    private int[] wVerts;
+    private int[] wSource;
+    private int wFaceCount;
+    private int wCornerCount;
+
+    private MeshBuilder(IndexedPolygons soup, Options options) {
+        this.soup = soup;
+        this.options = options;
+        int n = soup.vertexCount();
+        xyz = new double[3 * n];
+        for (int v = 0; v < n; v++) {
+            xyz[3 * v] = soup.coordinate(v, 0);
+            xyz[3 * v + 1] = soup.coordinate(v, 1);
+            xyz[3 * v + 2] = soup.coordinate(v, 2);
+        }
+    }
+
+    /** Builds a mesh from {@code soup}; see the class documentation for what is repaired. */
+    public static Result build(IndexedPolygons soup, Options options) throws InvalidMeshException {
+        return new MeshBuilder(soup, options).run();
+    }
+
+    /** Builds with repairs and no triangulation. */
+    public static Result build(IndexedPolygons soup) throws InvalidMeshException {
+        return build(soup, Options.REPAIR);
+    }
+
+    private Result run() throws InvalidMeshException {
+        checkCoordinates();
+        cleanFaces();
+        dropDuplicateFaces();
+        int[] cornerFace = cornerFaces();
+        int[] byMin = new int[wCornerCount];
+        int[] groupOfCorner = new int[wCornerCount];
+        int groupCount = groupCornersByEdge(cornerFace, byMin, groupOfCorner);
+        int[] groupStart = groupStarts(byMin, groupOfCorner, groupCount);
+        boolean[] cut = new boolean[groupCount];
+        boolean[] flip = orient(cornerFace, byMin, groupOfCorner, groupStart, cut);
+        reverseFlippedFaces(flip, cornerFace, byMin, groupOfCorner);
+        return assemble(cornerFace, byMin, groupOfCorner, groupStart, cut);
+    }
+
+    // ---- step 1: clean faces ----------------------------------------------------------------
+
+    private void checkCoordinates() throws InvalidMeshException {
+        for (int i = 0; i < xyz.length; i++) {
+            if (!Double.isFinite(xyz[i])) {
+                throw new InvalidMeshException(Defect.NON_FINITE_COORDINATE, 0,
+                        "vertex " + (i / 3) + " has a non-finite coordinate (" + xyz[i] + ")");
+            }
+        }
+    }
+
+    private void cleanFaces() throws InvalidMeshException {
+        int faceCount = soup.faceCount();
+        int vertexCount = soup.vertexCount();
+        wStart = new int[faceCount + 1];
+        wVerts = new int[Math.max(16, 3 * faceCount)];
+        wSource = new int[Math.max(16, faceCount)];
+        int[] polygon = new int[16];
+        int[] triangles = new int[3 * 16];
+        for (int f = 0; f < faceCount; f++) {
+            int size = soup.faceSize(f);
+            if (size > polygon.length) {
+                polygon = new int[2 * size];
+                triangles = new int[6 * size];
+            }
+            int kept = 0;
+            for (int k = 0; k < size; k++) {
+                int v = soup.faceVertex(f, k);
+                if (v < 0 || v >= vertexCount) {
+                    throw refuse(Defect.INDEX_OUT_OF_RANGE, f, "face " + f + " refers to vertex " + v
+                            + " but there are " + vertexCount + " vertices");
+                }
+                if (kept == 0 || polygon[kept - 1] != v) {
+                    polygon[kept++] = v;
+                }
+            }
+            while (kept > 1 && polygon[kept - 1] == polygon[0]) {
+                kept--;
+            }
+            if (kept < size) {
+                repair(Defect.REPEATED_VERTEX, f, 1);
+            }
+            if (kept < 3 || visitsVertexTwice(polygon, kept)) {
+                repair(Defect.DEGENERATE_FACE, f, 1);
+                continue;
+            }
+            if (kept == 3 || options.triangulate()) {
+                int count = PolygonTriangulator.triangulate(xyz, polygon, kept, triangles);
+                if (count == 0) {
+                    repair(Defect.ZERO_AREA_FACE, f, 1);
+                    continue;
+                }
+                for (int t = 0; t < count; t++) {
+                    int a = triangles[3 * t];
+                    int b = triangles[3 * t + 1];
+                    int c = triangles[3 * t + 2];
+                    if (Triangles.isDegenerate(xyz, a, b, c)) {
+                        repair(Defect.ZERO_AREA_FACE, f, 1);
+                    } else {
+                        addWorkingFace(triangles, 3 * t, 3, f);
+                    }
+                }
+            } else if (!Polygons.hasArea(xyz, polygon, kept)) {
+                repair(Defect.ZERO_AREA_FACE, f, 1);
+            } else {
+                addWorkingFace(polygon, 0, kept, f);
+            }
+        }
+    }
+
+    private static boolean visitsVertexTwice(int[] polygon, int size) {
+        for (int i = 0; i < size; i++) {
+            for (int j = i + 1; j < size; j++) {
+                if (polygon[i] == polygon[j]) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    private void addWorkingFace(int[] vertices, int offset, int size, int source) {
+        if (wCornerCount + size > wVerts.length) {
+            wVerts = Arrays.copyOf(wVerts, Math.max(2 * wVerts.length, wCornerCount + size));
+        }
+        if (wFaceCount + 2 > wStart.length) {
+            wStart = Arrays.copyOf(wStart, 2 * wStart.length);
+        }
+        if (wFaceCount + 1 > wSource.length) {
+            wSource = Arrays.copyOf(wSource, 2 * wSource.length);
+        }
+        System.arraycopy(vertices, offset, wVerts, wCornerCount, size);
+        wCornerCount += size;
+        wSource[wFaceCount] = source;
+        wStart[++wFaceCount] = wCornerCount;
+    }
+
+    // ---- step 2: duplicate faces ------------------------------------------------------------
+
+    private void dropDuplicateFaces() throws InvalidMeshException {
+        int capacity = Integer.highestOneBit(Math.max(4, 2 * wFaceCount)) << 1;
+        int[] table = new int[capacity]; // face + 1, 0 for empty
+        boolean[] drop = new boolean[wFaceCount];
+        int dropped = 0;
+        for (int f = 0; f < wFaceCount; f++) {
+            int slot = faceKeyHash(f) & (capacity - 1);
+            while (table[slot] != 0) {
+                if (sameVertexSet(table[slot] - 1, f)) {
+                    drop[f] = true;
+                    break;
+                }
+                slot = (slot + 1) & (capacity - 1);
+            }
+            if (drop[f]) {
+                repair(Defect.DUPLICATE_FACE, wSource[f], 1);
+                dropped++;
+            } else {
+                table[slot] = f + 1;
+            }
+        }
+        if (dropped > 0) {
+            compactWorkingFaces(drop);
+        }
+    }
+
+    /** A hash of the face's vertex set that does not depend on order or orientation. */
+    private int faceKeyHash(int f) {
+        long sum = 0;
+        long xor = 0;
+        for (int c = wStart[f]; c < wStart[f + 1]; c++) {
+            long mixed = (wVerts[c] + 1L) * 0x9E3779B97F4A7C15L;
+            mixed ^= mixed >>> 29;
+            sum += mixed;
+            xor ^= mixed * 0xBF58476D1CE4E5B9L;
+        }
+        long h = sum * 31 + xor;
+        return (int) (h ^ (h >>> 32));
+    }
+
+    private boolean sameVertexSet(int f, int g) {
+        int size = wStart[f + 1] - wStart[f];
+        if (size != wStart[g + 1] - wStart[g]) {
+            return false;
+        }
+        for (int c = wStart[f]; c < wStart[f + 1]; c++) {
+            boolean found = false;
+            for (int d = wStart[g]; d < wStart[g + 1] && !found; d++) {
+                found = wVerts[c] == wVerts[d];
+            }
+            if (!found) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private void compactWorkingFaces(boolean[] drop) {
+        int faces = 0;
+        int corners = 0;
+        for (int f = 0; f < wFaceCount; f++) {
+            if (drop[f]) {
+                continue;
+            }
+            int start = wStart[f];
+            int size = wStart[f + 1] - start;
+            System.arraycopy(wVerts, start, wVerts, corners, size);
+            wSource[faces] = wSource[f];
+            wStart[faces] = corners;
+            corners += size;
+            faces++;
+        }
+        wStart[faces] = corners;
+        wFaceCount = faces;
+        wCornerCount = corners;
+    }
+
+    // ---- step 3: group corners by undirected edge -------------------------------------------
+
+    private int[] cornerFaces() {
+        int[] cornerFace = new int[wCornerCount];
+        for (int f = 0; f < wFaceCount; f++) {
+            Arrays.fill(cornerFace, wStart[f], wStart[f + 1], f);
+        }
+        return cornerFace;
+    }
+
+    /** The vertex the edge of corner {@code c} starts from. */
+    private int cornerFrom(int c) {
+        return wVerts[c];
+    }
+
+    /** The vertex the edge of corner {@code c} points to: the next corner of its face. */
+    private int cornerTo(int c, int[] cornerFace) {
+        int f = cornerFace[c];
+        return c + 1 < wStart[f + 1] ? wVerts[c + 1] : wVerts[wStart[f]];
+    }
+
+    /**
+     * Sorts corners into {@code byMin} by the lower vertex of their edge, then by the higher, so
+     * that the corners of one undirected edge are adjacent; numbers the edges ("groups") in that
+     * order into {@code groupOfCorner}.
+     *
+     * @return the number of groups
+     */
+    private int groupCornersByEdge(int[] cornerFace, int[] byMin, int[] groupOfCorner) {
+        int vertexCount = soup.vertexCount();
+        int[] bucketStart = new int[vertexCount + 1];
+        int[] low = new int[wCornerCount];
+        int[] high = new int[wCornerCount];
+        for (int c = 0; c < wCornerCount; c++) {
+            int a = cornerFrom(c);
+            int b = cornerTo(c, cornerFace);
+            low[c] = Math.min(a, b);
+            high[c] = Math.max(a, b);
+            bucketStart[low[c] + 1]++;
+        }
+        for (int v = 0; v < vertexCount; v++) {
+            bucketStart[v + 1] += bucketStart[v];
+        }
+        int[] fill = Arrays.copyOf(bucketStart, vertexCount);
+        for (int c = 0; c < wCornerCount; c++) {
+            byMin[fill[low[c]]++] = c;
+        }
+        int groups = 0;
+        for (int v = 0; v < vertexCount; v++) {
+            int start = bucketStart[v];
+            int end = bucketStart[v + 1];
+            // A bucket holds the few edges of one vertex: insertion sort by the higher vertex.
+            for (int i = start + 1; i < end; i++) {
+                int c = byMin[i];
+                int key = high[c];
+                int j = i - 1;
+                while (j >= start && high[byMin[j]] > key) {
+                    byMin[j + 1] = byMin[j];
+                    j--;
+                }
+                byMin[j + 1] = c;
+            }
+            int previousHigh = -1;
+            for (int i = start; i < end; i++) {
+                if (high[byMin[i]] != previousHigh) {
+                    groups++;
+                    previousHigh = high[byMin[i]];
+                }
+                groupOfCorner[byMin[i]] = groups - 1;
+            }
+        }
+        return groups;
+    }
+
+    /** groupStart[g]..groupStart[g+1] index the corners of group g in byMin. */
+    private static int[] groupStarts(int[] byMin, int[] groupOfCorner, int groupCount) {
+        int[] groupStart = new int[groupCount + 1];
+        for (int i = 0; i < byMin.length; i++) {
+            groupStart[groupOfCorner[byMin[i]] + 1]++;
+        }
+        for (int g = 0; g < groupCount; g++) {
+            groupStart[g + 1] += groupStart[g];
+        }
+        return groupStart;
+    }
+
+    // ---- step 4: orientation ----------------------------------------------------------------
+
+    private boolean[] orient(int[] cornerFace, int[] byMin, int[] groupOfCorner, int[] groupStart, boolean[] cut)
+            throws InvalidMeshException {
+        boolean[] flip = new boolean[wFaceCount];
+        int[] component = new int[wFaceCount];
+        Arrays.fill(component, -1);
+        int[] queue = new int[wFaceCount];
+        int components = 0;
+        for (int seed = 0; seed < wFaceCount; seed++) {
+            if (component[seed] >= 0) {
+                continue;
+            }
+            int head = 0;
+            int tail = 0;
+            queue[tail++] = seed;
+            component[seed] = components;
+            int flipped = 0;
+            boolean closed = true;
+            while (head < tail) {
+                int f = queue[head++];
+                for (int c = wStart[f]; c < wStart[f + 1]; c++) {
+                    int g = groupOfCorner[c];
+                    if (groupStart[g + 1] - groupStart[g] != 2) {
+                        closed = false;
+                        continue;
+                    }
+                    int o = byMin[groupStart[g]] == c ? byMin[groupStart[g] + 1] : byMin[groupStart[g]];
+                    int of = cornerFace[o];
+                    if (of == f) {
+                        closed = false;
+                        continue;
+                    }
+                    boolean sameDirection = cornerFrom(c) == cornerFrom(o);
+                    boolean wanted = flip[f] ^ sameDirection;
+                    if (component[of] < 0) {
+                        component[of] = components;
+                        flip[of] = wanted;
+                        if (wanted) {
+                            flipped++;
+                        }
+                        queue[tail++] = of;
+                    } else if (flip[of] != wanted && !cut[g]) {
+                        if (options.strict()) {
+                            throw refuse(Defect.NON_ORIENTABLE, wSource[f], "face " + wSource[f]
+                                    + ": " + Defect.NON_ORIENTABLE.description());
+                        }
+                        cut[g] = true;
+                        closed = false;
+                        repairs.merge(Defect.NON_ORIENTABLE, 1, Integer::sum);
+                    } else if (cut[g]) {
+                        closed = false;
+                    }
+                }
+            }
+            int size = tail;
+            // Turn over the minority: the side most faces agree on is taken as meant.
+            boolean invert = 2 * flipped > size;
+            int turned = invert ? size - flipped : flipped;
+            if (turned > 0) {
+                if (options.strict()) {
+                    int example = firstDisagreeing(queue, size, flip, invert);
+                    throw refuse(Defect.INCONSISTENT_ORIENTATION, wSource[example], "face " + wSource[example]
+                            + ": " + Defect.INCONSISTENT_ORIENTATION.description());
+                }
+                repair(Defect.INCONSISTENT_ORIENTATION, wSource[seed], turned);
+            }
+            if (invert) {
+                for (int i = 0; i < size; i++) {
+                    flip[queue[i]] = !flip[queue[i]];
+                }
+            }
+            if (closed && signedVolume(queue, size, flip) < 0) {
+                for (int i = 0; i < size; i++) {
+                    flip[queue[i]] = !flip[queue[i]];
+                }
+                repairs.merge(Defect.INWARD_COMPONENT, 1, Integer::sum);
+            }
+            components++;
+        }
+        return flip;
+    }
+
+    private static int firstDisagreeing(int[] faces, int size, boolean[] flip, boolean invert) {
+        for (int i = 0; i < size; i++) {
+            if (flip[faces[i]] != invert) {
+                return faces[i];
+            }
+        }
+        return faces[0];
+    }
+
+    /** Six times the signed volume enclosed by the faces, as they will be oriented. */
+    private double signedVolume(int[] faces, int size, boolean[] flip) {
+        double volume = 0;
+        for (int i = 0; i < size; i++) {
+            int f = faces[i];
+            int a = wVerts[wStart[f]];
+            double faceVolume = 0;
+            for (int c = wStart[f] + 1; c + 1 < wStart[f + 1]; c++) {
+                faceVolume += tripleProduct(a, wVerts[c], wVerts[c + 1]);
+            }
+            volume += flip[f] ? -faceVolume : faceVolume;
+        }
+        return volume;
+    }
+
+    private double tripleProduct(int a, int b, int c) {
+        double ax = xyz[3 * a];
+        double ay = xyz[3 * a + 1];
+        double az = xyz[3 * a + 2];
+        double bx = xyz[3 * b];
+        double by = xyz[3 * b + 1];
+        double bz = xyz[3 * b + 2];
+        double cx = xyz[3 * c];
+        double cy = xyz[3 * c + 1];
+        double cz = xyz[3 * c + 2];
+        return ax * (by * cz - bz * cy) + ay * (bz * cx - bx * cz) + az * (bx * cy - by * cx);
+    }
+
+    /**
+     * Reverses the vertex lists of flipped faces. Corner k of a reversed face of n corners is
+     * the edge that was corner n - 2 - k (and the other way round), so the corner's edge group
+     * and its place in {@code byMin} move with it.
+     */
+    private void reverseFlippedFaces(boolean[] flip, int[] cornerFace, int[] byMin, int[] groupOfCorner) {
+        for (int i = 0; i < byMin.length; i++) {
+            int c = byMin[i];
+            int f = cornerFace[c];
+            if (flip[f]) {
+                int start = wStart[f];
+                int n = wStart[f + 1] - start;
+                byMin[i] = start + Math.floorMod(n - 2 - (c - start), n);
+            }
+        }
+        int[] groups = new int[16];
+        for (int f = 0; f < wFaceCount; f++) {
+            if (!flip[f]) {
+                continue;
+            }
+            int start = wStart[f];
+            int n = wStart[f + 1] - start;
+            if (groups.length < n) {
+                groups = new int[2 * n];
+            }
+            for (int k = 0; k < n; k++) {
+                groups[k] = groupOfCorner[start + Math.floorMod(n - 2 - k, n)];
+            }
+            for (int i = 0, j = n - 1; i < j; i++, j--) {
+                int swap = wVerts[start + i];
+                wVerts[start + i] = wVerts[start + j];
+                wVerts[start + j] = swap;
+            }
+            System.arraycopy(groups, 0, groupOfCorner, start, n);
+        }
+    }
+
+    // ---- steps 5 to 7: pair, split pinches, link boundaries ----------------------------------
+
+    private Result assemble(int[] cornerFace, int[] byMin, int[] groupOfCorner, int[] groupStart, boolean[] cut)
+            throws InvalidMeshException {
+        int groupCount = groupStart.length - 1;
+        // Pair halfedges: cornerPartner[c] is the corner across the edge, or -1 for boundary.
+        int[] cornerPartner = new int[wCornerCount];
+        Arrays.fill(cornerPartner, -1);
+        int pairs = 0;
+        for (int g = 0; g < groupCount; g++) {
+            int start = groupStart[g];
+            int size = groupStart[g + 1] - start;
+            if (size < 2 || cut[g]) {
+                continue;
+            }
+            if (size > 2) {
+                if (options.strict()) {
+                    int f = wSource[cornerFace[byMin[start]]];
+                    throw refuse(Defect.NON_MANIFOLD_EDGE, f, "face " + f + ": edge "
+                            + cornerFrom(byMin[start]) + "-" + cornerTo(byMin[start], cornerFace)
+                            + " is shared by " + size + " faces");
+                }
+                repair(Defect.NON_MANIFOLD_EDGE, wSource[cornerFace[byMin[start]]], 1);
+            }
+            // Join the first two corners of opposite direction in different faces; the rest
+            // stay boundary, which splits a non-manifold edge.
+            search:
+            for (int i = start; i < start + size; i++) {
+                for (int j = i + 1; j < start + size; j++) {
+                    int c = byMin[i];
+                    int d = byMin[j];
+                    if (cornerFrom(c) != cornerFrom(d) && cornerFace[c] != cornerFace[d]) {
+                        cornerPartner[c] = d;
+                        cornerPartner[d] = c;
+                        pairs++;
+                        break search;
+                    }
+                }
+            }
+        }
+        int edgeCount = wCornerCount - pairs;
+        int halfedgeCount = 2 * edgeCount;
+        int[] cornerHalfedge = new int[wCornerCount];
+        int[] toVertex = new int[halfedgeCount];
+        int[] face = new int[halfedgeCount];
+        int[] next = new int[halfedgeCount];
+        int[] prev = new int[halfedgeCount];
+        Arrays.fill(cornerHalfedge, -1);
+        int h = 0;
+        for (int c = 0; c < wCornerCount; c++) {
+            if (cornerHalfedge[c] >= 0) {
+                continue;
+            }
+            cornerHalfedge[c] = h;
+            int d = cornerPartner[c];
+            if (d >= 0) {
+                cornerHalfedge[d] = h + 1;
+            } else {
+                // The twin is a boundary halfedge pointing back to the corner's start.
+                toVertex[h + 1] = cornerFrom(c);
+                face[h + 1] = -1;
+            }
+            h += 2;
+        }
+        int[] faceHalfedge = new int[wFaceCount];
+        for (int f = 0; f < wFaceCount; f++) {
+            int start = wStart[f];
+            int end = wStart[f + 1];
+            faceHalfedge[f] = cornerHalfedge[start];
+            for (int c = start; c < end; c++) {
+                int hc = cornerHalfedge[c];
+                int hn = cornerHalfedge[c + 1 < end ? c + 1 : start];
+                toVertex[hc] = wVerts[c + 1 < end ? c + 1 : start];
+                face[hc] = f;
+                next[hc] = hn;
+                prev[hn] = hc;
+            }
+        }
+
+        // Vertices: referenced input vertices keep their order; pinch splits come after.
+        int inputVertices = soup.vertexCount();
+        int[] meshVertex = new int[inputVertices];
+        Arrays.fill(meshVertex, -1);
+        int vertexCount = 0;
+        for (int c = 0; c < wCornerCount; c++) {
+            meshVertex[wVerts[c]] = 0;
+        }
+        int unreferenced = 0;
+        int firstUnreferenced = -1;
+        for (int v = 0; v < inputVertices; v++) {
+            if (meshVertex[v] == 0) {
+                meshVertex[v] = vertexCount++;
+            } else {
+                unreferenced++;
+                if (firstUnreferenced < 0) {
+                    firstUnreferenced = v;
+                }
+            }
+        }
+        if (unreferenced > 0) {
+            if (options.strict()) {
+                throw new InvalidMeshException(Defect.UNREFERENCED_VERTEX, 0,
+                        "vertex " + firstUnreferenced + ": " + Defect.UNREFERENCED_VERTEX.description());
+            }
+            repairs.merge(Defect.UNREFERENCED_VERTEX, unreferenced, Integer::sum);
+        }
+        for (int i = 0; i < halfedgeCount; i++) {
+            toVertex[i] = meshVertex[toVertex[i]];
+        }
+        int[] sourceVertex = new int[Math.max(4, vertexCount + vertexCount / 8)];
+        for (int v = 0; v < inputVertices; v++) {
+            if (meshVertex[v] >= 0) {
+                sourceVertex[meshVertex[v]] = v;
+            }
+        }
+
+        // Split pinches: walk each fan of faces around a vertex once; a vertex already claimed
+        // by an earlier fan gets a copy for this one.
+        int[] vertexHalfedge = new int[sourceVertex.length];
+        Arrays.fill(vertexHalfedge, -1);
+        boolean[] visited = new boolean[halfedgeCount];
+        boolean[] pinched = new boolean[vertexCount];
+        int pinchCount = 0;
+        for (int start = 0; start < halfedgeCount; start++) {
+            if (face[start] < 0 || visited[start]) {
+                continue;
+            }
+            // Turn clockwise to the first halfedge of the fan (or all the way round).
+            int first = start;
+            while (face[first ^ 1] >= 0) {
+                int cw = next[first ^ 1];
+                if (cw == start) {
+                    break;
+                }
+                first = cw;
+            }
+            int v = toVertex[prev[first]];
+            if (vertexHalfedge[v] >= 0) {
+                if (options.strict()) {
+                    throw new InvalidMeshException(Defect.NON_MANIFOLD_VERTEX, 0, "vertex "
+                            + sourceVertex[v] + ": " + Defect.NON_MANIFOLD_VERTEX.description());
+                }
+                if (!pinched[v]) {
+                    pinched[v] = true;
+                    pinchCount++;
+                }
+                if (vertexCount == sourceVertex.length) {
+                    sourceVertex = Arrays.copyOf(sourceVertex, 2 * vertexCount);
+                    vertexHalfedge = Arrays.copyOf(vertexHalfedge, 2 * vertexCount);
+                }
+                sourceVertex[vertexCount] = sourceVertex[v];
+                vertexHalfedge[vertexCount] = -1;
+                v = vertexCount++;
+            }
+            vertexHalfedge[v] = first;
+            int hFan = first;
+            while (true) {
+                visited[hFan] = true;
+                toVertex[prev[hFan]] = v;
+                toVertex[hFan ^ 1] = v;
+                int ccw = prev[hFan] ^ 1;
+                if (face[ccw] < 0) {
+                    vertexHalfedge[v] = ccw; // the boundary halfedge leaving this fan
+                    break;
+                }
+                if (ccw == first) {
+                    break;
+                }
+                hFan = ccw;
+            }
+        }
+        if (pinchCount > 0) {
+            repairs.merge(Defect.NON_MANIFOLD_VERTEX, pinchCount, Integer::sum);
+        }
+
+        // Boundary loops: each vertex now has at most one boundary halfedge leaving it.
+        for (int b = 0; b < halfedgeCount; b++) {
+            if (face[b] < 0) {
+                int out = vertexHalfedge[toVertex[b]];
+                next[b] = out;
+                prev[out] = b;
+            }
+        }
+
+        double[] positions = new double[3 * sourceVertex.length];
+        for (int v = 0; v < vertexCount; v++) {
+            System.arraycopy(xyz, 3 * sourceVertex[v], positions, 3 * v, 3);
+        }
+        int[] faceColor = null;
+        if (soup.hasFaceColors()) {
+            faceColor = new int[wFaceCount];
+            for (int f = 0; f < wFaceCount; f++) {
+                faceColor[f] = soup.faceColor(wSource[f]);
+            }
+        }
+        HalfedgeMesh mesh = HalfedgeMesh.adopt(positions, vertexHalfedge, vertexCount, next, prev, toVertex,
+                face, halfedgeCount, faceHalfedge, faceColor, wFaceCount);
+        int[] sourceFace = Arrays.copyOf(wSource, wFaceCount);
+        return new Result(mesh, Map.copyOf(repairs), sourceFace, Arrays.copyOf(sourceVertex, vertexCount));
+    }
+
+    // ---- reporting --------------------------------------------------------------------------
+
+    private void repair(Defect defect, int inputFace, int count) throws InvalidMeshException {
+        if (options.strict()) {
+            throw refuse(defect, inputFace, "face " + inputFace + ": " + defect.description());
+        }
+        repairs.merge(defect, count, Integer::sum);
+    }
+
+    private InvalidMeshException refuse(Defect defect, int inputFace, String message) {
+        int line = soup instanceof PolygonSoup polygons ? polygons.faceLine(inputFace) : 0;
+        return new InvalidMeshException(defect, line, message);
+    }
+}

@@ -1,0 +1,162 @@
+package ifold.refine;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import ifold.mesh.HalfedgeMesh;
+import ifold.mesh.InvalidMeshException;
+import ifold.mesh.MeshBuilder;
+import ifold.mesh.MeshValidator;
+import ifold.mesh.PolygonSoup;
+import ifold.mesh.Solids;
+import ifold.mesh.Topology;
+import java.util.List;
+import java.util.stream.Stream;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.MethodSource;
+import org.junit.jupiter.api.Test;
+
+class HamiltonianRefinementTest {
+
+    static HalfedgeMesh triangles(PolygonSoup soup) {
+        try {
+            return MeshBuilder.build(soup, MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();
+        } catch (InvalidMeshException e) {
+            throw new AssertionError(e);
+        }
+    }
+
+    static HalfedgeMesh polygons(PolygonSoup soup) {
+        try {
+            return MeshBuilder.build(soup).mesh();
+        } catch (InvalidMeshException e) {
+            throw new AssertionError(e);
+        }
+    }
+
+    static Stream<Arguments> solids() {
+        return Stream.of(
+                Arguments.of("tetrahedron", Solids.tetrahedron(), 18),
+                Arguments.of("cube", Solids.cube(), 58),
+                Arguments.of("octahedron", Solids.octahedron(), 38),
+                Arguments.of("icosahedron", Solids.icosahedron(), 98),
+                Arguments.of("torus", Solids.torus(3, 1, 16, 9), 5 * 288 - 2),
+                Arguments.of("triangle", Solids.triangle(), 3),
+                Arguments.of("figure3", Solids.figure3(), 58));
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("solids")
+    void claimsHold(String name, PolygonSoup soup, int expectedTriangles) {
+        HalfedgeMesh mesh = triangles(soup);
+        HamiltonianRefinement.Result result = HamiltonianRefinement.refine(mesh);
+        assertEquals(expectedTriangles, result.mesh().faceCount());
+        assertEquals(List.of(), RefinementClaims.violations(mesh, result));
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("solids")
+    void refinedSurfaceIsTheSameSurface(String name, PolygonSoup soup, int expectedTriangles) throws InvalidMeshException {
+        HalfedgeMesh mesh = triangles(soup);
+        RefinedMesh refined = HamiltonianRefinement.refine(mesh).mesh();
+        MeshBuilder.Result rebuilt = MeshBuilder.build(refined, new MeshBuilder.Options(true, false));
+        assertEquals(List.of(), MeshValidator.validate(rebuilt.mesh()));
+        Topology before = Topology.of(mesh);
+        Topology after = Topology.of(rebuilt.mesh());
+        assertEquals(before.genus(), after.genus());
+        assertEquals(before.boundaryLoops(), after.boundaryLoops());
+        assertEquals(before.components(), after.components());
+        assertEquals(before.eulerCharacteristic(), after.eulerCharacteristic());
+    }
+
+    @Test
+    void spanningTreeHasOneEdgeFewerThanFaces() {
+        HalfedgeMesh mesh = triangles(Solids.icosahedron());
+        HamiltonianRefinement.Result result = HamiltonianRefinement.refine(mesh);
+        int treeEdges = 0;
+        for (boolean b : result.treeEdge()) {
+            treeEdges += b ? 1 : 0;
+        }
+        assertEquals(19, treeEdges);
+        assertEquals(12 + 20 + 19, result.mesh().vertexCount());
+        assertTrue(result.mesh().isIncenter(12));
+        assertTrue(result.mesh().isMidpoint(32));
+        assertFalse(result.mesh().isIncenter(32));
+    }
+
+    @Test
+    void eachComponentGetsItsOwnPath() {
+        PolygonSoup two = Solids.tetrahedron();
+        PolygonSoup other = Solids.octahedron();
+        int offset = two.vertexCount();
+        for (int v = 0; v < other.vertexCount(); v++) {
+            two.addVertex(other.coordinate(v, 0) + 5, other.coordinate(v, 1), other.coordinate(v, 2));
+        }
+        for (int f = 0; f < other.faceCount(); f++) {
+            two.addTriangle(offset + other.faceVertex(f, 0), offset + other.faceVertex(f, 1), offset + other.faceVertex(f, 2));
+        }
+        HalfedgeMesh mesh = triangles(two);
+        HamiltonianRefinement.Result result = HamiltonianRefinement.refine(mesh);
+        assertEquals(2, result.componentCount());
+        assertEquals(5 * 12 - 4, result.mesh().faceCount());
+        assertEquals(18, result.componentStart()[1]);
+        assertEquals(List.of(), RefinementClaims.violations(mesh, result));
+    }
+
+    @Test
+    void subTrianglesInheritTheirParentsColour() {
+        PolygonSoup soup = Solids.tetrahedron();
+        soup.setFaceColor(2, 0xFFFF0000);
+        HalfedgeMesh mesh = triangles(soup);
+        RefinedMesh refined = HamiltonianRefinement.refine(mesh).mesh();
+        int red = 0;
+        for (int t = 0; t < refined.faceCount(); t++) {
+            assertEquals(mesh.faceColor(refined.parentFace(t)), refined.faceColor(t));
+            red += refined.faceColor(t) == 0xFFFF0000 ? 1 : 0;
+        }
+        assertTrue(red >= 3 && red <= 6, "the red face's 3 to 6 sub-triangles, got " + red);
+    }
+
+    @Test
+    void longStripDoesNotOverflowTheStack() {
+        // A strip of 400k triangles: a depth-first tree 400k deep.
+        PolygonSoup soup = new PolygonSoup();
+        int quads = 200_000;
+        for (int i = 0; i <= quads; i++) {
+            soup.addVertex(i, 0, 0);
+            soup.addVertex(i, 1, 0);
+        }
+        for (int i = 0; i < quads; i++) {
+            soup.addTriangle(2 * i, 2 * i + 2, 2 * i + 3);
+            soup.addTriangle(2 * i, 2 * i + 3, 2 * i + 1);
+        }
+        HalfedgeMesh mesh = triangles(soup);
+        HamiltonianRefinement.Result result = HamiltonianRefinement.refine(mesh);
+        assertEquals(5 * 2 * quads - 2, result.mesh().faceCount());
+        assertEquals(List.of(), RefinementClaims.violations(mesh, result));
+    }
+
+    @Test
+    void polygonsAreRefused() {
+        HalfedgeMesh cube = polygons(Solids.cube());
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> HamiltonianRefinement.refine(cube));
+        assertTrue(e.getMessage().contains("triangulate"), e.getMessage());
+    }
+
+    @Test
+    void claimsCatchABrokenPath() {
+        HalfedgeMesh mesh = triangles(Solids.octahedron());
+        HamiltonianRefinement.Result result = HamiltonianRefinement.refine(mesh);
+        int[] tri = result.mesh().triangleArray();
+        // Swap two triangles far apart in the path: the path breaks there.
+        for (int k = 0; k < 3; k++) {
+            int swap = tri[3 + k];
+            tri[3 + k] = tri[3 * 20 + k];
+            tri[3 * 20 + k] = swap;
+        }
+        assertFalse(RefinementClaims.violations(mesh, result).isEmpty());
+    }
+}
