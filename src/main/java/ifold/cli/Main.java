@@ -1,2 +1,61 @@
 package ifold.cli;
-public final class Main { public static void main(String[] a) { System.out.println("hi"); } }
+
+import java.io.PrintWriter;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+
+/** The {@code ifold} command: the entry point and the only place that calls System.exit. */
+@Command(name = "ifold", mixinStandardHelpOptions = true, version = "ifold 0.1.0",
+        description = "Wraps polyhedra in a strip of paper, the zig-zag way.",
+        subcommands = {RefineCommand.class, InfoCommand.class, GenerateCommand.class, CommandLine.HelpCommand.class})
+public final class Main implements Runnable {
+
+    @CommandLine.Spec
+    CommandLine.Model.CommandSpec spec;
+
+    @Override
+    public void run() {
+        throw new CommandLine.ParameterException(spec.commandLine(), "missing command: try 'ifold --help'");
+    }
+
+    /** A command line with iFold's error handling: one line per error, never a stack trace. */
+    public static CommandLine commandLine(PrintWriter out, PrintWriter err) {
+        CommandLine commandLine = new CommandLine(new Main());
+        commandLine.setOut(out);
+        commandLine.setErr(err);
+        commandLine.setParameterExceptionHandler((ex, args) -> {
+            CommandLine cmd = ex.getCommandLine();
+            cmd.getErr().println("ifold: " + ex.getMessage());
+            cmd.getErr().println("Try '" + cmd.getCommandSpec().qualifiedName() + " --help' for more.");
+            cmd.getErr().flush();
+            return cmd.getCommandSpec().exitCodeOnInvalidInput();
+        });
+        commandLine.setExecutionExceptionHandler((ex, cmd, parseResult) -> {
+            if (ex instanceof UserError) {
+                cmd.getErr().println("ifold: " + ex.getMessage());
+                cmd.getErr().flush();
+                return UserError.EXIT_CODE;
+            }
+            // A bug, not bad input: still one line, with the kind of failure so it can be reported.
+            cmd.getErr().println("ifold: internal error: " + ex + " (please report it)");
+            cmd.getErr().flush();
+            return 70;
+        });
+        return commandLine;
+    }
+
+    public static void main(String[] args) {
+        PrintWriter out = new PrintWriter(System.out, true);
+        PrintWriter err = new PrintWriter(System.err, true);
+        int code;
+        try {
+            code = commandLine(out, err).execute(args);
+        } catch (OutOfMemoryError e) {
+            // picocli passes Errors through; a model too big for the heap is still the user's to fix.
+            err.println("ifold: out of memory: give the JVM more, e.g. JAVA_OPTS=-Xmx8g");
+            code = UserError.EXIT_CODE;
+        }
+        out.flush();
+        System.exit(code);
+    }
+}

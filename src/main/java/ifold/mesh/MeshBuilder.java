@@ -66,15 +66,34 @@ public final class MeshBuilder {
     private int wFaceCount;
     private int wCornerCount;
 
+    // Corners grouped by undirected edge, alive from grouping to pairing only: for a big model
+    // they are a third of the builder's memory, so they are dropped as soon as pairing is done.
+    /** The working face of each corner; null when every face is a triangle (then it is c / 3). */
+    private int[] cornerFace;
+    /** Corners sorted by the lower, then the higher vertex of their edge. */
+    private int[] byMin;
+    /** The edge group of each corner. */
+    private int[] groupOfCorner;
+    /** groupStart[g]..groupStart[g+1] index the corners of group g in byMin. */
+    private int[] groupStart;
+    /** Groups cut open to make a non-orientable surface orientable. */
+    private boolean[] cut;
+    /** The number of halfedges, once they are paired. */
+    private int halfedgeCount;
+
     private MeshBuilder(IndexedPolygons soup, Options options) {
         this.soup = soup;
         this.options = options;
-        int n = soup.vertexCount();
-        xyz = new double[3 * n];
-        for (int v = 0; v < n; v++) {
-            xyz[3 * v] = soup.coordinate(v, 0);
-            xyz[3 * v + 1] = soup.coordinate(v, 1);
-            xyz[3 * v + 2] = soup.coordinate(v, 2);
+        if (soup instanceof PolygonSoup polygons) {
+            xyz = polygons.coordinateArray(); // read only: saves a copy of every position
+        } else {
+            int n = soup.vertexCount();
+            xyz = new double[3 * n];
+            for (int v = 0; v < n; v++) {
+                xyz[3 * v] = soup.coordinate(v, 0);
+                xyz[3 * v + 1] = soup.coordinate(v, 1);
+                xyz[3 * v + 2] = soup.coordinate(v, 2);
+            }
         }
     }
 
@@ -92,21 +111,20 @@ public final class MeshBuilder {
         checkCoordinates();
         cleanFaces();
         dropDuplicateFaces();
-        int[] cornerFace = cornerFaces();
-        int[] byMin = new int[wCornerCount];
-        int[] groupOfCorner = new int[wCornerCount];
-        int groupCount = groupCornersByEdge(cornerFace, byMin, groupOfCorner);
-        int[] groupStart = groupStarts(byMin, groupOfCorner, groupCount);
-        boolean[] cut = new boolean[groupCount];
-        boolean[] flip = orient(cornerFace, byMin, groupOfCorner, groupStart, cut);
-        reverseFlippedFaces(flip, cornerFace, byMin, groupOfCorner);
-        return assemble(cornerFace, byMin, groupOfCorner, groupStart, cut);
+        cornerFace = wCornerCount == 3 * wFaceCount ? null : cornerFaces();
+        byMin = new int[wCornerCount];
+        groupOfCorner = new int[wCornerCount];
+        int groupCount = groupCornersByEdge();
+        groupStart = groupStarts(groupCount);
+        cut = new boolean[groupCount];
+        reverseFlippedFaces(orient());
+        return assemble(pairHalfedges());
     }
 
     // ---- step 1: clean faces ----------------------------------------------------------------
 
     private void checkCoordinates() throws InvalidMeshException {
-        for (int i = 0; i < xyz.length; i++) {
+        for (int i = 0; i < 3 * soup.vertexCount(); i++) {
             if (!Double.isFinite(xyz[i])) {
                 throw new InvalidMeshException(Defect.NON_FINITE_COORDINATE, 0,
                         "vertex " + (i / 3) + " has a non-finite coordinate (" + xyz[i] + ")");
@@ -281,6 +299,10 @@ public final class MeshBuilder {
 
     // ---- step 3: group corners by undirected edge -------------------------------------------
 
+    private int faceOfCorner(int c) {
+        return cornerFace == null ? c / 3 : cornerFace[c];
+    }
+
     private int[] cornerFaces() {
         int[] cornerFace = new int[wCornerCount];
         for (int f = 0; f < wFaceCount; f++) {
@@ -295,8 +317,8 @@ public final class MeshBuilder {
     }
 
     /** The vertex the edge of corner {@code c} points to: the next corner of its face. */
-    private int cornerTo(int c, int[] cornerFace) {
-        int f = cornerFace[c];
+    private int cornerTo(int c) {
+        int f = faceOfCorner(c);
         return c + 1 < wStart[f + 1] ? wVerts[c + 1] : wVerts[wStart[f]];
     }
 
@@ -307,25 +329,26 @@ public final class MeshBuilder {
      *
      * @return the number of groups
      */
-    private int groupCornersByEdge(int[] cornerFace, int[] byMin, int[] groupOfCorner) {
+    private int groupCornersByEdge() {
         int vertexCount = soup.vertexCount();
         int[] bucketStart = new int[vertexCount + 1];
-        int[] low = new int[wCornerCount];
-        int[] high = new int[wCornerCount];
+        // Borrowed until the groups are numbered: the higher vertex of each corner's edge. Each
+        // slot is read for the last time just before its group number overwrites it.
+        int[] high = groupOfCorner;
         for (int c = 0; c < wCornerCount; c++) {
             int a = cornerFrom(c);
-            int b = cornerTo(c, cornerFace);
-            low[c] = Math.min(a, b);
+            int b = cornerTo(c);
             high[c] = Math.max(a, b);
-            bucketStart[low[c] + 1]++;
+            bucketStart[Math.min(a, b) + 1]++;
         }
         for (int v = 0; v < vertexCount; v++) {
             bucketStart[v + 1] += bucketStart[v];
         }
         int[] fill = Arrays.copyOf(bucketStart, vertexCount);
         for (int c = 0; c < wCornerCount; c++) {
-            byMin[fill[low[c]]++] = c;
+            byMin[fill[Math.min(cornerFrom(c), cornerTo(c))]++] = c;
         }
+        fill = null;
         int groups = 0;
         for (int v = 0; v < vertexCount; v++) {
             int start = bucketStart[v];
@@ -343,32 +366,31 @@ public final class MeshBuilder {
             }
             int previousHigh = -1;
             for (int i = start; i < end; i++) {
-                if (high[byMin[i]] != previousHigh) {
+                int c = byMin[i];
+                if (high[c] != previousHigh) {
                     groups++;
-                    previousHigh = high[byMin[i]];
+                    previousHigh = high[c];
                 }
-                groupOfCorner[byMin[i]] = groups - 1;
+                groupOfCorner[c] = groups - 1;
             }
         }
         return groups;
     }
 
-    /** groupStart[g]..groupStart[g+1] index the corners of group g in byMin. */
-    private static int[] groupStarts(int[] byMin, int[] groupOfCorner, int groupCount) {
-        int[] groupStart = new int[groupCount + 1];
+    private int[] groupStarts(int groupCount) {
+        int[] starts = new int[groupCount + 1];
         for (int i = 0; i < byMin.length; i++) {
-            groupStart[groupOfCorner[byMin[i]] + 1]++;
+            starts[groupOfCorner[byMin[i]] + 1]++;
         }
         for (int g = 0; g < groupCount; g++) {
-            groupStart[g + 1] += groupStart[g];
+            starts[g + 1] += starts[g];
         }
-        return groupStart;
+        return starts;
     }
 
     // ---- step 4: orientation ----------------------------------------------------------------
 
-    private boolean[] orient(int[] cornerFace, int[] byMin, int[] groupOfCorner, int[] groupStart, boolean[] cut)
-            throws InvalidMeshException {
+    private boolean[] orient() throws InvalidMeshException {
         boolean[] flip = new boolean[wFaceCount];
         int[] component = new int[wFaceCount];
         Arrays.fill(component, -1);
@@ -393,7 +415,7 @@ public final class MeshBuilder {
                         continue;
                     }
                     int o = byMin[groupStart[g]] == c ? byMin[groupStart[g] + 1] : byMin[groupStart[g]];
-                    int of = cornerFace[o];
+                    int of = faceOfCorner(o);
                     if (of == f) {
                         closed = false;
                         continue;
@@ -490,10 +512,10 @@ public final class MeshBuilder {
      * the edge that was corner n - 2 - k (and the other way round), so the corner's edge group
      * and its place in {@code byMin} move with it.
      */
-    private void reverseFlippedFaces(boolean[] flip, int[] cornerFace, int[] byMin, int[] groupOfCorner) {
+    private void reverseFlippedFaces(boolean[] flip) {
         for (int i = 0; i < byMin.length; i++) {
             int c = byMin[i];
-            int f = cornerFace[c];
+            int f = faceOfCorner(c);
             if (flip[f]) {
                 int start = wStart[f];
                 int n = wStart[f + 1] - start;
@@ -524,13 +546,16 @@ public final class MeshBuilder {
 
     // ---- steps 5 to 7: pair, split pinches, link boundaries ----------------------------------
 
-    private Result assemble(int[] cornerFace, int[] byMin, int[] groupOfCorner, int[] groupStart, boolean[] cut)
-            throws InvalidMeshException {
+    /**
+     * Pairs each edge's halfedges and numbers the halfedges: returns the halfedge of each
+     * corner. Paired corners share an edge (halfedges 2e and 2e + 1); a corner left unpaired
+     * gets an edge of its own whose twin is a boundary halfedge.
+     */
+    private int[] pairHalfedges() throws InvalidMeshException {
         int groupCount = groupStart.length - 1;
-        // Pair halfedges: cornerPartner[c] is the corner across the edge, or -1 for boundary.
-        int[] cornerPartner = new int[wCornerCount];
-        Arrays.fill(cornerPartner, -1);
-        int pairs = 0;
+        // First pass: the partner of each corner, encoded as -(partner + 2); -1 for none.
+        int[] cornerHalfedge = new int[wCornerCount];
+        Arrays.fill(cornerHalfedge, -1);
         for (int g = 0; g < groupCount; g++) {
             int start = groupStart[g];
             int size = groupStart[g + 1] - start;
@@ -538,13 +563,13 @@ public final class MeshBuilder {
                 continue;
             }
             if (size > 2) {
+                int f = wSource[faceOfCorner(byMin[start])];
                 if (options.strict()) {
-                    int f = wSource[cornerFace[byMin[start]]];
                     throw refuse(Defect.NON_MANIFOLD_EDGE, f, "face " + f + ": edge "
-                            + cornerFrom(byMin[start]) + "-" + cornerTo(byMin[start], cornerFace)
+                            + cornerFrom(byMin[start]) + "-" + cornerTo(byMin[start])
                             + " is shared by " + size + " faces");
                 }
-                repair(Defect.NON_MANIFOLD_EDGE, wSource[cornerFace[byMin[start]]], 1);
+                repair(Defect.NON_MANIFOLD_EDGE, f, 1);
             }
             // Join the first two corners of opposite direction in different faces; the rest
             // stay boundary, which splits a non-manifold edge.
@@ -553,38 +578,46 @@ public final class MeshBuilder {
                 for (int j = i + 1; j < start + size; j++) {
                     int c = byMin[i];
                     int d = byMin[j];
-                    if (cornerFrom(c) != cornerFrom(d) && cornerFace[c] != cornerFace[d]) {
-                        cornerPartner[c] = d;
-                        cornerPartner[d] = c;
-                        pairs++;
+                    if (cornerFrom(c) != cornerFrom(d) && faceOfCorner(c) != faceOfCorner(d)) {
+                        cornerHalfedge[c] = -(d + 2);
+                        cornerHalfedge[d] = -(c + 2);
                         break search;
                     }
                 }
             }
         }
-        int edgeCount = wCornerCount - pairs;
-        int halfedgeCount = 2 * edgeCount;
-        int[] cornerHalfedge = new int[wCornerCount];
+        // Second pass: number the halfedges in corner order.
+        int h = 0;
+        for (int c = 0; c < wCornerCount; c++) {
+            int partner = cornerHalfedge[c];
+            if (partner >= 0) {
+                continue; // numbered with its partner
+            }
+            cornerHalfedge[c] = h;
+            if (partner <= -2) {
+                cornerHalfedge[-partner - 2] = h + 1;
+            }
+            h += 2;
+        }
+        halfedgeCount = h;
+        byMin = null;
+        groupOfCorner = null;
+        groupStart = null;
+        cut = null;
+        return cornerHalfedge;
+    }
+
+    private Result assemble(int[] cornerHalfedge) throws InvalidMeshException {
         int[] toVertex = new int[halfedgeCount];
         int[] face = new int[halfedgeCount];
         int[] next = new int[halfedgeCount];
         int[] prev = new int[halfedgeCount];
-        Arrays.fill(cornerHalfedge, -1);
-        int h = 0;
+        // Boundary halfedges have no corner: they are the twins not set below, and point back
+        // to where their interior twin starts.
+        Arrays.fill(face, -1);
         for (int c = 0; c < wCornerCount; c++) {
-            if (cornerHalfedge[c] >= 0) {
-                continue;
-            }
-            cornerHalfedge[c] = h;
-            int d = cornerPartner[c];
-            if (d >= 0) {
-                cornerHalfedge[d] = h + 1;
-            } else {
-                // The twin is a boundary halfedge pointing back to the corner's start.
-                toVertex[h + 1] = cornerFrom(c);
-                face[h + 1] = -1;
-            }
-            h += 2;
+            int twin = cornerHalfedge[c] ^ 1;
+            toVertex[twin] = cornerFrom(c);
         }
         int[] faceHalfedge = new int[wFaceCount];
         for (int f = 0; f < wFaceCount; f++) {
@@ -600,6 +633,7 @@ public final class MeshBuilder {
                 prev[hn] = hc;
             }
         }
+        cornerHalfedge = null; // as big as a halfedge array: let it go before the next ones
 
         // Vertices: referenced input vertices keep their order; pinch splits come after.
         int inputVertices = soup.vertexCount();

@@ -25,6 +25,11 @@ public final class PolygonSoup implements IndexedPolygons {
     private int[] faceColor;
     private int faceCount;
 
+    /** The coordinates array itself (x, y, z interleaved; only the first 3·vertexCount entries count). */
+    double[] coordinateArray() {
+        return coordinates;
+    }
+
     public int addVertex(double x, double y, double z) {
         if (3 * vertexCount + 3 > coordinates.length) {
             coordinates = Arrays.copyOf(coordinates, 2 * coordinates.length);
@@ -51,7 +56,9 @@ public final class PolygonSoup implements IndexedPolygons {
             faceStart = Arrays.copyOf(faceStart, 2 * faceStart.length);
             faceLine = Arrays.copyOf(faceLine, faceStart.length);
             if (faceColor != null) {
+                int old = faceColor.length;
                 faceColor = Arrays.copyOf(faceColor, faceStart.length);
+                Arrays.fill(faceColor, old, faceColor.length, DEFAULT_COLOR);
             }
         }
         faceLine[faceCount] = sourceLine;

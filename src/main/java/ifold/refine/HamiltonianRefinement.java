@@ -68,32 +68,33 @@ public final class HamiltonianRefinement {
         int components = roots.length;
         int treeEdges = faces - components;
 
-        // Vertices: originals, then incentres by face, then midpoints by tree edge.
-        int vertexCount = vertices + faces + treeEdges;
-        double[] positions = new double[3 * vertexCount];
-        System.arraycopy(xyz, 0, positions, 0, 3 * vertices);
+        // Steiner points: incentres by face, then midpoints by tree edge.
+        double[] steiner = new double[3 * (faces + treeEdges)];
         for (int f = 0; f < faces; f++) {
             int h = mesh.faceHalfedge(f);
-            Triangles.incenter(xyz, mesh.fromVertex(h), mesh.toVertex(h), mesh.toVertex(mesh.next(h)),
-                    positions, 3 * (vertices + f));
+            Triangles.incenter(xyz, mesh.fromVertex(h), mesh.toVertex(h), mesh.toVertex(mesh.next(h)), steiner, 3 * f);
         }
-        int[] midpoint = new int[mesh.edgeCount()];
-        int nextMidpoint = vertices + faces;
+        int[] midpointOfEdge = new int[mesh.edgeCount()];
+        int midpoints = 0;
         for (int e = 0; e < treeEdge.length; e++) {
-            if (treeEdge[e]) {
-                int a = mesh.toVertex(2 * e);
-                int b = mesh.toVertex(2 * e + 1);
-                int m = nextMidpoint++;
-                for (int axis = 0; axis < 3; axis++) {
-                    positions[3 * m + axis] = 0.5 * (xyz[3 * a + axis] + xyz[3 * b + axis]);
-                }
-                midpoint[e] = m;
+            if (!treeEdge[e]) {
+                midpointOfEdge[e] = -1;
+                continue;
             }
+            int a = mesh.toVertex(2 * e);
+            int b = mesh.toVertex(2 * e + 1);
+            int at = 3 * (faces + midpoints);
+            for (int axis = 0; axis < 3; axis++) {
+                steiner[at + axis] = 0.5 * (xyz[3 * a + axis] + xyz[3 * b + axis]);
+            }
+            midpointOfEdge[e] = midpoints++;
         }
 
+        if (mesh.halfedgeCount() > (Integer.MAX_VALUE >>> 2)) {
+            throw new IllegalArgumentException("too many halfedges to refine: " + mesh.halfedgeCount());
+        }
         int triangleCount = 5 * faces - 2 * components;
-        int[] triangles = new int[3 * triangleCount];
-        int[] parent = new int[triangleCount];
+        int[] path = new int[triangleCount];
         int[] componentStart = new int[components + 1];
         int t = 0;
         for (int c = 0; c < components; c++) {
@@ -101,19 +102,15 @@ public final class HamiltonianRefinement {
             int start = mesh.faceHalfedge(roots[c]);
             int h = start;
             do {
-                int f = mesh.face(h);
-                int e = HalfedgeMesh.edge(h);
-                if (treeEdge[e]) {
+                if (treeEdge[HalfedgeMesh.edge(h)]) {
                     // First half on this side, then cross into the neighbour's second half and
                     // go on around the neighbour.
-                    int m = midpoint[e];
-                    t = emit(triangles, parent, t, vertices + f, mesh.fromVertex(h), m, f);
                     int across = HalfedgeMesh.twin(h);
-                    int g = mesh.face(across);
-                    t = emit(triangles, parent, t, vertices + g, m, mesh.toVertex(across), g);
+                    path[t++] = h << 2 | RefinedMesh.FIRST_HALF;
+                    path[t++] = across << 2 | RefinedMesh.SECOND_HALF;
                     h = mesh.next(across);
                 } else {
-                    t = emit(triangles, parent, t, vertices + f, mesh.fromVertex(h), mesh.toVertex(h), f);
+                    path[t++] = h << 2 | RefinedMesh.WHOLE;
                     h = mesh.next(h);
                 }
             } while (h != start);
@@ -122,23 +119,7 @@ public final class HamiltonianRefinement {
         if (t != triangleCount) {
             throw new IllegalStateException("walk emitted " + t + " triangles, expected " + triangleCount);
         }
-        int[] colors = null;
-        if (mesh.hasFaceColors()) {
-            colors = new int[faces];
-            for (int f = 0; f < faces; f++) {
-                colors[f] = mesh.faceColor(f);
-            }
-        }
-        RefinedMesh refined = new RefinedMesh(positions, vertexCount, vertices, faces, triangles, parent, colors);
-        return new Result(refined, componentStart, treeEdge);
-    }
-
-    private static int emit(int[] triangles, int[] parent, int t, int a, int b, int c, int face) {
-        triangles[3 * t] = a;
-        triangles[3 * t + 1] = b;
-        triangles[3 * t + 2] = c;
-        parent[t] = face;
-        return t + 1;
+        return new Result(new RefinedMesh(mesh, path, steiner, midpointOfEdge), componentStart, treeEdge);
     }
 
     /**

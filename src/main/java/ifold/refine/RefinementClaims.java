@@ -28,13 +28,29 @@ public final class RefinementClaims {
 
     /** The smallest angle over all refined triangles, in degrees. */
     public static double minAngleDegrees(RefinedMesh mesh) {
-        double[] xyz = mesh.positionArray();
-        int[] triangles = mesh.triangleArray();
+        double[] corners = new double[9];
         double min = Math.PI;
         for (int t = 0; t < mesh.faceCount(); t++) {
-            min = Math.min(min, Triangles.minAngle(xyz, triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]));
+            for (int k = 0; k < 3; k++) {
+                int v = mesh.faceVertex(t, k);
+                for (int axis = 0; axis < 3; axis++) {
+                    corners[3 * k + axis] = mesh.coordinate(v, axis);
+                }
+            }
+            min = Math.min(min, Triangles.minAngle(corners, 0, 1, 2));
         }
         return Math.toDegrees(min);
+    }
+
+    /** All vertex positions of {@code mesh}, interleaved, for the measures of {@link Triangles}. */
+    private static double[] positions(RefinedMesh mesh) {
+        double[] xyz = new double[3 * mesh.vertexCount()];
+        for (int v = 0; v < mesh.vertexCount(); v++) {
+            for (int axis = 0; axis < 3; axis++) {
+                xyz[3 * v + axis] = mesh.coordinate(v, axis);
+            }
+        }
+        return xyz;
     }
 
     /**
@@ -52,7 +68,12 @@ public final class RefinementClaims {
         if (count != 5 * n - 2 * c) {
             problems.add(count + " triangles, expected 5n - 2c = " + (5 * n - 2 * c));
         }
-        int[] tri = refined.triangleArray();
+        int[] tri = new int[3 * count];
+        for (int t = 0; t < count; t++) {
+            for (int k = 0; k < 3; k++) {
+                tri[3 * t + k] = refined.faceVertex(t, k);
+            }
+        }
         int[] componentStart = result.componentStart();
         for (int k = 0; k < c; k++) {
             for (int t = componentStart[k]; t + 1 < componentStart[k + 1]; t++) {
@@ -76,7 +97,7 @@ public final class RefinementClaims {
             }
         }
         double[] xyzIn = input.positionArray();
-        double[] xyzOut = refined.positionArray();
+        double[] xyzOut = positions(refined);
         double[] areaOut = new double[n];
         for (int t = 0; t < count; t++) {
             areaOut[refined.parentFace(t)] += Triangles.twiceArea(xyzOut, tri[3 * t], tri[3 * t + 1], tri[3 * t + 2]);

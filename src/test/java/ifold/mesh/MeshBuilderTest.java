@@ -231,6 +231,21 @@ class MeshBuilderTest {
     }
 
     @Test
+    void facesAddedAfterTheFirstColourStayGreyWhenTheSoupGrows() {
+        PolygonSoup soup = new PolygonSoup();
+        soup.addVertex(0, 0, 0);
+        soup.addVertex(1, 0, 0);
+        soup.addVertex(0, 1, 0);
+        soup.addTriangle(0, 1, 2);
+        soup.setFaceColor(0, 0xFF00FF00);
+        for (int i = 0; i < 1000; i++) {
+            soup.addTriangle(0, 1, 2);
+        }
+        assertEquals(0xFF00FF00, soup.faceColor(0));
+        assertEquals(PolygonSoup.DEFAULT_COLOR, soup.faceColor(999));
+    }
+
+    @Test
     void torusHasGenusOne() throws InvalidMeshException {
         Topology topology = Topology.of(build(Solids.torus(3, 1, 12, 8)).mesh());
         assertEquals(1, topology.genus());

@@ -1,0 +1,36 @@
+package ifold.cli;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Locale;
+
+/** Checks on output paths, made before any work so that a bad option fails at once. */
+final class OutputFiles {
+    private OutputFiles() {
+    }
+
+    /**
+     * Refuses {@code file} unless its name ends in one of {@code extensions} and its folder
+     * exists and can be written.
+     */
+    static void checkWritableFile(Path file, String option, String... extensions) {
+        String name = file.getFileName() == null ? "" : file.getFileName().toString().toLowerCase(Locale.ROOT);
+        boolean known = false;
+        for (String extension : extensions) {
+            known |= name.endsWith(extension);
+        }
+        if (!known) {
+            throw new UserError("option " + option + ": " + file + " must end in " + String.join(" or ", extensions));
+        }
+        Path folder = file.toAbsolutePath().getParent();
+        if (folder == null || !Files.isDirectory(folder)) {
+            throw new UserError("option " + option + ": folder " + folder + " does not exist");
+        }
+        if (!Files.isWritable(folder)) {
+            throw new UserError("option " + option + ": folder " + folder + " is not writable");
+        }
+        if (Files.isDirectory(file)) {
+            throw new UserError("option " + option + ": " + file + " is a folder");
+        }
+    }
+}

@@ -1,0 +1,181 @@
+package ifold.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import ifold.mesh.PolygonSoup;
+import ifold.mesh.Solids;
+import ifold.mesh.io.MeshReaders;
+import ifold.mesh.io.MeshWriters;
+import ifold.testing.SharedMeshes;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Map;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+
+/** The command line through picocli's execute: exit codes, one-line errors, no partial output. */
+class CliTest {
+    @TempDir
+    Path dir;
+
+    record Run(int code, String out, String err) {
+    }
+
+    static Run run(String... args) {
+        StringWriter out = new StringWriter();
+        StringWriter err = new StringWriter();
+        int code = Main.commandLine(new PrintWriter(out), new PrintWriter(err)).execute(args);
+        return new Run(code, out.toString(), err.toString());
+    }
+
+    private Path write(PolygonSoup soup, String name) throws Exception {
+        Path file = dir.resolve(name);
+        MeshWriters.write(soup, file);
+        return file;
+    }
+
+    private static void assertOneLineError(Run run, String... fragments) {
+        assertEquals(UserError.EXIT_CODE, run.code(), run.err());
+        String[] lines = run.err().strip().split("\n");
+        assertEquals(1, lines.length, "one line: " + run.err());
+        assertTrue(lines[0].startsWith("ifold: "), lines[0]);
+        for (String fragment : fragments) {
+            assertTrue(lines[0].contains(fragment), "'" + fragment + "' in: " + lines[0]);
+        }
+        assertFalse(run.err().contains("\tat "), "no stack trace");
+    }
+
+    @Test
+    void refineWritesFacesInPathOrder() throws Exception {
+        Path model = write(Solids.icosahedron(), "ico.off");
+        Path out = dir.resolve("ico-refined.obj");
+        Run run = run("refine", model.toString(), "-o", out.toString());
+        assertEquals(0, run.code(), run.err());
+        PolygonSoup refined = MeshReaders.read(out);
+        assertEquals(98, refined.faceCount());
+        for (int t = 0; t + 1 < refined.faceCount(); t++) {
+            int shared = 0;
+            for (int i = 0; i < 3; i++) {
+                for (int j = 0; j < 3; j++) {
+                    shared += refined.faceVertex(t, i) == refined.faceVertex(t + 1, j) ? 1 : 0;
+                }
+            }
+            assertEquals(2, shared, "faces " + t + " and " + (t + 1) + " share an edge");
+        }
+    }
+
+    @Test
+    void refineJsonReportsCountsAnglesAndPhases() throws Exception {
+        Path model = write(Solids.torus(3, 1, 10, 6), "torus.off");
+        Run run = run("refine", model.toString(), "-o", dir.resolve("t.off").toString(), "--json");
+        assertEquals(0, run.code(), run.err());
+        for (String key : new String[] {"\"inputTriangles\": 120", "\"components\": 1", "\"outputTriangles\": 598",
+            "\"minAngleInDegrees\"", "\"minAngleOutDegrees\"", "\"repairs\": {}", "\"parse\"", "\"build\"", "\"refine\"", "\"write\""}) {
+            assertTrue(run.out().contains(key), key + " in " + run.out());
+        }
+    }
+
+    @Test
+    void repairsAreReportedOnStderrAndStrictRefuses() throws Exception {
+        PolygonSoup soup = Solids.tetrahedron();
+        soup.addTriangle(0, 1, 2); // a duplicate face
+        Path model = write(soup, "dup.off"); // OFF, counts, 4 vertices, then faces on lines 7 to 11
+        Run repaired = run("info", model.toString());
+        assertEquals(0, repaired.code());
+        assertTrue(repaired.err().contains("repaired: dropped 1 duplicate faces"), repaired.err());
+        assertTrue(repaired.out().contains("faces: 4"), repaired.out());
+        assertTrue(repaired.out().contains("genus: 0"), repaired.out());
+        Path out = dir.resolve("strict.off");
+        Run strict = run("refine", model.toString(), "-o", out.toString(), "--strict");
+        assertOneLineError(strict, "dup.off:11:", "duplicates an earlier face", "--strict");
+        assertFalse(Files.exists(out));
+    }
+
+    @Test
+    void infoJsonDescribesATorus() throws Exception {
+        Path model = write(Solids.torus(3, 1, 8, 5), "torus.obj");
+        Run run = run("info", model.toString(), "--json");
+        assertEquals(0, run.code(), run.err());
+        for (String key : new String[] {"\"faces\": 80", "\"vertices\": 40", "\"edges\": 120", "\"genus\": 1",
+            "\"boundaryLoops\": 0", "\"components\": 1", "\"manifold\": true", "\"valid\": true"}) {
+            assertTrue(run.out().contains(key), key + " in " + run.out());
+        }
+    }
+
+    @Test
+    void badOptionsGetOneLineAndNoOutput() throws Exception {
+        Path model = write(Solids.cube(), "cube.off");
+        assertOneLineError(run("refine", model.toString(), "-o", dir.resolve("x.stl").toString()), "-o", ".off or .obj");
+        assertOneLineError(run("refine", model.toString(), "-o", dir.resolve("nope/x.off").toString()), "-o", "does not exist");
+        assertOneLineError(run("refine", dir.resolve("missing.off").toString(), "-o", dir.resolve("x.off").toString()),
+                "missing.off", "no such file");
+        Run usage = run("refine", model.toString());
+        assertEquals(2, usage.code());
+        assertTrue(usage.err().startsWith("ifold: Missing required option"), usage.err());
+        assertEquals(2, run("refine", model.toString(), "-o", "x.off", "--bogus").code());
+        assertEquals(2, run().code());
+        try (Stream<Path> files = Files.list(dir)) {
+            assertEquals(1, files.count(), "nothing but the model was written");
+        }
+    }
+
+    @Test
+    void unwritableFolderIsRefused() throws Exception {
+        Path model = write(Solids.cube(), "cube.off");
+        Path locked = Files.createDirectory(dir.resolve("locked"));
+        assumeTrue(locked.toFile().setWritable(false, false));
+        assumeTrue(!Files.isWritable(locked), "running as root: folders are always writable");
+        assertOneLineError(run("refine", model.toString(), "-o", locked.resolve("x.off").toString()), "not writable");
+    }
+
+    @Test
+    void generateWritesEveryShape() throws Exception {
+        Map<String, Integer> faces = Map.of("tetrahedron", 4, "cube", 6, "octahedron", 8, "icosahedron", 20,
+                "triangle", 1, "figure3", 12, "torus", 2 * 24 * 12);
+        for (Map.Entry<String, Integer> shape : faces.entrySet()) {
+            Path out = dir.resolve(shape.getKey() + ".off");
+            assertEquals(0, run("generate", shape.getKey(), "-o", out.toString()).code());
+            assertEquals(shape.getValue(), MeshReaders.read(out).faceCount(), shape.getKey());
+        }
+        assertEquals(2, run("generate", "dodecahedron", "-o", dir.resolve("d.off").toString()).code());
+    }
+
+    static Stream<String> invalid() {
+        return SharedMeshes.names("invalid");
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("invalid")
+    void everyBrokenSharedModelIsTurnedAway(String name) {
+        assumeTrue(SharedMeshes.present(), "../shared/meshes is absent");
+        Path model = SharedMeshes.ROOT.resolve("invalid").resolve(name);
+        Path out = dir.resolve("out.off");
+        Run run = run("refine", model.toString(), "-o", out.toString());
+        assertOneLineError(run, name);
+        assertFalse(Files.exists(out), "no output file");
+    }
+
+    static Stream<String> valid() {
+        return SharedMeshes.names("valid");
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("valid")
+    void everyValidSharedModelRefines(String name) throws Exception {
+        assumeTrue(SharedMeshes.present(), "../shared/meshes is absent");
+        Path model = SharedMeshes.ROOT.resolve("valid").resolve(name);
+        Path out = dir.resolve("out.off");
+        Run run = run("refine", model.toString(), "-o", out.toString(), "--json");
+        assertEquals(0, run.code(), run.err());
+        assertTrue(Files.size(out) > 0);
+        assertFalse(run.err().contains("\tat "));
+    }
+}
