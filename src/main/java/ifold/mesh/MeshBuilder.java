@@ -59,7 +59,9 @@ public final class MeshBuilder {
     private final double[] xyz;
     private final EnumMap<Defect, Integer> repairs = new EnumMap<>(Defect.class);
 
-    // Working faces after cleaning: wStart[f]..wStart[f+1] index wVerts; wSource[f] is the input face.
+    // Working faces after cleaning: faceStart(f)..faceStart(f+1) index wVerts; wSource[f] is the
+    // input face. While every face is a triangle, wStart is null and face f starts at 3f: that is
+    // always so when triangulating, and saves an array as long as the faces of a big model.
     private int[] wStart;
     private int[] wVerts;
     private int[] wSource;
@@ -70,14 +72,16 @@ public final class MeshBuilder {
     // they are a third of the builder's memory, so they are dropped as soon as pairing is done.
     /** The working face of each corner; null when every face is a triangle (then it is c / 3). */
     private int[] cornerFace;
-    /** Corners sorted by the lower, then the higher vertex of their edge. */
+    /**
+     * The corner across the edge when exactly two corners share it ({@link #BOUNDARY} when
+     * none, {@link #NON_MANIFOLD} when more than two do). Orientation and pairing, which touch
+     * every corner, need only this: one read instead of a search through the group.
+     */
+    private int[] mate;
+    /** Corners sorted by the lower, then the higher vertex of their edge; kept only when some edge is non-manifold. */
     private int[] byMin;
-    /** The edge group of each corner. */
-    private int[] groupOfCorner;
-    /** groupStart[g]..groupStart[g+1] index the corners of group g in byMin. */
-    private int[] groupStart;
-    /** Groups cut open to make a non-orientable surface orientable. */
-    private boolean[] cut;
+    private static final int BOUNDARY = -1;
+    private static final int NON_MANIFOLD = -2;
     /** The number of halfedges, once they are paired. */
     private int halfedgeCount;
 
@@ -111,12 +115,8 @@ public final class MeshBuilder {
         checkCoordinates();
         cleanFaces();
         dropDuplicateFaces();
-        cornerFace = wCornerCount == 3 * wFaceCount ? null : cornerFaces();
-        byMin = new int[wCornerCount];
-        groupOfCorner = new int[wCornerCount];
-        int groupCount = groupCornersByEdge();
-        groupStart = groupStarts(groupCount);
-        cut = new boolean[groupCount];
+        cornerFace = wStart == null ? null : cornerFaces();
+        findMates();
         reverseFlippedFaces(orient());
         return assemble(pairHalfedges());
     }
@@ -135,7 +135,7 @@ public final class MeshBuilder {
     private void cleanFaces() throws InvalidMeshException {
         int faceCount = soup.faceCount();
         int vertexCount = soup.vertexCount();
-        wStart = new int[faceCount + 1];
+        wStart = null;
         wVerts = new int[Math.max(16, 3 * faceCount)];
         wSource = new int[Math.max(16, faceCount)];
         int[] polygon = new int[16];
@@ -206,7 +206,13 @@ public final class MeshBuilder {
         if (wCornerCount + size > wVerts.length) {
             wVerts = Arrays.copyOf(wVerts, Math.max(2 * wVerts.length, wCornerCount + size));
         }
-        if (wFaceCount + 2 > wStart.length) {
+        if (wStart == null && size != 3) {
+            wStart = new int[Math.max(16, wSource.length + 1)];
+            for (int f = 0; f <= wFaceCount; f++) {
+                wStart[f] = 3 * f;
+            }
+        }
+        if (wStart != null && wFaceCount + 2 > wStart.length) {
             wStart = Arrays.copyOf(wStart, 2 * wStart.length);
         }
         if (wFaceCount + 1 > wSource.length) {
@@ -214,14 +220,17 @@ public final class MeshBuilder {
         }
         System.arraycopy(vertices, offset, wVerts, wCornerCount, size);
         wCornerCount += size;
-        wSource[wFaceCount] = source;
-        wStart[++wFaceCount] = wCornerCount;
+        wSource[wFaceCount++] = source;
+        if (wStart != null) {
+            wStart[wFaceCount] = wCornerCount;
+        }
     }
 
     // ---- step 2: duplicate faces ------------------------------------------------------------
 
     private void dropDuplicateFaces() throws InvalidMeshException {
-        int capacity = Integer.highestOneBit(Math.max(4, 2 * wFaceCount)) << 1;
+        // Open addressing at a load of at most 0.7.
+        int capacity = Integer.highestOneBit(Math.max(4, (int) (wFaceCount / 0.7))) << 1;
         int[] table = new int[capacity]; // face + 1, 0 for empty
         boolean[] drop = new boolean[wFaceCount];
         int dropped = 0;
@@ -250,7 +259,7 @@ public final class MeshBuilder {
     private int faceKeyHash(int f) {
         long sum = 0;
         long xor = 0;
-        for (int c = wStart[f]; c < wStart[f + 1]; c++) {
+        for (int c = faceStart(f); c < faceStart(f + 1); c++) {
             long mixed = (wVerts[c] + 1L) * 0x9E3779B97F4A7C15L;
             mixed ^= mixed >>> 29;
             sum += mixed;
@@ -261,13 +270,13 @@ public final class MeshBuilder {
     }
 
     private boolean sameVertexSet(int f, int g) {
-        int size = wStart[f + 1] - wStart[f];
-        if (size != wStart[g + 1] - wStart[g]) {
+        int size = faceStart(f + 1) - faceStart(f);
+        if (size != faceStart(g + 1) - faceStart(g)) {
             return false;
         }
-        for (int c = wStart[f]; c < wStart[f + 1]; c++) {
+        for (int c = faceStart(f); c < faceStart(f + 1); c++) {
             boolean found = false;
-            for (int d = wStart[g]; d < wStart[g + 1] && !found; d++) {
+            for (int d = faceStart(g); d < faceStart(g + 1) && !found; d++) {
                 found = wVerts[c] == wVerts[d];
             }
             if (!found) {
@@ -284,20 +293,28 @@ public final class MeshBuilder {
             if (drop[f]) {
                 continue;
             }
-            int start = wStart[f];
-            int size = wStart[f + 1] - start;
+            int start = faceStart(f);
+            int size = faceStart(f + 1) - start;
             System.arraycopy(wVerts, start, wVerts, corners, size);
             wSource[faces] = wSource[f];
-            wStart[faces] = corners;
+            if (wStart != null) {
+                wStart[faces] = corners;
+            }
             corners += size;
             faces++;
         }
-        wStart[faces] = corners;
+        if (wStart != null) {
+            wStart[faces] = corners;
+        }
         wFaceCount = faces;
         wCornerCount = corners;
     }
 
     // ---- step 3: group corners by undirected edge -------------------------------------------
+
+    private int faceStart(int f) {
+        return wStart == null ? 3 * f : wStart[f];
+    }
 
     private int faceOfCorner(int c) {
         return cornerFace == null ? c / 3 : cornerFace[c];
@@ -306,7 +323,7 @@ public final class MeshBuilder {
     private int[] cornerFaces() {
         int[] cornerFace = new int[wCornerCount];
         for (int f = 0; f < wFaceCount; f++) {
-            Arrays.fill(cornerFace, wStart[f], wStart[f + 1], f);
+            Arrays.fill(cornerFace, faceStart(f), faceStart(f + 1), f);
         }
         return cornerFace;
     }
@@ -319,22 +336,22 @@ public final class MeshBuilder {
     /** The vertex the edge of corner {@code c} points to: the next corner of its face. */
     private int cornerTo(int c) {
         int f = faceOfCorner(c);
-        return c + 1 < wStart[f + 1] ? wVerts[c + 1] : wVerts[wStart[f]];
+        return c + 1 < faceStart(f + 1) ? wVerts[c + 1] : wVerts[faceStart(f)];
     }
 
     /**
-     * Sorts corners into {@code byMin} by the lower vertex of their edge, then by the higher, so
-     * that the corners of one undirected edge are adjacent; numbers the edges ("groups") in that
-     * order into {@code groupOfCorner}.
-     *
-     * @return the number of groups
+     * Sorts corners by the lower vertex of their edge, then by the higher, so that the corners of
+     * one undirected edge are adjacent, and fills {@link #mate} from the runs. Keeps the sorted
+     * order in {@link #byMin} only if some edge has more than two corners.
      */
-    private int groupCornersByEdge() {
+    private void findMates() {
         int vertexCount = soup.vertexCount();
+        byMin = new int[wCornerCount];
+        mate = new int[wCornerCount];
         int[] bucketStart = new int[vertexCount + 1];
-        // Borrowed until the groups are numbered: the higher vertex of each corner's edge. Each
-        // slot is read for the last time just before its group number overwrites it.
-        int[] high = groupOfCorner;
+        // Borrowed until the mates are known: the higher vertex of each corner's edge. A run's
+        // slots are all read before its mates overwrite them.
+        int[] high = mate;
         for (int c = 0; c < wCornerCount; c++) {
             int a = cornerFrom(c);
             int b = cornerTo(c);
@@ -349,7 +366,7 @@ public final class MeshBuilder {
             byMin[fill[Math.min(cornerFrom(c), cornerTo(c))]++] = c;
         }
         fill = null;
-        int groups = 0;
+        boolean nonManifold = false;
         for (int v = 0; v < vertexCount; v++) {
             int start = bucketStart[v];
             int end = bucketStart[v + 1];
@@ -364,28 +381,28 @@ public final class MeshBuilder {
                 }
                 byMin[j + 1] = c;
             }
-            int previousHigh = -1;
-            for (int i = start; i < end; i++) {
-                int c = byMin[i];
-                if (high[c] != previousHigh) {
-                    groups++;
-                    previousHigh = high[c];
+            for (int i = start; i < end; ) {
+                int runEnd = i + 1;
+                while (runEnd < end && high[byMin[runEnd]] == high[byMin[i]]) {
+                    runEnd++;
                 }
-                groupOfCorner[c] = groups - 1;
+                if (runEnd - i == 1) {
+                    mate[byMin[i]] = BOUNDARY;
+                } else if (runEnd - i == 2) {
+                    mate[byMin[i]] = byMin[i + 1];
+                    mate[byMin[i + 1]] = byMin[i];
+                } else {
+                    nonManifold = true;
+                    for (int k = i; k < runEnd; k++) {
+                        mate[byMin[k]] = NON_MANIFOLD;
+                    }
+                }
+                i = runEnd;
             }
         }
-        return groups;
-    }
-
-    private int[] groupStarts(int groupCount) {
-        int[] starts = new int[groupCount + 1];
-        for (int i = 0; i < byMin.length; i++) {
-            starts[groupOfCorner[byMin[i]] + 1]++;
+        if (!nonManifold) {
+            byMin = null;
         }
-        for (int g = 0; g < groupCount; g++) {
-            starts[g + 1] += starts[g];
-        }
-        return starts;
     }
 
     // ---- step 4: orientation ----------------------------------------------------------------
@@ -408,13 +425,12 @@ public final class MeshBuilder {
             boolean closed = true;
             while (head < tail) {
                 int f = queue[head++];
-                for (int c = wStart[f]; c < wStart[f + 1]; c++) {
-                    int g = groupOfCorner[c];
-                    if (groupStart[g + 1] - groupStart[g] != 2) {
+                for (int c = faceStart(f); c < faceStart(f + 1); c++) {
+                    int o = mate[c];
+                    if (o < 0) {
                         closed = false;
                         continue;
                     }
-                    int o = byMin[groupStart[g]] == c ? byMin[groupStart[g] + 1] : byMin[groupStart[g]];
                     int of = faceOfCorner(o);
                     if (of == f) {
                         closed = false;
@@ -429,16 +445,17 @@ public final class MeshBuilder {
                             flipped++;
                         }
                         queue[tail++] = of;
-                    } else if (flip[of] != wanted && !cut[g]) {
+                    } else if (flip[of] != wanted) {
                         if (options.strict()) {
                             throw refuse(Defect.NON_ORIENTABLE, wSource[f], "face " + wSource[f]
                                     + ": " + Defect.NON_ORIENTABLE.description());
                         }
-                        cut[g] = true;
+                        // Cut the edge: both corners become boundary, so the far side will not
+                        // count it again.
+                        mate[c] = BOUNDARY;
+                        mate[o] = BOUNDARY;
                         closed = false;
                         repairs.merge(Defect.NON_ORIENTABLE, 1, Integer::sum);
-                    } else if (cut[g]) {
-                        closed = false;
                     }
                 }
             }
@@ -484,9 +501,9 @@ public final class MeshBuilder {
         double volume = 0;
         for (int i = 0; i < size; i++) {
             int f = faces[i];
-            int a = wVerts[wStart[f]];
+            int a = wVerts[faceStart(f)];
             double faceVolume = 0;
-            for (int c = wStart[f] + 1; c + 1 < wStart[f + 1]; c++) {
+            for (int c = faceStart(f) + 1; c + 1 < faceStart(f + 1); c++) {
                 faceVolume += tripleProduct(a, wVerts[c], wVerts[c + 1]);
             }
             volume += flip[f] ? -faceVolume : faceVolume;
@@ -509,39 +526,56 @@ public final class MeshBuilder {
 
     /**
      * Reverses the vertex lists of flipped faces. Corner k of a reversed face of n corners is
-     * the edge that was corner n - 2 - k (and the other way round), so the corner's edge group
-     * and its place in {@code byMin} move with it.
+     * the edge that was corner n - 2 - k (and the other way round), so each corner's mate, and
+     * its place in {@code byMin}, move with it.
      */
     private void reverseFlippedFaces(boolean[] flip) {
-        for (int i = 0; i < byMin.length; i++) {
-            int c = byMin[i];
-            int f = faceOfCorner(c);
-            if (flip[f]) {
-                int start = wStart[f];
-                int n = wStart[f + 1] - start;
-                byMin[i] = start + Math.floorMod(n - 2 - (c - start), n);
+        boolean any = false;
+        for (int c = 0; c < wCornerCount; c++) {
+            if (mate[c] >= 0) {
+                mate[c] = reversedIndex(mate[c], flip);
+            }
+            any |= flip[faceOfCorner(c)];
+        }
+        if (!any) {
+            return;
+        }
+        if (byMin != null) {
+            for (int i = 0; i < byMin.length; i++) {
+                byMin[i] = reversedIndex(byMin[i], flip);
             }
         }
-        int[] groups = new int[16];
+        int[] mates = new int[16];
         for (int f = 0; f < wFaceCount; f++) {
             if (!flip[f]) {
                 continue;
             }
-            int start = wStart[f];
-            int n = wStart[f + 1] - start;
-            if (groups.length < n) {
-                groups = new int[2 * n];
+            int start = faceStart(f);
+            int n = faceStart(f + 1) - start;
+            if (mates.length < n) {
+                mates = new int[2 * n];
             }
             for (int k = 0; k < n; k++) {
-                groups[k] = groupOfCorner[start + Math.floorMod(n - 2 - k, n)];
+                mates[k] = mate[start + Math.floorMod(n - 2 - k, n)];
             }
+            System.arraycopy(mates, 0, mate, start, n);
             for (int i = 0, j = n - 1; i < j; i++, j--) {
                 int swap = wVerts[start + i];
                 wVerts[start + i] = wVerts[start + j];
                 wVerts[start + j] = swap;
             }
-            System.arraycopy(groups, 0, groupOfCorner, start, n);
         }
+    }
+
+    /** Where corner {@code c} will be once flipped faces are reversed. */
+    private int reversedIndex(int c, boolean[] flip) {
+        int f = faceOfCorner(c);
+        if (!flip[f]) {
+            return c;
+        }
+        int start = faceStart(f);
+        int n = faceStart(f + 1) - start;
+        return start + Math.floorMod(n - 2 - (c - start), n);
     }
 
     // ---- steps 5 to 7: pair, split pinches, link boundaries ----------------------------------
@@ -552,39 +586,20 @@ public final class MeshBuilder {
      * gets an edge of its own whose twin is a boundary halfedge.
      */
     private int[] pairHalfedges() throws InvalidMeshException {
-        int groupCount = groupStart.length - 1;
         // First pass: the partner of each corner, encoded as -(partner + 2); -1 for none.
         int[] cornerHalfedge = new int[wCornerCount];
         Arrays.fill(cornerHalfedge, -1);
-        for (int g = 0; g < groupCount; g++) {
-            int start = groupStart[g];
-            int size = groupStart[g + 1] - start;
-            if (size < 2 || cut[g]) {
-                continue;
+        for (int c = 0; c < wCornerCount; c++) {
+            int d = mate[c];
+            // Orientation made the mates run in opposite directions, unless the edge lies twice
+            // in one face: such corners stay boundary.
+            if (d > c && cornerFrom(c) != cornerFrom(d) && faceOfCorner(c) != faceOfCorner(d)) {
+                cornerHalfedge[c] = -(d + 2);
+                cornerHalfedge[d] = -(c + 2);
             }
-            if (size > 2) {
-                int f = wSource[faceOfCorner(byMin[start])];
-                if (options.strict()) {
-                    throw refuse(Defect.NON_MANIFOLD_EDGE, f, "face " + f + ": edge "
-                            + cornerFrom(byMin[start]) + "-" + cornerTo(byMin[start])
-                            + " is shared by " + size + " faces");
-                }
-                repair(Defect.NON_MANIFOLD_EDGE, f, 1);
-            }
-            // Join the first two corners of opposite direction in different faces; the rest
-            // stay boundary, which splits a non-manifold edge.
-            search:
-            for (int i = start; i < start + size; i++) {
-                for (int j = i + 1; j < start + size; j++) {
-                    int c = byMin[i];
-                    int d = byMin[j];
-                    if (cornerFrom(c) != cornerFrom(d) && faceOfCorner(c) != faceOfCorner(d)) {
-                        cornerHalfedge[c] = -(d + 2);
-                        cornerHalfedge[d] = -(c + 2);
-                        break search;
-                    }
-                }
-            }
+        }
+        if (byMin != null) {
+            pairNonManifoldEdges(cornerHalfedge);
         }
         // Second pass: number the halfedges in corner order.
         int h = 0;
@@ -601,10 +616,46 @@ public final class MeshBuilder {
         }
         halfedgeCount = h;
         byMin = null;
-        groupOfCorner = null;
-        groupStart = null;
-        cut = null;
+        mate = null;
         return cornerHalfedge;
+    }
+
+    /**
+     * Splits each edge that more than two corners share: joins the first two corners of
+     * opposite direction in different faces and leaves the rest boundary.
+     */
+    private void pairNonManifoldEdges(int[] cornerHalfedge) throws InvalidMeshException {
+        for (int i = 0; i < byMin.length; ) {
+            int first = byMin[i];
+            int low = Math.min(cornerFrom(first), cornerTo(first));
+            int high = Math.max(cornerFrom(first), cornerTo(first));
+            int end = i + 1;
+            while (end < byMin.length && Math.min(cornerFrom(byMin[end]), cornerTo(byMin[end])) == low
+                    && Math.max(cornerFrom(byMin[end]), cornerTo(byMin[end])) == high) {
+                end++;
+            }
+            if (mate[first] == NON_MANIFOLD) {
+                int f = wSource[faceOfCorner(first)];
+                if (options.strict()) {
+                    throw refuse(Defect.NON_MANIFOLD_EDGE, f, "face " + f + ": edge " + cornerFrom(first) + "-"
+                            + cornerTo(first) + " is shared by " + (end - i) + " faces");
+                }
+                repair(Defect.NON_MANIFOLD_EDGE, f, 1);
+                search:
+                for (int j = i; j < end; j++) {
+                    for (int k = j + 1; k < end; k++) {
+                        int c = byMin[j];
+                        int d = byMin[k];
+                        if (cornerFrom(c) != cornerFrom(d) && faceOfCorner(c) != faceOfCorner(d)) {
+                            cornerHalfedge[c] = -(d + 2);
+                            cornerHalfedge[d] = -(c + 2);
+                            break search;
+                        }
+                    }
+                }
+            }
+            i = end;
+        }
     }
 
     private Result assemble(int[] cornerHalfedge) throws InvalidMeshException {
@@ -621,8 +672,8 @@ public final class MeshBuilder {
         }
         int[] faceHalfedge = new int[wFaceCount];
         for (int f = 0; f < wFaceCount; f++) {
-            int start = wStart[f];
-            int end = wStart[f + 1];
+            int start = faceStart(f);
+            int end = faceStart(f + 1);
             faceHalfedge[f] = cornerHalfedge[start];
             for (int c = start; c < end; c++) {
                 int hc = cornerHalfedge[c];
