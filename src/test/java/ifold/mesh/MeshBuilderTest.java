@@ -111,7 +111,7 @@ class MeshBuilderTest {
         // A triangle, a quad and a triangle side by side: the builder switches from its
         // all-triangles layout to the general one in the middle of the faces.
         PolygonSoup soup = Fixtures.soup(new double[] {0, 0, 0, 1, 0, 0, 0, 1, 0, 2, 0, 0, 2, 1, 0, 1, 1, 0, 3, 0, 0},
-                new int[] {0, 1, 2}, new int[] {1, 3, 4, 5}, new int[] {3, 6, 4});
+                new int[] {0, 1, 5}, new int[] {1, 3, 4, 5}, new int[] {3, 6, 4});
         HalfedgeMesh mesh = build(soup).mesh();
         assertEquals(3, mesh.faceSize(0));
         assertEquals(4, mesh.faceSize(1));
