@@ -1,0 +1,81 @@
+package ifold.scene;
+
+import org.joml.Matrix4d;
+import org.joml.Quaterniond;
+import org.joml.Quaterniondc;
+import org.joml.Vector3d;
+import org.joml.Vector3dc;
+
+/**
+ * A perspective camera that orbits a target: it looks at {@code target} from {@code distance}
+ * away, turned by {@code orientation} (which rotates the world into the camera's frame, where
+ * the camera looks down -z with +y up).
+ */
+public final class Camera {
+    private final Vector3d target = new Vector3d();
+    private final Quaterniond orientation = new Quaterniond();
+    private double distance = 5;
+    private double sceneRadius = 1;
+    private double fovY = Math.toRadians(35);
+
+    public Vector3dc target() {
+        return target;
+    }
+
+    public void setTarget(Vector3dc target) {
+        this.target.set(target);
+    }
+
+    public Quaterniondc orientation() {
+        return orientation;
+    }
+
+    public void setOrientation(Quaterniondc orientation) {
+        this.orientation.set(orientation).normalize();
+    }
+
+    public double distance() {
+        return distance;
+    }
+
+    public void setDistance(double distance) {
+        if (!(distance > 0) || !Double.isFinite(distance)) {
+            throw new IllegalArgumentException("camera distance must be positive, got " + distance);
+        }
+        this.distance = distance;
+    }
+
+    /** The vertical field of view, in radians. */
+    public double fovY() {
+        return fovY;
+    }
+
+    /** Aims at a sphere: its centre becomes the target, and the distance fits it in view. */
+    public void frame(Vector3dc center, double radius) {
+        target.set(center);
+        sceneRadius = radius;
+        distance = 1.15 * radius / Math.sin(fovY / 2);
+    }
+
+    /** The radius of what is being looked at, which sets the clipping planes. */
+    public double sceneRadius() {
+        return sceneRadius;
+    }
+
+    /** World to camera: move the target to the origin, turn, then step back by the distance. */
+    public Matrix4d viewMatrix(Matrix4d dest) {
+        return dest.translation(0, 0, -distance).rotate(orientation).translate(-target.x, -target.y, -target.z);
+    }
+
+    public Matrix4d projectionMatrix(double aspect, Matrix4d dest) {
+        double near = Math.max(distance - 2 * sceneRadius, distance * 1e-3);
+        double far = distance + 2 * sceneRadius;
+        return dest.setPerspective(fovY, aspect, near, far);
+    }
+
+    /** The camera's position in the world. */
+    public Vector3d eye(Vector3d dest) {
+        // The camera sits at (0, 0, distance) in its frame; bring that back to the world.
+        return orientation.transformInverse(dest.set(0, 0, distance)).add(target);
+    }
+}

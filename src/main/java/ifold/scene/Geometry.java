@@ -1,0 +1,98 @@
+package ifold.scene;
+
+import java.util.function.Consumer;
+import org.joml.Matrix4dc;
+import org.joml.Vector3d;
+
+/**
+ * A leaf that draws a {@link SceneMesh} with a {@link Material}. The renderer uploads the mesh
+ * once per {@link #version()}; revealing part of it (the path animation) changes only a
+ * number the shader reads, so it costs no upload.
+ */
+public final class Geometry extends Spatial {
+    /** Reveal every triangle. */
+    public static final int ALL = Integer.MAX_VALUE;
+
+    private SceneMesh mesh;
+    private Material material;
+    private int version;
+    private int revealed = ALL;
+    private int hiddenColor = 0xFFE6E6E6;
+
+    public Geometry(String name, SceneMesh mesh, Material material) {
+        super(name);
+        this.mesh = mesh;
+        this.material = material;
+    }
+
+    public SceneMesh mesh() {
+        return mesh;
+    }
+
+    /** Replaces the mesh; the renderer uploads it again. */
+    public void setMesh(SceneMesh mesh) {
+        markChanged();
+        this.mesh = mesh;
+        version++;
+    }
+
+    /** Increases whenever the mesh's data changed and must be uploaded again. */
+    public int version() {
+        return version;
+    }
+
+    public Material material() {
+        return material;
+    }
+
+    public void setMaterial(Material material) {
+        markChanged();
+        this.material = material;
+    }
+
+    /** How many triangles, in mesh order, show their own colour; the rest show {@link #hiddenColor()}. */
+    public int revealed() {
+        return revealed;
+    }
+
+    public void setRevealed(int count) {
+        if (count != revealed) {
+            markChanged();
+            revealed = count;
+        }
+    }
+
+    /** The colour of triangles not yet revealed. */
+    public int hiddenColor() {
+        return hiddenColor;
+    }
+
+    public void setHiddenColor(int argb) {
+        markChanged();
+        hiddenColor = argb;
+    }
+
+    @Override
+    public void addWorldBounds(Bounds bounds) {
+        Bounds local = mesh.bounds();
+        if (!isVisible() || local.isEmpty()) {
+            return;
+        }
+        Matrix4dc world = worldTransform();
+        Vector3d min = local.min();
+        Vector3d max = local.max();
+        Vector3d corner = new Vector3d();
+        for (int i = 0; i < 8; i++) {
+            corner.set((i & 1) == 0 ? min.x : max.x, (i & 2) == 0 ? min.y : max.y, (i & 4) == 0 ? min.z : max.z);
+            world.transformPosition(corner);
+            bounds.add(corner.x, corner.y, corner.z);
+        }
+    }
+
+    @Override
+    public void visitGeometry(Consumer<Geometry> visitor) {
+        if (isVisible()) {
+            visitor.accept(this);
+        }
+    }
+}

@@ -1,0 +1,95 @@
+package ifold.scene;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.joml.Vector3d;
+
+/**
+ * The root of a scenegraph with its camera, lights and background. Knows whether anything
+ * changed since the last frame, and, once bound to a render thread, refuses changes made from
+ * any other thread (they would race with the upload of buffers).
+ */
+public final class Scene {
+    private final Root root = new Root();
+    private final Camera camera = new Camera();
+    private final List<Light> lights = new ArrayList<>();
+    private int background = 0xFFFFFFFF;
+    private volatile Thread renderThread;
+
+    public Scene() {
+        lights.add(new Light(new Vector3d(-0.4, 0.6, 1.0), 0.75));
+        lights.add(new Light(new Vector3d(0.6, -0.3, 0.5), 0.25));
+    }
+
+    /** The root node: attach the scene's content here. */
+    public Node root() {
+        return root;
+    }
+
+    public Camera camera() {
+        return camera;
+    }
+
+    public List<Light> lights() {
+        return lights;
+    }
+
+    /** Light that reaches every surface, as a fraction of its colour. */
+    public double ambient() {
+        return 0.3;
+    }
+
+    public int background() {
+        return background;
+    }
+
+    public void setBackground(int argb) {
+        root.markChanged();
+        background = argb;
+    }
+
+    /** From now on only {@code thread} may change the scene; null lifts the rule. */
+    public void bindToThread(Thread thread) {
+        renderThread = thread;
+    }
+
+    /** Whether something changed since {@link #clearChanged()}. */
+    public boolean isChanged() {
+        return root.changed;
+    }
+
+    public void clearChanged() {
+        root.changed = false;
+    }
+
+    /** The world-space bounds of everything visible. */
+    public Bounds bounds() {
+        Bounds bounds = new Bounds();
+        root.addWorldBounds(bounds);
+        return bounds;
+    }
+
+    /** Points the camera at everything visible, from the camera's current direction. */
+    public void frameAll() {
+        Bounds bounds = bounds();
+        camera.frame(bounds.center(new Vector3d()), Math.max(bounds.radius(), 1e-9));
+    }
+
+    private final class Root extends Node {
+        private boolean changed = true;
+
+        Root() {
+            super("root");
+        }
+
+        @Override
+        protected void markChanged() {
+            Thread owner = renderThread;
+            if (owner != null && owner != Thread.currentThread()) {
+                throw new IllegalStateException("the scene was changed on thread " + Thread.currentThread().getName()
+                        + ", off its render thread " + owner.getName());
+            }
+            changed = true;
+        }
+    }
+}
