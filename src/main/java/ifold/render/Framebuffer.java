@@ -7,22 +7,25 @@ import java.nio.ByteBuffer;
 /**
  * A multisampled framebuffer to draw into and a plain one to resolve it to, so that frames are
  * antialiased the same way on every driver, whether or not the window or the offscreen
- * drawable was granted multisampling.
+ * drawable was granted multisampling. Also reads back integer pictures (triangle indices).
  */
 final class Framebuffer {
-    private static final int SAMPLES = 4;
     final int width;
     final int height;
     private final int[] framebuffers = new int[2];
     private final int[] renderbuffers = new int[3];
     private final ByteBuffer pixels;
 
-    Framebuffer(GL3 gl, int width, int height) {
+    /**
+     * @param samples samples per pixel wanted for antialiasing (0 or 1 for none); the driver's
+     *     maximum caps it
+     */
+    Framebuffer(GL3 gl, int width, int height, int samples) {
         this.width = width;
         this.height = height;
         int[] maxSamples = new int[1];
         gl.glGetIntegerv(GL3.GL_MAX_SAMPLES, maxSamples, 0);
-        int samples = Math.min(SAMPLES, Math.max(0, maxSamples[0]));
+        samples = Math.min(samples, Math.max(0, maxSamples[0]));
         gl.glGenFramebuffers(2, framebuffers, 0);
         gl.glGenRenderbuffers(3, renderbuffers, 0);
         gl.glBindFramebuffer(GL3.GL_FRAMEBUFFER, framebuffers[0]);
@@ -72,6 +75,31 @@ final class Framebuffer {
             pixels.get(rgb, y * stride, stride);
         }
         return rgb;
+    }
+
+    /**
+     * Reads the plain framebuffer without resolving: for pictures drawn with one sample, whose
+     * pixels are data (a triangle index in the red, green and blue bytes) rather than colours.
+     * Returns one int per pixel, rows top first.
+     */
+    int[] readIndices(GL3 gl) {
+        gl.glBindFramebuffer(GL3.GL_READ_FRAMEBUFFER, framebuffers[0]);
+        gl.glBindFramebuffer(GL3.GL_DRAW_FRAMEBUFFER, framebuffers[1]);
+        gl.glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL3.GL_COLOR_BUFFER_BIT, GL3.GL_NEAREST);
+        gl.glBindFramebuffer(GL3.GL_READ_FRAMEBUFFER, framebuffers[1]);
+        gl.glPixelStorei(GL3.GL_PACK_ALIGNMENT, 1);
+        pixels.clear();
+        gl.glReadPixels(0, 0, width, height, GL3.GL_RGB, GL3.GL_UNSIGNED_BYTE, pixels);
+        gl.glBindFramebuffer(GL3.GL_FRAMEBUFFER, 0);
+        int[] indices = new int[width * height];
+        for (int y = 0; y < height; y++) {
+            int row = (height - 1 - y) * 3 * width;
+            for (int x = 0; x < width; x++) {
+                int i = row + 3 * x;
+                indices[y * width + x] = (pixels.get(i) & 0xFF) << 16 | (pixels.get(i + 1) & 0xFF) << 8 | (pixels.get(i + 2) & 0xFF);
+            }
+        }
+        return indices;
     }
 
     void delete(GL3 gl) {

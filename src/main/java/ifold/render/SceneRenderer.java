@@ -9,7 +9,6 @@ import java.util.ArrayList;
 import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
-import org.joml.Matrix3f;
 import org.joml.Matrix4d;
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
@@ -22,15 +21,16 @@ import org.joml.Vector3f;
 public final class SceneRenderer {
     private GlProgram faceProgram;
     private GlProgram edgeProgram;
+    private GlProgram indexProgram;
     private final Map<Geometry, GpuMesh> uploaded = new IdentityHashMap<>();
     private final float[] matrix = new float[16];
-    private final float[] normal = new float[9];
     private int uploads;
 
     /** Compiles the shaders; call on the GL thread with the context current. */
     public void init(GL3 gl) {
         faceProgram = new GlProgram(gl, Shaders.FACE_VERTEX, Shaders.FACE_FRAGMENT);
         edgeProgram = new GlProgram(gl, Shaders.EDGE_VERTEX, Shaders.EDGE_FRAGMENT);
+        indexProgram = new GlProgram(gl, Shaders.EDGE_VERTEX, Shaders.INDEX_FRAGMENT);
     }
 
     /** How many meshes have been uploaded so far (a geometry whose version moved counts again). */
@@ -39,12 +39,23 @@ public final class SceneRenderer {
     }
 
     public void render(GL3 gl, Scene scene, int width, int height) {
-        int background = scene.background();
+        draw(gl, scene, width, height, false);
+    }
+
+    /**
+     * Draws, instead of colours, the index of the triangle seen at each pixel plus one (0 where
+     * there is none), packed into red, green and blue. Read it with one sample per pixel.
+     */
+    public void renderIndices(GL3 gl, Scene scene, int width, int height) {
+        draw(gl, scene, width, height, true);
+    }
+
+    private void draw(GL3 gl, Scene scene, int width, int height, boolean indices) {
+        int background = indices ? 0 : scene.background();
         gl.glViewport(0, 0, width, height);
         gl.glClearColor(channel(background, 16), channel(background, 8), channel(background, 0), 1f);
         gl.glClear(GL3.GL_COLOR_BUFFER_BIT | GL3.GL_DEPTH_BUFFER_BIT);
         gl.glEnable(GL3.GL_DEPTH_TEST);
-        gl.glDisable(GL3.GL_CULL_FACE); // paper is seen from both sides
         gl.glEnable(GL3.GL_MULTISAMPLE);
 
         Matrix4d view = scene.camera().viewMatrix(new Matrix4d());
@@ -62,6 +73,10 @@ public final class SceneRenderer {
                 uploads++;
             }
             Matrix4f modelView = new Matrix4f(new Matrix4d(view).mul(geometry.worldTransform()));
+            if (indices) {
+                drawIndices(gl, geometry, mesh, modelView, projection);
+                continue;
+            }
             drawFaces(gl, scene, geometry, mesh, modelView, projection);
             if (geometry.material().showEdges()) {
                 drawEdges(gl, mesh, modelView, projection);
@@ -84,7 +99,6 @@ public final class SceneRenderer {
         gl.glUseProgram(faceProgram.id);
         gl.glUniformMatrix4fv(faceProgram.uniform(gl, "modelView"), 1, false, modelView.get(matrix), 0);
         gl.glUniformMatrix4fv(faceProgram.uniform(gl, "projection"), 1, false, projection.get(matrix), 0);
-        gl.glUniformMatrix3fv(faceProgram.uniform(gl, "normalMatrix"), 1, false, modelView.normal(new Matrix3f()).get(normal), 0);
         List<Light> lights = scene.lights();
         float[] directions = new float[6];
         float[] intensities = new float[2];
@@ -102,17 +116,38 @@ public final class SceneRenderer {
         setColor(gl, faceProgram.uniform(gl, "backColor"), material.back());
         setColor(gl, faceProgram.uniform(gl, "hiddenColor"), geometry.hiddenColor());
         gl.glUniform1i(faceProgram.uniform(gl, "useFaceColors"), material.useFaceColors() ? 1 : 0);
-        gl.glUniform1f(faceProgram.uniform(gl, "revealed"), geometry.revealed() == Geometry.ALL ? Float.MAX_VALUE : geometry.revealed());
+        gl.glUniform1i(faceProgram.uniform(gl, "revealed"), geometry.revealed());
+        gl.glUniform1i(faceProgram.uniform(gl, "triangleColors"), 0);
         gl.glEnable(GL3.GL_POLYGON_OFFSET_FILL);
         gl.glPolygonOffset(1f, 1f);
+        if (geometry.isClosed()) {
+            gl.glEnable(GL3.GL_CULL_FACE);
+            gl.glCullFace(GL3.GL_BACK);
+        }
         mesh.drawFaces(gl);
+        gl.glDisable(GL3.GL_CULL_FACE); // paper is seen from both sides
         gl.glDisable(GL3.GL_POLYGON_OFFSET_FILL);
+    }
+
+    private void drawIndices(GL3 gl, Geometry geometry, GpuMesh mesh, Matrix4f modelView, Matrix4f projection) {
+        gl.glUseProgram(indexProgram.id);
+        gl.glUniformMatrix4fv(indexProgram.uniform(gl, "modelView"), 1, false, modelView.get(matrix), 0);
+        gl.glUniformMatrix4fv(indexProgram.uniform(gl, "projection"), 1, false, projection.get(matrix), 0);
+        if (geometry.isClosed()) {
+            gl.glEnable(GL3.GL_CULL_FACE);
+            gl.glCullFace(GL3.GL_BACK);
+        }
+        gl.glDisable(GL3.GL_MULTISAMPLE);
+        mesh.drawFaces(gl);
+        gl.glEnable(GL3.GL_MULTISAMPLE);
+        gl.glDisable(GL3.GL_CULL_FACE);
     }
 
     private void drawEdges(GL3 gl, GpuMesh mesh, Matrix4f modelView, Matrix4f projection) {
         gl.glUseProgram(edgeProgram.id);
         gl.glUniformMatrix4fv(edgeProgram.uniform(gl, "modelView"), 1, false, modelView.get(matrix), 0);
         gl.glUniformMatrix4fv(edgeProgram.uniform(gl, "projection"), 1, false, projection.get(matrix), 0);
+        gl.glUniform1i(edgeProgram.uniform(gl, "edgeColors"), 0);
         mesh.drawEdges(gl);
     }
 
@@ -132,6 +167,7 @@ public final class SceneRenderer {
         if (faceProgram != null) {
             faceProgram.delete(gl);
             edgeProgram.delete(gl);
+            indexProgram.delete(gl);
         }
     }
 }

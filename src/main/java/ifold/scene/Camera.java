@@ -54,7 +54,7 @@ public final class Camera {
     public void frame(Vector3dc center, double radius) {
         target.set(center);
         sceneRadius = radius;
-        distance = 1.15 * radius / Math.sin(fovY / 2);
+        distance = 1.08 * radius / Math.sin(fovY / 2);
     }
 
     /** The radius of what is being looked at, which sets the clipping planes. */

@@ -18,6 +18,7 @@ public final class Geometry extends Spatial {
     private int version;
     private int revealed = ALL;
     private int hiddenColor = 0xFFE6E6E6;
+    private boolean closed;
 
     public Geometry(String name, SceneMesh mesh, Material material) {
         super(name);
@@ -62,6 +63,20 @@ public final class Geometry extends Spatial {
         }
     }
 
+    /**
+     * Whether the mesh is a closed surface seen only from outside, so that the renderer may skip
+     * the triangles facing away (about half, and on a software renderer the cost is per
+     * triangle). Paper is never closed: both its sides show.
+     */
+    public boolean isClosed() {
+        return closed;
+    }
+
+    public void setClosed(boolean closed) {
+        markChanged();
+        this.closed = closed;
+    }
+
     /** The colour of triangles not yet revealed. */
     public int hiddenColor() {
         return hiddenColor;
@@ -87,6 +102,19 @@ public final class Geometry extends Spatial {
             world.transformPosition(corner);
             bounds.add(corner.x, corner.y, corner.z);
         }
+    }
+
+    /** The largest distance from {@code center} to a vertex of the mesh, in world coordinates. */
+    public double worldDistanceFrom(Vector3d center) {
+        Matrix4dc world = worldTransform();
+        double[] xyz = mesh.positions();
+        Vector3d p = new Vector3d();
+        double max = 0;
+        for (int i = 0; i < xyz.length; i += 3) {
+            world.transformPosition(p.set(xyz[i], xyz[i + 1], xyz[i + 2]));
+            max = Math.max(max, p.distance(center));
+        }
+        return max;
     }
 
     @Override

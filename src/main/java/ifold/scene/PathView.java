@@ -11,7 +11,7 @@ import java.util.Arrays;
  * original mesh dark.
  */
 public final class PathView {
-    public static final int TREE_EDGE = 0xFF1F9E3A;
+    public static final int TREE_EDGE = 0xFF00A030;
     public static final int NEW_EDGE = 0xFFC8C8C8;
     public static final int ORIGINAL_EDGE = 0xFF303030;
 
@@ -36,7 +36,8 @@ public final class PathView {
             int from = componentStart[c];
             int length = Math.max(1, componentStart[c + 1] - from - 1);
             for (int t = from; t < componentStart[c + 1]; t++) {
-                colors[t] = Colormap.turbo((double) (t - from) / length);
+                // The ends of Turbo are near black and near maroon: keep to the readable middle.
+                colors[t] = Colormap.turbo(0.08 + 0.84 * (t - from) / length);
             }
         }
         for (int t = 0; t < count; t++) {
@@ -70,24 +71,8 @@ public final class PathView {
     }
 
     /** Reveals the path's triangles one after another. */
-    public static Animation reveal(Geometry geometry) {
-        int total = geometry.mesh().triangleCount();
-        return new Animation() {
-            @Override
-            public int stepCount() {
-                return total;
-            }
-
-            @Override
-            public void apply(double position) {
-                geometry.setRevealed((int) Math.floor(position));
-            }
-
-            @Override
-            public String describe(double position) {
-                return "path: triangle " + (int) Math.floor(position) + " of " + total;
-            }
-        };
+    public static RevealAnimation reveal(Geometry geometry) {
+        return new RevealAnimation(geometry);
     }
 
     /** How many edges of each kind the mesh has, as {tree, new, original}: for tests and the status line. */

@@ -17,8 +17,8 @@ public final class Scene {
     private volatile Thread renderThread;
 
     public Scene() {
-        lights.add(new Light(new Vector3d(-0.4, 0.6, 1.0), 0.75));
-        lights.add(new Light(new Vector3d(0.6, -0.3, 0.5), 0.25));
+        lights.add(new Light(new Vector3d(-0.4, 0.6, 1.0), 0.6));
+        lights.add(new Light(new Vector3d(0.6, -0.3, 0.5), 0.3));
     }
 
     /** The root node: attach the scene's content here. */
@@ -36,7 +36,7 @@ public final class Scene {
 
     /** Light that reaches every surface, as a fraction of its colour. */
     public double ambient() {
-        return 0.3;
+        return 0.4;
     }
 
     public int background() {
@@ -71,8 +71,10 @@ public final class Scene {
 
     /** Points the camera at everything visible, from the camera's current direction. */
     public void frameAll() {
-        Bounds bounds = bounds();
-        camera.frame(bounds.center(new Vector3d()), Math.max(bounds.radius(), 1e-9));
+        Vector3d center = bounds().center(new Vector3d());
+        double[] radius = {0};
+        root.visitGeometry(geometry -> radius[0] = Math.max(radius[0], geometry.worldDistanceFrom(center)));
+        camera.frame(center, Math.max(radius[0], 1e-9));
     }
 
     private final class Root extends Node {

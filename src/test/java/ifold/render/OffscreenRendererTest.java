@@ -55,7 +55,7 @@ class OffscreenRendererTest {
     @Test
     void backgroundWhereNothingIsAndTheModelsColourWhereItIs() throws Exception {
         Scene scene = redSquare();
-        try (OffscreenRenderer renderer = new OffscreenRenderer(W, H)) {
+        try (OffscreenRenderer renderer = new OffscreenRenderer(W, H, 4)) {
             byte[] rgb = renderer.render(scene);
             assertEquals(3 * W * H, rgb.length);
             assertEquals(0x203040, pixel(rgb, 2, 2), "corner shows the background");
@@ -71,7 +71,7 @@ class OffscreenRendererTest {
     void theBackOfThePaperHasItsOwnColour() throws Exception {
         Scene scene = redSquare();
         scene.camera().setOrientation(new org.joml.Quaterniond().rotationY(Math.PI)); // look from behind
-        try (OffscreenRenderer renderer = new OffscreenRenderer(W, H)) {
+        try (OffscreenRenderer renderer = new OffscreenRenderer(W, H, 4)) {
             int centre = pixel(renderer.render(scene), W / 2, H / 2);
             assertTrue((centre & 0xFF) > 150 && (centre >> 16 & 0xFF) < 30, "the back is blue: " + Integer.toHexString(centre));
         }
@@ -84,7 +84,7 @@ class OffscreenRendererTest {
         Scene scene = new Scene();
         scene.root().attach(path);
         scene.frameAll();
-        try (OffscreenRenderer renderer = new OffscreenRenderer(W, H)) {
+        try (OffscreenRenderer renderer = new OffscreenRenderer(W, H, 4)) {
             path.setRevealed(0);
             byte[] none = renderer.render(scene);
             path.setRevealed(10);

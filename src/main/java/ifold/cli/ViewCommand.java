@@ -1,0 +1,143 @@
+package ifold.cli;
+
+import ifold.mesh.HalfedgeMesh;
+import ifold.mesh.MeshBuilder;
+import ifold.mesh.Topology;
+import ifold.refine.HamiltonianRefinement;
+import ifold.render.FrameExport;
+import ifold.render.RenderUnavailableException;
+import ifold.render.ViewerWindow;
+import ifold.scene.Animation;
+import ifold.scene.Geometry;
+import ifold.scene.Material;
+import ifold.scene.PathView;
+import ifold.scene.Player;
+import ifold.scene.Scene;
+import ifold.scene.SceneMesh;
+import ifold.scene.Turntable;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.DirectoryStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import org.joml.Quaterniond;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/** {@code ifold view MODEL [--refine] [--path]}: the viewer, in a window or as frames. */
+@Command(name = "view", mixinStandardHelpOptions = true,
+        description = {"Shows a model in a window with a virtual trackball, or renders it into frames with --frames.",
+            "With --path, the Hamiltonian path appears triangle by triangle (spanning-tree edges in green)."})
+final class ViewCommand implements Callable<Integer> {
+
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "MODEL", description = "an .off or .obj model")
+    Path model;
+
+    @Option(names = "--refine", description = "show the Hamiltonian refinement of the model")
+    boolean refine;
+
+    @Option(names = "--path", description = "animate the Hamiltonian path (implies --refine)")
+    boolean path;
+
+    @Option(names = "--strict", description = "refuse defective input instead of repairing it")
+    boolean strict;
+
+    @Mixin
+    FrameOptions frameOptions = new FrameOptions();
+
+    /** Above this many triangles, edges are not drawn and frames are not antialiased. */
+    static final int DENSE = 25_000;
+
+    @Override
+    public Integer call() {
+        frameOptions.check();
+        PrintWriter err = spec.commandLine().getErr();
+        PrintWriter out = spec.commandLine().getOut();
+        boolean refined = refine || path;
+        LoadedModel loaded = LoadedModel.load(model, new MeshBuilder.Options(strict, refined));
+        loaded.reportRepairs(model, err);
+        HalfedgeMesh mesh = loaded.built().mesh();
+        if (mesh.faceCount() == 0) {
+            throw new UserError(model + ": no faces to show");
+        }
+
+        Scene scene = new Scene();
+        Geometry geometry;
+        Animation animation;
+        String caption;
+        if (refined) {
+            HamiltonianRefinement.Result result = HamiltonianRefinement.refine(mesh);
+            SceneMesh sceneMesh = PathView.mesh(result);
+            geometry = new Geometry("refined", sceneMesh, path ? Material.FACE_COLORS : Material.PAPER);
+            caption = String.format(Locale.ROOT, "%s: %d -> %d triangles", model.getFileName(), mesh.faceCount(), sceneMesh.triangleCount());
+        } else {
+            SceneMesh sceneMesh = SceneMesh.of(mesh);
+            geometry = new Geometry("model", sceneMesh, mesh.hasFaceColors() ? Material.FACE_COLORS : Material.PAPER);
+            caption = String.format(Locale.ROOT, "%s: %d faces, %d triangles", model.getFileName(), mesh.faceCount(), sceneMesh.triangleCount());
+        }
+        // On a dense mesh the outlines would paint it black, and antialiasing cannot be seen on
+        // triangles of a pixel or two, while both cost a software renderer dearly.
+        if (geometry.mesh().triangleCount() > DENSE) {
+            Material m = geometry.material();
+            geometry.setMaterial(new Material(m.front(), m.back(), m.useFaceColors(), false));
+        }
+        geometry.setClosed(Topology.of(mesh).boundaryLoops() == 0);
+        scene.root().attach(geometry);
+        // A three-quarter view from above reads as 3D at once, flat sheets included.
+        scene.camera().setOrientation(new Quaterniond().rotationX(-0.6).rotateY(-0.5));
+        scene.frameAll();
+        animation = path ? PathView.reveal(geometry) : new Turntable(scene.camera());
+
+        if (frameOptions.frames == null) {
+            Player player = new Player(animation, frameOptions.seconds);
+            if (path) {
+                player.seek(animation.stepCount()); // open on the whole path; space plays it from the start
+            }
+            try {
+                new ViewerWindow(scene, player, caption, err).show("iFold - " + model.getFileName(), 1280, 800);
+            } catch (RenderUnavailableException e) {
+                throw new UserError(e.getMessage() + "; or render frames with --frames DIR");
+            }
+            return 0;
+        }
+        int frames = frameOptions.frameCount();
+        removeStaleFrames(frameOptions.frames, frames);
+        try {
+            FrameExport.Result result = FrameExport.export(scene, animation, frameOptions.frames,
+                    frameOptions.width, frameOptions.height, frames, geometry.mesh().triangleCount() <= DENSE ? 4 : 0, err);
+            out.printf(Locale.ROOT, "wrote %d frames of %dx%d to %s in %.1f s (%.1f frames/s, %s)%n", result.frames(),
+                    frameOptions.width, frameOptions.height, frameOptions.frames, result.seconds(), result.framesPerSecond(),
+                    result.renderer());
+        } catch (RenderUnavailableException e) {
+            throw new UserError(e.getMessage());
+        } catch (IOException e) {
+            throw new UserError("option --frames: cannot write frames to " + frameOptions.frames + ": " + e.getMessage());
+        }
+        out.flush();
+        return 0;
+    }
+
+    /** Frames left from a longer export would join the movie: remove those numbered past this one. */
+    static void removeStaleFrames(Path folder, int frames) {
+        try (DirectoryStream<Path> files = Files.newDirectoryStream(folder, "frame_[0-9][0-9][0-9][0-9][0-9].png*")) {
+            for (Path file : files) {
+                String name = file.getFileName().toString();
+                int index = Integer.parseInt(name.substring(6, 11));
+                if (index >= frames || name.endsWith(".part")) {
+                    Files.delete(file);
+                }
+            }
+        } catch (IOException | NumberFormatException e) {
+            throw new UserError("option --frames: cannot tidy " + folder + ": " + e.getMessage());
+        }
+    }
+}
