@@ -28,6 +28,8 @@ final class FrameOptions {
 
     int width;
     int height;
+    /** Whether {@link #check()} made the folder, so that a failed export can take it away again. */
+    private boolean createdFolder;
 
     /** Checks the values and prepares the folder; throws a {@link UserError} naming the option. */
     void check() {
@@ -51,6 +53,17 @@ final class FrameOptions {
         }
     }
 
+    /** After a failure: removes the folder if this run made it and left it empty. */
+    void removeFolderIfUnused() {
+        if (createdFolder) {
+            try {
+                Files.deleteIfExists(frames); // fails, harmlessly, if anything was written
+            } catch (IOException e) {
+                // Frames were written after all: they stay.
+            }
+        }
+    }
+
     int frameCount() {
         return Math.max(1, (int) Math.round(fps * seconds));
     }
@@ -66,6 +79,7 @@ final class FrameOptions {
             }
             try {
                 Files.createDirectory(frames);
+                createdFolder = true;
             } catch (IOException e) {
                 throw new UserError("option --frames: cannot create " + frames + ": " + e.getMessage());
             }

@@ -118,6 +118,7 @@ final class ViewCommand implements Callable<Integer> {
                     frameOptions.width, frameOptions.height, frameOptions.frames, result.seconds(), result.framesPerSecond(),
                     result.renderer());
         } catch (RenderUnavailableException e) {
+            frameOptions.removeFolderIfUnused();
             throw new UserError(e.getMessage());
         } catch (IOException e) {
             throw new UserError("option --frames: cannot write frames to " + frameOptions.frames + ": " + e.getMessage());

@@ -123,7 +123,6 @@ public final class ViewerWindow {
             GL3 gl = drawable.getGL().getGL3();
             renderer.init(gl);
             overlay = new TextOverlay(gl);
-            scene.bindToThread(Thread.currentThread());
             trackball.remember();
             lastFrame = System.nanoTime();
             fpsWindowStart = lastFrame;
@@ -132,6 +131,9 @@ public final class ViewerWindow {
         @Override
         public void display(GLAutoDrawable drawable) {
             GL3 gl = drawable.getGL().getGL3();
+            // JOGL calls display from the animator and, on exposure, from NEWT's event thread,
+            // one at a time under the context lock: whichever runs it owns the scene meanwhile.
+            scene.bindToThread(Thread.currentThread());
             int width = drawable.getSurfaceWidth();
             int height = drawable.getSurfaceHeight();
             for (IntBinaryOperator event; (event = input.poll()) != null; ) {
