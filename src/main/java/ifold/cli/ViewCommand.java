@@ -51,6 +51,10 @@ final class ViewCommand implements Callable<Integer> {
     @Option(names = "--strict", description = "refuse defective input instead of repairing it")
     boolean strict;
 
+    @Option(names = "--close-after", paramLabel = "S", hidden = true,
+            description = "close the window after S seconds and print its frames per second (for benchmarks)")
+    double closeAfter;
+
     @Mixin
     FrameOptions frameOptions = new FrameOptions();
 
@@ -97,13 +101,18 @@ final class ViewCommand implements Callable<Integer> {
         scene.frameAll();
         animation = path ? PathView.reveal(geometry) : new Turntable(scene.camera());
 
+        int samples = geometry.mesh().triangleCount() <= DENSE ? 4 : 0;
         if (frameOptions.frames == null) {
             Player player = new Player(animation, frameOptions.seconds);
             if (path) {
                 player.seek(animation.stepCount()); // open on the whole path; space plays it from the start
             }
             try {
-                new ViewerWindow(scene, player, caption, err).show("iFold - " + model.getFileName(), 1280, 800);
+                double fps = new ViewerWindow(scene, player, caption, err, samples).show("iFold - " + model.getFileName(), 1280, 720, closeAfter);
+                if (closeAfter > 0) {
+                    out.printf(Locale.ROOT, "viewer: %.1f frames/s at 1280x720%n", fps);
+                    out.flush();
+                }
             } catch (RenderUnavailableException e) {
                 throw new UserError(e.getMessage() + "; or render frames with --frames DIR");
             }
@@ -113,7 +122,7 @@ final class ViewCommand implements Callable<Integer> {
         removeStaleFrames(frameOptions.frames, frames);
         try {
             FrameExport.Result result = FrameExport.export(scene, animation, frameOptions.frames,
-                    frameOptions.width, frameOptions.height, frames, geometry.mesh().triangleCount() <= DENSE ? 4 : 0, err);
+                    frameOptions.width, frameOptions.height, frames, samples, err);
             out.printf(Locale.ROOT, "wrote %d frames of %dx%d to %s in %.1f s (%.1f frames/s, %s)%n", result.frames(),
                     frameOptions.width, frameOptions.height, frameOptions.frames, result.seconds(), result.framesPerSecond(),
                     result.renderer());

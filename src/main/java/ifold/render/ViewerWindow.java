@@ -24,7 +24,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.ConcurrentLinkedQueue;
@@ -49,6 +48,7 @@ public final class ViewerWindow {
             "H           this help",
             "Q, Esc      quit");
 
+    private final int samples;
     private final Scene scene;
     private final Player player;
     private final String caption;
@@ -63,8 +63,10 @@ public final class ViewerWindow {
      * @param player the animation to play, or null
      * @param caption the start of the status line (the model and its size)
      * @param messages where to say that a screenshot was saved
+     * @param samples samples per pixel for antialiasing (0 for none)
      */
-    public ViewerWindow(Scene scene, Player player, String caption, PrintWriter messages) {
+    public ViewerWindow(Scene scene, Player player, String caption, PrintWriter messages, int samples) {
+        this.samples = samples;
         this.scene = scene;
         this.player = player;
         this.caption = caption;
@@ -72,11 +74,16 @@ public final class ViewerWindow {
         this.trackball = new Trackball(scene.camera());
     }
 
-    /** Opens the window and returns when it is closed. */
-    public void show(String title, int width, int height) throws RenderUnavailableException {
+    /**
+     * Opens the window and returns when it is closed, or after {@code closeAfterSeconds} if
+     * that is positive (for measurements and tests).
+     *
+     * @return the frames per second drawn while the window was open
+     */
+    public double show(String title, int width, int height, double closeAfterSeconds) throws RenderUnavailableException {
         GLCapabilities caps = GlContexts.capabilities();
-        caps.setSampleBuffers(true);
-        caps.setNumSamples(4);
+        caps.setSampleBuffers(samples > 1);
+        caps.setNumSamples(Math.max(1, samples));
         GLWindow window;
         try {
             window = GLWindow.create(caps);
@@ -98,8 +105,13 @@ public final class ViewerWindow {
         Animator animator = new Animator(window);
         window.setVisible(true);
         animator.start();
+        long opened = System.nanoTime();
         try {
-            closed.await();
+            if (closeAfterSeconds > 0) {
+                closed.await((long) (closeAfterSeconds * 1e9), java.util.concurrent.TimeUnit.NANOSECONDS);
+            } else {
+                closed.await();
+            }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         } finally {
@@ -108,7 +120,10 @@ public final class ViewerWindow {
                 window.destroy();
             }
         }
+        return framesDrawn / Math.max(1e-9, (System.nanoTime() - opened) * 1e-9);
     }
+
+    private volatile long framesDrawn;
 
     private final class Listener implements GLEventListener {
         private final SceneRenderer renderer = new SceneRenderer();
@@ -150,6 +165,7 @@ public final class ViewerWindow {
             }
             renderer.render(gl, scene, width, height);
             fpsFrames++;
+            framesDrawn++;
             if (now - fpsWindowStart >= 1_000_000_000L) {
                 fps = fpsFrames / ((now - fpsWindowStart) * 1e-9);
                 fpsFrames = 0;
@@ -165,7 +181,7 @@ public final class ViewerWindow {
         }
 
         private void saveScreenshot(GL3 gl, int width, int height) {
-            Framebuffer framebuffer = new Framebuffer(gl, width, height, 4);
+            Framebuffer framebuffer = new Framebuffer(gl, width, height, samples);
             try {
                 framebuffer.bind(gl);
                 renderer.render(gl, scene, width, height);
@@ -282,8 +298,4 @@ public final class ViewerWindow {
         }
     }
 
-    /** For tests: the keys' help text. */
-    static List<String> help() {
-        return new ArrayList<>(HELP);
-    }
 }
