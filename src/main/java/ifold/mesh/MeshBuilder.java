@@ -6,6 +6,8 @@ import ifold.geom.Triangles;
 import java.util.Arrays;
 import java.util.EnumMap;
 import java.util.Map;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.FutureTask;
 
 /**
  * Turns a polygon soup into a valid {@link HalfedgeMesh}, repairing what real models get wrong
@@ -111,14 +113,46 @@ public final class MeshBuilder {
         return build(soup, Options.REPAIR);
     }
 
+    /** Below this many faces a second thread costs more than it saves. */
+    private static final int PARALLEL_FACES = 50_000;
+
     private Result run() throws InvalidMeshException {
         checkCoordinates();
         cleanFaces();
-        dropDuplicateFaces();
+        // Duplicate faces are rare, and looking for them is a pass of random look-ups: do it on
+        // a second core while the corners are grouped, and group again only if some turn up.
+        FutureTask<boolean[]> duplicates = new FutureTask<>(this::findDuplicateFaces);
+        if (wFaceCount >= PARALLEL_FACES) {
+            Thread thread = new Thread(duplicates, "duplicate-faces");
+            thread.setDaemon(true);
+            thread.start();
+        } else {
+            duplicates.run();
+        }
         cornerFace = wStart == null ? null : cornerFaces();
         findMates();
+        boolean[] drop = await(duplicates);
+        if (drop != null) {
+            compactWorkingFaces(drop);
+            cornerFace = wStart == null ? null : cornerFaces();
+            findMates();
+        }
         reverseFlippedFaces(orient());
         return assemble(pairHalfedges());
+    }
+
+    private static boolean[] await(FutureTask<boolean[]> task) throws InvalidMeshException {
+        try {
+            return task.get();
+        } catch (ExecutionException e) {
+            if (e.getCause() instanceof InvalidMeshException invalid) {
+                throw invalid;
+            }
+            throw new IllegalStateException(e.getCause());
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("interrupted while building the mesh", e);
+        }
     }
 
     // ---- step 1: clean faces ----------------------------------------------------------------
@@ -228,7 +262,13 @@ public final class MeshBuilder {
 
     // ---- step 2: duplicate faces ------------------------------------------------------------
 
-    private void dropDuplicateFaces() throws InvalidMeshException {
+    /**
+     * Marks each face with the same vertex set as an earlier one, and counts it as repaired
+     * (strict mode throws at the first).
+     *
+     * @return which faces to drop, or null if none
+     */
+    private boolean[] findDuplicateFaces() throws InvalidMeshException {
         // Open addressing at a load of at most 0.7.
         int capacity = Integer.highestOneBit(Math.max(4, (int) (wFaceCount / 0.7))) << 1;
         int[] table = new int[capacity]; // face + 1, 0 for empty
@@ -250,9 +290,7 @@ public final class MeshBuilder {
                 table[slot] = f + 1;
             }
         }
-        if (dropped > 0) {
-            compactWorkingFaces(drop);
-        }
+        return dropped > 0 ? drop : null;
     }
 
     /** A hash of the face's vertex set that does not depend on order or orientation. */

@@ -66,28 +66,12 @@ public final class HamiltonianRefinement {
         boolean[] treeEdge = new boolean[mesh.edgeCount()];
         int[] roots = spanningForest(mesh, treeEdge);
         int components = roots.length;
-        int treeEdges = faces - components;
 
-        // Steiner points: incentres by face, then midpoints by tree edge.
-        double[] steiner = new double[3 * (faces + treeEdges)];
+        // Steiner points: the incentres are stored; midpoints are computed when asked.
+        double[] incentres = new double[3 * faces];
         for (int f = 0; f < faces; f++) {
             int h = mesh.faceHalfedge(f);
-            Triangles.incenter(xyz, mesh.fromVertex(h), mesh.toVertex(h), mesh.toVertex(mesh.next(h)), steiner, 3 * f);
-        }
-        int[] midpointOfEdge = new int[mesh.edgeCount()];
-        int midpoints = 0;
-        for (int e = 0; e < treeEdge.length; e++) {
-            if (!treeEdge[e]) {
-                midpointOfEdge[e] = -1;
-                continue;
-            }
-            int a = mesh.toVertex(2 * e);
-            int b = mesh.toVertex(2 * e + 1);
-            int at = 3 * (faces + midpoints);
-            for (int axis = 0; axis < 3; axis++) {
-                steiner[at + axis] = 0.5 * (xyz[3 * a + axis] + xyz[3 * b + axis]);
-            }
-            midpointOfEdge[e] = midpoints++;
+            Triangles.incenter(xyz, mesh.fromVertex(h), mesh.toVertex(h), mesh.toVertex(mesh.next(h)), incentres, 3 * f);
         }
 
         if (mesh.halfedgeCount() > (Integer.MAX_VALUE >>> 2)) {
@@ -119,7 +103,7 @@ public final class HamiltonianRefinement {
         if (t != triangleCount) {
             throw new IllegalStateException("walk emitted " + t + " triangles, expected " + triangleCount);
         }
-        return new Result(new RefinedMesh(mesh, path, steiner, midpointOfEdge), componentStart, treeEdge);
+        return new Result(new RefinedMesh(mesh, path, incentres, new EdgeSet(treeEdge)), componentStart, treeEdge);
     }
 
     /**

@@ -190,6 +190,20 @@ class MeshBuilderTest {
     }
 
     @Test
+    void duplicatesInABigMeshAreFoundOnTheSecondThreadToo() throws InvalidMeshException {
+        PolygonSoup soup = Solids.torus(3, 1, 160, 160); // 51,200 faces: past the threshold for a second thread
+        soup.addTriangle(soup.faceVertex(100, 2), soup.faceVertex(100, 1), soup.faceVertex(100, 0));
+        MeshBuilder.Result result = build(soup);
+        assertEquals(Map.of(Defect.DUPLICATE_FACE, 1), result.repairs());
+        assertEquals(51_200, result.mesh().faceCount());
+        assertEquals(1, Topology.of(result.mesh()).genus());
+        PolygonSoup strictSoup = Solids.torus(3, 1, 160, 160);
+        strictSoup.addTriangle(strictSoup.faceVertex(7, 0), strictSoup.faceVertex(7, 1), strictSoup.faceVertex(7, 2));
+        assertEquals(Defect.DUPLICATE_FACE, assertThrows(InvalidMeshException.class,
+                () -> MeshBuilder.build(strictSoup, new MeshBuilder.Options(true, false))).defect());
+    }
+
+    @Test
     void strictModeRefusesNamingTheDefectAndLine() {
         PolygonSoup soup = new PolygonSoup();
         soup.addVertex(0, 0, 0);
