@@ -9,6 +9,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.util.Locale;
+import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
@@ -34,6 +35,8 @@ public final class FrameWriter implements AutoCloseable {
     private final ExecutorService encoders;
     private final Semaphore inFlight;
     private final List<Future<?>> pending = new ArrayList<>();
+    /** Pictures whose frames are on disk, ready to be drawn into again: a long export allocates no more than a few. */
+    private final ConcurrentLinkedQueue<byte[]> spare = new ConcurrentLinkedQueue<>();
     private final long start = System.nanoTime();
     private int submitted;
     private int lastPrinted = -1;
@@ -56,6 +59,12 @@ public final class FrameWriter implements AutoCloseable {
         this.inFlight = new Semaphore(2 * threads + 2);
     }
 
+    /** A picture of {@code size} bytes to draw the next frame into: one handed back by an earlier frame if there is one. */
+    public byte[] buffer(int size) {
+        byte[] recycled = spare.poll();
+        return recycled != null && recycled.length == size ? recycled : new byte[size];
+    }
+
     /** The file of frame {@code index}. */
     public static String frameName(int index) {
         return String.format(Locale.ROOT, "frame_%05d.png", index);
@@ -63,7 +72,8 @@ public final class FrameWriter implements AutoCloseable {
 
     /**
      * Queues frame {@code index} (rows top first, 3 bytes a pixel) for encoding and writing. Blocks
-     * while too many frames wait; rethrows the first failure of an earlier frame.
+     * while too many frames wait; rethrows the first failure of an earlier frame. The writer
+     * owns {@code rgb} from now on, and hands it out again through {@link #buffer(int)}.
      */
     public void write(int index, int width, int height, byte[] rgb) throws IOException {
         try {
@@ -91,6 +101,7 @@ public final class FrameWriter implements AutoCloseable {
             } catch (IOException e) {
                 throw new UncheckedIOException(e);
             } finally {
+                spare.add(rgb);
                 inFlight.release();
             }
         }));

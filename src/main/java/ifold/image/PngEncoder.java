@@ -16,6 +16,22 @@ import java.util.zip.Deflater;
 public final class PngEncoder {
     private static final byte[] SIGNATURE = {(byte) 0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
 
+    /** Per encoding thread: the filtered rows, the compressed output and the deflater, reused from picture to picture. */
+    private static final ThreadLocal<Buffers> BUFFERS = ThreadLocal.withInitial(Buffers::new);
+
+    private static final class Buffers {
+        private byte[] filtered = new byte[0];
+        private final byte[] compressed = new byte[256 * 1024];
+        private final Deflater deflater = new Deflater(Deflater.BEST_SPEED);
+
+        byte[] filtered(int size) {
+            if (filtered.length < size) {
+                filtered = new byte[size];
+            }
+            return filtered;
+        }
+    }
+
     private PngEncoder() {
     }
 
@@ -40,7 +56,8 @@ public final class PngEncoder {
         chunk(data, "IHDR", header.toByteArray(), header.size());
 
         int stride = 3 * width;
-        byte[] filtered = new byte[height * (stride + 1)];
+        Buffers buffers = BUFFERS.get();
+        byte[] filtered = buffers.filtered(height * (stride + 1));
         for (int y = 0; y < height; y++) {
             int row = y * stride;
             int at = y * (stride + 1);
@@ -52,19 +69,18 @@ public final class PngEncoder {
                 filtered[at + i] = (byte) (rgb[row + i] - rgb[row + i - 3]);
             }
         }
-        Deflater deflater = new Deflater(Deflater.BEST_SPEED);
-        try {
-            deflater.setInput(filtered);
-            deflater.finish();
-            byte[] buffer = new byte[Math.max(1024, filtered.length / 4)];
-            ByteArrayOutputStream compressed = new ByteArrayOutputStream(buffer.length);
-            while (!deflater.finished()) {
-                int n = deflater.deflate(buffer);
-                compressed.write(buffer, 0, n);
+        // The compressed stream goes out as it comes, one IDAT chunk per buffer: PNG joins
+        // consecutive IDAT chunks, so nothing waits for the whole picture to be compressed.
+        Deflater deflater = buffers.deflater;
+        deflater.reset();
+        deflater.setInput(filtered, 0, height * (stride + 1));
+        deflater.finish();
+        byte[] out2 = buffers.compressed;
+        while (!deflater.finished()) {
+            int n = deflater.deflate(out2);
+            if (n > 0) {
+                chunk(data, "IDAT", out2, n);
             }
-            chunk(data, "IDAT", compressed.toByteArray(), compressed.size());
-        } finally {
-            deflater.end();
         }
         chunk(data, "IEND", new byte[0], 0);
         data.flush();

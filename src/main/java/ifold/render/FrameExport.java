@@ -56,7 +56,7 @@ public final class FrameExport {
             } else {
                 for (int i = 0; i < frames; i++) {
                     animation.apply(position(animation, i, frames));
-                    writer.write(i, width, height, renderer.render(scene));
+                    writer.write(i, width, height, renderer.render(scene, writer.buffer(3 * width * height)));
                 }
             }
             writer.finish();
@@ -87,7 +87,7 @@ public final class FrameExport {
         for (int i = 0; i < frames; i++) {
             int count = RevealAnimation.revealedAt(position(reveal, i, frames));
             reveal.apply(position(reveal, i, frames)); // keeps the scene in step for whoever looks next
-            byte[] frame = new byte[revealed.length];
+            byte[] frame = writer.buffer(revealed.length);
             for (int p = 0, b = 0; p < index.length; p++, b += 3) {
                 byte[] source = index[p] != 0 && index[p] - 1 < count ? revealed : hidden;
                 frame[b] = source[b];

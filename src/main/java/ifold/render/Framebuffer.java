@@ -59,6 +59,11 @@ final class Framebuffer {
 
     /** Resolves the samples and reads the picture: RGB rows, top first. */
     byte[] read(GL3 gl) {
+        return read(gl, new byte[3 * width * height]);
+    }
+
+    /** Like {@link #read(GL3)}, into {@code rgb} (3 bytes a pixel). */
+    byte[] read(GL3 gl, byte[] rgb) {
         gl.glBindFramebuffer(GL3.GL_READ_FRAMEBUFFER, framebuffers[0]);
         gl.glBindFramebuffer(GL3.GL_DRAW_FRAMEBUFFER, framebuffers[1]);
         gl.glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL3.GL_COLOR_BUFFER_BIT, GL3.GL_NEAREST);
@@ -68,7 +73,6 @@ final class Framebuffer {
         gl.glReadPixels(0, 0, width, height, GL3.GL_RGB, GL3.GL_UNSIGNED_BYTE, pixels);
         gl.glBindFramebuffer(GL3.GL_FRAMEBUFFER, 0);
         // GL's rows start at the bottom; pictures start at the top.
-        byte[] rgb = new byte[3 * width * height];
         int stride = 3 * width;
         for (int y = 0; y < height; y++) {
             pixels.position((height - 1 - y) * stride);

@@ -63,12 +63,17 @@ public final class OffscreenRenderer implements AutoCloseable {
 
     /** Renders {@code scene} and returns its picture: RGB rows, top first. */
     public byte[] render(Scene scene) {
+        return render(scene, new byte[3 * width * height]);
+    }
+
+    /** Renders {@code scene} into {@code rgb} (3 bytes a pixel, rows top first) and returns it. */
+    public byte[] render(Scene scene, byte[] rgb) {
         GL3 gl = makeCurrent();
         try {
             framebuffer.bind(gl);
             renderer.render(gl, scene, width, height);
             gl.glFinish();
-            return framebuffer.read(gl);
+            return framebuffer.read(gl, rgb);
         } finally {
             drawable.getContext().release();
         }

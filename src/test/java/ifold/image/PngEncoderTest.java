@@ -14,8 +14,15 @@ class PngEncoderTest {
 
     @Test
     void decodesToTheSamePixels() throws Exception {
-        int width = 37;
-        int height = 23;
+        check(37, 23);
+    }
+
+    @Test
+    void bigNoisyPictureSpansSeveralDataChunks() throws Exception {
+        check(400, 300); // 360 kB of noise compresses to more than one 256 kB chunk
+    }
+
+    private static void check(int width, int height) throws Exception {
         byte[] rgb = new byte[3 * width * height];
         new Random(7).nextBytes(rgb);
         for (int i = 0; i < 3 * width * 5; i++) {
