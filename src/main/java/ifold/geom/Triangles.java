@@ -23,6 +23,13 @@ public final class Triangles {
         return Math.sqrt(nx * nx + ny * ny + nz * nz);
     }
 
+    /** The dot product of the edges from a to b and from a to c. */
+    private static double dot(double[] xyz, int a, int b, int c) {
+        return (xyz[3 * b] - xyz[3 * a]) * (xyz[3 * c] - xyz[3 * a])
+                + (xyz[3 * b + 1] - xyz[3 * a + 1]) * (xyz[3 * c + 1] - xyz[3 * a + 1])
+                + (xyz[3 * b + 2] - xyz[3 * a + 2]) * (xyz[3 * c + 2] - xyz[3 * a + 2]);
+    }
+
     public static double distanceSquared(double[] xyz, int a, int b) {
         double dx = xyz[3 * b] - xyz[3 * a];
         double dy = xyz[3 * b + 1] - xyz[3 * a + 1];
@@ -47,18 +54,7 @@ public final class Triangles {
      * does not.
      */
     public static double angleAt(double[] xyz, int a, int b, int c) {
-        double ux = xyz[3 * b] - xyz[3 * a];
-        double uy = xyz[3 * b + 1] - xyz[3 * a + 1];
-        double uz = xyz[3 * b + 2] - xyz[3 * a + 2];
-        double vx = xyz[3 * c] - xyz[3 * a];
-        double vy = xyz[3 * c + 1] - xyz[3 * a + 1];
-        double vz = xyz[3 * c + 2] - xyz[3 * a + 2];
-        double nx = uy * vz - uz * vy;
-        double ny = uz * vx - ux * vz;
-        double nz = ux * vy - uy * vx;
-        double cross = Math.sqrt(nx * nx + ny * ny + nz * nz);
-        double dot = ux * vx + uy * vy + uz * vz;
-        return Math.atan2(cross, dot);
+        return Math.atan2(twiceArea(xyz, a, b, c), dot(xyz, a, b, c));
     }
 
     /** The smallest of the three angles of triangle (a, b, c), in radians. */

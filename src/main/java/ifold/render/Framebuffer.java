@@ -64,14 +64,7 @@ final class Framebuffer {
 
     /** Like {@link #read(GL3)}, into {@code rgb} (3 bytes a pixel). */
     byte[] read(GL3 gl, byte[] rgb) {
-        gl.glBindFramebuffer(GL3.GL_READ_FRAMEBUFFER, framebuffers[0]);
-        gl.glBindFramebuffer(GL3.GL_DRAW_FRAMEBUFFER, framebuffers[1]);
-        gl.glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL3.GL_COLOR_BUFFER_BIT, GL3.GL_NEAREST);
-        gl.glBindFramebuffer(GL3.GL_READ_FRAMEBUFFER, framebuffers[1]);
-        gl.glPixelStorei(GL3.GL_PACK_ALIGNMENT, 1);
-        pixels.clear();
-        gl.glReadPixels(0, 0, width, height, GL3.GL_RGB, GL3.GL_UNSIGNED_BYTE, pixels);
-        gl.glBindFramebuffer(GL3.GL_FRAMEBUFFER, 0);
+        resolveAndRead(gl);
         // GL's rows start at the bottom; pictures start at the top.
         int stride = 3 * width;
         for (int y = 0; y < height; y++) {
@@ -81,12 +74,8 @@ final class Framebuffer {
         return rgb;
     }
 
-    /**
-     * Reads the plain framebuffer without resolving: for pictures drawn with one sample, whose
-     * pixels are data (a triangle index in the red, green and blue bytes) rather than colours.
-     * Returns one int per pixel, rows top first.
-     */
-    int[] readIndices(GL3 gl) {
+    /** Copies the drawn picture to the plain framebuffer (resolving samples) and reads it into {@link #pixels}, bottom row first. */
+    private void resolveAndRead(GL3 gl) {
         gl.glBindFramebuffer(GL3.GL_READ_FRAMEBUFFER, framebuffers[0]);
         gl.glBindFramebuffer(GL3.GL_DRAW_FRAMEBUFFER, framebuffers[1]);
         gl.glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL3.GL_COLOR_BUFFER_BIT, GL3.GL_NEAREST);
@@ -95,6 +84,15 @@ final class Framebuffer {
         pixels.clear();
         gl.glReadPixels(0, 0, width, height, GL3.GL_RGB, GL3.GL_UNSIGNED_BYTE, pixels);
         gl.glBindFramebuffer(GL3.GL_FRAMEBUFFER, 0);
+    }
+
+    /**
+     * Reads the plain framebuffer without resolving: for pictures drawn with one sample, whose
+     * pixels are data (a triangle index in the red, green and blue bytes) rather than colours.
+     * Returns one int per pixel, rows top first.
+     */
+    int[] readIndices(GL3 gl) {
+        resolveAndRead(gl);
         int[] indices = new int[width * height];
         for (int y = 0; y < height; y++) {
             int row = (height - 1 - y) * 3 * width;
