@@ -21,6 +21,13 @@ public final class Tolerance {
      */
     public static final double RELATIVE_EQUALITY = 1e-9;
 
+    /**
+     * A point this close to a plane, relative to the size of the model, lies on it: fold lines
+     * through existing vertices and along existing creases must find them, not cut beside them
+     * and leave slivers. Rounding after a few hundred folds stays far below it.
+     */
+    public static final double ON_PLANE = 1e-9;
+
     /** Whether a triangle with doubled area {@code twiceArea} and longest edge squared {@code longestSquared} has no area. */
     public static boolean isDegenerateTriangle(double twiceArea, double longestSquared) {
         return !(twiceArea > DEGENERATE_AREA * longestSquared);

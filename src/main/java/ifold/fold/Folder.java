@@ -1,0 +1,453 @@
+package ifold.fold;
+
+import ifold.geom.Plane;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import org.joml.Vector3d;
+import org.joml.Vector3dc;
+
+/**
+ * Makes folds, the seed's way:
+ * <ol>
+ *   <li>the fold plane contains the fold line and stands perpendicular to the paper; it slices
+ *       through every layer;</li>
+ *   <li>edges that cross it are split at the exact crossing (3D position and paper coordinates
+ *       at the same fraction, so the pieces stay isometric), and faces that cross it are cut in
+ *       two; vertices within {@link ifold.geom.Tolerance#ON_PLANE} of it are used as they are,
+ *       so folds through vertices and along creases make no slivers;</li>
+ *   <li>the faces on the moving side move; the vertices on the fold line that they share with
+ *       faces that stay are cloned for them;</li>
+ *   <li>the moving region turns about an axis parallel to the fold line, lifted above the top
+ *       layer at the line (valley) or below the bottom one (mountain) by half a thickness, so
+ *       that after a flat fold the layers lie exactly one thickness apart and in reverse order;</li>
+ *   <li>the fold's edge is a cap of two facets: each fold-line vertex gets a third clone that
+ *       turns half as far, and two quads join the layer that stays, the half-turned clones and
+ *       the layer that moved. With zero thickness there is no gap and no cap.</li>
+ * </ol>
+ * A fold is made in two parts so that it can be animated: {@link #prepare} does the cutting and
+ * cloning, and {@link Prepared#at(double)} turns the moving part any fraction of the way.
+ */
+public final class Folder {
+    private Folder() {
+    }
+
+    /** Makes the whole fold. */
+    public static Paper fold(Paper paper, Fold fold) throws FoldException {
+        return prepare(paper, fold).at(1);
+    }
+
+    /**
+     * A fold cut and cloned, ready to turn.
+     *
+     * @param paper the paper after cutting, cloning and capping, nothing turned yet
+     * @param moving the vertices that turn all the way
+     * @param half the cap vertices that turn half way
+     * @param axisPoint a point of the axis
+     * @param axisDirection the axis's unit direction: turning is counter-clockwise about it
+     * @param angle the full turn, in radians
+     */
+    public record Prepared(Paper paper, int[] moving, int[] half, Vector3dc axisPoint, Vector3dc axisDirection, double angle) {
+        /** The paper with the moving part turned {@code fraction} of the way (0 = not at all, 1 = the fold made). */
+        public Paper at(double fraction) {
+            double[] xyz = paper.positionsCopy();
+            rotate(xyz, moving, fraction * angle);
+            rotate(xyz, half, fraction * angle / 2);
+            return new Paper(xyz, paper.paperCoordinates, paper.faces, paper.cap, paper.thickness, paper.normal,
+                    paper.creases);
+        }
+
+        private void rotate(double[] xyz, int[] vertices, double radians) {
+            if (radians == 0) {
+                return;
+            }
+            // Rodrigues' rotation about the axis through axisPoint.
+            double c = Math.cos(radians);
+            double s = Math.sin(radians);
+            double kx = axisDirection.x();
+            double ky = axisDirection.y();
+            double kz = axisDirection.z();
+            for (int v : vertices) {
+                double px = xyz[3 * v] - axisPoint.x();
+                double py = xyz[3 * v + 1] - axisPoint.y();
+                double pz = xyz[3 * v + 2] - axisPoint.z();
+                double dot = kx * px + ky * py + kz * pz;
+                double cx = ky * pz - kz * py;
+                double cy = kz * px - kx * pz;
+                double cz = kx * py - ky * px;
+                xyz[3 * v] = axisPoint.x() + px * c + cx * s + kx * dot * (1 - c);
+                xyz[3 * v + 1] = axisPoint.y() + py * c + cy * s + ky * dot * (1 - c);
+                xyz[3 * v + 2] = axisPoint.z() + pz * c + cz * s + kz * dot * (1 - c);
+            }
+        }
+    }
+
+    /** Cuts the paper along the fold and clones what the fold needs; see the class documentation. */
+    public static Prepared prepare(Paper paper, Fold fold) throws FoldException {
+        if (!(fold.angleDegrees() > 0 && fold.angleDegrees() <= 180)) {
+            throw new FoldException("the angle must be more than 0 and at most 180 degrees, got " + fold.angleDegrees());
+        }
+        Vector3dc n = paper.normal;
+        Vector3d direction = new Vector3d(fold.direction());
+        direction.fma(-direction.dot(n), n); // only the part along the paper
+        if (!(direction.length() > 1e-12 * Math.max(1, fold.direction().length()))) {
+            throw new FoldException("the fold line must run along the paper, not across it");
+        }
+        direction.normalize();
+        // Right of the line, seen from the top with the line pointing ahead, is direction × n.
+        Vector3d side = direction.cross(n, new Vector3d());
+        if (fold.moving() == Fold.Side.LEFT) {
+            side.negate();
+        }
+        Vector3dc p = fold.point();
+        Plane plane = Plane.through(p.x(), p.y(), p.z(), side.x, side.y, side.z, paper.size());
+        Cutter cutter = new Cutter(paper, plane);
+        cutter.cut();
+        if (!cutter.anyAbove) {
+            throw new FoldException("nothing moves: the line misses the paper, or no paper lies on the "
+                    + fold.moving().name().toLowerCase(java.util.Locale.ROOT) + " of it");
+        }
+        if (!cutter.anyBelow) {
+            throw new FoldException("everything would move: the line misses the paper, or all of it lies on the "
+                    + fold.moving().name().toLowerCase(java.util.Locale.ROOT) + " of it");
+        }
+        return cutter.assemble(fold, side);
+    }
+
+    /** The cutting and cloning of one fold. */
+    private static final class Cutter {
+        private final Paper paper;
+        private final Plane plane;
+        private double[] xyz;
+        private double[] uv;
+        private int vertexCount;
+        /** Side of each vertex: ABOVE is the moving side. */
+        private Plane.Side[] sides;
+        private final List<int[]> faces = new ArrayList<>();
+        private final List<Boolean> caps = new ArrayList<>();
+        private final List<long[]> creases = new ArrayList<>();
+        boolean anyAbove;
+        boolean anyBelow;
+
+        Cutter(Paper paper, Plane plane) {
+            this.paper = paper;
+            this.plane = plane;
+            vertexCount = paper.vertexCount();
+            xyz = Arrays.copyOf(paper.positions, 3 * vertexCount + 48);
+            uv = Arrays.copyOf(paper.paperCoordinates, 2 * vertexCount + 32);
+            sides = new Plane.Side[vertexCount + 16];
+            for (int v = 0; v < vertexCount; v++) {
+                sides[v] = plane.side(paper.x(v), paper.y(v), paper.z(v));
+            }
+        }
+
+        private int addVertex(double x, double y, double z, double u, double w, Plane.Side side) {
+            if (3 * vertexCount + 3 > xyz.length) {
+                xyz = Arrays.copyOf(xyz, 2 * xyz.length);
+                uv = Arrays.copyOf(uv, 2 * uv.length);
+                sides = Arrays.copyOf(sides, 2 * sides.length);
+            }
+            xyz[3 * vertexCount] = x;
+            xyz[3 * vertexCount + 1] = y;
+            xyz[3 * vertexCount + 2] = z;
+            uv[2 * vertexCount] = u;
+            uv[2 * vertexCount + 1] = w;
+            sides[vertexCount] = side;
+            return vertexCount++;
+        }
+
+        private int copyVertex(int v) {
+            return addVertex(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2], uv[2 * v], uv[2 * v + 1], sides[v]);
+        }
+
+        /** Splits every crossing edge once (shared by the faces on both sides) and cuts the faces. */
+        void cut() {
+            Map<Long, Integer> splitOfEdge = new HashMap<>();
+            for (int f = 0; f < paper.faceCount(); f++) {
+                int[] face = paper.faces.get(f);
+                int[] loop = new int[2 * face.length];
+                int size = 0;
+                for (int i = 0; i < face.length; i++) {
+                    int a = face[i];
+                    int b = face[(i + 1) % face.length];
+                    loop[size++] = a;
+                    if (crosses(sides[a], sides[b])) {
+                        long key = ((long) Math.min(a, b) << 32) | Math.max(a, b);
+                        Integer split = splitOfEdge.get(key);
+                        if (split == null) {
+                            split = splitEdge(Math.min(a, b), Math.max(a, b));
+                            splitOfEdge.put(key, split);
+                        }
+                        loop[size++] = split;
+                    }
+                }
+                addCutFace(Arrays.copyOf(loop, size), paper.cap[f]);
+            }
+            for (long[] crease : paper.creases) {
+                long key = (crease[0] << 32) | crease[1];
+                Integer split = splitOfEdge.get(key);
+                if (split == null) {
+                    creases.add(crease);
+                } else {
+                    creases.add(new long[] {Math.min(crease[0], split), Math.max(crease[0], split)});
+                    creases.add(new long[] {Math.min(crease[1], split), Math.max(crease[1], split)});
+                }
+            }
+        }
+
+        private static boolean crosses(Plane.Side a, Plane.Side b) {
+            return a == Plane.Side.ABOVE && b == Plane.Side.BELOW || a == Plane.Side.BELOW && b == Plane.Side.ABOVE;
+        }
+
+        /** The crossing of edge (a, b), a < b, at the same fraction in 3D and on paper. */
+        private int splitEdge(int a, int b) {
+            double da = plane.distance(xyz[3 * a], xyz[3 * a + 1], xyz[3 * a + 2]);
+            double db = plane.distance(xyz[3 * b], xyz[3 * b + 1], xyz[3 * b + 2]);
+            double t = da / (da - db);
+            return addVertex(
+                    xyz[3 * a] + t * (xyz[3 * b] - xyz[3 * a]),
+                    xyz[3 * a + 1] + t * (xyz[3 * b + 1] - xyz[3 * a + 1]),
+                    xyz[3 * a + 2] + t * (xyz[3 * b + 2] - xyz[3 * a + 2]),
+                    uv[2 * a] + t * (uv[2 * b] - uv[2 * a]),
+                    uv[2 * a + 1] + t * (uv[2 * b + 1] - uv[2 * a + 1]),
+                    Plane.Side.ON);
+        }
+
+        /** Adds a face, cut in two at its two vertices on the plane if it has vertices on both sides. */
+        private void addCutFace(int[] loop, boolean cap) {
+            boolean above = false;
+            boolean below = false;
+            for (int v : loop) {
+                above |= sides[v] == Plane.Side.ABOVE;
+                below |= sides[v] == Plane.Side.BELOW;
+            }
+            anyAbove |= above && !cap;
+            anyBelow |= below && !cap;
+            if (!(above && below)) {
+                faces.add(loop);
+                caps.add(cap);
+                return;
+            }
+            // A convex face meets the plane in a segment: exactly two of its vertices lie on it.
+            int first = -1;
+            int second = -1;
+            for (int i = 0; i < loop.length; i++) {
+                if (sides[loop[i]] == Plane.Side.ON) {
+                    if (first < 0) {
+                        first = i;
+                    } else if (second < 0) {
+                        second = i;
+                    }
+                }
+            }
+            faces.add(slice(loop, first, second));
+            caps.add(cap);
+            faces.add(slice(loop, second, first));
+            caps.add(cap);
+        }
+
+        /** The vertices of {@code loop} from index {@code from} to {@code to}, both included, going forward. */
+        private static int[] slice(int[] loop, int from, int to) {
+            int length = Math.floorMod(to - from, loop.length) + 1;
+            int[] part = new int[length];
+            for (int i = 0; i < length; i++) {
+                part[i] = loop[(from + i) % loop.length];
+            }
+            return part;
+        }
+
+        private boolean isMoving(int[] face) {
+            for (int v : face) {
+                if (sides[v] == Plane.Side.ABOVE) {
+                    return true;
+                }
+            }
+            return false;
+        }
+
+        Prepared assemble(Fold fold, Vector3dc side) {
+            int faceCount = faces.size();
+            boolean[] moving = new boolean[faceCount];
+            boolean[] usedByMoving = new boolean[vertexCount];
+            boolean[] usedByMovingPaper = new boolean[vertexCount];
+            boolean[] usedByFixed = new boolean[vertexCount];
+            java.util.Set<Long> fixedEdges = new java.util.HashSet<>();
+            boolean[] usedByFixedPaper = new boolean[vertexCount];
+            for (int f = 0; f < faceCount; f++) {
+                if (!caps.get(f)) {
+                    moving[f] = isMoving(faces.get(f));
+                    for (int v : faces.get(f)) {
+                        usedByMovingPaper[v] |= moving[f];
+                        usedByFixedPaper[v] |= !moving[f];
+                    }
+                }
+            }
+            for (int f = 0; f < faceCount; f++) {
+                if (caps.get(f)) {
+                    moving[f] = capMoves(faces.get(f), usedByMovingPaper, usedByFixedPaper);
+                }
+            }
+            for (int f = 0; f < faceCount; f++) {
+                int[] face = faces.get(f);
+                for (int i = 0; i < face.length; i++) {
+                    int v = face[i];
+                    if (moving[f]) {
+                        usedByMoving[v] = true;
+                    } else {
+                        usedByFixed[v] = true;
+                        fixedEdges.add(((long) v << 32) | face[(i + 1) % face.length]);
+                    }
+                }
+            }
+            // The axis: a 180-degree turn about it maps height z to 2h - z, reversing the order of
+            // the moving layers; it must put the moving layer that is highest at the line one
+            // thickness above the highest layer that stays there (valley), or the lowest one below
+            // the lowest (mountain).
+            Vector3dc n = paper.normal;
+            double[] fixedRange = {Double.NaN, Double.NaN};
+            double[] movingRange = {Double.NaN, Double.NaN};
+            for (int f = 0; f < faceCount; f++) {
+                if (caps.get(f)) {
+                    continue;
+                }
+                for (int v : faces.get(f)) {
+                    if (sides[v] == Plane.Side.ON) {
+                        double h = n.x() * xyz[3 * v] + n.y() * xyz[3 * v + 1] + n.z() * xyz[3 * v + 2];
+                        include(moving[f] ? movingRange : fixedRange, h);
+                    }
+                }
+            }
+            double lineHeight = fold.point().dot(n);
+            if (Double.isNaN(fixedRange[0])) {
+                fixedRange = Double.isNaN(movingRange[0]) ? new double[] {lineHeight, lineHeight} : movingRange;
+            }
+            if (Double.isNaN(movingRange[0])) {
+                movingRange = fixedRange;
+            }
+            double t = paper.thickness;
+            boolean valley = fold.kind() == Fold.Kind.VALLEY;
+            double axisHeight = valley ? (fixedRange[1] + movingRange[1] + t) / 2 : (fixedRange[0] + movingRange[0] - t) / 2;
+            Vector3d axisPoint = new Vector3d(fold.point()).fma(axisHeight - fold.point().dot(n), n);
+            // Valley: the moving side turns up towards n, so the axis is side × n; mountain: n × side.
+            Vector3d axis = valley ? new Vector3d(side).cross(n) : new Vector3d(n).cross(side);
+            axis.normalize();
+
+            // Clone the fold-line vertices that moving faces share with faces that stay.
+            int originalVertices = vertexCount;
+            int[] clone = new int[originalVertices];
+            int[] halfClone = new int[originalVertices];
+            Arrays.fill(clone, -1);
+            Arrays.fill(halfClone, -1);
+            boolean gap = t > 0;
+            if (gap) {
+                for (int v = 0; v < originalVertices; v++) {
+                    if (sides[v] == Plane.Side.ON && usedByMoving[v] && usedByFixed[v]) {
+                        clone[v] = copyVertex(v);
+                        halfClone[v] = copyVertex(v);
+                    }
+                }
+            }
+            List<int[]> result = new ArrayList<>(faceCount + 16);
+            List<Boolean> resultCaps = new ArrayList<>(faceCount + 16);
+            boolean[] turns = new boolean[vertexCount];
+            for (int f = 0; f < faceCount; f++) {
+                int[] face = faces.get(f);
+                if (moving[f]) {
+                    int[] moved = face.clone();
+                    for (int i = 0; i < moved.length; i++) {
+                        if (clone[moved[i]] >= 0) {
+                            moved[i] = clone[moved[i]];
+                        }
+                        turns[moved[i]] = true;
+                    }
+                    // Each fold-line edge a -> b of a moving face becomes the cap's far side.
+                    for (int i = 0; i < face.length; i++) {
+                        int a = face[i];
+                        int b = face[(i + 1) % face.length];
+                        // The face that stays across the line has b -> a; the cap's first facet
+                        // takes a -> b from it, the second hands b' -> a' to the moved face.
+                        if (gap && clone[a] >= 0 && clone[b] >= 0 && fixedEdges.contains(((long) b << 32) | a)) {
+                            result.add(new int[] {a, b, halfClone[b], halfClone[a]});
+                            resultCaps.add(true);
+                            result.add(new int[] {halfClone[a], halfClone[b], clone[b], clone[a]});
+                            resultCaps.add(true);
+                        }
+                    }
+                    result.add(moved);
+                } else {
+                    result.add(face);
+                }
+                resultCaps.add(caps.get(f));
+            }
+            // Creases: the fold-line edges, as the layer that stays sees them.
+            for (int f = 0; f < faceCount; f++) {
+                if (moving[f]) {
+                    continue;
+                }
+                int[] face = faces.get(f);
+                for (int i = 0; i < face.length; i++) {
+                    int a = face[i];
+                    int b = face[(i + 1) % face.length];
+                    if (sides[a] == Plane.Side.ON && sides[b] == Plane.Side.ON && usedByMoving[a] && usedByMoving[b]) {
+                        creases.add(new long[] {Math.min(a, b), Math.max(a, b)});
+                    }
+                }
+            }
+            int[] movingVertices = indicesOf(turns, vertexCount);
+            int[] halfVertices = Arrays.stream(halfClone).filter(v -> v >= 0).toArray();
+            boolean[] capArray = new boolean[result.size()];
+            for (int f = 0; f < capArray.length; f++) {
+                capArray[f] = resultCaps.get(f);
+            }
+            Paper cut = new Paper(Arrays.copyOf(xyz, 3 * vertexCount), Arrays.copyOf(uv, 2 * vertexCount), result, capArray,
+                    t, n, distinct(creases));
+            return new Prepared(cut, movingVertices, halfVertices, axisPoint, axis, Math.toRadians(fold.angleDegrees()));
+        }
+
+        /**
+         * A cap goes with the layers it joins, not with the side of the plane it pokes into
+         * (caps stick out half a thickness beyond their crease): it moves if it joins paper that
+         * moves, and stays if it joins paper that stays (also when it joins both: the new fold
+         * runs along its crease). A cap that touches paper only on the fold line goes by which
+         * side of the plane it lies on.
+         */
+        private boolean capMoves(int[] cap, boolean[] usedByMovingPaper, boolean[] usedByFixedPaper) {
+            boolean joinsMoving = false;
+            boolean above = false;
+            for (int v : cap) {
+                if (usedByFixedPaper[v] && !usedByMovingPaper[v]) {
+                    return false;
+                }
+                joinsMoving |= usedByMovingPaper[v] && !usedByFixedPaper[v];
+                above |= sides[v] == Plane.Side.ABOVE;
+            }
+            return joinsMoving || above;
+        }
+
+        private static void include(double[] range, double h) {
+            range[0] = Double.isNaN(range[0]) ? h : Math.min(range[0], h);
+            range[1] = Double.isNaN(range[1]) ? h : Math.max(range[1], h);
+        }
+
+        private static int[] indicesOf(boolean[] flags, int count) {
+            int[] indices = new int[count];
+            int n = 0;
+            for (int i = 0; i < count; i++) {
+                if (flags[i]) {
+                    indices[n++] = i;
+                }
+            }
+            return Arrays.copyOf(indices, n);
+        }
+
+        private static List<long[]> distinct(List<long[]> edges) {
+            Map<Long, long[]> unique = new java.util.LinkedHashMap<>();
+            for (long[] edge : edges) {
+                unique.putIfAbsent((edge[0] << 32) | edge[1], edge);
+            }
+            return new ArrayList<>(unique.values());
+        }
+    }
+}
