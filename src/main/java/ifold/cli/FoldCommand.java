@@ -1,0 +1,161 @@
+package ifold.cli;
+
+import ifold.fold.Folder;
+import ifold.fold.Paper;
+import ifold.fold.PaperAnalysis;
+import ifold.fold.PaperExport;
+import ifold.render.FrameExport;
+import ifold.render.RenderUnavailableException;
+import ifold.render.ViewerWindow;
+import ifold.scene.Animation;
+import ifold.scene.Geometry;
+import ifold.scene.PaperView;
+import ifold.scene.Player;
+import ifold.scene.Scene;
+import ifold.script.FoldScript;
+import ifold.script.FoldScriptException;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import org.joml.Quaterniond;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/** {@code ifold fold SCRIPT}: plays a fold script, in the viewer or as frames, and exports the result. */
+@Command(name = "fold", mixinStandardHelpOptions = true,
+        description = {"Plays a fold script (docs/fold-scripts.md): each fold swings from 0 to its angle.",
+            "Without --frames it plays in the viewer (space plays, arrows step through the folds)."})
+final class FoldCommand implements Callable<Integer> {
+
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "SCRIPT", description = "a fold script")
+    Path script;
+
+    @Option(names = "--export-obj", paramLabel = "FILE", description = "write the folded paper as OBJ: vt = paper coordinates, caps in group 'cap'")
+    Path exportObj;
+
+    @Option(names = "--report", paramLabel = "FILE", description = "write layers, creases, area and isometry as JSON")
+    Path report;
+
+    @Option(names = "--no-view", description = "do not open the viewer (with --export-obj or --report alone)")
+    boolean noView;
+
+    @Mixin
+    FrameOptions frameOptions = new FrameOptions();
+
+    @Override
+    public Integer call() {
+        if (exportObj != null) {
+            OutputFiles.checkWritableFile(exportObj, "--export-obj", ".obj");
+        }
+        if (report != null) {
+            OutputFiles.checkWritableFile(report, "--report", ".json");
+        }
+        frameOptions.check();
+        FoldScript parsed;
+        List<Folder.Prepared> folds;
+        try {
+            parsed = FoldScript.read(script);
+            folds = parsed.play();
+        } catch (NoSuchFileException e) {
+            throw new UserError(script + ": no such file");
+        } catch (AccessDeniedException e) {
+            throw new UserError(script + ": permission denied");
+        } catch (IOException e) {
+            throw new UserError(script + ": cannot read: " + e.getMessage());
+        } catch (FoldScriptException e) {
+            frameOptions.removeFolderIfUnused();
+            throw new UserError(script + (e.line() > 0 ? ":" + e.getMessage().replaceFirst("^line ", "") : ": " + e.getMessage()));
+        }
+        Paper start = parsed.paper();
+        Paper end = folds.isEmpty() ? start : folds.get(folds.size() - 1).at(1);
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        Map<String, Object> figures = figures(parsed, folds.size(), end);
+        try {
+            if (exportObj != null) {
+                PaperExport.writeObj(end, exportObj);
+                out.println("wrote " + exportObj);
+            }
+            if (report != null) {
+                writeAtomically(report, Json.write(figures));
+                out.println("wrote " + report);
+            }
+        } catch (IOException e) {
+            throw new UserError("cannot write: " + e.getMessage());
+        }
+        out.printf(Locale.ROOT, "%s: %d folds, %d layers at most, %d creases, isometry error %.1e%n", script.getFileName(),
+                folds.size(), figures.get("maxLayers"), figures.get("creases"), (Double) figures.get("isometryError"));
+        out.flush();
+
+        Scene scene = new Scene();
+        Geometry geometry = new Geometry("paper", PaperView.mesh(start), PaperView.MATERIAL);
+        scene.root().attach(geometry);
+        scene.camera().setOrientation(new Quaterniond().rotationX(-0.75).rotateZ(-0.35));
+        scene.frameAll();
+        Animation animation = PaperView.folding(geometry, start, folds);
+        if (frameOptions.frames != null) {
+            try {
+                FrameExport.Result result = FrameExport.export(scene, animation, frameOptions.frames, frameOptions.width,
+                        frameOptions.height, frameOptions.frameCount(), 4, err);
+                out.printf(Locale.ROOT, "wrote %d frames of %dx%d to %s in %.1f s (%.1f frames/s)%n", result.frames(),
+                        frameOptions.width, frameOptions.height, frameOptions.frames, result.seconds(), result.framesPerSecond());
+            } catch (RenderUnavailableException e) {
+                frameOptions.removeFolderIfUnused();
+                throw new UserError(e.getMessage());
+            } catch (IOException e) {
+                throw new UserError("option --frames: cannot write frames to " + frameOptions.frames + ": " + e.getMessage());
+            }
+        } else if (!noView) {
+            Player player = new Player(animation, frameOptions.seconds);
+            try {
+                new ViewerWindow(scene, player, script.getFileName() + ": " + folds.size() + " folds", err, 4)
+                        .show("iFold - " + script.getFileName(), 1280, 720, 0);
+            } catch (RenderUnavailableException e) {
+                throw new UserError(e.getMessage() + "; or render frames with --frames DIR, or pass --no-view");
+            }
+        }
+        out.flush();
+        return 0;
+    }
+
+    private static Map<String, Object> figures(FoldScript script, int folds, Paper paper) {
+        int caps = 0;
+        for (int f = 0; f < paper.faceCount(); f++) {
+            caps += paper.isCap(f) ? 1 : 0;
+        }
+        Map<String, Object> figures = new LinkedHashMap<>();
+        figures.put("folds", folds);
+        figures.put("thickness", paper.thickness());
+        figures.put("vertices", paper.vertexCount());
+        figures.put("faces", paper.faceCount() - caps);
+        figures.put("capFacets", caps);
+        figures.put("creases", paper.creaseCount());
+        figures.put("maxLayers", PaperAnalysis.maxLayers(paper));
+        figures.put("paperArea", PaperAnalysis.paperArea(paper));
+        figures.put("isometryError", PaperAnalysis.isometryError(paper));
+        return figures;
+    }
+
+    private static void writeAtomically(Path file, String text) throws IOException {
+        Path temporary = file.toAbsolutePath().getParent().resolve(file.getFileName() + ".part");
+        Files.writeString(temporary, text, StandardCharsets.UTF_8);
+        Files.move(temporary, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+    }
+}

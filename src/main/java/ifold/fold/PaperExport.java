@@ -1,0 +1,62 @@
+package ifold.fold;
+
+import java.io.BufferedWriter;
+import java.io.IOException;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+
+/**
+ * Writes a folded paper as OBJ: each vertex's 3D position as {@code v} and its paper coordinates
+ * as {@code vt} (same index, in paper units), paper faces in group {@code paper} and cap facets in
+ * group {@code cap}, so that anyone can check that the paper did not stretch. Written under a
+ * temporary name and renamed: a failed export leaves no half-written file.
+ */
+public final class PaperExport {
+    private PaperExport() {
+    }
+
+    public static void writeObj(Paper paper, Path file) throws IOException {
+        Path folder = file.toAbsolutePath().getParent();
+        Path temporary = folder.resolve(file.getFileName() + ".part");
+        try (Writer out = new BufferedWriter(Files.newBufferedWriter(temporary, StandardCharsets.UTF_8))) {
+            int caps = 0;
+            for (int f = 0; f < paper.faceCount(); f++) {
+                caps += paper.isCap(f) ? 1 : 0;
+            }
+            out.write("# iFold folded paper: " + paper.vertexCount() + " vertices, " + paper.faceCount() + " faces ("
+                    + caps + " cap facets), thickness " + paper.thickness() + "\n");
+            out.write("# vt holds each vertex's paper coordinates (u, v): where it lies on the unfolded sheet\n");
+            for (int v = 0; v < paper.vertexCount(); v++) {
+                out.write("v " + paper.x(v) + " " + paper.y(v) + " " + paper.z(v) + "\n");
+            }
+            for (int v = 0; v < paper.vertexCount(); v++) {
+                out.write("vt " + paper.u(v) + " " + paper.v(v) + "\n");
+            }
+            for (boolean capGroup : new boolean[] {false, true}) {
+                out.write(capGroup ? "g cap\n" : "g paper\n");
+                for (int f = 0; f < paper.faceCount(); f++) {
+                    if (paper.isCap(f) != capGroup) {
+                        continue;
+                    }
+                    StringBuilder line = new StringBuilder("f");
+                    for (int v : paper.face(f)) {
+                        line.append(' ').append(v + 1).append('/').append(v + 1);
+                    }
+                    out.write(line.append('\n').toString());
+                }
+            }
+        } catch (IOException e) {
+            Files.deleteIfExists(temporary);
+            throw e;
+        }
+        try {
+            Files.move(temporary, file, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+        } catch (AtomicMoveNotSupportedException e) {
+            Files.move(temporary, file, StandardCopyOption.REPLACE_EXISTING);
+        }
+    }
+}
