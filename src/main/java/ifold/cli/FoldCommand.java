@@ -70,9 +70,11 @@ final class FoldCommand implements Callable<Integer> {
         frameOptions.check();
         FoldScript parsed;
         List<Folder.Prepared> folds;
+        long[] nanosPerFold;
         try {
             parsed = FoldScript.read(script);
-            folds = parsed.play();
+            nanosPerFold = new long[parsed.steps().size()];
+            folds = parsed.play(nanosPerFold);
         } catch (NoSuchFileException e) {
             throw new UserError(script + ": no such file");
         } catch (AccessDeniedException e) {
@@ -88,6 +90,7 @@ final class FoldCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         Map<String, Object> figures = figures(parsed, folds.size(), end);
+        figures.put("timing", timing(nanosPerFold, folds));
         try {
             if (exportObj != null) {
                 PaperExport.writeObj(end, exportObj);
@@ -151,6 +154,39 @@ final class FoldCommand implements Callable<Integer> {
         figures.put("paperArea", PaperAnalysis.paperArea(paper));
         figures.put("isometryError", PaperAnalysis.isometryError(paper));
         return figures;
+    }
+
+    /**
+     * How long folding took: in total, and per fold in each tenth of the script, with the faces
+     * and layers at the end of that tenth, to show how the cost grows.
+     */
+    private static Map<String, Object> timing(long[] nanos, List<Folder.Prepared> folds) {
+        Map<String, Object> timing = new LinkedHashMap<>();
+        long total = 0;
+        for (long n : nanos) {
+            total += n;
+        }
+        timing.put("seconds", total * 1e-9);
+        timing.put("millisecondsPerFold", nanos.length == 0 ? 0.0 : total * 1e-6 / nanos.length);
+        if (nanos.length >= 10) {
+            Map<String, Object> tenths = new LinkedHashMap<>();
+            for (int tenth = 0; tenth < 10; tenth++) {
+                int from = tenth * nanos.length / 10;
+                int to = (tenth + 1) * nanos.length / 10;
+                long sum = 0;
+                for (int i = from; i < to; i++) {
+                    sum += nanos[i];
+                }
+                Paper after = folds.get(to - 1).paper();
+                Map<String, Object> row = new LinkedHashMap<>();
+                row.put("millisecondsPerFold", sum * 1e-6 / Math.max(1, to - from));
+                row.put("faces", after.faceCount());
+                row.put("vertices", after.vertexCount());
+                tenths.put("folds " + (from + 1) + "-" + to, row);
+            }
+            timing.put("byTenth", tenths);
+        }
+        return timing;
     }
 
     private static void writeAtomically(Path file, String text) throws IOException {
