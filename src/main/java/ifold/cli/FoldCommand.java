@@ -1,6 +1,7 @@
 package ifold.cli;
 
 import ifold.fold.Folder;
+import ifold.io.AtomicFile;
 import ifold.fold.Paper;
 import ifold.fold.PaperAnalysis;
 import ifold.fold.PaperExport;
@@ -18,10 +19,8 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.AccessDeniedException;
-import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
@@ -190,8 +189,6 @@ final class FoldCommand implements Callable<Integer> {
     }
 
     private static void writeAtomically(Path file, String text) throws IOException {
-        Path temporary = file.toAbsolutePath().getParent().resolve(file.getFileName() + ".part");
-        Files.writeString(temporary, text, StandardCharsets.UTF_8);
-        Files.move(temporary, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+        AtomicFile.write(file, out -> out.write(text.getBytes(StandardCharsets.UTF_8)), true);
     }
 }

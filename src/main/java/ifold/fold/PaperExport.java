@@ -1,13 +1,12 @@
 package ifold.fold;
 
+import ifold.io.AtomicFile;
 import java.io.BufferedWriter;
 import java.io.IOException;
+import java.io.OutputStreamWriter;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.AtomicMoveNotSupportedException;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 
 /**
  * Writes a folded paper as OBJ: each vertex's 3D position as {@code v} and its paper coordinates
@@ -20,9 +19,8 @@ public final class PaperExport {
     }
 
     public static void writeObj(Paper paper, Path file) throws IOException {
-        Path folder = file.toAbsolutePath().getParent();
-        Path temporary = folder.resolve(file.getFileName() + ".part");
-        try (Writer out = new BufferedWriter(Files.newBufferedWriter(temporary, StandardCharsets.UTF_8))) {
+        AtomicFile.write(file, stream -> {
+            Writer out = new BufferedWriter(new OutputStreamWriter(stream, StandardCharsets.UTF_8));
             int caps = 0;
             for (int f = 0; f < paper.faceCount(); f++) {
                 caps += paper.isCap(f) ? 1 : 0;
@@ -49,14 +47,7 @@ public final class PaperExport {
                     out.write(line.append('\n').toString());
                 }
             }
-        } catch (IOException e) {
-            Files.deleteIfExists(temporary);
-            throw e;
-        }
-        try {
-            Files.move(temporary, file, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-        } catch (AtomicMoveNotSupportedException e) {
-            Files.move(temporary, file, StandardCopyOption.REPLACE_EXISTING);
-        }
+            out.flush();
+        }, true);
     }
 }

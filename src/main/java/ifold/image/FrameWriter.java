@@ -1,17 +1,13 @@
 package ifold.image;
 
+import ifold.io.AtomicFile;
 import java.io.IOException;
-import java.io.OutputStream;
 import java.io.PrintWriter;
 import java.io.UncheckedIOException;
-import java.nio.file.AtomicMoveNotSupportedException;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.Locale;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.Semaphore;
@@ -84,19 +80,9 @@ public final class FrameWriter implements AutoCloseable {
         }
         pending.add(encoders.submit(() -> {
             try {
-                Path target = folder.resolve(frameName(index));
-                Path temporary = folder.resolve(frameName(index) + ".part");
-                try (OutputStream out = Files.newOutputStream(temporary)) {
-                    PngEncoder.encode(width, height, rgb, out);
-                } catch (IOException e) {
-                    Files.deleteIfExists(temporary);
-                    throw e;
-                }
-                try {
-                    Files.move(temporary, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-                } catch (AtomicMoveNotSupportedException e) {
-                    Files.move(temporary, target, StandardCopyOption.REPLACE_EXISTING);
-                }
+                // Not forced to disk: a frame a second is not worth an fsync, and a killed export
+                // still leaves only whole frames, since the rename comes after the last byte.
+                AtomicFile.write(folder.resolve(frameName(index)), out -> PngEncoder.encode(width, height, rgb, out), false);
                 return null;
             } catch (IOException e) {
                 throw new UncheckedIOException(e);

@@ -2,15 +2,8 @@ package ifold.mesh.io;
 
 import java.io.IOException;
 import java.io.OutputStream;
-import java.nio.channels.Channels;
-import java.nio.channels.FileChannel;
-import java.nio.file.AtomicMoveNotSupportedException;
-import java.nio.file.FileAlreadyExistsException;
-import java.nio.file.Files;
+import ifold.io.AtomicFile;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
-import java.nio.file.StandardOpenOption;
-import java.util.concurrent.ThreadLocalRandom;
 
 /**
  * ASCII text into a 1 MiB byte buffer, for the writers: integers by hand, doubles so that they
@@ -37,57 +30,13 @@ final class AsciiOutput {
         void writeTo(AsciiOutput out) throws IOException;
     }
 
-    /**
-     * Writes {@code file} all or nothing: the content goes to a temporary file in the same
-     * directory, is forced to disk, and is then renamed over {@code file} (atomically where the
-     * file system can). On any failure, including an exception thrown by {@code content}, the
-     * temporary file is deleted and an existing {@code file} is left as it was.
-     */
+    /** Writes {@code file} all or nothing, forced to disk (see {@link AtomicFile}). */
     static void writeAtomically(Path file, Content content) throws IOException {
-        Path target = file.toAbsolutePath();
-        Path temp = createTemporary(target);
-        try {
-            try (FileChannel channel = FileChannel.open(temp, StandardOpenOption.WRITE)) {
-                AsciiOutput out = new AsciiOutput(Channels.newOutputStream(channel));
-                content.writeTo(out);
-                out.flush();
-                // Without this a crash soon after the rename can leave an empty file behind it.
-                channel.force(true);
-            }
-            try {
-                Files.move(temp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-            } catch (AtomicMoveNotSupportedException e) {
-                Files.move(temp, target, StandardCopyOption.REPLACE_EXISTING);
-            }
-        } catch (IOException | RuntimeException | Error e) {
-            try {
-                Files.deleteIfExists(temp);
-            } catch (IOException | RuntimeException cleanup) {
-                e.addSuppressed(cleanup);
-            }
-            throw e;
-        }
-    }
-
-    /**
-     * Creates an empty, uniquely named hidden file beside {@code target}. Files.createTempFile
-     * would make it readable by its owner only, and the rename would carry that over.
-     */
-    private static Path createTemporary(Path target) throws IOException {
-        Path dir = target.getParent();
-        String name = target.getFileName().toString();
-        // Keeps the temporary name within the usual 255-byte limit.
-        String base = "." + (name.length() > 200 ? name.substring(0, 200) : name) + ".";
-        for (int attempt = 0; ; attempt++) {
-            Path temp = dir.resolve(base + Long.toHexString(ThreadLocalRandom.current().nextLong()) + ".tmp");
-            try {
-                return Files.createFile(temp);
-            } catch (FileAlreadyExistsException e) {
-                if (attempt == 10) {
-                    throw e;
-                }
-            }
-        }
+        AtomicFile.write(file, stream -> {
+            AsciiOutput out = new AsciiOutput(stream);
+            content.writeTo(out);
+            out.flush();
+        }, true);
     }
 
     private void ensure(int room) throws IOException {

@@ -1,0 +1,81 @@
+package ifold.io;
+
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.channels.Channels;
+import java.nio.channels.FileChannel;
+import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.FileAlreadyExistsException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
+import java.util.concurrent.ThreadLocalRandom;
+
+/**
+ * Writes a file all or nothing: the content goes to a hidden temporary file beside it, which is
+ * renamed over the target (atomically where the file system can) only once it is whole. On any
+ * failure the temporary file is deleted and an existing target is left as it was, so a failed
+ * or killed run never leaves a half-written output.
+ */
+public final class AtomicFile {
+    private AtomicFile() {
+    }
+
+    /** What goes into the file. */
+    public interface Content {
+        void writeTo(OutputStream out) throws IOException;
+    }
+
+    /**
+     * @param durable force the content to disk before the rename, so that not even a crash of
+     *     the machine soon after can leave an empty file; frames of a movie skip it for speed
+     */
+    public static void write(Path file, Content content, boolean durable) throws IOException {
+        Path target = file.toAbsolutePath();
+        Path temp = createTemporary(target);
+        try {
+            try (FileChannel channel = FileChannel.open(temp, StandardOpenOption.WRITE)) {
+                OutputStream out = Channels.newOutputStream(channel);
+                content.writeTo(out);
+                out.flush();
+                if (durable) {
+                    channel.force(true);
+                }
+            }
+            try {
+                Files.move(temp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+            } catch (AtomicMoveNotSupportedException e) {
+                Files.move(temp, target, StandardCopyOption.REPLACE_EXISTING);
+            }
+        } catch (IOException | RuntimeException | Error e) {
+            try {
+                Files.deleteIfExists(temp);
+            } catch (IOException | RuntimeException cleanup) {
+                e.addSuppressed(cleanup);
+            }
+            throw e;
+        }
+    }
+
+    /**
+     * Creates an empty, uniquely named hidden file beside {@code target}. Files.createTempFile
+     * would make it readable by its owner only, and the rename would carry that over.
+     */
+    private static Path createTemporary(Path target) throws IOException {
+        Path dir = target.getParent();
+        String name = target.getFileName().toString();
+        // Keeps the temporary name within the usual 255-byte limit.
+        String base = "." + (name.length() > 200 ? name.substring(0, 200) : name) + ".";
+        for (int attempt = 0; ; attempt++) {
+            Path temp = dir.resolve(base + Long.toHexString(ThreadLocalRandom.current().nextLong()) + ".tmp");
+            try {
+                return Files.createFile(temp);
+            } catch (FileAlreadyExistsException e) {
+                if (attempt == 10) {
+                    throw e;
+                }
+            }
+        }
+    }
+}
