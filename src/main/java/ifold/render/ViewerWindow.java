@@ -43,6 +43,7 @@ public final class ViewerWindow {
             "right-drag  pan",
             "space       play / pause",
             "left/right  step back / forward",
+            "Home        back to the start",
             "R           reset the camera",
             "S           save a screenshot (PNG)",
             "H           this help",
@@ -279,6 +280,11 @@ public final class ViewerWindow {
                 case KeyEvent.VK_RIGHT -> queue(() -> {
                     if (player != null) {
                         player.step(1);
+                    }
+                });
+                case KeyEvent.VK_HOME -> queue(() -> {
+                    if (player != null) {
+                        player.restart();
                     }
                 });
                 case KeyEvent.VK_R -> queue(trackball::reset);
