@@ -1,0 +1,326 @@
+package ifold.mesh.io;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.lang.management.ManagementFactory;
+import java.math.BigDecimal;
+import java.math.BigInteger;
+import java.math.MathContext;
+import java.math.RoundingMode;
+import java.nio.charset.StandardCharsets;
+import java.util.Locale;
+import java.util.Random;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+
+/**
+ * {@link ByteTokenizer#parseDecimal} against {@link Double#parseDouble}, bit for bit, on the
+ * texts printers write and on the cases that break fast parsers: ties, subnormals, the ends
+ * of the power table, long mantissas. {@link ByteTokenizerTest} covers the syntax.
+ */
+class DecimalParsingTest {
+    private static double parse(String s) {
+        byte[] b = ("xx" + s + "yy").getBytes(StandardCharsets.ISO_8859_1);
+        return ByteTokenizer.parseDecimal(b, 2, b.length - 2);
+    }
+
+    private static void assertSameAsJdk(String s) {
+        double expected = Double.parseDouble(s);
+        double actual = parse(s);
+        if (Double.doubleToRawLongBits(expected) != Double.doubleToRawLongBits(actual)) {
+            // Compared first, so that millions of passing checks build no messages.
+            assertEquals(expected, actual, s);
+            assertEquals(Double.doubleToRawLongBits(expected), Double.doubleToRawLongBits(actual),
+                    s + " (sign of zero)");
+        }
+    }
+
+    /** A finite double from random bits: every exponent, subnormals included, about equally likely. */
+    private static double randomFinite(Random random) {
+        double d;
+        do {
+            d = Double.longBitsToDouble(random.nextLong());
+        } while (!Double.isFinite(d));
+        return d;
+    }
+
+    @Test
+    void tableHoldsThePublishedPowersOfFive() {
+        // Entries of fast_float's power_of_five_128 (include/fast_float/fast_table.h): both ends,
+        // both sides of q = -27 where the reciprocals change form, and of q = 27 and 55 where
+        // 5^q stops fitting in 64 and in 128 bits.
+        long[][] published = {
+            {-342, 0xeef453d6923bd65aL, 0x113faa2906a13b3fL},
+            {-341, 0x9558b4661b6565f8L, 0x4ac7ca59a424c507L},
+            {-28, 0xfd87b5f28300ca0dL, 0x8bca9d6e188853fcL},
+            {-27, 0x9e74d1b791e07e48L, 0x775ea264cf55347eL},
+            {-26, 0xc612062576589ddaL, 0x95364afe032a819eL},
+            {-2, 0xa3d70a3d70a3d70aL, 0x3d70a3d70a3d70a4L},
+            {-1, 0xccccccccccccccccL, 0xcccccccccccccccdL},
+            {0, 0x8000000000000000L, 0},
+            {1, 0xa000000000000000L, 0},
+            {27, 0xcecb8f27f4200f3aL, 0},
+            {28, 0x813f3978f8940984L, 0x4000000000000000L},
+            {55, 0xd0cf4b50cfe20765L, 0xfff4b4e3f741cf6dL},
+            {56, 0x82818f1281ed449fL, 0xbff8f10e7a8921a4L},
+            {307, 0xe3d8f9e563a198e5L, 0x58180fddd97723a6L},
+            {308, 0x8e679c2f5e44ff8fL, 0x570f09eaa7ea7648L},
+        };
+        long[] table = ByteTokenizer.PowersOfFive.TABLE;
+        assertEquals(2 * (ByteTokenizer.MAX_EXPONENT_10 - ByteTokenizer.MIN_EXPONENT_10 + 1), table.length);
+        for (long[] entry : published) {
+            int index = 2 * ((int) entry[0] - ByteTokenizer.MIN_EXPONENT_10);
+            assertEquals(Long.toHexString(entry[1]), Long.toHexString(table[index]), "high word of 5^" + entry[0]);
+            assertEquals(Long.toHexString(entry[2]), Long.toHexString(table[index + 1]), "low word of 5^" + entry[0]);
+        }
+        for (int q = ByteTokenizer.MIN_EXPONENT_10; q <= ByteTokenizer.MAX_EXPONENT_10; q++) {
+            int index = 2 * (q - ByteTokenizer.MIN_EXPONENT_10);
+            assertTrue(table[index] < 0, "5^" + q + " is normalised to its top bit");
+            // The table's definition: 5^q to 128 bits, and 2^128 / 5^-q within a unit of its last place.
+            BigInteger entry = new BigInteger(Long.toUnsignedString(table[index])).shiftLeft(64)
+                    .or(new BigInteger(Long.toUnsignedString(table[index + 1])));
+            BigInteger power = BigInteger.valueOf(5).pow(Math.abs(q));
+            if (q >= 0) {
+                int excess = power.bitLength() - 128;
+                assertEquals(excess > 0 ? power.shiftRight(excess) : power.shiftLeft(-excess), entry, "5^" + q);
+            } else {
+                int bits = power.bitLength() + 127;
+                BigInteger reciprocal = BigInteger.ONE.shiftLeft(bits).divide(power);
+                assertTrue(entry.subtract(reciprocal).abs().compareTo(BigInteger.ONE) <= 0, "5^" + q);
+            }
+        }
+    }
+
+    @Test
+    void eiselLemireDecidesEverySignificandOfUpTo19Digits() {
+        // Straight to the algorithm: an undecided answer here would pass through parseDecimal
+        // unnoticed, as a slow but correct parse.
+        Random random = new Random(19);
+        long tens = 1;
+        long[] powersOfTen = new long[20];
+        for (int i = 0; i < 19; i++) {
+            powersOfTen[i] = tens;
+            tens *= 10;
+        }
+        for (int n = 0; n < 300_000; n++) {
+            int digits = 1 + random.nextInt(19);
+            long w = digits == 19
+                    ? Long.remainderUnsigned(random.nextLong(), 9_000_000_000_000_000_000L) + 1_000_000_000_000_000_000L
+                    : powersOfTen[digits - 1] + (long) (random.nextDouble() * 9 * powersOfTen[digits - 1]);
+            int q = random.nextInt(ByteTokenizer.MAX_EXPONENT_10 - ByteTokenizer.MIN_EXPONENT_10 + 20)
+                    + ByteTokenizer.MIN_EXPONENT_10 - 10;
+            String text = Long.toUnsignedString(w) + "e" + q;
+            long bits = ByteTokenizer.eiselLemire(w, q);
+            assertTrue(bits != ByteTokenizer.UNDECIDED, text + " was left undecided");
+            if (bits != Double.doubleToRawLongBits(Double.parseDouble(text))) {
+                assertEquals(Double.parseDouble(text), Double.longBitsToDouble(bits), text);
+            }
+        }
+    }
+
+    // The next three tests read 2.1 million doubles as Java prints them, and samples as other
+    // printers do: C's %.17g (correctly rounded 17 digits, like most exporters), Java's %.17g
+    // (shortest digits padded with zeros) and %.15e.
+    private static final MathContext SEVENTEEN_DIGITS = new MathContext(17, RoundingMode.HALF_EVEN);
+
+    @Test
+    void parsesRandomBitPatterns() {
+        // Every exponent, subnormals included; Java 17's toString and parseDouble are slow on
+        // these, hence fewer than of the others.
+        Random random = new Random(2021);
+        for (int n = 0; n < 500_000; n++) {
+            double x = randomFinite(random);
+            assertSameAsJdk(Double.toString(x));
+            if (n % 20 == 0) {
+                assertSameAsJdk(String.format(Locale.ROOT, "%.15e", x));
+            }
+            if (n % 100 == 0) {
+                assertSameAsJdk(new BigDecimal(x).round(SEVENTEEN_DIGITS).toString());
+            }
+        }
+    }
+
+    @Test
+    void parsesRandomCoordinates() {
+        Random random = new Random(1300);
+        for (int n = 0; n < 1_300_000; n++) {
+            double x = random.nextDouble() * 20 - 10;
+            assertSameAsJdk(Double.toString(x));
+            if (n % 20 == 0) {
+                assertSameAsJdk(new BigDecimal(x).round(SEVENTEEN_DIGITS).toString());
+                assertSameAsJdk(String.format(Locale.ROOT, "%.17g", x));
+                assertSameAsJdk(String.format(Locale.ROOT, "%.15e", x));
+            }
+        }
+    }
+
+    @Test
+    void parsesDecimalFractions() {
+        // k / 10^n, both as the double nearest to it prints and as the exact text "k e-n".
+        Random random = new Random(10);
+        for (int n = 0; n < 300_000; n++) {
+            int k = random.nextInt(1_000_000_000);
+            int digits = random.nextInt(26);
+            assertSameAsJdk(Double.toString(-k / Math.pow(10, digits)));
+            assertSameAsJdk(k + "e-" + digits);
+        }
+    }
+
+    @Test
+    void roundsTiesToEven() {
+        // Exact midpoints between neighbouring doubles that fit in 19 digits: an odd 54-bit
+        // number o times 2^t, written as w * 10^q. For q >= 0, o = 5^q * m; for q < 0,
+        // w = o * 5^-q * 2^(t - q). Each also one unit below and above in the last digit.
+        Random random = new Random(53);
+        BigInteger limit = BigInteger.TEN.pow(19);
+        int ties = 0;
+        for (int q = -4; q <= 23; q++) {
+            BigInteger five = BigInteger.valueOf(5).pow(Math.abs(q));
+            for (int n = 0; n < 2000; n++) {
+                BigInteger w;
+                if (q >= 0) {
+                    // m odd with 5^q * m of 54 bits, then w = m * 2^s for a few s
+                    BigInteger low = BigInteger.ONE.shiftLeft(53).divide(five).add(BigInteger.ONE);
+                    BigInteger high = BigInteger.ONE.shiftLeft(54).subtract(BigInteger.ONE).divide(five);
+                    if (high.compareTo(low) < 0) {
+                        break; // 5^q alone has more than 54 bits
+                    }
+                    BigInteger m = low.add(new BigInteger(64, random).mod(high.subtract(low).add(BigInteger.ONE)))
+                            .setBit(0);
+                    if (m.multiply(five).bitLength() != 54) {
+                        continue;
+                    }
+                    w = m.shiftLeft(random.nextInt(12));
+                } else {
+                    BigInteger o = new BigInteger(53, random).setBit(53).setBit(0);
+                    w = o.multiply(five).shiftLeft(random.nextInt(3));
+                }
+                if (w.compareTo(limit) >= 0) {
+                    continue;
+                }
+                String tie = w + "e" + q;
+                // Check the setup: the text is exactly halfway between two doubles.
+                if (n < 20) {
+                    BigDecimal exact = new BigDecimal(w, -q);
+                    double below = new BigDecimal(Double.parseDouble(tie)).compareTo(exact) < 0
+                            ? Double.parseDouble(tie) : Math.nextDown(Double.parseDouble(tie));
+                    BigDecimal mid = new BigDecimal(below).add(new BigDecimal(Math.nextUp(below)))
+                            .divide(BigDecimal.valueOf(2));
+                    assertEquals(0, mid.compareTo(exact), tie + " is a tie");
+                }
+                assertSameAsJdk(tie);
+                assertSameAsJdk("-" + tie);
+                assertSameAsJdk(w.subtract(BigInteger.ONE) + "e" + q);
+                assertSameAsJdk(w.add(BigInteger.ONE) + "e" + q);
+                ties++;
+            }
+        }
+        assertTrue(ties > 25_000, "ties tested: " + ties);
+    }
+
+    @Test
+    void parsesNearMidpointsAtEveryMagnitude() {
+        // The midpoint between x and the next double, cut to 17, 18 and 19 digits both ways:
+        // texts within a few units of the 19th digit of a rounding boundary.
+        Random random = new Random(1075);
+        for (int n = 0; n < 8_000; n++) {
+            double x = Math.abs(randomFinite(random));
+            if (x == Double.MAX_VALUE) {
+                continue;
+            }
+            BigDecimal mid = new BigDecimal(x).add(new BigDecimal(Math.nextUp(x))).divide(BigDecimal.valueOf(2));
+            for (int digits = 17; digits <= 19; digits++) {
+                assertSameAsJdk(mid.round(new MathContext(digits, RoundingMode.FLOOR)).toString());
+                assertSameAsJdk(mid.round(new MathContext(digits, RoundingMode.CEILING)).toString());
+            }
+            assertSameAsJdk(mid.toString()); // hundreds of digits: the slow path
+        }
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {
+        // subnormals and the normal boundary
+        "4.9e-324", "4.9406564584124654e-324", "2.4703282292062327e-324", "2.4703282292062328e-324",
+        "2.2250738585072011e-308", "2.2250738585072012e-308", "2.2250738585072013e-308",
+        "2.2250738585072014e-308", "2.225073858507201e-308", "2.2250738585072009e-308",
+        "-2.2250738585072014e-308", "1e-310", "9.99999999999999999e-311", "4.4501477170144023e-308",
+        // the largest double and just past it
+        "1.7976931348623157e308", "1.7976931348623158e308", "1.7976931348623158079e308",
+        "1.797693134862315807e308", "-1.7976931348623157e308", "179769313486231570000000000000000e276",
+        // ties and their neighbours
+        "9007199254740993", "9007199254740992", "9007199254740994", "9007199254740995",
+        "9007199254740993.0", "900719925474099.3e1", "18014398509481985", "18014398509481987",
+        "1e23", "8.98846567431158e307", "5e-324", "1.5", "2.5", "0.5e-4",
+        // long mantissas: 18, 19, 20 and 25 digits, with and without trailing zeros
+        "123456789012345678", "1234567890123456789", "12345678901234567890", "9999999999999999999",
+        "18446744073709551615", "18446744073709551616", "1234567890123456789012345",
+        "1.234567890123456789012345", "1000000000000000000000000", "1.000000000000000000000000000",
+        "1234567890123456789000000e-30", "0.1000000000000000055511151231257827",
+        "9007199254740993000000000000", "9007199254740993000000000001",
+        // the ends of the power table and beyond
+        "1e-342", "1e-343", "9e-343", "9999999999999999999e-343", "1e-324", "3e-324", "1e308", "1e309",
+        "9999999999999999999e289", "1e-400", "-1e-400", "1e400",
+        // leading zeros and long runs of zeros
+        "0000000000000000000000000000001", "-000.000", "0.0000000000000000000000000000000000000001",
+        "0.00000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000"
+            + "00000000000000000000000000000000000000000000000000000000000000000000000000000000000000001",
+        "00000000000000000000000.12345678901234567890e0", "0e-400", "-0e400", "0e0", "0.000e-342",
+        // Clinger's limits
+        "1e22", "1e-22", "9007199254740991e22", "9007199254740991e-22", "9007199254740992e22",
+        "1e-23", "123.456e-20",
+    })
+    void parsesEdgeCasesLikeTheJdk(String s) {
+        assertSameAsJdk(s);
+        assertSameAsJdk(s.startsWith("-") ? s.substring(1) : "-" + s);
+    }
+
+    @Test
+    void overflowAndUnderflowKeepTheirSigns() {
+        assertEquals(Double.POSITIVE_INFINITY, parse("1e309"));
+        assertEquals(Double.NEGATIVE_INFINITY, parse("-1.8e308"));
+        assertEquals(Double.POSITIVE_INFINITY, parse("9999999999999999999e300"));
+        assertEquals(Double.doubleToRawLongBits(-0.0), Double.doubleToRawLongBits(parse("-1e-343")));
+        assertEquals(Double.doubleToRawLongBits(-0.0), Double.doubleToRawLongBits(parse("-2e-324")));
+        assertEquals(Double.doubleToRawLongBits(0.0), Double.doubleToRawLongBits(parse("2e-324")));
+        assertEquals(Double.MIN_VALUE, parse("3e-324"));
+    }
+
+    @Test
+    void allocatesNothingForUpTo19Digits() {
+        Assumptions.assumeTrue(ManagementFactory.getThreadMXBean() instanceof com.sun.management.ThreadMXBean);
+        com.sun.management.ThreadMXBean threads = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+        Assumptions.assumeTrue(threads.isThreadAllocatedMemorySupported() && threads.isThreadAllocatedMemoryEnabled());
+        // Full-precision coordinates as our writer prints them, short ones, and 19-digit ones.
+        Random random = new Random(64);
+        StringBuilder text = new StringBuilder();
+        for (int n = 0; n < 20_000; n++) {
+            text.append(random.nextGaussian() * 3).append(' ')
+                    .append(Math.round(random.nextGaussian() * 1e4) / 1e4).append(' ')
+                    .append(random.nextLong() >>> 1).append("e-").append(random.nextInt(300)).append(' ');
+        }
+        byte[] b = text.toString().getBytes(StandardCharsets.ISO_8859_1);
+        int[] starts = new int[60_000];
+        int[] ends = new int[60_000];
+        int count = 0;
+        for (int i = 0; i < b.length; i++) {
+            starts[count] = i;
+            while (b[i] != ' ') {
+                i++;
+            }
+            ends[count++] = i;
+        }
+        double sum = 0;
+        sum += ByteTokenizer.parseDecimal(b, starts[0], ends[0]); // loads the power table
+        long thread = Thread.currentThread().getId();
+        long before = threads.getThreadAllocatedBytes(thread);
+        for (int k = 0; k < count; k++) {
+            sum += ByteTokenizer.parseDecimal(b, starts[k], ends[k]);
+        }
+        long allocated = threads.getThreadAllocatedBytes(thread) - before;
+        // The slow path made a String and more per number: megabytes here.
+        assertTrue(allocated < 16_384, allocated + " bytes allocated parsing " + count + " numbers (sum " + sum + ")");
+    }
+}
