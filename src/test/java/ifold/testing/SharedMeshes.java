@@ -33,7 +33,7 @@ public final class SharedMeshes {
         }
     }
 
-    /** File names for parameterised tests; a single placeholder name when the folder is absent so the test can skip. */
+    /** File names for parameterised tests; when the folder is absent, one name that says so, for a test that then skips. */
     public static Stream<String> names(String kind) {
         List<Path> files = files(kind);
         return files.isEmpty() ? Stream.of("(../shared/meshes absent)") : files.stream().map(p -> p.getFileName().toString());
