@@ -5,20 +5,19 @@
  * <h2>Vocabulary</h2>
  * Every element is an {@code int} handle; {@code -1} means none.
  * <pre>
- *                 toVertex(h)
- *                    o
- *                   /|\
- *        next(h)   / | \   prev(twin(h))
- *                 /  |  \
- *        face(h) /  h|^  \  face(twin(h))
- *               /    v|   \
- *                \  twin  /
- *      prev(h)    \  (h)  /   next(twin(h))
- *                  \  |  /
- *                   \ | /
- *                    o
- *                fromVertex(h) = toVertex(twin(h))
+ *                     toVertex(h)
+ *                         o
+ *            next(h)    / ^ | \    prev(twin(h))
+ *                     /   | |   \
+ *          face(h)  /    h| |twin  \  face(twin(h))
+ *                   \     | |(h)   /
+ *                     \   | |    /
+ *            prev(h)    \ | v  /     next(twin(h))
+ *                         o
+ *               fromVertex(h) = toVertex(twin(h))
  * </pre>
+ * {@code h} runs up the left of the shared edge, with its face on its left; {@code twin(h)}
+ * runs down the right, with the other face.
  * <ul>
  *   <li>{@code twin(h) = h ^ 1} and {@code edge(h) = h >>> 1}: the two halfedges of an edge are
  *       stored side by side, so neither needs an array.</li>
