@@ -1,6 +1,7 @@
 package ifold.fold;
 
 import ifold.geom.Plane;
+import ifold.geom.Tolerance;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashMap;
@@ -103,7 +104,7 @@ public final class Folder {
         }
         Vector3dc p = fold.point();
         Plane plane = Plane.through(p.x(), p.y(), p.z(), side.x, side.y, side.z, paper.size());
-        Cutter cutter = new Cutter(paper, plane);
+        Cutter cutter = new Cutter(paper, (x, y, z, u, v) -> plane.distance(x, y, z), plane.tolerance());
         cutter.cut();
         if (!cutter.anyAbove) {
             throw new FoldException("nothing moves: the line misses the paper, or no paper lies on the "
@@ -113,13 +114,53 @@ public final class Folder {
             throw new FoldException("everything would move: the line misses the paper, or all of it lies on the "
                     + fold.moving().name().toLowerCase(java.util.Locale.ROOT) + " of it");
         }
-        return cutter.assemble(fold, side);
+        return cutter.assemble(fold.kind(), fold.angleDegrees(), fold.point(), side);
+    }
+
+    /** Makes the whole flap fold. */
+    public static Paper fold(Paper paper, FlapFold fold) throws FoldException {
+        return prepare(paper, fold).at(1);
+    }
+
+    /**
+     * Cuts the paper along a flap fold's crease and clones what the fold needs. The crease's
+     * place in space is where the paper it crosses lies now; every point of it must lie on one
+     * straight line there, which holds where that paper is flat.
+     */
+    public static Prepared prepare(Paper paper, FlapFold fold) throws FoldException {
+        if (!(fold.angleDegrees() > 0 && fold.angleDegrees() <= 180)) {
+            throw new FoldException("the angle must be more than 0 and at most 180 degrees, got " + fold.angleDegrees());
+        }
+        double du = fold.u2() - fold.u1();
+        double dv = fold.v2() - fold.v1();
+        double length = Math.hypot(du, dv);
+        if (!(length > 0) || !Double.isFinite(length)) {
+            throw new FoldException("the crease's two paper points must differ");
+        }
+        // Right of the line on the sheet, seen from its top, is (dv, -du).
+        double sign = fold.moving() == Fold.Side.RIGHT ? 1 : -1;
+        double a = sign * dv / length;
+        double b = -sign * du / length;
+        double c = a * fold.u1() + b * fold.v1();
+        Cutter cutter = new Cutter(paper, (x, y, z, u, v) -> a * u + b * v - c, Tolerance.ON_PLANE * paper.size());
+        cutter.cut();
+        if (!cutter.anyAbove || !cutter.anyBelow) {
+            throw new FoldException((cutter.anyAbove ? "everything" : "nothing") + " would move: the crease misses the paper");
+        }
+        return cutter.assembleFlap(fold);
+    }
+
+    /** Signed distance of a vertex from a fold's dividing line or plane: positive on the moving side. */
+    @FunctionalInterface
+    private interface Divider {
+        double distance(double x, double y, double z, double u, double v);
     }
 
     /** The cutting and cloning of one fold. */
     private static final class Cutter {
         private final Paper paper;
-        private final Plane plane;
+        private final Divider divider;
+        private final double tolerance;
         private double[] xyz;
         private double[] uv;
         private int vertexCount;
@@ -131,16 +172,22 @@ public final class Folder {
         boolean anyAbove;
         boolean anyBelow;
 
-        Cutter(Paper paper, Plane plane) {
+        Cutter(Paper paper, Divider divider, double tolerance) {
             this.paper = paper;
-            this.plane = plane;
+            this.divider = divider;
+            this.tolerance = tolerance;
             vertexCount = paper.vertexCount();
             xyz = Arrays.copyOf(paper.positions, 3 * vertexCount + 48);
             uv = Arrays.copyOf(paper.paperCoordinates, 2 * vertexCount + 32);
             sides = new Plane.Side[vertexCount + 16];
             for (int v = 0; v < vertexCount; v++) {
-                sides[v] = plane.side(paper.x(v), paper.y(v), paper.z(v));
+                double d = distance(v);
+                sides[v] = d > tolerance ? Plane.Side.ABOVE : d < -tolerance ? Plane.Side.BELOW : Plane.Side.ON;
             }
+        }
+
+        private double distance(int v) {
+            return divider.distance(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2], uv[2 * v], uv[2 * v + 1]);
         }
 
         private int addVertex(double x, double y, double z, double u, double w, Plane.Side side) {
@@ -203,8 +250,8 @@ public final class Folder {
 
         /** The crossing of edge (a, b), a < b, at the same fraction in 3D and on paper. */
         private int splitEdge(int a, int b) {
-            double da = plane.distance(xyz[3 * a], xyz[3 * a + 1], xyz[3 * a + 2]);
-            double db = plane.distance(xyz[3 * b], xyz[3 * b + 1], xyz[3 * b + 2]);
+            double da = distance(a);
+            double db = distance(b);
             double t = da / (da - db);
             return addVertex(
                     xyz[3 * a] + t * (xyz[3 * b] - xyz[3 * a]),
@@ -267,7 +314,80 @@ public final class Folder {
             return false;
         }
 
-        Prepared assemble(Fold fold, Vector3dc side) {
+        /**
+         * Places a flap fold's crease in space: through the crease points of the moving faces,
+         * the two farthest apart on paper giving the line, and towards the moving side as the
+         * faces beside the crease show it.
+         */
+        Prepared assembleFlap(FlapFold fold) throws FoldException {
+            int first = -1;
+            int second = -1;
+            double widest = -1;
+            List<Integer> onCrease = new ArrayList<>();
+            int beyond = -1;
+            for (int f = 0; f < faces.size(); f++) {
+                if (caps.get(f) || !isMoving(faces.get(f))) {
+                    continue;
+                }
+                boolean touches = false;
+                for (int v : faces.get(f)) {
+                    if (sides[v] == Plane.Side.ON) {
+                        onCrease.add(v);
+                        touches = true;
+                    }
+                }
+                if (touches && beyond < 0) {
+                    for (int v : faces.get(f)) {
+                        if (sides[v] == Plane.Side.ABOVE) {
+                            beyond = v;
+                        }
+                    }
+                }
+            }
+            for (int i = 0; i < onCrease.size(); i++) {
+                for (int j = i + 1; j < onCrease.size(); j++) {
+                    int a = onCrease.get(i);
+                    int b = onCrease.get(j);
+                    double d = Math.hypot(uv[2 * a] - uv[2 * b], uv[2 * a + 1] - uv[2 * b + 1]);
+                    if (d > widest) {
+                        widest = d;
+                        first = a;
+                        second = b;
+                    }
+                }
+            }
+            if (first < 0 || beyond < 0) {
+                throw new FoldException("the crease does not cross the flap: it only touches the paper");
+            }
+            Vector3d point = position(first);
+            Vector3d direction = position(second).sub(point);
+            Vector3dc n = paper.normal;
+            direction.fma(-direction.dot(n), n);
+            if (!(direction.length() > tolerance)) {
+                throw new FoldException("the crease stands across the paper: the flap must lie flat where it is folded");
+            }
+            direction.normalize();
+            for (int v : onCrease) {
+                Vector3d offset = position(v).sub(point);
+                offset.fma(-offset.dot(direction), direction);
+                if (offset.length() > 1e3 * tolerance) {
+                    throw new FoldException("the crease crosses paper that is already folded: it is not one straight line in space");
+                }
+            }
+            Vector3d side = position(beyond).sub(point);
+            side.fma(-side.dot(direction), direction).fma(-side.dot(n), n);
+            if (!(side.length() > tolerance)) {
+                throw new FoldException("the flap stands across the paper: it must lie flat where it is folded");
+            }
+            side.normalize();
+            return assemble(fold.kind(), fold.angleDegrees(), point, side);
+        }
+
+        private Vector3d position(int v) {
+            return new Vector3d(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]);
+        }
+
+        Prepared assemble(Fold.Kind kind, double angleDegrees, Vector3dc linePoint, Vector3dc side) {
             int faceCount = faces.size();
             boolean[] moving = new boolean[faceCount];
             boolean[] usedByMoving = new boolean[vertexCount];
@@ -319,7 +439,7 @@ public final class Folder {
                     }
                 }
             }
-            double lineHeight = fold.point().dot(n);
+            double lineHeight = linePoint.dot(n);
             if (Double.isNaN(fixedRange[0])) {
                 fixedRange = Double.isNaN(movingRange[0]) ? new double[] {lineHeight, lineHeight} : movingRange;
             }
@@ -327,9 +447,10 @@ public final class Folder {
                 movingRange = fixedRange;
             }
             double t = paper.thickness;
-            boolean valley = fold.kind() == Fold.Kind.VALLEY;
+            boolean valley = kind == Fold.Kind.VALLEY;
             double axisHeight = valley ? (fixedRange[1] + movingRange[1] + t) / 2 : (fixedRange[0] + movingRange[0] - t) / 2;
-            Vector3d axisPoint = new Vector3d(fold.point()).fma(axisHeight - fold.point().dot(n), n);
+            axisHeight = Landing.axisHeight(this.paperView(moving), linePoint, side, n, valley, t, axisHeight);
+            Vector3d axisPoint = new Vector3d(linePoint).fma(axisHeight - linePoint.dot(n), n);
             // Valley: the moving side turns up towards n, so the axis is side × n; mountain: n × side.
             Vector3d axis = valley ? new Vector3d(side).cross(n) : new Vector3d(n).cross(side);
             axis.normalize();
@@ -403,7 +524,12 @@ public final class Folder {
             }
             Paper cut = new Paper(Arrays.copyOf(xyz, 3 * vertexCount), Arrays.copyOf(uv, 2 * vertexCount), result, capArray,
                     t, n, distinct(creases));
-            return new Prepared(cut, movingVertices, halfVertices, axisPoint, axis, Math.toRadians(fold.angleDegrees()));
+            return new Prepared(cut, movingVertices, halfVertices, axisPoint, axis, Math.toRadians(angleDegrees));
+        }
+
+        /** The cut faces as they stand now, with which of them move: what {@link Landing} needs. */
+        private Landing.Faces paperView(boolean[] moving) {
+            return new Landing.Faces(xyz, faces, caps, moving, tolerance);
         }
 
         /**

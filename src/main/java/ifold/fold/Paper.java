@@ -68,6 +68,30 @@ public final class Paper {
         return rectangle(side, side, thickness);
     }
 
+    /**
+     * This paper moved rigidly by {@code motion} (a rotation and a translation, no scaling or
+     * mirroring): its paper coordinates stay, its positions and normal move.
+     *
+     * @throws IllegalArgumentException if {@code motion} is not rigid
+     */
+    public Paper moved(org.joml.Matrix4dc motion) {
+        org.joml.Matrix3d rotation = motion.get3x3(new org.joml.Matrix3d());
+        org.joml.Matrix3d check = new org.joml.Matrix3d(rotation).transpose().mul(rotation);
+        if (!check.equals(new org.joml.Matrix3d(), 1e-9) || !(Math.abs(rotation.determinant() - 1) < 1e-9)) {
+            throw new IllegalArgumentException("paper moves rigidly: the motion must be a rotation and a translation");
+        }
+        double[] xyz = new double[positions.length];
+        Vector3d p = new Vector3d();
+        for (int v = 0; v < vertexCount(); v++) {
+            motion.transformPosition(p.set(x(v), y(v), z(v)));
+            xyz[3 * v] = p.x;
+            xyz[3 * v + 1] = p.y;
+            xyz[3 * v + 2] = p.z;
+        }
+        Vector3d movedNormal = rotation.transform(new Vector3d(normal)).normalize();
+        return new Paper(xyz, paperCoordinates, faces, cap, thickness, movedNormal, creases);
+    }
+
     public int vertexCount() {
         return positions.length / 3;
     }

@@ -1,0 +1,126 @@
+package ifold.zigzag;
+
+import ifold.geom.Tolerance;
+import org.joml.Matrix4d;
+import org.joml.Matrix4dc;
+import org.joml.Vector3d;
+import org.joml.Vector3dc;
+
+/**
+ * A triangle in space, its corners named A, B and C (0, 1, 2), its front the side from which
+ * they run counter-clockwise. The zig-zag works in the triangle's <em>plan frame</em> for a chosen
+ * start corner S: the edge opposite S (from P to Q, the corners after S in order) lies along +x
+ * from the origin, S lies above it at height {@link #height(int)}, and +z is the front normal.
+ */
+public final class Triangle {
+    private final Vector3d[] corners;
+
+    public Triangle(Vector3dc a, Vector3dc b, Vector3dc c) {
+        corners = new Vector3d[] {new Vector3d(a), new Vector3d(b), new Vector3d(c)};
+        for (Vector3d corner : corners) {
+            if (!corner.isFinite()) {
+                throw new IllegalArgumentException("the triangle's corners must be finite numbers");
+            }
+        }
+        Vector3d cross = new Vector3d(b).sub(a).cross(new Vector3d(c).sub(a));
+        double longest = Math.max(a.distanceSquared(b), Math.max(b.distanceSquared(c), c.distanceSquared(a)));
+        if (Tolerance.isDegenerateTriangle(cross.length(), longest)) {
+            throw new IllegalArgumentException("the triangle has no area: its corners lie on one line");
+        }
+    }
+
+    /** A triangle in the plane z = 0 from x1, y1, x2, y2, x3, y3. */
+    public static Triangle planar(double x1, double y1, double x2, double y2, double x3, double y3) {
+        return new Triangle(new Vector3d(x1, y1, 0), new Vector3d(x2, y2, 0), new Vector3d(x3, y3, 0));
+    }
+
+    public Vector3dc corner(int i) {
+        return corners[i];
+    }
+
+    /** The corner's name: A, B or C. */
+    public static String name(int corner) {
+        return String.valueOf((char) ('A' + corner));
+    }
+
+    /** The unit normal of the front: corners counter-clockwise seen from it. */
+    public Vector3d normal() {
+        return new Vector3d(corners[1]).sub(corners[0]).cross(new Vector3d(corners[2]).sub(corners[0])).normalize();
+    }
+
+    public double area() {
+        return new Vector3d(corners[1]).sub(corners[0]).cross(new Vector3d(corners[2]).sub(corners[0])).length() / 2;
+    }
+
+    /** The altitude from {@code start} onto the opposite edge. */
+    public double height(int start) {
+        return 2 * area() / opposite(start);
+    }
+
+    /** The length of the edge opposite {@code corner}. */
+    public double opposite(int corner) {
+        return corners[(corner + 1) % 3].distance(corners[(corner + 2) % 3]);
+    }
+
+    /** The smallest angle, in degrees. */
+    public double smallestAngle() {
+        double smallest = 180;
+        for (int i = 0; i < 3; i++) {
+            Vector3d u = new Vector3d(corners[(i + 1) % 3]).sub(corners[i]);
+            Vector3d v = new Vector3d(corners[(i + 2) % 3]).sub(corners[i]);
+            smallest = Math.min(smallest, Math.toDegrees(u.angle(v)));
+        }
+        return smallest;
+    }
+
+    /** The largest angle, in degrees. */
+    public double largestAngle() {
+        double largest = 0;
+        for (int i = 0; i < 3; i++) {
+            Vector3d u = new Vector3d(corners[(i + 1) % 3]).sub(corners[i]);
+            Vector3d v = new Vector3d(corners[(i + 2) % 3]).sub(corners[i]);
+            largest = Math.max(largest, Math.toDegrees(u.angle(v)));
+        }
+        return largest;
+    }
+
+    /**
+     * The rigid motion from the plan frame for {@code start} to space: the corner after
+     * {@code start} at the origin, the next one on +x, {@code start} above, front normal +z.
+     */
+    public Matrix4d planToSpace(int start) {
+        Vector3dc p = corners[(start + 1) % 3];
+        Vector3dc q = corners[(start + 2) % 3];
+        Vector3d ex = new Vector3d(q).sub(p).normalize();
+        Vector3d ez = normal();
+        Vector3d ey = new Vector3d(ez).cross(ex).normalize();
+        return new Matrix4d(
+                ex.x, ex.y, ex.z, 0,
+                ey.x, ey.y, ey.z, 0,
+                ez.x, ez.y, ez.z, 0,
+                p.x(), p.y(), p.z(), 1);
+    }
+
+    /** The corners in the plan frame for {@code start}, x and y of P, Q and then S. */
+    public double[] inPlan(int start) {
+        Matrix4dc toPlan = planToSpace(start).invert(new Matrix4d());
+        double[] plan = new double[6];
+        for (int i = 0; i < 3; i++) {
+            Vector3d corner = toPlan.transformPosition(new Vector3d(corners[(start + 1 + i) % 3]));
+            plan[2 * i] = corner.x;
+            plan[2 * i + 1] = corner.y;
+        }
+        return plan;
+    }
+
+    /** A line for reports: the corners, rounded. */
+    @Override
+    public String toString() {
+        StringBuilder s = new StringBuilder();
+        for (int i = 0; i < 3; i++) {
+            s.append(i == 0 ? "" : ", ").append(name(i)).append(String.format(java.util.Locale.ROOT, " (%.4g, %.4g, %.4g)",
+                    corners[i].x, corners[i].y, corners[i].z));
+        }
+        return s.toString();
+    }
+}
