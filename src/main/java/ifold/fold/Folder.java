@@ -50,8 +50,10 @@ public final class Folder {
      * @param axisDirection the axis's unit direction: turning is counter-clockwise about it
      * @param angle the full turn, in radians
      */
-    public record Prepared(Paper paper, int[] moving, int[] half, Vector3dc axisPoint, Vector3dc axisDirection, double angle) {
+    public record Prepared(Paper paper, int[] moving, int[] half, Vector3dc axisPoint, Vector3dc axisDirection, double angle)
+            implements PaperMotion {
         /** The paper with the moving part turned {@code fraction} of the way (0 = not at all, 1 = the fold made). */
+        @Override
         public Paper at(double fraction) {
             double[] xyz = paper.positionsCopy();
             rotate(xyz, moving, fraction * angle);
@@ -213,6 +215,9 @@ public final class Folder {
         void cut() {
             Map<Long, Integer> splitOfEdge = new HashMap<>();
             for (int f = 0; f < paper.faceCount(); f++) {
+                if (paper.cap[f]) {
+                    continue;
+                }
                 int[] face = paper.faces.get(f);
                 int[] loop = new int[2 * face.length];
                 int size = 0;
@@ -221,7 +226,7 @@ public final class Folder {
                     int b = face[(i + 1) % face.length];
                     loop[size++] = a;
                     if (crosses(sides[a], sides[b])) {
-                        long key = ((long) Math.min(a, b) << 32) | Math.max(a, b);
+                        long key = edgeKey(a, b);
                         Integer split = splitOfEdge.get(key);
                         if (split == null) {
                             split = splitEdge(Math.min(a, b), Math.max(a, b));
@@ -230,8 +235,9 @@ public final class Folder {
                         loop[size++] = split;
                     }
                 }
-                addCutFace(Arrays.copyOf(loop, size), paper.cap[f]);
+                addCutFace(Arrays.copyOf(loop, size), false);
             }
+            cutCaps(splitOfEdge);
             for (long[] crease : paper.creases) {
                 long key = (crease[0] << 32) | crease[1];
                 Integer split = splitOfEdge.get(key);
@@ -242,6 +248,99 @@ public final class Folder {
                     creases.add(new long[] {Math.min(crease[1], split), Math.max(crease[1], split)});
                 }
             }
+        }
+
+        private static long edgeKey(int a, int b) {
+            return ((long) Math.min(a, b) << 32) | Math.max(a, b);
+        }
+
+        /**
+         * Cuts the caps the way their paper was cut, not by the plane: a cap is a strip of quads
+         * between parallel rows (the crease on one layer, the bend, the crease on the other), so
+         * where a row's paper edge was split, the facing row is split at the same fraction and
+         * the quad falls into two quads, each going with its layers. A cap the plane crosses where
+         * its paper was not cut (a bulge reaching over the line) stays whole: it goes with the
+         * layers it joins. Cutting caps by the plane would slice their thin, slanted quads at
+         * places that match nothing, where creases meet.
+         */
+        private void cutCaps(Map<Long, Integer> splitOfEdge) {
+            List<int[]> capLoops = new ArrayList<>();
+            for (int f = 0; f < paper.faceCount(); f++) {
+                if (paper.cap[f]) {
+                    capLoops.add(paper.faces.get(f));
+                }
+            }
+            // Carry each split across its quad to the facing edge; twice, so that a split made on
+            // a shared bend row reaches the cap's other facet.
+            for (int round = 0; round < 2; round++) {
+                for (int[] quad : capLoops) {
+                    if (quad.length != 4) {
+                        continue;
+                    }
+                    for (int i = 0; i < 4; i++) {
+                        int a = quad[i];
+                        int b = quad[(i + 1) % 4];
+                        int c = quad[(i + 2) % 4];
+                        int d = quad[(i + 3) % 4];
+                        Integer split = splitOfEdge.get(edgeKey(a, b));
+                        if (split == null || splitOfEdge.containsKey(edgeKey(c, d))) {
+                            continue;
+                        }
+                        // The split lies at fraction t from a to b; the facing edge runs from d to c.
+                        double length = Math.hypot(uv[2 * b] - uv[2 * a], uv[2 * b + 1] - uv[2 * a + 1]);
+                        double t = length > 0 ? Math.hypot(uv[2 * split] - uv[2 * a], uv[2 * split + 1] - uv[2 * a + 1]) / length
+                                : new Vector3d(xyz[3 * split] - xyz[3 * a], xyz[3 * split + 1] - xyz[3 * a + 1],
+                                        xyz[3 * split + 2] - xyz[3 * a + 2]).length()
+                                        / Math.max(1e-300, position(b).distance(position(a)));
+                        int facing = addVertex(
+                                xyz[3 * d] + t * (xyz[3 * c] - xyz[3 * d]),
+                                xyz[3 * d + 1] + t * (xyz[3 * c + 1] - xyz[3 * d + 1]),
+                                xyz[3 * d + 2] + t * (xyz[3 * c + 2] - xyz[3 * d + 2]),
+                                uv[2 * d] + t * (uv[2 * c] - uv[2 * d]),
+                                uv[2 * d + 1] + t * (uv[2 * c + 1] - uv[2 * d + 1]),
+                                Plane.Side.ON);
+                        splitOfEdge.put(edgeKey(c, d), facing);
+                    }
+                }
+            }
+            for (int[] quad : capLoops) {
+                int[] loop = new int[2 * quad.length];
+                int size = 0;
+                int first = -1;
+                int second = -1;
+                for (int i = 0; i < quad.length; i++) {
+                    loop[size++] = quad[i];
+                    Integer split = splitOfEdge.get(edgeKey(quad[i], quad[(i + 1) % quad.length]));
+                    if (split != null) {
+                        if (first < 0) {
+                            first = size;
+                        } else {
+                            second = size;
+                        }
+                        loop[size++] = split;
+                    }
+                }
+                loop = Arrays.copyOf(loop, size);
+                if (second < 0) {
+                    faces.add(loop);
+                    caps.add(true);
+                } else {
+                    faces.add(slice(loop, first, second));
+                    caps.add(true);
+                    faces.add(slice(loop, second, first));
+                    caps.add(true);
+                }
+            }
+        }
+
+        /** The vertices of {@code loop} from index {@code from} to {@code to}, both included, going forward. */
+        private static int[] slice(int[] loop, int from, int to) {
+            int length = Math.floorMod(to - from, loop.length) + 1;
+            int[] part = new int[length];
+            for (int i = 0; i < length; i++) {
+                part[i] = loop[(from + i) % loop.length];
+            }
+            return part;
         }
 
         private static boolean crosses(Plane.Side a, Plane.Side b) {
@@ -262,7 +361,7 @@ public final class Folder {
                     Plane.Side.ON);
         }
 
-        /** Adds a face, cut in two at its two vertices on the plane if it has vertices on both sides. */
+        /** Adds a paper face, cut in two at its two vertices on the plane if it has vertices on both sides. */
         private void addCutFace(int[] loop, boolean cap) {
             boolean above = false;
             boolean below = false;
@@ -277,32 +376,22 @@ public final class Folder {
                 caps.add(cap);
                 return;
             }
-            // A convex face meets the plane in a segment: exactly two of its vertices lie on it.
-            int first = -1;
-            int second = -1;
-            for (int i = 0; i < loop.length; i++) {
-                if (sides[loop[i]] == Plane.Side.ON) {
-                    if (first < 0) {
-                        first = i;
-                    } else if (second < 0) {
-                        second = i;
+            // A convex face meets the plane in a segment: its part on each side is its vertices on
+            // that side and on the plane, in order. A part left with fewer than three corners (a
+            // cap so thin that more of its corners lie on the plane) is no face and is dropped.
+            for (Plane.Side away : new Plane.Side[] {Plane.Side.BELOW, Plane.Side.ABOVE}) {
+                int[] part = new int[loop.length];
+                int size = 0;
+                for (int v : loop) {
+                    if (sides[v] != away) {
+                        part[size++] = v;
                     }
                 }
+                if (size >= 3) {
+                    faces.add(Arrays.copyOf(part, size));
+                    caps.add(cap);
+                }
             }
-            faces.add(slice(loop, first, second));
-            caps.add(cap);
-            faces.add(slice(loop, second, first));
-            caps.add(cap);
-        }
-
-        /** The vertices of {@code loop} from index {@code from} to {@code to}, both included, going forward. */
-        private static int[] slice(int[] loop, int from, int to) {
-            int length = Math.floorMod(to - from, loop.length) + 1;
-            int[] part = new int[length];
-            for (int i = 0; i < length; i++) {
-                part[i] = loop[(from + i) % loop.length];
-            }
-            return part;
         }
 
         private boolean isMoving(int[] face) {
@@ -516,8 +605,22 @@ public final class Folder {
                     }
                 }
             }
+            boolean[] halfTurns = new boolean[vertexCount];
+            for (int v : halfClone) {
+                if (v >= 0) {
+                    halfTurns[v] = true;
+                }
+            }
+            int before = vertexCount;
+            splitPinchedVertices(result);
+            turns = Arrays.copyOf(turns, vertexCount);
+            halfTurns = Arrays.copyOf(halfTurns, vertexCount);
+            for (int v = before; v < vertexCount; v++) {
+                turns[v] = turns[copiedFrom.get(v - before)];
+                halfTurns[v] = halfTurns[copiedFrom.get(v - before)];
+            }
             int[] movingVertices = indicesOf(turns, vertexCount);
-            int[] halfVertices = Arrays.stream(halfClone).filter(v -> v >= 0).toArray();
+            int[] halfVertices = indicesOf(halfTurns, vertexCount);
             boolean[] capArray = new boolean[result.size()];
             for (int f = 0; f < capArray.length; f++) {
                 capArray[f] = resultCaps.get(f);
@@ -525,6 +628,87 @@ public final class Folder {
             Paper cut = new Paper(Arrays.copyOf(xyz, 3 * vertexCount), Arrays.copyOf(uv, 2 * vertexCount), result, capArray,
                     t, n, distinct(creases));
             return new Prepared(cut, movingVertices, halfVertices, axisPoint, axis, Math.toRadians(angleDegrees));
+        }
+
+        /** For each vertex made by {@link #splitPinchedVertices}, the vertex it copies. */
+        private final List<Integer> copiedFrom = new ArrayList<>();
+
+        /**
+         * Gives each fan of faces around a vertex its own vertex. A fold separates the faces
+         * around a fold-line vertex into those that move and those that stay; where a vertex
+         * joined layers that meet only there (the corner where two earlier creases meet, lying
+         * on the new line), the faces left around one copy may form two fans touching at a point,
+         * which paper cannot do. Each extra fan gets a copy of the vertex, at the same place and
+         * moving as the vertex moves.
+         */
+        private void splitPinchedVertices(List<int[]> faces) {
+            int[] cornerCount = new int[vertexCount];
+            for (int[] face : faces) {
+                for (int v : face) {
+                    cornerCount[v]++;
+                }
+            }
+            int[] firstCorner = new int[vertexCount + 1];
+            for (int v = 0; v < vertexCount; v++) {
+                firstCorner[v + 1] = firstCorner[v] + cornerCount[v];
+            }
+            int[] cornerFace = new int[firstCorner[vertexCount]];
+            int[] cornerIndex = new int[firstCorner[vertexCount]];
+            int[] fill = Arrays.copyOf(firstCorner, vertexCount);
+            for (int f = 0; f < faces.size(); f++) {
+                int[] face = faces.get(f);
+                for (int i = 0; i < face.length; i++) {
+                    int slot = fill[face[i]]++;
+                    cornerFace[slot] = f;
+                    cornerIndex[slot] = i;
+                }
+            }
+            int vertices = vertexCount;
+            for (int v = 0; v < vertices; v++) {
+                int from = firstCorner[v];
+                int count = firstCorner[v + 1] - from;
+                if (count < 2) {
+                    continue;
+                }
+                // Corners around v are joined when their faces share an edge at v (the same neighbour).
+                int[] parent = new int[count];
+                for (int i = 0; i < count; i++) {
+                    parent[i] = i;
+                }
+                Map<Integer, Integer> cornerOfNeighbour = new HashMap<>();
+                for (int c = 0; c < count; c++) {
+                    int[] face = faces.get(cornerFace[from + c]);
+                    int i = cornerIndex[from + c];
+                    for (int neighbour : new int[] {face[(i + 1) % face.length], face[(i + face.length - 1) % face.length]}) {
+                        Integer other = cornerOfNeighbour.putIfAbsent(neighbour, c);
+                        if (other != null) {
+                            parent[root(parent, c)] = root(parent, other);
+                        }
+                    }
+                }
+                Map<Integer, Integer> copyOfFan = new HashMap<>();
+                for (int c = 0; c < count; c++) {
+                    int fan = root(parent, c);
+                    if (fan == root(parent, 0)) {
+                        continue; // the first fan keeps the vertex
+                    }
+                    Integer copy = copyOfFan.get(fan);
+                    if (copy == null) {
+                        copy = copyVertex(v);
+                        copiedFrom.add(v);
+                        copyOfFan.put(fan, copy);
+                    }
+                    faces.get(cornerFace[from + c])[cornerIndex[from + c]] = copy;
+                }
+            }
+        }
+
+        private static int root(int[] parent, int i) {
+            while (parent[i] != i) {
+                parent[i] = parent[parent[i]];
+                i = parent[i];
+            }
+            return i;
         }
 
         /** The cut faces as they stand now, with which of them move: what {@link Landing} needs. */

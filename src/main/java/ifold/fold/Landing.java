@@ -1,5 +1,6 @@
 package ifold.fold;
 
+import ifold.geom.ConvexOverlap;
 import java.util.List;
 import org.joml.Vector3d;
 import org.joml.Vector3dc;

@@ -69,13 +69,18 @@ final class Outside {
     }
 
     /**
-     * The farthest any vertex of the paper, caps included, lies from the triangle in space: its
-     * height over the triangle's plane and its distance beyond the edges together.
+     * The farthest any vertex of the paper faces lies from the triangle in space: its height over
+     * the triangle's plane and its distance beyond the edges together. Caps are left out: they are
+     * the bend of a fold, bulging by half the gap between the layers they join.
      */
     static double farthestFromTriangle(Paper paper, Matrix4dc toPlan, double[] plan) {
         double farthest = 0;
         Vector3d p = new Vector3d();
+        boolean[] used = usedByPaper(paper);
         for (int v = 0; v < paper.vertexCount(); v++) {
+            if (!used[v]) {
+                continue;
+            }
             toPlan.transformPosition(p.set(paper.x(v), paper.y(v), paper.z(v)));
             double planar = distanceToTriangle(p.x, p.y, plan);
             farthest = Math.max(farthest, Math.hypot(planar, p.z));

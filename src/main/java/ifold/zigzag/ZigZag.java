@@ -5,6 +5,8 @@ import ifold.fold.Fold;
 import ifold.fold.FoldException;
 import ifold.fold.Folder;
 import ifold.fold.Paper;
+import ifold.fold.PaperMotion;
+import ifold.fold.Press;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -42,14 +44,21 @@ import org.joml.Vector3d;
  * {@link #MAX_TUCKS} is never reached by the triangles of the tests, and passing it is an error,
  * not a silent result. The strip's length is bounded by the passes' lengths:
  * <pre>
- *   L  &lt;=  k·(|PQ| + 2m + 2w) + 2w·k·(|cot P| + |cot Q|) + (reversal ? |PQ| + 2m + 2w(|cot P| + |cot Q|) : 0)
+ *   L  &lt;=  Σ_{i&lt;k} c(h - (i+2)w)  +  k·(2m + 2w + 3w·(|cot P| + |cot Q|))
+ *           +  (overlapped ? |PQ| + 2m + w·(|cot P| + |cot Q|) : 0)
  * </pre>
- * since each pass spans the widest chord of the triangle over its band plus the margins, and each
- * turn adds at most 2w of strip; a test checks the bound on random triangles.
+ * where c(y) = |PQ|·(1 - max(0, y)/h) is the triangle's chord at height y: a pass spans the chord
+ * at the lowest height of its two turns (3w of height at most, over which a slanted edge moves
+ * sideways by 3w·|cot| of its angle) plus the margins, and each turn adds 2w of strip. As Σ c is
+ * about area / w, the paper efficiency area / (L·w) tends to 1 as the strip narrows. A test checks
+ * the bound on random triangles.
  */
 public final class ZigZag {
     /** The most tucks before giving up: far above what any triangle needs (see the class notes). */
     public static final int MAX_TUCKS = 60;
+
+    /** The most paper faces the tucks may make before giving up: tucking cuts through every layer. */
+    public static final int MAX_FACES = 100_000;
 
     private ZigZag() {
     }
@@ -87,16 +96,16 @@ public final class ZigZag {
     }
 
     /** Which part of the method a fold belongs to. */
-    public enum Phase { ZIGZAG, OVERLAP, TUCK }
+    public enum Phase { ZIGZAG, OVERLAP, TUCK, PRESS }
 
     /**
      * One fold of the plan.
      *
      * @param phase what it is for
      * @param description a line for the status bar
-     * @param prepared the fold, cut and ready to turn
+     * @param motion the fold, cut and ready to turn; or the press
      */
-    public record Step(Phase phase, String description, Folder.Prepared prepared) {
+    public record Step(Phase phase, String description, PaperMotion motion) {
     }
 
     /**
@@ -117,22 +126,22 @@ public final class ZigZag {
 
         /** The paper folded to the end. */
         public Paper folded() {
-            return steps.isEmpty() ? start : steps.get(steps.size() - 1).prepared().at(1);
+            return steps.isEmpty() ? start : steps.get(steps.size() - 1).motion().at(1);
         }
 
         /** The paper after the folds of the zig-zag (and overlap), before any tuck. */
         public Paper laid() {
             Paper paper = start;
             for (Step step : steps) {
-                if (step.phase() != Phase.TUCK) {
-                    paper = step.prepared().at(1);
+                if (step.phase() == Phase.ZIGZAG || step.phase() == Phase.OVERLAP) {
+                    paper = step.motion().at(1);
                 }
             }
             return paper;
         }
 
-        public List<Folder.Prepared> folds() {
-            return steps.stream().map(Step::prepared).toList();
+        public List<PaperMotion> motions() {
+            return steps.stream().map(Step::motion).toList();
         }
 
         public int count(Phase phase) {
@@ -238,6 +247,7 @@ public final class ZigZag {
         double[] plan = triangle.inPlan(start);
         double scale = Math.max(triangle.opposite(0), Math.max(triangle.opposite(1), triangle.opposite(2)));
         double tolerance = 1e-9 * scale;
+        double base = new Vector3d(triangle.corner(0)).dot(triangle.normal());
         for (int tucks = 0; ; tucks++) {
             int edge = -1;
             double farthest = tolerance;
@@ -251,8 +261,10 @@ public final class ZigZag {
             if (edge < 0) {
                 return;
             }
-            if (tucks == MAX_TUCKS) {
-                throw new FoldException("the excess is not hidden after " + MAX_TUCKS + " tucks");
+            if (tucks == MAX_TUCKS || paper.faceCount() > MAX_FACES) {
+                throw new FoldException(String.format(Locale.ROOT, "the excess is not hidden after %d tucks (%d faces): "
+                        + "the naive tuck-under bounces paper between the edges of a corner as sharp as %.1f degrees; "
+                        + "start at another corner or use a wider strip", tucks, paper.faceCount(), triangle.smallestAngle()));
             }
             // Plan corners P, Q, S in order are counter-clockwise: the outside of edge e is on its right.
             int from = (start + 1 + edge) % 3;
@@ -263,6 +275,11 @@ public final class ZigZag {
             steps.add(new Step(Phase.TUCK, String.format(Locale.ROOT, "tuck %d: mountain fold under along edge %s%s",
                     tucks + 1, Triangle.name(from), Triangle.name(to)), prepared));
             paper = prepared.at(1);
+            Press.Pressed pressed = Press.press(paper, base);
+            if (pressed.moved() > 0 && !Boolean.getBoolean("nopress")) {
+                steps.add(new Step(Phase.PRESS, String.format(Locale.ROOT, "tuck %d: layers pressed flat", tucks + 1), pressed));
+                paper = pressed.after();
+            }
         }
     }
 

@@ -23,7 +23,7 @@ import org.joml.Vector3d;
  * @param coverage the fraction of sample points of the triangle under at least one layer
  * @param samples how many points of the triangle were sampled
  * @param paperOutside the paper area whose shadow lies outside the triangle
- * @param farthestFromTriangle the farthest any vertex (caps included) lies from the triangle in space
+ * @param farthestFromTriangle the farthest any paper vertex lies from the triangle in space
  * @param isometryError the largest relative change of an edge's length against the sheet
  * @param triangleArea the triangle's area
  */

@@ -1,7 +1,7 @@
-package ifold.fold;
+package ifold.geom;
 
 /** Whether two convex polygons in the plane overlap with some area: the separating-axis test. */
-final class ConvexOverlap {
+public final class ConvexOverlap {
     private ConvexOverlap() {
     }
 
@@ -10,7 +10,7 @@ final class ConvexOverlap {
      * overlap by more than {@code margin} across every edge direction of both: polygons that only
      * touch along an edge or at a corner do not.
      */
-    static boolean overlaps(double[] a, double[] b, double margin) {
+    public static boolean overlaps(double[] a, double[] b, double margin) {
         return !separatedByAnEdgeOf(a, b, margin) && !separatedByAnEdgeOf(b, a, margin);
     }
 
