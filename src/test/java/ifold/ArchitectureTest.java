@@ -48,4 +48,25 @@ class ArchitectureTest {
         assertTrue(checked > 10, "setup: found the core sources, got " + checked);
         assertEquals(List.of(), offences);
     }
+
+    /**
+     * JOML 1.10.8's {@code Quaterniond.rotationX} builds (sin, 0, cos, 0): not a turn about x but
+     * one of 180 degrees about a tilted axis, which turned every camera upside down. The fix is
+     * {@code new Quaterniond().rotateX(a)}; this keeps the broken call out.
+     */
+    @Test
+    void nobodyCallsJomlsBrokenQuaternionRotationX() throws IOException {
+        assertTrue(new org.joml.Quaterniond().rotateX(0.3).w > 0.98, "setup: rotateX is a turn about x");
+        List<String> offences = new ArrayList<>();
+        try (Stream<Path> files = Files.walk(SOURCES)) {
+            for (Path file : (Iterable<Path>) files.filter(p -> p.toString().endsWith(".java"))::iterator) {
+                for (String line : Files.readAllLines(file)) {
+                    if (line.contains("Quaterniond().rotationX(")) {
+                        offences.add(file + ": " + line.trim());
+                    }
+                }
+            }
+        }
+        assertEquals(List.of(), offences);
+    }
 }

@@ -109,7 +109,7 @@ final class FoldCommand implements Callable<Integer> {
         Scene scene = new Scene();
         Geometry geometry = new Geometry("paper", PaperView.mesh(start), PaperView.MATERIAL);
         scene.root().attach(geometry);
-        scene.camera().setOrientation(new Quaterniond().rotationX(-0.75).rotateZ(-0.35));
+        scene.camera().setOrientation(new Quaterniond().rotateX(-0.75).rotateZ(-0.35));
         scene.frameAll();
         Animation animation = PaperView.folding(geometry, start, folds);
         if (frameOptions.frames != null) {

@@ -97,7 +97,7 @@ final class ViewCommand implements Callable<Integer> {
         geometry.setClosed(Topology.of(mesh).boundaryLoops() == 0);
         scene.root().attach(geometry);
         // A three-quarter view from above reads as 3D at once, flat sheets included.
-        scene.camera().setOrientation(new Quaterniond().rotationX(-0.6).rotateY(-0.5));
+        scene.camera().setOrientation(new Quaterniond().rotateX(-0.6).rotateY(-0.5));
         scene.frameAll();
         animation = path ? PathView.reveal(geometry) : new Turntable(scene.camera());
 

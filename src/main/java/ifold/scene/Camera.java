@@ -57,6 +57,17 @@ public final class Camera {
         distance = 1.08 * radius / Math.sin(fovY / 2);
     }
 
+    /**
+     * Widens (or narrows) the clipping planes to hold a sphere of {@code radius} about the target,
+     * without moving the camera: for paper that swings far beyond what the camera is framed on.
+     */
+    public void setSceneRadius(double radius) {
+        if (!(radius > 0) || !Double.isFinite(radius)) {
+            throw new IllegalArgumentException("scene radius must be positive, got " + radius);
+        }
+        sceneRadius = radius;
+    }
+
     /** The radius of what is being looked at, which sets the clipping planes. */
     public double sceneRadius() {
         return sceneRadius;

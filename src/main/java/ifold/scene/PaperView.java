@@ -2,6 +2,7 @@ package ifold.scene;
 
 import ifold.fold.Folder;
 import ifold.fold.Paper;
+import ifold.fold.PaperMotion;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -61,6 +62,14 @@ public final class PaperView {
 
     /** Plays folds one after another, each swinging from 0 to its angle over one step. */
     public static Animation folding(Geometry geometry, Paper start, List<Folder.Prepared> folds) {
+        return playing(geometry, start, folds, null);
+    }
+
+    /**
+     * Plays paper motions (folds, presses) one after another, one a step; the status line shows
+     * each one's description if {@code descriptions} is given.
+     */
+    public static Animation playing(Geometry geometry, Paper start, List<? extends PaperMotion> folds, List<String> descriptions) {
         return new Animation() {
             @Override
             public int stepCount() {
@@ -83,8 +92,12 @@ public final class PaperView {
             @Override
             public String describe(double position) {
                 int k = Math.min((int) Math.floor(position), Math.max(0, folds.size() - 1));
-                return String.format(java.util.Locale.ROOT, "fold %d of %d (%.0f %%)", Math.min(k + 1, folds.size()),
+                String step = String.format(java.util.Locale.ROOT, "step %d of %d (%.0f %%)", Math.min(k + 1, folds.size()),
                         folds.size(), 100 * Math.max(0, Math.min(1, position - k)));
+                if (descriptions == null) {
+                    return step.replace("step", "fold");
+                }
+                return folds.isEmpty() ? step : step + ": " + descriptions.get(k);
             }
         };
     }

@@ -42,7 +42,7 @@ class CliTest {
         return file;
     }
 
-    private static void assertOneLineError(Run run, String... fragments) {
+    static void assertOneLineError(Run run, String... fragments) {
         assertEquals(UserError.EXIT_CODE, run.code(), run.err());
         String[] lines = run.err().strip().split("\n");
         assertEquals(1, lines.length, "one line: " + run.err());

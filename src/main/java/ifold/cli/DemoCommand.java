@@ -1,0 +1,391 @@
+package ifold.cli;
+
+import ifold.fold.FoldException;
+import ifold.fold.Paper;
+import ifold.fold.PaperAnalysis;
+import ifold.fold.PaperExport;
+import ifold.fold.PaperMotion;
+import ifold.io.AtomicFile;
+import ifold.render.FrameExport;
+import ifold.render.RenderUnavailableException;
+import ifold.render.ViewerWindow;
+import ifold.scene.Animation;
+import ifold.scene.CameraMove;
+import ifold.scene.Geometry;
+import ifold.scene.Material;
+import ifold.scene.PaperView;
+import ifold.scene.Player;
+import ifold.scene.Scene;
+import ifold.scene.SceneMesh;
+import ifold.scene.Sequence;
+import ifold.zigzag.Triangle;
+import ifold.zigzag.TurnGadget;
+import ifold.zigzag.ZigZag;
+import ifold.zigzag.ZigZagReport;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import org.joml.Quaterniond;
+import org.joml.Quaterniondc;
+import org.joml.Vector3d;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/** {@code ifold demo}: the zig-zag method on one triangle, and the turn gadget. */
+@Command(name = "demo", mixinStandardHelpOptions = true,
+        description = "Demonstrations of the zig-zag method: 'ifold demo zigzag' wraps a triangle, 'ifold demo turn' turns a strip.",
+        subcommands = {DemoCommand.ZigZagDemo.class, DemoCommand.TurnDemo.class})
+final class DemoCommand implements Runnable {
+    /** Where frames go when there is no display and no --frames. */
+    static final String HEADLESS_FOLDER_SUFFIX = "-frames";
+
+    @Spec
+    CommandSpec spec;
+
+    @Override
+    public void run() {
+        throw new CommandLine.ParameterException(spec.commandLine(), "missing demo: zigzag or turn");
+    }
+
+    /** The options the demos share: what to write, and whether to show. */
+    static final class Outputs {
+        @Option(names = "--export-obj", paramLabel = "FILE", description = "write the folded paper as OBJ: vt = paper coordinates, caps in group 'cap'")
+        Path exportObj;
+
+        @Option(names = "--report", paramLabel = "FILE", description = "write the figures of the result as JSON")
+        Path report;
+
+        @Option(names = "--no-view", description = "neither open the viewer nor render frames")
+        boolean noView;
+
+        @Mixin
+        FrameOptions frameOptions = new FrameOptions();
+
+        /** Checks every output before any work; without a display, frames go to {@code name-frames/}. */
+        void check(String name, PrintWriter err) {
+            if (exportObj != null) {
+                OutputFiles.checkWritableFile(exportObj, "--export-obj", ".obj");
+            }
+            if (report != null) {
+                OutputFiles.checkWritableFile(report, "--report", ".json");
+            }
+            if (frameOptions.frames == null && !noView && !hasDisplay()) {
+                frameOptions.frames = Path.of(name + HEADLESS_FOLDER_SUFFIX);
+                err.println("ifold: no display: rendering frames into " + frameOptions.frames.toAbsolutePath() + "/ instead");
+            }
+            frameOptions.check();
+        }
+
+        void write(Paper folded, Map<String, Object> figures, PrintWriter out) {
+            try {
+                if (exportObj != null) {
+                    PaperExport.writeObj(folded, exportObj);
+                    out.println("wrote " + exportObj);
+                }
+                if (report != null) {
+                    String json = Json.write(figures);
+                    AtomicFile.write(report, stream -> stream.write(json.getBytes(StandardCharsets.UTF_8)), true);
+                    out.println("wrote " + report);
+                }
+            } catch (IOException e) {
+                frameOptions.removeFolderIfUnused();
+                throw new UserError("cannot write: " + e.getMessage());
+            }
+        }
+
+        /** Shows the animation in a window, or renders it into frames. */
+        void show(Scene scene, Animation animation, String title, double defaultSeconds, CommandSpec spec) {
+            PrintWriter out = spec.commandLine().getOut();
+            PrintWriter err = spec.commandLine().getErr();
+            boolean secondsGiven = spec.commandLine().getParseResult().hasMatchedOption("--seconds");
+            double seconds = secondsGiven ? frameOptions.seconds : defaultSeconds;
+            if (frameOptions.frames != null) {
+                try {
+                    int frames = Math.max(1, (int) Math.round(frameOptions.fps * seconds));
+                    FrameExport.Result result = FrameExport.export(scene, animation, frameOptions.frames, frameOptions.width,
+                            frameOptions.height, frames, 4, err);
+                    out.printf(Locale.ROOT, "wrote %d frames of %dx%d to %s in %.1f s (%.1f frames/s)%n", result.frames(),
+                            frameOptions.width, frameOptions.height, frameOptions.frames.toAbsolutePath(), result.seconds(),
+                            result.framesPerSecond());
+                } catch (RenderUnavailableException e) {
+                    frameOptions.removeFolderIfUnused();
+                    throw new UserError(e.getMessage());
+                } catch (IOException e) {
+                    throw new UserError("option --frames: cannot write frames to " + frameOptions.frames + ": " + e.getMessage());
+                }
+            } else if (!noView) {
+                Player player = new Player(animation, seconds);
+                try {
+                    new ViewerWindow(scene, player, title, err, 4).show("iFold - " + title, 1280, 720, 0);
+                } catch (RenderUnavailableException e) {
+                    throw new UserError(e.getMessage() + "; or render frames with --frames DIR, or pass --no-view");
+                }
+            }
+            out.flush();
+        }
+
+        /**
+         * Whether a window can open: a display is set, and it is not the virtual one the launcher
+         * started only to render frames.
+         */
+        private static boolean hasDisplay() {
+            String display = System.getenv("DISPLAY");
+            return display != null && !display.isEmpty() && System.getenv("IFOLD_IN_XVFB") == null;
+        }
+    }
+
+    @Command(name = "zigzag", mixinStandardHelpOptions = true,
+            description = {"Wraps a triangle in a strip of paper the zig-zag way (Figure 11 of the seed): the passes and their",
+                "turns, then the tucks that hide the excess, then the camera turns to show the underside and its layers.",
+                "In a window where there is a display; as frames in zigzag-frames/ where there is none."})
+    static final class ZigZagDemo implements Callable<Integer> {
+        @Spec
+        CommandSpec spec;
+
+        @Option(names = "--triangle", paramLabel = "x1,y1,x2,y2,x3,y3", defaultValue = "0,0,10,0,3.5,8",
+                description = "the triangle's corners A, B and C (default ${DEFAULT-VALUE}: acute and scalene)")
+        String triangle;
+
+        @Option(names = "--start", paramLabel = "A|B|C", defaultValue = "C",
+                description = "the corner the strip starts at; its passes run parallel to the opposite edge (default ${DEFAULT-VALUE})")
+        String start;
+
+        @Option(names = "--end", paramLabel = "A|B|C", defaultValue = "A",
+                description = "the corner the strip ends at (default ${DEFAULT-VALUE})")
+        String end;
+
+        @Option(names = "--enter-from", paramLabel = "A|B|C",
+                description = "the corner beside which the strip comes in; if the last pass then runs the wrong way it is laid back over itself (default: whichever side needs no overlap)")
+        String enterFrom;
+
+        @Option(names = "--width", paramLabel = "W", description = "the strip's width (default: a fifth of the altitude from the start corner)")
+        Double width;
+
+        @Option(names = "--thickness", paramLabel = "T", description = "the paper's thickness (default: the width / 80)")
+        Double thickness;
+
+        @Mixin
+        Outputs outputs = new Outputs();
+
+        @Override
+        public Integer call() {
+            Triangle shape = parseTriangle(triangle);
+            int startCorner = corner(start, "--start");
+            int endCorner = corner(end, "--end");
+            if (endCorner == startCorner) {
+                throw new UserError("option --end: the strip must end at another corner than its start " + start.toUpperCase(Locale.ROOT));
+            }
+            int enterCorner = enterFrom == null ? -1 : corner(enterFrom, "--enter-from");
+            if (enterCorner == startCorner) {
+                throw new UserError("option --enter-from: the strip comes in beside one of the corners other than the start");
+            }
+            double w = width == null ? shape.height(startCorner) / 5 : width;
+            if (!(w > 0) || !Double.isFinite(w)) {
+                throw new UserError("option --width: must be a positive number, got " + width);
+            }
+            if (w < shape.height(startCorner) / 400) {
+                throw new UserError(String.format(Locale.ROOT, "option --width: %s is under 1/400 of the altitude %.4g: "
+                        + "the demo keeps to 400 passes", width, shape.height(startCorner)));
+            }
+            double t = thickness == null ? w / 80 : thickness;
+            if (!(t >= 0) || !Double.isFinite(t) || t > w / 4) {
+                throw new UserError("option --thickness: must be zero or more and at most a quarter of the width, got " + thickness);
+            }
+            PrintWriter out = spec.commandLine().getOut();
+            outputs.check("zigzag", spec.commandLine().getErr());
+            ZigZag.Result result;
+            try {
+                result = ZigZag.wrap(shape, new ZigZag.Options(w, t, startCorner, endCorner, enterCorner));
+            } catch (FoldException e) {
+                outputs.frameOptions.removeFolderIfUnused();
+                throw new UserError("cannot wrap this triangle: " + e.getMessage());
+            }
+            ZigZagReport report = ZigZagReport.of(result);
+            Map<String, Object> figures = new LinkedHashMap<>();
+            figures.put("triangle", triangle);
+            figures.put("start", Triangle.name(startCorner));
+            figures.put("end", Triangle.name(endCorner));
+            figures.putAll(report.figures());
+            figures.put("thickness", t);
+            outputs.write(result.folded(), figures, out);
+            out.printf(Locale.ROOT, "zigzag: strip %.4g x %.4g (L/w %.1f), %d passes%s, %d turn folds, %d tucks, %d layers at most, "
+                    + "paper efficiency %.3f, coverage %.3f, paper outside %.2g, isometry error %.1e%n",
+                    report.length(), report.width(), report.aspect(), report.passes(), report.overlapped() ? " (last overlapped)" : "",
+                    report.zigzagFolds(), report.tucks(), report.maxLayers(), report.efficiency(), report.coverage(),
+                    report.paperOutside(), report.isometryError());
+            out.flush();
+
+            Scene scene = new Scene();
+            Geometry paper = new Geometry("paper", PaperView.mesh(result.start()), PaperView.MATERIAL);
+            scene.root().attach(paper);
+            scene.root().attach(outline(shape));
+            List<String> names = new ArrayList<>();
+            List<PaperMotion> motions = new ArrayList<>();
+            for (ZigZag.Step step : result.steps()) {
+                motions.add(step.motion());
+                names.add(step.description());
+            }
+            // From above, tilted back; then turned about the screen's vertical to look from below.
+            Quaterniondc above = new Quaterniond().rotateX(-0.55);
+            Quaterniondc below = new Quaterniond().rotateX(0.55).rotateY(Math.PI);
+            frameTriangle(scene, shape, above);
+            Animation animation = new Sequence(List.of(PaperView.playing(paper, result.start(), motions, names),
+                    new CameraMove(scene.camera(), above, below, "the underside: the excess tucked under, layer on layer")));
+            // About two seconds a fold: under a minute for the default triangle.
+            outputs.show(scene, animation, "zig-zag: " + result.steps().size() + " folds", 2.0 * animation.stepCount(), spec);
+            return 0;
+        }
+    }
+
+    @Command(name = "turn", mixinStandardHelpOptions = true,
+            description = {"Turns a strip by an angle with the turn gadget (Figures 1 and 2 of the seed): a fold across the strip,",
+                "then the turn fold; the strip goes on top side up. --overhang 0 is the basic gadget."})
+    static final class TurnDemo implements Callable<Integer> {
+        @Spec
+        CommandSpec spec;
+
+        @Option(names = "--angle", paramLabel = "DEG", required = true, description = "the turn, more than 0 and less than 180 degrees")
+        double angle;
+
+        @Option(names = "--overhang", paramLabel = "X", defaultValue = "0",
+                description = "how far beyond the fold across the turn fold begins, in strip widths (default ${DEFAULT-VALUE}: the basic gadget)")
+        double overhang;
+
+        @Option(names = "--width", paramLabel = "W", defaultValue = "1", description = "the strip's width (default ${DEFAULT-VALUE})")
+        double width;
+
+        @Option(names = "--thickness", paramLabel = "T", defaultValue = "0.02", description = "the paper's thickness (default ${DEFAULT-VALUE})")
+        double thickness;
+
+        @Mixin
+        Outputs outputs = new Outputs();
+
+        @Override
+        public Integer call() {
+            if (!(angle > 0 && angle < 180)) {
+                throw new UserError("option --angle: must be more than 0 and less than 180 degrees, got " + angle);
+            }
+            if (angle > 175) {
+                throw new UserError("option --angle: above 175 degrees the turn fold runs more than 20 widths along the strip; "
+                        + "turn in two gadgets instead, got " + angle);
+            }
+            if (!(overhang >= 0) || !Double.isFinite(overhang) || overhang > 100) {
+                throw new UserError("option --overhang: must be between 0 and 100 strip widths, got " + overhang);
+            }
+            if (!(width > 0) || !Double.isFinite(width)) {
+                throw new UserError("option --width: must be a positive number, got " + width);
+            }
+            if (!(thickness >= 0) || !Double.isFinite(thickness) || thickness > width / 4) {
+                throw new UserError("option --thickness: must be zero or more and at most a quarter of the width, got " + thickness);
+            }
+            PrintWriter out = spec.commandLine().getOut();
+            outputs.check("turn", spec.commandLine().getErr());
+            TurnGadget.Result gadget;
+            try {
+                gadget = TurnGadget.turn(angle, overhang * width, width, thickness, 4 * width, 6 * width);
+            } catch (FoldException e) {
+                outputs.frameOptions.removeFolderIfUnused();
+                throw new UserError("cannot make this turn: " + e.getMessage());
+            }
+            Paper folded = gadget.folded();
+            Map<String, Object> figures = new LinkedHashMap<>();
+            figures.put("angle", angle);
+            figures.put("measuredAngle", gadget.measuredAngle());
+            figures.put("overhang", overhang * width);
+            figures.put("topSideUp", gadget.endFacesUp());
+            figures.put("stripLength", gadget.length());
+            figures.put("stripWidth", width);
+            figures.put("thickness", thickness);
+            figures.put("folds", gadget.folds().size());
+            figures.put("maxLayers", PaperAnalysis.maxLayers(folded));
+            figures.put("isometryError", PaperAnalysis.isometryError(folded));
+            outputs.write(folded, figures, out);
+            out.printf(Locale.ROOT, "turn: %.6g degrees asked, %.6g measured, top side %s, %d layers at most, strip %.4g x %.4g%n",
+                    angle, gadget.measuredAngle(), gadget.endFacesUp() ? "up" : "down", figures.get("maxLayers"), gadget.length(), width);
+            out.flush();
+
+            Scene scene = new Scene();
+            Geometry paper = new Geometry("paper", PaperView.mesh(gadget.start()), PaperView.MATERIAL);
+            scene.root().attach(paper);
+            scene.camera().setOrientation(new Quaterniond().rotateX(-0.6).rotateZ(-0.2));
+            Geometry end = new Geometry("folded", PaperView.mesh(folded), PaperView.MATERIAL);
+            scene.root().attach(end);
+            scene.frameAll(); // frames both the straight strip and the turned one
+            scene.root().detach(end);
+            List<String> names = List.of("the fold across the strip lays it back over itself",
+                    String.format(Locale.ROOT, "the turn fold sets it running at %.4g degrees, top side up", angle));
+            outputs.show(scene, PaperView.playing(paper, gadget.start(), gadget.folds(), names),
+                    String.format(Locale.ROOT, "turn gadget: %.4g degrees", angle), 6, spec);
+            return 0;
+        }
+    }
+
+    /** Parses {@code x1,y1,x2,y2,x3,y3}; a bad value or a triangle with no area is the option's error. */
+    static Triangle parseTriangle(String text) {
+        String[] parts = text.split(",", -1);
+        if (parts.length != 6) {
+            throw new UserError("option --triangle: expected six numbers x1,y1,x2,y2,x3,y3, got '" + text + "'");
+        }
+        double[] values = new double[6];
+        for (int i = 0; i < 6; i++) {
+            try {
+                values[i] = Double.parseDouble(parts[i].strip());
+            } catch (NumberFormatException e) {
+                throw new UserError("option --triangle: '" + parts[i].strip() + "' is not a number");
+            }
+            if (!Double.isFinite(values[i])) {
+                throw new UserError("option --triangle: '" + parts[i].strip() + "' is not a finite number");
+            }
+        }
+        try {
+            return Triangle.planar(values[0], values[1], values[2], values[3], values[4], values[5]);
+        } catch (IllegalArgumentException e) {
+            throw new UserError("option --triangle: " + e.getMessage());
+        }
+    }
+
+    private static int corner(String name, String option) {
+        return switch (name.strip().toUpperCase(Locale.ROOT)) {
+            case "A" -> 0;
+            case "B" -> 1;
+            case "C" -> 2;
+            default -> throw new UserError("option " + option + ": expected A, B or C, got '" + name + "'");
+        };
+    }
+
+    /** The triangle's edges, drawn in green: the paper must cover them and end inside them. */
+    private static Geometry outline(Triangle triangle) {
+        double[] positions = new double[9];
+        for (int i = 0; i < 3; i++) {
+            positions[3 * i] = triangle.corner(i).x();
+            positions[3 * i + 1] = triangle.corner(i).y();
+            positions[3 * i + 2] = triangle.corner(i).z();
+        }
+        int green = 0xFF1E8C3A;
+        SceneMesh mesh = new SceneMesh(positions, new int[0], new int[0], new int[] {0, 1, 1, 2, 2, 0}, new int[] {green, green, green});
+        return new Geometry("triangle", mesh, new Material(green, green, false, true));
+    }
+
+    /** Looks at the triangle (not the whole strip, whose tail swings far out while it is laid). */
+    private static void frameTriangle(Scene scene, Triangle triangle, Quaterniondc orientation) {
+        Vector3d center = new Vector3d(triangle.corner(0)).add(triangle.corner(1)).add(triangle.corner(2)).div(3);
+        double radius = 0;
+        for (int i = 0; i < 3; i++) {
+            radius = Math.max(radius, center.distance(triangle.corner(i)));
+        }
+        scene.camera().setOrientation(orientation);
+        scene.camera().frame(center, 1.15 * radius);
+        scene.camera().setSceneRadius(10 * radius);
+    }
+}

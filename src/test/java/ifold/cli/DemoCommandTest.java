@@ -1,0 +1,131 @@
+package ifold.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** {@code ifold demo zigzag} and {@code ifold demo turn}: reports, exports and their errors. */
+class DemoCommandTest {
+    @TempDir
+    Path dir;
+
+    @Test
+    void theDefaultDemoReportsAWrappedTriangle() throws Exception {
+        Path obj = dir.resolve("zigzag.obj");
+        Path report = dir.resolve("zigzag.json");
+        CliTest.Run run = CliTest.run("demo", "zigzag", "--no-view", "--export-obj", obj.toString(), "--report", report.toString());
+        assertEquals(0, run.code(), run.err());
+        String json = Files.readString(report);
+        assertEquals(1.0, number(json, "coverage"), 0);
+        assertEquals(5, number(json, "passes"), 0, "⌈8 / 1.6⌉");
+        assertEquals(1.6, number(json, "stripWidth"), 1e-12, "a fifth of the altitude from C");
+        assertTrue(number(json, "paperOutsideArea") < 1e-9, json);
+        assertEquals(40 / (number(json, "stripLength") * 1.6), number(json, "paperEfficiency"), 1e-5);
+        assertTrue(run.out().contains("coverage 1.000"), run.out());
+        assertTrue(isometryReadBack(obj) <= 1e-9, "the OBJ is isometric as written");
+    }
+
+    @Test
+    void thinAndObtuseTrianglesAreWrapped() throws Exception {
+        for (String triangle : new String[] {"0,0,12,0,5,1.5", "0,0,10,0,14,3", "0,0,1,0,0.5,9"}) {
+            Path report = dir.resolve("r.json");
+            CliTest.Run run = CliTest.run("demo", "zigzag", "--triangle", triangle, "--no-view", "--report", report.toString());
+            assertEquals(0, run.code(), triangle + ": " + run.err());
+            assertEquals(1.0, number(Files.readString(report), "coverage"), 0, triangle);
+        }
+    }
+
+    @Test
+    void badOptionsGetOneLineAndWriteNothing() throws Exception {
+        Path report = dir.resolve("r.json");
+        String out = report.toString();
+        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--triangle", "1,2,3", "--no-view", "--report", out), "--triangle", "six numbers");
+        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--triangle", "0,0,1,1,x,2", "--no-view", "--report", out), "--triangle", "'x'");
+        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--triangle", "0,0,1,1,2,2", "--no-view", "--report", out), "--triangle", "no area");
+        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--start", "D", "--no-view", "--report", out), "--start", "A, B or C");
+        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--start", "B", "--end", "b", "--no-view", "--report", out), "--end");
+        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--width", "-1", "--no-view", "--report", out), "--width");
+        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--width", "1", "--thickness", "0.5", "--no-view", "--report", out), "--thickness");
+        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--no-view", "--export-obj", dir.resolve("x.stl").toString()), "--export-obj");
+        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--no-view", "--report", dir.resolve("no/r.json").toString()), "--report", "does not exist");
+        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--triangle", "0,0,10,0,5,0.3", "--width", "0.015", "--no-view",
+                "--report", out), "cannot wrap this triangle", "degrees");
+        CliTest.assertOneLineError(CliTest.run("demo", "turn", "--angle", "180", "--no-view"), "--angle");
+        CliTest.assertOneLineError(CliTest.run("demo", "turn", "--angle", "90", "--overhang", "-1", "--no-view"), "--overhang");
+        assertFalse(Files.exists(report), "nothing written by a refused run");
+        assertEquals(2, CliTest.run("demo").code(), "a demo must be named");
+    }
+
+    @Test
+    void theTurnDemoMeasuresItsTurn() throws Exception {
+        Path report = dir.resolve("turn.json");
+        CliTest.Run run = CliTest.run("demo", "turn", "--angle", "70", "--overhang", "0.5", "--no-view", "--report", report.toString());
+        assertEquals(0, run.code(), run.err());
+        String json = Files.readString(report);
+        assertEquals(70, number(json, "measuredAngle"), 1e-9);
+        assertTrue(json.contains("\"topSideUp\": true"), json);
+        assertTrue(run.out().contains("top side up"), run.out());
+    }
+
+    @Test
+    void framesAreRenderedWithoutAWindow() throws Exception {
+        String display = System.getenv("DISPLAY");
+        assumeTrue(display != null && !display.isEmpty(), "no X display (run the tests under xvfb-run)");
+        Path frames = dir.resolve("frames");
+        CliTest.Run run = CliTest.run("demo", "zigzag", "--frames", frames.toString(), "--size", "64x36", "--fps", "1");
+        assertEquals(0, run.code(), run.err());
+        try (var files = Files.list(frames)) {
+            assertEquals(32, files.count(), "two seconds a step, 16 steps, one frame a second");
+        }
+    }
+
+    private static double number(String json, String key) {
+        Matcher m = Pattern.compile("\"" + key + "\": ([-0-9.eE+]+)").matcher(json);
+        assertTrue(m.find(), key + " in " + json);
+        return Double.parseDouble(m.group(1));
+    }
+
+    /** The worst relative difference between a paper edge's length in space (v) and on the sheet (vt), read from the file. */
+    static double isometryReadBack(Path obj) throws Exception {
+        List<double[]> v = new ArrayList<>();
+        List<double[]> vt = new ArrayList<>();
+        String group = "";
+        double worst = 0;
+        for (String line : Files.readAllLines(obj)) {
+            String[] w = line.split(" ");
+            switch (w[0]) {
+                case "v" -> v.add(new double[] {Double.parseDouble(w[1]), Double.parseDouble(w[2]), Double.parseDouble(w[3])});
+                case "vt" -> vt.add(new double[] {Double.parseDouble(w[1]), Double.parseDouble(w[2])});
+                case "g" -> group = w[1];
+                case "f" -> {
+                    if (group.equals("cap")) {
+                        continue;
+                    }
+                    for (int i = 1; i < w.length; i++) {
+                        int a = Integer.parseInt(w[i].split("/")[0]) - 1;
+                        int b = Integer.parseInt(w[i % (w.length - 1) + 1].split("/")[0]) - 1;
+                        double space = Math.sqrt(Math.pow(v.get(a)[0] - v.get(b)[0], 2) + Math.pow(v.get(a)[1] - v.get(b)[1], 2)
+                                + Math.pow(v.get(a)[2] - v.get(b)[2], 2));
+                        double paper = Math.hypot(vt.get(a)[0] - vt.get(b)[0], vt.get(a)[1] - vt.get(b)[1]);
+                        worst = Math.max(worst, Math.abs(space - paper) / paper);
+                    }
+                }
+                default -> {
+                }
+            }
+        }
+        assertEquals(v.size(), vt.size());
+        assertTrue(v.size() > 0, "setup: a paper was written");
+        return worst;
+    }
+}
