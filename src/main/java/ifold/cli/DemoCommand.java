@@ -126,6 +126,7 @@ final class DemoCommand implements Runnable {
                 }
             } else if (!noView) {
                 Player player = new Player(animation, seconds);
+                player.togglePlaying(); // a demo plays at once; space pauses it
                 try {
                     new ViewerWindow(scene, player, title, err, 4).show("iFold - " + title, 1280, 720, 0);
                 } catch (RenderUnavailableException e) {
@@ -175,11 +176,18 @@ final class DemoCommand implements Runnable {
         @Option(names = "--thickness", paramLabel = "T", description = "the paper's thickness (default: the width / 80)")
         Double thickness;
 
+        @Option(names = "--figure", paramLabel = "FILE.png",
+                description = "also write the seed's Figure 11 re-made: the first turn, all passes laid, the excess tucked under, the underside")
+        Path figure;
+
         @Mixin
         Outputs outputs = new Outputs();
 
         @Override
         public Integer call() {
+            if (figure != null) {
+                OutputFiles.checkWritableFile(figure, "--figure", ".png");
+            }
             Triangle shape = parseTriangle(triangle);
             int startCorner = corner(start, "--start");
             int endCorner = corner(end, "--end");
@@ -242,8 +250,22 @@ final class DemoCommand implements Runnable {
             frameTriangle(scene, shape, above);
             Animation animation = new Sequence(List.of(PaperView.playing(paper, result.start(), motions, names),
                     new CameraMove(scene.camera(), above, below, "the underside: the excess tucked under, layer on layer")));
+            if (figure != null) {
+                int laid = result.count(ZigZag.Phase.ZIGZAG) + result.count(ZigZag.Phase.OVERLAP);
+                double[] stages = {Math.min(2, laid), laid, result.steps().size(), animation.stepCount()};
+                try {
+                    FrameExport.panel(scene, animation, stages, 2, 800, 500, 4, figure);
+                    out.println("wrote " + figure);
+                } catch (RenderUnavailableException e) {
+                    outputs.frameOptions.removeFolderIfUnused();
+                    throw new UserError(e.getMessage());
+                } catch (IOException e) {
+                    throw new UserError("option --figure: cannot write " + figure + ": " + e.getMessage());
+                }
+                animation.apply(0);
+            }
             // About two seconds a fold: under a minute for the default triangle.
-            outputs.show(scene, animation, "zig-zag: " + result.steps().size() + " folds", 2.0 * animation.stepCount(), spec);
+            outputs.show(scene, animation, "zig-zag: " + report.folds() + " folds", 2.0 * animation.stepCount(), spec);
             return 0;
         }
     }

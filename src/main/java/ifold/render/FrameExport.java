@@ -66,6 +66,37 @@ public final class FrameExport {
         }
     }
 
+    /**
+     * Renders the animation at each of {@code positions} into a tile of {@code width} by
+     * {@code height} and writes them as one picture, {@code columns} tiles a row, left to right
+     * and top to bottom, on a white ground with a thin grey line between tiles: a figure of
+     * stages. Written under a temporary name and renamed.
+     */
+    public static void panel(Scene scene, Animation animation, double[] positions, int columns, int width, int height,
+            int samples, Path file) throws RenderUnavailableException, IOException {
+        int rows = (positions.length + columns - 1) / columns;
+        int gap = 2;
+        int panelWidth = columns * width + (columns - 1) * gap;
+        int panelHeight = rows * height + (rows - 1) * gap;
+        byte[] panel = new byte[3 * panelWidth * panelHeight];
+        java.util.Arrays.fill(panel, (byte) 0xC8);
+        scene.bindToThread(Thread.currentThread());
+        try (OffscreenRenderer renderer = new OffscreenRenderer(width, height, samples)) {
+            for (int i = 0; i < positions.length; i++) {
+                animation.apply(positions[i]);
+                byte[] tile = renderer.render(scene);
+                int left = (i % columns) * (width + gap);
+                int top = (i / columns) * (height + gap);
+                for (int y = 0; y < height; y++) {
+                    System.arraycopy(tile, 3 * y * width, panel, 3 * ((top + y) * panelWidth + left), 3 * width);
+                }
+            }
+        } finally {
+            scene.bindToThread(null);
+        }
+        ifold.io.AtomicFile.write(file, out -> ifold.image.PngEncoder.encode(panelWidth, panelHeight, panel, out), true);
+    }
+
     private static double position(Animation animation, int frame, int frames) {
         return frames == 1 ? animation.stepCount() : (double) animation.stepCount() * frame / (frames - 1);
     }

@@ -12,7 +12,7 @@ import org.joml.Vector3d;
  *
  * @param length the strip's length L
  * @param width its width w
- * @param folds all folds
+ * @param folds all folds (the presses that follow tucks are not folds)
  * @param zigzagFolds the turn folds (and the overlap's fold)
  * @param tucks the tuck-under folds
  * @param passes the passes over the triangle
@@ -50,7 +50,8 @@ public record ZigZagReport(double length, double width, int folds, int zigzagFol
         }
         double area = triangle.area();
         double width = result.options().width();
-        return new ZigZagReport(result.length(), width, result.steps().size(),
+        int folds = result.count(ZigZag.Phase.ZIGZAG) + result.count(ZigZag.Phase.OVERLAP) + result.count(ZigZag.Phase.TUCK);
+        return new ZigZagReport(result.length(), width, folds,
                 result.count(ZigZag.Phase.ZIGZAG) + result.count(ZigZag.Phase.OVERLAP), result.count(ZigZag.Phase.TUCK),
                 result.passes(), result.overlapped(), deepest, area / (result.length() * width), (double) covered / samples,
                 samples, Outside.area(paper, toPlan, plan), Outside.farthestFromTriangle(paper, toPlan, plan),
