@@ -670,21 +670,31 @@ public final class Folder {
                 if (count < 2) {
                     continue;
                 }
-                // Corners around v are joined when their faces share an edge at v (the same neighbour).
+                // Corners around v are joined when their faces share an edge at v (the same
+                // neighbour). Fans are small: compare every two corners.
                 int[] parent = new int[count];
-                for (int i = 0; i < count; i++) {
-                    parent[i] = i;
-                }
-                Map<Integer, Integer> cornerOfNeighbour = new HashMap<>();
+                int[] next = new int[count];
+                int[] previous = new int[count];
                 for (int c = 0; c < count; c++) {
+                    parent[c] = c;
                     int[] face = faces.get(cornerFace[from + c]);
                     int i = cornerIndex[from + c];
-                    for (int neighbour : new int[] {face[(i + 1) % face.length], face[(i + face.length - 1) % face.length]}) {
-                        Integer other = cornerOfNeighbour.putIfAbsent(neighbour, c);
-                        if (other != null) {
-                            parent[root(parent, c)] = root(parent, other);
+                    next[c] = face[(i + 1) % face.length];
+                    previous[c] = face[(i + face.length - 1) % face.length];
+                }
+                boolean pinched = false;
+                for (int c = 1; c < count; c++) {
+                    for (int d = 0; d < c; d++) {
+                        if (next[c] == next[d] || next[c] == previous[d] || previous[c] == next[d] || previous[c] == previous[d]) {
+                            parent[root(parent, c)] = root(parent, d);
                         }
                     }
+                }
+                for (int c = 1; c < count; c++) {
+                    pinched |= root(parent, c) != root(parent, 0);
+                }
+                if (!pinched) {
+                    continue;
                 }
                 Map<Integer, Integer> copyOfFan = new HashMap<>();
                 for (int c = 0; c < count; c++) {

@@ -94,27 +94,42 @@ final class Landing {
         // Where landing layers overlap layers that stay, they decide alone: the layers at the line
         // may include paper that only touches it at a corner and lies beside the landing, not under it.
         double height = valley ? Double.NEGATIVE_INFINITY : Double.POSITIVE_INFINITY;
-        for (int m = 0; m < count; m++) {
-            if (shadows[m] == null || !faces.moving()[m]) {
-                continue;
+        // Only the highest overlapping pair matters for a valley fold (the lowest for a mountain
+        // fold): visit the faces from the top down (bottom up), and stop as soon as no pair left
+        // could beat the best found. A stack folded through all layers then costs a few tests a
+        // face, not one for every pair.
+        double sign = valley ? 1 : -1;
+        List<Integer> movingFaces = new java.util.ArrayList<>();
+        List<Integer> fixedFaces = new java.util.ArrayList<>();
+        for (int f = 0; f < count; f++) {
+            if (shadows[f] != null) {
+                (faces.moving()[f] ? movingFaces : fixedFaces).add(f);
             }
-            for (int f = 0; f < count; f++) {
-                if (shadows[f] == null || faces.moving()[f]) {
-                    continue;
+        }
+        java.util.Comparator<Integer> topFirst = (a, b) -> Double.compare(sign * heights[b], sign * heights[a]);
+        movingFaces.sort(topFirst);
+        fixedFaces.sort(topFirst);
+        double best = Double.NEGATIVE_INFINITY; // sign * (hm + hf), the larger the better
+        for (int m : movingFaces) {
+            if (fixedFaces.isEmpty() || sign * (heights[m] + heights[fixedFaces.get(0)]) <= best) {
+                break;
+            }
+            for (int f : fixedFaces) {
+                if (sign * (heights[m] + heights[f]) <= best) {
+                    break;
                 }
                 if (boxes[4 * m] > boxes[4 * f + 1] - overlap || boxes[4 * f] > boxes[4 * m + 1] - overlap
                         || boxes[4 * m + 2] > boxes[4 * f + 3] - overlap || boxes[4 * f + 2] > boxes[4 * m + 3] - overlap) {
                     continue;
                 }
-                if (!ConvexOverlap.overlaps(shadows[m], shadows[f], overlap)) {
-                    continue;
-                }
-                if (valley) {
-                    height = Math.max(height, (heights[m] + heights[f] + thickness) / 2);
-                } else {
-                    height = Math.min(height, (heights[m] + heights[f] - thickness) / 2);
+                if (ConvexOverlap.overlaps(shadows[m], shadows[f], overlap)) {
+                    best = sign * (heights[m] + heights[f]);
+                    break;
                 }
             }
+        }
+        if (best > Double.NEGATIVE_INFINITY) {
+            height = valley ? (best + thickness) / 2 : (-best - thickness) / 2;
         }
         return Double.isInfinite(height) ? atLine : height;
     }
