@@ -67,7 +67,7 @@ public final class PaperAnalysis {
         double tolerance = 1e-9 * Math.max(1, paper.size());
         int layers = 0;
         for (int f = 0; f < paper.faceCount(); f++) {
-            if (!paper.isCap(f) && contains(paper, basis, paper.faces.get(f), pu, pv, tolerance)) {
+            if (!paper.isCap(f) && contains(paper, basis, paper.faces.get(f), pu, pv, tolerance, false)) {
                 layers++;
             }
         }
@@ -76,8 +76,10 @@ public final class PaperAnalysis {
 
     /**
      * The most layers over any point of the sheet, found by sampling the centroid of every face
-     * and a grid of 64 by 64 points over the sheet's shadow: exact for sheets folded through all
-     * layers, whose overlaps always contain a face's centroid; otherwise a lower bound.
+     * and a grid of 64 by 64 points over the sheet's shadow, each counting the faces that hold it
+     * strictly inside (a sample on the border between two faces lying side by side is not an
+     * overlap): exact for sheets folded through all layers, whose overlaps always contain a
+     * face's centroid; otherwise a lower bound.
      */
     public static int maxLayers(Paper paper) {
         Basis basis = new Basis(paper.normal);
@@ -119,18 +121,22 @@ public final class PaperAnalysis {
         return best;
     }
 
+    /** Layers strictly over (u, v): a sample on the border of two faces side by side is no overlap. */
     private static int countAt(Paper paper, Basis basis, double u, double v, double tolerance) {
         int layers = 0;
         for (int f = 0; f < paper.faceCount(); f++) {
-            if (!paper.isCap(f) && contains(paper, basis, paper.faces.get(f), u, v, tolerance)) {
+            if (!paper.isCap(f) && contains(paper, basis, paper.faces.get(f), u, v, tolerance, true)) {
                 layers++;
             }
         }
         return layers;
     }
 
-    /** Whether the convex face's shadow contains (u, v), either way round. */
-    private static boolean contains(Paper paper, Basis basis, int[] face, double u, double v, double tolerance) {
+    /**
+     * Whether the convex face's shadow contains (u, v), either way round: with its border (within
+     * {@code tolerance}), or {@code strictly} inside it by more than that.
+     */
+    private static boolean contains(Paper paper, Basis basis, int[] face, double u, double v, double tolerance, boolean strictly) {
         boolean left = true;
         boolean right = true;
         for (int i = 0; i < face.length; i++) {
@@ -142,8 +148,9 @@ public final class PaperAnalysis {
             double bv = basis.v(paper.x(b), paper.y(b), paper.z(b));
             double length = Math.hypot(bu - au, bv - av);
             double cross = (bu - au) * (v - av) - (bv - av) * (u - au);
-            left &= cross >= -tolerance * length;
-            right &= cross <= tolerance * length;
+            double margin = (strictly ? -1 : 1) * tolerance * length;
+            left &= cross >= -margin;
+            right &= cross <= margin;
         }
         return left || right;
     }

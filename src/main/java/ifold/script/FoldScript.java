@@ -1,5 +1,6 @@
 package ifold.script;
 
+import ifold.fold.FlapFold;
 import ifold.fold.Fold;
 import ifold.fold.FoldException;
 import ifold.fold.Folder;
@@ -23,7 +24,7 @@ import org.joml.Vector3d;
  * paper strip LENGTH WIDTH | paper square SIDE | paper rectangle WIDTH HEIGHT
  * thickness T
  * fold valley|mountain DEGREES LINE left|right
- *   LINE = paper U1 V1 U2 V2 | points X1 Y1 Z1 X2 Y2 Z2 | point X Y Z direction DX DY DZ
+ *   LINE = paper U1 V1 U2 V2 | flap U1 V1 U2 V2 | points X1 Y1 Z1 X2 Y2 Z2 | point X Y Z direction DX DY DZ
  * </pre>
  * {@code left} or {@code right} is the side that moves, seen from the paper's top with the line
  * running from its first point to its second.
@@ -47,12 +48,23 @@ public final class FoldScript {
      * @param kind valley or mountain
      * @param degrees the angle
      * @param onPaper whether the line's points are paper coordinates (u, v) rather than 3D
+     * @param flap whether only the flap beyond the line (on the sheet) moves, rather than every
+     *     layer on that side in space; the line is then on paper
      * @param from the line's first point (u, v, 0 on paper)
      * @param to the line's second point
      * @param moving the side that moves
      * @param line the script line, or 0
      */
-    public record Step(Fold.Kind kind, double degrees, boolean onPaper, Vector3d from, Vector3d to, Fold.Side moving, int line) {
+    public record Step(Fold.Kind kind, double degrees, boolean onPaper, boolean flap, Vector3d from, Vector3d to, Fold.Side moving,
+            int line) {
+        /** The fold made on {@code paper} as it is now, cut and ready to turn. */
+        public Folder.Prepared prepare(Paper paper) throws FoldScriptException, FoldException {
+            if (flap) {
+                return Folder.prepare(paper, new FlapFold(kind, degrees, from.x, from.y, to.x, to.y, moving));
+            }
+            return Folder.prepare(paper, resolve(paper));
+        }
+
         /** The fold this step makes on {@code paper} as it is now. */
         public Fold resolve(Paper paper) throws FoldScriptException {
             if (!onPaper) {
@@ -90,7 +102,7 @@ public final class FoldScript {
             Step step = steps.get(i);
             try {
                 long start = System.nanoTime();
-                Folder.Prepared prepared = Folder.prepare(paper, step.resolve(paper));
+                Folder.Prepared prepared = step.prepare(paper);
                 folds.add(prepared);
                 paper = prepared.at(1);
                 nanosPerFold[i] = System.nanoTime() - start;
@@ -137,13 +149,19 @@ public final class FoldScript {
 
         /** A fold along the line through two paper points (u, v). */
         public Builder foldOnPaper(Fold.Kind kind, double degrees, double u1, double v1, double u2, double v2, Fold.Side moving) {
-            steps.add(new Step(kind, degrees, true, new Vector3d(u1, v1, 0), new Vector3d(u2, v2, 0), moving, 0));
+            steps.add(new Step(kind, degrees, true, false, new Vector3d(u1, v1, 0), new Vector3d(u2, v2, 0), moving, 0));
+            return this;
+        }
+
+        /** A flap fold: only the paper beyond the line through two paper points (u, v), on the sheet, turns. */
+        public Builder flap(Fold.Kind kind, double degrees, double u1, double v1, double u2, double v2, Fold.Side moving) {
+            steps.add(new Step(kind, degrees, true, true, new Vector3d(u1, v1, 0), new Vector3d(u2, v2, 0), moving, 0));
             return this;
         }
 
         /** A fold along the line through two 3D points. */
         public Builder fold(Fold.Kind kind, double degrees, Vector3d from, Vector3d to, Fold.Side moving) {
-            steps.add(new Step(kind, degrees, false, new Vector3d(from), new Vector3d(to), moving, 0));
+            steps.add(new Step(kind, degrees, false, false, new Vector3d(from), new Vector3d(to), moving, 0));
             return this;
         }
 
@@ -239,13 +257,15 @@ public final class FoldScript {
         if (!(degrees > 0 && degrees <= 180)) {
             throw new FoldScriptException(number, "the angle must be more than 0 and at most 180 degrees, got " + fmt(degrees));
         }
-        String form = tokens.word("paper, points or point");
+        String form = tokens.word("paper, flap, points or point");
         boolean onPaper;
+        boolean flap = false;
         Vector3d from;
         Vector3d to;
         switch (form) {
-            case "paper" -> {
+            case "paper", "flap" -> {
                 onPaper = true;
+                flap = form.equals("flap");
                 from = new Vector3d(tokens.number("u1"), tokens.number("v1"), 0);
                 to = new Vector3d(tokens.number("u2"), tokens.number("v2"), 0);
             }
@@ -260,7 +280,7 @@ public final class FoldScript {
                 tokens.expect("direction");
                 to = new Vector3d(tokens.number("dx"), tokens.number("dy"), tokens.number("dz")).add(from);
             }
-            default -> throw new FoldScriptException(number, "'" + form + "': expected paper, points or point to give the line");
+            default -> throw new FoldScriptException(number, "'" + form + "': expected paper, flap, points or point to give the line");
         }
         if (from.distance(to) == 0) {
             throw new FoldScriptException(number, "the line's two points are the same: a line needs a direction");
@@ -271,7 +291,7 @@ public final class FoldScript {
             case "right" -> Fold.Side.RIGHT;
             default -> throw new FoldScriptException(number, "'" + sideWord + "': expected left or right (the side that moves)");
         };
-        return new Step(kind, degrees, onPaper, from, to, side, number);
+        return new Step(kind, degrees, onPaper, flap, from, to, side, number);
     }
 
     /** The words of one line, read in order, with errors that name the line and what was expected. */

@@ -17,8 +17,8 @@ import org.joml.Vector3d;
  * @param tucks the tuck-under folds
  * @param passes the passes over the triangle
  * @param overlapped whether the last pass was laid back over itself to end at the wanted corner
- * @param maxLayers the most layers over any sampled point (face centroids, a grid over the
- *     paper and the coverage samples): a lower bound, exact wherever the samples hit every overlap
+ * @param maxLayers the most layers over any sampled point ({@link PaperAnalysis#maxLayers}: face
+ *     centroids and a grid over the paper): a lower bound, exact wherever the samples hit every overlap
  * @param efficiency the triangle's area over the strip's, L·w
  * @param coverage the fraction of sample points of the triangle under at least one layer
  * @param samples how many points of the triangle were sampled
@@ -45,7 +45,6 @@ public record ZigZagReport(double length, double width, int folds, int zigzagFol
         for (Vector3d point : samplePoints(triangle)) {
             int layers = PaperAnalysis.layersAt(paper, point.x, point.y, point.z);
             covered += layers > 0 ? 1 : 0;
-            deepest = Math.max(deepest, layers);
             samples++;
         }
         double area = triangle.area();

@@ -115,4 +115,27 @@ class FoldScriptTest {
         assertEquals(4, PaperAnalysis.layersAt(end, 2.5, 2.5, 0));
         assertEquals(100, PaperAnalysis.paperArea(end), 1e-9);
     }
+
+    @Test
+    void flapFoldsTurnTheStripBesideItself() throws Exception {
+        List<Folder.Prepared> folds = FoldScript.read(Path.of("models", "scripts", "zigzag-turn.fold")).play();
+        Paper end = folds.get(1).at(1);
+        assertTrue(PaperAnalysis.isometryError(end) <= 1e-12);
+        assertEquals(List.of(), MeshValidator.validate(end.top()));
+        assertEquals(2, PaperAnalysis.maxLayers(end), "only the turn holds two layers");
+        for (int v = 0; v < end.vertexCount(); v++) {
+            if (end.u(v) == 12 && end.v(v) == 1) {
+                // The strip's end runs back along the band below the first pass, at its height.
+                assertEquals(0, end.x(v), 1e-9);
+                assertEquals(-1, end.y(v), 1e-9);
+                assertEquals(0, end.z(v), 1e-9);
+            }
+        }
+        // The flap form names the side on the sheet: the same folds from the builder.
+        List<Folder.Prepared> built = FoldScript.builder().strip(12, 1).thickness(0.02)
+                .flap(Fold.Kind.VALLEY, 180, 5, 1, 6, 0, Fold.Side.LEFT)
+                .flap(Fold.Kind.MOUNTAIN, 180, 6, 0, 7, 1, Fold.Side.RIGHT).build().play();
+        assertEquals(end.vertexCount(), built.get(1).at(1).vertexCount());
+        assertEquals(2, errorLine("paper strip 12 1\nfold valley 180 flap 5 1 5 1 left\n"), "a crease needs two points");
+    }
 }
