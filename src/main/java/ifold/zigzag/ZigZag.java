@@ -39,10 +39,12 @@ import org.joml.Vector3d;
  * seed: a mountain fold through all layers along the edge with paper farthest beyond it, again
  * and again until no paper lies outside. A tuck reflects the paper beyond an edge's line onto its
  * inner side, so a point s beyond it comes closer to the incentre (its squared distance drops by
- * 4rs, r the inradius); the paper never lies farther than w + 2m beyond an edge along the strip
- * and 2w + m beside a turn, so a few tucks per edge finish: the bound
- * {@link #MAX_TUCKS} is never reached by the triangles of the tests, and passing it is an error,
- * not a silent result. The strip's length is bounded by the passes' lengths:
+ * 4rs, r the inradius) and tucks never cycle. Near a corner of angle θ, though, paper beyond one
+ * of its edges lands beyond the other and is reflected back and forth about π/θ times, and every
+ * tuck cuts all the layers its line crosses: a flat triangle with two sharp corners may need
+ * more than {@link #MAX_TUCKS} tucks or {@link #MAX_FACES} faces, and that is an error, not a
+ * silent result (in the tests, triangles with no angle under 10 degrees, and needles started at
+ * their tip, finish; see docs/zigzag.md). The strip's length is bounded by the passes' lengths:
  * <pre>
  *   L  &lt;=  Σ_{i&lt;k} c(h - (i+2)w)  +  k·(2m + 2w + 3w·(|cot P| + |cot Q|))
  *           +  (overlapped ? |PQ| + 2m + w·(|cot P| + |cot Q|) : 0)
@@ -54,7 +56,7 @@ import org.joml.Vector3d;
  * the bound on random triangles.
  */
 public final class ZigZag {
-    /** The most tucks before giving up: far above what any triangle needs (see the class notes). */
+    /** The most tucks before giving up: a few per edge suffice unless two corners are sharp (see the class notes). */
     public static final int MAX_TUCKS = 60;
 
     /** The most paper faces the tucks may make before giving up: tucking cuts through every layer. */
