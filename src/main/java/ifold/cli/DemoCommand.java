@@ -3,18 +3,14 @@ package ifold.cli;
 import ifold.fold.FoldException;
 import ifold.fold.Paper;
 import ifold.fold.PaperAnalysis;
-import ifold.fold.PaperExport;
 import ifold.fold.PaperMotion;
-import ifold.io.AtomicFile;
 import ifold.render.FrameExport;
 import ifold.render.RenderUnavailableException;
-import ifold.render.ViewerWindow;
 import ifold.scene.Animation;
 import ifold.scene.CameraMove;
 import ifold.scene.Geometry;
 import ifold.scene.Material;
 import ifold.scene.PaperView;
-import ifold.scene.Player;
 import ifold.scene.Scene;
 import ifold.scene.SceneMesh;
 import ifold.scene.Sequence;
@@ -24,7 +20,6 @@ import ifold.zigzag.ZigZag;
 import ifold.zigzag.ZigZagReport;
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -47,103 +42,12 @@ import picocli.CommandLine.Model.CommandSpec;
         description = "Demonstrations of the zig-zag method: 'ifold demo zigzag' wraps a triangle, 'ifold demo turn' turns a strip.",
         subcommands = {DemoCommand.ZigZagDemo.class, DemoCommand.TurnDemo.class})
 final class DemoCommand implements Runnable {
-    /** Where frames go when there is no display and no --frames. */
-    static final String HEADLESS_FOLDER_SUFFIX = "-frames";
-
     @Spec
     CommandSpec spec;
 
     @Override
     public void run() {
         throw new CommandLine.ParameterException(spec.commandLine(), "missing demo: zigzag or turn");
-    }
-
-    /** The options the demos share: what to write, and whether to show. */
-    static final class Outputs {
-        @Option(names = "--export-obj", paramLabel = "FILE", description = "write the folded paper as OBJ: vt = paper coordinates, caps in group 'cap'")
-        Path exportObj;
-
-        @Option(names = "--report", paramLabel = "FILE", description = "write the figures of the result as JSON")
-        Path report;
-
-        @Option(names = "--no-view", description = "neither open the viewer nor render frames")
-        boolean noView;
-
-        @Mixin
-        FrameOptions frameOptions = new FrameOptions();
-
-        /** Checks every output before any work; without a display, frames go to {@code name-frames/}. */
-        void check(String name, PrintWriter err) {
-            if (exportObj != null) {
-                OutputFiles.checkWritableFile(exportObj, "--export-obj", ".obj");
-            }
-            if (report != null) {
-                OutputFiles.checkWritableFile(report, "--report", ".json");
-            }
-            if (frameOptions.frames == null && !noView && !hasDisplay()) {
-                frameOptions.frames = Path.of(name + HEADLESS_FOLDER_SUFFIX);
-                err.println("ifold: no display: rendering frames into " + frameOptions.frames.toAbsolutePath() + "/ instead");
-            }
-            frameOptions.check();
-        }
-
-        void write(Paper folded, Map<String, Object> figures, PrintWriter out) {
-            try {
-                if (exportObj != null) {
-                    PaperExport.writeObj(folded, exportObj);
-                    out.println("wrote " + exportObj);
-                }
-                if (report != null) {
-                    String json = Json.write(figures);
-                    AtomicFile.write(report, stream -> stream.write(json.getBytes(StandardCharsets.UTF_8)), true);
-                    out.println("wrote " + report);
-                }
-            } catch (IOException e) {
-                frameOptions.removeFolderIfUnused();
-                throw new UserError("cannot write: " + e.getMessage());
-            }
-        }
-
-        /** Shows the animation in a window, or renders it into frames. */
-        void show(Scene scene, Animation animation, String title, double defaultSeconds, CommandSpec spec) {
-            PrintWriter out = spec.commandLine().getOut();
-            PrintWriter err = spec.commandLine().getErr();
-            boolean secondsGiven = spec.commandLine().getParseResult().hasMatchedOption("--seconds");
-            double seconds = secondsGiven ? frameOptions.seconds : defaultSeconds;
-            if (frameOptions.frames != null) {
-                try {
-                    int frames = Math.max(1, (int) Math.round(frameOptions.fps * seconds));
-                    FrameExport.Result result = FrameExport.export(scene, animation, frameOptions.frames, frameOptions.width,
-                            frameOptions.height, frames, 4, err);
-                    out.printf(Locale.ROOT, "wrote %d frames of %dx%d to %s in %.1f s (%.1f frames/s)%n", result.frames(),
-                            frameOptions.width, frameOptions.height, frameOptions.frames.toAbsolutePath(), result.seconds(),
-                            result.framesPerSecond());
-                } catch (RenderUnavailableException e) {
-                    frameOptions.removeFolderIfUnused();
-                    throw new UserError(e.getMessage());
-                } catch (IOException e) {
-                    throw new UserError("option --frames: cannot write frames to " + frameOptions.frames + ": " + e.getMessage());
-                }
-            } else if (!noView) {
-                Player player = new Player(animation, seconds);
-                player.togglePlaying(); // a demo plays at once; space pauses it
-                try {
-                    new ViewerWindow(scene, player, title, err, 4).show("iFold - " + title, 1280, 720, 0);
-                } catch (RenderUnavailableException e) {
-                    throw new UserError(e.getMessage() + "; or render frames with --frames DIR, or pass --no-view");
-                }
-            }
-            out.flush();
-        }
-
-        /**
-         * Whether a window can open: a display is set, and it is not the virtual one the launcher
-         * started only to render frames.
-         */
-        private static boolean hasDisplay() {
-            String display = System.getenv("DISPLAY");
-            return display != null && !display.isEmpty() && System.getenv("IFOLD_IN_XVFB") == null;
-        }
     }
 
     @Command(name = "zigzag", mixinStandardHelpOptions = true,
@@ -181,7 +85,7 @@ final class DemoCommand implements Runnable {
         Path figure;
 
         @Mixin
-        Outputs outputs = new Outputs();
+        PaperOutputs outputs = new PaperOutputs();
 
         @Override
         public Integer call() {
@@ -211,7 +115,7 @@ final class DemoCommand implements Runnable {
                 throw new UserError("option --thickness: must be zero or more and at most a quarter of the width, got " + thickness);
             }
             PrintWriter out = spec.commandLine().getOut();
-            outputs.check("zigzag", spec.commandLine().getErr());
+            outputs.check("zigzag", spec.commandLine().getErr(), true);
             ZigZag.Result result;
             try {
                 result = ZigZag.wrap(shape, new ZigZag.Options(w, t, startCorner, endCorner, enterCorner));
@@ -265,7 +169,7 @@ final class DemoCommand implements Runnable {
                 animation.apply(0);
             }
             // About two seconds a fold: under a minute for the default triangle.
-            outputs.show(scene, animation, "zig-zag: " + report.folds() + " folds", 2.0 * animation.stepCount(), spec);
+            outputs.show(scene, animation, "zig-zag: " + report.folds() + " folds", 2.0 * animation.stepCount(), true, spec);
             return 0;
         }
     }
@@ -291,7 +195,7 @@ final class DemoCommand implements Runnable {
         double thickness;
 
         @Mixin
-        Outputs outputs = new Outputs();
+        PaperOutputs outputs = new PaperOutputs();
 
         @Override
         public Integer call() {
@@ -312,7 +216,7 @@ final class DemoCommand implements Runnable {
                 throw new UserError("option --thickness: must be zero or more and at most a quarter of the width, got " + thickness);
             }
             PrintWriter out = spec.commandLine().getOut();
-            outputs.check("turn", spec.commandLine().getErr());
+            outputs.check("turn", spec.commandLine().getErr(), true);
             TurnGadget.Result gadget;
             try {
                 gadget = TurnGadget.turn(angle, overhang * width, width, thickness, 4 * width, 6 * width);
@@ -348,7 +252,7 @@ final class DemoCommand implements Runnable {
             List<String> names = List.of("the fold across the strip lays it back over itself",
                     String.format(Locale.ROOT, "the turn fold sets it running at %.4g degrees, top side up", angle));
             outputs.show(scene, PaperView.playing(paper, gadget.start(), gadget.folds(), names),
-                    String.format(Locale.ROOT, "turn gadget: %.4g degrees", angle), 6, spec);
+                    String.format(Locale.ROOT, "turn gadget: %.4g degrees", angle), 6, true, spec);
             return 0;
         }
     }

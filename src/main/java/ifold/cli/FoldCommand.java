@@ -1,23 +1,16 @@
 package ifold.cli;
 
 import ifold.fold.Folder;
-import ifold.io.AtomicFile;
 import ifold.fold.Paper;
 import ifold.fold.PaperAnalysis;
-import ifold.fold.PaperExport;
-import ifold.render.FrameExport;
-import ifold.render.RenderUnavailableException;
-import ifold.render.ViewerWindow;
 import ifold.scene.Animation;
 import ifold.scene.Geometry;
 import ifold.scene.PaperView;
-import ifold.scene.Player;
 import ifold.scene.Scene;
 import ifold.script.FoldScript;
 import ifold.script.FoldScriptException;
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
@@ -29,7 +22,6 @@ import java.util.concurrent.Callable;
 import org.joml.Quaterniond;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
-import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
@@ -46,27 +38,12 @@ final class FoldCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "SCRIPT", description = "a fold script")
     Path script;
 
-    @Option(names = "--export-obj", paramLabel = "FILE", description = "write the folded paper as OBJ: vt = paper coordinates, caps in group 'cap'")
-    Path exportObj;
-
-    @Option(names = "--report", paramLabel = "FILE", description = "write layers, creases, area and isometry as JSON")
-    Path report;
-
-    @Option(names = "--no-view", description = "do not open the viewer (with --export-obj or --report alone)")
-    boolean noView;
-
     @Mixin
-    FrameOptions frameOptions = new FrameOptions();
+    PaperOutputs outputs = new PaperOutputs();
 
     @Override
     public Integer call() {
-        if (exportObj != null) {
-            OutputFiles.checkWritableFile(exportObj, "--export-obj", ".obj");
-        }
-        if (report != null) {
-            OutputFiles.checkWritableFile(report, "--report", ".json");
-        }
-        frameOptions.check();
+        outputs.check("fold", spec.commandLine().getErr(), false);
         FoldScript parsed;
         List<Folder.Prepared> folds;
         long[] nanosPerFold;
@@ -81,27 +58,15 @@ final class FoldCommand implements Callable<Integer> {
         } catch (IOException e) {
             throw new UserError(script + ": cannot read: " + e.getMessage());
         } catch (FoldScriptException e) {
-            frameOptions.removeFolderIfUnused();
+            outputs.frameOptions.removeFolderIfUnused();
             throw new UserError(script + (e.line() > 0 ? ":" + e.getMessage().replaceFirst("^line ", "") : ": " + e.getMessage()));
         }
         Paper start = parsed.paper();
         Paper end = folds.isEmpty() ? start : folds.get(folds.size() - 1).at(1);
         PrintWriter out = spec.commandLine().getOut();
-        PrintWriter err = spec.commandLine().getErr();
         Map<String, Object> figures = figures(parsed, folds.size(), end);
         figures.put("timing", timing(nanosPerFold, folds));
-        try {
-            if (exportObj != null) {
-                PaperExport.writeObj(end, exportObj);
-                out.println("wrote " + exportObj);
-            }
-            if (report != null) {
-                writeAtomically(report, Json.write(figures));
-                out.println("wrote " + report);
-            }
-        } catch (IOException e) {
-            throw new UserError("cannot write: " + e.getMessage());
-        }
+        outputs.write(end, figures, out);
         out.printf(Locale.ROOT, "%s: %d folds, %d layers at most, %d creases, isometry error %.1e%n", script.getFileName(),
                 folds.size(), figures.get("maxLayers"), figures.get("creases"), (Double) figures.get("isometryError"));
         out.flush();
@@ -112,27 +77,8 @@ final class FoldCommand implements Callable<Integer> {
         scene.camera().setOrientation(new Quaterniond().rotateX(-0.75).rotateZ(-0.35));
         scene.frameAll();
         Animation animation = PaperView.folding(geometry, start, folds);
-        if (frameOptions.frames != null) {
-            try {
-                FrameExport.Result result = FrameExport.export(scene, animation, frameOptions.frames, frameOptions.width,
-                        frameOptions.height, frameOptions.frameCount(), 4, err);
-                out.printf(Locale.ROOT, "wrote %d frames of %dx%d to %s in %.1f s (%.1f frames/s)%n", result.frames(),
-                        frameOptions.width, frameOptions.height, frameOptions.frames, result.seconds(), result.framesPerSecond());
-            } catch (RenderUnavailableException e) {
-                frameOptions.removeFolderIfUnused();
-                throw new UserError(e.getMessage());
-            } catch (IOException e) {
-                throw new UserError("option --frames: cannot write frames to " + frameOptions.frames + ": " + e.getMessage());
-            }
-        } else if (!noView) {
-            Player player = new Player(animation, frameOptions.seconds);
-            try {
-                new ViewerWindow(scene, player, script.getFileName() + ": " + folds.size() + " folds", err, 4)
-                        .show("iFold - " + script.getFileName(), 1280, 720, 0);
-            } catch (RenderUnavailableException e) {
-                throw new UserError(e.getMessage() + "; or render frames with --frames DIR, or pass --no-view");
-            }
-        }
+        outputs.show(scene, animation, script.getFileName() + ": " + folds.size() + " folds", outputs.frameOptions.seconds, false,
+                spec);
         out.flush();
         return 0;
     }
@@ -186,9 +132,5 @@ final class FoldCommand implements Callable<Integer> {
             timing.put("byTenth", tenths);
         }
         return timing;
-    }
-
-    private static void writeAtomically(Path file, String text) throws IOException {
-        AtomicFile.write(file, out -> out.write(text.getBytes(StandardCharsets.UTF_8)), true);
     }
 }

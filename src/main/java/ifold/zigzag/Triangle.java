@@ -62,26 +62,27 @@ public final class Triangle {
         return corners[(corner + 1) % 3].distance(corners[(corner + 2) % 3]);
     }
 
-    /** The smallest angle, in degrees. */
-    public double smallestAngle() {
-        double smallest = 180;
+    /** The angles at A, B and C, in degrees. */
+    public double[] angles() {
+        double[] angles = new double[3];
         for (int i = 0; i < 3; i++) {
             Vector3d u = new Vector3d(corners[(i + 1) % 3]).sub(corners[i]);
             Vector3d v = new Vector3d(corners[(i + 2) % 3]).sub(corners[i]);
-            smallest = Math.min(smallest, Math.toDegrees(u.angle(v)));
+            angles[i] = Math.toDegrees(u.angle(v));
         }
-        return smallest;
+        return angles;
+    }
+
+    /** The smallest angle, in degrees. */
+    public double smallestAngle() {
+        double[] angles = angles();
+        return Math.min(angles[0], Math.min(angles[1], angles[2]));
     }
 
     /** The largest angle, in degrees. */
     public double largestAngle() {
-        double largest = 0;
-        for (int i = 0; i < 3; i++) {
-            Vector3d u = new Vector3d(corners[(i + 1) % 3]).sub(corners[i]);
-            Vector3d v = new Vector3d(corners[(i + 2) % 3]).sub(corners[i]);
-            largest = Math.max(largest, Math.toDegrees(u.angle(v)));
-        }
-        return largest;
+        double[] angles = angles();
+        return Math.max(angles[0], Math.max(angles[1], angles[2]));
     }
 
     /**

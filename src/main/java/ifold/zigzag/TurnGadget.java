@@ -43,53 +43,44 @@ public final class TurnGadget {
          */
         public double measuredAngle() {
             Paper paper = folded();
-            for (int f = 0; f < paper.faceCount(); f++) {
-                if (paper.isCap(f)) {
-                    continue;
+            int[] face = paper.face(endFace(paper));
+            int end = -1;
+            int before = -1;
+            for (int v : face) {
+                if (paper.v(v) == 0 && paper.u(v) == length) {
+                    end = v;
+                } else if (paper.v(v) == 0 && (before < 0 || paper.u(v) < paper.u(before))) {
+                    before = v;
                 }
-                int[] face = paper.face(f);
-                int end = -1;
-                int before = -1;
-                for (int v : face) {
-                    if (paper.v(v) == 0 && paper.u(v) == length) {
-                        end = v;
-                    }
-                }
-                if (end < 0) {
-                    continue;
-                }
-                for (int v : face) {
-                    if (paper.v(v) == 0 && paper.u(v) < length && (before < 0 || paper.u(v) < paper.u(before))) {
-                        before = v;
-                    }
-                }
-                return Math.toDegrees(Math.atan2(paper.y(end) - paper.y(before), paper.x(end) - paper.x(before)));
             }
-            throw new IllegalStateException("the strip's end is not on the paper");
+            return Math.toDegrees(Math.atan2(paper.y(end) - paper.y(before), paper.x(end) - paper.x(before)));
         }
 
         /** Whether the strip's end lies top side up, as it came in. */
         public boolean endFacesUp() {
             Paper paper = folded();
+            int[] face = paper.face(endFace(paper));
+            Vector3d normal = new Vector3d();
+            for (int i = 0; i < face.length; i++) {
+                int a = face[i];
+                int b = face[(i + 1) % face.length];
+                normal.add((paper.y(a) - paper.y(b)) * (paper.z(a) + paper.z(b)),
+                        (paper.z(a) - paper.z(b)) * (paper.x(a) + paper.x(b)),
+                        (paper.x(a) - paper.x(b)) * (paper.y(a) + paper.y(b)));
+            }
+            return normal.dot(paper.normal()) > 0; // Newell's normal: faces run counter-clockwise on the sheet
+        }
+
+        /** The paper face that holds the strip's end edge (u = length, from v = 0). */
+        private int endFace(Paper paper) {
             for (int f = 0; f < paper.faceCount(); f++) {
                 if (paper.isCap(f)) {
                     continue;
                 }
-                int[] face = paper.face(f);
-                boolean holdsEnd = false;
-                for (int v : face) {
-                    holdsEnd |= paper.u(v) == length;
-                }
-                if (holdsEnd) {
-                    Vector3d normal = new Vector3d();
-                    for (int i = 0; i < face.length; i++) {
-                        int a = face[i];
-                        int b = face[(i + 1) % face.length];
-                        normal.add((paper.y(a) - paper.y(b)) * (paper.z(a) + paper.z(b)),
-                                (paper.z(a) - paper.z(b)) * (paper.x(a) + paper.x(b)),
-                                (paper.x(a) - paper.x(b)) * (paper.y(a) + paper.y(b)));
+                for (int v : paper.face(f)) {
+                    if (paper.v(v) == 0 && paper.u(v) == length) {
+                        return f;
                     }
-                    return normal.dot(paper.normal()) > 0;
                 }
             }
             throw new IllegalStateException("the strip's end is not on the paper");

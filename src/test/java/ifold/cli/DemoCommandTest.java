@@ -7,8 +7,6 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
@@ -32,7 +30,9 @@ class DemoCommandTest {
         assertTrue(number(json, "paperOutsideArea") < 1e-9, json);
         assertEquals(40 / (number(json, "stripLength") * 1.6), number(json, "paperEfficiency"), 1e-5);
         assertTrue(run.out().contains("coverage 1.000"), run.out());
-        assertTrue(isometryReadBack(obj) <= 1e-9, "the OBJ is isometric as written");
+        ObjReadBack back = ObjReadBack.read(obj);
+        assertTrue(back.paperFaces() > 0 && back.capFaces() > 0, "paper and caps written");
+        assertTrue(back.worstIsometry() <= 1e-9, "the OBJ is isometric as written: " + back.worstIsometry());
     }
 
     @Test
@@ -93,39 +93,5 @@ class DemoCommandTest {
         Matcher m = Pattern.compile("\"" + key + "\": ([-0-9.eE+]+)").matcher(json);
         assertTrue(m.find(), key + " in " + json);
         return Double.parseDouble(m.group(1));
-    }
-
-    /** The worst relative difference between a paper edge's length in space (v) and on the sheet (vt), read from the file. */
-    static double isometryReadBack(Path obj) throws Exception {
-        List<double[]> v = new ArrayList<>();
-        List<double[]> vt = new ArrayList<>();
-        String group = "";
-        double worst = 0;
-        for (String line : Files.readAllLines(obj)) {
-            String[] w = line.split(" ");
-            switch (w[0]) {
-                case "v" -> v.add(new double[] {Double.parseDouble(w[1]), Double.parseDouble(w[2]), Double.parseDouble(w[3])});
-                case "vt" -> vt.add(new double[] {Double.parseDouble(w[1]), Double.parseDouble(w[2])});
-                case "g" -> group = w[1];
-                case "f" -> {
-                    if (group.equals("cap")) {
-                        continue;
-                    }
-                    for (int i = 1; i < w.length; i++) {
-                        int a = Integer.parseInt(w[i].split("/")[0]) - 1;
-                        int b = Integer.parseInt(w[i % (w.length - 1) + 1].split("/")[0]) - 1;
-                        double space = Math.sqrt(Math.pow(v.get(a)[0] - v.get(b)[0], 2) + Math.pow(v.get(a)[1] - v.get(b)[1], 2)
-                                + Math.pow(v.get(a)[2] - v.get(b)[2], 2));
-                        double paper = Math.hypot(vt.get(a)[0] - vt.get(b)[0], vt.get(a)[1] - vt.get(b)[1]);
-                        worst = Math.max(worst, Math.abs(space - paper) / paper);
-                    }
-                }
-                default -> {
-                }
-            }
-        }
-        assertEquals(v.size(), vt.size());
-        assertTrue(v.size() > 0, "setup: a paper was written");
-        return worst;
     }
 }

@@ -6,8 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -23,41 +21,10 @@ class FoldCommandTest {
         CliTest.Run run = CliTest.run("fold", "models/scripts/pleat20.fold", "--no-view", "--export-obj", obj.toString(),
                 "--report", report.toString());
         assertEquals(0, run.code(), run.err());
-        List<double[]> v = new ArrayList<>();
-        List<double[]> vt = new ArrayList<>();
-        String group = "";
-        int paperFaces = 0;
-        int capFaces = 0;
-        double worst = 0;
-        for (String line : Files.readAllLines(obj)) {
-            String[] w = line.split(" ");
-            switch (w[0]) {
-                case "v" -> v.add(new double[] {Double.parseDouble(w[1]), Double.parseDouble(w[2]), Double.parseDouble(w[3])});
-                case "vt" -> vt.add(new double[] {Double.parseDouble(w[1]), Double.parseDouble(w[2])});
-                case "g" -> group = w[1];
-                case "f" -> {
-                    if (group.equals("cap")) {
-                        capFaces++;
-                        continue;
-                    }
-                    paperFaces++;
-                    for (int i = 1; i < w.length; i++) {
-                        int a = Integer.parseInt(w[i].split("/")[0]) - 1;
-                        int b = Integer.parseInt(w[i % (w.length - 1) + 1].split("/")[0]) - 1;
-                        double space = Math.sqrt(Math.pow(v.get(a)[0] - v.get(b)[0], 2) + Math.pow(v.get(a)[1] - v.get(b)[1], 2)
-                                + Math.pow(v.get(a)[2] - v.get(b)[2], 2));
-                        double paper = Math.hypot(vt.get(a)[0] - vt.get(b)[0], vt.get(a)[1] - vt.get(b)[1]);
-                        worst = Math.max(worst, Math.abs(space - paper) / paper);
-                    }
-                }
-                default -> {
-                }
-            }
-        }
-        assertEquals(v.size(), vt.size());
-        assertEquals(21, paperFaces, "21 pieces of strip");
-        assertEquals(40, capFaces, "two facets for each of 20 folds");
-        assertTrue(worst <= 1e-9, "isometric as written: " + worst);
+        ObjReadBack back = ObjReadBack.read(obj);
+        assertEquals(21, back.paperFaces(), "21 pieces of strip");
+        assertEquals(40, back.capFaces(), "two facets for each of 20 folds");
+        assertTrue(back.worstIsometry() <= 1e-9, "isometric as written: " + back.worstIsometry());
         String json = Files.readString(report);
         assertTrue(json.contains("\"maxLayers\": 21"), json);
         assertTrue(json.contains("\"folds\": 20"), json);

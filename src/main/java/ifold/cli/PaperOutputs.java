@@ -1,0 +1,118 @@
+package ifold.cli;
+
+import ifold.fold.Paper;
+import ifold.fold.PaperExport;
+import ifold.io.AtomicFile;
+import ifold.render.FrameExport;
+import ifold.render.RenderUnavailableException;
+import ifold.render.ViewerWindow;
+import ifold.scene.Animation;
+import ifold.scene.Player;
+import ifold.scene.Scene;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.Map;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+
+/**
+ * What the commands that fold paper share: the folded paper as OBJ, the figures as JSON, and
+ * the animation in a window or as frames ({@code --export-obj --report --no-view} and the frame
+ * options). Every output is checked before any work, and written whole or not at all.
+ */
+final class PaperOutputs {
+    @Option(names = "--export-obj", paramLabel = "FILE", description = "write the folded paper as OBJ: vt = paper coordinates, caps in group 'cap'")
+    Path exportObj;
+
+    @Option(names = "--report", paramLabel = "FILE", description = "write the figures of the result as JSON")
+    Path report;
+
+    @Option(names = "--no-view", description = "do not open the viewer, nor render frames unless --frames asks")
+    boolean noView;
+
+    @Mixin
+    FrameOptions frameOptions = new FrameOptions();
+
+    /**
+     * Checks every output before any work. With {@code framesWithoutDisplay}, where no window
+     * can open and no --frames was given, frames go to {@code name-frames/} (and it says so).
+     */
+    void check(String name, PrintWriter err, boolean framesWithoutDisplay) {
+        if (exportObj != null) {
+            OutputFiles.checkWritableFile(exportObj, "--export-obj", ".obj");
+        }
+        if (report != null) {
+            OutputFiles.checkWritableFile(report, "--report", ".json");
+        }
+        if (framesWithoutDisplay && frameOptions.frames == null && !noView && !hasDisplay()) {
+            frameOptions.frames = Path.of(name + "-frames");
+            err.println("ifold: no display: rendering frames into " + frameOptions.frames.toAbsolutePath() + "/ instead");
+        }
+        frameOptions.check();
+    }
+
+    void write(Paper folded, Map<String, Object> figures, PrintWriter out) {
+        try {
+            if (exportObj != null) {
+                PaperExport.writeObj(folded, exportObj);
+                out.println("wrote " + exportObj);
+            }
+            if (report != null) {
+                String json = Json.write(figures);
+                AtomicFile.write(report, stream -> stream.write(json.getBytes(StandardCharsets.UTF_8)), true);
+                out.println("wrote " + report);
+            }
+        } catch (IOException e) {
+            frameOptions.removeFolderIfUnused();
+            throw new UserError("cannot write: " + e.getMessage());
+        }
+    }
+
+    /**
+     * Shows the animation in a window (playing at once if {@code autoplay}), or renders it into
+     * frames; {@code defaultSeconds} is its length unless --seconds says otherwise.
+     */
+    void show(Scene scene, Animation animation, String title, double defaultSeconds, boolean autoplay, CommandSpec spec) {
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        boolean secondsGiven = spec.commandLine().getParseResult().hasMatchedOption("--seconds");
+        double seconds = secondsGiven ? frameOptions.seconds : defaultSeconds;
+        if (frameOptions.frames != null) {
+            try {
+                int frames = Math.max(1, (int) Math.round(frameOptions.fps * seconds));
+                FrameExport.Result result = FrameExport.export(scene, animation, frameOptions.frames, frameOptions.width,
+                        frameOptions.height, frames, 4, err);
+                out.printf(Locale.ROOT, "wrote %d frames of %dx%d to %s in %.1f s (%.1f frames/s)%n", result.frames(),
+                        frameOptions.width, frameOptions.height, frameOptions.frames.toAbsolutePath(), result.seconds(),
+                        result.framesPerSecond());
+            } catch (RenderUnavailableException e) {
+                frameOptions.removeFolderIfUnused();
+                throw new UserError(e.getMessage());
+            } catch (IOException e) {
+                throw new UserError("option --frames: cannot write frames to " + frameOptions.frames + ": " + e.getMessage());
+            }
+        } else if (!noView) {
+            Player player = new Player(animation, seconds);
+            player.togglePlaying(); // a demo plays at once; space pauses it
+            try {
+                new ViewerWindow(scene, player, title, err, 4).show("iFold - " + title, 1280, 720, 0);
+            } catch (RenderUnavailableException e) {
+                throw new UserError(e.getMessage() + "; or render frames with --frames DIR, or pass --no-view");
+            }
+        }
+        out.flush();
+    }
+
+    /**
+     * Whether a window can open: a display is set, and it is not the virtual one the launcher
+     * started only to render frames.
+     */
+    private static boolean hasDisplay() {
+        String display = System.getenv("DISPLAY");
+        return display != null && !display.isEmpty() && System.getenv("IFOLD_IN_XVFB") == null;
+    }
+}
