@@ -7,6 +7,7 @@ import ifold.fold.Folder;
 import ifold.fold.Paper;
 import ifold.fold.PaperMotion;
 import ifold.fold.Press;
+import ifold.geom.Tolerance;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -248,7 +249,9 @@ public final class ZigZag {
         Matrix4d toPlan = planToSpace.invert(new Matrix4d());
         double[] plan = triangle.inPlan(start);
         double scale = Math.max(triangle.opposite(0), Math.max(triangle.opposite(1), triangle.opposite(2)));
-        double tolerance = 1e-9 * scale;
+        // Paper closer to an edge's line than the fold engine's tolerance lies on it for a fold:
+        // a tuck could not move it, and it is not outside.
+        double tolerance = 2 * Tolerance.ON_PLANE * Math.max(scale, paper.size());
         double base = new Vector3d(triangle.corner(0)).dot(triangle.normal());
         for (int tucks = 0; ; tucks++) {
             int edge = -1;

@@ -86,6 +86,15 @@ class ZigZagTest {
     }
 
     @Test
+    void aNarrowStripOfTwoHundredPassesIsWrappedAndWastesLittle() throws Exception {
+        // A long sheet: its tolerances grow with it, and the tucks must agree with the fold engine's.
+        ZigZag.Result result = ZigZag.wrap(ACUTE, new ZigZag.Options(0.04, 0.0005, 2, 0, -1));
+        assertEquals(200, result.passes());
+        assertWrapped(result);
+        assertTrue(ZigZagReport.of(result).efficiency() > 0.95, "efficiency tends to 1 as the strip narrows");
+    }
+
+    @Test
     void thinPaperIsWrappedToo() throws Exception {
         ZigZag.Result result = ZigZag.wrap(ACUTE, new ZigZag.Options(0.7, 0, 0, 1, -1));
         assertWrapped(result);
@@ -177,10 +186,12 @@ class ZigZagTest {
         assertEquals(result.length() * w, PaperAnalysis.paperArea(paper), 1e-9 * result.length() * w, "no paper lost");
 
         // Nothing outside: no vertex beyond an edge, no area outside, nothing deeper than the layers.
+        // (Within the fold engine's tolerance, which grows with the sheet: 2e-9 of the strip's length.)
+        double onEdge = 2e-9 * Math.max(size, result.length());
         for (int e = 0; e < 3; e++) {
-            assertTrue(Outside.farthestBeyondEdge(paper, toPlan, plan, e) <= 1e-9 * size, "no paper beyond edge " + e);
+            assertTrue(Outside.farthestBeyondEdge(paper, toPlan, plan, e) <= onEdge, "no paper beyond edge " + e);
         }
-        assertTrue(Outside.area(paper, toPlan, plan) <= 1e-9 * triangle.area(), "no paper area outside");
+        assertTrue(Outside.area(paper, toPlan, plan) <= 3 * size * onEdge, "no paper area outside");
         int maxLayers = PaperAnalysis.maxLayers(paper);
         List<Vector3d> points = randomPoints(triangle, 400, new Random(7));
         for (Vector3d p : points) {
