@@ -90,7 +90,7 @@ final class Landing {
             boxes[4 * f + 3] = maxL;
         }
         // Overlaps thinner than this are faces that only touch, sharing an edge or a crease.
-        double overlap = 100 * faces.tolerance();
+        double overlap = faces.tolerance();
         // Where landing layers overlap layers that stay, they decide alone: the layers at the line
         // may include paper that only touches it at a corner and lies beside the landing, not under it.
         double height = valley ? Double.NEGATIVE_INFINITY : Double.POSITIVE_INFINITY;

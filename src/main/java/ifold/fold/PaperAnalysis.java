@@ -10,7 +10,13 @@ public final class PaperAnalysis {
     private PaperAnalysis() {
     }
 
-    /** The largest relative difference between an edge's 3D length and its paper length, over all paper faces. */
+    /**
+     * The largest difference between an edge's 3D length and its paper length, relative to the
+     * size of its face (the face's longest paper edge), over all paper faces: how far from rigid
+     * the faces are placed. Relative to the face, not the edge, because a fold that cuts a face
+     * near a corner leaves an edge far shorter than the rounding of the face's placement allows
+     * it to be measured against.
+     */
     public static double isometryError(Paper paper) {
         double worst = 0;
         for (int f = 0; f < paper.faceCount(); f++) {
@@ -18,13 +24,19 @@ public final class PaperAnalysis {
                 continue;
             }
             int[] face = paper.faces.get(f);
+            double size = 0;
+            for (int i = 0; i < face.length; i++) {
+                int a = face[i];
+                int b = face[(i + 1) % face.length];
+                size = Math.max(size, Math.hypot(paper.u(b) - paper.u(a), paper.v(b) - paper.v(a)));
+            }
             for (int i = 0; i < face.length; i++) {
                 int a = face[i];
                 int b = face[(i + 1) % face.length];
                 double paperLength = Math.hypot(paper.u(b) - paper.u(a), paper.v(b) - paper.v(a));
                 double spaceLength = Math.sqrt(square(paper.x(b) - paper.x(a)) + square(paper.y(b) - paper.y(a))
                         + square(paper.z(b) - paper.z(a)));
-                double error = Math.abs(spaceLength - paperLength) / Math.max(paperLength, 1e-300);
+                double error = Math.abs(spaceLength - paperLength) / Math.max(size, 1e-300);
                 if (!(error <= worst)) {
                     worst = Double.isNaN(error) ? Double.POSITIVE_INFINITY : error;
                 }

@@ -203,7 +203,7 @@ public final class Press {
         Integer[] order = new Integer[shadows.size()];
         Arrays.setAll(order, i -> i);
         Arrays.sort(order, (a, b) -> Double.compare(boxes.get(a)[0], boxes.get(b)[0]));
-        double margin = 100 * tolerance;
+        double margin = tolerance;
         List<java.util.Set<Integer>> below = new ArrayList<>();
         for (int p = 0; p < pieces; p++) {
             below.add(new java.util.LinkedHashSet<>());
