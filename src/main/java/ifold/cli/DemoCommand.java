@@ -51,9 +51,10 @@ final class DemoCommand implements Runnable {
     }
 
     @Command(name = "zigzag", mixinStandardHelpOptions = true,
-            description = {"Wraps a triangle in a strip of paper the zig-zag way (Figure 11 of the seed): the passes and their",
-                "turns, then the tucks that hide the excess, then the camera turns to show the underside and its layers.",
-                "In a window where there is a display; as frames in zigzag-frames/ where there is none."})
+            description = {"Wraps a triangle in a strip of paper the zig-zag way (Figure 11 of the seed): the passes and their "
+                + "turns, then the tucks that hide the excess, then the camera turns to show the underside and its layers. "
+                + "In a window where there is a display; as frames in zigzag-frames/ where there is none. "
+                + "The animation takes two seconds a step unless --seconds says otherwise."})
     static final class ZigZagDemo implements Callable<Integer> {
         @Spec
         CommandSpec spec;
@@ -175,8 +176,9 @@ final class DemoCommand implements Runnable {
     }
 
     @Command(name = "turn", mixinStandardHelpOptions = true,
-            description = {"Turns a strip by an angle with the turn gadget (Figures 1 and 2 of the seed): a fold across the strip,",
-                "then the turn fold; the strip goes on top side up. --overhang 0 is the basic gadget."})
+            description = {"Turns a strip by an angle with the turn gadget (Figures 1 and 2 of the seed): a fold across the strip, "
+                + "then the turn fold; the strip goes on top side up. --overhang 0 is the basic gadget. "
+                + "The animation takes six seconds unless --seconds says otherwise."})
     static final class TurnDemo implements Callable<Integer> {
         @Spec
         CommandSpec spec;

@@ -28,6 +28,8 @@ public final class FrameWriter implements AutoCloseable {
     private final Path folder;
     private final int total;
     private final PrintWriter progress;
+    /** Whether the progress bar goes to a terminal (the JVM has a console: stdin and stdout are one). */
+    private static final boolean ON_TERMINAL = System.console() != null;
     private final ExecutorService encoders;
     private final Semaphore inFlight;
     private final List<Future<?>> pending = new ArrayList<>();
@@ -119,12 +121,16 @@ public final class FrameWriter implements AutoCloseable {
         if (progress == null || done == lastPrinted) {
             return;
         }
+        // Redrawn in place on a terminal; into a log or a pipe, a line every tenth of the way.
+        if (!ON_TERMINAL && done != total && (long) done * 10 / Math.max(1, total) == (long) lastPrinted * 10 / Math.max(1, total)) {
+            return;
+        }
         lastPrinted = done;
         int width = 30;
         int filled = total == 0 ? width : (int) ((long) width * done / total);
         double seconds = (System.nanoTime() - start) * 1e-9;
-        progress.printf(Locale.ROOT, "\r[%s%s] %d/%d frames, %.1f frames/s", "#".repeat(filled), " ".repeat(width - filled),
-                done, total, seconds > 0 ? done / seconds : 0.0);
+        progress.printf(Locale.ROOT, "%s[%s%s] %d/%d frames, %.1f frames/s%s", ON_TERMINAL ? "\r" : "", "#".repeat(filled),
+                " ".repeat(width - filled), done, total, seconds > 0 ? done / seconds : 0.0, ON_TERMINAL ? "" : "\n");
         progress.flush();
     }
 
@@ -139,7 +145,9 @@ public final class FrameWriter implements AutoCloseable {
         checkFailures(true);
         if (progress != null) {
             printProgress(submitted);
-            progress.println();
+            if (ON_TERMINAL) {
+                progress.println();
+            }
             progress.flush();
         }
     }
