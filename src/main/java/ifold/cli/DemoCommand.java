@@ -27,6 +27,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import org.joml.AxisAngle4d;
 import org.joml.Quaterniond;
 import org.joml.Quaterniondc;
 import org.joml.Vector3d;
@@ -67,8 +68,8 @@ final class DemoCommand implements Runnable {
                 description = "the corner the strip starts at; its passes run parallel to the opposite edge (default ${DEFAULT-VALUE})")
         String start;
 
-        @Option(names = "--end", paramLabel = "A|B|C", defaultValue = "A",
-                description = "the corner the strip ends at (default ${DEFAULT-VALUE})")
+        @Option(names = "--end", paramLabel = "A|B|C",
+                description = "the corner the strip ends at (default: the corner after the start: A after C, B after A, C after B)")
         String end;
 
         @Option(names = "--enter-from", paramLabel = "A|B|C",
@@ -95,7 +96,7 @@ final class DemoCommand implements Runnable {
             }
             Triangle shape = parseTriangle(triangle);
             int startCorner = corner(start, "--start");
-            int endCorner = corner(end, "--end");
+            int endCorner = end == null ? (startCorner + 1) % 3 : corner(end, "--end");
             if (endCorner == startCorner) {
                 throw new UserError("option --end: the strip must end at another corner than its start " + start.toUpperCase(Locale.ROOT));
             }
@@ -106,6 +107,10 @@ final class DemoCommand implements Runnable {
             double w = width == null ? shape.height(startCorner) / 5 : width;
             if (!(w > 0) || !Double.isFinite(w)) {
                 throw new UserError("option --width: must be a positive number, got " + width);
+            }
+            if (w > shape.height(startCorner)) {
+                throw new UserError(String.format(Locale.ROOT, "option --width: %s is wider than the altitude %.4g from the start corner: "
+                        + "one pass of that width already covers the triangle", width, shape.height(startCorner)));
             }
             if (w < shape.height(startCorner) / 400) {
                 throw new UserError(String.format(Locale.ROOT, "option --width: %s is under 1/400 of the altitude %.4g: "
@@ -149,9 +154,11 @@ final class DemoCommand implements Runnable {
                 motions.add(step.motion());
                 names.add(step.description());
             }
-            // From above, tilted back; then turned about the screen's vertical to look from below.
-            Quaterniondc above = new Quaterniond().rotateX(-0.55);
-            Quaterniondc below = new Quaterniond().rotateX(0.55).rotateY(Math.PI);
+            // From above the triangle's front, tilted back; then turned about the screen's vertical
+            // to look from below. (The front faces -z for corners given clockwise.)
+            Quaterniondc front = frontToViewer(shape.normal());
+            Quaterniondc above = new Quaterniond().rotateX(-0.55).mul(front);
+            Quaterniondc below = new Quaterniond().rotateX(0.55).rotateY(Math.PI).mul(front);
             frameTriangle(scene, shape, above);
             Animation animation = new Sequence(List.of(PaperView.playing(paper, result.start(), motions, names),
                     new CameraMove(scene.camera(), above, below, "the underside: the excess tucked under, layer on layer")));
@@ -162,15 +169,17 @@ final class DemoCommand implements Runnable {
                     FrameExport.panel(scene, animation, stages, 2, 800, 500, 4, figure);
                     out.println("wrote " + figure);
                 } catch (RenderUnavailableException e) {
-                    outputs.frameOptions.removeFolderIfUnused();
+                    outputs.discardWritten();
                     throw new UserError(e.getMessage());
                 } catch (IOException e) {
+                    outputs.discardWritten();
                     throw new UserError("option --figure: cannot write " + figure + ": " + e.getMessage());
                 }
                 animation.apply(0);
             }
-            // About two seconds a fold: under a minute for the default triangle.
-            outputs.show(scene, animation, "zig-zag: " + report.folds() + " folds", 2.0 * animation.stepCount(), true, spec);
+            // About two seconds a step: under a minute for the default triangle, and two minutes at most.
+            outputs.show(scene, animation, "zig-zag: " + report.folds() + " folds", Math.min(120, 2.0 * animation.stepCount()),
+                    true, spec);
             return 0;
         }
     }
@@ -193,16 +202,16 @@ final class DemoCommand implements Runnable {
         @Option(names = "--width", paramLabel = "W", defaultValue = "1", description = "the strip's width (default ${DEFAULT-VALUE})")
         double width;
 
-        @Option(names = "--thickness", paramLabel = "T", defaultValue = "0.02", description = "the paper's thickness (default ${DEFAULT-VALUE})")
-        double thickness;
+        @Option(names = "--thickness", paramLabel = "T", description = "the paper's thickness (default: the width / 50)")
+        Double thickness;
 
         @Mixin
         PaperOutputs outputs = new PaperOutputs();
 
         @Override
         public Integer call() {
-            if (!(angle > 0 && angle < 180)) {
-                throw new UserError("option --angle: must be more than 0 and less than 180 degrees, got " + angle);
+            if (!(angle >= 0.5 && angle < 180)) {
+                throw new UserError("option --angle: must be at least 0.5 and less than 180 degrees, got " + angle);
             }
             if (angle > 175) {
                 throw new UserError("option --angle: above 175 degrees the turn fold runs more than 20 widths along the strip; "
@@ -214,14 +223,15 @@ final class DemoCommand implements Runnable {
             if (!(width > 0) || !Double.isFinite(width)) {
                 throw new UserError("option --width: must be a positive number, got " + width);
             }
-            if (!(thickness >= 0) || !Double.isFinite(thickness) || thickness > width / 4) {
+            double t = thickness == null ? width / 50 : thickness;
+            if (!(t >= 0) || !Double.isFinite(t) || t > width / 4) {
                 throw new UserError("option --thickness: must be zero or more and at most a quarter of the width, got " + thickness);
             }
             PrintWriter out = spec.commandLine().getOut();
             outputs.check("turn", spec.commandLine().getErr(), true);
             TurnGadget.Result gadget;
             try {
-                gadget = TurnGadget.turn(angle, overhang * width, width, thickness, 4 * width, 6 * width);
+                gadget = TurnGadget.turn(angle, overhang * width, width, t, 4 * width, 6 * width);
             } catch (FoldException e) {
                 outputs.frameOptions.removeFolderIfUnused();
                 throw new UserError("cannot make this turn: " + e.getMessage());
@@ -234,7 +244,7 @@ final class DemoCommand implements Runnable {
             figures.put("topSideUp", gadget.endFacesUp());
             figures.put("stripLength", gadget.length());
             figures.put("stripWidth", width);
-            figures.put("thickness", thickness);
+            figures.put("thickness", t);
             figures.put("folds", gadget.folds().size());
             figures.put("maxLayers", PaperAnalysis.maxLayers(folded));
             figures.put("isometryError", PaperAnalysis.isometryError(folded));
@@ -276,11 +286,35 @@ final class DemoCommand implements Runnable {
                 throw new UserError("option --triangle: '" + parts[i].strip() + "' is not a finite number");
             }
         }
+        Triangle triangle;
         try {
-            return Triangle.planar(values[0], values[1], values[2], values[3], values[4], values[5]);
+            triangle = Triangle.planar(values[0], values[1], values[2], values[3], values[4], values[5]);
         } catch (IllegalArgumentException e) {
             throw new UserError("option --triangle: " + e.getMessage());
         }
+        double size = Math.max(triangle.opposite(0), Math.max(triangle.opposite(1), triangle.opposite(2)));
+        double far = 0;
+        for (double value : values) {
+            far = Math.max(far, Math.abs(value));
+        }
+        if (far > 1e6 * size) {
+            // Thickness offsets of a millionth of the size would drown in the coordinates' rounding.
+            throw new UserError("option --triangle: the triangle is too small for its distance from the origin: move it nearer");
+        }
+        return triangle;
+    }
+
+    /** The rotation that turns {@code normal} towards the viewer (+z in the camera's frame). */
+    private static Quaterniondc frontToViewer(Vector3d normal) {
+        double cos = normal.z;
+        if (cos > 1 - 1e-12) {
+            return new Quaterniond();
+        }
+        if (cos < -1 + 1e-12) {
+            return new Quaterniond(new AxisAngle4d(Math.PI, 1, 0, 0));
+        }
+        Vector3d axis = new Vector3d(normal).cross(0, 0, 1).normalize();
+        return new Quaterniond(new AxisAngle4d(Math.acos(cos), axis));
     }
 
     private static int corner(String name, String option) {

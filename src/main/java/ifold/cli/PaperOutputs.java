@@ -12,7 +12,10 @@ import ifold.scene.Scene;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import picocli.CommandLine.Mixin;
@@ -55,21 +58,42 @@ final class PaperOutputs {
         frameOptions.check();
     }
 
+    /** The files this run wrote, to take back if a later output fails. */
+    private final List<Path> written = new ArrayList<>();
+
     void write(Paper folded, Map<String, Object> figures, PrintWriter out) {
         try {
             if (exportObj != null) {
                 PaperExport.writeObj(folded, exportObj);
+                written.add(exportObj);
                 out.println("wrote " + exportObj);
             }
             if (report != null) {
                 String json = Json.write(figures);
                 AtomicFile.write(report, stream -> stream.write(json.getBytes(StandardCharsets.UTF_8)), true);
+                written.add(report);
                 out.println("wrote " + report);
             }
         } catch (IOException e) {
-            frameOptions.removeFolderIfUnused();
+            discardWritten();
             throw new UserError("cannot write: " + e.getMessage());
         }
+    }
+
+    /**
+     * After a failure: removes what this run wrote and the frames folder it made (if still
+     * empty), so that a failed run leaves nothing behind but frames already rendered.
+     */
+    void discardWritten() {
+        for (Path file : written) {
+            try {
+                Files.deleteIfExists(file);
+            } catch (IOException e) {
+                // Nothing more to do: the error that brought us here is the one to report.
+            }
+        }
+        written.clear();
+        frameOptions.removeFolderIfUnused();
     }
 
     /**
@@ -90,17 +114,21 @@ final class PaperOutputs {
                         frameOptions.width, frameOptions.height, frameOptions.frames.toAbsolutePath(), result.seconds(),
                         result.framesPerSecond());
             } catch (RenderUnavailableException e) {
-                frameOptions.removeFolderIfUnused();
+                discardWritten();
                 throw new UserError(e.getMessage());
             } catch (IOException e) {
+                discardWritten();
                 throw new UserError("option --frames: cannot write frames to " + frameOptions.frames + ": " + e.getMessage());
             }
         } else if (!noView) {
             Player player = new Player(animation, seconds);
-            player.togglePlaying(); // a demo plays at once; space pauses it
+            if (autoplay) {
+                player.togglePlaying(); // space pauses it
+            }
             try {
                 new ViewerWindow(scene, player, title, err, 4).show("iFold - " + title, 1280, 720, 0);
             } catch (RenderUnavailableException e) {
+                discardWritten();
                 throw new UserError(e.getMessage() + "; or render frames with --frames DIR, or pass --no-view");
             }
         }

@@ -538,7 +538,9 @@ public final class Folder {
             double t = paper.thickness;
             boolean valley = kind == Fold.Kind.VALLEY;
             double axisHeight = valley ? (fixedRange[1] + movingRange[1] + t) / 2 : (fixedRange[0] + movingRange[0] - t) / 2;
-            axisHeight = Landing.axisHeight(this.paperView(moving), linePoint, side, n, valley, t, axisHeight);
+            if (angleDegrees == 180) { // only a flat fold lands: a partial one turns about the line's layers
+                axisHeight = Landing.axisHeight(this.paperView(moving), linePoint, side, n, valley, t, axisHeight);
+            }
             Vector3d axisPoint = new Vector3d(linePoint).fma(axisHeight - linePoint.dot(n), n);
             // Valley: the moving side turns up towards n, so the axis is side × n; mountain: n × side.
             Vector3d axis = valley ? new Vector3d(side).cross(n) : new Vector3d(n).cross(side);

@@ -1,5 +1,6 @@
 package ifold.fold;
 
+import ifold.geom.Tolerance;
 import org.joml.Vector3d;
 
 /**
@@ -76,7 +77,7 @@ public final class PaperAnalysis {
         Basis basis = new Basis(paper.normal);
         double pu = basis.u(x, y, z);
         double pv = basis.v(x, y, z);
-        double tolerance = 1e-9 * Math.max(1, paper.size());
+        double tolerance = Tolerance.ON_PLANE * paper.size(); // relative to the sheet, whatever its scale
         int layers = 0;
         for (int f = 0; f < paper.faceCount(); f++) {
             if (!paper.isCap(f) && contains(paper, basis, paper.faces.get(f), pu, pv, tolerance, false)) {
@@ -108,7 +109,7 @@ public final class PaperAnalysis {
             minV = Math.min(minV, w);
             maxV = Math.max(maxV, w);
         }
-        double tolerance = 1e-9 * Math.max(1, paper.size());
+        double tolerance = Tolerance.ON_PLANE * paper.size(); // relative to the sheet, whatever its scale
         for (int f = 0; f < paper.faceCount(); f++) {
             if (paper.isCap(f)) {
                 continue;

@@ -1,5 +1,6 @@
 package ifold.fold;
 
+import ifold.geom.Tolerance;
 import ifold.geom.ConvexOverlap;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -57,7 +58,7 @@ public final class Press {
         int vertexCount = paper.vertexCount();
         Vector3dc n = paper.normal;
         double t = paper.thickness;
-        double tolerance = 1e-9 * Math.max(1, paper.size());
+        double tolerance = Tolerance.ON_PLANE * paper.size(); // relative to the sheet, whatever its scale
         // Pieces: paper faces joined through shared vertices (union-find over vertices).
         int[] parent = new int[vertexCount];
         Arrays.setAll(parent, i -> i);
@@ -103,11 +104,13 @@ public final class Press {
         List<List<Integer>> below = overlapsBelow(paper, pieceOfVertex, pieces, height, tolerance);
         // The two sides of a fold stay stacked, even where they barely overlap: a cap joins them.
         for (java.util.Set<Integer> joined : capJoins(paper, onPaper).values()) {
-            for (int a : joined) {
-                for (int b : joined) {
-                    int pa = pieceOfVertex[a];
-                    int pb = pieceOfVertex[b];
-                    if (pa != pb && height[pa] < height[pb] - tolerance && !below.get(pb).contains(pa)) {
+            java.util.Set<Integer> joinedPieces = new java.util.TreeSet<>();
+            for (int v : joined) {
+                joinedPieces.add(pieceOfVertex[v]);
+            }
+            for (int pa : joinedPieces) {
+                for (int pb : joinedPieces) {
+                    if (height[pa] < height[pb] - tolerance && !below.get(pb).contains(pa)) {
                         below.get(pb).add(pa);
                     }
                 }

@@ -143,10 +143,6 @@ public final class ZigZag {
             return paper;
         }
 
-        public List<PaperMotion> motions() {
-            return steps.stream().map(Step::motion).toList();
-        }
-
         public int count(Phase phase) {
             return (int) steps.stream().filter(s -> s.phase() == phase).count();
         }
@@ -282,7 +278,7 @@ public final class ZigZag {
                     tucks + 1, Triangle.name(from), Triangle.name(to)), prepared));
             paper = prepared.at(1);
             Press.Pressed pressed = Press.press(paper, base);
-            if (pressed.moved() > 0 && !Boolean.getBoolean("nopress")) {
+            if (pressed.moved() > 0) {
                 steps.add(new Step(Phase.PRESS, String.format(Locale.ROOT, "tuck %d: layers pressed flat", tucks + 1), pressed));
                 paper = pressed.after();
             }

@@ -55,6 +55,9 @@ class DemoCommandTest {
         CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--start", "D", "--no-view", "--report", out), "--start", "A, B or C");
         CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--start", "B", "--end", "b", "--no-view", "--report", out), "--end");
         CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--width", "-1", "--no-view", "--report", out), "--width");
+        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--width", "9", "--no-view", "--report", out), "--width", "altitude");
+        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--triangle", "1e9,0,1000000001,0,1e9,1", "--no-view", "--report", out),
+                "--triangle", "too small");
         CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--width", "1", "--thickness", "0.5", "--no-view", "--report", out), "--thickness");
         CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--no-view", "--export-obj", dir.resolve("x.stl").toString()), "--export-obj");
         CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--no-view", "--report", dir.resolve("no/r.json").toString()), "--report", "does not exist");
@@ -64,6 +67,14 @@ class DemoCommandTest {
         CliTest.assertOneLineError(CliTest.run("demo", "turn", "--angle", "90", "--overhang", "-1", "--no-view"), "--overhang");
         assertFalse(Files.exists(report), "nothing written by a refused run");
         assertEquals(2, CliTest.run("demo").code(), "a demo must be named");
+    }
+
+    @Test
+    void everyStartCornerWorksWithTheDefaultEnd() throws Exception {
+        for (String start : new String[] {"A", "B", "C"}) {
+            CliTest.Run run = CliTest.run("demo", "zigzag", "--start", start, "--no-view");
+            assertEquals(0, run.code(), start + ": " + run.err());
+        }
     }
 
     @Test

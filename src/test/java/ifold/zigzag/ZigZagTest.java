@@ -95,6 +95,19 @@ class ZigZagTest {
     }
 
     @Test
+    void theScaleOfTheTriangleDoesNotMatter() throws Exception {
+        for (double scale : new double[] {1e-6, 1e-3, 1e4}) {
+            Triangle scaled = Triangle.planar(0, 0, 10 * scale, 0, 3.5 * scale, 8 * scale);
+            ZigZag.Result result = ZigZag.wrap(scaled, new ZigZag.Options(1.6 * scale, 0.02 * scale, 2, 0, -1));
+            assertWrapped(result);
+            ZigZagReport report = ZigZagReport.of(result);
+            assertEquals(6, report.maxLayers(), "scale " + scale);
+            assertEquals(1.0, report.coverage(), 0, "scale " + scale);
+            assertEquals(4, report.tucks(), "scale " + scale);
+        }
+    }
+
+    @Test
     void thinPaperIsWrappedToo() throws Exception {
         ZigZag.Result result = ZigZag.wrap(ACUTE, new ZigZag.Options(0.7, 0, 0, 1, -1));
         assertWrapped(result);
