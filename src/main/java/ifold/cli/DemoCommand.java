@@ -137,10 +137,10 @@ final class DemoCommand implements Runnable {
             figures.putAll(report.figures());
             figures.put("thickness", t);
             outputs.write(result.folded(), figures, out);
-            out.printf(Locale.ROOT, "zigzag: strip %.4g x %.4g (L/w %.1f), %d passes%s, %d turn folds, %d tucks, %d layers at most, "
+            out.printf(Locale.ROOT, "zigzag: strip %.4g x %.4g (L/w %.1f), %d passes%s, %d turn folds, %d tucks, %d layers at most (a stack of %d), "
                     + "paper efficiency %.3f, coverage %.3f, paper outside %.2g, isometry error %.1e%n",
                     report.length(), report.width(), report.aspect(), report.passes(), report.overlapped() ? " (last overlapped)" : "",
-                    report.zigzagFolds(), report.tucks(), report.maxLayers(), report.efficiency(), report.coverage(),
+                    report.zigzagFolds(), report.tucks(), report.maxLayers(), report.stackLayers(), report.efficiency(), report.coverage(),
                     report.paperOutside(), report.isometryError());
             out.flush();
 

@@ -23,12 +23,14 @@ import org.joml.Vector3d;
  * @param coverage the fraction of sample points of the triangle under at least one layer
  * @param samples how many points of the triangle were sampled
  * @param paperOutside the paper area whose shadow lies outside the triangle
+ * @param stackLayers how many levels the stack of paper has, from its top to its bottom: at least
+ *     {@code maxLayers}, more where rigid pieces rest on pieces they do not themselves overlap
  * @param farthestFromTriangle the farthest any paper vertex lies from the triangle in space
  * @param isometryError the largest relative change of an edge's length against the sheet
  * @param triangleArea the triangle's area
  */
 public record ZigZagReport(double length, double width, int folds, int zigzagFolds, int tucks, int passes, boolean overlapped,
-        int maxLayers, double efficiency, double coverage, int samples, double paperOutside, double farthestFromTriangle,
+        int maxLayers, int stackLayers, double efficiency, double coverage, int samples, double paperOutside, double farthestFromTriangle,
         double isometryError, double triangleArea) {
 
     /** Samples per edge of the triangular grid of coverage points. */
@@ -52,8 +54,8 @@ public record ZigZagReport(double length, double width, int folds, int zigzagFol
         int folds = result.count(ZigZag.Phase.ZIGZAG) + result.count(ZigZag.Phase.OVERLAP) + result.count(ZigZag.Phase.TUCK);
         return new ZigZagReport(result.length(), width, folds,
                 result.count(ZigZag.Phase.ZIGZAG) + result.count(ZigZag.Phase.OVERLAP), result.count(ZigZag.Phase.TUCK),
-                result.passes(), result.overlapped(), deepest, area / (result.length() * width), (double) covered / samples,
-                samples, Outside.area(paper, toPlan, plan), Outside.farthestFromTriangle(paper, toPlan, plan),
+                result.passes(), result.overlapped(), deepest, stackLayers(paper), area / (result.length() * width),
+                (double) covered / samples, samples, Outside.area(paper, toPlan, plan), Outside.farthestFromTriangle(paper, toPlan, plan),
                 PaperAnalysis.isometryError(paper), area);
     }
 
@@ -74,6 +76,23 @@ public record ZigZagReport(double length, double width, int folds, int zigzagFol
         return points;
     }
 
+    /**
+     * The levels of the stack: the distinct heights of the paper faces, in whole thicknesses
+     * (the zig-zag's layers lie a whole number of thicknesses from the triangle).
+     */
+    private static int stackLayers(Paper paper) {
+        if (paper.thickness() == 0) {
+            return PaperAnalysis.maxLayers(paper);
+        }
+        java.util.TreeSet<Long> levels = new java.util.TreeSet<>();
+        for (int f = 0; f < paper.faceCount(); f++) {
+            if (!paper.isCap(f)) {
+                levels.add(Math.round(paper.height(paper.face(f)[0]) / paper.thickness()));
+            }
+        }
+        return levels.size();
+    }
+
     /** The aspect ratio L / w. */
     public double aspect() {
         return length / width;
@@ -91,6 +110,7 @@ public record ZigZagReport(double length, double width, int folds, int zigzagFol
         figures.put("passes", passes);
         figures.put("lastPassOverlapped", overlapped);
         figures.put("maxLayers", maxLayers);
+        figures.put("stackLayers", stackLayers);
         figures.put("paperEfficiency", efficiency);
         figures.put("coverage", coverage);
         figures.put("coverageSamples", samples);
