@@ -5,6 +5,7 @@ import ifold.geom.ConvexOverlap;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Set;
 import org.joml.Vector3d;
 import org.joml.Vector3dc;
 
@@ -101,7 +102,7 @@ public final class Press {
                 height[pieceOfVertex[v]] = paper.height(v);
             }
         }
-        List<List<Integer>> below = overlapsBelow(paper, pieceOfVertex, pieces, height, tolerance);
+        List<Set<Integer>> below = overlapsBelow(paper, pieceOfVertex, pieces, height, tolerance);
         // The two sides of a fold stay stacked, even where they barely overlap: a cap joins them.
         for (java.util.Set<Integer> joined : capJoins(paper, onPaper).values()) {
             java.util.Set<Integer> joinedPieces = new java.util.TreeSet<>();
@@ -110,7 +111,7 @@ public final class Press {
             }
             for (int pa : joinedPieces) {
                 for (int pb : joinedPieces) {
-                    if (height[pa] < height[pb] - tolerance && !below.get(pb).contains(pa)) {
+                    if (height[pa] < height[pb] - tolerance) {
                         below.get(pb).add(pa);
                     }
                 }
@@ -172,7 +173,7 @@ public final class Press {
     }
 
     /** For each piece, the pieces lower than it whose paper overlaps its paper (seen along the normal). */
-    private static List<List<Integer>> overlapsBelow(Paper paper, int[] pieceOfVertex, int pieces, double[] height,
+    private static List<Set<Integer>> overlapsBelow(Paper paper, int[] pieceOfVertex, int pieces, double[] height,
             double tolerance) {
         Vector3dc n = paper.normal;
         Vector3d e1 = new Vector3d(Math.abs(n.x()) < 0.9 ? new Vector3d(1, 0, 0) : new Vector3d(0, 1, 0)).cross(n).normalize();
@@ -207,7 +208,7 @@ public final class Press {
         Arrays.setAll(order, i -> i);
         Arrays.sort(order, (a, b) -> Double.compare(boxes.get(a)[0], boxes.get(b)[0]));
         double margin = tolerance;
-        List<java.util.Set<Integer>> below = new ArrayList<>();
+        List<Set<Integer>> below = new ArrayList<>();
         for (int p = 0; p < pieces; p++) {
             below.add(new java.util.LinkedHashSet<>());
         }
@@ -234,11 +235,7 @@ public final class Press {
                 }
             }
         }
-        List<List<Integer>> result = new ArrayList<>();
-        for (java.util.Set<Integer> set : below) {
-            result.add(new ArrayList<>(set));
-        }
-        return result;
+        return below;
     }
 
     /**

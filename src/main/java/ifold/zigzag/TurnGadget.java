@@ -28,21 +28,18 @@ public final class TurnGadget {
      *
      * @param start the flat strip
      * @param folds the fold across, then the turn fold
+     * @param folded the paper with both folds made
      * @param angle the turn asked, in degrees
      * @param overhang X
      * @param length the strip's length
      */
-    public record Result(Paper start, List<Folder.Prepared> folds, double angle, double overhang, double length) {
-        public Paper folded() {
-            return folds.get(folds.size() - 1).at(1);
-        }
-
+    public record Result(Paper start, List<Folder.Prepared> folds, Paper folded, double angle, double overhang, double length) {
         /**
          * The direction, in degrees from +x, in which the strip's end now runs, measured on the
          * folded paper: along the edge v = 0 of the face holding the strip's end.
          */
         public double measuredAngle() {
-            Paper paper = folded();
+            Paper paper = folded;
             int[] face = paper.face(endFace(paper));
             int end = -1;
             int before = -1;
@@ -58,7 +55,7 @@ public final class TurnGadget {
 
         /** Whether the strip's end lies top side up, as it came in. */
         public boolean endFacesUp() {
-            Paper paper = folded();
+            Paper paper = folded;
             int[] face = paper.face(endFace(paper));
             Vector3d normal = new Vector3d();
             for (int i = 0; i < face.length; i++) {
@@ -114,6 +111,6 @@ public final class TurnGadget {
         // Right of the crease from (p + X, 0) to (p + X + slant, w) is the side of larger u.
         Folder.Prepared turn = Folder.prepare(across.at(1),
                 new FlapFold(Fold.Kind.VALLEY, 180, p + overhang, 0, p + overhang + slant, width, Fold.Side.RIGHT));
-        return new Result(start, List.of(across, turn), angleDegrees, overhang, length);
+        return new Result(start, List.of(across, turn), turn.at(1), angleDegrees, overhang, length);
     }
 }

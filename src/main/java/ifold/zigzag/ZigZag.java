@@ -134,13 +134,13 @@ public final class ZigZag {
 
         /** The paper after the folds of the zig-zag (and overlap), before any tuck. */
         public Paper laid() {
-            Paper paper = start;
-            for (Step step : steps) {
-                if (step.phase() == Phase.ZIGZAG || step.phase() == Phase.OVERLAP) {
-                    paper = step.motion().at(1);
+            for (int i = steps.size() - 1; i >= 0; i--) {
+                Phase phase = steps.get(i).phase();
+                if (phase == Phase.ZIGZAG || phase == Phase.OVERLAP) {
+                    return steps.get(i).motion().at(1);
                 }
             }
-            return paper;
+            return start;
         }
 
         public int count(Phase phase) {

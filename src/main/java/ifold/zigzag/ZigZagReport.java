@@ -51,9 +51,9 @@ public record ZigZagReport(double length, double width, int folds, int zigzagFol
         }
         double area = triangle.area();
         double width = result.options().width();
-        int folds = result.count(ZigZag.Phase.ZIGZAG) + result.count(ZigZag.Phase.OVERLAP) + result.count(ZigZag.Phase.TUCK);
-        return new ZigZagReport(result.length(), width, folds,
-                result.count(ZigZag.Phase.ZIGZAG) + result.count(ZigZag.Phase.OVERLAP), result.count(ZigZag.Phase.TUCK),
+        int turns = result.count(ZigZag.Phase.ZIGZAG) + result.count(ZigZag.Phase.OVERLAP);
+        int tucks = result.count(ZigZag.Phase.TUCK);
+        return new ZigZagReport(result.length(), width, turns + tucks, turns, tucks,
                 result.passes(), result.overlapped(), deepest, stackLayers(paper), area / (result.length() * width),
                 (double) covered / samples, samples, Outside.area(paper, toPlan, plan), Outside.farthestFromTriangle(paper, toPlan, plan),
                 PaperAnalysis.isometryError(paper), area);
