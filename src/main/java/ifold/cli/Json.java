@@ -4,8 +4,10 @@ import java.util.Locale;
 import java.util.Map;
 
 /**
- * Just enough JSON for the reports: objects of numbers, strings, booleans and nested objects,
- * written in insertion order. Not worth a dependency.
+ * Just enough JSON for the reports: objects and lists of numbers, strings, booleans and nested
+ * objects, written in insertion order. Numbers are written as {@link Double#toString} writes
+ * them, the shortest decimal that reads back as the same double (JSON takes its exponent):
+ * a number read from a report equals the number computed.
  */
 final class Json {
     private Json() {
@@ -37,6 +39,19 @@ final class Json {
                 out.append(++i < map.size() ? ",\n" : "\n");
             }
             out.append(indent).append('}');
+        } else if (value instanceof java.util.List<?> list) {
+            if (list.isEmpty()) {
+                out.append("[]");
+                return;
+            }
+            out.append("[\n");
+            String inner = indent + "  ";
+            for (int i = 0; i < list.size(); i++) {
+                out.append(inner);
+                write(list.get(i), out, inner);
+                out.append(i + 1 < list.size() ? ",\n" : "\n");
+            }
+            out.append(indent).append(']');
         } else if (value instanceof Double || value instanceof Float) {
             double d = ((Number) value).doubleValue();
             if (!Double.isFinite(d)) {
@@ -44,7 +59,7 @@ final class Json {
             } else if (d == Math.rint(d) && Math.abs(d) < 1e15) {
                 out.append((long) d);
             } else {
-                out.append(String.format(Locale.ROOT, "%.6g", d).replaceFirst("\\.?0+(e|$)", "$1"));
+                out.append(Double.toString(d));
             }
         } else if (value instanceof Number || value instanceof Boolean) {
             out.append(value);

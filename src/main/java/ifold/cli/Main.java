@@ -7,7 +7,7 @@ import picocli.CommandLine.Command;
 /** The {@code ifold} command: the entry point and the only place that calls System.exit. */
 @Command(name = "ifold", mixinStandardHelpOptions = true, version = "ifold 0.1.0",
         description = "Wraps polyhedra in a strip of paper, the zig-zag way.",
-        subcommands = {ViewCommand.class, FoldCommand.class, DemoCommand.class, RefineCommand.class, InfoCommand.class, GenerateCommand.class, CommandLine.HelpCommand.class})
+        subcommands = {WrapCommand.class, ViewCommand.class, FoldCommand.class, DemoCommand.class, RefineCommand.class, InfoCommand.class, GenerateCommand.class, CommandLine.HelpCommand.class})
 public final class Main implements Runnable {
 
     @CommandLine.Spec

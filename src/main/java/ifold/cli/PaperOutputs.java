@@ -61,6 +61,11 @@ final class PaperOutputs {
     /** The files this run wrote, to take back if a later output fails. */
     private final List<Path> written = new ArrayList<>();
 
+    /** Notes a file this run wrote by itself, so that a later failure takes it back too. */
+    void wrote(Path file) {
+        written.add(file);
+    }
+
     void write(Paper folded, Map<String, Object> figures, PrintWriter out) {
         try {
             if (exportObj != null) {

@@ -45,6 +45,9 @@ final class Shaders {
                 }
                 vec4 base;
                 if (gl_PrimitiveID >= revealed) {
+                    if (hiddenColor.a == 0.0) {
+                        discard; // a clear hidden colour: triangles not yet revealed are not there
+                    }
                     base = hiddenColor;
                 } else if (gl_FrontFacing) {
                     base = useFaceColors ? texelFetch(triangleColors, gl_PrimitiveID) : frontColor;

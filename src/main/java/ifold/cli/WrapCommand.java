@@ -1,0 +1,232 @@
+package ifold.cli;
+
+import ifold.io.AtomicFile;
+import ifold.mesh.HalfedgeMesh;
+import ifold.mesh.MeshBuilder;
+import ifold.refine.HamiltonianRefinement;
+import ifold.scene.Animation;
+import ifold.scene.Geometry;
+import ifold.scene.Material;
+import ifold.scene.Scene;
+import ifold.scene.SceneMesh;
+import ifold.scene.WrapView;
+import ifold.wrap.Wrap;
+import ifold.wrap.WrapAnalysis;
+import ifold.wrap.WrapExport;
+import ifold.wrap.WrapGeometry;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.concurrent.Callable;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/** {@code ifold wrap MODEL}: one strip of paper per component, folded over every triangle of the Hamiltonian path. */
+@Command(name = "wrap", mixinStandardHelpOptions = true,
+        description = {"Wraps a model in one strip of paper per component, the zig-zag way along the Hamiltonian path of its "
+            + "refinement (Demaine, Demaine and Mitchell): passes across each triangle, a turn gadget and a fold over the "
+            + "shared edge to the next, the excess of every triangle tucked under it. An open surface is covered on the side "
+            + "its faces face."})
+final class WrapCommand implements Callable<Integer> {
+
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "MODEL", description = "an .off or .obj model")
+    Path model;
+
+    @Option(names = "--width", paramLabel = "W",
+            description = "the strip's width (default: the widest every triangle of the path takes, its smallest altitude from the corner the strip enters by)")
+    Double width;
+
+    @Option(names = "--thickness", paramLabel = "T", description = "the paper's thickness (default: the width / 80)")
+    Double thickness;
+
+    @Option(names = "--strict", description = "refuse defective input instead of repairing it")
+    boolean strict;
+
+    @Mixin
+    PaperOutputs outputs = new PaperOutputs();
+
+    @Override
+    public Integer call() {
+        if (width != null && (!(width > 0) || !Double.isFinite(width))) {
+            throw new CommandLine.ParameterException(spec.commandLine(), "option --width: must be a positive number, got " + width);
+        }
+        if (thickness != null && (!(thickness >= 0) || !Double.isFinite(thickness))) {
+            throw new CommandLine.ParameterException(spec.commandLine(), "option --thickness: must be zero or more, got " + thickness);
+        }
+        if (thickness != null && width != null && thickness > width / 4) {
+            throw new CommandLine.ParameterException(spec.commandLine(), "option --thickness: at most a quarter of the width, got " + thickness);
+        }
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        outputs.check("wrap", err, true);
+        Path exportObj = outputs.exportObj;
+        Path report = outputs.report;
+        long started = System.nanoTime();
+        LoadedModel loaded;
+        try {
+            loaded = LoadedModel.load(model, new MeshBuilder.Options(strict, true));
+        } catch (UserError e) {
+            outputs.discardWritten();
+            throw e;
+        }
+        loaded.reportRepairs(model, err);
+        HalfedgeMesh mesh = loaded.built().mesh();
+        if (mesh.faceCount() == 0) {
+            throw new UserError(model + ": no faces left to wrap");
+        }
+        long loadedAt = System.nanoTime();
+        HamiltonianRefinement.Result refinement = HamiltonianRefinement.refine(mesh);
+        long refinedAt = System.nanoTime();
+        Wrap.Result result;
+        try {
+            result = Wrap.wrap(refinement, new Wrap.Options(width == null ? Double.NaN : width,
+                    thickness == null ? Double.NaN : thickness));
+        } catch (Wrap.WrapException e) {
+            outputs.discardWritten();
+            throw new UserError(model + ": cannot wrap: " + e.getMessage());
+        }
+        if (thickness == null && width == null) {
+            // Nothing to check: the defaults fit by construction.
+        } else if (thickness != null && thickness > result.width() / 4) {
+            throw new CommandLine.ParameterException(spec.commandLine(), "option --thickness: at most a quarter of the width "
+                    + result.width() + ", got " + thickness);
+        }
+        long wrappedAt = System.nanoTime();
+        List<WrapGeometry> geometries = new ArrayList<>();
+        for (Wrap.Strip strip : result.strips()) {
+            geometries.add(WrapGeometry.of(strip.sheet(), result.frames()));
+        }
+        WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
+        long analysedAt = System.nanoTime();
+
+        Map<String, Object> figures = figures(loaded, mesh, refinement, result, analysis);
+        List<Path> written = new ArrayList<>();
+        try {
+            if (exportObj != null) {
+                WrapExport.writeObj(exportObj, model.toString(), result, geometries);
+                written.add(exportObj);
+                outputs.wrote(exportObj);
+            }
+            long writtenAt = System.nanoTime();
+            Map<String, Object> seconds = new LinkedHashMap<>();
+            seconds.put("load", (loadedAt - started) * 1e-9);
+            seconds.put("refine", (refinedAt - loadedAt) * 1e-9);
+            seconds.put("wrap", (wrappedAt - refinedAt) * 1e-9);
+            seconds.put("analyse", (analysedAt - wrappedAt) * 1e-9);
+            seconds.put("export", (writtenAt - analysedAt) * 1e-9);
+            figures.put("seconds", seconds);
+            if (report != null) {
+                String json = Json.write(figures);
+                AtomicFile.write(report, stream -> stream.write(json.getBytes(StandardCharsets.UTF_8)), true);
+                written.add(report);
+                outputs.wrote(report);
+            }
+        } catch (IOException e) {
+            outputs.discardWritten();
+            throw new UserError("cannot write: " + e.getMessage());
+        }
+        for (Path file : written) {
+            out.println("wrote " + file);
+        }
+        out.println(summary(model, mesh, result, analysis));
+        out.flush();
+        if (outputs.frameOptions.frames != null || !outputs.noView) {
+            show(mesh, result, geometries, written);
+        }
+        return 0;
+    }
+
+    /** The model, solid, and the strips laid over it along the path; then a turn around it. */
+    private void show(HalfedgeMesh mesh, Wrap.Result result, List<WrapGeometry> geometries, List<Path> written) {
+        Scene scene = new Scene();
+        Geometry solid = new Geometry("model", SceneMesh.of(mesh), new Material(WrapView.MODEL, 0xFF4A5460, false, false));
+        scene.root().attach(solid);
+        WrapView.Strips strips = WrapView.strips(result, geometries);
+        Geometry paper = new Geometry("paper", strips.mesh(), WrapView.PAPER);
+        paper.setHiddenColor(0); // not yet laid: not there
+        scene.root().attach(paper);
+        scene.frameAll();
+        Animation animation = WrapView.animation(scene, paper, strips, result);
+        outputs.show(scene, animation, model.getFileName() + ": " + result.strips().size() + " strip(s)", 120, true, spec);
+    }
+
+    static String summary(Path model, HalfedgeMesh mesh, Wrap.Result result, WrapAnalysis analysis) {
+        double length = 0;
+        for (Wrap.Strip strip : result.strips()) {
+            length += strip.sheet().length();
+        }
+        return String.format(Locale.ROOT, "%s: %d triangles -> %d on the path, %d strip(s) %.4g x %.4g (L/w %.1f), "
+                + "%d turn folds, %d gadget folds, %d edge crossings, %d tucks, %d layers at most (a stack of %d), "
+                + "paper efficiency %.3f, coverage %.3f, isometry error %.1e", model, mesh.faceCount(), result.mesh().faceCount(),
+                result.strips().size(), length, result.width(), length / result.width(), result.count(Wrap.Kind.ZIGZAG_TURN),
+                result.count(Wrap.Kind.TURN_GADGET), result.count(Wrap.Kind.EDGE_CROSSING), result.count(Wrap.Kind.TUCK),
+                analysis.maxLayers(), analysis.stackLevels(), analysis.surfaceArea() / analysis.paperArea(), analysis.coverage(),
+                analysis.isometryError());
+    }
+
+    private Map<String, Object> figures(LoadedModel loaded, HalfedgeMesh mesh, HamiltonianRefinement.Result refinement,
+            Wrap.Result result, WrapAnalysis analysis) {
+        Map<String, Object> figures = new LinkedHashMap<>();
+        figures.put("model", model.toString());
+        figures.put("inputTriangles", mesh.faceCount());
+        figures.put("refinedTriangles", refinement.mesh().faceCount());
+        figures.put("components", refinement.componentCount());
+        Map<String, Object> repairs = new LinkedHashMap<>();
+        new TreeMap<>(loaded.repairs()).forEach((defect, count) -> repairs.put(defect.name().toLowerCase(Locale.ROOT), count));
+        figures.put("repairs", repairs);
+        figures.put("width", result.width());
+        figures.put("widestWidth", result.widest());
+        figures.put("thickness", result.thickness());
+        List<Object> strips = new ArrayList<>();
+        double totalLength = 0;
+        for (Wrap.Strip strip : result.strips()) {
+            Map<String, Object> one = new LinkedHashMap<>();
+            one.put("triangles", strip.triangles());
+            one.put("length", strip.sheet().length());
+            one.put("width", strip.sheet().width());
+            one.put("lengthOverWidth", strip.sheet().length() / strip.sheet().width());
+            one.put("faces", strip.sheet().faceCount());
+            strips.add(one);
+            totalLength += strip.sheet().length();
+        }
+        figures.put("strips", strips);
+        figures.put("length", totalLength);
+        Map<String, Object> folds = new LinkedHashMap<>();
+        folds.put("zigzagTurns", result.count(Wrap.Kind.ZIGZAG_TURN));
+        folds.put("turnGadgets", result.count(Wrap.Kind.TURN_GADGET));
+        folds.put("edgeCrossings", result.count(Wrap.Kind.EDGE_CROSSING));
+        folds.put("tucks", result.count(Wrap.Kind.TUCK));
+        figures.put("folds", folds);
+        figures.put("maxLayers", analysis.maxLayers());
+        figures.put("stackLayers", analysis.stackLevels());
+        figures.put("surfaceArea", analysis.surfaceArea());
+        figures.put("paperArea", analysis.paperArea());
+        figures.put("paperEfficiency", analysis.surfaceArea() / analysis.paperArea());
+        figures.put("coverage", analysis.coverage());
+        figures.put("paperOutside", analysis.outsidePaper());
+        figures.put("farthestFromSurface", analysis.farthest());
+        figures.put("isometryError", analysis.isometryError());
+        Map<String, Object> creases = new LinkedHashMap<>();
+        creases.put("insideFaces", analysis.creasesInside());
+        creases.put("insideFacesLength", analysis.creaseLengthInside());
+        creases.put("alongEdges", analysis.creasesOnEdges());
+        creases.put("alongEdgesLength", analysis.creaseLengthOnEdges());
+        figures.put("creases", creases);
+        return figures;
+    }
+}

@@ -1,0 +1,71 @@
+package ifold.sheet;
+
+/**
+ * The plane of a triangle that paper rests on, with a 2D frame in it: an origin, two unit axes
+ * and the outward unit normal ({@code ex × ey = n}, so counter-clockwise in the frame is
+ * counter-clockwise seen from outside). Paper on the triangle lies at a height along n.
+ *
+ * @param origin x, y, z of the frame's origin
+ * @param ex the frame's x axis
+ * @param ey the frame's y axis
+ * @param normal the outward normal
+ * @param corners the triangle's corners in the frame, x0 y0 x1 y1 x2 y2, counter-clockwise
+ */
+public record HostFrame(double[] origin, double[] ex, double[] ey, double[] normal, double[] corners) {
+
+    /**
+     * The frame of triangle (a, b, c), counter-clockwise seen from outside, with its origin at
+     * a and its x axis along a → b: corner a is (0, 0), b is (|ab|, 0), c lies above the x axis.
+     *
+     * @throws IllegalArgumentException if the triangle has no area
+     */
+    public static HostFrame onEdge(double[] a, double[] b, double[] c) {
+        double[] ex = unit(sub(b, a));
+        double[] n = unit(cross(sub(b, a), sub(c, a)));
+        if (!(Double.isFinite(ex[0]) && Double.isFinite(n[0]))) {
+            throw new IllegalArgumentException("a triangle with no area cannot hold paper");
+        }
+        double[] ey = cross(n, ex);
+        HostFrame frame = new HostFrame(a.clone(), ex, ey, n, new double[6]);
+        double[] corners = frame.corners;
+        corners[2] = frame.localX(b);
+        corners[3] = 0;
+        corners[4] = frame.localX(c);
+        corners[5] = frame.localY(c);
+        return frame;
+    }
+
+    /** Frame coordinate x of the 3D point p (its projection on the plane). */
+    public double localX(double[] p) {
+        return (p[0] - origin[0]) * ex[0] + (p[1] - origin[1]) * ex[1] + (p[2] - origin[2]) * ex[2];
+    }
+
+    public double localY(double[] p) {
+        return (p[0] - origin[0]) * ey[0] + (p[1] - origin[1]) * ey[1] + (p[2] - origin[2]) * ey[2];
+    }
+
+    /** Height of p above the plane, along the outward normal. */
+    public double height(double[] p) {
+        return (p[0] - origin[0]) * normal[0] + (p[1] - origin[1]) * normal[1] + (p[2] - origin[2]) * normal[2];
+    }
+
+    /** The 3D point at frame coordinates (x, y) and {@code height} along the normal, into {@code out} at {@code offset}. */
+    public void toSpace(double x, double y, double height, double[] out, int offset) {
+        for (int i = 0; i < 3; i++) {
+            out[offset + i] = origin[i] + x * ex[i] + y * ey[i] + height * normal[i];
+        }
+    }
+
+    static double[] sub(double[] a, double[] b) {
+        return new double[] {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+    }
+
+    static double[] cross(double[] a, double[] b) {
+        return new double[] {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    }
+
+    static double[] unit(double[] a) {
+        double length = Math.sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+        return new double[] {a[0] / length, a[1] / length, a[2] / length};
+    }
+}

@@ -1,0 +1,88 @@
+package ifold.sheet;
+
+import java.util.Arrays;
+
+/** Small convex-polygon helpers in a plane, as flat arrays x0 y0 x1 y1 ...; no allocation beyond the results. */
+public final class Polygons2 {
+    private Polygons2() {
+    }
+
+    /** Twice the signed area: positive for a counter-clockwise polygon. */
+    public static double twiceArea(double[] xy, int n) {
+        double sum = 0;
+        for (int i = 0, j = n - 1; i < n; j = i++) {
+            sum += xy[2 * j] * xy[2 * i + 1] - xy[2 * i] * xy[2 * j + 1];
+        }
+        return sum;
+    }
+
+    /**
+     * Whether two convex polygons share more than a boundary: no separating axis among their
+     * edge normals leaves a gap or an overlap thinner than {@code tolerance}.
+     */
+    public static boolean overlap(double[] a, int na, double[] b, int nb, double tolerance) {
+        return !separated(a, na, b, nb, tolerance) && !separated(b, nb, a, na, tolerance);
+    }
+
+    private static boolean separated(double[] a, int na, double[] b, int nb, double tolerance) {
+        for (int i = 0, j = na - 1; i < na; j = i++) {
+            double nx = a[2 * i + 1] - a[2 * j + 1];
+            double ny = a[2 * j] - a[2 * i];
+            double length = Math.hypot(nx, ny);
+            if (!(length > 0)) {
+                continue;
+            }
+            nx /= length;
+            ny /= length;
+            double minA = Double.POSITIVE_INFINITY;
+            double maxA = Double.NEGATIVE_INFINITY;
+            for (int k = 0; k < na; k++) {
+                double p = a[2 * k] * nx + a[2 * k + 1] * ny;
+                minA = Math.min(minA, p);
+                maxA = Math.max(maxA, p);
+            }
+            double minB = Double.POSITIVE_INFINITY;
+            double maxB = Double.NEGATIVE_INFINITY;
+            for (int k = 0; k < nb; k++) {
+                double p = b[2 * k] * nx + b[2 * k + 1] * ny;
+                minB = Math.min(minB, p);
+                maxB = Math.max(maxB, p);
+            }
+            if (Math.min(maxA, maxB) - Math.max(minA, minB) <= tolerance) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * The part of convex polygon {@code xy} (n corners) where {@code nx·x + ny·y <= c}, or null
+     * when none of it, beyond {@code tolerance}, is there.
+     */
+    public static double[] clip(double[] xy, int n, double nx, double ny, double c, double tolerance) {
+        double[] out = new double[2 * (n + 1)];
+        int m = 0;
+        boolean any = false;
+        for (int i = 0; i < n; i++) {
+            int j = (i + 1) % n;
+            double di = xy[2 * i] * nx + xy[2 * i + 1] * ny - c;
+            double dj = xy[2 * j] * nx + xy[2 * j + 1] * ny - c;
+            if (di <= 0) {
+                out[2 * m] = xy[2 * i];
+                out[2 * m + 1] = xy[2 * i + 1];
+                m++;
+                any |= di < -tolerance;
+            }
+            if ((di < 0 && dj > 0) || (di > 0 && dj < 0)) {
+                double t = di / (di - dj);
+                out[2 * m] = xy[2 * i] + t * (xy[2 * j] - xy[2 * i]);
+                out[2 * m + 1] = xy[2 * i + 1] + t * (xy[2 * j + 1] - xy[2 * i + 1]);
+                m++;
+            }
+        }
+        if (!any || m < 3) {
+            return null;
+        }
+        return Arrays.copyOf(out, 2 * m);
+    }
+}

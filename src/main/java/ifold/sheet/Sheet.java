@@ -1,0 +1,680 @@
+package ifold.sheet;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+
+/**
+ * One strip of paper being folded onto the triangles of a surface: the fold engine that a wrap
+ * needs, in which a fold costs what it touches, not what has been folded before.
+ *
+ * <p><b>The sheet.</b> The strip's paper, [0, L] × [0, w] in paper coordinates (u, v), is cut into
+ * convex faces over shared paper vertices; the faces tile the strip exactly once, because every
+ * cut splits one face into two along a line. Each face <em>rests on a host</em> (an integer: a
+ * triangle of the surface) and has a <em>pose</em>, the rigid motion from paper coordinates
+ * into the host's 2D frame, so a face is congruent to its paper by construction. Its height
+ * above the host is its <em>level</em> in the host's stack times the thickness.
+ *
+ * <p><b>The tail.</b> The strip not yet laid is one convex piece: the half-strip beyond the last
+ * crease, with one pose and one host. A fold of the tail cuts it along a crease across the
+ * strip, lays the part before the crease as a face, and composes the tail's pose with a
+ * reflection (a flat fold) or with the development of the next host (a fold over an edge of the
+ * surface). That is O(1) whatever came before: laid paper never moves with the tail.
+ *
+ * <p><b>Tucks</b> fold the paper resting on one host beyond a line under the rest of that
+ * host's paper. Only that host's faces are cut and moved, with their neighbours on the sheet
+ * given the new vertices, so a tuck costs what lies on its triangle.
+ *
+ * <p><b>Stacks.</b> Each host keeps which of its overlapping faces lies above which: a face laid
+ * over (a valley fold, seen from the strip's outer side) lies above every face of the host it
+ * overlaps, one laid under (a mountain fold) below every one, and a tucked flap goes under the
+ * paper it lands below, its own order reversed. Each new relation starts or ends at the face
+ * just placed, so the order never has a cycle. A face's level is the longest chain of faces
+ * below it: faces rest on what is under them, the first on the surface.
+ */
+public final class Sheet {
+    /** Where the paper just folded lands: over the paper it overlaps, or under it. */
+    public enum Placement { OVER, UNDER }
+
+    /** Why the paper is creased along an edge of the sheet. */
+    public enum Crease { TURN, GADGET, CROSSING, TUCK }
+
+    private final double width;
+    private final double thickness;
+    private final double tolerance;
+
+    private double[] uv = new double[64];
+    private int vertexCount;
+
+    private final List<int[]> loops = new ArrayList<>();
+    private int[] hostOf = new int[16];
+    private final List<Isometry2> poseOf = new ArrayList<>();
+    /** The face to the left of each directed paper edge a → b, keyed a << 32 | b. */
+    private final Map<Long, Integer> faceOfEdge = new HashMap<>();
+    /** The creases, keyed by their lower vertex << 32 | the higher. */
+    private final Map<Long, Crease> creases = new HashMap<>();
+    private final Map<Integer, Stack> stacks = new HashMap<>();
+
+    private int tailA;
+    private int tailB;
+    private int tailHost;
+    private Isometry2 tailPose;
+    private Placement tailPlacement = Placement.OVER;
+    private double length = Double.NaN;
+
+    /** The faces resting on one host and their order. */
+    private static final class Stack {
+        int[] faces = new int[8];
+        int count;
+        /** Pairs (above << 32 | below) of overlapping faces. */
+        List<Long> above = new ArrayList<>();
+        int[] levels;
+        int top = -1;
+
+        void add(int f) {
+            if (count == faces.length) {
+                faces = Arrays.copyOf(faces, 2 * count);
+            }
+            faces[count++] = f;
+            levels = null;
+        }
+    }
+
+    /**
+     * A strip of width {@code width} whose start, the edge u = 0, lies on {@code host} where
+     * {@code pose} puts it.
+     *
+     * @param tolerance lengths below it are nothing: points this close to a line lie on it
+     */
+    public Sheet(double width, double thickness, double tolerance, int host, Isometry2 pose) {
+        if (!(width > 0) || !Double.isFinite(width)) {
+            throw new IllegalArgumentException("the strip width must be a positive number, got " + width);
+        }
+        if (!(thickness >= 0) || !Double.isFinite(thickness)) {
+            throw new IllegalArgumentException("the thickness must be zero or more, got " + thickness);
+        }
+        this.width = width;
+        this.thickness = thickness;
+        this.tolerance = tolerance;
+        tailA = addVertex(0, 0);
+        tailB = addVertex(0, width);
+        tailHost = host;
+        tailPose = pose;
+    }
+
+    // ---------------------------------------------------------------- the tail
+
+    /**
+     * Folds the tail flat along the line through (px, py) with direction (dx, dy) in the tail
+     * host's frame: the tail before the line is laid, the rest is reflected over it and will
+     * land {@code next} the paper it overlaps.
+     *
+     * @return the face laid
+     * @throws FoldException if the line does not cross the tail ahead of its last crease
+     */
+    public int foldTail(double px, double py, double dx, double dy, Placement next, Crease kind) throws FoldException {
+        int face = cutTail(px, py, dx, dy, kind);
+        tailPose = Isometry2.reflection(px, py, dx, dy).after(tailPose);
+        tailPlacement = next;
+        return face;
+    }
+
+    /**
+     * Folds the tail over an edge of the surface, the line through (px, py) with direction
+     * (dx, dy) in the tail host's frame: the part beyond it goes onto {@code nextHost}, whose
+     * frame {@code development} maps the current host's frame onto (the current host unfolded
+     * about the edge into the next one's plane).
+     *
+     * @return the face laid
+     */
+    public int crossTail(double px, double py, double dx, double dy, int nextHost, Isometry2 development) throws FoldException {
+        int face = cutTail(px, py, dx, dy, Crease.CROSSING);
+        tailPose = development.after(tailPose);
+        tailHost = nextHost;
+        tailPlacement = Placement.OVER;
+        return face;
+    }
+
+    /**
+     * Ends the strip square at the line through (px, py) with direction (dx, dy), which must
+     * run across the strip: the paper reaches the line everywhere, and the strip's length L is
+     * fixed there.
+     *
+     * @return the last face
+     */
+    public int endTail(double px, double py, double dx, double dy) throws FoldException {
+        if (!Double.isNaN(length)) {
+            throw new IllegalStateException("the strip has ended");
+        }
+        double[] at = creaseOnTail(px, py, dx, dy);
+        double end = Math.max(at[0], at[1]);
+        double startA = u(tailA);
+        double startB = u(tailB);
+        if (!(end > Math.max(startA, startB) + tolerance)) {
+            throw new FoldException("the strip's end lies behind its last crease");
+        }
+        int a = addVertex(end, 0);
+        int b = addVertex(end, width);
+        int face = addFace(new int[] {tailA, a, b, tailB}, tailHost, tailPose, tailPlacement);
+        length = end;
+        tailA = a;
+        tailB = b;
+        return face;
+    }
+
+    /** The host the tail lies on. */
+    public int tailHost() {
+        return tailHost;
+    }
+
+    public Isometry2 tailPose() {
+        return tailPose;
+    }
+
+    /** Paper coordinate u where the tail begins, on its edges v = 0 and v = w. */
+    public double tailStart(boolean atWidth) {
+        return u(atWidth ? tailB : tailA);
+    }
+
+    /** u and u at v = 0 and v = w where the host line meets the strip, as the tail lies. */
+    private double[] creaseOnTail(double px, double py, double dx, double dy) throws FoldException {
+        Isometry2 inverse = tailPose.inverse();
+        double pu = inverse.x(px, py);
+        double pv = inverse.y(px, py);
+        double du = inverse.dx(dx, dy);
+        double dv = inverse.dy(dx, dy);
+        if (!(Math.abs(dv) > 1e-12 * Math.hypot(du, dv))) {
+            throw new FoldException("the crease runs along the strip: a fold of the tail must cross it");
+        }
+        return new double[] {pu + (0 - pv) / dv * du, pu + (width - pv) / dv * du};
+    }
+
+    private int cutTail(double px, double py, double dx, double dy, Crease kind) throws FoldException {
+        if (!Double.isNaN(length)) {
+            throw new IllegalStateException("the strip has ended");
+        }
+        double[] at = creaseOnTail(px, py, dx, dy);
+        double startA = u(tailA);
+        double startB = u(tailB);
+        if (at[0] < startA - tolerance || at[1] < startB - tolerance) {
+            throw new FoldException("the crease crosses the one before it on the strip: folds must follow one another along it");
+        }
+        boolean sameA = at[0] <= startA + tolerance;
+        boolean sameB = at[1] <= startB + tolerance;
+        if (sameA && sameB) {
+            throw new FoldException("the crease lies on the one before it");
+        }
+        int a = sameA ? tailA : addVertex(at[0], 0);
+        int b = sameB ? tailB : addVertex(at[1], width);
+        int[] loop = sameA ? new int[] {tailA, b, tailB} : sameB ? new int[] {tailA, a, tailB} : new int[] {tailA, a, b, tailB};
+        int face = addFace(loop, tailHost, tailPose, tailPlacement);
+        creases.put(undirected(a, b), kind);
+        tailA = a;
+        tailB = b;
+        return face;
+    }
+
+    // ---------------------------------------------------------------- tucks
+
+    /**
+     * What a tuck did.
+     *
+     * @param host the host whose paper was tucked
+     * @param moved the faces that turned under (after cutting)
+     * @param px a point of the tuck line, in the host's frame
+     * @param py its y
+     * @param dx the line's direction; the paper on its right turned
+     * @param dy its y
+     */
+    public record Tuck(int host, int[] moved, double px, double py, double dx, double dy) {
+    }
+
+    /**
+     * Tucks the paper resting on {@code host} to the right of the directed line through (px, py)
+     * with direction (dx, dy) under the host's other paper: faces the line crosses are cut, the
+     * part beyond it is reflected over the line and slid under what it lands below.
+     *
+     * @throws FoldException if nothing lies beyond the line, or the paper beyond it is joined to
+     *     the rest by anything but the line (tucking it would tear the strip)
+     */
+    public Tuck tuck(int host, double px, double py, double dx, double dy) throws FoldException {
+        Stack stack = stacks.get(host);
+        if (stack == null) {
+            throw new FoldException("no paper rests on triangle " + host);
+        }
+        double length = Math.hypot(dx, dy);
+        double nx = dy / length; // right of the direction
+        double ny = -dx / length;
+        double c = nx * px + ny * py;
+        Map<Long, Integer> splitOfEdge = new HashMap<>();
+        Set<Integer> moving = new HashSet<>();
+        int faces = stack.count;
+        for (int i = 0; i < faces; i++) {
+            int f = stack.faces[i];
+            int[] loop = loops.get(f);
+            Isometry2 pose = poseOf.get(f);
+            double min = Double.POSITIVE_INFINITY;
+            double max = Double.NEGATIVE_INFINITY;
+            for (int v : loop) {
+                double d = nx * pose.x(u(v), v(v)) + ny * pose.y(u(v), v(v)) - c;
+                min = Math.min(min, d);
+                max = Math.max(max, d);
+            }
+            if (max <= tolerance) {
+                continue;
+            }
+            if (min >= -tolerance) {
+                moving.add(f);
+                continue;
+            }
+            moving.add(split(f, nx, ny, c, splitOfEdge));
+        }
+        if (moving.isEmpty()) {
+            throw new FoldException("nothing to tuck: no paper on triangle " + host + " lies beyond the line");
+        }
+        // The flap may be joined to the rest only along the tuck line.
+        for (int f : moving) {
+            int[] loop = loops.get(f);
+            Isometry2 pose = poseOf.get(f);
+            for (int i = 0; i < loop.length; i++) {
+                int a = loop[i];
+                int b = loop[(i + 1) % loop.length];
+                Integer across = faceOfEdge.get(directed(b, a));
+                if (across == null || moving.contains(across)) {
+                    continue;
+                }
+                double da = nx * pose.x(u(a), v(a)) + ny * pose.y(u(a), v(a)) - c;
+                double db = nx * pose.x(u(b), v(b)) + ny * pose.y(u(b), v(b)) - c;
+                if (Math.abs(da) > tolerance || Math.abs(db) > tolerance) {
+                    throw new FoldException("tucking under triangle " + host + " would tear the strip: paper beyond the line"
+                            + " is joined to paper that stays by a crease off the line");
+                }
+                creases.put(undirected(a, b), Crease.TUCK);
+            }
+        }
+        Isometry2 reflection = Isometry2.reflection(px, py, dx, dy);
+        List<Long> kept = new ArrayList<>();
+        for (long pair : stack.above) {
+            int upper = (int) (pair >>> 32);
+            int lower = (int) pair;
+            boolean upperMoves = moving.contains(upper);
+            boolean lowerMoves = moving.contains(lower);
+            if (upperMoves != lowerMoves) {
+                continue; // they lay side by side before; where the flap lands is decided below
+            }
+            if (!overlap(upper, lower)) {
+                continue; // a face cut by the line keeps only the relations of the part that overlaps
+            }
+            kept.add(upperMoves ? ((long) lower << 32) | upper : pair); // the flap turns over: its order reverses
+        }
+        for (int f : moving) {
+            poseOf.set(f, reflection.after(poseOf.get(f)));
+        }
+        for (int i = 0; i < stack.count; i++) {
+            int g = stack.faces[i];
+            if (moving.contains(g)) {
+                continue;
+            }
+            for (int f : moving) {
+                if (overlap(f, g)) {
+                    kept.add(((long) g << 32) | f);
+                }
+            }
+        }
+        stack.above = kept;
+        stack.levels = null;
+        int[] moved = moving.stream().mapToInt(Integer::intValue).sorted().toArray();
+        return new Tuck(host, moved, px, py, dx, dy);
+    }
+
+    /**
+     * Cuts face f along the line n·p = c: f keeps the part on the near side, a new face the
+     * part beyond, which is returned. Each crossing edge gets one new vertex, shared with the
+     * face across it on the sheet, which is given the vertex too so that no edge of the sheet
+     * ends in the middle of another.
+     */
+    private int split(int f, double nx, double ny, double c, Map<Long, Integer> splitOfEdge) {
+        int[] loop = loops.get(f);
+        Isometry2 pose = poseOf.get(f);
+        int n = loop.length;
+        double[] d = new double[n];
+        for (int i = 0; i < n; i++) {
+            int v = loop[i];
+            d[i] = nx * pose.x(u(v), v(v)) + ny * pose.y(u(v), v(v)) - c;
+        }
+        int[] withSplits = new int[2 * n];
+        int[] side = new int[2 * n];
+        int m = 0;
+        for (int i = 0; i < n; i++) {
+            int j = (i + 1) % n;
+            withSplits[m] = loop[i];
+            side[m++] = d[i] > tolerance ? 1 : d[i] < -tolerance ? -1 : 0;
+            if ((d[i] > tolerance && d[j] < -tolerance) || (d[i] < -tolerance && d[j] > tolerance)) {
+                int a = loop[i];
+                int b = loop[j];
+                Integer split = splitOfEdge.get(undirected(a, b));
+                if (split == null) {
+                    double t = d[i] / (d[i] - d[j]);
+                    split = addVertex(u(a) + t * (u(b) - u(a)), v(a) + t * (v(b) - v(a)));
+                    splitOfEdge.put(undirected(a, b), split);
+                    insertAcross(a, b, split);
+                }
+                withSplits[m] = split;
+                side[m++] = 0;
+            }
+        }
+        int[] near = new int[m];
+        int[] far = new int[m];
+        int nearCount = 0;
+        int farCount = 0;
+        for (int i = 0; i < m; i++) {
+            if (side[i] <= 0) {
+                near[nearCount++] = withSplits[i];
+            }
+            if (side[i] >= 0) {
+                far[farCount++] = withSplits[i];
+            }
+        }
+        unregister(f);
+        loops.set(f, Arrays.copyOf(near, nearCount));
+        register(f);
+        int g = loops.size();
+        loops.add(Arrays.copyOf(far, farCount));
+        poseOf.add(pose);
+        ensureFaceCapacity(g + 1);
+        hostOf[g] = hostOf[f];
+        register(g);
+        Stack stack = stacks.get(hostOf[f]);
+        // The new part inherits f's relations; those that no longer overlap are dropped later.
+        List<Long> inherited = new ArrayList<>();
+        for (long pair : stack.above) {
+            int upper = (int) (pair >>> 32);
+            int lower = (int) pair;
+            if (upper == f) {
+                inherited.add(((long) g << 32) | lower);
+            } else if (lower == f) {
+                inherited.add(((long) upper << 32) | g);
+            }
+        }
+        stack.above.addAll(inherited);
+        stack.add(g);
+        return g;
+    }
+
+    /** Gives the face across edge a → b (the one holding b → a) the vertex m between b and a. */
+    private void insertAcross(int a, int b, int m) {
+        Integer across = faceOfEdge.get(directed(b, a));
+        if (across == null) {
+            return; // the strip's own border
+        }
+        int g = across;
+        int[] loop = loops.get(g);
+        int[] longer = new int[loop.length + 1];
+        int k = 0;
+        for (int i = 0; i < loop.length; i++) {
+            longer[k++] = loop[i];
+            if (loop[i] == b && loop[(i + 1) % loop.length] == a) {
+                longer[k++] = m;
+            }
+        }
+        faceOfEdge.remove(directed(b, a));
+        faceOfEdge.put(directed(b, m), g);
+        faceOfEdge.put(directed(m, a), g);
+        loops.set(g, longer);
+        Crease crease = creases.remove(undirected(a, b));
+        if (crease != null) {
+            creases.put(undirected(a, m), crease);
+            creases.put(undirected(m, b), crease);
+        }
+    }
+
+    // ---------------------------------------------------------------- faces and stacks
+
+    private int addFace(int[] loop, int host, Isometry2 pose, Placement placement) {
+        int f = loops.size();
+        loops.add(loop);
+        poseOf.add(pose);
+        ensureFaceCapacity(f + 1);
+        hostOf[f] = host;
+        register(f);
+        Stack stack = stacks.computeIfAbsent(host, h -> new Stack());
+        for (int i = 0; i < stack.count; i++) {
+            int g = stack.faces[i];
+            if (overlap(f, g)) {
+                stack.above.add(placement == Placement.OVER ? ((long) f << 32) | g : ((long) g << 32) | f);
+            }
+        }
+        stack.add(f);
+        return f;
+    }
+
+    private void ensureFaceCapacity(int n) {
+        if (n > hostOf.length) {
+            hostOf = Arrays.copyOf(hostOf, Math.max(n, 2 * hostOf.length));
+        }
+    }
+
+    private void register(int f) {
+        int[] loop = loops.get(f);
+        for (int i = 0; i < loop.length; i++) {
+            faceOfEdge.put(directed(loop[i], loop[(i + 1) % loop.length]), f);
+        }
+    }
+
+    private void unregister(int f) {
+        int[] loop = loops.get(f);
+        for (int i = 0; i < loop.length; i++) {
+            faceOfEdge.remove(directed(loop[i], loop[(i + 1) % loop.length]));
+        }
+    }
+
+    private boolean overlap(int f, int g) {
+        double[] a = placed(f);
+        double[] b = placed(g);
+        return Polygons2.overlap(a, a.length / 2, b, b.length / 2, tolerance);
+    }
+
+    /** Face f's corners in its host's frame, x0 y0 x1 y1 ... */
+    public double[] placed(int f) {
+        int[] loop = loops.get(f);
+        Isometry2 pose = poseOf.get(f);
+        double[] xy = new double[2 * loop.length];
+        for (int i = 0; i < loop.length; i++) {
+            int v = loop[i];
+            xy[2 * i] = pose.x(u(v), v(v));
+            xy[2 * i + 1] = pose.y(u(v), v(v));
+        }
+        return xy;
+    }
+
+    private int[] levels(Stack stack) {
+        if (stack.levels != null) {
+            return stack.levels;
+        }
+        Map<Integer, Integer> index = new HashMap<>();
+        for (int i = 0; i < stack.count; i++) {
+            index.put(stack.faces[i], i);
+        }
+        int n = stack.count;
+        int[] below = new int[n]; // how many faces lie directly below each, still to place
+        List<List<Integer>> over = new ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            over.add(new ArrayList<>());
+        }
+        for (long pair : stack.above) {
+            int upper = index.get((int) (pair >>> 32));
+            int lower = index.get((int) pair);
+            below[upper]++;
+            over.get(lower).add(upper);
+        }
+        int[] level = new int[n];
+        int[] queue = new int[n];
+        int head = 0;
+        int tail = 0;
+        for (int i = 0; i < n; i++) {
+            if (below[i] == 0) {
+                queue[tail++] = i;
+            }
+        }
+        while (head < tail) {
+            int i = queue[head++];
+            for (int upper : over.get(i)) {
+                level[upper] = Math.max(level[upper], level[i] + 1);
+                if (--below[upper] == 0) {
+                    queue[tail++] = upper;
+                }
+            }
+        }
+        if (tail != n) {
+            throw new IllegalStateException("the stack on host has a cycle: a face lies above itself");
+        }
+        int top = -1;
+        for (int l : level) {
+            top = Math.max(top, l);
+        }
+        stack.top = top;
+        stack.levels = new int[stack.faces.length];
+        for (int i = 0; i < n; i++) {
+            stack.levels[i] = level[i];
+        }
+        return stack.levels;
+    }
+
+    /** Face f's level in its host's stack: 0 on the surface. */
+    public int level(int f) {
+        Stack stack = stacks.get(hostOf[f]);
+        int[] levels = levels(stack);
+        for (int i = 0; i < stack.count; i++) {
+            if (stack.faces[i] == f) {
+                return levels[i];
+            }
+        }
+        throw new IllegalArgumentException("face " + f + " is not on its host");
+    }
+
+    /** Every face's level, indexed by face. */
+    public int[] levels() {
+        int[] all = new int[faceCount()];
+        for (Stack stack : stacks.values()) {
+            int[] levels = levels(stack);
+            for (int i = 0; i < stack.count; i++) {
+                all[stack.faces[i]] = levels[i];
+            }
+        }
+        return all;
+    }
+
+    /** The levels in the deepest stack of any host (its top level + 1). */
+    public int stackLevels() {
+        int deepest = 0;
+        for (Stack stack : stacks.values()) {
+            levels(stack);
+            deepest = Math.max(deepest, stack.top + 1);
+        }
+        return deepest;
+    }
+
+    /** The faces resting on {@code host}. */
+    public int[] facesOn(int host) {
+        Stack stack = stacks.get(host);
+        return stack == null ? new int[0] : Arrays.copyOf(stack.faces, stack.count);
+    }
+
+    /** The hosts that hold paper. */
+    public Set<Integer> hosts() {
+        return stacks.keySet();
+    }
+
+    // ---------------------------------------------------------------- reading
+
+    public double width() {
+        return width;
+    }
+
+    public double thickness() {
+        return thickness;
+    }
+
+    public double tolerance() {
+        return tolerance;
+    }
+
+    /** The strip's length L, once it has ended. */
+    public double length() {
+        return length;
+    }
+
+    public int vertexCount() {
+        return vertexCount;
+    }
+
+    public double u(int vertex) {
+        return uv[2 * vertex];
+    }
+
+    public double v(int vertex) {
+        return uv[2 * vertex + 1];
+    }
+
+    public int faceCount() {
+        return loops.size();
+    }
+
+    /** Face f's paper vertices, counter-clockwise on the sheet seen from its top. */
+    public int[] loop(int f) {
+        return loops.get(f).clone();
+    }
+
+    public int host(int f) {
+        return hostOf[f];
+    }
+
+    public Isometry2 pose(int f) {
+        return poseOf.get(f);
+    }
+
+    /** The face on the other side of paper edge a → b of a face, or -1 at the strip's border. */
+    public int faceAcross(int a, int b) {
+        Integer g = faceOfEdge.get(directed(b, a));
+        return g == null ? -1 : g;
+    }
+
+    /** The crease along paper edge (a, b), or null where the paper is flat or the edge is the border. */
+    public Crease crease(int a, int b) {
+        return creases.get(undirected(a, b));
+    }
+
+    /** How many creases of each kind, and their length on the sheet. */
+    public Map<Crease, double[]> creaseTotals() {
+        Map<Crease, double[]> totals = new java.util.EnumMap<>(Crease.class);
+        for (Map.Entry<Long, Crease> crease : creases.entrySet()) {
+            int a = (int) (crease.getKey() >>> 32);
+            int b = (int) (long) crease.getKey();
+            double[] total = totals.computeIfAbsent(crease.getValue(), k -> new double[2]);
+            total[0]++;
+            total[1] += Math.hypot(u(b) - u(a), v(b) - v(a));
+        }
+        return totals;
+    }
+
+    private int addVertex(double u, double v) {
+        if (2 * vertexCount + 2 > uv.length) {
+            uv = Arrays.copyOf(uv, 2 * uv.length);
+        }
+        uv[2 * vertexCount] = u;
+        uv[2 * vertexCount + 1] = v;
+        return vertexCount++;
+    }
+
+    private static long directed(int a, int b) {
+        return ((long) a << 32) | (b & 0xffffffffL);
+    }
+
+    private static long undirected(int a, int b) {
+        return directed(Math.min(a, b), Math.max(a, b));
+    }
+}

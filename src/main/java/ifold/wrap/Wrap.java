@@ -1,0 +1,644 @@
+package ifold.wrap;
+
+import ifold.refine.HamiltonianRefinement;
+import ifold.refine.RefinedMesh;
+import ifold.sheet.FoldException;
+import ifold.sheet.HostFrame;
+import ifold.sheet.Isometry2;
+import ifold.sheet.Sheet;
+import ifold.sheet.Sheet.Crease;
+import ifold.sheet.Sheet.Placement;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * Wraps a surface in one strip of paper per component, along the Hamiltonian path of its
+ * refinement (Demaine, Demaine and Mitchell; the seed, section 2.5): the zig-zag method on every
+ * triangle, a turn gadget and a fold over the shared edge to the next, and the excess of every
+ * triangle tucked under that triangle.
+ *
+ * <p><b>Corners.</b> Each triangle t_i of a path is entered at the corner s_i opposite the edge
+ * E_i it shares with t_{i+1}, so its passes run parallel to E_i and its last pass lies along E_i.
+ * It leaves by the end e_i of E_i that is not on E_{i+1}; then s_{i+1} = e_i is again opposite
+ * E_{i+1}, and every triangle of the path is entered the same way (the first at the corner
+ * opposite E_0; the last leaves nowhere, its base is the edge opposite its start).
+ *
+ * <p><b>Passes.</b> In the frame of t_i, E_i on the x axis and s_i at height h, the first pass is
+ * the band [h - w, h] and the last the band [0, w]; those between lie one strip width apart,
+ * turning just beyond the slanted edges with a pair of 45° folds. Where h is not a multiple of
+ * w, the last turn must shift the strip by less than a width, which two folds that keep the top
+ * side up cannot do (they would have to cross inside the strip); that turn is two 90° turn
+ * gadgets, four folds. The last triangle's passes all lie a width apart, the last one over its
+ * base, and its excess is tucked like the rest.
+ *
+ * <p><b>From triangle to triangle.</b> Unfold t_{i+1} about E_i into t_i's plane: its first pass
+ * is a band B that crosses E_i inside the edge (its top edge passes through s_{i+1} = e_i, and
+ * w is at most its altitude), and it reaches back across E_i into t_i. The strip runs along
+ * the last pass, folds back across itself beyond the slanted edge (valley), and a second fold
+ * along the line that reflects the band [0, w] onto B sends it along B, top side up again: a
+ * turn gadget whose creases both lie in the band [0, w] of t_i. Then the tail is folded over
+ * E_i into t_{i+1}'s plane. The same two folds serve when the parity of the passes brings the
+ * last one towards the wrong end of E_i: the fold back is then beyond the other slanted edge,
+ * and the strip runs back over the whole last pass before it turns.
+ *
+ * <p><b>Tucks.</b> Once the strip has left t_i, the paper resting on t_i beyond one of its
+ * edges (turns, the gadget's fold back) is tucked under with a fold along that edge, the edge
+ * with paper farthest beyond it first, until none is left: only t_i's paper is cut and moved,
+ * never the strip that crosses E_{i-1} or E_i, which rests on other triangles.
+ */
+public final class Wrap {
+    /** The most tucks on one triangle before giving up (the naïve tucks bounce between the edges of a sharp corner). */
+    public static final int MAX_TUCKS = 60;
+
+    private Wrap() {
+    }
+
+    /**
+     * What to wrap with.
+     *
+     * @param width the strip's width, or NaN for the widest that every triangle takes
+     * @param thickness the paper's thickness, or NaN for width / 80
+     */
+    public record Options(double width, double thickness) {
+    }
+
+    /** What a step of the wrap does. */
+    public enum Kind { ZIGZAG_TURN, TURN_GADGET, EDGE_CROSSING, TUCK, END }
+
+    /**
+     * One fold of the wrap, for the report and the animation.
+     *
+     * @param kind what it is for
+     * @param strip the strip folded
+     * @param triangle the triangle (index in the refined mesh) being wrapped
+     * @param pathIndex its place along its component's path, from 0
+     * @param pathLength the triangles of that path
+     * @param face the face it laid, or -1 for a tuck
+     * @param tuck the tuck, or null
+     */
+    public record Step(Kind kind, int strip, int triangle, int pathIndex, int pathLength, int face, Sheet.Tuck tuck) {
+        public String describe() {
+            String what = switch (kind) {
+                case ZIGZAG_TURN -> "zig-zag turn (45° fold)";
+                case TURN_GADGET -> "turn gadget fold";
+                case EDGE_CROSSING -> "fold over the edge to the next triangle";
+                case TUCK -> "tuck: excess folded under along an edge";
+                case END -> "the strip ends";
+            };
+            return String.format(Locale.ROOT, "triangle %d of %d: %s", pathIndex + 1, pathLength, what);
+        }
+    }
+
+    /**
+     * One strip.
+     *
+     * @param sheet its paper, folded
+     * @param firstTriangle the first triangle of its path (refined mesh index)
+     * @param triangles how many triangles it wraps
+     * @param facesBeforeTucks for each triangle of its path, the faces of the sheet once the
+     *     strip has left it, before its tucks (the sheet's faces are numbered as they are made)
+     * @param facesAfter for each triangle of its path, the faces of the sheet after its tucks
+     */
+    public record Strip(Sheet sheet, int firstTriangle, int triangles, int[] facesBeforeTucks, int[] facesAfter) {
+    }
+
+    /**
+     * The wrapped surface.
+     *
+     * @param mesh the refined mesh whose triangles hold the paper
+     * @param frames each refined triangle's frame
+     * @param strips one per component
+     * @param steps every fold in order
+     * @param width the strip width
+     * @param thickness the paper thickness
+     * @param widest the widest strip the path takes
+     */
+    public record Result(RefinedMesh mesh, HostFrame[] frames, List<Strip> strips, List<Step> steps, double width,
+            double thickness, double widest) {
+        public int count(Kind kind) {
+            int n = 0;
+            for (Step step : steps) {
+                n += step.kind() == kind ? 1 : 0;
+            }
+            return n;
+        }
+    }
+
+    /** A width the path cannot take, or a triangle the tucks cannot finish: the message names the triangle. */
+    public static final class WrapException extends Exception {
+        private static final long serialVersionUID = 1L;
+
+        public WrapException(String message) {
+            super(message);
+        }
+    }
+
+    /** How every triangle of one path is entered and left. */
+    private static final class PathPlan {
+        int first;
+        int m;
+        int[][] corners;
+        /** Start corner of each triangle (a vertex id). */
+        int[] start;
+        /** The shared edge with the next triangle, as two vertex ids. */
+        int[][] shared;
+        HostFrame[] frames;
+        /** Vertex ids at the frame's origin (x axis start) and at the end of the base. */
+        int[] baseFrom;
+        int[] baseTo;
+    }
+
+    /**
+     * Wraps every component of a refinement.
+     *
+     * @throws WrapException if the width is too wide for a triangle, or a triangle's excess cannot be tucked
+     */
+    public static Result wrap(HamiltonianRefinement.Result refinement, Options options) throws WrapException {
+        RefinedMesh mesh = refinement.mesh();
+        int[] componentStart = refinement.componentStart();
+        HostFrame[] frames = new HostFrame[mesh.faceCount()];
+        double size = modelSize(mesh);
+        double tolerance = 1e-9 * size;
+        List<PathPlan> plans = new ArrayList<>();
+        double widest = Double.POSITIVE_INFINITY;
+        int narrowest = -1;
+        for (int c = 0; c + 1 < componentStart.length; c++) {
+            PathPlan plan = planCorners(mesh, componentStart[c], componentStart[c + 1] - componentStart[c]);
+            plans.add(plan);
+            for (int i = 0; i < plan.m; i++) {
+                double h = i + 1 < plan.m || plan.m == 1 ? plan.frames[i].corners()[5] : lastAltitudeBound(mesh, plan);
+                if (h < widest) {
+                    widest = h;
+                    narrowest = plan.first + i;
+                }
+            }
+        }
+        double width = Double.isNaN(options.width()) ? widest : options.width();
+        if (!(width > 0) || !Double.isFinite(width)) {
+            throw new IllegalArgumentException("the strip width must be a positive number, got " + width);
+        }
+        double thickness = Double.isNaN(options.thickness()) ? width / 80 : options.thickness();
+        if (!(thickness >= 0) || !Double.isFinite(thickness)) {
+            throw new IllegalArgumentException("the thickness must be zero or more, got " + thickness);
+        }
+        List<Strip> strips = new ArrayList<>();
+        List<Step> steps = new ArrayList<>();
+        for (int c = 0; c < plans.size(); c++) {
+            PathPlan plan = plans.get(c);
+            for (int i = 0; i + 1 < plan.m; i++) {
+                if (plan.frames[i].corners()[5] < width * (1 - 1e-12)) {
+                    throw new WrapException(tooWide(mesh, plan.first + i, i, plan.m, width, plan.frames[i].corners()[5]));
+                }
+            }
+            chooseLastStart(mesh, plan, width);
+            for (int i = 0; i < plan.m; i++) {
+                frames[plan.first + i] = plan.frames[i];
+            }
+            try {
+                strips.add(new Folding(mesh, plan, c, width, thickness, tolerance, steps).fold());
+            } catch (FoldException e) {
+                throw new WrapException(e.getMessage());
+            }
+        }
+        if (narrowest < 0) {
+            widest = Double.NaN;
+        }
+        return new Result(mesh, frames, List.copyOf(strips), List.copyOf(steps), width, thickness, widest);
+    }
+
+    private static String tooWide(RefinedMesh mesh, int triangle, int pathIndex, int m, double width, double altitude) {
+        return String.format(Locale.ROOT, "the strip width %s is too wide for triangle %d of %d on the path (%s): "
+                + "its passes need a width of at most %s", width, pathIndex + 1, m, cornersText(mesh, triangle), altitude);
+    }
+
+    static String cornersText(RefinedMesh mesh, int triangle) {
+        StringBuilder text = new StringBuilder();
+        for (int k = 0; k < 3; k++) {
+            int v = mesh.faceVertex(triangle, k);
+            text.append(k == 0 ? "" : ", ").append('(');
+            for (int axis = 0; axis < 3; axis++) {
+                text.append(axis == 0 ? "" : " ").append(String.format(Locale.ROOT, "%.6g", mesh.coordinate(v, axis)));
+            }
+            text.append(')');
+        }
+        return text.toString();
+    }
+
+    private static double modelSize(RefinedMesh mesh) {
+        double[] min = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
+        double[] max = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        for (int v = 0; v < mesh.vertexCount(); v++) {
+            for (int axis = 0; axis < 3; axis++) {
+                min[axis] = Math.min(min[axis], mesh.coordinate(v, axis));
+                max[axis] = Math.max(max[axis], mesh.coordinate(v, axis));
+            }
+        }
+        return Math.max(1e-300, Math.sqrt(sq(max[0] - min[0]) + sq(max[1] - min[1]) + sq(max[2] - min[2])));
+    }
+
+    private static double sq(double x) {
+        return x * x;
+    }
+
+    private static double[] position(RefinedMesh mesh, int v) {
+        return new double[] {mesh.coordinate(v, 0), mesh.coordinate(v, 1), mesh.coordinate(v, 2)};
+    }
+
+    /** Start corners and frames of every triangle of one path but the last's (which depends on the width). */
+    private static PathPlan planCorners(RefinedMesh mesh, int first, int m) {
+        PathPlan plan = new PathPlan();
+        plan.first = first;
+        plan.m = m;
+        plan.corners = new int[m][3];
+        for (int i = 0; i < m; i++) {
+            for (int k = 0; k < 3; k++) {
+                plan.corners[i][k] = mesh.faceVertex(first + i, k);
+            }
+        }
+        plan.shared = new int[Math.max(0, m - 1)][];
+        for (int i = 0; i + 1 < m; i++) {
+            plan.shared[i] = sharedEdge(plan.corners[i], plan.corners[i + 1]);
+            if (plan.shared[i] == null) {
+                throw new IllegalStateException("path triangles " + (first + i) + " and " + (first + i + 1) + " share no edge");
+            }
+        }
+        plan.start = new int[m];
+        plan.frames = new HostFrame[m];
+        plan.baseFrom = new int[m];
+        plan.baseTo = new int[m];
+        if (m == 1) {
+            plan.start[0] = oppositeLongestEdge(mesh, plan.corners[0]);
+            frame(mesh, plan, 0);
+            return plan;
+        }
+        plan.start[0] = third(plan.corners[0], plan.shared[0]);
+        for (int i = 0; i + 1 < m; i++) {
+            if (plan.start[i] != third(plan.corners[i], plan.shared[i])) {
+                throw new IllegalStateException("triangle " + (first + i) + " is not entered opposite its exit edge");
+            }
+            frame(mesh, plan, i);
+            if (i + 2 < m) {
+                // Leave by the end of E_i that is not on E_{i+1}: the next triangle is then entered opposite its exit.
+                int[] next = plan.shared[i + 1];
+                int[] edge = plan.shared[i];
+                plan.start[i + 1] = edge[0] == next[0] || edge[0] == next[1] ? edge[1] : edge[0];
+            }
+        }
+        return plan;
+    }
+
+    /** The frame of path triangle i: its base (the exit edge, or the edge opposite its start) on the x axis, directed as the triangle runs. */
+    private static void frame(RefinedMesh mesh, PathPlan plan, int i) {
+        int[] c = plan.corners[i];
+        int s = plan.start[i];
+        int k = s == c[0] ? 0 : s == c[1] ? 1 : 2;
+        int from = c[(k + 1) % 3];
+        int to = c[(k + 2) % 3];
+        plan.baseFrom[i] = from;
+        plan.baseTo[i] = to;
+        plan.frames[i] = HostFrame.onEdge(position(mesh, from), position(mesh, to), position(mesh, s));
+    }
+
+    /** For the bound on the default width: the smaller altitude of the last triangle over both ends it may be entered by. */
+    private static double lastAltitudeBound(RefinedMesh mesh, PathPlan plan) {
+        int last = plan.m - 1;
+        double bound = Double.POSITIVE_INFINITY;
+        for (int s : plan.shared[last - 1]) {
+            plan.start[last] = s;
+            frame(mesh, plan, last);
+            bound = Math.min(bound, plan.frames[last].corners()[5]);
+        }
+        return bound;
+    }
+
+    /**
+     * The last triangle may be entered by either end of the edge before it: the one the passes
+     * of the triangle before lead to, when it takes the width, so that no pass is run twice.
+     */
+    private static void chooseLastStart(RefinedMesh mesh, PathPlan plan, double width) throws WrapException {
+        if (plan.m == 1) {
+            if (plan.frames[0].corners()[5] < width * (1 - 1e-12)) {
+                throw new WrapException(tooWide(mesh, plan.first, 0, 1, width, plan.frames[0].corners()[5]));
+            }
+            return;
+        }
+        int before = plan.m - 2;
+        HostFrame frame = plan.frames[before];
+        int passes = passes(frame.corners()[5], width);
+        int lastDirection = firstDirection(plan, before, width) * (passes % 2 == 1 ? 1 : -1);
+        int preferred = lastDirection > 0 ? plan.baseTo[before] : plan.baseFrom[before];
+        int other = preferred == plan.baseTo[before] ? plan.baseFrom[before] : plan.baseTo[before];
+        int last = plan.m - 1;
+        for (int s : new int[] {preferred, other}) {
+            plan.start[last] = s;
+            frame(mesh, plan, last);
+            if (plan.frames[last].corners()[5] >= width * (1 - 1e-12)) {
+                return;
+            }
+        }
+        throw new WrapException(tooWide(mesh, plan.first + last, last, plan.m, width, plan.frames[last].corners()[5]));
+    }
+
+    static int passes(double h, double width) {
+        return Math.max(1, (int) Math.ceil(h / width - 1e-9));
+    }
+
+    /**
+     * The direction (+1 along the frame's x axis, -1 against) of triangle i's first pass: away
+     * from the edge the strip comes in over; on the first triangle, so that the last pass runs
+     * towards the end the strip leaves by.
+     */
+    static int firstDirection(PathPlan plan, int i, double width) {
+        if (i > 0) {
+            int[] entry = plan.shared[i - 1];
+            int other = entry[0] == plan.start[i] ? entry[1] : entry[0];
+            return other == plan.baseFrom[i] ? 1 : -1;
+        }
+        if (plan.m <= 2) {
+            return 1; // the end it leaves by is free (or there is none): it is chosen to fit
+        }
+        int passes = passes(plan.frames[0].corners()[5], width);
+        int exit = plan.start[1];
+        int towardsExit = exit == plan.baseTo[0] ? 1 : -1;
+        return towardsExit * (passes % 2 == 1 ? 1 : -1);
+    }
+
+    private static int[] sharedEdge(int[] a, int[] b) {
+        int[] shared = new int[2];
+        int n = 0;
+        for (int x : a) {
+            for (int y : b) {
+                if (x == y && n < 2) {
+                    shared[n++] = x;
+                }
+            }
+        }
+        return n == 2 ? shared : null;
+    }
+
+    private static int third(int[] corners, int[] edge) {
+        for (int v : corners) {
+            if (v != edge[0] && v != edge[1]) {
+                return v;
+            }
+        }
+        throw new IllegalStateException("a triangle with a repeated corner");
+    }
+
+    private static int oppositeLongestEdge(RefinedMesh mesh, int[] c) {
+        int best = c[0];
+        double longest = -1;
+        for (int k = 0; k < 3; k++) {
+            double[] a = position(mesh, c[(k + 1) % 3]);
+            double[] b = position(mesh, c[(k + 2) % 3]);
+            double length = Math.sqrt(sq(a[0] - b[0]) + sq(a[1] - b[1]) + sq(a[2] - b[2]));
+            if (length > longest) {
+                longest = length;
+                best = c[k];
+            }
+        }
+        return best;
+    }
+
+    /** The folding of one strip along one path. */
+    private static final class Folding {
+        private final RefinedMesh mesh;
+        private final PathPlan plan;
+        private final int strip;
+        private final double w;
+        private final double thickness;
+        private final double tolerance;
+        private final double margin;
+        private final List<Step> steps;
+        private Sheet sheet;
+        private int pathIndex;
+
+        Folding(RefinedMesh mesh, PathPlan plan, int strip, double width, double thickness, double tolerance, List<Step> steps) {
+            this.mesh = mesh;
+            this.plan = plan;
+            this.strip = strip;
+            this.w = width;
+            this.thickness = thickness;
+            this.tolerance = tolerance;
+            // Just beyond the edges: far enough to see, and to clear the caps of the turns.
+            this.margin = Math.max(width / 10, 2 * thickness);
+            this.steps = steps;
+        }
+
+        Strip fold() throws FoldException, WrapException {
+            int[] beforeTucks = new int[plan.m];
+            int[] after = new int[plan.m];
+            for (int i = 0; i < plan.m; i++) {
+                pathIndex = i;
+                wrapTriangle(i);
+                beforeTucks[i] = sheet.faceCount();
+                tuckAll(i);
+                after[i] = sheet.faceCount();
+            }
+            return new Strip(sheet, plan.first, plan.m, beforeTucks, after);
+        }
+
+        private void wrapTriangle(int i) throws FoldException {
+            HostFrame frame = plan.frames[i];
+            Edges edges = new Edges(frame.corners());
+            double h = edges.h;
+            boolean last = i == plan.m - 1;
+            int k = passes(h, w);
+            double[] bottom = new double[k];
+            for (int j = 0; j < k; j++) {
+                bottom[j] = h - (j + 1) * w;
+            }
+            if (!last) {
+                bottom[k - 1] = 0; // the last pass along the exit edge; the turn before it may shift less than w
+            }
+            int d = firstDirection(plan, i, w);
+            int host = plan.first + i;
+            if (i == 0) {
+                double start = d > 0 ? edges.leftmost(bottom[0], bottom[0] + w) - margin : edges.rightmost(bottom[0], bottom[0] + w) + margin;
+                Isometry2 pose = d > 0 ? Isometry2.placement(start, bottom[0], 0, false)
+                        : Isometry2.placement(start, bottom[0] + w, Math.PI, false);
+                sheet = new Sheet(w, thickness, tolerance, host, pose);
+            } else {
+                checkEntry(d, bottom[0]);
+            }
+            for (int j = 0; j + 1 < k; j++) {
+                turn(edges, d, bottom[j], bottom[j + 1], host);
+                d = -d;
+            }
+            if (last) {
+                double end = d > 0 ? edges.rightmost(bottom[k - 1], bottom[k - 1] + w) + margin
+                        : edges.leftmost(bottom[k - 1], bottom[k - 1] + w) - margin;
+                record(Kind.END, host, sheet.endTail(end, 0, 0, 1));
+            } else {
+                leave(i, edges, d);
+            }
+        }
+
+        /** The tail came in over the edge before: it must lie along the first pass, running in direction d. */
+        private void checkEntry(int d, double bottom) {
+            Isometry2 pose = sheet.tailPose();
+            double along = pose.dx(1, 0);
+            double across = pose.dy(1, 0);
+            double edgeY = pose.y(sheet.tailStart(false), 0);
+            double expected = d > 0 ? bottom : bottom + w;
+            if (Math.abs(along - d) > 1e-6 || Math.abs(across) > 1e-6 || Math.abs(edgeY - expected) > 1e-6 * Math.max(1, w)) {
+                throw new IllegalStateException(String.format(Locale.ROOT,
+                        "the strip came into triangle %d off its first pass (direction %.3g %.3g, edge at %.6g, expected %.6g)",
+                        pathIndex + 1, along, across, edgeY, expected));
+            }
+        }
+
+        /** A turn beyond a slanted edge from the pass in band [y, y + w] running in direction d to the band [next, next + w]. */
+        private void turn(Edges edges, int d, double y, double next, int host) throws FoldException {
+            double x1 = d > 0 ? edges.rightmost(next, y + w) + margin : edges.leftmost(next, y + w) - margin;
+            double shift = y - next;
+            if (Math.abs(shift - w) <= 1e-9 * w) {
+                // A valley fold lays the strip back across itself along the edge, a mountain fold
+                // one width on lays it flat beside the pass it left, running back.
+                record(Kind.ZIGZAG_TURN, host, sheet.foldTail(x1, y + w, d, -1, Placement.OVER, Crease.TURN));
+                record(Kind.ZIGZAG_TURN, host, sheet.foldTail(x1 + d * w, y, -d, -1, Placement.UNDER, Crease.TURN));
+                return;
+            }
+            // Two 90° turn gadgets: down a vertical band [x1, x1 + w] beyond the edge, then back
+            // along the next pass; the fold across the vertical band sets where the next pass lies.
+            double middle = x1 + d * w / 2;
+            record(Kind.TURN_GADGET, host, sheet.foldTail(x1 + d * w, 0, 0, 1, Placement.OVER, Crease.GADGET));
+            record(Kind.TURN_GADGET, host, sheet.foldTail(middle, y + w / 2, -d, -1, Placement.OVER, Crease.GADGET));
+            record(Kind.TURN_GADGET, host, sheet.foldTail(0, next, 1, 0, Placement.OVER, Crease.GADGET));
+            record(Kind.TURN_GADGET, host, sheet.foldTail(middle, next + w / 2, -d, 1, Placement.UNDER, Crease.GADGET));
+        }
+
+        /** From the last pass of triangle i (band [0, w], direction d) into the first pass of triangle i + 1. */
+        private void leave(int i, Edges edges, int d) throws FoldException {
+            HostFrame here = plan.frames[i];
+            HostFrame there = plan.frames[i + 1];
+            int host = plan.first + i;
+            double[] a = position(mesh, plan.baseFrom[i]);
+            double[] b = position(mesh, plan.baseTo[i]);
+            Isometry2 development = Isometry2.taking(0, 0, here.corners()[2], 0,
+                    there.localX(a), there.localY(a), there.localX(b), there.localY(b));
+            Isometry2 back = development.inverse();
+            int dNext = firstDirection(plan, i + 1, w);
+            double centre = there.corners()[5] - w / 2;
+            double cx = back.x(0, centre);
+            double cy = back.y(0, centre);
+            double ox = back.dx(dNext, 0);
+            double oy = back.dy(dNext, 0);
+            if (!(oy < 0)) {
+                throw new IllegalStateException("the next triangle's first pass does not run away from the edge");
+            }
+            // The gadget's turn crease: through where the two bands' centre lines meet, along the
+            // line that reflects the strip running back (-d) onto the next pass's direction.
+            double t = (w / 2 - cy) / oy;
+            double meetX = cx + t * ox;
+            double lx = -d + ox;
+            double ly = oy;
+            double reach = Math.abs(w / 2 * lx / ly);
+            double fold = d > 0 ? Math.max(edges.rightmost(0, w) + margin, meetX + reach)
+                    : Math.min(edges.leftmost(0, w) - margin, meetX - reach);
+            record(Kind.TURN_GADGET, host, sheet.foldTail(fold, 0, 0, 1, Placement.OVER, Crease.GADGET));
+            record(Kind.TURN_GADGET, host, sheet.foldTail(meetX, w / 2, lx, ly, Placement.OVER, Crease.GADGET));
+            record(Kind.EDGE_CROSSING, host, sheet.crossTail(0, 0, 1, 0, plan.first + i + 1, development));
+            // The crease over the edge must lie on the edge itself: paper beyond its ends would be
+            // joined to paper on both triangles' excess, which no tuck could then fold away.
+            Isometry2 pose = sheet.tailPose();
+            double edgeLength = here.corners()[2];
+            for (boolean side : new boolean[] {false, true}) {
+                double u = sheet.tailStart(side);
+                double v = side ? w : 0;
+                double x = back.x(pose.x(u, v), pose.y(u, v));
+                if (x < -tolerance || x > edgeLength + tolerance) {
+                    throw new FoldException(String.format(Locale.ROOT,
+                            "triangle %d of %d on the path (%s): the strip would cross the edge to the next triangle beyond its end",
+                            i + 1, plan.m, cornersText(mesh, host)));
+                }
+            }
+        }
+
+        /** Tucks the paper resting on triangle i beyond its edges under it, the edge with paper farthest beyond first. */
+        private void tuckAll(int i) throws FoldException, WrapException {
+            int host = plan.first + i;
+            double[] c = plan.frames[i].corners();
+            for (int tucks = 0; ; tucks++) {
+                int edge = -1;
+                double farthest = sheet.tolerance();
+                for (int e = 0; e < 3; e++) {
+                    double beyond = farthestBeyond(host, c, e);
+                    if (beyond > farthest) {
+                        farthest = beyond;
+                        edge = e;
+                    }
+                }
+                if (edge < 0) {
+                    return;
+                }
+                if (tucks == MAX_TUCKS) {
+                    throw new WrapException(String.format(Locale.ROOT, "triangle %d of %d on the path (%s): the excess is not"
+                            + " hidden after %d tucks: the naive tuck-under bounces paper between the edges of a sharp corner;"
+                            + " a narrower strip may help", i + 1, plan.m, cornersText(mesh, host), MAX_TUCKS));
+                }
+                int from = edge;
+                int to = (edge + 1) % 3;
+                Sheet.Tuck tuck = sheet.tuck(host, c[2 * from], c[2 * from + 1], c[2 * to] - c[2 * from], c[2 * to + 1] - c[2 * from + 1]);
+                steps.add(new Step(Kind.TUCK, strip, host, pathIndex, plan.m, -1, tuck));
+            }
+        }
+
+        /** How far the paper on the host reaches beyond edge e of the triangle (corners counter-clockwise: outside is to the right). */
+        private double farthestBeyond(int host, double[] c, int e) {
+            int from = e;
+            int to = (e + 1) % 3;
+            double dx = c[2 * to] - c[2 * from];
+            double dy = c[2 * to + 1] - c[2 * from + 1];
+            double length = Math.hypot(dx, dy);
+            double nx = dy / length;
+            double ny = -dx / length;
+            double farthest = Double.NEGATIVE_INFINITY;
+            for (int f : sheet.facesOn(host)) {
+                double[] xy = sheet.placed(f);
+                for (int k = 0; k < xy.length; k += 2) {
+                    farthest = Math.max(farthest, nx * (xy[k] - c[2 * from]) + ny * (xy[k + 1] - c[2 * from + 1]));
+                }
+            }
+            return farthest;
+        }
+
+        private void record(Kind kind, int host, int face) {
+            steps.add(new Step(kind, strip, host, pathIndex, plan.m, face, null));
+        }
+    }
+
+    /** The slanted edges in a triangle's frame (base on the x axis from (0, 0) to (b, 0), apex (sx, h)): their x at height y. */
+    private static final class Edges {
+        final double base;
+        final double sx;
+        final double h;
+
+        Edges(double[] corners) {
+            base = corners[2];
+            sx = corners[4];
+            h = corners[5];
+        }
+
+        double left(double y) {
+            return sx * y / h;
+        }
+
+        double right(double y) {
+            return base + (sx - base) * y / h;
+        }
+
+        double leftmost(double from, double to) {
+            double lo = Math.max(0, from);
+            double hi = Math.min(h, to);
+            return Math.min(left(lo), left(hi));
+        }
+
+        double rightmost(double from, double to) {
+            double lo = Math.max(0, from);
+            double hi = Math.min(h, to);
+            return Math.max(right(lo), right(hi));
+        }
+    }
+}

@@ -1,0 +1,68 @@
+package ifold.wrap;
+
+import ifold.io.AtomicFile;
+import java.io.BufferedWriter;
+import java.io.IOException;
+import java.io.OutputStreamWriter;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.List;
+
+/**
+ * Writes a wrap as OBJ: each strip an object {@code strip-K} with its own sheet starting at
+ * (0, 0); {@code v} in the model's own coordinates, {@code vt} the paper coordinates of the same
+ * vertex, the sheet's faces in group {@code paper} and the caps in group {@code cap}. Anyone
+ * can check from the file alone that the paper tiles its strip and did not stretch. Written
+ * under a temporary name and renamed: a failed export leaves no half-written file.
+ */
+public final class WrapExport {
+    private WrapExport() {
+    }
+
+    public static void writeObj(Path file, String model, Wrap.Result result, List<WrapGeometry> strips) throws IOException {
+        AtomicFile.write(file, stream -> {
+            Writer out = new BufferedWriter(new OutputStreamWriter(stream, StandardCharsets.UTF_8), 1 << 16);
+            out.write("# iFold wrap of " + model.replace('\n', ' ') + ": " + strips.size() + " strip(s), width " + result.width()
+                    + ", thickness " + result.thickness() + "\n");
+            out.write("# vt holds each vertex's paper coordinates (u, v) on its strip; group cap holds the bent paper at folds\n");
+            int base = 0;
+            for (int k = 0; k < strips.size(); k++) {
+                WrapGeometry strip = strips.get(k);
+                out.write("o strip-" + (k + 1) + "\n");
+                double[] xyz = strip.xyz();
+                double[] uv = strip.uv();
+                StringBuilder line = new StringBuilder(64);
+                for (int v = 0; v < strip.vertexCount(); v++) {
+                    line.setLength(0);
+                    line.append("v ").append(xyz[3 * v]).append(' ').append(xyz[3 * v + 1]).append(' ').append(xyz[3 * v + 2]).append('\n');
+                    out.write(line.toString());
+                }
+                for (int v = 0; v < strip.vertexCount(); v++) {
+                    line.setLength(0);
+                    line.append("vt ").append(uv[2 * v]).append(' ').append(uv[2 * v + 1]).append('\n');
+                    out.write(line.toString());
+                }
+                out.write("g paper\n");
+                writeFaces(out, strip.paperFaces(), base);
+                out.write("g cap\n");
+                writeFaces(out, strip.caps(), base);
+                base += strip.vertexCount();
+            }
+            out.flush();
+        }, true);
+    }
+
+    private static void writeFaces(Writer out, List<int[]> faces, int base) throws IOException {
+        StringBuilder line = new StringBuilder(64);
+        for (int[] face : faces) {
+            line.setLength(0);
+            line.append('f');
+            for (int v : face) {
+                int index = base + v + 1;
+                line.append(' ').append(index).append('/').append(index);
+            }
+            out.write(line.append('\n').toString());
+        }
+    }
+}

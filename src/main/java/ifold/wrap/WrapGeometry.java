@@ -1,0 +1,217 @@
+package ifold.wrap;
+
+import ifold.sheet.HostFrame;
+import ifold.sheet.Isometry2;
+import ifold.sheet.Sheet;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * A wrapped strip in space: every face of its sheet placed on its triangle at its level, with
+ * vertices shared where neighbouring faces meet, and caps where they meet at different heights
+ * (the paper bent around a fold, or over an edge of the surface).
+ *
+ * <p>A face at level k lies at height (k + 1/2)·T above its triangle: its mid-surface, so the
+ * paper's lower side touches the surface, or the face below. A cap at a flat fold on one
+ * triangle is two 45° facets: from the crease on one layer out to a row half the gap beyond
+ * it, halfway up, and back to the crease on the other layer. A cap over an edge of the surface
+ * is one quad from the crease on one triangle's layer to the crease on the other's.
+ *
+ * @param xyz x, y, z of each vertex
+ * @param uv the paper coordinates of each vertex
+ * @param paperFaces the faces of the sheet, as vertex loops (counter-clockwise on the sheet)
+ * @param paperHosts the triangle each paper face rests on
+ * @param caps the cap facets
+ * @param capAfter for each cap, the later of the two faces it joins (index in paperFaces): it exists from then on
+ */
+public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, int[] paperHosts, List<int[]> caps, int[] capAfter) {
+
+    public int vertexCount() {
+        return uv.length / 2;
+    }
+
+    /** The strip placed in space. */
+    public static WrapGeometry of(Sheet sheet, HostFrame[] frames) {
+        Builder builder = new Builder(sheet, frames);
+        return builder.build();
+    }
+
+    private static final class Builder {
+        private final Sheet sheet;
+        private final HostFrame[] frames;
+        private final int[] levels;
+        private double[] xyz = new double[3 * 64];
+        private double[] uv = new double[2 * 64];
+        private int vertices;
+        /** For each paper vertex, the space vertices made for it (a short list: one per layer it is on). */
+        private final List<int[]> copies = new ArrayList<>();
+        private final double merge;
+        /** The triangle and level each space vertex was made for (caps' middle rows: -1). */
+        private int[] copyHost = new int[64];
+        private int[] copyLevel = new int[64];
+
+        Builder(Sheet sheet, HostFrame[] frames) {
+            this.sheet = sheet;
+            this.frames = frames;
+            this.levels = sheet.levels();
+            // Without thickness, copies closer than this are the same point: rounding apart.
+            this.merge = sheet.tolerance();
+            for (int v = 0; v < sheet.vertexCount(); v++) {
+                copies.add(new int[0]);
+            }
+        }
+
+        WrapGeometry build() {
+            int faces = sheet.faceCount();
+            List<int[]> paper = new ArrayList<>(faces);
+            int[] hosts = new int[faces];
+            int[][] corners = new int[faces][];
+            for (int f = 0; f < faces; f++) {
+                int[] loop = sheet.loop(f);
+                int[] placed = new int[loop.length];
+                for (int i = 0; i < loop.length; i++) {
+                    placed[i] = vertex(f, loop[i]);
+                }
+                corners[f] = placed;
+                paper.add(placed);
+                hosts[f] = sheet.host(f);
+            }
+            List<int[]> caps = new ArrayList<>();
+            List<Integer> capAfter = new ArrayList<>();
+            for (int f = 0; f < faces; f++) {
+                int[] loop = sheet.loop(f);
+                for (int i = 0; i < loop.length; i++) {
+                    int a = loop[i];
+                    int b = loop[(i + 1) % loop.length];
+                    int g = sheet.faceAcross(a, b);
+                    if (g <= f) {
+                        continue; // the border, or the pair seen from g already
+                    }
+                    int fa = corners[f][i];
+                    int fb = corners[f][(i + 1) % loop.length];
+                    int ga = cornerOf(g, a, corners[g]);
+                    int gb = cornerOf(g, b, corners[g]);
+                    if (fa == ga && fb == gb) {
+                        continue; // the paper runs on flat, or bends over an edge with no thickness
+                    }
+                    if (sheet.host(f) != sheet.host(g)) {
+                        caps.add(new int[] {fa, fb, gb, ga});
+                        capAfter.add(g);
+                        continue;
+                    }
+                    int ma = middle(f, g, a, b, a);
+                    int mb = middle(f, g, a, b, b);
+                    caps.add(new int[] {fa, fb, mb, ma});
+                    caps.add(new int[] {ma, mb, gb, ga});
+                    capAfter.add(g);
+                    capAfter.add(g);
+                }
+            }
+            return new WrapGeometry(java.util.Arrays.copyOf(xyz, 3 * vertices), java.util.Arrays.copyOf(uv, 2 * vertices), paper,
+                    hosts, caps, capAfter.stream().mapToInt(Integer::intValue).toArray());
+        }
+
+        private int cornerOf(int g, int paperVertex, int[] placed) {
+            int[] loop = sheet.loop(g);
+            for (int i = 0; i < loop.length; i++) {
+                if (loop[i] == paperVertex) {
+                    return placed[i];
+                }
+            }
+            throw new IllegalStateException("faces across an edge do not share its vertices");
+        }
+
+        private double height(int f) {
+            return (levels[f] + 0.5) * sheet.thickness();
+        }
+
+        /**
+         * The space vertex of paper vertex p as face f places it, shared with the faces that
+         * place it at the same level of the same triangle (they agree to rounding: their poses
+         * differ by the reflections of the creases between them, which fix the crease), and,
+         * without thickness, with faces on the next triangle over an edge where the point lies.
+         */
+        private int vertex(int f, int p) {
+            Isometry2 pose = sheet.pose(f);
+            HostFrame frame = frames[sheet.host(f)];
+            double[] point = new double[3];
+            frame.toSpace(pose.x(sheet.u(p), sheet.v(p)), pose.y(sheet.u(p), sheet.v(p)), height(f), point, 0);
+            int host = sheet.host(f);
+            for (int copy : copies.get(p)) {
+                if (copyHost[copy] == host && copyLevel[copy] == levels[f]) {
+                    return copy;
+                }
+            }
+            if (sheet.thickness() == 0) {
+                for (int copy : copies.get(p)) {
+                    double dx = xyz[3 * copy] - point[0];
+                    double dy = xyz[3 * copy + 1] - point[1];
+                    double dz = xyz[3 * copy + 2] - point[2];
+                    if (dx * dx + dy * dy + dz * dz <= merge * merge) {
+                        return copy;
+                    }
+                }
+            }
+            int v = add(point, sheet.u(p), sheet.v(p));
+            if (v >= copyHost.length) {
+                copyHost = java.util.Arrays.copyOf(copyHost, 2 * v + 2);
+                copyLevel = java.util.Arrays.copyOf(copyLevel, 2 * v + 2);
+            }
+            copyHost[v] = host;
+            copyLevel[v] = levels[f];
+            int[] list = copies.get(p);
+            int[] longer = java.util.Arrays.copyOf(list, list.length + 1);
+            longer[list.length] = v;
+            copies.set(p, longer);
+            return v;
+        }
+
+        /**
+         * The cap's middle row at paper vertex p on crease (a, b) between faces f and g on one
+         * triangle: halfway between the two layers, and out beyond the crease by half the gap,
+         * on the side away from both faces (a flat fold lays them on the same side).
+         */
+        private int middle(int f, int g, int a, int b, int p) {
+            Isometry2 pose = sheet.pose(f);
+            HostFrame frame = frames[sheet.host(f)];
+            double ax = pose.x(sheet.u(a), sheet.v(a));
+            double ay = pose.y(sheet.u(a), sheet.v(a));
+            double bx = pose.x(sheet.u(b), sheet.v(b));
+            double by = pose.y(sheet.u(b), sheet.v(b));
+            double length = Math.hypot(bx - ax, by - ay);
+            // Face f runs counter-clockwise on the sheet; placed mirrored it runs clockwise, and
+            // its inside is to the right of a → b instead of the left.
+            double nx = -(by - ay) / length;
+            double ny = (bx - ax) / length;
+            if (pose.mirrors()) {
+                nx = -nx;
+                ny = -ny;
+            }
+            double gap = Math.abs(height(f) - height(g));
+            double px = pose.x(sheet.u(p), sheet.v(p)) - nx * gap / 2;
+            double py = pose.y(sheet.u(p), sheet.v(p)) - ny * gap / 2;
+            double[] point = new double[3];
+            frame.toSpace(px, py, (height(f) + height(g)) / 2, point, 0);
+            int v = add(point, sheet.u(p), sheet.v(p));
+            if (v >= copyHost.length) {
+                copyHost = java.util.Arrays.copyOf(copyHost, 2 * v + 2);
+                copyLevel = java.util.Arrays.copyOf(copyLevel, 2 * v + 2);
+            }
+            copyHost[v] = -1;
+            return v;
+        }
+
+        private int add(double[] point, double u, double v) {
+            if (3 * vertices + 3 > xyz.length) {
+                xyz = java.util.Arrays.copyOf(xyz, 2 * xyz.length);
+                uv = java.util.Arrays.copyOf(uv, 2 * uv.length);
+            }
+            xyz[3 * vertices] = point[0];
+            xyz[3 * vertices + 1] = point[1];
+            xyz[3 * vertices + 2] = point[2];
+            uv[2 * vertices] = u;
+            uv[2 * vertices + 1] = v;
+            return vertices++;
+        }
+    }
+}

@@ -1,0 +1,167 @@
+package ifold.wrap;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import ifold.mesh.HalfedgeMesh;
+import ifold.mesh.MeshBuilder;
+import ifold.mesh.PolygonSoup;
+import ifold.mesh.Solids;
+import ifold.mesh.io.MeshReaders;
+import ifold.refine.HamiltonianRefinement;
+import ifold.testing.SharedMeshes;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.SplittableRandom;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+import org.junit.jupiter.params.provider.ValueSource;
+
+/**
+ * Wraps real and made-up polyhedra and checks the exported OBJ with the independent checker
+ * ({@link WrapTruths}): one strip per component tiling its rectangle, never stretched, not torn,
+ * covering the model, flat on the surface and outside it; and that the report agrees with the file.
+ */
+class WrapTest {
+    @TempDir
+    Path dir;
+
+    /** Wraps, writes the OBJ, reads it back and checks every truth; returns the wrap. */
+    private Wrap.Result wrapAndCheck(HalfedgeMesh mesh, Wrap.Options options, int samples) throws Exception {
+        HamiltonianRefinement.Result refinement = HamiltonianRefinement.refine(mesh);
+        Wrap.Result result = Wrap.wrap(refinement, options);
+        List<WrapGeometry> geometries = new ArrayList<>();
+        for (Wrap.Strip strip : result.strips()) {
+            geometries.add(WrapGeometry.of(strip.sheet(), result.frames()));
+        }
+        WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
+        Path obj = dir.resolve("wrap.obj");
+        WrapExport.writeObj(obj, "test", result, geometries);
+        WrapTruths truths = WrapTruths.read(Files.readString(obj));
+        List<double[]> triangles = new ArrayList<>();
+        for (int f = 0; f < mesh.faceCount(); f++) {
+            double[] t = new double[9];
+            for (int k = 0; k < 3; k++) {
+                int v = mesh.faceVertex(f, k);
+                t[3 * k] = mesh.x(v);
+                t[3 * k + 1] = mesh.y(v);
+                t[3 * k + 2] = mesh.z(v);
+            }
+            triangles.add(t);
+        }
+        List<WrapTruths.Violation> violations = truths.check(triangles, result.thickness(), analysis.stackLevels(), samples, 7);
+        assertTrue(violations.isEmpty(), () -> violations.size() + " violations, the first: " + violations.subList(0, Math.min(5, violations.size())));
+        // The report agrees with the file.
+        assertEquals(refinement.componentCount(), truths.strips(), "one strip per component");
+        for (int k = 0; k < truths.strips(); k++) {
+            Wrap.Strip strip = result.strips().get(k);
+            assertEquals(strip.sheet().length(), truths.length(k), 1e-9 * strip.sheet().length(), "strip length");
+            assertEquals(result.width(), truths.width(k), 1e-12 * result.width(), "strip width");
+        }
+        assertTrue(analysis.coverage() > 1 - 1e-9, "coverage " + analysis.coverage());
+        assertTrue(analysis.isometryError() <= 1e-9, "isometry " + analysis.isometryError());
+        assertTrue(analysis.outsidePaper() <= 1e-9 * 100, "paper outside " + analysis.outsidePaper());
+        assertTrue(analysis.maxLayers() >= 1 && analysis.maxLayers() <= analysis.stackLevels(), "layers within the stack");
+        assertTrue(truths.farthestFromSurface() <= (analysis.stackLevels() + 1) * result.thickness() + 1e-9);
+        // Every fold the tail made is counted, and every path triangle but the last is left over an edge.
+        int triangleCount = refinement.mesh().faceCount();
+        assertEquals(triangleCount - refinement.componentCount(), result.count(Wrap.Kind.EDGE_CROSSING));
+        return result;
+    }
+
+    private static HalfedgeMesh build(PolygonSoup soup) throws Exception {
+        return MeshBuilder.build(soup, MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"tetrahedron", "cube", "octahedron", "icosahedron", "torus"})
+    void wrapsTheProjectsModels(String name) throws Exception {
+        HalfedgeMesh mesh = build(MeshReaders.read(Path.of("models", name + ".off")));
+        wrapAndCheck(mesh, new Wrap.Options(Double.NaN, Double.NaN), name.equals("torus") ? 3000 : 2000);
+    }
+
+    @Test
+    void narrowerStripsAndZeroThickness() throws Exception {
+        HalfedgeMesh cube = build(Solids.cube());
+        Wrap.Result widest = wrapAndCheck(cube, new Wrap.Options(Double.NaN, Double.NaN), 1000);
+        Wrap.Result narrow = wrapAndCheck(cube, new Wrap.Options(widest.width() / 3.7, Double.NaN), 1000);
+        assertTrue(narrow.count(Wrap.Kind.ZIGZAG_TURN) > widest.count(Wrap.Kind.ZIGZAG_TURN), "more passes on a narrower strip");
+        wrapAndCheck(cube, new Wrap.Options(widest.width() / 2, 0), 1000);
+    }
+
+    @Test
+    void twoComponentsGetTwoStrips() throws Exception {
+        PolygonSoup soup = new PolygonSoup();
+        for (double offset : new double[] {0, 5}) {
+            int base = soup.vertexCount();
+            PolygonSoup tetrahedron = Solids.tetrahedron();
+            for (int v = 0; v < tetrahedron.vertexCount(); v++) {
+                soup.addVertex(tetrahedron.coordinate(v, 0) + offset, tetrahedron.coordinate(v, 1), tetrahedron.coordinate(v, 2));
+            }
+            for (int f = 0; f < tetrahedron.faceCount(); f++) {
+                int[] face = new int[tetrahedron.faceSize(f)];
+                for (int k = 0; k < face.length; k++) {
+                    face[k] = base + tetrahedron.faceVertex(f, k);
+                }
+                soup.addFace(face, face.length, 0);
+            }
+        }
+        Wrap.Result result = wrapAndCheck(build(soup), new Wrap.Options(Double.NaN, Double.NaN), 1000);
+        assertEquals(2, result.strips().size());
+    }
+
+    /** Star-shaped polyhedra with reflex edges: an icosahedron whose corners move in and out at random. */
+    @ParameterizedTest
+    @ValueSource(longs = {1, 2, 3, 4, 5, 6})
+    void wrapsRandomNonConvexPolyhedra(long seed) throws Exception {
+        SplittableRandom random = new SplittableRandom(seed);
+        PolygonSoup ico = Solids.icosahedron();
+        PolygonSoup soup = new PolygonSoup();
+        for (int v = 0; v < ico.vertexCount(); v++) {
+            double scale = 0.6 + 0.8 * random.nextDouble();
+            soup.addVertex(scale * ico.coordinate(v, 0), scale * ico.coordinate(v, 1), scale * ico.coordinate(v, 2));
+        }
+        for (int f = 0; f < ico.faceCount(); f++) {
+            int[] face = {ico.faceVertex(f, 0), ico.faceVertex(f, 1), ico.faceVertex(f, 2)};
+            soup.addFace(face, 3, 0);
+        }
+        wrapAndCheck(build(soup), new Wrap.Options(Double.NaN, Double.NaN), 1000);
+    }
+
+    static Stream<String> polyhedra() {
+        Path folder = SharedMeshes.ROOT.resolve("polyhedra");
+        if (!Files.isDirectory(folder)) {
+            return Stream.of("(../shared/meshes absent)");
+        }
+        try (Stream<Path> files = Files.list(folder)) {
+            return files.map(p -> p.getFileName().toString()).filter(n -> n.endsWith(".off")).sorted().toList().stream();
+        } catch (java.io.IOException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    @ParameterizedTest
+    @MethodSource("polyhedra")
+    void wrapsTheSharedPolyhedra(String name) throws Exception {
+        Path file = SharedMeshes.ROOT.resolve("polyhedra").resolve(name);
+        assumeTrue(Files.isRegularFile(file), "../shared/meshes is absent");
+        wrapAndCheck(build(MeshReaders.read(file)), new Wrap.Options(Double.NaN, Double.NaN), 2000);
+    }
+
+    @Test
+    void aWidthTooWideNamesTheTriangle() throws Exception {
+        HalfedgeMesh cube = build(Solids.cube());
+        HamiltonianRefinement.Result refinement = HamiltonianRefinement.refine(cube);
+        double widest = Wrap.wrap(refinement, new Wrap.Options(Double.NaN, Double.NaN)).width();
+        Wrap.WrapException e = assertThrows(Wrap.WrapException.class,
+                () -> Wrap.wrap(refinement, new Wrap.Options(widest * 1.01, Double.NaN)));
+        assertTrue(e.getMessage().matches(".*too wide for triangle \\d+ of 58 on the path \\(\\(.*\\)\\).*"), e.getMessage());
+    }
+}

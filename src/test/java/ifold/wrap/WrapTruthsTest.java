@@ -1,0 +1,466 @@
+package ifold.wrap;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import ifold.wrap.WrapTruths.Violation;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Set;
+import java.util.TreeSet;
+import java.util.stream.Collectors;
+import org.junit.jupiter.api.Test;
+
+/** The checker on tiny hand-made wraps: each truth holds where it should and breaks where it should. */
+class WrapTruthsTest {
+    private static final double T = 0.01;
+
+    /** The unit square in z = 0, normal +z, cut along its diagonal from (0, 0) to (1, 1). */
+    private static final List<double[]> SQUARE = List.of(
+            new double[] {0, 0, 0, 1, 0, 0, 1, 1, 0},
+            new double[] {0, 0, 0, 1, 1, 0, 0, 1, 0});
+
+    /** Two faces of the unit cube at the edge x = 1, z = 1: the top (normal +z) and the side x = 1 (normal +x). */
+    private static final List<double[]> CUBE_EDGE = List.of(
+            new double[] {0, 0, 1, 1, 0, 1, 1, 1, 1},
+            new double[] {0, 0, 1, 1, 1, 1, 0, 1, 1},
+            new double[] {1, 0, 0, 1, 1, 0, 1, 1, 1},
+            new double[] {1, 0, 0, 1, 1, 1, 1, 0, 1});
+
+    /** The sheet [0, 1]^2 lying flat on the square half a thickness up, as the square's two triangles. */
+    private static final String FLAT = """
+            # a strip lying flat on the unit square
+            o strip-1
+            v 0.0 0.0 0.005
+            vt 0.0 0.0
+            v 1.0 0.0 0.005
+            vt 1.0 0.0
+            v 1.0 1.0 0.005
+            vt 1.0 1.0
+            v 0.0 1.0 0.005
+            vt 0.0 1.0
+            g paper
+            f 1/1 2/2 3/3
+            f 4/4 3/3 1/1
+            """;
+
+    /**
+     * The strip [0, 2] x [0, 1] bent over the cube's edge: u in [0, 1] on the top half a thickness
+     * up, u in [1, 2] down the side half a thickness out; a cap quad bridges the bend.
+     */
+    private static final String BENT = """
+            o strip-1
+            v 0.0 0.0 1.005
+            vt 0.0 0.0
+            v 1.0 0.0 1.005
+            vt 1.0 0.0
+            v 1.0 1.0 1.005
+            vt 1.0 1.0
+            v 0.0 1.0 1.005
+            vt 0.0 1.0
+            v 1.005 0.0 1.0
+            vt 1.0 0.0
+            v 1.005 1.0 1.0
+            vt 1.0 1.0
+            v 1.005 1.0 0.0
+            vt 2.0 1.0
+            v 1.005 0.0 0.0
+            vt 2.0 0.0
+            g paper
+            f 1/1 2/2 3/3
+            f 1/1 3/3 4/4
+            f 8/8 7/7 6/6
+            f 8/8 6/6 5/5
+            g cap
+            f 2/2 3/3 6/6 5/5
+            """;
+
+    private static List<Violation> check(String obj, List<double[]> model, double thickness) {
+        return WrapTruths.read(obj).check(model, thickness, 1, 500, 7);
+    }
+
+    private static Set<String> truths(List<Violation> violations) {
+        return violations.stream().map(Violation::truth).collect(Collectors.toCollection(TreeSet::new));
+    }
+
+    /** Some violation of the truth says every one of the words. */
+    private static void assertBroken(List<Violation> violations, String truth, String... words) {
+        assertTrue(violations.stream().anyMatch(v -> v.truth().equals(truth) && Arrays.stream(words).allMatch(v.message()::contains)),
+                truth + " " + List.of(words) + " among " + violations);
+    }
+
+    @Test
+    void flatStripKeepsEveryTruth() {
+        WrapTruths wrap = WrapTruths.read(FLAT);
+        assertEquals(List.of(), wrap.check(SQUARE, T, 1, 2000, 1));
+        assertEquals(1, wrap.strips());
+        assertEquals("strip-1", wrap.stripName(0));
+        assertEquals(1.0, wrap.length(0));
+        assertEquals(1.0, wrap.width(0));
+        assertEquals(2, wrap.paperFaces());
+        assertEquals(0, wrap.capFaces());
+        assertEquals(0.0, wrap.worstIsometry());
+        assertEquals(0.005, wrap.farthestFromSurface(), 1e-15);
+    }
+
+    @Test
+    void flippedPaperKeepsEveryTruth() {
+        // The sheet mirrored: v on the sheet is 1 - y in space.
+        String flipped = """
+                o strip-1
+                v 0.0 0.0 0.005
+                vt 0.0 1.0
+                v 1.0 0.0 0.005
+                vt 1.0 1.0
+                v 1.0 1.0 0.005
+                vt 1.0 0.0
+                v 0.0 1.0 0.005
+                vt 0.0 0.0
+                g paper
+                f 1/1 2/2 3/3
+                f 4/4 3/3 1/1
+                """;
+        assertEquals(List.of(), check(flipped, SQUARE, T));
+    }
+
+    @Test
+    void faceTokensWithoutPaperIndicesUseTheVertexIndex() {
+        assertEquals(List.of(), check(FLAT.replace("f 1/1 2/2 3/3", "f 1 2 3"), SQUARE, T));
+    }
+
+    @Test
+    void zeroThicknessWantsThePaperOnTheSurface() {
+        String onSurface = FLAT.replace(" 0.005", " 0.0");
+        assertEquals(List.of(), check(onSurface, SQUARE, 0));
+        assertEquals(List.of(), WrapTruths.read(onSurface).check(SQUARE, 0, 3, 100, 1));
+        assertBroken(check(FLAT, SQUARE, 0), WrapTruths.ON_SURFACE, "face 1", "above it");
+    }
+
+    @Test
+    void stretchedFaceBreaksIsometry() {
+        // Vertex 2 pulled in from (1, 0) to (0.9, 0): face 1 no longer matches its sheet triangle, and leaves a corner bare.
+        List<Violation> violations = check(FLAT.replace("v 1.0 0.0 0.005", "v 0.9 0.0 0.005"), SQUARE, T);
+        assertEquals(Set.of(WrapTruths.ISOMETRIC, WrapTruths.COVERED), truths(violations), violations.toString());
+        assertBroken(violations, WrapTruths.ISOMETRIC, "face 1 (line 12, strip-1)", "vertices 1 and 2", "0.9 apart in space but 1.0 on the sheet");
+    }
+
+    @Test
+    void bentFaceBreaksPlanarityEvenWhereDistancesHold() {
+        // One corner of a quad lifted by 1e-5 changes its distances by ~5e-11 only, but leaves the plane by ~2.5e-6.
+        String quad = """
+                o strip-1
+                v 0.0 0.0 0.005
+                vt 0.0 0.0
+                v 1.0 0.0 0.005
+                vt 1.0 0.0
+                v 1.0 1.0 0.00501
+                vt 1.0 1.0
+                v 0.0 1.0 0.005
+                vt 0.0 1.0
+                g paper
+                f 1 2 3 4
+                """;
+        WrapTruths wrap = WrapTruths.read(quad);
+        List<Violation> violations = wrap.check(List.of(new double[] {-1, -1, 0, 3, -1, 0, -1, 3, 0}), T, 1, 0, 1);
+        assertBroken(violations, WrapTruths.ISOMETRIC, "face 1", "off the face's plane");
+        assertTrue(wrap.worstIsometry() > 1e-9 && wrap.worstIsometry() < 1e-5, "worst " + wrap.worstIsometry());
+    }
+
+    @Test
+    void missingTriangleLeavesAGapOnTheSheetAndBareSurface() {
+        List<Violation> violations = check(FLAT.replace("f 4/4 3/3 1/1\n", ""), SQUARE, T);
+        assertEquals(Set.of(WrapTruths.TILED, WrapTruths.COVERED), truths(violations), violations.toString());
+        assertBroken(violations, WrapTruths.TILED, "strip-1's paper faces have area 0.5", "not L * w = 1.0 * 1.0");
+        assertBroken(violations, WrapTruths.TILED, "sheet points of strip-1 lie in no paper face");
+        assertBroken(violations, WrapTruths.COVERED, "of triangle 2 lies under no paper face");
+    }
+
+    @Test
+    void faceTwiceOverlapsItself() {
+        List<Violation> violations = check(FLAT + "f 1/1 2/2 3/3\n", SQUARE, T);
+        assertEquals(Set.of(WrapTruths.TILED), truths(violations), violations.toString());
+        assertBroken(violations, WrapTruths.TILED, "lie in two paper faces", "face 1 (line 12, strip-1) and face 3 (line 14, strip-1)");
+        assertBroken(violations, WrapTruths.TILED, "area 1.5");
+    }
+
+    @Test
+    void sheetMustStartAtTheOrigin() {
+        String shifted = FLAT.replace("vt 0.0", "vt 0.5").replace("vt 1.0", "vt 1.5");
+        assertBroken(check(shifted, SQUARE, T), WrapTruths.TILED, "strip-1's sheet starts at (0.5, 0.0), not at (0, 0)");
+    }
+
+    @Test
+    void nonConvexFaceIsRefused() {
+        // A dart inside the square's first triangle, its reflex corner at (0.4, 0.2).
+        String dart = """
+                o strip-1
+                v 0.0 0.0 0.0
+                vt 0.0 0.0
+                v 1.0 0.0 0.0
+                vt 1.0 0.0
+                v 0.4 0.2 0.0
+                vt 0.4 0.2
+                v 1.0 1.0 0.0
+                vt 1.0 1.0
+                g paper
+                f 1 2 3 4
+                """;
+        assertBroken(check(dart, SQUARE, 0), WrapTruths.TILED, "face 1", "is not a convex polygon on the sheet");
+    }
+
+    @Test
+    void degenerateFaceIsRefused() {
+        assertBroken(check(FLAT + "f 1 1 3\n", SQUARE, T), WrapTruths.TILED, "face 3", "has no area on the sheet");
+    }
+
+    @Test
+    void verticesBelongToOneStrip() {
+        // strip-2's face takes strip-1's vertices 1 and 3.
+        String two = FLAT.replace("f 4/4 3/3 1/1\n", "o strip-2\ng paper\nf 4/4 3/3 1/1\n");
+        List<Violation> violations = check(two, SQUARE, T);
+        assertBroken(violations, WrapTruths.TILED, "vertex 3 is used by strip-1 and by face 2 (line 15, strip-2)");
+        assertBroken(violations, WrapTruths.TILED, "paper coordinate 3 is used by strip-1");
+    }
+
+    @Test
+    void emptyStripIsRefused() {
+        assertBroken(check(FLAT + "o strip-2\n", SQUARE, T), WrapTruths.TILED, "strip-2 has no paper faces");
+    }
+
+    /** FLAT with its second triangle raised a quarter thickness on vertices of its own, then extra lines. */
+    private static String stepped(String extra) {
+        return """
+                o strip-1
+                v 0.0 0.0 0.005
+                vt 0.0 0.0
+                v 1.0 0.0 0.005
+                vt 1.0 0.0
+                v 1.0 1.0 0.005
+                vt 1.0 1.0
+                v 0.0 0.0 0.0075
+                vt 0.0 0.0
+                v 0.0 1.0 0.0075
+                vt 0.0 1.0
+                v 1.0 1.0 0.0075
+                vt 1.0 1.0
+                g paper
+                f 1 2 3
+                f 4 6 5
+                """ + extra;
+    }
+
+    @Test
+    void facesSplitInSpaceWithoutACapAreTorn() {
+        List<Violation> violations = check(stepped(""), SQUARE, T);
+        assertEquals(Set.of(WrapTruths.TILED, WrapTruths.NOT_TORN), truths(violations), violations.toString());
+        assertBroken(violations, WrapTruths.NOT_TORN, "face 1 (line 15, strip-1) and face 2 (line 16, strip-1) meet on the sheet",
+                "along (0.0, 0.0) - (1.0, 1.0)", "with no cap there");
+        assertBroken(violations, WrapTruths.TILED, "strip-1 falls apart into 2 pieces in space");
+    }
+
+    @Test
+    void capBridgesAStep() {
+        assertEquals(List.of(), check(stepped("g cap\nf 1 3 6 4\n"), SQUARE, T));
+    }
+
+    @Test
+    void capAtOneEndOnlyLeavesATear() {
+        // The cap reaches the raised face at (0, 0) but not at (1, 1).
+        List<Violation> violations = check(stepped("g cap\nf 1 3 4\n"), SQUARE, T);
+        assertEquals(Set.of(WrapTruths.NOT_TORN), truths(violations), violations.toString());
+        assertBroken(violations, WrapTruths.NOT_TORN, "at (1.0, 1.0) they are", "with no cap there");
+    }
+
+    @Test
+    void capWithAreaOnTheSheetIsRefused() {
+        assertBroken(check(stepped("g cap\nf 1 2 6 4\n"), SQUARE, T), WrapTruths.TILED, "cap face 3", "has area 0.5 on the sheet");
+    }
+
+    @Test
+    void capsBridgeNothingAtZeroThickness() {
+        assertBroken(check(stepped("g cap\nf 1 3 6 4\n"), SQUARE, 0), WrapTruths.NOT_TORN, "more than a cap can bridge (0.0)");
+    }
+
+    @Test
+    void tJunctionsAreNeighboursAndPositionsJoinPieces() {
+        // Face 1 is the square's first triangle; faces 2 and 3 split the second at (0.5, 0.5), a
+        // point in the middle of face 1's diagonal. No vertex index is shared: positions join them.
+        String tee = """
+                o strip-1
+                v 0.0 0.0 0.005
+                vt 0.0 0.0
+                v 1.0 0.0 0.005
+                vt 1.0 0.0
+                v 1.0 1.0 0.005
+                vt 1.0 1.0
+                v 0.0 0.0 0.005
+                vt 0.0 0.0
+                v 0.5 0.5 0.005
+                vt 0.5 0.5
+                v 0.0 1.0 0.005
+                vt 0.0 1.0
+                v 0.5 0.5 Z
+                vt 0.5 0.5
+                v 1.0 1.0 Z
+                vt 1.0 1.0
+                v 0.0 1.0 Z
+                vt 0.0 1.0
+                g paper
+                f 1 2 3
+                f 4 5 6
+                f 7 8 9
+                """;
+        assertEquals(List.of(), check(tee.replace("Z", "0.005"), SQUARE, T));
+        List<Violation> violations = check(tee.replace("Z", "0.0075"), SQUARE, T);
+        assertBroken(violations, WrapTruths.NOT_TORN, "face 1 (line 21, strip-1) and face 3 (line 23, strip-1) meet on the sheet along (0.5, 0.5) - (1.0, 1.0)");
+        assertBroken(violations, WrapTruths.NOT_TORN, "face 2 (line 22, strip-1) and face 3");
+        assertBroken(violations, WrapTruths.TILED, "falls apart into 2 pieces");
+    }
+
+    @Test
+    void faceBelowTheSurfaceIsInsideTheSolid() {
+        List<Violation> violations = check(FLAT.replace(" 0.005", " -0.005"), SQUARE, T);
+        assertEquals(Set.of(WrapTruths.COVERED, WrapTruths.ON_SURFACE), truths(violations), violations.toString());
+        assertBroken(violations, WrapTruths.ON_SURFACE, "face 1", "below it, inside the solid");
+        assertBroken(violations, WrapTruths.ON_SURFACE, "face 2", "below it, inside the solid");
+    }
+
+    @Test
+    void faceTooHighIsOffTheSurface() {
+        // Higher than (maxStack + 1) * thickness = 0.02.
+        List<Violation> violations = check(FLAT.replace(" 0.005", " 0.03"), SQUARE, T);
+        assertEquals(Set.of(WrapTruths.COVERED, WrapTruths.ON_SURFACE), truths(violations), violations.toString());
+        assertBroken(violations, WrapTruths.ON_SURFACE, "face 1", "0.03 above it, more than (maxStack + 1) * thickness = 0.02");
+    }
+
+    @Test
+    void tiltedFaceIsParallelToNoTriangle() {
+        // The whole strip turned by 1e-3 radians about the x axis: still isometric, no longer flat on the square.
+        double c = Math.cos(1e-3);
+        double s = Math.sin(1e-3);
+        String tilted = FLAT.replace("v 1.0 1.0 0.005", "v 1.0 " + c + " " + (0.005 + s))
+                .replace("v 0.0 1.0 0.005", "v 0.0 " + c + " " + (0.005 + s));
+        List<Violation> violations = check(tilted, SQUARE, T);
+        assertEquals(Set.of(WrapTruths.COVERED, WrapTruths.ON_SURFACE), truths(violations), violations.toString());
+        assertBroken(violations, WrapTruths.ON_SURFACE, "face 1", "none within reach is parallel to it");
+    }
+
+    @Test
+    void faceOverhangingItsTriangleIsOffTheSurface() {
+        // Slid 0.1 along x: the faces stick out of the square and of their triangles.
+        String slid = FLAT.replace("v 0.0", "v 0.1").replace("v 1.0", "v 1.1");
+        List<Violation> violations = check(slid, SQUARE, T);
+        assertEquals(Set.of(WrapTruths.COVERED, WrapTruths.ON_SURFACE), truths(violations), violations.toString());
+        assertBroken(violations, WrapTruths.ON_SURFACE, "face 1", "lies outside it, at barycentric");
+    }
+
+    @Test
+    void stripBentOverACubeEdgeWithACapKeepsEveryTruth() {
+        WrapTruths wrap = WrapTruths.read(BENT);
+        assertEquals(List.of(), wrap.check(CUBE_EDGE, T, 1, 2000, 3));
+        assertEquals(2.0, wrap.length(0));
+        assertEquals(1.0, wrap.width(0));
+        assertEquals(4, wrap.paperFaces());
+        assertEquals(1, wrap.capFaces());
+        assertEquals(0.005, wrap.farthestFromSurface(), 1e-12);
+    }
+
+    @Test
+    void stripBentOverACubeEdgeAtZeroThicknessNeedsNoCap() {
+        String onSurface = BENT.replace("1.005", "1.0").replace("g cap\nf 2/2 3/3 6/6 5/5\n", "");
+        assertEquals(List.of(), check(onSurface, CUBE_EDGE, 0));
+    }
+
+    @Test
+    void capTooLongIsATear() {
+        // The side paper starts 0.05 below the edge: the cap would have to span more than two stacks.
+        String dropped = BENT.replace("v 1.005 0.0 1.0", "v 1.005 0.0 0.95").replace("v 1.005 1.0 1.0", "v 1.005 1.0 0.95")
+                .replace("v 1.005 1.0 0.0", "v 1.005 1.0 -0.05").replace("v 1.005 0.0 0.0", "v 1.005 0.0 -0.05");
+        List<Violation> violations = check(dropped, CUBE_EDGE, T);
+        assertBroken(violations, WrapTruths.NOT_TORN, "face 1", "face 4", "more than a cap can bridge (0.04)");
+    }
+
+    @Test
+    void capVertexFarFromTheSurfaceIsRefused() {
+        List<Violation> violations = check(BENT + "v 1.5 0.0 1.5\nvt 1.0 0.0\nf 2/2 5/5 9/9\n", CUBE_EDGE, T);
+        assertEquals(Set.of(WrapTruths.ON_SURFACE), truths(violations), violations.toString());
+        assertBroken(violations, WrapTruths.ON_SURFACE, "cap vertex 9 (1.5, 0.0, 1.5) of face 6", "from the surface, more than 2 (maxStack + 1) * thickness = 0.04");
+    }
+
+    @Test
+    void manyViolationsAreCountedNotAllListed() {
+        List<Violation> violations = WrapTruths.read(FLAT.replace(" 0.005", " -0.005")).check(SQUARE, T, 1, 300, 5);
+        long covered = violations.stream().filter(v -> v.truth().equals(WrapTruths.COVERED)).count();
+        assertEquals(WrapTruths.LISTED_PER_TRUTH + 1, covered);
+        assertBroken(violations, WrapTruths.COVERED, "251 more violations of this truth not listed");
+    }
+
+    @Test
+    void malformedFilesAreRefusedWithTheirLine() {
+        assertRefused("o s\nv 0 0 0\nvt 0 0\nf 1 1 1\n", "line 4: a face before any 'g paper' or 'g cap'");
+        assertRefused("v 0 0 0\ng paper\nf 1 1 1\n", "line 3: a face before any 'o' strip");
+        assertRefused("o s\ng paper\nv 0 0 0\nvt 0 0\nf 1 1\n", "line 5: a face needs 3 or more corners");
+        assertRefused("o s\ng paper\nv 0 0 0\nvt 0 0\nf 1 1 2\n", "line 5: vertex 2 is not among the 1 read so far");
+        assertRefused("o s\ng paper\nv 0 0 0\nf 1 1 1\n", "line 4: corner 1 has no paper coordinate");
+        assertRefused("o s\ng paper\nv 0 zero 0\n", "line 3: not a number");
+        assertRefused("o s\ng sheet\n", "line 2: the groups are paper and cap, not 'sheet'");
+    }
+
+    private static void assertRefused(String obj, String message) {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> WrapTruths.read(obj));
+        assertTrue(e.getMessage().contains(message), e.getMessage());
+    }
+
+    @Test
+    void badArgumentsAreRefused() {
+        WrapTruths wrap = WrapTruths.read(FLAT);
+        assertThrows(IllegalArgumentException.class, () -> wrap.check(SQUARE, -T, 1, 10, 1));
+        assertThrows(IllegalArgumentException.class, () -> wrap.check(SQUARE, T, -1, 10, 1));
+        assertThrows(IllegalArgumentException.class, () -> wrap.check(List.of(), T, 1, 10, 1));
+        assertThrows(IllegalArgumentException.class, () -> wrap.check(List.of(new double[] {0, 0, 0}), T, 1, 10, 1));
+    }
+
+    @Test
+    void largeWrapIsCheckedQuickly() {
+        // A 1000 x 1 strip flat on a rectangle of 6,000 triangles (3,000 columns, each cut along its
+        // diagonal), as 54,000 paper triangles: each column a 3 x 3 grid of squares cut the same way.
+        int columns = 3000;
+        int nu = 3 * columns;
+        int nv = 3;
+        List<double[]> model = new ArrayList<>();
+        for (int i = 0; i < columns; i++) {
+            double x0 = i / 3.0;
+            double x1 = (i + 1) / 3.0;
+            model.add(new double[] {x0, 0, 0, x1, 0, 0, x1, 1, 0});
+            model.add(new double[] {x0, 0, 0, x1, 1, 0, x0, 1, 0});
+        }
+        StringBuilder obj = new StringBuilder("o strip-1\n");
+        for (int i = 0; i <= nu; i++) {
+            for (int j = 0; j <= nv; j++) {
+                double u = i / 9.0;
+                double v = j / 3.0;
+                obj.append("v ").append(u).append(' ').append(v).append(' ').append(T / 2).append('\n');
+                obj.append("vt ").append(u).append(' ').append(v).append('\n');
+            }
+        }
+        obj.append("g paper\n");
+        for (int i = 0; i < nu; i++) {
+            for (int j = 0; j < nv; j++) {
+                int a = i * (nv + 1) + j + 1;
+                int b = a + nv + 1;
+                obj.append("f ").append(a).append(' ').append(b).append(' ').append(b + 1).append('\n');
+                obj.append("f ").append(a).append(' ').append(b + 1).append(' ').append(a + 1).append('\n');
+            }
+        }
+        long start = System.nanoTime();
+        WrapTruths wrap = WrapTruths.read(obj.toString());
+        List<Violation> violations = wrap.check(model, T, 1, 5000, 11);
+        double seconds = (System.nanoTime() - start) / 1e9;
+        assertEquals(54_000, wrap.paperFaces(), "check the setup");
+        assertEquals(1000.0, wrap.length(0), 1e-12);
+        assertEquals(List.of(), violations);
+        assertTrue(seconds < 20, "took " + seconds + " s");
+    }
+}
