@@ -1,5 +1,10 @@
 package ifold.mesh;
 
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+
 /**
  * Small models the project makes itself, as polygon soups oriented outward: the Platonic solids
  * used in tests and in {@code models/}, a torus, a single triangle and the twelve-triangle sheet
@@ -65,6 +70,65 @@ public final class Solids {
             soup.addTriangle(t[0], t[1], t[2]);
         }
         return soup;
+    }
+
+    /**
+     * The icosahedron with each triangle cut into 4^{@code subdivisions} and every vertex pushed
+     * out onto its circumscribed sphere: 20 · 4^subdivisions triangles, all nearly equilateral.
+     */
+    public static PolygonSoup icosphere(int subdivisions) {
+        if (subdivisions < 0 || subdivisions > 8) {
+            throw new IllegalArgumentException("an icosphere has 0 to 8 subdivisions, got " + subdivisions);
+        }
+        PolygonSoup ico = icosahedron();
+        List<double[]> vertices = new ArrayList<>();
+        for (int v = 0; v < ico.vertexCount(); v++) {
+            vertices.add(new double[] {ico.coordinate(v, 0), ico.coordinate(v, 1), ico.coordinate(v, 2)});
+        }
+        double radius = Math.sqrt(1 + (1 + Math.sqrt(5)) * (1 + Math.sqrt(5)) / 4);
+        List<int[]> triangles = new ArrayList<>();
+        for (int f = 0; f < ico.faceCount(); f++) {
+            triangles.add(new int[] {ico.faceVertex(f, 0), ico.faceVertex(f, 1), ico.faceVertex(f, 2)});
+        }
+        for (int level = 0; level < subdivisions; level++) {
+            Map<Long, Integer> midpoints = new HashMap<>();
+            List<int[]> finer = new ArrayList<>();
+            for (int[] t : triangles) {
+                int ab = midpoint(t[0], t[1], vertices, midpoints, radius);
+                int bc = midpoint(t[1], t[2], vertices, midpoints, radius);
+                int ca = midpoint(t[2], t[0], vertices, midpoints, radius);
+                finer.add(new int[] {t[0], ab, ca});
+                finer.add(new int[] {ab, t[1], bc});
+                finer.add(new int[] {ca, bc, t[2]});
+                finer.add(new int[] {ab, bc, ca});
+            }
+            triangles = finer;
+        }
+        PolygonSoup soup = new PolygonSoup();
+        for (double[] v : vertices) {
+            soup.addVertex(v[0], v[1], v[2]);
+        }
+        for (int[] t : triangles) {
+            soup.addTriangle(t[0], t[1], t[2]);
+        }
+        return soup;
+    }
+
+    private static int midpoint(int a, int b, List<double[]> vertices, Map<Long, Integer> midpoints, double radius) {
+        long key = ((long) Math.min(a, b) << 32) | Math.max(a, b);
+        Integer known = midpoints.get(key);
+        if (known != null) {
+            return known;
+        }
+        double[] p = vertices.get(a);
+        double[] q = vertices.get(b);
+        double x = (p[0] + q[0]) / 2;
+        double y = (p[1] + q[1]) / 2;
+        double z = (p[2] + q[2]) / 2;
+        double scale = radius / Math.sqrt(x * x + y * y + z * z);
+        vertices.add(new double[] {x * scale, y * scale, z * scale});
+        midpoints.put(key, vertices.size() - 1);
+        return vertices.size() - 1;
     }
 
     /**

@@ -313,6 +313,7 @@ public final class Sheet {
         }
         for (int f : moving) {
             poseOf.set(f, reflection.after(poseOf.get(f)));
+            changed(f);
         }
         for (int i = 0; i < stack.count; i++) {
             int g = stack.faces[i];
@@ -381,6 +382,7 @@ public final class Sheet {
         }
         unregister(f);
         loops.set(f, Arrays.copyOf(near, nearCount));
+        changed(f);
         register(f);
         int g = loops.size();
         loops.add(Arrays.copyOf(far, farCount));
@@ -425,6 +427,7 @@ public final class Sheet {
         faceOfEdge.put(directed(b, m), g);
         faceOfEdge.put(directed(m, a), g);
         loops.set(g, longer);
+        changed(g);
         Crease crease = creases.remove(undirected(a, b));
         if (crease != null) {
             creases.put(undirected(a, m), crease);
@@ -473,9 +476,47 @@ public final class Sheet {
     }
 
     private boolean overlap(int f, int g) {
-        double[] a = placed(f);
-        double[] b = placed(g);
+        double[] a = placedCached(f);
+        double[] b = placedCached(g);
+        // Bounding boxes first: most faces of a triangle lie apart, and this is four comparisons.
+        double[] boxA = boxes.get(f);
+        double[] boxB = boxes.get(g);
+        if (boxA[0] >= boxB[2] - tolerance || boxB[0] >= boxA[2] - tolerance || boxA[1] >= boxB[3] - tolerance
+                || boxB[1] >= boxA[3] - tolerance) {
+            return false;
+        }
         return Polygons2.overlap(a, a.length / 2, b, b.length / 2, tolerance);
+    }
+
+    /** Each face's corners in its host's frame and its bounding box, kept until the face changes. */
+    private final List<double[]> placements = new ArrayList<>();
+    private final List<double[]> boxes = new ArrayList<>();
+
+    private double[] placedCached(int f) {
+        while (placements.size() <= f) {
+            placements.add(null);
+            boxes.add(null);
+        }
+        double[] xy = placements.get(f);
+        if (xy == null) {
+            xy = placed(f);
+            double[] box = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+            for (int k = 0; k < xy.length; k += 2) {
+                box[0] = Math.min(box[0], xy[k]);
+                box[1] = Math.min(box[1], xy[k + 1]);
+                box[2] = Math.max(box[2], xy[k]);
+                box[3] = Math.max(box[3], xy[k + 1]);
+            }
+            placements.set(f, xy);
+            boxes.set(f, box);
+        }
+        return xy;
+    }
+
+    private void changed(int f) {
+        if (f < placements.size()) {
+            placements.set(f, null);
+        }
     }
 
     /** Face f's corners in its host's frame, x0 y0 x1 y1 ... */

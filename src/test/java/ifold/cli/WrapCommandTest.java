@@ -1,0 +1,79 @@
+package ifold.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** {@code ifold wrap}: the report and the OBJ agree, and every bad input is one line with nothing written. */
+class WrapCommandTest {
+    @TempDir
+    Path dir;
+
+    @Test
+    void wrapsTheCubeAndTheReportAgreesWithTheFile() throws Exception {
+        Path obj = dir.resolve("cube.obj");
+        Path report = dir.resolve("cube.json");
+        CliTest.Run run = CliTest.run("wrap", "models/cube.off", "--no-view", "--export-obj", obj.toString(), "--report", report.toString());
+        assertEquals(0, run.code(), run.err());
+        String json = Files.readString(report);
+        assertEquals(12, number(json, "inputTriangles"), 0);
+        assertEquals(58, number(json, "refinedTriangles"), 0, "5n - 2");
+        assertEquals(1.0, number(json, "coverage"), 1e-12);
+        assertEquals(57, number(json, "edgeCrossings"), 0, "one fold over an edge between each two triangles of the path");
+        assertTrue(number(json, "isometryError") <= 1e-9, json);
+        assertTrue(number(json, "maxLayers") <= number(json, "stackLayers"), json);
+        double length = number(json, "length");
+        double width = number(json, "width");
+        assertEquals(6 / (length * width), number(json, "paperEfficiency"), 1e-9, "the cube's area over L·w");
+        assertEquals(number(json, "thickness"), width / 80, 1e-15, "thickness defaults to w / 80");
+        assertTrue(run.out().contains("coverage 1.000"), run.out());
+        ObjReadBack back = ObjReadBack.read(obj);
+        assertTrue(back.paperFaces() > 0 && back.capFaces() > 0, "paper and caps written");
+        assertTrue(Files.readString(obj).contains("\no strip-1\n"), "the strip is an object of its own");
+    }
+
+    @Test
+    void badInputGetsOneLineAndWritesNothing() throws Exception {
+        Path report = dir.resolve("r.json");
+        Path obj = dir.resolve("r.obj");
+        String[] outputs = {"--no-view", "--report", report.toString(), "--export-obj", obj.toString()};
+        assertOptionError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--width", "-1"}, outputs)), "--width");
+        assertOptionError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--thickness", "-0.1"}, outputs)), "--thickness");
+        assertOptionError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--width", "0.1", "--thickness", "0.5"}, outputs)),
+                "--thickness");
+        CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--width", "0.3"}, outputs)),
+                "too wide for triangle", "of 58 on the path");
+        CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", dir.resolve("missing.off").toString()}, outputs)),
+                "missing.off", "no such file");
+        Path broken = dir.resolve("broken.off");
+        Files.writeString(broken, "OFF\n3 1 0\n0 0 0\n1 0 0\n");
+        CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", broken.toString()}, outputs)), "broken.off");
+        assertFalse(Files.exists(report), "no report after a failure");
+        assertFalse(Files.exists(obj), "no OBJ after a failure");
+    }
+
+    private static void assertOptionError(CliTest.Run run, String option) {
+        assertEquals(2, run.code(), "a mistyped option exits 2: " + run.err());
+        assertTrue(run.err().startsWith("ifold: option " + option), run.err());
+        assertFalse(run.err().contains("\tat "), "no stack trace");
+    }
+
+    private static String[] concat(String[] a, String[] b) {
+        String[] all = java.util.Arrays.copyOf(a, a.length + b.length);
+        System.arraycopy(b, 0, all, a.length, b.length);
+        return all;
+    }
+
+    private static double number(String json, String key) {
+        Matcher m = Pattern.compile("\"" + key + "\": ([-0-9.eE+]+)").matcher(json);
+        assertTrue(m.find(), key + " in " + json);
+        return Double.parseDouble(m.group(1));
+    }
+}
