@@ -60,7 +60,9 @@ public final class Polygons2 {
      * when none of it, beyond {@code tolerance}, is there.
      */
     public static double[] clip(double[] xy, int n, double nx, double ny, double c, double tolerance) {
-        double[] out = new double[2 * (n + 1)];
+        // A convex polygon cut by a line has at most n + 1 corners; rounding on a nearly flat one can
+        // make a point hop across the line and back, so leave room.
+        double[] out = new double[4 * n];
         int m = 0;
         boolean any = false;
         for (int i = 0; i < n; i++) {

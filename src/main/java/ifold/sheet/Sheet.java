@@ -215,6 +215,7 @@ public final class Sheet {
         creases.put(undirected(a, b), kind);
         tailA = a;
         tailB = b;
+        tailPose = tailPose.anchoredAt(u(a), 0); // kept about where the tail now begins: exact however long the strip
         return face;
     }
 

@@ -49,7 +49,13 @@ import java.util.Locale;
  */
 public final class Wrap {
     /** The most tucks on one triangle before giving up (the naïve tucks bounce between the edges of a sharp corner). */
-    public static final int MAX_TUCKS = 60;
+    public static final int MAX_TUCKS = 300;
+
+    /**
+     * The most passes over all triangles: each is a few faces and folds, so this keeps a wrap
+     * within a few seconds and a gigabyte.
+     */
+    public static final long MAX_PASSES = 2_000_000;
 
     private Wrap() {
     }
@@ -195,6 +201,32 @@ public final class Wrap {
             for (int i = 0; i < plan.m; i++) {
                 frames[plan.first + i] = plan.frames[i];
             }
+        }
+        // The passes are known before any fold: refuse a wrap too big to make rather than run out
+        // of memory or time in it (a sliver sets the widest strip, and a big triangle then needs
+        // millions of passes of it).
+        long passes = 0;
+        int most = -1;
+        int mostPasses = 0;
+        for (PathPlan plan : plans) {
+            for (int i = 0; i < plan.m; i++) {
+                int k = passes(plan.frames[i].corners()[5], width);
+                passes += k;
+                if (k > mostPasses) {
+                    mostPasses = k;
+                    most = plan.first + i;
+                }
+            }
+        }
+        if (passes > MAX_PASSES) {
+            throw new WrapException(String.format(Locale.ROOT, "a strip %.4g wide would need %d passes, more than the %d iFold makes: "
+                    + "triangle %s alone needs %d; %s", width, passes, MAX_PASSES, cornersText(mesh, most), mostPasses,
+                    Double.isNaN(options.width()) ? "the widest strip is set by the narrowest triangle ("
+                    + cornersText(mesh, narrowest) + "): a model with slivers needs its faces remeshed first"
+                    : "give a wider --width"));
+        }
+        for (int c = 0; c < plans.size(); c++) {
+            PathPlan plan = plans.get(c);
             try {
                 strips.add(new Folding(mesh, plan, c, width, thickness, tolerance, steps).fold());
             } catch (FoldException e) {

@@ -46,6 +46,7 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
         /** For each paper vertex, the space vertices made for it (a short list: one per layer it is on). */
         private final List<int[]> copies = new ArrayList<>();
         private final double merge;
+        private final double exact;
         /** The triangle and level each space vertex was made for (caps' middle rows: -1). */
         private int[] copyHost = new int[64];
         private int[] copyLevel = new int[64];
@@ -56,6 +57,10 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
             this.levels = sheet.levels();
             // Without thickness, copies closer than this are the same point: rounding apart.
             this.merge = sheet.tolerance();
+            // Faces on one layer share a vertex where their poses agree to rounding; a crease
+            // vertex computed a little off its crease makes the two sides differ by more, and each
+            // then keeps its own copy, so that no face is bent by a neighbour's rounding.
+            this.exact = sheet.tolerance() * 1e-3;
             for (int v = 0; v < sheet.vertexCount(); v++) {
                 copies.add(new int[0]);
             }
@@ -91,7 +96,7 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     int fb = corners[f][(i + 1) % loop.length];
                     int ga = cornerOf(g, a, corners[g]);
                     int gb = cornerOf(g, b, corners[g]);
-                    if (fa == ga && fb == gb) {
+                    if ((fa == ga || samePlace(fa, ga)) && (fb == gb || samePlace(fb, gb))) {
                         continue; // the paper runs on flat, or bends over an edge with no thickness
                     }
                     if (sheet.host(f) != sheet.host(g)) {
@@ -138,16 +143,13 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
             frame.toSpace(pose.x(sheet.u(p), sheet.v(p)), pose.y(sheet.u(p), sheet.v(p)), height(f), point, 0);
             int host = sheet.host(f);
             for (int copy : copies.get(p)) {
-                if (copyHost[copy] == host && copyLevel[copy] == levels[f]) {
+                if (copyHost[copy] == host && copyLevel[copy] == levels[f] && closer(copy, point, exact)) {
                     return copy;
                 }
             }
             if (sheet.thickness() == 0) {
                 for (int copy : copies.get(p)) {
-                    double dx = xyz[3 * copy] - point[0];
-                    double dy = xyz[3 * copy + 1] - point[1];
-                    double dz = xyz[3 * copy + 2] - point[2];
-                    if (dx * dx + dy * dy + dz * dz <= merge * merge) {
+                    if (closer(copy, point, merge)) {
                         return copy;
                     }
                 }
@@ -199,6 +201,17 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
             }
             copyHost[v] = -1;
             return v;
+        }
+
+        private boolean closer(int copy, double[] point, double distance) {
+            double dx = xyz[3 * copy] - point[0];
+            double dy = xyz[3 * copy + 1] - point[1];
+            double dz = xyz[3 * copy + 2] - point[2];
+            return dx * dx + dy * dy + dz * dz <= distance * distance;
+        }
+
+        private boolean samePlace(int a, int b) {
+            return closer(a, new double[] {xyz[3 * b], xyz[3 * b + 1], xyz[3 * b + 2]}, merge);
         }
 
         private int add(double[] point, double u, double v) {
