@@ -106,6 +106,11 @@ final class PaperOutputs {
      * frames; {@code defaultSeconds} is its length unless --seconds says otherwise.
      */
     void show(Scene scene, Animation animation, String title, double defaultSeconds, boolean autoplay, CommandSpec spec) {
+        show(scene, animation, title, defaultSeconds, autoplay, spec, 4);
+    }
+
+    /** As {@link #show(Scene, Animation, String, double, boolean, CommandSpec)}, with {@code samples} per pixel of antialiasing. */
+    void show(Scene scene, Animation animation, String title, double defaultSeconds, boolean autoplay, CommandSpec spec, int samples) {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         boolean secondsGiven = spec.commandLine().getParseResult().hasMatchedOption("--seconds");
@@ -114,7 +119,7 @@ final class PaperOutputs {
             try {
                 int frames = Math.max(1, (int) Math.round(frameOptions.fps * seconds));
                 FrameExport.Result result = FrameExport.export(scene, animation, frameOptions.frames, frameOptions.width,
-                        frameOptions.height, frames, 4, err);
+                        frameOptions.height, frames, samples, err);
                 out.printf(Locale.ROOT, "wrote %d frames of %dx%d to %s in %.1f s (%.1f frames/s)%n", result.frames(),
                         frameOptions.width, frameOptions.height, frameOptions.frames.toAbsolutePath(), result.seconds(),
                         result.framesPerSecond());
@@ -131,7 +136,7 @@ final class PaperOutputs {
                 player.togglePlaying(); // space pauses it
             }
             try {
-                new ViewerWindow(scene, player, title, err, 4).show("iFold - " + title, 1280, 720, 0);
+                new ViewerWindow(scene, player, title, err, samples).show("iFold - " + title, 1280, 720, 0);
             } catch (RenderUnavailableException e) {
                 discardWritten();
                 throw new UserError(e.getMessage() + "; or render frames with --frames DIR, or pass --no-view");

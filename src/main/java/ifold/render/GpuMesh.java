@@ -73,10 +73,15 @@ final class GpuMesh {
 
     /** Draws the triangles with their colours bound to texture unit 0. */
     void drawFaces(GL3 gl) {
+        drawFaces(gl, triangleCount);
+    }
+
+    /** Draws the first {@code count} triangles (at most all of them). */
+    void drawFaces(GL3 gl, int count) {
         gl.glActiveTexture(GL3.GL_TEXTURE0);
         gl.glBindTexture(GL3.GL_TEXTURE_BUFFER, textures[0]);
         gl.glBindVertexArray(arrays[0]);
-        gl.glDrawElements(GL3.GL_TRIANGLES, 3 * triangleCount, GL3.GL_UNSIGNED_INT, 0);
+        gl.glDrawElements(GL3.GL_TRIANGLES, 3 * Math.max(0, Math.min(count, triangleCount)), GL3.GL_UNSIGNED_INT, 0);
     }
 
     /** Draws the edges with their colours bound to texture unit 0. */

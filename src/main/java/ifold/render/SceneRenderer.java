@@ -124,7 +124,8 @@ public final class SceneRenderer {
             gl.glEnable(GL3.GL_CULL_FACE);
             gl.glCullFace(GL3.GL_BACK);
         }
-        mesh.drawFaces(gl);
+        // A clear hidden colour: the triangles not yet revealed are not there, and are not drawn.
+        mesh.drawFaces(gl, (geometry.hiddenColor() >>> 24) == 0 ? geometry.revealed() : Integer.MAX_VALUE);
         gl.glDisable(GL3.GL_CULL_FACE); // paper is seen from both sides
         gl.glDisable(GL3.GL_POLYGON_OFFSET_FILL);
     }

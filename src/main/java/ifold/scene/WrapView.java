@@ -1,11 +1,13 @@
 package ifold.scene;
 
 import ifold.refine.RefinedMesh;
+import ifold.sheet.HostFrame;
+import ifold.sheet.Isometry2;
+import ifold.sheet.Sheet;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapGeometry;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 import org.joml.AxisAngle4d;
 import org.joml.Quaterniond;
 import org.joml.Quaterniondc;
@@ -89,109 +91,345 @@ public final class WrapView {
     }
 
     /**
-     * The animation: the strips laid triangle by triangle along their paths (four fifths of its
-     * length), the camera following; then a turn around the wrapped model.
+     * The animation, four fifths of its length the wrap and the last fifth a turn around the
+     * wrapped model. The wrap plays its folds in order: the tail swinging about each new crease
+     * (over or under the paper it lands on, or over the edge onto the next triangle), and the
+     * tucks turning the excess under along the triangle's edges, the camera following the
+     * triangle being wrapped. Triangles already wrapped are a prefix of {@code done}; the one
+     * being wrapped, as it stands at the fold shown, and the swinging paper are drawn by
+     * {@code current}, rebuilt for each frame (it is a few dozen faces).
      */
-    public static Animation animation(Scene scene, Geometry paper, Strips strips, Wrap.Result result) {
-        RefinedMesh mesh = result.mesh();
-        int total = 0;
-        for (Wrap.Strip strip : result.strips()) {
-            total += strip.triangles();
-        }
-        int triangles = total;
-        double[] centres = new double[3 * triangles];
-        double[] normals = new double[3 * triangles];
-        int[] stripOf = new int[triangles];
-        int[] indexOf = new int[triangles];
-        int g = 0;
-        for (int k = 0; k < result.strips().size(); k++) {
-            Wrap.Strip strip = result.strips().get(k);
-            for (int i = 0; i < strip.triangles(); i++, g++) {
-                int t = strip.firstTriangle() + i;
-                double[] n = result.frames()[t].normal();
-                for (int axis = 0; axis < 3; axis++) {
-                    double sum = 0;
-                    for (int c = 0; c < 3; c++) {
-                        sum += mesh.coordinate(mesh.faceVertex(t, c), axis);
-                    }
-                    centres[3 * g + axis] = sum / 3;
-                    normals[3 * g + axis] = n[axis];
-                }
-                stripOf[g] = k;
-                indexOf[g] = i;
-            }
-        }
-        Bounds bounds = scene.bounds();
-        Vector3d modelCentre = bounds.center(new Vector3d());
-        double modelRadius = bounds.radius();
-        // The camera follows a moving average of the triangles, so that it glides rather than jumps.
-        int window = Math.max(1, triangles / 40);
-        Quaterniondc finalView = new Quaterniond().rotateX(-0.5).rotateY(0.6);
-        return new Animation() {
-            @Override
-            public int stepCount() {
-                return REVEAL_STEPS + TURN_STEPS;
-            }
+    public static Animation animation(Scene scene, Geometry done, Geometry current, Strips strips, Wrap.Result result) {
+        return new Playback(scene, done, current, strips, result);
+    }
 
-            @Override
-            public void apply(double position) {
-                Camera camera = scene.camera();
-                if (position >= REVEAL_STEPS) {
-                    paper.setRevealed(Geometry.ALL);
-                    camera.frame(modelCentre, modelRadius);
-                    double angle = Math.toRadians((position - REVEAL_STEPS) * 360.0 / TURN_STEPS);
-                    camera.setOrientation(new Quaterniond(finalView).mul(new Quaterniond().rotationY(angle)));
-                    return;
-                }
-                double along = position / REVEAL_STEPS * triangles;
-                int at = Math.min(triangles - 1, (int) Math.floor(along));
-                double fraction = along - at;
-                int k = stripOf[at];
-                int i = indexOf[at];
-                int from = i == 0 ? (k == 0 ? 0 : strips.trianglesAfter()[k - 1][strips.trianglesAfter()[k - 1].length - 1])
-                        : strips.trianglesAfter()[k][i - 1];
-                int to = strips.trianglesAfter()[k][i];
-                paper.setRevealed(from + (int) Math.round(fraction * (to - from)));
-                Vector3d centre = new Vector3d();
-                Vector3d normal = new Vector3d();
-                double weights = 0;
-                for (int j = Math.max(0, at - window); j <= Math.min(triangles - 1, at + window); j++) {
-                    double weight = window + 1 - Math.abs(j - along);
-                    if (weight <= 0) {
-                        continue;
+    private static final class Playback implements Animation {
+        private final Scene scene;
+        private final Geometry done;
+        private final Geometry current;
+        private final Strips strips;
+        private final Wrap.Result result;
+        private final List<Wrap.Step> steps;
+        /** For each step, its place among all path triangles (strips one after another). */
+        private final int[] triangleOf;
+        private final int triangles;
+        private final double[] centres;
+        private final double[] normals;
+        private final Vector3d modelCentre;
+        private final double modelRadius;
+        private final int window;
+        private final Quaterniondc finalView = new Quaterniond().rotateX(-0.5).rotateY(0.6);
+        private double shown = -1;
+
+        Playback(Scene scene, Geometry done, Geometry current, Strips strips, Wrap.Result result) {
+            this.scene = scene;
+            this.done = done;
+            this.current = current;
+            this.strips = strips;
+            this.result = result;
+            this.steps = result.steps();
+            RefinedMesh mesh = result.mesh();
+            int[] firstOfStrip = new int[result.strips().size()];
+            int total = 0;
+            for (int k = 0; k < result.strips().size(); k++) {
+                firstOfStrip[k] = total;
+                total += result.strips().get(k).triangles();
+            }
+            triangles = total;
+            triangleOf = new int[steps.size()];
+            for (int j = 0; j < steps.size(); j++) {
+                triangleOf[j] = firstOfStrip[steps.get(j).strip()] + steps.get(j).pathIndex();
+            }
+            centres = new double[3 * triangles];
+            normals = new double[3 * triangles];
+            int g = 0;
+            for (Wrap.Strip strip : result.strips()) {
+                for (int i = 0; i < strip.triangles(); i++, g++) {
+                    int t = strip.firstTriangle() + i;
+                    double[] n = result.frames()[t].normal();
+                    for (int axis = 0; axis < 3; axis++) {
+                        double sum = 0;
+                        for (int c = 0; c < 3; c++) {
+                            sum += mesh.coordinate(mesh.faceVertex(t, c), axis);
+                        }
+                        centres[3 * g + axis] = sum / 3;
+                        normals[3 * g + axis] = n[axis];
                     }
-                    centre.fma(weight, new Vector3d(centres[3 * j], centres[3 * j + 1], centres[3 * j + 2]));
-                    normal.fma(weight, new Vector3d(normals[3 * j], normals[3 * j + 1], normals[3 * j + 2]));
-                    weights += weight;
                 }
+            }
+            Bounds bounds = scene.bounds();
+            modelCentre = bounds.center(new Vector3d());
+            modelRadius = bounds.radius();
+            // The camera follows a moving average of the triangles, so that it glides rather than jumps.
+            window = Math.max(1, triangles / 40);
+        }
+
+        @Override
+        public int stepCount() {
+            return REVEAL_STEPS + TURN_STEPS;
+        }
+
+        /** The step (fold) shown at a position, with how far it has gone. */
+        private double along(double position) {
+            return Math.min(steps.size(), position / REVEAL_STEPS * steps.size());
+        }
+
+        @Override
+        public void apply(double position) {
+            if (position == shown) {
+                return;
+            }
+            shown = position;
+            Camera camera = scene.camera();
+            if (position >= REVEAL_STEPS || steps.isEmpty()) {
+                done.setRevealed(Geometry.ALL);
+                current.setMesh(EMPTY);
+                camera.frame(modelCentre, modelRadius);
+                double angle = Math.toRadians((position - REVEAL_STEPS) * 360.0 / TURN_STEPS);
+                camera.setOrientation(new Quaterniond(finalView).mul(new Quaterniond().rotationY(Math.max(0, angle))));
+                return;
+            }
+            double along = along(position);
+            int j = Math.min(steps.size() - 1, (int) Math.floor(along));
+            double fraction = along - j;
+            Wrap.Step step = steps.get(j);
+            Wrap.Strip strip = result.strips().get(step.strip());
+            int i = step.pathIndex();
+            int k = step.strip();
+            // Triangles wrapped before this one are done; this one is drawn as it stands.
+            int doneTriangles = i > 0 ? strips.trianglesAfter()[k][i - 1] : k > 0 ? last(strips.trianglesAfter()[k - 1]) : 0;
+            done.setRevealed(doneTriangles);
+            int firstFace = i > 0 ? strip.facesAfter()[i - 1] : 0;
+            current.setMesh(currentMesh(strip, step, j, firstFace, fraction));
+            follow(camera, triangleOf[j] + Math.min(1, (j + fraction - firstStepOf(j)) / Math.max(1, stepsOf(j))));
+        }
+
+        private static int last(int[] a) {
+            return a[a.length - 1];
+        }
+
+        private int firstStepOf(int j) {
+            int first = j;
+            while (first > 0 && triangleOf[first - 1] == triangleOf[j]) {
+                first--;
+            }
+            return first;
+        }
+
+        private int stepsOf(int j) {
+            int first = firstStepOf(j);
+            int end = j;
+            while (end < steps.size() && triangleOf[end] == triangleOf[j]) {
+                end++;
+            }
+            return end - first;
+        }
+
+        private void follow(Camera camera, double at) {
+            Vector3d centre = new Vector3d();
+            Vector3d normal = new Vector3d();
+            double weights = 0;
+            int middle = (int) Math.floor(at);
+            for (int t = Math.max(0, middle - window); t <= Math.min(triangles - 1, middle + window + 1); t++) {
+                double weight = window + 1 - Math.abs(t + 0.5 - at);
+                if (weight <= 0) {
+                    continue;
+                }
+                centre.fma(weight, new Vector3d(centres[3 * t], centres[3 * t + 1], centres[3 * t + 2]));
+                normal.fma(weight, new Vector3d(normals[3 * t], normals[3 * t + 1], normals[3 * t + 2]));
+                weights += weight;
+            }
+            int here = Math.min(triangles - 1, Math.max(0, middle));
+            if (weights == 0) {
+                centre.set(centres[3 * here], centres[3 * here + 1], centres[3 * here + 2]);
+            } else {
                 centre.div(weights);
-                if (normal.length() < 1e-9) {
-                    normal.set(normals[3 * at], normals[3 * at + 1], normals[3 * at + 2]);
-                }
-                normal.normalize();
-                camera.frame(centre, 0.55 * modelRadius);
-                camera.setSceneRadius(3 * modelRadius);
-                camera.setOrientation(new Quaterniond().rotateX(-0.35).mul(frontToViewer(normal)));
             }
+            if (normal.length() < 1e-9) {
+                normal.set(normals[3 * here], normals[3 * here + 1], normals[3 * here + 2]);
+            }
+            normal.normalize();
+            camera.frame(centre, 0.55 * modelRadius);
+            camera.setSceneRadius(3 * modelRadius);
+            camera.setOrientation(new Quaterniond().rotateX(-0.35).mul(frontToViewer(normal)));
+        }
 
-            @Override
-            public String describe(double position) {
-                if (position >= REVEAL_STEPS) {
-                    return "wrapped: " + result.strips().size() + " strip(s) over " + triangles + " triangles";
-                }
-                double along = position / REVEAL_STEPS * triangles;
-                int at = Math.min(triangles - 1, (int) Math.floor(along));
-                int k = stripOf[at];
-                int i = indexOf[at];
-                int from = i == 0 ? (k == 0 ? 0 : strips.trianglesAfter()[k - 1][strips.trianglesAfter()[k - 1].length - 1])
-                        : strips.trianglesAfter()[k][i - 1];
-                int revealed = from + (int) Math.round((along - at) * (strips.trianglesAfter()[k][i] - from));
-                String what = revealed <= strips.trianglesBeforeTucks()[k][i] ? "zig-zag passes, turn gadget, fold over the edge"
-                        : "tucks: the excess folded under";
-                return String.format(Locale.ROOT, "%striangle %d of %d: %s", result.strips().size() > 1 ? "strip " + (k + 1) + ", " : "",
-                        i + 1, result.strips().get(k).triangles(), what);
+        /**
+         * The triangle being wrapped at step j: its faces as they stand then (the final state with
+         * the tucks after step j undone), and the paper in motion: the tail swinging about its new
+         * crease, or the flap of a tuck turning under.
+         */
+        private SceneMesh currentMesh(Wrap.Strip strip, Wrap.Step step, int j, int firstFace, double fraction) {
+            Sheet sheet = strip.sheet();
+            int end = step.facesAfter();
+            int count = end - firstFace;
+            int[][] loops = new int[count][];
+            Isometry2[] poses = new Isometry2[count];
+            for (int f = firstFace; f < end; f++) {
+                loops[f - firstFace] = sheet.loop(f);
+                poses[f - firstFace] = sheet.pose(f);
             }
-        };
+            // Undo the tucks of this triangle after the one shown.
+            int lastStep = j;
+            while (lastStep + 1 < steps.size() && triangleOf[lastStep + 1] == triangleOf[j]) {
+                lastStep++;
+            }
+            for (int q = lastStep; q > j; q--) {
+                Sheet.Tuck tuck = steps.get(q).tuck();
+                if (tuck == null) {
+                    continue;
+                }
+                for (int c = 0; c < tuck.changed().length; c++) {
+                    int f = tuck.changed()[c];
+                    if (f >= firstFace && f < end) {
+                        loops[f - firstFace] = tuck.loopsBefore()[c];
+                        poses[f - firstFace] = tuck.posesBefore()[c];
+                    }
+                }
+            }
+            // A tuck being shown: its faces are cut already, and the flap turns from where it lay
+            // (its reflection back over the tuck line) to under the paper.
+            java.util.Set<Integer> turning = new java.util.HashSet<>();
+            Sheet.Tuck shownTuck = step.kind() == Wrap.Kind.TUCK ? step.tuck() : null;
+            if (shownTuck != null) {
+                Isometry2 back = Isometry2.reflection(shownTuck.px(), shownTuck.py(), shownTuck.dx(), shownTuck.dy());
+                for (int f : shownTuck.moved()) {
+                    if (f >= firstFace && f < end) {
+                        turning.add(f);
+                        poses[f - firstFace] = back.after(poses[f - firstFace]);
+                    }
+                }
+            }
+            int[] levels = sheet.levels();
+            double thickness = sheet.thickness();
+            List<double[]> points = new ArrayList<>();
+            List<int[]> triangles = new ArrayList<>();
+            List<Integer> colors = new ArrayList<>();
+            HostFrame frame = result.frames()[step.triangle()];
+            for (int f = firstFace; f < end; f++) {
+                int[] loop = loops[f - firstFace];
+                Isometry2 pose = poses[f - firstFace];
+                double height = (levels[f] + 0.5) * thickness;
+                HostFrame on = result.frames()[sheet.host(f)];
+                double[][] corners = new double[loop.length][];
+                for (int c = 0; c < loop.length; c++) {
+                    double u = sheet.u(loop[c]);
+                    double v = sheet.v(loop[c]);
+                    double[] point = new double[3];
+                    on.toSpace(pose.x(u, v), pose.y(u, v), height, point, 0);
+                    if (turning.contains(f)) {
+                        point = turnAbout(point, frame, shownTuck.px(), shownTuck.py(), shownTuck.dx(), shownTuck.dy(), Math.PI * fraction);
+                    }
+                    corners[c] = point;
+                }
+                // Counter-clockwise on the sheet; a mirrored pose shows its underside, drawn as such.
+                addPolygon(corners, PaperView.PAPER, points, triangles, colors);
+            }
+            if (step.tail() != null && step.kind() != Wrap.Kind.END) {
+                addTail(sheet, step.tail(), fraction, points, triangles, colors);
+            }
+            double[] positions = new double[3 * points.size()];
+            for (int p = 0; p < points.size(); p++) {
+                System.arraycopy(points.get(p), 0, positions, 3 * p, 3);
+            }
+            int[] flat = new int[3 * triangles.size()];
+            for (int t = 0; t < triangles.size(); t++) {
+                System.arraycopy(triangles.get(t), 0, flat, 3 * t, 3);
+            }
+            return new SceneMesh(positions, flat, colors.stream().mapToInt(Integer::intValue).toArray(), new int[0], new int[0]);
+        }
+
+        /**
+         * The tail beyond its new crease, two widths of it, swinging from where it would run on
+         * unfolded to where the fold lays it: a turn about the crease line in space.
+         */
+        private void addTail(Sheet sheet, Wrap.TailMove move, double fraction, List<double[]> points, List<int[]> triangles,
+                List<Integer> colors) {
+            double w = sheet.width();
+            double[][] paper = {{move.u0(), 0}, {move.u0() + 2 * w, 0}, {move.u1() + 2 * w, w}, {move.u1(), w}};
+            HostFrame before = result.frames()[move.hostBefore()];
+            HostFrame after = result.frames()[move.hostAfter()];
+            double height = (topLevel(sheet, move.hostBefore()) + 1.5) * sheet.thickness();
+            double[][] from = new double[4][3];
+            double[][] to = new double[4][3];
+            for (int c = 0; c < 4; c++) {
+                before.toSpace(move.before().x(paper[c][0], paper[c][1]), move.before().y(paper[c][0], paper[c][1]), height, from[c], 0);
+                after.toSpace(move.after().x(paper[c][0], paper[c][1]), move.after().y(paper[c][0], paper[c][1]), height, to[c], 0);
+            }
+            // The axis: the crease, where both placements agree; the angle: between the stub's
+            // direction across the axis before and after.
+            Vector3d a = new Vector3d(from[0][0], from[0][1], from[0][2]);
+            Vector3d axis = new Vector3d(from[3][0], from[3][1], from[3][2]).sub(a).normalize();
+            Vector3d out0 = new Vector3d(from[1][0], from[1][1], from[1][2]).sub(a);
+            out0.fma(-out0.dot(axis), axis).normalize();
+            Vector3d out1 = new Vector3d(to[1][0], to[1][1], to[1][2]).sub(new Vector3d(to[0][0], to[0][1], to[0][2]));
+            out1.fma(-out1.dot(axis), axis).normalize();
+            double angle = Math.atan2(new Vector3d(out0).cross(out1).dot(axis), out0.dot(out1));
+            if (Math.abs(Math.abs(angle) - Math.PI) < 1e-6) {
+                // A flat fold: swing over (towards the triangle's outside) or under, as the fold says.
+                Vector3d up = new Vector3d(before.normal()[0], before.normal()[1], before.normal()[2]);
+                double sign = new Vector3d(axis).cross(out0).dot(up) > 0 ? 1 : -1;
+                angle = move.over() ? sign * Math.PI : -sign * Math.PI;
+            }
+            double[][] corners = new double[4][];
+            for (int c = 0; c < 4; c++) {
+                corners[c] = rotate(from[c], a, axis, angle * fraction);
+            }
+            addPolygon(corners, PaperView.CAP, points, triangles, colors);
+        }
+
+        private int topLevel(Sheet sheet, int host) {
+            int top = -1;
+            int[] levels = sheet.levels();
+            for (int f : sheet.facesOn(host)) {
+                top = Math.max(top, levels[f]);
+            }
+            return top;
+        }
+
+        @Override
+        public String describe(double position) {
+            if (position >= REVEAL_STEPS || steps.isEmpty()) {
+                return "wrapped: " + result.strips().size() + " strip(s) over " + triangles + " triangles";
+            }
+            int j = Math.min(steps.size() - 1, (int) Math.floor(along(position)));
+            Wrap.Step step = steps.get(j);
+            return (result.strips().size() > 1 ? "strip " + (step.strip() + 1) + ", " : "") + step.describe();
+        }
+    }
+
+    private static final SceneMesh EMPTY = new SceneMesh(new double[0], new int[0], new int[0], new int[0], new int[0]);
+
+    private static void addPolygon(double[][] corners, int color, List<double[]> points, List<int[]> triangles, List<Integer> colors) {
+        int base = points.size();
+        for (double[] corner : corners) {
+            points.add(corner);
+        }
+        for (int c = 1; c + 1 < corners.length; c++) {
+            triangles.add(new int[] {base, base + c, base + c + 1});
+            colors.add(color);
+        }
+    }
+
+    /** A point turned by {@code angle} about the line through (px, py) with direction (dx, dy) in a triangle's frame, at height 0. */
+    private static double[] turnAbout(double[] point, HostFrame frame, double px, double py, double dx, double dy, double angle) {
+        double[] a = new double[3];
+        frame.toSpace(px, py, 0, a, 0);
+        double[] b = new double[3];
+        frame.toSpace(px + dx, py + dy, 0, b, 0);
+        Vector3d axis = new Vector3d(b[0] - a[0], b[1] - a[1], b[2] - a[2]).normalize();
+        return rotate(point, new Vector3d(a[0], a[1], a[2]), axis, angle);
+    }
+
+    /** Rodrigues: p turned by {@code angle} about the axis through {@code origin}. */
+    private static double[] rotate(double[] p, Vector3d origin, Vector3d axis, double angle) {
+        Vector3d v = new Vector3d(p[0], p[1], p[2]).sub(origin);
+        double c = Math.cos(angle);
+        double s = Math.sin(angle);
+        Vector3d cross = new Vector3d(axis).cross(v);
+        double dot = axis.dot(v);
+        Vector3d r = new Vector3d(v).mul(c).fma(s, cross).fma(dot * (1 - c), axis).add(origin);
+        return new double[] {r.x, r.y, r.z};
     }
 
     /** The turn that brings {@code normal} to face the viewer (+z in the camera's frame). */

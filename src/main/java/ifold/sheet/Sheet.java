@@ -230,8 +230,13 @@ public final class Sheet {
      * @param py its y
      * @param dx the line's direction; the paper on its right turned
      * @param dy its y
+     * @param facesBefore the faces of the sheet before the tuck: those from it on were cut off by it
+     * @param changed the faces that were there before and were cut or moved
+     * @param loopsBefore their loops before the tuck
+     * @param posesBefore their poses before the tuck
      */
-    public record Tuck(int host, int[] moved, double px, double py, double dx, double dy) {
+    public record Tuck(int host, int[] moved, double px, double py, double dx, double dy, int facesBefore, int[] changed,
+            int[][] loopsBefore, Isometry2[] posesBefore) {
     }
 
     /**
@@ -254,6 +259,10 @@ public final class Sheet {
         Map<Long, Integer> splitOfEdge = new HashMap<>();
         Set<Integer> moving = new HashSet<>();
         int faces = stack.count;
+        int facesBefore = loops.size();
+        List<Integer> changed = new ArrayList<>();
+        List<int[]> loopsBefore = new ArrayList<>();
+        List<Isometry2> posesBefore = new ArrayList<>();
         for (int i = 0; i < faces; i++) {
             int f = stack.faces[i];
             int[] loop = loops.get(f);
@@ -268,6 +277,9 @@ public final class Sheet {
             if (max <= tolerance) {
                 continue;
             }
+            changed.add(f);
+            loopsBefore.add(loop);
+            posesBefore.add(pose);
             if (min >= -tolerance) {
                 moving.add(f);
                 continue;
@@ -330,7 +342,8 @@ public final class Sheet {
         stack.above = kept;
         stack.levels = null;
         int[] moved = moving.stream().mapToInt(Integer::intValue).sorted().toArray();
-        return new Tuck(host, moved, px, py, dx, dy);
+        return new Tuck(host, moved, px, py, dx, dy, facesBefore, changed.stream().mapToInt(Integer::intValue).toArray(),
+                loopsBefore.toArray(new int[0][]), posesBefore.toArray(new Isometry2[0]));
     }
 
     /**

@@ -82,8 +82,11 @@ public final class Wrap {
      * @param pathLength the triangles of that path
      * @param face the face it laid, or -1 for a tuck
      * @param tuck the tuck, or null
+     * @param facesAfter the faces of the strip's sheet once it is made
+     * @param tail for a fold of the tail, where the tail lay before and after it; else null
      */
-    public record Step(Kind kind, int strip, int triangle, int pathIndex, int pathLength, int face, Sheet.Tuck tuck) {
+    public record Step(Kind kind, int strip, int triangle, int pathIndex, int pathLength, int face, Sheet.Tuck tuck, int facesAfter,
+            TailMove tail) {
         public String describe() {
             String what = switch (kind) {
                 case ZIGZAG_TURN -> "zig-zag turn (45° fold)";
@@ -94,6 +97,21 @@ public final class Wrap {
             };
             return String.format(Locale.ROOT, "triangle %d of %d: %s", pathIndex + 1, pathLength, what);
         }
+    }
+
+    /**
+     * The tail's move in a fold: it swings about the new crease, from running on straight to
+     * where the fold lays it.
+     *
+     * @param hostBefore the triangle it lay on before
+     * @param before its pose there
+     * @param hostAfter the triangle it lies on after
+     * @param after its pose there
+     * @param u0 where the crease meets the strip's edge v = 0, in paper coordinates
+     * @param u1 and its edge v = w
+     * @param over whether it swings over the paper (away from the surface) or under
+     */
+    public record TailMove(int hostBefore, Isometry2 before, int hostAfter, Isometry2 after, double u0, double u1, boolean over) {
     }
 
     /**
@@ -528,17 +546,17 @@ public final class Wrap {
             if (Math.abs(shift - w) <= 1e-9 * w) {
                 // A valley fold lays the strip back across itself along the edge, a mountain fold
                 // one width on lays it flat beside the pass it left, running back.
-                record(Kind.ZIGZAG_TURN, host, sheet.foldTail(x1, y + w, d, -1, Placement.OVER, Crease.TURN));
-                record(Kind.ZIGZAG_TURN, host, sheet.foldTail(x1 + d * w, y, -d, -1, Placement.UNDER, Crease.TURN));
+                record(Kind.ZIGZAG_TURN, host, tailFold(x1, y + w, d, -1, Placement.OVER, Crease.TURN));
+                record(Kind.ZIGZAG_TURN, host, tailFold(x1 + d * w, y, -d, -1, Placement.UNDER, Crease.TURN));
                 return;
             }
             // Two 90° turn gadgets: down a vertical band [x1, x1 + w] beyond the edge, then back
             // along the next pass; the fold across the vertical band sets where the next pass lies.
             double middle = x1 + d * w / 2;
-            record(Kind.TURN_GADGET, host, sheet.foldTail(x1 + d * w, 0, 0, 1, Placement.OVER, Crease.GADGET));
-            record(Kind.TURN_GADGET, host, sheet.foldTail(middle, y + w / 2, -d, -1, Placement.OVER, Crease.GADGET));
-            record(Kind.TURN_GADGET, host, sheet.foldTail(0, next, 1, 0, Placement.OVER, Crease.GADGET));
-            record(Kind.TURN_GADGET, host, sheet.foldTail(middle, next + w / 2, -d, 1, Placement.UNDER, Crease.GADGET));
+            record(Kind.TURN_GADGET, host, tailFold(x1 + d * w, 0, 0, 1, Placement.OVER, Crease.GADGET));
+            record(Kind.TURN_GADGET, host, tailFold(middle, y + w / 2, -d, -1, Placement.OVER, Crease.GADGET));
+            record(Kind.TURN_GADGET, host, tailFold(0, next, 1, 0, Placement.OVER, Crease.GADGET));
+            record(Kind.TURN_GADGET, host, tailFold(middle, next + w / 2, -d, 1, Placement.UNDER, Crease.GADGET));
         }
 
         /** From the last pass of triangle i (band [0, w], direction d) into the first pass of triangle i + 1. */
@@ -569,9 +587,9 @@ public final class Wrap {
             double reach = Math.abs(w / 2 * lx / ly);
             double fold = d > 0 ? Math.max(edges.rightmost(0, w) + margin, meetX + reach)
                     : Math.min(edges.leftmost(0, w) - margin, meetX - reach);
-            record(Kind.TURN_GADGET, host, sheet.foldTail(fold, 0, 0, 1, Placement.OVER, Crease.GADGET));
-            record(Kind.TURN_GADGET, host, sheet.foldTail(meetX, w / 2, lx, ly, Placement.OVER, Crease.GADGET));
-            record(Kind.EDGE_CROSSING, host, sheet.crossTail(0, 0, 1, 0, plan.first + i + 1, development));
+            record(Kind.TURN_GADGET, host, tailFold(fold, 0, 0, 1, Placement.OVER, Crease.GADGET));
+            record(Kind.TURN_GADGET, host, tailFold(meetX, w / 2, lx, ly, Placement.OVER, Crease.GADGET));
+            record(Kind.EDGE_CROSSING, host, tailCross(0, 0, 1, 0, plan.first + i + 1, development));
             // The crease over the edge must lie on the edge itself: paper beyond its ends would be
             // joined to paper on both triangles' excess, which no tuck could then fold away.
             Isometry2 pose = sheet.tailPose();
@@ -613,7 +631,7 @@ public final class Wrap {
                 int from = edge;
                 int to = (edge + 1) % 3;
                 Sheet.Tuck tuck = sheet.tuck(host, c[2 * from], c[2 * from + 1], c[2 * to] - c[2 * from], c[2 * to + 1] - c[2 * from + 1]);
-                steps.add(new Step(Kind.TUCK, strip, host, pathIndex, plan.m, -1, tuck));
+                steps.add(new Step(Kind.TUCK, strip, host, pathIndex, plan.m, -1, tuck, sheet.faceCount(), null));
             }
         }
 
@@ -636,9 +654,31 @@ public final class Wrap {
             return farthest;
         }
 
-        private void record(Kind kind, int host, int face) {
-            steps.add(new Step(kind, strip, host, pathIndex, plan.m, face, null));
+        private int hostBefore;
+        private Isometry2 poseBefore;
+
+        /** A fold of the tail, noting where it lay before, for {@link #record}. */
+        private int tailFold(double px, double py, double dx, double dy, Placement next, Crease kind) throws FoldException {
+            hostBefore = sheet.tailHost();
+            poseBefore = sheet.tailPose();
+            lastOver = next == Placement.OVER;
+            return sheet.foldTail(px, py, dx, dy, next, kind);
         }
+
+        private int tailCross(double px, double py, double dx, double dy, int nextHost, Isometry2 development) throws FoldException {
+            hostBefore = sheet.tailHost();
+            poseBefore = sheet.tailPose();
+            lastOver = true;
+            return sheet.crossTail(px, py, dx, dy, nextHost, development);
+        }
+
+        private void record(Kind kind, int host, int face) {
+            TailMove move = kind == Kind.END ? null : new TailMove(hostBefore, poseBefore, sheet.tailHost(), sheet.tailPose(),
+                    sheet.tailStart(false), sheet.tailStart(true), lastOver);
+            steps.add(new Step(kind, strip, host, pathIndex, plan.m, face, null, sheet.faceCount(), move));
+        }
+
+        private boolean lastOver = true;
     }
 
     /** The slanted edges in a triangle's frame (base on the x axis from (0, 0) to (b, 0), apex (sx, h)): their x at height y. */
