@@ -249,9 +249,12 @@ public final class WrapView {
                 normal.set(normals[3 * here], normals[3 * here + 1], normals[3 * here + 2]);
             }
             normal.normalize();
-            camera.frame(centre, 0.55 * modelRadius);
+            // Aim between the model's centre and the triangle, close enough to see the fold and
+            // far enough to see where on the model it is; the triangle faces the viewer.
+            Vector3d target = new Vector3d(modelCentre).lerp(centre, 0.6);
+            camera.frame(target, 0.8 * modelRadius);
             camera.setSceneRadius(3 * modelRadius);
-            camera.setOrientation(new Quaterniond().rotateX(-0.35).mul(frontToViewer(normal)));
+            camera.setOrientation(new Quaterniond().rotateX(-0.25).mul(frontToViewer(normal)));
         }
 
         /**

@@ -111,7 +111,7 @@ public final class Isometry2 {
         double y = y(first.ax, first.ay);
         // Renormalise: the first column to unit length, the second perpendicular to it with
         // the sign it has (rotation or mirror), so that rounding never builds up into a stretch.
-        double length = Math.hypot(a, c);
+        double length = Math.sqrt(a * a + c * c);
         a /= length;
         c /= length;
         boolean mirror = a * d - b * c < 0;

@@ -263,6 +263,7 @@ public final class Sheet {
         List<Integer> changed = new ArrayList<>();
         List<int[]> loopsBefore = new ArrayList<>();
         List<Isometry2> posesBefore = new ArrayList<>();
+        Set<Integer> cut = new HashSet<>();
         for (int i = 0; i < faces; i++) {
             int f = stack.faces[i];
             int[] loop = loops.get(f);
@@ -284,6 +285,7 @@ public final class Sheet {
                 moving.add(f);
                 continue;
             }
+            cut.add(f);
             moving.add(split(f, nx, ny, c, splitOfEdge));
         }
         if (moving.isEmpty()) {
@@ -319,7 +321,8 @@ public final class Sheet {
             if (upperMoves != lowerMoves) {
                 continue; // they lay side by side before; where the flap lands is decided below
             }
-            if (!overlap(upper, lower)) {
+            boolean reshaped = cut.contains(upper) || cut.contains(lower) || upper >= facesBefore || lower >= facesBefore;
+            if (reshaped && !overlap(upper, lower)) {
                 continue; // a face cut by the line keeps only the relations of the part that overlaps
             }
             kept.add(upperMoves ? ((long) lower << 32) | upper : pair); // the flap turns over: its order reverses

@@ -172,7 +172,7 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
                     double ay = p[2 * e + 1];
                     double bx = p[2 * ((e + 1) % n)];
                     double by = p[2 * ((e + 1) % n) + 1];
-                    double length = Math.hypot(bx - ax, by - ay);
+                    double length = Math.sqrt((bx - ax) * (bx - ax) + (by - ay) * (by - ay));
                     if (!(length > tolerance)) {
                         continue;
                     }
