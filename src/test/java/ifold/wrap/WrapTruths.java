@@ -955,8 +955,8 @@ public final class WrapTruths {
 
     /**
      * How far paper face f is from resting on model triangle t (0: it rests): the worst of a
-     * corner's height outside [-eps, top + eps] and its projection's distance outside t (the
-     * negative barycentric coordinate times t's longest edge).
+     * corner's height outside [-eps, top + eps] and its projection's distance outside t beyond eps
+     * (the negative barycentric coordinate times t's longest edge).
      */
     private double restingMiss(int f, Model model, int t, double eps, double top) {
         double miss = 0;
@@ -966,9 +966,11 @@ public final class WrapTruths {
             double height = model.height(t, xyz, 3 * v);
             miss = Math.max(miss, Math.max(-eps - height, height - top - eps));
             model.barycentric(t, xyz, 3 * v, bary);
-            double least = Math.min(bary[0], Math.min(bary[1], bary[2]));
-            if (least < -RELATIVE) {
-                miss = Math.max(miss, -least * model.longestEdge(t));
+            // Outside by more than eps, as every other length here: a billionth of the model, not
+            // of the triangle (a tiny triangle's own billionth is below the rounding of its corners).
+            double outside = -Math.min(bary[0], Math.min(bary[1], bary[2])) * model.longestEdge(t);
+            if (outside > eps) {
+                miss = Math.max(miss, outside);
             }
         }
         return miss;
@@ -987,7 +989,7 @@ public final class WrapTruths {
                 return "vertex " + (v + 1) + " is " + height + " above it, more than (maxStack + 1) * thickness = " + top;
             }
             model.barycentric(t, xyz, 3 * v, bary);
-            if (Math.min(bary[0], Math.min(bary[1], bary[2])) < -RELATIVE) {
+            if (-Math.min(bary[0], Math.min(bary[1], bary[2])) * model.longestEdge(t) > eps) {
                 return "vertex " + (v + 1) + " lies outside it, at barycentric " + point(bary);
             }
         }
