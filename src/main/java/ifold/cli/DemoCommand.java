@@ -7,6 +7,7 @@ import ifold.fold.PaperMotion;
 import ifold.render.FrameExport;
 import ifold.render.RenderUnavailableException;
 import ifold.scene.Animation;
+import ifold.scene.Camera;
 import ifold.scene.CameraMove;
 import ifold.scene.Geometry;
 import ifold.scene.Material;
@@ -27,7 +28,6 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
-import org.joml.AxisAngle4d;
 import org.joml.Quaterniond;
 import org.joml.Quaterniondc;
 import org.joml.Vector3d;
@@ -156,7 +156,7 @@ final class DemoCommand implements Runnable {
             }
             // From above the triangle's front, tilted back; then turned about the screen's vertical
             // to look from below. (The front faces -z for corners given clockwise.)
-            Quaterniondc front = frontToViewer(shape.normal());
+            Quaterniondc front = Camera.facing(shape.normal());
             Quaterniondc above = new Quaterniond().rotateX(-0.55).mul(front);
             Quaterniondc below = new Quaterniond().rotateX(0.55).rotateY(Math.PI).mul(front);
             frameTriangle(scene, shape, above);
@@ -302,19 +302,6 @@ final class DemoCommand implements Runnable {
             throw new UserError("option --triangle: the triangle is too small for its distance from the origin: move it nearer");
         }
         return triangle;
-    }
-
-    /** The rotation that turns {@code normal} towards the viewer (+z in the camera's frame). */
-    private static Quaterniondc frontToViewer(Vector3d normal) {
-        double cos = normal.z;
-        if (cos > 1 - 1e-12) {
-            return new Quaterniond();
-        }
-        if (cos < -1 + 1e-12) {
-            return new Quaterniond(new AxisAngle4d(Math.PI, 1, 0, 0));
-        }
-        Vector3d axis = new Vector3d(normal).cross(0, 0, 1).normalize();
-        return new Quaterniond(new AxisAngle4d(Math.acos(cos), axis));
     }
 
     private static int corner(String name, String option) {

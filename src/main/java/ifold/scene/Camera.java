@@ -1,5 +1,6 @@
 package ifold.scene;
 
+import org.joml.AxisAngle4d;
 import org.joml.Matrix4d;
 import org.joml.Quaterniond;
 import org.joml.Quaterniondc;
@@ -88,5 +89,18 @@ public final class Camera {
     public Vector3d eye(Vector3d dest) {
         // The camera sits at (0, 0, distance) in its frame; bring that back to the world.
         return orientation.transformInverse(dest.set(0, 0, distance)).add(target);
+    }
+
+    /** The orientation that turns {@code normal} to face the viewer (+z in the camera's frame), by the shortest turn. */
+    public static Quaterniondc facing(Vector3dc normal) {
+        double cos = normal.z();
+        if (cos > 1 - 1e-12) {
+            return new Quaterniond();
+        }
+        if (cos < -1 + 1e-12) {
+            return new Quaterniond(new AxisAngle4d(Math.PI, 1, 0, 0));
+        }
+        Vector3d axis = new Vector3d(normal).cross(0, 0, 1).normalize();
+        return new Quaterniond(new AxisAngle4d(Math.acos(cos), axis));
     }
 }

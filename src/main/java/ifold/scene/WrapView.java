@@ -8,7 +8,6 @@ import ifold.wrap.Wrap;
 import ifold.wrap.WrapGeometry;
 import java.util.ArrayList;
 import java.util.List;
-import org.joml.AxisAngle4d;
 import org.joml.Quaterniond;
 import org.joml.Quaterniondc;
 import org.joml.Vector3d;
@@ -254,7 +253,7 @@ public final class WrapView {
             Vector3d target = new Vector3d(modelCentre).lerp(centre, 0.6);
             camera.frame(target, 0.8 * modelRadius);
             camera.setSceneRadius(3 * modelRadius);
-            camera.setOrientation(new Quaterniond().rotateX(-0.25).mul(frontToViewer(normal)));
+            camera.setOrientation(new Quaterniond().rotateX(-0.25).mul(Camera.facing(normal)));
         }
 
         /**
@@ -435,16 +434,4 @@ public final class WrapView {
         return new double[] {r.x, r.y, r.z};
     }
 
-    /** The turn that brings {@code normal} to face the viewer (+z in the camera's frame). */
-    static Quaterniondc frontToViewer(Vector3d normal) {
-        double cos = normal.z;
-        if (cos > 1 - 1e-12) {
-            return new Quaterniond();
-        }
-        if (cos < -1 + 1e-12) {
-            return new Quaterniond(new AxisAngle4d(Math.PI, 1, 0, 0));
-        }
-        Vector3d axis = new Vector3d(normal).cross(0, 0, 1).normalize();
-        return new Quaterniond(new AxisAngle4d(Math.acos(cos), axis));
-    }
 }

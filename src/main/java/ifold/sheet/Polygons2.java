@@ -87,4 +87,16 @@ public final class Polygons2 {
         }
         return Arrays.copyOf(out, 2 * m);
     }
+
+    /** The bounding box of a polygon: min x, min y, max x, max y. */
+    public static double[] bounds(double[] xy) {
+        double[] box = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        for (int k = 0; k < xy.length; k += 2) {
+            box[0] = Math.min(box[0], xy[k]);
+            box[1] = Math.min(box[1], xy[k + 1]);
+            box[2] = Math.max(box[2], xy[k]);
+            box[3] = Math.max(box[3], xy[k + 1]);
+        }
+        return box;
+    }
 }

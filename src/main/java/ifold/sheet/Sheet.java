@@ -517,15 +517,8 @@ public final class Sheet {
         double[] xy = placements.get(f);
         if (xy == null) {
             xy = placed(f);
-            double[] box = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
-            for (int k = 0; k < xy.length; k += 2) {
-                box[0] = Math.min(box[0], xy[k]);
-                box[1] = Math.min(box[1], xy[k + 1]);
-                box[2] = Math.max(box[2], xy[k]);
-                box[3] = Math.max(box[3], xy[k + 1]);
-            }
             placements.set(f, xy);
-            boxes.set(f, box);
+            boxes.set(f, Polygons2.bounds(xy));
         }
         return xy;
     }

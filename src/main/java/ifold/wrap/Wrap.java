@@ -1,5 +1,6 @@
 package ifold.wrap;
 
+import ifold.geom.SlantedEdges;
 import ifold.refine.HamiltonianRefinement;
 import ifold.refine.RefinedMesh;
 import ifold.sheet.FoldException;
@@ -491,8 +492,8 @@ public final class Wrap {
 
         private void wrapTriangle(int i) throws FoldException {
             HostFrame frame = plan.frames[i];
-            Edges edges = new Edges(frame.corners());
-            double h = edges.h;
+            SlantedEdges edges = new SlantedEdges(frame.corners()[2], frame.corners()[4], frame.corners()[5]);
+            double h = edges.h();
             boolean last = i == plan.m - 1;
             int k = passes(h, w);
             double[] bottom = new double[k];
@@ -540,7 +541,7 @@ public final class Wrap {
         }
 
         /** A turn beyond a slanted edge from the pass in band [y, y + w] running in direction d to the band [next, next + w]. */
-        private void turn(Edges edges, int d, double y, double next, int host) throws FoldException {
+        private void turn(SlantedEdges edges, int d, double y, double next, int host) throws FoldException {
             double x1 = d > 0 ? edges.rightmost(next, y + w) + margin : edges.leftmost(next, y + w) - margin;
             double shift = y - next;
             if (Math.abs(shift - w) <= 1e-9 * w) {
@@ -560,7 +561,7 @@ public final class Wrap {
         }
 
         /** From the last pass of triangle i (band [0, w], direction d) into the first pass of triangle i + 1. */
-        private void leave(int i, Edges edges, int d) throws FoldException {
+        private void leave(int i, SlantedEdges edges, int d) throws FoldException {
             HostFrame here = plan.frames[i];
             HostFrame there = plan.frames[i + 1];
             int host = plan.first + i;
@@ -679,38 +680,5 @@ public final class Wrap {
         }
 
         private boolean lastOver = true;
-    }
-
-    /** The slanted edges in a triangle's frame (base on the x axis from (0, 0) to (b, 0), apex (sx, h)): their x at height y. */
-    private static final class Edges {
-        final double base;
-        final double sx;
-        final double h;
-
-        Edges(double[] corners) {
-            base = corners[2];
-            sx = corners[4];
-            h = corners[5];
-        }
-
-        double left(double y) {
-            return sx * y / h;
-        }
-
-        double right(double y) {
-            return base + (sx - base) * y / h;
-        }
-
-        double leftmost(double from, double to) {
-            double lo = Math.max(0, from);
-            double hi = Math.min(h, to);
-            return Math.min(left(lo), left(hi));
-        }
-
-        double rightmost(double from, double to) {
-            double lo = Math.max(0, from);
-            double hi = Math.min(h, to);
-            return Math.max(right(lo), right(hi));
-        }
     }
 }

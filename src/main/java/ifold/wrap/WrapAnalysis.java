@@ -152,13 +152,13 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
         depth.add(0);
         for (double[] polygon : polygons) {
             double[] p = counterClockwise(polygon);
-            double[] box = bounds(p);
+            double[] box = Polygons2.bounds(p);
             List<double[]> nextCells = new ArrayList<>();
             List<Integer> nextDepth = new ArrayList<>();
             for (int i = 0; i < cells.size(); i++) {
                 double[] cell = cells.get(i);
                 int d = depth.get(i);
-                double[] cellBox = bounds(cell);
+                double[] cellBox = Polygons2.bounds(cell);
                 if (cellBox[0] >= box[2] - tolerance || box[0] >= cellBox[2] - tolerance
                         || cellBox[1] >= box[3] - tolerance || box[1] >= cellBox[3] - tolerance) {
                     nextCells.add(cell);
@@ -221,17 +221,6 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
             reversed[2 * i + 1] = polygon[2 * (n - 1 - i) + 1];
         }
         return reversed;
-    }
-
-    private static double[] bounds(double[] p) {
-        double[] box = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
-        for (int k = 0; k < p.length; k += 2) {
-            box[0] = Math.min(box[0], p[k]);
-            box[1] = Math.min(box[1], p[k + 1]);
-            box[2] = Math.max(box[2], p[k]);
-            box[3] = Math.max(box[3], p[k + 1]);
-        }
-        return box;
     }
 
     /**

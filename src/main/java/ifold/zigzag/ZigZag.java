@@ -7,6 +7,7 @@ import ifold.fold.Folder;
 import ifold.fold.Paper;
 import ifold.fold.PaperMotion;
 import ifold.fold.Press;
+import ifold.geom.SlantedEdges;
 import ifold.geom.Tolerance;
 import java.util.ArrayList;
 import java.util.List;
@@ -163,7 +164,7 @@ public final class ZigZag {
         double h = plan[5];
         double w = options.width();
         double t = options.thickness();
-        Edges edges = new Edges(base, sx, h);
+        SlantedEdges edges = new SlantedEdges(base, sx, h);
         int passes = Math.max(1, (int) Math.ceil(h / w - 1e-9));
         // Just beyond the edges: far enough to see, and to clear the caps of the turns.
         double margin = Math.max(w / 10, 2 * t);
@@ -282,30 +283,6 @@ public final class ZigZag {
                 steps.add(new Step(Phase.PRESS, String.format(Locale.ROOT, "tuck %d: layers pressed flat", tucks + 1), pressed));
                 paper = pressed.after();
             }
-        }
-    }
-
-    /** The slanted edges in the plan frame: x of the left edge (P to S) and the right one (Q to S) at height y. */
-    private record Edges(double base, double sx, double h) {
-        double left(double y) {
-            return sx * y / h;
-        }
-
-        double right(double y) {
-            return base + (sx - base) * y / h;
-        }
-
-        /** The smallest x of the left edge over heights [from, to] clipped to the triangle's. */
-        double leftmost(double from, double to) {
-            double lo = Math.max(0, from);
-            double hi = Math.min(h, to);
-            return Math.min(left(lo), left(hi));
-        }
-
-        double rightmost(double from, double to) {
-            double lo = Math.max(0, from);
-            double hi = Math.min(h, to);
-            return Math.max(right(lo), right(hi));
         }
     }
 }

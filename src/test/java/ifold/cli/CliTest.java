@@ -42,6 +42,13 @@ class CliTest {
         return file;
     }
 
+    /** The number a report gives for {@code key} (its first occurrence). */
+    static double number(String json, String key) {
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("\"" + key + "\": ([-0-9.eE+]+)").matcher(json);
+        assertTrue(m.find(), key + " in " + json);
+        return Double.parseDouble(m.group(1));
+    }
+
     static void assertOneLineError(Run run, String... fragments) {
         assertEquals(UserError.EXIT_CODE, run.code(), run.err());
         String[] lines = run.err().strip().split("\n");

@@ -7,8 +7,6 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -24,11 +22,11 @@ class DemoCommandTest {
         CliTest.Run run = CliTest.run("demo", "zigzag", "--no-view", "--export-obj", obj.toString(), "--report", report.toString());
         assertEquals(0, run.code(), run.err());
         String json = Files.readString(report);
-        assertEquals(1.0, number(json, "coverage"), 0);
-        assertEquals(5, number(json, "passes"), 0, "⌈8 / 1.6⌉");
-        assertEquals(1.6, number(json, "stripWidth"), 1e-12, "a fifth of the altitude from C");
-        assertTrue(number(json, "paperOutsideArea") < 1e-9, json);
-        assertEquals(40 / (number(json, "stripLength") * 1.6), number(json, "paperEfficiency"), 1e-5);
+        assertEquals(1.0, CliTest.number(json, "coverage"), 0);
+        assertEquals(5, CliTest.number(json, "passes"), 0, "⌈8 / 1.6⌉");
+        assertEquals(1.6, CliTest.number(json, "stripWidth"), 1e-12, "a fifth of the altitude from C");
+        assertTrue(CliTest.number(json, "paperOutsideArea") < 1e-9, json);
+        assertEquals(40 / (CliTest.number(json, "stripLength") * 1.6), CliTest.number(json, "paperEfficiency"), 1e-5);
         assertTrue(run.out().contains("coverage 1.000"), run.out());
         ObjReadBack back = ObjReadBack.read(obj);
         assertTrue(back.paperFaces() > 0 && back.capFaces() > 0, "paper and caps written");
@@ -41,7 +39,7 @@ class DemoCommandTest {
             Path report = dir.resolve("r.json");
             CliTest.Run run = CliTest.run("demo", "zigzag", "--triangle", triangle, "--no-view", "--report", report.toString());
             assertEquals(0, run.code(), triangle + ": " + run.err());
-            assertEquals(1.0, number(Files.readString(report), "coverage"), 0, triangle);
+            assertEquals(1.0, CliTest.number(Files.readString(report), "coverage"), 0, triangle);
         }
     }
 
@@ -83,7 +81,7 @@ class DemoCommandTest {
         CliTest.Run run = CliTest.run("demo", "turn", "--angle", "70", "--overhang", "0.5", "--no-view", "--report", report.toString());
         assertEquals(0, run.code(), run.err());
         String json = Files.readString(report);
-        assertEquals(70, number(json, "measuredAngle"), 1e-9);
+        assertEquals(70, CliTest.number(json, "measuredAngle"), 1e-9);
         assertTrue(json.contains("\"topSideUp\": true"), json);
         assertTrue(run.out().contains("top side up"), run.out());
     }
@@ -98,11 +96,5 @@ class DemoCommandTest {
         try (var files = Files.list(frames)) {
             assertEquals(32, files.count(), "two seconds a step, 16 steps, one frame a second");
         }
-    }
-
-    private static double number(String json, String key) {
-        Matcher m = Pattern.compile("\"" + key + "\": ([-0-9.eE+]+)").matcher(json);
-        assertTrue(m.find(), key + " in " + json);
-        return Double.parseDouble(m.group(1));
     }
 }

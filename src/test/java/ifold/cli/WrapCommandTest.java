@@ -6,8 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -23,16 +21,16 @@ class WrapCommandTest {
         CliTest.Run run = CliTest.run("wrap", "models/cube.off", "--no-view", "--export-obj", obj.toString(), "--report", report.toString());
         assertEquals(0, run.code(), run.err());
         String json = Files.readString(report);
-        assertEquals(12, number(json, "inputTriangles"), 0);
-        assertEquals(58, number(json, "refinedTriangles"), 0, "5n - 2");
-        assertEquals(1.0, number(json, "coverage"), 1e-12);
-        assertEquals(57, number(json, "edgeCrossings"), 0, "one fold over an edge between each two triangles of the path");
-        assertTrue(number(json, "isometryError") <= 1e-9, json);
-        assertTrue(number(json, "maxLayers") <= number(json, "stackLayers"), json);
-        double length = number(json, "length");
-        double width = number(json, "width");
-        assertEquals(6 / (length * width), number(json, "paperEfficiency"), 1e-9, "the cube's area over L·w");
-        assertEquals(number(json, "thickness"), width / 80, 1e-15, "thickness defaults to w / 80");
+        assertEquals(12, CliTest.number(json, "inputTriangles"), 0);
+        assertEquals(58, CliTest.number(json, "refinedTriangles"), 0, "5n - 2");
+        assertEquals(1.0, CliTest.number(json, "coverage"), 1e-12);
+        assertEquals(57, CliTest.number(json, "edgeCrossings"), 0, "one fold over an edge between each two triangles of the path");
+        assertTrue(CliTest.number(json, "isometryError") <= 1e-9, json);
+        assertTrue(CliTest.number(json, "maxLayers") <= CliTest.number(json, "stackLayers"), json);
+        double length = CliTest.number(json, "length");
+        double width = CliTest.number(json, "width");
+        assertEquals(6 / (length * width), CliTest.number(json, "paperEfficiency"), 1e-9, "the cube's area over L·w");
+        assertEquals(CliTest.number(json, "thickness"), width / 80, 1e-15, "thickness defaults to w / 80");
         assertTrue(run.out().contains("coverage 1.000"), run.out());
         ObjReadBack back = ObjReadBack.read(obj);
         assertTrue(back.paperFaces() > 0 && back.capFaces() > 0, "paper and caps written");
@@ -69,11 +67,5 @@ class WrapCommandTest {
         String[] all = java.util.Arrays.copyOf(a, a.length + b.length);
         System.arraycopy(b, 0, all, a.length, b.length);
         return all;
-    }
-
-    private static double number(String json, String key) {
-        Matcher m = Pattern.compile("\"" + key + "\": ([-0-9.eE+]+)").matcher(json);
-        assertTrue(m.find(), key + " in " + json);
-        return Double.parseDouble(m.group(1));
     }
 }
