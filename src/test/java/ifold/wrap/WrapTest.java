@@ -135,6 +135,54 @@ class WrapTest {
         wrapAndCheck(build(soup), new Wrap.Options(Double.NaN, Double.NaN), 1000);
     }
 
+    /** An L-shaped prism: two non-convex hexagons (ear-clipped) and six quads, one reflex edge along its height. */
+    @Test
+    void wrapsAnLShapedPrism() throws Exception {
+        double[][] l = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+        PolygonSoup soup = new PolygonSoup();
+        for (double z : new double[] {0, 0.7}) {
+            for (double[] p : l) {
+                soup.addVertex(p[0], p[1], z);
+            }
+        }
+        soup.addFace(new int[] {5, 4, 3, 2, 1, 0}, 6, 0); // the bottom, facing down
+        soup.addFace(new int[] {6, 7, 8, 9, 10, 11}, 6, 0); // the top, facing up
+        for (int i = 0; i < 6; i++) {
+            int j = (i + 1) % 6;
+            soup.addFace(new int[] {i, j, 6 + j, 6 + i}, 4, 0);
+        }
+        HalfedgeMesh mesh = build(soup);
+        assertEquals(20, mesh.faceCount(), "setup: 2 hexagons of 4 triangles and 6 quads of 2");
+        wrapAndCheck(mesh, new Wrap.Options(Double.NaN, Double.NaN), 2000);
+    }
+
+    /** A star: an octahedron with a pyramid on each face, 24 triangles, twelve reflex edges between the pyramids. */
+    @Test
+    void wrapsAStarOfPyramidsOnAnOctahedron() throws Exception {
+        PolygonSoup octahedron = Solids.octahedron();
+        PolygonSoup soup = new PolygonSoup();
+        for (int v = 0; v < octahedron.vertexCount(); v++) {
+            soup.addVertex(octahedron.coordinate(v, 0), octahedron.coordinate(v, 1), octahedron.coordinate(v, 2));
+        }
+        for (int f = 0; f < octahedron.faceCount(); f++) {
+            int a = octahedron.faceVertex(f, 0);
+            int b = octahedron.faceVertex(f, 1);
+            int c = octahedron.faceVertex(f, 2);
+            double[] centre = new double[3];
+            for (int axis = 0; axis < 3; axis++) {
+                centre[axis] = (octahedron.coordinate(a, axis) + octahedron.coordinate(b, axis) + octahedron.coordinate(c, axis)) / 3;
+            }
+            // Out along the centre's direction (the face's normal on a regular octahedron), to twice its distance.
+            int apex = soup.addVertex(2 * centre[0], 2 * centre[1], 2 * centre[2]);
+            soup.addFace(new int[] {a, b, apex}, 3, 0);
+            soup.addFace(new int[] {b, c, apex}, 3, 0);
+            soup.addFace(new int[] {c, a, apex}, 3, 0);
+        }
+        HalfedgeMesh mesh = build(soup);
+        assertEquals(24, mesh.faceCount(), "setup: three faces a pyramid");
+        wrapAndCheck(mesh, new Wrap.Options(Double.NaN, Double.NaN), 2000);
+    }
+
     static Stream<String> polyhedra() {
         Path folder = SharedMeshes.ROOT.resolve("polyhedra");
         if (!Files.isDirectory(folder)) {
