@@ -57,6 +57,18 @@ class WrapCommandTest {
         assertFalse(Files.exists(obj), "no OBJ after a failure");
     }
 
+    @Test
+    void aTriangleTheTucksCannotFinishIsNamedAndNothingIsWritten() throws Exception {
+        // A flat needle of a tetrahedron: corners of a fraction of a degree, where the naive tucks
+        // bounce the paper between two edges hundreds of times.
+        Path needle = dir.resolve("needle.off");
+        Files.writeString(needle, "OFF\n4 4 0\n0 0 0\n10 0 0\n5 0.3 0\n5 0.1 0.1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n");
+        Path report = dir.resolve("needle.json");
+        CliTest.assertOneLineError(CliTest.run("wrap", needle.toString(), "--no-view", "--report", report.toString()),
+                "needle.off", "triangle 6 of 18 on the path", "not hidden after 300 tucks");
+        assertFalse(Files.exists(report), "no report after a failure");
+    }
+
     private static void assertOptionError(CliTest.Run run, String option) {
         assertEquals(2, run.code(), "a mistyped option exits 2: " + run.err());
         assertTrue(run.err().startsWith("ifold: option " + option), run.err());
