@@ -81,7 +81,7 @@ class WrapTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"tetrahedron", "cube", "octahedron", "icosahedron", "torus"})
+    @ValueSource(strings = {"tetrahedron", "cube", "octahedron", "icosahedron", "torus", "triangle", "figure3"})
     void wrapsTheProjectsModels(String name) throws Exception {
         HalfedgeMesh mesh = build(MeshReaders.read(Path.of("models", name + ".off")));
         wrapAndCheck(mesh, new Wrap.Options(Double.NaN, Double.NaN), name.equals("torus") ? 3000 : 2000);
