@@ -146,13 +146,20 @@ class CliTest {
     @Test
     void generateWritesEveryShape() throws Exception {
         Map<String, Integer> faces = Map.of("tetrahedron", 4, "cube", 6, "octahedron", 8, "icosahedron", 20,
-                "triangle", 1, "figure3", 12, "torus", 2 * 24 * 12);
+                "triangle", 1, "figure3", 12, "torus", 2 * 24 * 12, "icosphere", 20 * 64);
         for (Map.Entry<String, Integer> shape : faces.entrySet()) {
             Path out = dir.resolve(shape.getKey() + ".off");
             assertEquals(0, run("generate", shape.getKey(), "-o", out.toString()).code());
             assertEquals(shape.getValue(), MeshReaders.read(out).faceCount(), shape.getKey());
         }
         assertEquals(2, run("generate", "dodecahedron", "-o", dir.resolve("d.off").toString()).code());
+        Path sphere = dir.resolve("sphere.off");
+        assertEquals(0, run("generate", "icosphere", "--subdivisions", "1", "-o", sphere.toString()).code());
+        assertEquals(80, MeshReaders.read(sphere).faceCount(), "20 triangles, each cut in four");
+        Run tooFine = run("generate", "icosphere", "--subdivisions", "9", "-o", dir.resolve("fine.off").toString());
+        assertEquals(2, tooFine.code(), tooFine.err());
+        assertTrue(tooFine.err().startsWith("ifold: option --subdivisions: must be 0 to 8"), tooFine.err());
+        assertFalse(Files.exists(dir.resolve("fine.off")));
     }
 
     static Stream<String> invalid() {
