@@ -71,19 +71,22 @@ final class WrapCommand implements Callable<Integer> {
         if (thickness != null && width != null && thickness > width / 4) {
             throw new CommandLine.ParameterException(spec.commandLine(), "option --thickness: at most a quarter of the width, got " + thickness);
         }
+        outputs.check("wrap", spec.commandLine().getErr(), true);
+        try {
+            return wrap();
+        } catch (UserError | CommandLine.ParameterException e) {
+            outputs.discardWritten(); // the frames folder check() made, or files written before the failure
+            throw e;
+        }
+    }
+
+    private int wrap() {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
-        outputs.check("wrap", err, true);
         Path exportObj = outputs.exportObj;
         Path report = outputs.report;
         long started = System.nanoTime();
-        LoadedModel loaded;
-        try {
-            loaded = LoadedModel.load(model, new MeshBuilder.Options(strict, true));
-        } catch (UserError e) {
-            outputs.discardWritten();
-            throw e;
-        }
+        LoadedModel loaded = LoadedModel.load(model, new MeshBuilder.Options(strict, true));
         loaded.reportRepairs(model, err);
         HalfedgeMesh mesh = loaded.built().mesh();
         if (mesh.faceCount() == 0) {
@@ -92,19 +95,16 @@ final class WrapCommand implements Callable<Integer> {
         long loadedAt = System.nanoTime();
         HamiltonianRefinement.Result refinement = HamiltonianRefinement.refine(mesh);
         long refinedAt = System.nanoTime();
+        double w = width != null ? width : Wrap.widest(refinement);
+        if (thickness != null && thickness > w / 4) {
+            throw new CommandLine.ParameterException(spec.commandLine(), "option --thickness: at most a quarter of the width "
+                    + w + ", got " + thickness);
+        }
         Wrap.Result result;
         try {
-            result = Wrap.wrap(refinement, new Wrap.Options(width == null ? Double.NaN : width,
-                    thickness == null ? Double.NaN : thickness));
+            result = Wrap.wrap(refinement, new Wrap.Options(w, thickness == null ? Double.NaN : thickness));
         } catch (Wrap.WrapException e) {
-            outputs.discardWritten();
             throw new UserError(model + ": cannot wrap: " + e.getMessage());
-        }
-        if (thickness == null && width == null) {
-            // Nothing to check: the defaults fit by construction.
-        } else if (thickness != null && thickness > result.width() / 4) {
-            throw new CommandLine.ParameterException(spec.commandLine(), "option --thickness: at most a quarter of the width "
-                    + result.width() + ", got " + thickness);
         }
         long wrappedAt = System.nanoTime();
         List<WrapGeometry> geometries = new ArrayList<>();
@@ -137,7 +137,6 @@ final class WrapCommand implements Callable<Integer> {
                 outputs.wrote(report);
             }
         } catch (IOException e) {
-            outputs.discardWritten();
             throw new UserError("cannot write: " + e.getMessage());
         }
         for (Path file : written) {

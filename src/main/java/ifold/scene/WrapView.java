@@ -31,7 +31,7 @@ public final class WrapView {
     public static final Material PAPER = new Material(PaperView.PAPER, 0xFF8FAACB, true, false);
 
     /** The wrap's strips and, for each strip and path triangle, how many of the mesh's triangles exist once it is wrapped. */
-    public record Strips(SceneMesh mesh, int[][] trianglesAfter, int[][] trianglesBeforeTucks) {
+    public record Strips(SceneMesh mesh, int[][] trianglesAfter) {
     }
 
     public static Strips strips(Wrap.Result result, List<WrapGeometry> geometries) {
@@ -43,7 +43,6 @@ public final class WrapView {
         List<int[]> triangles = new ArrayList<>();
         List<Integer> colors = new ArrayList<>();
         int[][] after = new int[geometries.size()][];
-        int[][] beforeTucks = new int[geometries.size()][];
         int base = 0;
         for (int k = 0; k < geometries.size(); k++) {
             WrapGeometry g = geometries.get(k);
@@ -67,10 +66,8 @@ public final class WrapView {
             }
             trianglesAtFace[g.paperFaces().size()] = triangles.size();
             after[k] = new int[strip.triangles()];
-            beforeTucks[k] = new int[strip.triangles()];
             for (int i = 0; i < strip.triangles(); i++) {
                 after[k][i] = trianglesAtFace[strip.facesAfter()[i]];
-                beforeTucks[k][i] = trianglesAtFace[strip.facesBeforeTucks()[i]];
             }
             base += g.vertexCount();
         }
@@ -79,7 +76,7 @@ public final class WrapView {
             System.arraycopy(triangles.get(t), 0, flat, 3 * t, 3);
         }
         int[] colorArray = colors.stream().mapToInt(Integer::intValue).toArray();
-        return new Strips(new SceneMesh(positions, flat, colorArray, new int[0], new int[0]), after, beforeTucks);
+        return new Strips(new SceneMesh(positions, flat, colorArray, new int[0], new int[0]), after);
     }
 
     private static void fan(int[] face, int base, int color, List<int[]> triangles, List<Integer> colors) {

@@ -635,11 +635,6 @@ public final class Sheet {
         return stack == null ? new int[0] : Arrays.copyOf(stack.faces, stack.count);
     }
 
-    /** The hosts that hold paper. */
-    public Set<Integer> hosts() {
-        return stacks.keySet();
-    }
-
     // ---------------------------------------------------------------- reading
 
     public double width() {
@@ -697,19 +692,6 @@ public final class Sheet {
     /** The crease along paper edge (a, b), or null where the paper is flat or the edge is the border. */
     public Crease crease(int a, int b) {
         return creases.get(undirected(a, b));
-    }
-
-    /** How many creases of each kind, and their length on the sheet. */
-    public Map<Crease, double[]> creaseTotals() {
-        Map<Crease, double[]> totals = new java.util.EnumMap<>(Crease.class);
-        for (Map.Entry<Long, Crease> crease : creases.entrySet()) {
-            int a = (int) (crease.getKey() >>> 32);
-            int b = (int) (long) crease.getKey();
-            double[] total = totals.computeIfAbsent(crease.getValue(), k -> new double[2]);
-            total[0]++;
-            total[1] += Math.hypot(u(b) - u(a), v(b) - v(a));
-        }
-        return totals;
     }
 
     private int addVertex(double u, double v) {

@@ -121,11 +121,10 @@ public final class Wrap {
      * @param sheet its paper, folded
      * @param firstTriangle the first triangle of its path (refined mesh index)
      * @param triangles how many triangles it wraps
-     * @param facesBeforeTucks for each triangle of its path, the faces of the sheet once the
-     *     strip has left it, before its tucks (the sheet's faces are numbered as they are made)
-     * @param facesAfter for each triangle of its path, the faces of the sheet after its tucks
+     * @param facesAfter for each triangle of its path, the faces of the sheet once it is wrapped,
+     *     tucks and all (the sheet's faces are numbered as they are made)
      */
-    public record Strip(Sheet sheet, int firstTriangle, int triangles, int[] facesBeforeTucks, int[] facesAfter) {
+    public record Strip(Sheet sheet, int firstTriangle, int triangles, int[] facesAfter) {
     }
 
     /**
@@ -175,22 +174,28 @@ public final class Wrap {
     }
 
     /**
-     * Wraps every component of a refinement.
-     *
-     * @throws WrapException if the width is too wide for a triangle, or a triangle's excess cannot be tucked
+     * The widest strip every triangle of the refinement's paths takes: the smallest altitude,
+     * over the paths, from the corner each triangle is entered by (for the last triangle of a
+     * path, the smaller of the two it may be entered by). The default width.
      */
-    public static Result wrap(HamiltonianRefinement.Result refinement, Options options) throws WrapException {
-        RefinedMesh mesh = refinement.mesh();
+    public static double widest(HamiltonianRefinement.Result refinement) {
+        return narrowest(refinement.mesh(), plans(refinement))[0];
+    }
+
+    private static List<PathPlan> plans(HamiltonianRefinement.Result refinement) {
         int[] componentStart = refinement.componentStart();
-        HostFrame[] frames = new HostFrame[mesh.faceCount()];
-        double size = modelSize(mesh);
-        double tolerance = 1e-9 * size;
         List<PathPlan> plans = new ArrayList<>();
+        for (int c = 0; c + 1 < componentStart.length; c++) {
+            plans.add(planCorners(refinement.mesh(), componentStart[c], componentStart[c + 1] - componentStart[c]));
+        }
+        return plans;
+    }
+
+    /** {the widest strip the paths take, the triangle (refined mesh index) that sets it}. */
+    private static double[] narrowest(RefinedMesh mesh, List<PathPlan> plans) {
         double widest = Double.POSITIVE_INFINITY;
         int narrowest = -1;
-        for (int c = 0; c + 1 < componentStart.length; c++) {
-            PathPlan plan = planCorners(mesh, componentStart[c], componentStart[c + 1] - componentStart[c]);
-            plans.add(plan);
+        for (PathPlan plan : plans) {
             for (int i = 0; i < plan.m; i++) {
                 double h = i + 1 < plan.m || plan.m == 1 ? plan.frames[i].corners()[5] : lastAltitudeBound(mesh, plan);
                 if (h < widest) {
@@ -199,6 +204,23 @@ public final class Wrap {
                 }
             }
         }
+        return new double[] {widest, narrowest};
+    }
+
+    /**
+     * Wraps every component of a refinement.
+     *
+     * @throws WrapException if the width is too wide for a triangle, or a triangle's excess cannot be tucked
+     */
+    public static Result wrap(HamiltonianRefinement.Result refinement, Options options) throws WrapException {
+        RefinedMesh mesh = refinement.mesh();
+        HostFrame[] frames = new HostFrame[mesh.faceCount()];
+        double size = modelSize(mesh);
+        double tolerance = 1e-9 * size;
+        List<PathPlan> plans = plans(refinement);
+        double[] narrowestTriangle = narrowest(mesh, plans);
+        double widest = narrowestTriangle[0];
+        int narrowest = (int) narrowestTriangle[1];
         double width = Double.isNaN(options.width()) ? widest : options.width();
         if (!(width > 0) || !Double.isFinite(width)) {
             throw new IllegalArgumentException("the strip width must be a positive number, got " + width);
@@ -252,7 +274,7 @@ public final class Wrap {
                 throw new WrapException(e.getMessage());
             }
         }
-        if (narrowest < 0) {
+        if (narrowest < 0) { // no triangles: no widest strip either
             widest = Double.NaN;
         }
         return new Result(mesh, frames, List.copyOf(strips), List.copyOf(steps), width, thickness, widest);
@@ -478,16 +500,14 @@ public final class Wrap {
         }
 
         Strip fold() throws FoldException, WrapException {
-            int[] beforeTucks = new int[plan.m];
             int[] after = new int[plan.m];
             for (int i = 0; i < plan.m; i++) {
                 pathIndex = i;
                 wrapTriangle(i);
-                beforeTucks[i] = sheet.faceCount();
                 tuckAll(i);
                 after[i] = sheet.faceCount();
             }
-            return new Strip(sheet, plan.first, plan.m, beforeTucks, after);
+            return new Strip(sheet, plan.first, plan.m, after);
         }
 
         private void wrapTriangle(int i) throws FoldException {
