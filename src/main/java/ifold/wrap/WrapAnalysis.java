@@ -143,29 +143,20 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
     /**
      * Cuts the triangle into the cells of the faces' arrangement: {area, area under at least one
      * face, the most faces over any cell}. Every cell is convex: splitting a cell by a face
-     * gives the part inside the face and, edge by edge, the parts outside it.
+     * gives the part inside the face and, edge by edge, the parts outside it. The cells are kept
+     * in a grid over the triangle, so that a face visits only the cells near it: a narrow strip
+     * lays thousands of faces on one triangle, mostly side by side.
      */
     static double[] depths(double[] triangle, List<double[]> polygons, double tolerance) {
-        List<double[]> cells = new ArrayList<>();
-        List<Integer> depth = new ArrayList<>();
-        cells.add(triangle.clone());
-        depth.add(0);
+        Cells cells = new Cells(triangle, Math.max(1, (int) Math.sqrt(polygons.size())), tolerance);
         for (double[] polygon : polygons) {
             double[] p = counterClockwise(polygon);
             double[] box = Polygons2.bounds(p);
-            List<double[]> nextCells = new ArrayList<>();
-            List<Integer> nextDepth = new ArrayList<>();
-            for (int i = 0; i < cells.size(); i++) {
-                double[] cell = cells.get(i);
-                int d = depth.get(i);
-                double[] cellBox = Polygons2.bounds(cell);
-                if (cellBox[0] >= box[2] - tolerance || box[0] >= cellBox[2] - tolerance
-                        || cellBox[1] >= box[3] - tolerance || box[1] >= cellBox[3] - tolerance) {
-                    nextCells.add(cell);
-                    nextDepth.add(d);
-                    continue;
-                }
-                double[] rest = cell;
+            for (int cell : cells.near(box)) {
+                double[] rest = cells.polygon(cell);
+                int d = cells.depth(cell);
+                int bucket = cells.bucket(cell);
+                cells.remove(cell);
                 int n = p.length / 2;
                 for (int e = 0; e < n && rest != null; e++) {
                     double ax = p[2 * e];
@@ -182,32 +173,153 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
                     double c = nx * ax + ny * ay;
                     double[] out = Polygons2.clip(rest, rest.length / 2, nx, ny, c, tolerance);
                     if (out != null) {
-                        nextCells.add(out);
-                        nextDepth.add(d);
+                        cells.add(out, d, bucket);
                     }
                     rest = Polygons2.clip(rest, rest.length / 2, -nx, -ny, -c, tolerance);
                 }
                 if (rest != null) {
-                    nextCells.add(rest);
-                    nextDepth.add(d + 1);
+                    cells.add(rest, d + 1, bucket);
                 }
             }
-            cells = nextCells;
-            depth = nextDepth;
         }
-        double area = 0;
-        double covered = 0;
-        int most = 0;
-        for (int i = 0; i < cells.size(); i++) {
-            double[] cell = cells.get(i);
-            double a = Math.abs(Polygons2.twiceArea(cell, cell.length / 2)) / 2;
-            area += a;
-            if (depth.get(i) > 0) {
-                covered += a;
+        return cells.totals();
+    }
+
+    /**
+     * The convex cells of an arrangement, with their depth, each in one bucket of a grid over
+     * the triangle: the triangle is first cut along the grid, and a cell's parts stay in its
+     * bucket, so that no cell is ever big and a face meets only the cells of the buckets it covers.
+     */
+    private static final class Cells {
+        private final List<double[]> polygons = new ArrayList<>();
+        private final List<double[]> boxes = new ArrayList<>();
+        private final List<Integer> depths = new ArrayList<>();
+        private final List<Integer> bucketOf = new ArrayList<>();
+        private final List<Boolean> alive = new ArrayList<>();
+        private final List<List<Integer>> buckets = new ArrayList<>();
+        private final double minX;
+        private final double minY;
+        private final double cellWidth;
+        private final double cellHeight;
+        private final int grid;
+        private final double tolerance;
+        private int[] seen = new int[16];
+        private int visit;
+
+        Cells(double[] triangle, int grid, double tolerance) {
+            double[] box = Polygons2.bounds(triangle);
+            this.grid = grid;
+            this.minX = box[0];
+            this.minY = box[1];
+            this.cellWidth = Math.max(box[2] - box[0], tolerance) / grid;
+            this.cellHeight = Math.max(box[3] - box[1], tolerance) / grid;
+            this.tolerance = tolerance;
+            for (int by = 0; by < grid; by++) {
+                for (int bx = 0; bx < grid; bx++) {
+                    buckets.add(new ArrayList<>());
+                    double[] piece = triangle.clone();
+                    double x0 = minX + bx * cellWidth;
+                    double y0 = minY + by * cellHeight;
+                    // The grid's outer lines lie beyond the triangle, so that rounding loses none of it.
+                    double left = bx == 0 ? Double.NEGATIVE_INFINITY : x0;
+                    double right = bx == grid - 1 ? Double.POSITIVE_INFINITY : x0 + cellWidth;
+                    double bottom = by == 0 ? Double.NEGATIVE_INFINITY : y0;
+                    double top = by == grid - 1 ? Double.POSITIVE_INFINITY : y0 + cellHeight;
+                    piece = clipTo(piece, -1, 0, -left);
+                    piece = clipTo(piece, 1, 0, right);
+                    piece = clipTo(piece, 0, -1, -bottom);
+                    piece = clipTo(piece, 0, 1, top);
+                    if (piece != null) {
+                        add(piece, 0, by * grid + bx);
+                    }
+                }
             }
-            most = Math.max(most, depth.get(i));
         }
-        return new double[] {area, covered, most};
+
+        private double[] clipTo(double[] polygon, double nx, double ny, double c) {
+            if (polygon == null || Double.isInfinite(c)) {
+                return polygon;
+            }
+            return Polygons2.clip(polygon, polygon.length / 2, nx, ny, c, tolerance);
+        }
+
+        void add(double[] polygon, int depth, int bucket) {
+            int id = polygons.size();
+            polygons.add(polygon);
+            boxes.add(Polygons2.bounds(polygon));
+            depths.add(depth);
+            bucketOf.add(bucket);
+            alive.add(true);
+            buckets.get(bucket).add(id);
+        }
+
+        int bucket(int id) {
+            return bucketOf.get(id);
+        }
+
+        /** The living cells whose box overlaps {@code box} by more than the tolerance. */
+        List<Integer> near(double[] box) {
+            visit++;
+            if (seen.length < polygons.size()) {
+                seen = java.util.Arrays.copyOf(seen, 2 * polygons.size());
+            }
+            List<Integer> found = new ArrayList<>();
+            for (int bx = column(box[0]); bx <= column(box[2]); bx++) {
+                for (int by = row(box[1]); by <= row(box[3]); by++) {
+                    for (int id : buckets.get(by * grid + bx)) {
+                        if (seen[id] == visit || !alive.get(id)) {
+                            continue;
+                        }
+                        seen[id] = visit;
+                        double[] cell = boxes.get(id);
+                        if (cell[0] < box[2] - tolerance && box[0] < cell[2] - tolerance && cell[1] < box[3] - tolerance
+                                && box[1] < cell[3] - tolerance) {
+                            found.add(id);
+                        }
+                    }
+                }
+            }
+            return found;
+        }
+
+        double[] polygon(int id) {
+            return polygons.get(id);
+        }
+
+        int depth(int id) {
+            return depths.get(id);
+        }
+
+        void remove(int id) {
+            alive.set(id, false); // its buckets forget it lazily: near() skips the dead
+        }
+
+        private int column(double x) {
+            return Math.max(0, Math.min(grid - 1, (int) Math.floor((x - minX) / cellWidth)));
+        }
+
+        private int row(double y) {
+            return Math.max(0, Math.min(grid - 1, (int) Math.floor((y - minY) / cellHeight)));
+        }
+
+        double[] totals() {
+            double area = 0;
+            double covered = 0;
+            int most = 0;
+            for (int id = 0; id < polygons.size(); id++) {
+                if (!alive.get(id)) {
+                    continue;
+                }
+                double[] cell = polygons.get(id);
+                double a = Math.abs(Polygons2.twiceArea(cell, cell.length / 2)) / 2;
+                area += a;
+                if (depths.get(id) > 0) {
+                    covered += a;
+                }
+                most = Math.max(most, depths.get(id));
+            }
+            return new double[] {area, covered, most};
+        }
     }
 
     private static double[] counterClockwise(double[] polygon) {
