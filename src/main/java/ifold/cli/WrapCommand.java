@@ -38,7 +38,9 @@ import picocli.CommandLine.Model.CommandSpec;
         description = {"Wraps a model in one strip of paper per component, the zig-zag way along the Hamiltonian path of its "
             + "refinement (Demaine, Demaine and Mitchell): passes across each triangle, a turn gadget and a fold over the "
             + "shared edge to the next, the excess of every triangle tucked under it. An open surface is covered on the side "
-            + "its faces face."})
+            + "its faces face. The animation plays the folds with the camera following the strip, then turns once around "
+            + "the model; it takes two minutes unless --seconds says otherwise. In a window where there is a display; as "
+            + "frames in wrap-frames/ where there is none. The OBJ holds each strip as an object strip-K."})
 final class WrapCommand implements Callable<Integer> {
 
     @Spec
