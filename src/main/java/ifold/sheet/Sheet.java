@@ -308,7 +308,7 @@ public final class Sheet {
                     throw new FoldException("tucking under triangle " + host + " would tear the strip: paper beyond the line"
                             + " is joined to paper that stays by a crease off the line");
                 }
-                creases.put(undirected(a, b), Crease.TUCK);
+                creases.putIfAbsent(undirected(a, b), Crease.TUCK); // a crease over an edge on the line stays one
             }
         }
         Isometry2 reflection = Isometry2.reflection(px, py, dx, dy);
