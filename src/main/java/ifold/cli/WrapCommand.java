@@ -50,7 +50,7 @@ final class WrapCommand implements Callable<Integer> {
     Path model;
 
     @Option(names = "--width", paramLabel = "W",
-            description = "the strip's width (default: the widest every triangle of the path takes, its smallest altitude from the corner the strip enters by)")
+            description = "the strip's width (default: a third of the widest every triangle of the path takes, its smallest altitude from the corner the strip enters by)")
     Double width;
 
     @Option(names = "--thickness", paramLabel = "T", description = "the paper's thickness (default: the width / 80)")
@@ -97,7 +97,7 @@ final class WrapCommand implements Callable<Integer> {
         long loadedAt = System.nanoTime();
         HamiltonianRefinement.Result refinement = HamiltonianRefinement.refine(mesh);
         long refinedAt = System.nanoTime();
-        double w = width != null ? width : Wrap.widest(refinement);
+        double w = width != null ? width : Wrap.defaultWidth(refinement);
         if (thickness != null && thickness > w / 4) {
             throw new CommandLine.ParameterException(spec.commandLine(), "option --thickness: at most a quarter of the width "
                     + w + ", got " + thickness);

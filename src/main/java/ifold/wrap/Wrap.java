@@ -64,7 +64,7 @@ public final class Wrap {
     /**
      * What to wrap with.
      *
-     * @param width the strip's width, or NaN for the widest that every triangle takes
+     * @param width the strip's width, or NaN for {@link #defaultWidth}
      * @param thickness the paper's thickness, or NaN for width / 80
      */
     public record Options(double width, double thickness) {
@@ -182,6 +182,18 @@ public final class Wrap {
         return narrowest(refinement.mesh(), plans(refinement))[0];
     }
 
+    /**
+     * A third of the widest strip: every triangle then takes at least three passes, so that the
+     * zig-zag shows, and the paper is used about twice as well as by the widest strip, whose
+     * turns and gadgets outweigh the one or two passes most triangles would get.
+     */
+    public static double defaultWidth(HamiltonianRefinement.Result refinement) {
+        return widest(refinement) / DEFAULT_PASSES;
+    }
+
+    /** The passes the narrowest triangle gets at the default width. */
+    public static final int DEFAULT_PASSES = 3;
+
     private static List<PathPlan> plans(HamiltonianRefinement.Result refinement) {
         int[] componentStart = refinement.componentStart();
         List<PathPlan> plans = new ArrayList<>();
@@ -221,7 +233,7 @@ public final class Wrap {
         double[] narrowestTriangle = narrowest(mesh, plans);
         double widest = narrowestTriangle[0];
         int narrowest = (int) narrowestTriangle[1];
-        double width = Double.isNaN(options.width()) ? widest : options.width();
+        double width = Double.isNaN(options.width()) ? widest / DEFAULT_PASSES : options.width();
         if (!(width > 0) || !Double.isFinite(width)) {
             throw new IllegalArgumentException("the strip width must be a positive number, got " + width);
         }
@@ -262,7 +274,7 @@ public final class Wrap {
         if (passes > MAX_PASSES) {
             throw new WrapException(String.format(Locale.ROOT, "a strip %.4g wide would need %d passes, more than the %d iFold makes: "
                     + "triangle %s alone needs %d; %s", width, passes, MAX_PASSES, cornersText(mesh, most), mostPasses,
-                    Double.isNaN(options.width()) ? "the widest strip is set by the narrowest triangle ("
+                    Double.isNaN(options.width()) ? "the default strip is set by the narrowest triangle ("
                     + cornersText(mesh, narrowest) + "): a model with slivers needs its faces remeshed first"
                     : "give a wider --width"));
         }

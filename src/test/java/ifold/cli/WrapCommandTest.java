@@ -65,7 +65,7 @@ class WrapCommandTest {
         Files.writeString(needle, "OFF\n4 4 0\n0 0 0\n10 0 0\n5 0.3 0\n5 0.1 0.1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n");
         Path report = dir.resolve("needle.json");
         CliTest.assertOneLineError(CliTest.run("wrap", needle.toString(), "--no-view", "--report", report.toString()),
-                "needle.off", "triangle 6 of 18 on the path", "not hidden after 300 tucks");
+                "needle.off", "of 18 on the path ((", "not hidden after 300 tucks");
         assertFalse(Files.exists(report), "no report after a failure");
     }
 

@@ -90,7 +90,7 @@ class WrapTest {
     @Test
     void narrowerStripsAndZeroThickness() throws Exception {
         HalfedgeMesh cube = build(Solids.cube());
-        Wrap.Result widest = wrapAndCheck(cube, new Wrap.Options(Double.NaN, Double.NaN), 1000);
+        Wrap.Result widest = wrapAndCheck(cube, new Wrap.Options(Wrap.widest(HamiltonianRefinement.refine(cube)), Double.NaN), 1000);
         Wrap.Result narrow = wrapAndCheck(cube, new Wrap.Options(widest.width() / 3.7, Double.NaN), 1000);
         assertTrue(narrow.count(Wrap.Kind.ZIGZAG_TURN) > widest.count(Wrap.Kind.ZIGZAG_TURN), "more passes on a narrower strip");
         wrapAndCheck(cube, new Wrap.Options(widest.width() / 2, 0), 1000);
@@ -233,7 +233,9 @@ class WrapTest {
     void aWidthTooWideNamesTheTriangle() throws Exception {
         HalfedgeMesh cube = build(Solids.cube());
         HamiltonianRefinement.Result refinement = HamiltonianRefinement.refine(cube);
-        double widest = Wrap.wrap(refinement, new Wrap.Options(Double.NaN, Double.NaN)).width();
+        double widest = Wrap.widest(refinement);
+        assertEquals(widest / 3, Wrap.wrap(refinement, new Wrap.Options(Double.NaN, Double.NaN)).width(), 0, "the default: a third of it");
+        Wrap.wrap(refinement, new Wrap.Options(widest, Double.NaN)); // the widest itself fits
         Wrap.WrapException e = assertThrows(Wrap.WrapException.class,
                 () -> Wrap.wrap(refinement, new Wrap.Options(widest * 1.01, Double.NaN)));
         assertTrue(e.getMessage().matches(".*too wide for triangle \\d+ of 58 on the path \\(\\(.*\\)\\).*"), e.getMessage());
