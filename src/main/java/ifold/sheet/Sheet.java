@@ -54,9 +54,10 @@ public final class Sheet {
     private int[] hostOf = new int[16];
     private final List<Isometry2> poseOf = new ArrayList<>();
     /** The face to the left of each directed paper edge a → b, keyed a << 32 | b. */
-    private final Map<Long, Integer> faceOfEdge = new HashMap<>();
+    private final LongIntMap faceOfEdge = new LongIntMap();
     /** The creases, keyed by their lower vertex << 32 | the higher. */
-    private final Map<Long, Crease> creases = new HashMap<>();
+    private final LongIntMap creases = new LongIntMap();
+    private static final Crease[] CREASES = Crease.values();
     private final Map<Integer, Stack> stacks = new HashMap<>();
 
     private int tailA;
@@ -212,7 +213,7 @@ public final class Sheet {
         int b = sameB ? tailB : addVertex(at[1], width);
         int[] loop = sameA ? new int[] {tailA, b, tailB} : sameB ? new int[] {tailA, a, tailB} : new int[] {tailA, a, b, tailB};
         int face = addFace(loop, tailHost, tailPose, tailPlacement);
-        creases.put(undirected(a, b), kind);
+        creases.put(undirected(a, b), kind.ordinal());
         tailA = a;
         tailB = b;
         tailPose = tailPose.anchoredAt(u(a), 0); // kept about where the tail now begins: exact however long the strip
@@ -298,8 +299,8 @@ public final class Sheet {
             for (int i = 0; i < loop.length; i++) {
                 int a = loop[i];
                 int b = loop[(i + 1) % loop.length];
-                Integer across = faceOfEdge.get(directed(b, a));
-                if (across == null || moving.contains(across)) {
+                int across = faceOfEdge.get(directed(b, a), -1);
+                if (across < 0 || moving.contains(across)) {
                     continue;
                 }
                 double da = nx * pose.x(u(a), v(a)) + ny * pose.y(u(a), v(a)) - c;
@@ -308,7 +309,9 @@ public final class Sheet {
                     throw new FoldException("tucking under triangle " + host + " would tear the strip: paper beyond the line"
                             + " is joined to paper that stays by a crease off the line");
                 }
-                creases.putIfAbsent(undirected(a, b), Crease.TUCK); // a crease over an edge on the line stays one
+                if (creases.get(undirected(a, b), -1) < 0) { // a crease over an edge on the line stays one
+                    creases.put(undirected(a, b), Crease.TUCK.ordinal());
+                }
             }
         }
         Isometry2 reflection = Isometry2.reflection(px, py, dx, dy);
@@ -426,11 +429,10 @@ public final class Sheet {
 
     /** Gives the face across edge a → b (the one holding b → a) the vertex m between b and a. */
     private void insertAcross(int a, int b, int m) {
-        Integer across = faceOfEdge.get(directed(b, a));
-        if (across == null) {
+        int g = faceOfEdge.get(directed(b, a), -1);
+        if (g < 0) {
             return; // the strip's own border
         }
-        int g = across;
         int[] loop = loops.get(g);
         int[] longer = new int[loop.length + 1];
         int k = 0;
@@ -440,13 +442,13 @@ public final class Sheet {
                 longer[k++] = m;
             }
         }
-        faceOfEdge.remove(directed(b, a));
+        faceOfEdge.remove(directed(b, a), -1);
         faceOfEdge.put(directed(b, m), g);
         faceOfEdge.put(directed(m, a), g);
         loops.set(g, longer);
         changed(g);
-        Crease crease = creases.remove(undirected(a, b));
-        if (crease != null) {
+        int crease = creases.remove(undirected(a, b), -1);
+        if (crease >= 0) {
             creases.put(undirected(a, m), crease);
             creases.put(undirected(m, b), crease);
         }
@@ -488,7 +490,7 @@ public final class Sheet {
     private void unregister(int f) {
         int[] loop = loops.get(f);
         for (int i = 0; i < loop.length; i++) {
-            faceOfEdge.remove(directed(loop[i], loop[(i + 1) % loop.length]));
+            faceOfEdge.remove(directed(loop[i], loop[(i + 1) % loop.length]), -1);
         }
     }
 
@@ -685,13 +687,13 @@ public final class Sheet {
 
     /** The face on the other side of paper edge a → b of a face, or -1 at the strip's border. */
     public int faceAcross(int a, int b) {
-        Integer g = faceOfEdge.get(directed(b, a));
-        return g == null ? -1 : g;
+        return faceOfEdge.get(directed(b, a), -1);
     }
 
     /** The crease along paper edge (a, b), or null where the paper is flat or the edge is the border. */
     public Crease crease(int a, int b) {
-        return creases.get(undirected(a, b));
+        int crease = creases.get(undirected(a, b), -1);
+        return crease < 0 ? null : CREASES[crease];
     }
 
     private int addVertex(double u, double v) {
