@@ -60,7 +60,7 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
             // Faces on one layer share a vertex where their poses agree to rounding; a crease
             // vertex computed a little off its crease makes the two sides differ by more, and each
             // then keeps its own copy, so that no face is bent by a neighbour's rounding.
-            this.exact = sheet.tolerance() * 1e-3;
+            this.exact = Math.min(sheet.tolerance() * 1e-3, sheet.width() * 1e-11);
             for (int v = 0; v < sheet.vertexCount(); v++) {
                 copies.add(new int[0]);
             }
