@@ -1,6 +1,6 @@
 package ifold.scene;
 
-import ifold.refine.RefinedMesh;
+import ifold.mesh.IndexedPolygons;
 import ifold.sheet.HostFrame;
 import ifold.sheet.Isometry2;
 import ifold.sheet.Sheet;
@@ -124,7 +124,7 @@ public final class WrapView {
             this.strips = strips;
             this.result = result;
             this.steps = result.steps();
-            RefinedMesh mesh = result.mesh();
+            IndexedPolygons mesh = result.mesh();
             int[] firstOfStrip = new int[result.strips().size()];
             int total = 0;
             for (int k = 0; k < result.strips().size(); k++) {

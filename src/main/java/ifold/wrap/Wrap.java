@@ -1,8 +1,8 @@
 package ifold.wrap;
 
 import ifold.geom.SlantedEdges;
+import ifold.mesh.IndexedPolygons;
 import ifold.refine.HamiltonianRefinement;
-import ifold.refine.RefinedMesh;
 import ifold.sheet.FoldException;
 import ifold.sheet.HostFrame;
 import ifold.sheet.Isometry2;
@@ -138,7 +138,7 @@ public final class Wrap {
      * @param thickness the paper thickness
      * @param widest the widest strip the path takes
      */
-    public record Result(RefinedMesh mesh, HostFrame[] frames, List<Strip> strips, List<Step> steps, double width,
+    public record Result(IndexedPolygons mesh, HostFrame[] frames, List<Strip> strips, List<Step> steps, double width,
             double thickness, double widest) {
         public int count(Kind kind) {
             int n = 0;
@@ -179,7 +179,12 @@ public final class Wrap {
      * path, the smaller of the two it may be entered by). The default width.
      */
     public static double widest(HamiltonianRefinement.Result refinement) {
-        return narrowest(refinement.mesh(), plans(refinement))[0];
+        return widest(refinement.mesh(), refinement.componentStart());
+    }
+
+    /** {@link #widest(HamiltonianRefinement.Result)} for any path of triangles: see {@link #wrap(IndexedPolygons, int[], Options)}. */
+    public static double widest(IndexedPolygons path, int[] componentStart) {
+        return narrowest(path, plans(path, componentStart))[0];
     }
 
     /**
@@ -194,17 +199,16 @@ public final class Wrap {
     /** The passes the narrowest triangle gets at the default width. */
     public static final int DEFAULT_PASSES = 3;
 
-    private static List<PathPlan> plans(HamiltonianRefinement.Result refinement) {
-        int[] componentStart = refinement.componentStart();
+    private static List<PathPlan> plans(IndexedPolygons path, int[] componentStart) {
         List<PathPlan> plans = new ArrayList<>();
         for (int c = 0; c + 1 < componentStart.length; c++) {
-            plans.add(planCorners(refinement.mesh(), componentStart[c], componentStart[c + 1] - componentStart[c]));
+            plans.add(planCorners(path, componentStart[c], componentStart[c + 1] - componentStart[c]));
         }
         return plans;
     }
 
     /** {the widest strip the paths take, the triangle (refined mesh index) that sets it}. */
-    private static double[] narrowest(RefinedMesh mesh, List<PathPlan> plans) {
+    private static double[] narrowest(IndexedPolygons mesh, List<PathPlan> plans) {
         double widest = Double.POSITIVE_INFINITY;
         int narrowest = -1;
         for (PathPlan plan : plans) {
@@ -225,11 +229,23 @@ public final class Wrap {
      * @throws WrapException if the width is too wide for a triangle, or a triangle's excess cannot be tucked
      */
     public static Result wrap(HamiltonianRefinement.Result refinement, Options options) throws WrapException {
-        RefinedMesh mesh = refinement.mesh();
+        return wrap(refinement.mesh(), refinement.componentStart(), options);
+    }
+
+    /**
+     * Wraps any path of triangles: {@code path}'s faces, triangles listed in path order, each
+     * component's from {@code componentStart[c]} to {@code componentStart[c + 1]}, consecutive
+     * ones sharing an edge (a Hamiltonian refinement's are; a single triangle is a path too).
+     *
+     * @throws WrapException if the width is too wide for a triangle, or a triangle's excess cannot be tucked
+     * @throws IllegalStateException if consecutive triangles of a path share no edge
+     */
+    public static Result wrap(IndexedPolygons path, int[] componentStart, Options options) throws WrapException {
+        IndexedPolygons mesh = path;
         HostFrame[] frames = new HostFrame[mesh.faceCount()];
         double size = modelSize(mesh);
         double tolerance = 1e-9 * size;
-        List<PathPlan> plans = plans(refinement);
+        List<PathPlan> plans = plans(path, componentStart);
         double[] narrowestTriangle = narrowest(mesh, plans);
         double widest = narrowestTriangle[0];
         int narrowest = (int) narrowestTriangle[1];
@@ -292,12 +308,12 @@ public final class Wrap {
         return new Result(mesh, frames, List.copyOf(strips), List.copyOf(steps), width, thickness, widest);
     }
 
-    private static String tooWide(RefinedMesh mesh, int triangle, int pathIndex, int m, double width, double altitude) {
+    private static String tooWide(IndexedPolygons mesh, int triangle, int pathIndex, int m, double width, double altitude) {
         return String.format(Locale.ROOT, "the strip width %s is too wide for triangle %d of %d on the path (%s): "
                 + "its passes need a width of at most %s", width, pathIndex + 1, m, cornersText(mesh, triangle), altitude);
     }
 
-    static String cornersText(RefinedMesh mesh, int triangle) {
+    static String cornersText(IndexedPolygons mesh, int triangle) {
         StringBuilder text = new StringBuilder();
         for (int k = 0; k < 3; k++) {
             int v = mesh.faceVertex(triangle, k);
@@ -310,7 +326,7 @@ public final class Wrap {
         return text.toString();
     }
 
-    private static double modelSize(RefinedMesh mesh) {
+    private static double modelSize(IndexedPolygons mesh) {
         double[] min = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
         double[] max = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
         for (int v = 0; v < mesh.vertexCount(); v++) {
@@ -326,12 +342,12 @@ public final class Wrap {
         return x * x;
     }
 
-    private static double[] position(RefinedMesh mesh, int v) {
+    private static double[] position(IndexedPolygons mesh, int v) {
         return new double[] {mesh.coordinate(v, 0), mesh.coordinate(v, 1), mesh.coordinate(v, 2)};
     }
 
     /** Start corners and frames of every triangle of one path but the last's (which depends on the width). */
-    private static PathPlan planCorners(RefinedMesh mesh, int first, int m) {
+    private static PathPlan planCorners(IndexedPolygons mesh, int first, int m) {
         PathPlan plan = new PathPlan();
         plan.first = first;
         plan.m = m;
@@ -374,7 +390,7 @@ public final class Wrap {
     }
 
     /** The frame of path triangle i: its base (the exit edge, or the edge opposite its start) on the x axis, directed as the triangle runs. */
-    private static void frame(RefinedMesh mesh, PathPlan plan, int i) {
+    private static void frame(IndexedPolygons mesh, PathPlan plan, int i) {
         int[] c = plan.corners[i];
         int s = plan.start[i];
         int k = s == c[0] ? 0 : s == c[1] ? 1 : 2;
@@ -386,7 +402,7 @@ public final class Wrap {
     }
 
     /** For the bound on the default width: the smaller altitude of the last triangle over both ends it may be entered by. */
-    private static double lastAltitudeBound(RefinedMesh mesh, PathPlan plan) {
+    private static double lastAltitudeBound(IndexedPolygons mesh, PathPlan plan) {
         int last = plan.m - 1;
         double bound = Double.POSITIVE_INFINITY;
         for (int s : plan.shared[last - 1]) {
@@ -401,7 +417,7 @@ public final class Wrap {
      * The last triangle may be entered by either end of the edge before it: the one the passes
      * of the triangle before lead to, when it takes the width, so that no pass is run twice.
      */
-    private static void chooseLastStart(RefinedMesh mesh, PathPlan plan, double width) throws WrapException {
+    private static void chooseLastStart(IndexedPolygons mesh, PathPlan plan, double width) throws WrapException {
         if (plan.m == 1) {
             if (plan.frames[0].corners()[5] < width * (1 - 1e-12)) {
                 throw new WrapException(tooWide(mesh, plan.first, 0, 1, width, plan.frames[0].corners()[5]));
@@ -471,7 +487,7 @@ public final class Wrap {
         throw new IllegalStateException("a triangle with a repeated corner");
     }
 
-    private static int oppositeLongestEdge(RefinedMesh mesh, int[] c) {
+    private static int oppositeLongestEdge(IndexedPolygons mesh, int[] c) {
         int best = c[0];
         double longest = -1;
         for (int k = 0; k < 3; k++) {
@@ -488,7 +504,7 @@ public final class Wrap {
 
     /** The folding of one strip along one path. */
     private static final class Folding {
-        private final RefinedMesh mesh;
+        private final IndexedPolygons mesh;
         private final PathPlan plan;
         private final int strip;
         private final double w;
@@ -499,7 +515,7 @@ public final class Wrap {
         private Sheet sheet;
         private int pathIndex;
 
-        Folding(RefinedMesh mesh, PathPlan plan, int strip, double width, double thickness, double tolerance, List<Step> steps) {
+        Folding(IndexedPolygons mesh, PathPlan plan, int strip, double width, double thickness, double tolerance, List<Step> steps) {
             this.mesh = mesh;
             this.plan = plan;
             this.strip = strip;

@@ -33,7 +33,9 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
         int creasesOnEdges, double creaseLengthOnEdges) {
 
     public static WrapAnalysis of(Wrap.Result result, List<WrapGeometry> geometries) {
-        RefinedMesh mesh = result.mesh();
+        // A refinement knows the model's edges (each triangle stands on one); any other path's
+        // triangles are the model's own.
+        RefinedMesh refined = result.mesh() instanceof RefinedMesh r ? r : null;
         HostFrame[] frames = result.frames();
         int maxLayers = 0;
         int stackLevels = 0;
@@ -66,8 +68,7 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
                 covered += cells[1];
                 maxLayers = Math.max(maxLayers, (int) cells[2]);
             }
-            // Creases: along an edge of the model when they lie on the original edge the triangle stands on.
-            HalfedgeMesh original = mesh.original();
+            // Creases: along an edge of the model when they lie on one.
             for (int f = 0; f < sheet.faceCount(); f++) {
                 int[] loop = sheet.loop(f);
                 for (int i = 0; i < loop.length; i++) {
@@ -80,7 +81,7 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
                         continue;
                     }
                     double length = Math.hypot(sheet.u(b) - sheet.u(a), sheet.v(b) - sheet.v(a));
-                    if (onOriginalEdge(sheet, f, a, b, original, mesh, frames)) {
+                    if (onModelEdge(sheet, f, a, b, refined, frames)) {
                         onEdges++;
                         onEdgesLength += length;
                     } else {
@@ -98,16 +99,34 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
                 isometry, inside, insideLength, onEdges, onEdgesLength);
     }
 
-    private static boolean onOriginalEdge(Sheet sheet, int f, int a, int b, HalfedgeMesh original, RefinedMesh mesh,
-            HostFrame[] frames) {
-        int h = mesh.parentHalfedge(sheet.host(f));
+    /**
+     * Whether crease (a, b) of face f lies along an edge of the model: on a refinement, the
+     * original edge its triangle stands on (its other sides are spokes inside the face); on any
+     * other path, a side of its triangle.
+     */
+    private static boolean onModelEdge(Sheet sheet, int f, int a, int b, RefinedMesh refined, HostFrame[] frames) {
         HostFrame frame = frames[sheet.host(f)];
-        double[] from = point(original, original.fromVertex(h));
-        double[] to = point(original, original.toVertex(h));
-        double fx = frame.localX(from);
-        double fy = frame.localY(from);
-        double dx = frame.localX(to) - fx;
-        double dy = frame.localY(to) - fy;
+        if (refined != null) {
+            HalfedgeMesh original = refined.original();
+            int h = refined.parentHalfedge(sheet.host(f));
+            double[] from = point(original, original.fromVertex(h));
+            double[] to = point(original, original.toVertex(h));
+            return onLine(sheet, f, a, b, frame.localX(from), frame.localY(from), frame.localX(to), frame.localY(to));
+        }
+        double[] c = frame.corners();
+        for (int e = 0; e < 3; e++) {
+            int next = (e + 1) % 3;
+            if (onLine(sheet, f, a, b, c[2 * e], c[2 * e + 1], c[2 * next], c[2 * next + 1])) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Whether paper vertices a and b of face f lie on the line through (fx, fy) and (tx, ty) of its triangle's frame. */
+    private static boolean onLine(Sheet sheet, int f, int a, int b, double fx, double fy, double tx, double ty) {
+        double dx = tx - fx;
+        double dy = ty - fy;
         double length = Math.hypot(dx, dy);
         var pose = sheet.pose(f);
         for (int p : new int[] {a, b}) {

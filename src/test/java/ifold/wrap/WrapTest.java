@@ -229,6 +229,54 @@ class WrapTest {
                 e.getMessage());
     }
 
+    /** Any path of triangles wraps, not only a refinement's: one triangle, and a square's two halves. */
+    @Test
+    void wrapsAPathGivenAsIs() throws Exception {
+        PolygonSoup triangle = new PolygonSoup();
+        triangle.addVertex(0, 0, 0);
+        triangle.addVertex(10, 0, 0);
+        triangle.addVertex(3.5, 8, 0);
+        triangle.addTriangle(0, 1, 2);
+        checkPath(triangle, new int[] {0, 1}, 1);
+        PolygonSoup square = new PolygonSoup();
+        square.addVertex(0, 0, 0);
+        square.addVertex(4, 0, 0);
+        square.addVertex(4, 4, 0);
+        square.addVertex(0, 4, 0);
+        square.addTriangle(0, 1, 2);
+        square.addTriangle(0, 2, 3);
+        Wrap.Result result = checkPath(square, new int[] {0, 2}, 2);
+        assertEquals(1, result.count(Wrap.Kind.EDGE_CROSSING), "over the diagonal once");
+    }
+
+    private Wrap.Result checkPath(PolygonSoup path, int[] componentStart, int triangles) throws Exception {
+        double width = Wrap.widest(path, componentStart) / 4;
+        Wrap.Result result = Wrap.wrap(path, componentStart, new Wrap.Options(width, Double.NaN));
+        List<WrapGeometry> geometries = new ArrayList<>();
+        for (Wrap.Strip strip : result.strips()) {
+            geometries.add(WrapGeometry.of(strip.sheet(), result.frames()));
+        }
+        WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
+        Path obj = dir.resolve("path.obj");
+        WrapExport.writeObj(obj, "path", result, geometries);
+        List<double[]> model = new ArrayList<>();
+        for (int t = 0; t < triangles; t++) {
+            double[] corners = new double[9];
+            for (int k = 0; k < 3; k++) {
+                for (int axis = 0; axis < 3; axis++) {
+                    corners[3 * k + axis] = path.coordinate(path.faceVertex(t, k), axis);
+                }
+            }
+            model.add(corners);
+        }
+        List<WrapTruths.Violation> violations = WrapTruths.read(Files.readString(obj))
+                .check(model, result.thickness(), analysis.stackLevels(), 2000, 3);
+        assertTrue(violations.isEmpty(), () -> violations.subList(0, Math.min(3, violations.size())).toString());
+        assertEquals(1.0, analysis.coverage(), 1e-9);
+        assertTrue(analysis.creasesOnEdges() > 0, "tucks along the triangles' own edges count as along the model's");
+        return result;
+    }
+
     @Test
     void aWidthTooWideNamesTheTriangle() throws Exception {
         HalfedgeMesh cube = build(Solids.cube());
