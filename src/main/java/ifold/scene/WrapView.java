@@ -355,7 +355,7 @@ public final class WrapView {
                 before.toSpace(move.before().x(paper[c][0], paper[c][1]), move.before().y(paper[c][0], paper[c][1]), height, from[c], 0);
                 after.toSpace(move.after().x(paper[c][0], paper[c][1]), move.after().y(paper[c][0], paper[c][1]), height, to[c], 0);
             }
-            // The axis: the crease, where both placements agree; the angle: between the stub's
+            // The axis: the crease, where both placements agree; the angle: between the tail piece's
             // direction across the axis before and after.
             Vector3d a = new Vector3d(from[0][0], from[0][1], from[0][2]);
             Vector3d axis = new Vector3d(from[3][0], from[3][1], from[3][2]).sub(a).normalize();

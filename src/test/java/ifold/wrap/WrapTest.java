@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import ifold.mesh.HalfedgeMesh;
+import ifold.mesh.IndexedPolygons;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.PolygonSoup;
 import ifold.mesh.Solids;
@@ -33,10 +34,16 @@ class WrapTest {
     @TempDir
     Path dir;
 
-    /** Wraps, writes the OBJ, reads it back and checks every truth; returns the wrap. */
+    /** Wraps the mesh's refinement, writes the OBJ, reads it back and checks every truth against the mesh; returns the wrap. */
     private Wrap.Result wrapAndCheck(HalfedgeMesh mesh, Wrap.Options options, int samples) throws Exception {
         HamiltonianRefinement.Result refinement = HamiltonianRefinement.refine(mesh);
         Wrap.Result result = Wrap.wrap(refinement, options);
+        check(result, mesh, refinement.componentCount(), samples);
+        return result;
+    }
+
+    /** Checks a wrap of {@code model} (any triangles it rests on): the five truths on its OBJ, and the report against the file. */
+    private void check(Wrap.Result result, IndexedPolygons model, int components, int samples) throws Exception {
         List<WrapGeometry> geometries = new ArrayList<>();
         for (Wrap.Strip strip : result.strips()) {
             geometries.add(WrapGeometry.of(strip.sheet(), result.frames()));
@@ -46,20 +53,19 @@ class WrapTest {
         WrapExport.writeObj(obj, "test", result, geometries);
         WrapTruths truths = WrapTruths.read(Files.readString(obj));
         List<double[]> triangles = new ArrayList<>();
-        for (int f = 0; f < mesh.faceCount(); f++) {
+        for (int f = 0; f < model.faceCount(); f++) {
             double[] t = new double[9];
             for (int k = 0; k < 3; k++) {
-                int v = mesh.faceVertex(f, k);
-                t[3 * k] = mesh.x(v);
-                t[3 * k + 1] = mesh.y(v);
-                t[3 * k + 2] = mesh.z(v);
+                for (int axis = 0; axis < 3; axis++) {
+                    t[3 * k + axis] = model.coordinate(model.faceVertex(f, k), axis);
+                }
             }
             triangles.add(t);
         }
         List<WrapTruths.Violation> violations = truths.check(triangles, result.thickness(), analysis.stackLevels(), samples, 7);
         assertTrue(violations.isEmpty(), () -> violations.size() + " violations, the first: " + violations.subList(0, Math.min(5, violations.size())));
         // The report agrees with the file.
-        assertEquals(refinement.componentCount(), truths.strips(), "one strip per component");
+        assertEquals(components, truths.strips(), "one strip per component");
         for (int k = 0; k < truths.strips(); k++) {
             Wrap.Strip strip = result.strips().get(k);
             assertEquals(strip.sheet().length(), truths.length(k), 1e-9 * strip.sheet().length(), "strip length");
@@ -69,11 +75,10 @@ class WrapTest {
         assertTrue(analysis.isometryError() <= 1e-9, "isometry " + analysis.isometryError());
         assertTrue(analysis.outsidePaper() <= 1e-9 * 100, "paper outside " + analysis.outsidePaper());
         assertTrue(analysis.maxLayers() >= 1 && analysis.maxLayers() <= analysis.stackLevels(), "layers within the stack");
+        assertTrue(analysis.creasesOnEdges() > 0, "tucks along the model's edges are counted there");
         assertTrue(truths.farthestFromSurface() <= (analysis.stackLevels() + 1) * result.thickness() + 1e-9);
-        // Every fold the tail made is counted, and every path triangle but the last is left over an edge.
-        int triangleCount = refinement.mesh().faceCount();
-        assertEquals(triangleCount - refinement.componentCount(), result.count(Wrap.Kind.EDGE_CROSSING));
-        return result;
+        // Every path triangle but the last is left over an edge.
+        assertEquals(result.mesh().faceCount() - components, result.count(Wrap.Kind.EDGE_CROSSING));
     }
 
     private static HalfedgeMesh build(PolygonSoup soup) throws Exception {
@@ -237,7 +242,7 @@ class WrapTest {
         triangle.addVertex(10, 0, 0);
         triangle.addVertex(3.5, 8, 0);
         triangle.addTriangle(0, 1, 2);
-        checkPath(triangle, new int[] {0, 1}, 1);
+        checkPath(triangle, new int[] {0, 1});
         PolygonSoup square = new PolygonSoup();
         square.addVertex(0, 0, 0);
         square.addVertex(4, 0, 0);
@@ -245,35 +250,14 @@ class WrapTest {
         square.addVertex(0, 4, 0);
         square.addTriangle(0, 1, 2);
         square.addTriangle(0, 2, 3);
-        Wrap.Result result = checkPath(square, new int[] {0, 2}, 2);
+        Wrap.Result result = checkPath(square, new int[] {0, 2});
         assertEquals(1, result.count(Wrap.Kind.EDGE_CROSSING), "over the diagonal once");
     }
 
-    private Wrap.Result checkPath(PolygonSoup path, int[] componentStart, int triangles) throws Exception {
+    private Wrap.Result checkPath(PolygonSoup path, int[] componentStart) throws Exception {
         double width = Wrap.widest(path, componentStart) / 4;
         Wrap.Result result = Wrap.wrap(path, componentStart, new Wrap.Options(width, Double.NaN));
-        List<WrapGeometry> geometries = new ArrayList<>();
-        for (Wrap.Strip strip : result.strips()) {
-            geometries.add(WrapGeometry.of(strip.sheet(), result.frames()));
-        }
-        WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
-        Path obj = dir.resolve("path.obj");
-        WrapExport.writeObj(obj, "path", result, geometries);
-        List<double[]> model = new ArrayList<>();
-        for (int t = 0; t < triangles; t++) {
-            double[] corners = new double[9];
-            for (int k = 0; k < 3; k++) {
-                for (int axis = 0; axis < 3; axis++) {
-                    corners[3 * k + axis] = path.coordinate(path.faceVertex(t, k), axis);
-                }
-            }
-            model.add(corners);
-        }
-        List<WrapTruths.Violation> violations = WrapTruths.read(Files.readString(obj))
-                .check(model, result.thickness(), analysis.stackLevels(), 2000, 3);
-        assertTrue(violations.isEmpty(), () -> violations.subList(0, Math.min(3, violations.size())).toString());
-        assertEquals(1.0, analysis.coverage(), 1e-9);
-        assertTrue(analysis.creasesOnEdges() > 0, "tucks along the triangles' own edges count as along the model's");
+        check(result, path, componentStart.length - 1, 2000);
         return result;
     }
 
