@@ -108,6 +108,8 @@ public final class WrapView {
         private final List<Wrap.Step> steps;
         /** For each step, its place among all path triangles (strips one after another). */
         private final int[] triangleOf;
+        /** Each strip's face levels, final: found once, not per frame. */
+        private final int[][] levels;
         private final int triangles;
         private final double[] centres;
         private final double[] normals;
@@ -132,6 +134,10 @@ public final class WrapView {
                 total += result.strips().get(k).triangles();
             }
             triangles = total;
+            levels = new int[result.strips().size()][];
+            for (int k = 0; k < levels.length; k++) {
+                levels[k] = result.strips().get(k).sheet().levels();
+            }
             triangleOf = new int[steps.size()];
             for (int j = 0; j < steps.size(); j++) {
                 triangleOf[j] = firstOfStrip[steps.get(j).strip()] + steps.get(j).pathIndex();
@@ -299,7 +305,7 @@ public final class WrapView {
                     }
                 }
             }
-            int[] levels = sheet.levels();
+            int[] levels = this.levels[step.strip()];
             double thickness = sheet.thickness();
             List<double[]> points = new ArrayList<>();
             List<int[]> triangles = new ArrayList<>();
@@ -325,7 +331,7 @@ public final class WrapView {
                 addPolygon(corners, PaperView.PAPER, points, triangles, colors);
             }
             if (step.tail() != null && step.kind() != Wrap.Kind.END) {
-                addTail(sheet, step.tail(), fraction, points, triangles, colors);
+                addTail(sheet, step.strip(), step.tail(), fraction, points, triangles, colors);
             }
             double[] positions = new double[3 * points.size()];
             for (int p = 0; p < points.size(); p++) {
@@ -342,13 +348,13 @@ public final class WrapView {
          * The tail beyond its new crease, two widths of it, swinging from where it would run on
          * unfolded to where the fold lays it: a turn about the crease line in space.
          */
-        private void addTail(Sheet sheet, Wrap.TailMove move, double fraction, List<double[]> points, List<int[]> triangles,
+        private void addTail(Sheet sheet, int strip, Wrap.TailMove move, double fraction, List<double[]> points, List<int[]> triangles,
                 List<Integer> colors) {
             double w = sheet.width();
             double[][] paper = {{move.u0(), 0}, {move.u0() + 2 * w, 0}, {move.u1() + 2 * w, w}, {move.u1(), w}};
             HostFrame before = result.frames()[move.hostBefore()];
             HostFrame after = result.frames()[move.hostAfter()];
-            double height = (topLevel(sheet, move.hostBefore()) + 1.5) * sheet.thickness();
+            double height = (topLevel(sheet, levels[strip], move.hostBefore()) + 1.5) * sheet.thickness();
             double[][] from = new double[4][3];
             double[][] to = new double[4][3];
             for (int c = 0; c < 4; c++) {
@@ -377,9 +383,8 @@ public final class WrapView {
             addPolygon(corners, PaperView.CAP, points, triangles, colors);
         }
 
-        private int topLevel(Sheet sheet, int host) {
+        private int topLevel(Sheet sheet, int[] levels, int host) {
             int top = -1;
-            int[] levels = sheet.levels();
             for (int f : sheet.facesOn(host)) {
                 top = Math.max(top, levels[f]);
             }

@@ -595,17 +595,17 @@ public final class Wrap {
             if (Math.abs(shift - w) <= 1e-9 * w) {
                 // A valley fold lays the strip back across itself along the edge, a mountain fold
                 // one width on lays it flat beside the pass it left, running back.
-                record(Kind.ZIGZAG_TURN, host, tailFold(x1, y + w, d, -1, Placement.OVER, Crease.TURN));
-                record(Kind.ZIGZAG_TURN, host, tailFold(x1 + d * w, y, -d, -1, Placement.UNDER, Crease.TURN));
+                tailFold(Kind.ZIGZAG_TURN, host, x1, y + w, d, -1, Placement.OVER, Crease.TURN);
+                tailFold(Kind.ZIGZAG_TURN, host, x1 + d * w, y, -d, -1, Placement.UNDER, Crease.TURN);
                 return;
             }
             // Two 90° turn gadgets: down a vertical band [x1, x1 + w] beyond the edge, then back
             // along the next pass; the fold across the vertical band sets where the next pass lies.
             double middle = x1 + d * w / 2;
-            record(Kind.TURN_GADGET, host, tailFold(x1 + d * w, 0, 0, 1, Placement.OVER, Crease.GADGET));
-            record(Kind.TURN_GADGET, host, tailFold(middle, y + w / 2, -d, -1, Placement.OVER, Crease.GADGET));
-            record(Kind.TURN_GADGET, host, tailFold(0, next, 1, 0, Placement.OVER, Crease.GADGET));
-            record(Kind.TURN_GADGET, host, tailFold(middle, next + w / 2, -d, 1, Placement.UNDER, Crease.GADGET));
+            tailFold(Kind.TURN_GADGET, host, x1 + d * w, 0, 0, 1, Placement.OVER, Crease.GADGET);
+            tailFold(Kind.TURN_GADGET, host, middle, y + w / 2, -d, -1, Placement.OVER, Crease.GADGET);
+            tailFold(Kind.TURN_GADGET, host, 0, next, 1, 0, Placement.OVER, Crease.GADGET);
+            tailFold(Kind.TURN_GADGET, host, middle, next + w / 2, -d, 1, Placement.UNDER, Crease.GADGET);
         }
 
         /** From the last pass of triangle i (band [0, w], direction d) into the first pass of triangle i + 1. */
@@ -636,9 +636,9 @@ public final class Wrap {
             double reach = Math.abs(w / 2 * lx / ly);
             double fold = d > 0 ? Math.max(edges.rightmost(0, w) + margin, meetX + reach)
                     : Math.min(edges.leftmost(0, w) - margin, meetX - reach);
-            record(Kind.TURN_GADGET, host, tailFold(fold, 0, 0, 1, Placement.OVER, Crease.GADGET));
-            record(Kind.TURN_GADGET, host, tailFold(meetX, w / 2, lx, ly, Placement.OVER, Crease.GADGET));
-            record(Kind.EDGE_CROSSING, host, tailCross(0, 0, 1, 0, plan.first + i + 1, development));
+            tailFold(Kind.TURN_GADGET, host, fold, 0, 0, 1, Placement.OVER, Crease.GADGET);
+            tailFold(Kind.TURN_GADGET, host, meetX, w / 2, lx, ly, Placement.OVER, Crease.GADGET);
+            tailCross(Kind.EDGE_CROSSING, host, 0, 0, 1, 0, plan.first + i + 1, development);
             // The crease over the edge must lie on the edge itself: paper beyond its ends would be
             // joined to paper on both triangles' excess, which no tuck could then fold away.
             Isometry2 pose = sheet.tailPose();
@@ -703,30 +703,32 @@ public final class Wrap {
             return farthest;
         }
 
-        private int hostBefore;
-        private Isometry2 poseBefore;
-
-        /** A fold of the tail, noting where it lay before, for {@link #record}. */
-        private int tailFold(double px, double py, double dx, double dy, Placement next, Crease kind) throws FoldException {
-            hostBefore = sheet.tailHost();
-            poseBefore = sheet.tailPose();
-            lastOver = next == Placement.OVER;
-            return sheet.foldTail(px, py, dx, dy, next, kind);
+        /** A flat fold of the tail, recorded as a step with where the tail lay before and after. */
+        private void tailFold(Kind kind, int host, double px, double py, double dx, double dy, Placement next, Crease crease)
+                throws FoldException {
+            int hostBefore = sheet.tailHost();
+            Isometry2 before = sheet.tailPose();
+            int face = sheet.foldTail(px, py, dx, dy, next, crease);
+            recordTail(kind, host, face, hostBefore, before, next == Placement.OVER);
         }
 
-        private int tailCross(double px, double py, double dx, double dy, int nextHost, Isometry2 development) throws FoldException {
-            hostBefore = sheet.tailHost();
-            poseBefore = sheet.tailPose();
-            lastOver = true;
-            return sheet.crossTail(px, py, dx, dy, nextHost, development);
+        /** The fold of the tail over an edge onto the next triangle, recorded likewise. */
+        private void tailCross(Kind kind, int host, double px, double py, double dx, double dy, int nextHost, Isometry2 development)
+                throws FoldException {
+            int hostBefore = sheet.tailHost();
+            Isometry2 before = sheet.tailPose();
+            int face = sheet.crossTail(px, py, dx, dy, nextHost, development);
+            recordTail(kind, host, face, hostBefore, before, true);
         }
 
-        private void record(Kind kind, int host, int face) {
-            TailMove move = kind == Kind.END ? null : new TailMove(hostBefore, poseBefore, sheet.tailHost(), sheet.tailPose(),
-                    sheet.tailStart(false), sheet.tailStart(true), lastOver);
+        private void recordTail(Kind kind, int host, int face, int hostBefore, Isometry2 before, boolean over) {
+            TailMove move = new TailMove(hostBefore, before, sheet.tailHost(), sheet.tailPose(), sheet.tailStart(false),
+                    sheet.tailStart(true), over);
             steps.add(new Step(kind, strip, host, pathIndex, plan.m, face, null, sheet.faceCount(), move));
         }
 
-        private boolean lastOver = true;
+        private void record(Kind kind, int host, int face) {
+            steps.add(new Step(kind, strip, host, pathIndex, plan.m, face, null, sheet.faceCount(), null));
+        }
     }
 }
