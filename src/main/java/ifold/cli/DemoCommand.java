@@ -1,36 +1,29 @@
 package ifold.cli;
 
-import ifold.fold.FoldException;
-import ifold.fold.Paper;
-import ifold.fold.PaperAnalysis;
-import ifold.fold.PaperMotion;
+import ifold.geom.Triangle;
+import ifold.mesh.PolygonSoup;
 import ifold.render.FrameExport;
 import ifold.render.RenderUnavailableException;
 import ifold.scene.Animation;
-import ifold.scene.Camera;
-import ifold.scene.CameraMove;
 import ifold.scene.Geometry;
 import ifold.scene.Material;
-import ifold.scene.PaperView;
 import ifold.scene.Scene;
 import ifold.scene.SceneMesh;
-import ifold.scene.Sequence;
-import ifold.zigzag.Triangle;
-import ifold.zigzag.TurnGadget;
-import ifold.zigzag.ZigZag;
-import ifold.zigzag.ZigZagReport;
+import ifold.scene.WrapView;
+import ifold.sheet.FoldException;
+import ifold.sheet.Sheet;
+import ifold.wrap.TurnGadget;
+import ifold.wrap.Wrap;
+import ifold.wrap.WrapAnalysis;
+import ifold.wrap.WrapGeometry;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
-import org.joml.Quaterniond;
-import org.joml.Quaterniondc;
-import org.joml.Vector3d;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -122,51 +115,67 @@ final class DemoCommand implements Runnable {
             }
             PrintWriter out = spec.commandLine().getOut();
             outputs.check("zigzag", spec.commandLine().getErr(), true);
-            ZigZag.Result result;
+            PolygonSoup path = new PolygonSoup();
+            for (int i = 0; i < 3; i++) {
+                path.addVertex(shape.corner(i).x(), shape.corner(i).y(), shape.corner(i).z());
+            }
+            path.addTriangle(0, 1, 2);
+            Wrap.Result result;
             try {
-                result = ZigZag.wrap(shape, new ZigZag.Options(w, t, startCorner, endCorner, enterCorner));
-            } catch (FoldException e) {
+                result = Wrap.wrap(path, new int[] {0, 1}, new Wrap.Options(w, t, new Wrap.Ends(startCorner, endCorner, enterCorner)));
+            } catch (Wrap.WrapException e) {
                 outputs.frameOptions.removeFolderIfUnused();
                 throw new UserError("cannot wrap this triangle: " + e.getMessage());
             }
-            ZigZagReport report = ZigZagReport.of(result);
+            List<WrapGeometry> geometries = List.of(WrapGeometry.of(result.strips().get(0).sheet(), result.frames()));
+            WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
+            Sheet sheet = result.strips().get(0).sheet();
+            int turns = result.count(Wrap.Kind.ZIGZAG_TURN);
+            int overlaps = result.count(Wrap.Kind.OVERLAP);
+            int tucks = result.count(Wrap.Kind.TUCK);
+            // Two turn folds between passes, and the overlap is a pass of its own.
+            int passes = turns / 2 + 1 + overlaps;
             Map<String, Object> figures = new LinkedHashMap<>();
             figures.put("triangle", triangle);
             figures.put("start", Triangle.name(startCorner));
             figures.put("end", Triangle.name(endCorner));
-            figures.putAll(report.figures());
+            figures.put("stripLength", sheet.length());
+            figures.put("stripWidth", sheet.width());
+            figures.put("aspectRatio", sheet.length() / sheet.width());
+            figures.put("folds", turns + overlaps + tucks);
+            figures.put("zigzagFolds", turns + overlaps);
+            figures.put("tucks", tucks);
+            figures.put("passes", passes);
+            figures.put("lastPassOverlapped", overlaps > 0);
+            figures.put("maxLayers", analysis.maxLayers());
+            figures.put("stackLayers", analysis.stackLevels());
+            figures.put("paperEfficiency", analysis.surfaceArea() / analysis.paperArea());
+            figures.put("coverage", analysis.coverage());
+            figures.put("paperOutsideArea", WrapAnalysis.outsideArea(result));
+            figures.put("paperOutside", analysis.outsidePaper());
+            figures.put("farthestFromTriangle", analysis.farthest());
+            figures.put("isometryError", analysis.isometryError());
+            figures.put("triangleArea", analysis.surfaceArea());
             figures.put("thickness", t);
-            outputs.write(result.folded(), figures, out);
+            outputs.write(result, geometries, "demo zigzag --triangle " + triangle, figures, out);
             out.printf(Locale.ROOT, "zigzag: strip %.4g x %.4g (L/w %.1f), %d passes%s, %d turn folds, %d tucks, %d layers at most (a stack of %d), "
                     + "paper efficiency %.3f, coverage %.3f, paper outside %.2g, isometry error %.1e%n",
-                    report.length(), report.width(), report.aspect(), report.passes(), report.overlapped() ? " (last overlapped)" : "",
-                    report.zigzagFolds(), report.tucks(), report.maxLayers(), report.stackLayers(), report.efficiency(), report.coverage(),
-                    report.paperOutside(), report.isometryError());
+                    sheet.length(), sheet.width(), sheet.length() / sheet.width(), passes, overlaps > 0 ? " (last overlapped)" : "",
+                    turns + overlaps, tucks, analysis.maxLayers(), analysis.stackLevels(), analysis.surfaceArea() / analysis.paperArea(),
+                    analysis.coverage(), WrapAnalysis.outsideArea(result), analysis.isometryError());
             out.flush();
 
             Scene scene = new Scene();
-            Geometry paper = new Geometry("paper", PaperView.mesh(result.start()), PaperView.MATERIAL);
-            scene.root().attach(paper);
+            scene.root().attach(solid(shape));
             scene.root().attach(outline(shape));
-            List<String> names = new ArrayList<>();
-            List<PaperMotion> motions = new ArrayList<>();
-            for (ZigZag.Step step : result.steps()) {
-                motions.add(step.motion());
-                names.add(step.description());
-            }
-            // From above the triangle's front, tilted back; then turned about the screen's vertical
-            // to look from below. (The front faces -z for corners given clockwise.)
-            Quaterniondc front = Camera.facing(shape.normal());
-            Quaterniondc above = new Quaterniond().rotateX(-0.55).mul(front);
-            Quaterniondc below = new Quaterniond().rotateX(0.55).rotateY(Math.PI).mul(front);
-            frameTriangle(scene, shape, above);
-            Animation animation = new Sequence(List.of(PaperView.playing(paper, result.start(), motions, names),
-                    new CameraMove(scene.camera(), above, below, "the underside: the excess tucked under, layer on layer")));
+            WrapView.Playback animation = playback(scene, result, geometries);
             if (figure != null) {
-                int laid = result.count(ZigZag.Phase.ZIGZAG) + result.count(ZigZag.Phase.OVERLAP);
-                double[] stages = {Math.min(2, laid), laid, result.steps().size(), animation.stepCount()};
+                int laid = turns + overlaps;
+                double[] stages = {animation.positionAfter(Math.min(2, laid)), animation.positionAfter(laid),
+                    animation.positionAfter(result.steps().size()), animation.halfTurn()};
                 try {
                     FrameExport.panel(scene, animation, stages, 2, 800, 500, 4, figure);
+                    outputs.wrote(figure);
                     out.println("wrote " + figure);
                 } catch (RenderUnavailableException e) {
                     outputs.discardWritten();
@@ -177,9 +186,10 @@ final class DemoCommand implements Runnable {
                 }
                 animation.apply(0);
             }
-            // About two seconds a step: under a minute for the default triangle, and two minutes at most.
-            outputs.show(scene, animation, "zig-zag: " + report.folds() + " folds", Math.min(120, 2.0 * animation.stepCount()),
-                    true, spec);
+            // About two seconds a fold, and four for the turn at the end: under a minute for the
+            // default triangle, and two minutes at most.
+            outputs.show(scene, animation, "zig-zag: " + result.steps().size() + " folds",
+                    Math.min(120, 2.0 * (result.steps().size() + 2)), true, spec, 0);
             return 0;
         }
     }
@@ -236,7 +246,9 @@ final class DemoCommand implements Runnable {
                 outputs.frameOptions.removeFolderIfUnused();
                 throw new UserError("cannot make this turn: " + e.getMessage());
             }
-            Paper folded = gadget.folded();
+            Wrap.Result result = gadget.wrap();
+            List<WrapGeometry> geometries = List.of(WrapGeometry.of(gadget.sheet(), result.frames()));
+            WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
             Map<String, Object> figures = new LinkedHashMap<>();
             figures.put("angle", angle);
             figures.put("measuredAngle", gadget.measuredAngle());
@@ -245,29 +257,38 @@ final class DemoCommand implements Runnable {
             figures.put("stripLength", gadget.length());
             figures.put("stripWidth", width);
             figures.put("thickness", t);
-            figures.put("folds", gadget.folds().size());
-            figures.put("maxLayers", PaperAnalysis.maxLayers(folded));
-            figures.put("isometryError", PaperAnalysis.isometryError(folded));
-            outputs.write(folded, figures, out);
+            figures.put("folds", result.count(Wrap.Kind.TURN_GADGET));
+            figures.put("maxLayers", analysis.maxLayers());
+            figures.put("stackLayers", analysis.stackLevels());
+            figures.put("isometryError", analysis.isometryError());
+            outputs.write(result, geometries, String.format(Locale.ROOT, "demo turn --angle %s", angle), figures, out);
             out.printf(Locale.ROOT, "turn: %.6g degrees asked, %.6g measured, top side %s, %d layers at most, strip %.4g x %.4g%n",
-                    angle, gadget.measuredAngle(), gadget.endFacesUp() ? "up" : "down", figures.get("maxLayers"), gadget.length(), width);
+                    angle, gadget.measuredAngle(), gadget.endFacesUp() ? "up" : "down", analysis.maxLayers(), gadget.length(), width);
             out.flush();
 
             Scene scene = new Scene();
-            Geometry paper = new Geometry("paper", PaperView.mesh(gadget.start()), PaperView.MATERIAL);
-            scene.root().attach(paper);
-            scene.camera().setOrientation(new Quaterniond().rotateX(-0.6).rotateZ(-0.2));
-            Geometry end = new Geometry("folded", PaperView.mesh(folded), PaperView.MATERIAL);
-            scene.root().attach(end);
-            scene.frameAll(); // frames both the straight strip and the turned one
-            scene.root().detach(end);
-            List<String> names = List.of("the fold across the strip lays it back over itself",
-                    String.format(Locale.ROOT, "the turn fold sets it running at %.4g degrees, top side up", angle));
-            outputs.show(scene, PaperView.playing(paper, gadget.start(), gadget.folds(), names),
-                    String.format(Locale.ROOT, "turn gadget: %.4g degrees", angle), 6, true, spec);
+            Animation animation = playback(scene, result, geometries);
+            outputs.show(scene, animation, String.format(Locale.ROOT, "turn gadget: %.4g degrees", angle), 6, true, spec, 0);
             return 0;
         }
     }
+
+    /** The strip laid fold by fold over what the scene holds (the triangle's outline, or nothing), then turned round. */
+    private static WrapView.Playback playback(Scene scene, Wrap.Result result, List<WrapGeometry> geometries) {
+        // White paper on a white background would not be seen where it leaves the triangle.
+        scene.setBackground(BACKGROUND);
+        WrapView.Strips strips = WrapView.strips(result, geometries);
+        Geometry paper = new Geometry("paper", strips.mesh(), WrapView.PAPER);
+        paper.setHiddenColor(0); // not yet laid: not there
+        scene.root().attach(paper);
+        Geometry current = new Geometry("folding", strips.mesh(), WrapView.PAPER_FOLDING);
+        scene.root().attach(current);
+        scene.frameAll();
+        return WrapView.animation(scene, paper, current, strips, result);
+    }
+
+    /** A soft grey-blue: the white paper stands out on it, and the triangle's colour is darker still. */
+    private static final int BACKGROUND = 0xFFD3DAE2;
 
     /** Parses {@code x1,y1,x2,y2,x3,y3}; a bad value or a triangle with no area is the option's error. */
     static Triangle parseTriangle(String text) {
@@ -313,6 +334,23 @@ final class DemoCommand implements Runnable {
         };
     }
 
+    /**
+     * The triangle itself, in the wrap's quiet model colour, seen from its front only: from
+     * behind, the paper tucked under it shows through.
+     */
+    private static Geometry solid(Triangle triangle) {
+        double[] positions = new double[9];
+        for (int i = 0; i < 3; i++) {
+            positions[3 * i] = triangle.corner(i).x();
+            positions[3 * i + 1] = triangle.corner(i).y();
+            positions[3 * i + 2] = triangle.corner(i).z();
+        }
+        SceneMesh mesh = new SceneMesh(positions, new int[] {0, 1, 2}, new int[] {WrapView.MODEL}, new int[0], new int[0]);
+        Geometry solid = new Geometry("triangle face", mesh, new Material(WrapView.MODEL, WrapView.MODEL, false, false));
+        solid.setClosed(true);
+        return solid;
+    }
+
     /** The triangle's edges, drawn in green: the paper must cover them and end inside them. */
     private static Geometry outline(Triangle triangle) {
         double[] positions = new double[9];
@@ -324,17 +362,5 @@ final class DemoCommand implements Runnable {
         int green = 0xFF1E8C3A;
         SceneMesh mesh = new SceneMesh(positions, new int[0], new int[0], new int[] {0, 1, 1, 2, 2, 0}, new int[] {green, green, green});
         return new Geometry("triangle", mesh, new Material(green, green, false, true));
-    }
-
-    /** Looks at the triangle (not the whole strip, whose tail swings far out while it is laid). */
-    private static void frameTriangle(Scene scene, Triangle triangle, Quaterniondc orientation) {
-        Vector3d center = new Vector3d(triangle.corner(0)).add(triangle.corner(1)).add(triangle.corner(2)).div(3);
-        double radius = 0;
-        for (int i = 0; i < 3; i++) {
-            radius = Math.max(radius, center.distance(triangle.corner(i)));
-        }
-        scene.camera().setOrientation(orientation);
-        scene.camera().frame(center, 1.15 * radius);
-        scene.camera().setSceneRadius(10 * radius);
     }
 }

@@ -9,6 +9,9 @@ import ifold.render.ViewerWindow;
 import ifold.scene.Animation;
 import ifold.scene.Player;
 import ifold.scene.Scene;
+import ifold.wrap.Wrap;
+import ifold.wrap.WrapExport;
+import ifold.wrap.WrapGeometry;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
@@ -73,15 +76,34 @@ final class PaperOutputs {
                 written.add(exportObj);
                 out.println("wrote " + exportObj);
             }
-            if (report != null) {
-                String json = Json.write(figures);
-                AtomicFile.write(report, stream -> stream.write(json.getBytes(StandardCharsets.UTF_8)), true);
-                written.add(report);
-                out.println("wrote " + report);
-            }
+            writeReport(figures, out);
         } catch (IOException e) {
             discardWritten();
             throw new UserError("cannot write: " + e.getMessage());
+        }
+    }
+
+    /** Writes a wrap (or any folding on the sheet engine) as OBJ and its figures as JSON, as asked. */
+    void write(Wrap.Result result, List<WrapGeometry> geometries, String source, Map<String, Object> figures, PrintWriter out) {
+        try {
+            if (exportObj != null) {
+                WrapExport.writeObj(exportObj, source, result, geometries);
+                written.add(exportObj);
+                out.println("wrote " + exportObj);
+            }
+            writeReport(figures, out);
+        } catch (IOException e) {
+            discardWritten();
+            throw new UserError("cannot write: " + e.getMessage());
+        }
+    }
+
+    private void writeReport(Map<String, Object> figures, PrintWriter out) throws IOException {
+        if (report != null) {
+            String json = Json.write(figures);
+            AtomicFile.write(report, stream -> stream.write(json.getBytes(StandardCharsets.UTF_8)), true);
+            written.add(report);
+            out.println("wrote " + report);
         }
     }
 

@@ -161,7 +161,7 @@ final class WrapCommand implements Callable<Integer> {
         Geometry paper = new Geometry("paper", strips.mesh(), WrapView.PAPER);
         paper.setHiddenColor(0); // not yet laid: not there
         scene.root().attach(paper);
-        Geometry current = new Geometry("folding", strips.mesh(), WrapView.PAPER);
+        Geometry current = new Geometry("folding", strips.mesh(), WrapView.PAPER_FOLDING);
         scene.root().attach(current);
         scene.frameAll();
         Animation animation = WrapView.animation(scene, paper, current, strips, result);

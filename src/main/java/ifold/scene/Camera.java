@@ -98,7 +98,8 @@ public final class Camera {
             return new Quaterniond();
         }
         if (cos < -1 + 1e-12) {
-            return new Quaterniond(new AxisAngle4d(Math.PI, 1, 0, 0));
+            // Turned about the vertical, not the horizontal: what is up in the plane stays up.
+            return new Quaterniond(new AxisAngle4d(Math.PI, 0, 1, 0));
         }
         Vector3d axis = new Vector3d(normal).cross(0, 0, 1).normalize();
         return new Quaterniond(new AxisAngle4d(Math.acos(cos), axis));

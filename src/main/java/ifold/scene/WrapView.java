@@ -30,6 +30,15 @@ public final class WrapView {
     /** How the paper is drawn: its top side cream, caps grey, its underside blue-grey; no outlines (the faces are many and small). */
     public static final Material PAPER = new Material(PaperView.PAPER, 0xFF8FAACB, true, false);
 
+    /**
+     * The paper of the triangle being wrapped: its faces outlined, so that each pass, turn and
+     * tucked flap can be told from the next while it is made.
+     */
+    public static final Material PAPER_FOLDING = new Material(PaperView.PAPER, 0xFF8FAACB, true, true);
+
+    /** The outline of a face being folded: darker than the paper, quieter than the model's edges. */
+    private static final int FACE_EDGE = 0xFF6F7B88;
+
     /** The wrap's strips and, for each strip and path triangle, how many of the mesh's triangles exist once it is wrapped. */
     public record Strips(SceneMesh mesh, int[][] trianglesAfter) {
     }
@@ -95,11 +104,12 @@ public final class WrapView {
      * being wrapped, as it stands at the fold shown, and the swinging paper are drawn by
      * {@code current}, rebuilt for each frame (it is a few dozen faces).
      */
-    public static Animation animation(Scene scene, Geometry done, Geometry current, Strips strips, Wrap.Result result) {
+    public static Playback animation(Scene scene, Geometry done, Geometry current, Strips strips, Wrap.Result result) {
         return new Playback(scene, done, current, strips, result);
     }
 
-    private static final class Playback implements Animation {
+    /** The wrap played fold by fold, then one turn around the result. */
+    public static final class Playback implements Animation {
         private final Scene scene;
         private final Geometry done;
         private final Geometry current;
@@ -116,7 +126,9 @@ public final class WrapView {
         private final Vector3d modelCentre;
         private final double modelRadius;
         private final int window;
-        private final Quaterniondc finalView = new Quaterniond().rotateX(-0.5).rotateY(0.6);
+        /** What the final turn starts from: the model turned to show its outer side, where it has one. */
+        private final Quaterniondc finalFacing;
+        private final double finalTurn;
         private double shown = -1;
 
         Playback(Scene scene, Geometry done, Geometry current, Strips strips, Wrap.Result result) {
@@ -144,6 +156,7 @@ public final class WrapView {
             }
             centres = new double[3 * triangles];
             normals = new double[3 * triangles];
+            double[] areas = new double[triangles];
             int g = 0;
             for (Wrap.Strip strip : result.strips()) {
                 for (int i = 0; i < strip.triangles(); i++, g++) {
@@ -157,8 +170,22 @@ public final class WrapView {
                         centres[3 * g + axis] = sum / 3;
                         normals[3 * g + axis] = n[axis];
                     }
+                    double[] c = result.frames()[t].corners();
+                    areas[g] = Math.abs((c[2] - c[0]) * (c[5] - c[1]) - (c[4] - c[0]) * (c[3] - c[1])) / 2;
                 }
             }
+            // An open surface (a lone triangle, a patch) is wrapped on the side its faces face:
+            // the final turn starts facing it. A closed one shows every side in turn anyway.
+            Vector3d weighted = new Vector3d();
+            double area = 0;
+            for (int t = 0; t < triangles; t++) {
+                double a = areas[t];
+                weighted.fma(a, new Vector3d(normals[3 * t], normals[3 * t + 1], normals[3 * t + 2]));
+                area += a;
+            }
+            boolean open = area > 0 && weighted.length() > 0.5 * area;
+            finalFacing = open ? Camera.facing(weighted.normalize()) : new Quaterniond();
+            finalTurn = open ? 0.3 : 0.6;
             Bounds bounds = scene.bounds();
             modelCentre = bounds.center(new Vector3d());
             modelRadius = bounds.radius();
@@ -169,6 +196,16 @@ public final class WrapView {
         @Override
         public int stepCount() {
             return REVEAL_STEPS + TURN_STEPS;
+        }
+
+        /** The position at which the first {@code folds} steps of the wrap are made and the next has not begun. */
+        public double positionAfter(int folds) {
+            return steps.isEmpty() ? 0 : (double) REVEAL_STEPS * Math.max(0, Math.min(folds, steps.size())) / steps.size();
+        }
+
+        /** The position half way round the final turn: the wrapped model seen from behind. */
+        public double halfTurn() {
+            return REVEAL_STEPS + TURN_STEPS / 2.0;
         }
 
         /** The step (fold) shown at a position, with how far it has gone. */
@@ -188,7 +225,7 @@ public final class WrapView {
                 current.setMesh(EMPTY);
                 camera.frame(modelCentre, modelRadius);
                 double angle = Math.toRadians((position - REVEAL_STEPS) * 360.0 / TURN_STEPS);
-                camera.setOrientation(new Quaterniond(finalView).mul(new Quaterniond().rotationY(Math.max(0, angle))));
+                camera.setOrientation(new Quaterniond().rotateX(-0.5).rotateY(finalTurn + Math.max(0, angle)).mul(finalFacing));
                 return;
             }
             double along = along(position);
@@ -253,8 +290,9 @@ public final class WrapView {
             normal.normalize();
             // Aim between the model's centre and the triangle, close enough to see the fold and
             // far enough to see where on the model it is; the triangle faces the viewer.
+            // A lone triangle or two are seen whole.
             Vector3d target = new Vector3d(modelCentre).lerp(centre, 0.6);
-            camera.frame(target, 0.8 * modelRadius);
+            camera.frame(target, (triangles <= 2 ? 1.15 : 0.8) * modelRadius);
             camera.setSceneRadius(3 * modelRadius);
             camera.setOrientation(new Quaterniond().rotateX(-0.25).mul(Camera.facing(normal)));
         }
@@ -310,6 +348,7 @@ public final class WrapView {
             List<double[]> points = new ArrayList<>();
             List<int[]> triangles = new ArrayList<>();
             List<Integer> colors = new ArrayList<>();
+            List<Integer> edges = new ArrayList<>();
             HostFrame frame = result.frames()[step.triangle()];
             for (int f = firstFace; f < end; f++) {
                 int[] loop = loops[f - firstFace];
@@ -328,7 +367,12 @@ public final class WrapView {
                     corners[c] = point;
                 }
                 // Counter-clockwise on the sheet; a mirrored pose shows its underside, drawn as such.
+                int base = points.size();
                 addPolygon(corners, PaperView.PAPER, points, triangles, colors);
+                for (int c = 0; c < corners.length; c++) {
+                    edges.add(base + c);
+                    edges.add(base + (c + 1) % corners.length);
+                }
             }
             if (step.tail() != null && step.kind() != Wrap.Kind.END) {
                 addTail(sheet, step.strip(), step.tail(), fraction, points, triangles, colors);
@@ -341,7 +385,10 @@ public final class WrapView {
             for (int t = 0; t < triangles.size(); t++) {
                 System.arraycopy(triangles.get(t), 0, flat, 3 * t, 3);
             }
-            return new SceneMesh(positions, flat, colors.stream().mapToInt(Integer::intValue).toArray(), new int[0], new int[0]);
+            int[] edgeColors = new int[edges.size() / 2];
+            java.util.Arrays.fill(edgeColors, FACE_EDGE);
+            return new SceneMesh(positions, flat, colors.stream().mapToInt(Integer::intValue).toArray(),
+                    edges.stream().mapToInt(Integer::intValue).toArray(), edgeColors);
         }
 
         /**

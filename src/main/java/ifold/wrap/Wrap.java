@@ -66,12 +66,42 @@ public final class Wrap {
      *
      * @param width the strip's width, or NaN for {@link #defaultWidth}
      * @param thickness the paper's thickness, or NaN for width / 80
+     * @param ends for paths of one triangle, where the strip starts, ends and comes in; null to
+     *     let the planner choose (a path of several triangles sets them itself)
      */
-    public record Options(double width, double thickness) {
+    public record Options(double width, double thickness, Ends ends) {
+        public Options(double width, double thickness) {
+            this(width, thickness, null);
+        }
+    }
+
+    /**
+     * How a lone triangle is wrapped (the single-triangle demo, Figure 11 of the seed). Corners
+     * are places 0, 1, 2 in the face's list of vertices.
+     *
+     * @param start the corner the strip starts at: its passes run parallel to the opposite edge
+     * @param end the corner it ends at, one of the other two
+     * @param enterFrom the corner beside which the first pass begins, one of the other two, as
+     *     where the strip comes in from a triangle before; or -1 to begin on whichever side needs
+     *     no overlap. Where the last pass then runs away from {@code end}, it is laid back over
+     *     itself (Figure 5): a fold across the strip, and a pass back.
+     */
+    public record Ends(int start, int end, int enterFrom) {
+        public Ends {
+            if (start < 0 || start > 2 || end < 0 || end > 2) {
+                throw new IllegalArgumentException("corners are 0, 1 or 2");
+            }
+            if (start == end) {
+                throw new IllegalArgumentException("the strip must end at another corner than its start");
+            }
+            if (enterFrom != -1 && (enterFrom < 0 || enterFrom > 2 || enterFrom == start)) {
+                throw new IllegalArgumentException("the strip comes in beside one of the corners other than its start");
+            }
+        }
     }
 
     /** What a step of the wrap does. */
-    public enum Kind { ZIGZAG_TURN, TURN_GADGET, EDGE_CROSSING, TUCK, END }
+    public enum Kind { ZIGZAG_TURN, TURN_GADGET, EDGE_CROSSING, OVERLAP, TUCK, END }
 
     /**
      * One fold of the wrap, for the report and the animation.
@@ -93,6 +123,7 @@ public final class Wrap {
                 case ZIGZAG_TURN -> "zig-zag turn (45° fold)";
                 case TURN_GADGET -> "turn gadget fold";
                 case EDGE_CROSSING -> "fold over the edge to the next triangle";
+                case OVERLAP -> "overlap: the last pass laid back over itself";
                 case TUCK -> "tuck: excess folded under along an edge";
                 case END -> "the strip ends";
             };
@@ -171,6 +202,8 @@ public final class Wrap {
         /** Vertex ids at the frame's origin (x axis start) and at the end of the base. */
         int[] baseFrom;
         int[] baseTo;
+        /** For a lone triangle: the ends asked, or null. */
+        Ends ends;
     }
 
     /**
@@ -184,7 +217,7 @@ public final class Wrap {
 
     /** {@link #widest(HamiltonianRefinement.Result)} for any path of triangles: see {@link #wrap(IndexedPolygons, int[], Options)}. */
     public static double widest(IndexedPolygons path, int[] componentStart) {
-        return narrowest(path, plans(path, componentStart))[0];
+        return narrowest(path, plans(path, componentStart, null))[0];
     }
 
     /**
@@ -199,10 +232,14 @@ public final class Wrap {
     /** The passes the narrowest triangle gets at the default width. */
     public static final int DEFAULT_PASSES = 3;
 
-    private static List<PathPlan> plans(IndexedPolygons path, int[] componentStart) {
+    private static List<PathPlan> plans(IndexedPolygons path, int[] componentStart, Ends ends) {
         List<PathPlan> plans = new ArrayList<>();
         for (int c = 0; c + 1 < componentStart.length; c++) {
-            plans.add(planCorners(path, componentStart[c], componentStart[c + 1] - componentStart[c]));
+            int m = componentStart[c + 1] - componentStart[c];
+            if (ends != null && m != 1) {
+                throw new IllegalArgumentException("the ends of a strip are asked for paths of one triangle only; this one has " + m);
+            }
+            plans.add(planCorners(path, componentStart[c], m, ends));
         }
         return plans;
     }
@@ -245,7 +282,7 @@ public final class Wrap {
         HostFrame[] frames = new HostFrame[mesh.faceCount()];
         double size = modelSize(mesh);
         double tolerance = 1e-9 * size;
-        List<PathPlan> plans = plans(path, componentStart);
+        List<PathPlan> plans = plans(path, componentStart, options.ends());
         double[] narrowestTriangle = narrowest(mesh, plans);
         double widest = narrowestTriangle[0];
         int narrowest = (int) narrowestTriangle[1];
@@ -347,8 +384,9 @@ public final class Wrap {
     }
 
     /** Start corners and frames of every triangle of one path but the last's (which depends on the width). */
-    private static PathPlan planCorners(IndexedPolygons mesh, int first, int m) {
+    private static PathPlan planCorners(IndexedPolygons mesh, int first, int m, Ends ends) {
         PathPlan plan = new PathPlan();
+        plan.ends = ends;
         plan.first = first;
         plan.m = m;
         plan.corners = new int[m][3];
@@ -369,7 +407,7 @@ public final class Wrap {
         plan.baseFrom = new int[m];
         plan.baseTo = new int[m];
         if (m == 1) {
-            plan.start[0] = oppositeLongestEdge(mesh, plan.corners[0]);
+            plan.start[0] = ends != null ? plan.corners[0][ends.start()] : oppositeLongestEdge(mesh, plan.corners[0]);
             frame(mesh, plan, 0);
             return plan;
         }
@@ -456,6 +494,15 @@ public final class Wrap {
             int other = entry[0] == plan.start[i] ? entry[1] : entry[0];
             return other == plan.baseFrom[i] ? 1 : -1;
         }
+        if (plan.m == 1 && plan.ends != null) {
+            Ends ends = plan.ends;
+            int wantLast = lastDirectionToEnd(plan);
+            int lastIfFirstPositive = passes(plan.frames[0].corners()[5], width) % 2 == 1 ? 1 : -1;
+            if (ends.enterFrom() < 0) {
+                return wantLast * lastIfFirstPositive;
+            }
+            return plan.corners[0][ends.enterFrom()] == plan.baseFrom[0] ? 1 : -1;
+        }
         if (plan.m <= 2) {
             return 1; // the end it leaves by is free (or there is none): it is chosen to fit
         }
@@ -463,6 +510,24 @@ public final class Wrap {
         int exit = plan.start[1];
         int towardsExit = exit == plan.baseTo[0] ? 1 : -1;
         return towardsExit * (passes % 2 == 1 ? 1 : -1);
+    }
+
+    /** For a lone triangle with its ends asked: the direction its last pass must run to end at the corner asked. */
+    private static int lastDirectionToEnd(PathPlan plan) {
+        return plan.corners[0][plan.ends.end()] == plan.baseTo[0] ? 1 : -1;
+    }
+
+    /**
+     * Whether the last pass of a lone triangle is laid back over itself: its first pass was
+     * set by the side the strip comes in from, and the parity of the passes then brings the
+     * last one away from the end asked.
+     */
+    static boolean overlapped(PathPlan plan, double width) {
+        if (plan.m != 1 || plan.ends == null) {
+            return false;
+        }
+        int lastIfFirstPositive = passes(plan.frames[0].corners()[5], width) % 2 == 1 ? 1 : -1;
+        return firstDirection(plan, 0, width) * lastIfFirstPositive != lastDirectionToEnd(plan);
     }
 
     private static int[] sharedEdge(int[] a, int[] b) {
@@ -566,12 +631,21 @@ public final class Wrap {
                 d = -d;
             }
             if (last) {
-                double end = d > 0 ? edges.rightmost(bottom[k - 1], bottom[k - 1] + w) + margin
-                        : edges.leftmost(bottom[k - 1], bottom[k - 1] + w) - margin;
+                double end = endOfPass(edges, d, bottom[k - 1]);
+                if (overlapped(plan, w)) {
+                    tailFold(Kind.OVERLAP, host, end, 0, 0, 1, Placement.OVER, Crease.TURN);
+                    d = -d;
+                    end = endOfPass(edges, d, bottom[k - 1]);
+                }
                 record(Kind.END, host, sheet.endTail(end, 0, 0, 1));
             } else {
                 leave(i, edges, d);
             }
+        }
+
+        /** Where a pass in the band [y, y + w] running in direction d ends: just beyond the slanted edge ahead. */
+        private double endOfPass(SlantedEdges edges, int d, double y) {
+            return d > 0 ? edges.rightmost(y, y + w) + margin : edges.leftmost(y, y + w) - margin;
         }
 
         /** The tail came in over the edge before: it must lie along the first pass, running in direction d. */
@@ -674,14 +748,30 @@ public final class Wrap {
                 }
                 if (tucks == MAX_TUCKS) {
                     throw new WrapException(String.format(Locale.ROOT, "triangle %d of %d on the path (%s): the excess is not"
-                            + " hidden after %d tucks: the naive tuck-under bounces paper between the edges of a sharp corner;"
-                            + " a narrower strip may help", i + 1, plan.m, cornersText(mesh, host), MAX_TUCKS));
+                            + " hidden after %d tucks: the naive tuck-under bounces paper between the edges of a corner as"
+                            + " sharp as %.1f degrees; a narrower strip may help", i + 1, plan.m, cornersText(mesh, host), MAX_TUCKS,
+                            smallestAngle(c)));
                 }
                 int from = edge;
                 int to = (edge + 1) % 3;
                 Sheet.Tuck tuck = sheet.tuck(host, c[2 * from], c[2 * from + 1], c[2 * to] - c[2 * from], c[2 * to + 1] - c[2 * from + 1]);
                 steps.add(new Step(Kind.TUCK, strip, host, pathIndex, plan.m, -1, tuck, sheet.faceCount(), null));
             }
+        }
+
+        /** The triangle's smallest angle in degrees, from its corners in its frame. */
+        private static double smallestAngle(double[] c) {
+            double smallest = 180;
+            for (int k = 0; k < 3; k++) {
+                int a = (k + 1) % 3;
+                int b = (k + 2) % 3;
+                double ux = c[2 * a] - c[2 * k];
+                double uy = c[2 * a + 1] - c[2 * k + 1];
+                double vx = c[2 * b] - c[2 * k];
+                double vy = c[2 * b + 1] - c[2 * k + 1];
+                smallest = Math.min(smallest, Math.toDegrees(Math.abs(Math.atan2(ux * vy - uy * vx, ux * vx + uy * vy))));
+            }
+            return smallest;
         }
 
         /** How far the paper on the host reaches beyond edge e of the triangle (corners counter-clockwise: outside is to the right). */

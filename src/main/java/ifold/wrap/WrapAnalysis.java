@@ -100,6 +100,34 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
     }
 
     /**
+     * The area of paper whose shadow on its triangle falls outside it: each face less its part
+     * inside the triangle. After the tucks, nothing (up to rounding).
+     */
+    public static double outsideArea(Wrap.Result result) {
+        double outside = 0;
+        for (Wrap.Strip strip : result.strips()) {
+            Sheet sheet = strip.sheet();
+            for (int f = 0; f < sheet.faceCount(); f++) {
+                double[] c = result.frames()[sheet.host(f)].corners();
+                double[] xy = sheet.placed(f);
+                double whole = Math.abs(Polygons2.twiceArea(xy, xy.length / 2)) / 2;
+                double[] inside = xy;
+                for (int e = 0; e < 3 && inside != null; e++) {
+                    double ax = c[2 * e];
+                    double ay = c[2 * e + 1];
+                    double dx = c[2 * ((e + 1) % 3)] - ax;
+                    double dy = c[2 * ((e + 1) % 3) + 1] - ay;
+                    // Inside is left of each edge: dy·x - dx·y <= dy·ax - dx·ay.
+                    inside = Polygons2.clip(inside, inside.length / 2, dy, -dx, dy * ax - dx * ay, 0);
+                }
+                double kept = inside == null ? 0 : Math.abs(Polygons2.twiceArea(inside, inside.length / 2)) / 2;
+                outside += Math.max(0, whole - kept);
+            }
+        }
+        return outside;
+    }
+
+    /**
      * Whether crease (a, b) of face f lies along an edge of the model: on a refinement, the
      * original edge its triangle stands on (its other sides are spokes inside the face); on any
      * other path, a side of its triangle.

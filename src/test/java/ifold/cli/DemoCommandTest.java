@@ -59,7 +59,7 @@ class DemoCommandTest {
         CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--width", "1", "--thickness", "0.5", "--no-view", "--report", out), "--thickness");
         CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--no-view", "--export-obj", dir.resolve("x.stl").toString()), "--export-obj");
         CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--no-view", "--report", dir.resolve("no/r.json").toString()), "--report", "does not exist");
-        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--triangle", "0,0,10,0,5,0.3", "--width", "0.015", "--no-view",
+        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--triangle", "0,0,10,0,5,0.05", "--width", "0.0025", "--no-view",
                 "--report", out), "cannot wrap this triangle", "degrees");
         CliTest.assertOneLineError(CliTest.run("demo", "turn", "--angle", "180", "--no-view"), "--angle");
         CliTest.assertOneLineError(CliTest.run("demo", "turn", "--angle", "90", "--overhang", "-1", "--no-view"), "--overhang");
@@ -94,7 +94,7 @@ class DemoCommandTest {
         CliTest.Run run = CliTest.run("demo", "zigzag", "--frames", frames.toString(), "--size", "64x36", "--fps", "1");
         assertEquals(0, run.code(), run.err());
         try (var files = Files.list(frames)) {
-            assertEquals(32, files.count(), "two seconds a step, 16 steps, one frame a second");
+            assertEquals(30, files.count(), "two seconds a step, 13 steps (12 folds and the end) and four for the turn, one frame a second");
         }
     }
 }

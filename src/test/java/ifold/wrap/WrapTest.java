@@ -38,12 +38,12 @@ class WrapTest {
     private Wrap.Result wrapAndCheck(HalfedgeMesh mesh, Wrap.Options options, int samples) throws Exception {
         HamiltonianRefinement.Result refinement = HamiltonianRefinement.refine(mesh);
         Wrap.Result result = Wrap.wrap(refinement, options);
-        check(result, mesh, refinement.componentCount(), samples);
+        check(dir, result, mesh, refinement.componentCount(), samples);
         return result;
     }
 
     /** Checks a wrap of {@code model} (any triangles it rests on): the five truths on its OBJ, and the report against the file. */
-    private void check(Wrap.Result result, IndexedPolygons model, int components, int samples) throws Exception {
+    static void check(Path dir, Wrap.Result result, IndexedPolygons model, int components, int samples) throws Exception {
         List<WrapGeometry> geometries = new ArrayList<>();
         for (Wrap.Strip strip : result.strips()) {
             geometries.add(WrapGeometry.of(strip.sheet(), result.frames()));
@@ -257,7 +257,7 @@ class WrapTest {
     private Wrap.Result checkPath(PolygonSoup path, int[] componentStart) throws Exception {
         double width = Wrap.widest(path, componentStart) / 4;
         Wrap.Result result = Wrap.wrap(path, componentStart, new Wrap.Options(width, Double.NaN));
-        check(result, path, componentStart.length - 1, 2000);
+        check(dir, result, path, componentStart.length - 1, 2000);
         return result;
     }
 

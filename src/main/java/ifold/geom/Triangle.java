@@ -1,16 +1,12 @@
-package ifold.zigzag;
+package ifold.geom;
 
-import ifold.geom.Tolerance;
-import org.joml.Matrix4d;
-import org.joml.Matrix4dc;
 import org.joml.Vector3d;
 import org.joml.Vector3dc;
 
 /**
- * A triangle in space, its corners named A, B and C (0, 1, 2), its front the side from which
- * they run counter-clockwise. The zig-zag works in the triangle's <em>plan frame</em> for a chosen
- * start corner S: the edge opposite S (from P to Q, the corners after S in order) lies along +x
- * from the origin, S lies above it at height {@link #height(int)}, and +z is the front normal.
+ * A triangle in space, as the zig-zag demo takes it: its corners named A, B and C (0, 1, 2), its
+ * front the side from which they run counter-clockwise; the altitude from a start corner sets
+ * the strip's widest width.
  */
 public final class Triangle {
     private final Vector3d[] corners;
@@ -83,35 +79,6 @@ public final class Triangle {
     public double largestAngle() {
         double[] angles = angles();
         return Math.max(angles[0], Math.max(angles[1], angles[2]));
-    }
-
-    /**
-     * The rigid motion from the plan frame for {@code start} to space: the corner after
-     * {@code start} at the origin, the next one on +x, {@code start} above, front normal +z.
-     */
-    public Matrix4d planToSpace(int start) {
-        Vector3dc p = corners[(start + 1) % 3];
-        Vector3dc q = corners[(start + 2) % 3];
-        Vector3d ex = new Vector3d(q).sub(p).normalize();
-        Vector3d ez = normal();
-        Vector3d ey = new Vector3d(ez).cross(ex).normalize();
-        return new Matrix4d(
-                ex.x, ex.y, ex.z, 0,
-                ey.x, ey.y, ey.z, 0,
-                ez.x, ez.y, ez.z, 0,
-                p.x(), p.y(), p.z(), 1);
-    }
-
-    /** The corners in the plan frame for {@code start}, x and y of P, Q and then S. */
-    public double[] inPlan(int start) {
-        Matrix4dc toPlan = planToSpace(start).invert(new Matrix4d());
-        double[] plan = new double[6];
-        for (int i = 0; i < 3; i++) {
-            Vector3d corner = toPlan.transformPosition(new Vector3d(corners[(start + 1 + i) % 3]));
-            plan[2 * i] = corner.x;
-            plan[2 * i + 1] = corner.y;
-        }
-        return plan;
     }
 
     /** A line for reports: the corners, rounded. */
