@@ -1,14 +1,15 @@
 package ifold.cli;
 
-import ifold.fold.Folder;
-import ifold.fold.Paper;
-import ifold.fold.PaperAnalysis;
 import ifold.scene.Animation;
 import ifold.scene.Geometry;
 import ifold.scene.PaperView;
 import ifold.scene.Scene;
 import ifold.script.FoldScript;
 import ifold.script.FoldScriptException;
+import ifold.script.ScriptFolding;
+import ifold.sheet.Sheet;
+import ifold.wrap.WrapAnalysis;
+import ifold.wrap.WrapGeometry;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.AccessDeniedException;
@@ -45,12 +46,12 @@ final class FoldCommand implements Callable<Integer> {
     public Integer call() {
         outputs.check("fold", spec.commandLine().getErr(), false);
         FoldScript parsed;
-        List<Folder.Prepared> folds;
+        ScriptFolding.Result result;
         long[] nanosPerFold;
         try {
             parsed = FoldScript.read(script);
             nanosPerFold = new long[parsed.steps().size()];
-            folds = parsed.play(nanosPerFold);
+            result = parsed.play(nanosPerFold);
         } catch (NoSuchFileException e) {
             throw new UserError(script + ": no such file");
         } catch (AccessDeniedException e) {
@@ -61,51 +62,65 @@ final class FoldCommand implements Callable<Integer> {
             outputs.frameOptions.removeFolderIfUnused();
             throw new UserError(script + (e.line() > 0 ? ":" + e.getMessage().replaceFirst("^line ", "") : ": " + e.getMessage()));
         }
-        Paper start = parsed.paper();
-        Paper end = folds.isEmpty() ? start : folds.get(folds.size() - 1).at(1);
+        WrapGeometry folded = WrapGeometry.of(result.sheet(), result.frames());
         PrintWriter out = spec.commandLine().getOut();
-        Map<String, Object> figures = figures(parsed, folds.size(), end);
-        figures.put("timing", timing(nanosPerFold, folds));
-        outputs.write(end, figures, out);
+        Map<String, Object> figures = figures(result, folded);
+        figures.put("timing", timing(nanosPerFold, result.steps()));
+        outputs.write(List.of(folded), "iFold fold script " + script + ": " + result.steps().size() + " folds, thickness "
+                + result.sheet().thickness(), figures, out);
         out.printf(Locale.ROOT, "%s: %d folds, %d layers at most, %d creases, isometry error %.1e%n", script.getFileName(),
-                folds.size(), figures.get("maxLayers"), figures.get("creases"), (Double) figures.get("isometryError"));
+                result.steps().size(), figures.get("maxLayers"), figures.get("creases"), (Double) figures.get("isometryError"));
         out.flush();
 
         Scene scene = new Scene();
-        Geometry geometry = new Geometry("paper", PaperView.mesh(start), PaperView.MATERIAL);
+        Geometry geometry = new Geometry("paper", PaperView.mesh(folded, result.sheet()), PaperView.MATERIAL);
         scene.root().attach(geometry);
+        Animation animation = PaperView.folding(geometry, result, folded);
+        animation.apply(0);
         scene.camera().setOrientation(new Quaterniond().rotateX(-0.75).rotateZ(-0.35));
         scene.frameAll();
-        Animation animation = PaperView.folding(geometry, start, folds);
-        outputs.show(scene, animation, script.getFileName() + ": " + folds.size() + " folds", outputs.frameOptions.seconds, false,
-                spec);
+        outputs.show(scene, animation, script.getFileName() + ": " + result.steps().size() + " folds", outputs.frameOptions.seconds,
+                false, spec);
         out.flush();
         return 0;
     }
 
-    private static Map<String, Object> figures(FoldScript script, int folds, Paper paper) {
-        int caps = 0;
-        for (int f = 0; f < paper.faceCount(); f++) {
-            caps += paper.isCap(f) ? 1 : 0;
+    private static Map<String, Object> figures(ScriptFolding.Result result, WrapGeometry folded) {
+        Sheet sheet = result.sheet();
+        int creases = 0;
+        double area = 0;
+        for (int f = 0; f < sheet.faceCount(); f++) {
+            int[] loop = sheet.loop(f);
+            for (int i = 0; i < loop.length; i++) {
+                int a = loop[i];
+                int b = loop[(i + 1) % loop.length];
+                area += sheet.u(a) * sheet.v(b) - sheet.u(b) * sheet.v(a);
+                if (sheet.crease(a, b) != null && (sheet.faceAcross(a, b) < f)) {
+                    creases++; // each crease edge once, from the later of its two faces
+                }
+            }
         }
         Map<String, Object> figures = new LinkedHashMap<>();
-        figures.put("folds", folds);
-        figures.put("thickness", paper.thickness());
-        figures.put("vertices", paper.vertexCount());
-        figures.put("faces", paper.faceCount() - caps);
-        figures.put("capFacets", caps);
-        figures.put("creases", paper.creaseCount());
-        figures.put("maxLayers", PaperAnalysis.maxLayers(paper));
-        figures.put("paperArea", PaperAnalysis.paperArea(paper));
-        figures.put("isometryError", PaperAnalysis.isometryError(paper));
+        figures.put("folds", result.steps().size());
+        figures.put("thickness", sheet.thickness());
+        figures.put("vertices", folded.vertexCount());
+        figures.put("faces", sheet.faceCount());
+        figures.put("capFacets", folded.caps().size());
+        figures.put("creases", creases);
+        figures.put("planes", result.frames().length);
+        figures.put("maxLayers", WrapAnalysis.maxLayers(sheet, result.frames().length));
+        figures.put("stackLayers", sheet.stackLevels());
+        figures.put("paperArea", area / 2);
+        figures.put("isometryError", WrapAnalysis.isometryError(folded, sheet.width()));
         return figures;
     }
 
     /**
-     * How long folding took: in total, and per fold in each tenth of the script, with the faces
-     * and layers at the end of that tenth, to show how the cost grows.
+     * How long folding took: in total, and per fold in each tenth of the script, with the paper
+     * faces at the end of that tenth (as {@code faces} counts them: caps apart), to show how the
+     * cost grows.
      */
-    private static Map<String, Object> timing(long[] nanos, List<Folder.Prepared> folds) {
+    private static Map<String, Object> timing(long[] nanos, List<ScriptFolding.Step> folds) {
         Map<String, Object> timing = new LinkedHashMap<>();
         long total = 0;
         for (long n : nanos) {
@@ -122,11 +137,9 @@ final class FoldCommand implements Callable<Integer> {
                 for (int i = from; i < to; i++) {
                     sum += nanos[i];
                 }
-                Paper after = folds.get(to - 1).paper();
                 Map<String, Object> row = new LinkedHashMap<>();
                 row.put("millisecondsPerFold", sum * 1e-6 / Math.max(1, to - from));
-                row.put("faces", after.faceCount());
-                row.put("vertices", after.vertexCount());
+                row.put("faces", folds.get(to - 1).facesAfter());
                 tenths.put("folds " + (from + 1) + "-" + to, row);
             }
             timing.put("byTenth", tenths);

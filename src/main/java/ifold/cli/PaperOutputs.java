@@ -1,7 +1,5 @@
 package ifold.cli;
 
-import ifold.fold.Paper;
-import ifold.fold.PaperExport;
 import ifold.io.AtomicFile;
 import ifold.render.FrameExport;
 import ifold.render.RenderUnavailableException;
@@ -69,10 +67,11 @@ final class PaperOutputs {
         written.add(file);
     }
 
-    void write(Paper folded, Map<String, Object> figures, PrintWriter out) {
+    /** Writes folded paper (a fold script's) as OBJ under {@code header}, and its figures as JSON, as asked. */
+    void write(List<WrapGeometry> folded, String header, Map<String, Object> figures, PrintWriter out) {
         try {
             if (exportObj != null) {
-                PaperExport.writeObj(folded, exportObj);
+                WrapExport.writeObj(exportObj, header, folded);
                 written.add(exportObj);
                 out.println("wrote " + exportObj);
             }

@@ -1,12 +1,16 @@
 package ifold.scene;
 
-import ifold.fold.Folder;
-import ifold.fold.Paper;
-import ifold.fold.PaperMotion;
+import ifold.script.ScriptFolding;
+import ifold.sheet.HostFrame;
+import ifold.sheet.Isometry2;
+import ifold.sheet.Sheet;
+import ifold.wrap.WrapGeometry;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 
-/** Paper on screen: its faces (caps in grey), outlined, with the creases in red; and folds as animations. */
+/** Paper on screen: its faces (caps in grey), outlined, with the creases in red; and a fold script played as an animation. */
 public final class PaperView {
     public static final int PAPER = 0xFFF4F1EA;
     public static final int CAP = 0xFF9A9A9A;
@@ -18,87 +22,224 @@ public final class PaperView {
     /** How the paper is drawn: face colours (paper or cap) on the front, a blue-grey back. */
     public static final Material MATERIAL = new Material(PAPER, 0xFF8FAACB, true, true);
 
-    public static SceneMesh mesh(Paper paper) {
-        double[] positions = new double[3 * paper.vertexCount()];
-        for (int v = 0; v < paper.vertexCount(); v++) {
-            positions[3 * v] = paper.x(v);
-            positions[3 * v + 1] = paper.y(v);
-            positions[3 * v + 2] = paper.z(v);
+    /** Folded paper as it is written: its faces, the caps between layers in grey, face edges outlined and creases in red. */
+    public static SceneMesh mesh(WrapGeometry geometry, Sheet sheet) {
+        Mesh mesh = new Mesh();
+        double[] xyz = geometry.xyz();
+        int[] index = new int[geometry.vertexCount()];
+        for (int v = 0; v < geometry.vertexCount(); v++) {
+            index[v] = mesh.point(new double[] {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]});
         }
-        List<int[]> triangles = new ArrayList<>();
-        List<Integer> colors = new ArrayList<>();
-        List<Long> edgeKeys = new ArrayList<>();
-        for (int f = 0; f < paper.faceCount(); f++) {
-            int[] face = paper.face(f);
-            for (int i = 1; i + 1 < face.length; i++) { // faces are convex: a fan will do
-                triangles.add(new int[] {face[0], face[i], face[i + 1]});
-                colors.add(paper.isCap(f) ? CAP : PAPER);
+        for (int f = 0; f < geometry.paperFaces().size(); f++) {
+            int[] face = geometry.paperFaces().get(f);
+            int[] loop = sheet.loop(f);
+            int[] corners = new int[face.length];
+            for (int i = 0; i < face.length; i++) {
+                corners[i] = index[face[i]];
             }
-            if (!paper.isCap(f)) {
-                for (int i = 0; i < face.length; i++) {
-                    int a = face[i];
-                    int b = face[(i + 1) % face.length];
-                    edgeKeys.add(((long) Math.min(a, b) << 32) | Math.max(a, b));
-                }
+            mesh.face(corners, PAPER);
+            mesh.outline(corners, loop, sheet);
+        }
+        for (int[] cap : geometry.caps()) {
+            int[] corners = new int[cap.length];
+            for (int i = 0; i < cap.length; i++) {
+                corners[i] = index[cap[i]];
             }
+            mesh.face(corners, CAP);
         }
-        int[] flat = new int[3 * triangles.size()];
-        for (int t = 0; t < triangles.size(); t++) {
-            System.arraycopy(triangles.get(t), 0, flat, 3 * t, 3);
-        }
-        long[] keys = edgeKeys.stream().mapToLong(Long::longValue).toArray();
-        int[] edges = SceneMesh.uniqueEdges(keys, keys.length);
-        java.util.Set<Long> creases = new java.util.HashSet<>();
-        for (int[] crease : paper.creaseEdges()) {
-            creases.add(((long) Math.min(crease[0], crease[1]) << 32) | Math.max(crease[0], crease[1]));
-        }
-        int[] edgeColors = new int[edges.length / 2];
-        for (int e = 0; e < edgeColors.length; e++) {
-            long key = ((long) edges[2 * e] << 32) | edges[2 * e + 1];
-            edgeColors[e] = creases.contains(key) ? CREASE : SceneMesh.EDGE_COLOR;
-        }
-        return new SceneMesh(positions, flat, colors.stream().mapToInt(Integer::intValue).toArray(), edges, edgeColors);
-    }
-
-    /** Plays folds one after another, each swinging from 0 to its angle over one step. */
-    public static Animation folding(Geometry geometry, Paper start, List<Folder.Prepared> folds) {
-        return playing(geometry, start, folds, null);
+        return mesh.build();
     }
 
     /**
-     * Plays paper motions (folds, presses) one after another, one a step; the status line shows
-     * each one's description if {@code descriptions} is given.
+     * Plays a fold script one fold a step: the paper that turns swings about the fold's axis
+     * from where it lay to where the fold lays it; at the end, the folded paper as written, caps
+     * and all. The paper between folds is stepped back and forth by each fold's record of the
+     * faces it changed, not kept whole per fold.
      */
-    public static Animation playing(Geometry geometry, Paper start, List<? extends PaperMotion> folds, List<String> descriptions) {
-        return new Animation() {
-            @Override
-            public int stepCount() {
-                return folds.size();
-            }
+    public static Animation folding(Geometry geometry, ScriptFolding.Result result, WrapGeometry folded) {
+        return new Playback(geometry, result, folded);
+    }
 
-            @Override
-            public void apply(double position) {
-                geometry.setMesh(mesh(at(position)));
-            }
+    private static final class Playback implements Animation {
+        private final Geometry geometry;
+        private final ScriptFolding.Result result;
+        private final SceneMesh end;
+        private final Sheet sheet;
+        private final int[][] loops;
+        private final Isometry2[] poses;
+        private final int[] hosts;
+        private final int[] levels;
+        private int count;
+        /** The folds made in the arrays above. */
+        private int at;
+        private double shown = Double.NaN;
 
-            private Paper at(double position) {
-                if (folds.isEmpty()) {
-                    return start;
+        Playback(Geometry geometry, ScriptFolding.Result result, WrapGeometry folded) {
+            this.geometry = geometry;
+            this.result = result;
+            this.sheet = result.sheet();
+            this.end = mesh(folded, sheet);
+            int n = sheet.faceCount();
+            loops = new int[n][];
+            poses = new Isometry2[n];
+            hosts = new int[n];
+            levels = sheet.levels();
+            for (int f = 0; f < n; f++) {
+                loops[f] = sheet.loop(f);
+                poses[f] = sheet.pose(f);
+                hosts[f] = sheet.host(f);
+            }
+            count = n;
+            at = result.steps().size();
+        }
+
+        @Override
+        public int stepCount() {
+            return result.steps().size();
+        }
+
+        private void seek(int k) {
+            while (at > k) {
+                ScriptFolding.Step step = result.steps().get(--at);
+                for (int i = 0; i < step.faces().length; i++) {
+                    int f = step.faces()[i];
+                    if (step.loopsBefore()[i] != null) {
+                        loops[f] = step.loopsBefore()[i];
+                        poses[f] = step.posesBefore()[i];
+                        hosts[f] = step.hostsBefore()[i];
+                        levels[f] = step.levelsBefore()[i];
+                    }
                 }
-                int k = Math.min((int) Math.floor(position), folds.size() - 1);
-                return folds.get(k).at(Math.max(0, Math.min(1, position - k)));
+                count = step.facesBefore();
             }
-
-            @Override
-            public String describe(double position) {
-                int k = Math.min((int) Math.floor(position), Math.max(0, folds.size() - 1));
-                String step = String.format(java.util.Locale.ROOT, "step %d of %d (%.0f %%)", Math.min(k + 1, folds.size()),
-                        folds.size(), 100 * Math.max(0, Math.min(1, position - k)));
-                if (descriptions == null) {
-                    return step.replace("step", "fold");
+            while (at < k) {
+                ScriptFolding.Step step = result.steps().get(at++);
+                for (int i = 0; i < step.faces().length; i++) {
+                    int f = step.faces()[i];
+                    loops[f] = step.loopsAfter()[i];
+                    poses[f] = step.posesAfter()[i];
+                    hosts[f] = step.hostsAfter()[i];
+                    levels[f] = step.levelsAfter()[i];
                 }
-                return folds.isEmpty() ? step : step + ": " + descriptions.get(k);
+                count = step.facesAfter();
             }
-        };
+        }
+
+        @Override
+        public void apply(double position) {
+            if (position == shown) {
+                return;
+            }
+            shown = position;
+            List<ScriptFolding.Step> steps = result.steps();
+            if (steps.isEmpty() || position >= steps.size()) {
+                geometry.setMesh(end);
+                return;
+            }
+            int k = Math.max(0, (int) Math.floor(position));
+            double fraction = Math.max(0, Math.min(1, position - k));
+            ScriptFolding.Step step = steps.get(k);
+            seek(k + 1);
+            // The faces that turn, as they lay before the fold (cut as it cuts them), swung part of the way.
+            Map<Integer, Integer> turning = new HashMap<>();
+            for (int f : step.moved()) {
+                turning.put(f, -1);
+            }
+            for (int i = 0; i < step.faces().length; i++) {
+                if (turning.containsKey(step.faces()[i])) {
+                    turning.put(step.faces()[i], i);
+                }
+            }
+            Mesh mesh = new Mesh();
+            HostFrame[] frames = result.frames();
+            double[] point = new double[3];
+            for (int f = 0; f < count; f++) {
+                int i = turning.getOrDefault(f, -1);
+                Isometry2 pose = i >= 0 ? step.posesBefore()[i] : poses[f];
+                HostFrame frame = frames[i >= 0 ? step.hostsBefore()[i] : hosts[f]];
+                double height = ((i >= 0 ? step.levelsBefore()[i] : levels[f]) + 0.5) * sheet.thickness();
+                int[] loop = loops[f];
+                int[] corners = new int[loop.length];
+                for (int c = 0; c < loop.length; c++) {
+                    double u = sheet.u(loop[c]);
+                    double v = sheet.v(loop[c]);
+                    frame.toSpace(pose.x(u, v), pose.y(u, v), height, point, 0);
+                    double[] p = point.clone();
+                    if (i >= 0) {
+                        p = turned(p, step.axisPoint(), step.axisDirection(), step.angle() * fraction);
+                    }
+                    corners[c] = mesh.point(p);
+                }
+                mesh.face(corners, PAPER);
+                mesh.outline(corners, loop, sheet);
+            }
+            geometry.setMesh(mesh.build());
+        }
+
+        @Override
+        public String describe(double position) {
+            List<ScriptFolding.Step> steps = result.steps();
+            if (steps.isEmpty()) {
+                return "no folds";
+            }
+            int k = Math.min(steps.size() - 1, Math.max(0, (int) Math.floor(position)));
+            double fraction = position >= steps.size() ? 1 : Math.max(0, Math.min(1, position - k));
+            var fold = steps.get(k).fold();
+            return String.format(java.util.Locale.ROOT, "fold %d of %d (%.0f %%): %s %.4g°%s", k + 1, steps.size(), 100 * fraction,
+                    fold.kind().name().toLowerCase(java.util.Locale.ROOT), fold.degrees(), fold.line() > 0 ? ", line " + fold.line() : "");
+        }
+    }
+
+    private static double[] turned(double[] p, double[] origin, double[] axis, double angle) {
+        double[] v = {p[0] - origin[0], p[1] - origin[1], p[2] - origin[2]};
+        double c = Math.cos(angle);
+        double s = Math.sin(angle);
+        double kv = axis[0] * v[0] + axis[1] * v[1] + axis[2] * v[2];
+        double[] kxv = {axis[1] * v[2] - axis[2] * v[1], axis[2] * v[0] - axis[0] * v[2], axis[0] * v[1] - axis[1] * v[0]};
+        return new double[] {origin[0] + v[0] * c + kxv[0] * s + axis[0] * kv * (1 - c),
+            origin[1] + v[1] * c + kxv[1] * s + axis[1] * kv * (1 - c), origin[2] + v[2] * c + kxv[2] * s + axis[2] * kv * (1 - c)};
+    }
+
+    /** A mesh being put together: points, fans of convex faces, outlines (creases in red). */
+    private static final class Mesh {
+        private final List<double[]> points = new ArrayList<>();
+        private final List<int[]> triangles = new ArrayList<>();
+        private final List<Integer> colors = new ArrayList<>();
+        private final List<Integer> edges = new ArrayList<>();
+        private final List<Integer> edgeColors = new ArrayList<>();
+
+        int point(double[] p) {
+            points.add(p);
+            return points.size() - 1;
+        }
+
+        void face(int[] corners, int color) {
+            for (int i = 1; i + 1 < corners.length; i++) { // faces are convex: a fan will do
+                triangles.add(new int[] {corners[0], corners[i], corners[i + 1]});
+                colors.add(color);
+            }
+        }
+
+        void outline(int[] corners, int[] loop, Sheet sheet) {
+            for (int i = 0; i < corners.length; i++) {
+                int j = (i + 1) % corners.length;
+                edges.add(corners[i]);
+                edges.add(corners[j]);
+                edgeColors.add(sheet.crease(loop[i], loop[j]) != null ? CREASE : SceneMesh.EDGE_COLOR);
+            }
+        }
+
+        SceneMesh build() {
+            double[] positions = new double[3 * points.size()];
+            for (int p = 0; p < points.size(); p++) {
+                System.arraycopy(points.get(p), 0, positions, 3 * p, 3);
+            }
+            int[] flat = new int[3 * triangles.size()];
+            for (int t = 0; t < triangles.size(); t++) {
+                System.arraycopy(triangles.get(t), 0, flat, 3 * t, 3);
+            }
+            return new SceneMesh(positions, flat, colors.stream().mapToInt(Integer::intValue).toArray(),
+                    edges.stream().mapToInt(Integer::intValue).toArray(), edgeColors.stream().mapToInt(Integer::intValue).toArray());
+        }
     }
 }

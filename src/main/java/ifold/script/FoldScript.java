@@ -1,10 +1,5 @@
 package ifold.script;
 
-import ifold.fold.FlapFold;
-import ifold.fold.Fold;
-import ifold.fold.FoldException;
-import ifold.fold.Folder;
-import ifold.fold.Paper;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -42,6 +37,12 @@ public final class FoldScript {
         this.steps = List.copyOf(steps);
     }
 
+    /** Valley: the moving paper turns up, towards the normal of the plane it lies in; mountain: down. */
+    public enum Kind { VALLEY, MOUNTAIN }
+
+    /** The side of the line that moves, seen from the paper's top (the plane's normal) with the line running from its first point to its second. */
+    public enum Side { LEFT, RIGHT }
+
     /**
      * One fold of a script.
      *
@@ -55,62 +56,35 @@ public final class FoldScript {
      * @param moving the side that moves
      * @param line the script line, or 0
      */
-    public record Step(Fold.Kind kind, double degrees, boolean onPaper, boolean flap, Vector3d from, Vector3d to, Fold.Side moving,
-            int line) {
-        /** The fold made on {@code paper} as it is now, cut and ready to turn. */
-        public Folder.Prepared prepare(Paper paper) throws FoldScriptException, FoldException {
-            if (flap) {
-                return Folder.prepare(paper, new FlapFold(kind, degrees, from.x, from.y, to.x, to.y, moving));
-            }
-            return Folder.prepare(paper, resolve(paper));
-        }
-
-        /** The fold this step makes on {@code paper} as it is now. */
-        public Fold resolve(Paper paper) throws FoldScriptException {
-            if (!onPaper) {
-                return Fold.through(kind, degrees, from, to, moving);
-            }
-            Vector3d a = PaperPoints.locate(paper, from.x, from.y);
-            Vector3d b = PaperPoints.locate(paper, to.x, to.y);
-            if (a == null || b == null) {
-                Vector3d missing = a == null ? from : to;
-                throw new FoldScriptException(line, String.format(Locale.ROOT, "paper point (%s, %s) is not on the paper",
-                        fmt(missing.x), fmt(missing.y)));
-            }
-            return Fold.through(kind, degrees, a, b, moving);
-        }
+    public record Step(Kind kind, double degrees, boolean onPaper, boolean flap, Vector3d from, Vector3d to, Side moving, int line) {
     }
 
-    public Paper paper() {
-        return Paper.rectangle(width, height, thickness);
+    /** The sheet's length: its extent along u (x on the table). */
+    public double length() {
+        return width;
+    }
+
+    /** The sheet's width: its extent along v (y on the table). */
+    public double width() {
+        return height;
+    }
+
+    public double thickness() {
+        return thickness;
     }
 
     public List<Step> steps() {
         return steps;
     }
 
-    /** Every fold of the script made in turn, ready to be animated. */
-    public List<Folder.Prepared> play() throws FoldScriptException {
+    /** Every fold of the script made in turn on the sheet engine. */
+    public ScriptFolding.Result play() throws FoldScriptException {
         return play(new long[steps.size()]);
     }
 
     /** Like {@link #play()}, writing the nanoseconds each fold took to {@code nanosPerFold}. */
-    public List<Folder.Prepared> play(long[] nanosPerFold) throws FoldScriptException {
-        List<Folder.Prepared> folds = new ArrayList<>();
-        Paper paper = paper();
-        for (int i = 0; i < steps.size(); i++) {
-            Step step = steps.get(i);
-            try {
-                long start = System.nanoTime();
-                Folder.Prepared prepared = step.prepare(paper);
-                folds.add(prepared);
-                paper = prepared.at(1);
-                nanosPerFold[i] = System.nanoTime() - start;
-            } catch (FoldException e) {
-                throw new FoldScriptException(step.line(), "fold " + (i + 1) + ": " + e.getMessage());
-            }
-        }
-        return folds;
+    public ScriptFolding.Result play(long[] nanosPerFold) throws FoldScriptException {
+        return ScriptFolding.play(this, nanosPerFold);
     }
 
     private static String fmt(double value) {
@@ -148,19 +122,19 @@ public final class FoldScript {
         }
 
         /** A fold along the line through two paper points (u, v). */
-        public Builder foldOnPaper(Fold.Kind kind, double degrees, double u1, double v1, double u2, double v2, Fold.Side moving) {
+        public Builder foldOnPaper(Kind kind, double degrees, double u1, double v1, double u2, double v2, Side moving) {
             steps.add(new Step(kind, degrees, true, false, new Vector3d(u1, v1, 0), new Vector3d(u2, v2, 0), moving, 0));
             return this;
         }
 
         /** A flap fold: only the paper beyond the line through two paper points (u, v), on the sheet, turns. */
-        public Builder flap(Fold.Kind kind, double degrees, double u1, double v1, double u2, double v2, Fold.Side moving) {
+        public Builder flap(Kind kind, double degrees, double u1, double v1, double u2, double v2, Side moving) {
             steps.add(new Step(kind, degrees, true, true, new Vector3d(u1, v1, 0), new Vector3d(u2, v2, 0), moving, 0));
             return this;
         }
 
         /** A fold along the line through two 3D points. */
-        public Builder fold(Fold.Kind kind, double degrees, Vector3d from, Vector3d to, Fold.Side moving) {
+        public Builder fold(Kind kind, double degrees, Vector3d from, Vector3d to, Side moving) {
             steps.add(new Step(kind, degrees, false, false, new Vector3d(from), new Vector3d(to), moving, 0));
             return this;
         }
@@ -248,9 +222,9 @@ public final class FoldScript {
 
     private static Step parseFold(Tokens tokens, int number) throws FoldScriptException {
         String kindWord = tokens.word("valley or mountain");
-        Fold.Kind kind = switch (kindWord) {
-            case "valley" -> Fold.Kind.VALLEY;
-            case "mountain" -> Fold.Kind.MOUNTAIN;
+        Kind kind = switch (kindWord) {
+            case "valley" -> Kind.VALLEY;
+            case "mountain" -> Kind.MOUNTAIN;
             default -> throw new FoldScriptException(number, "'" + kindWord + "': expected valley or mountain");
         };
         double degrees = tokens.number("the angle in degrees");
@@ -286,9 +260,9 @@ public final class FoldScript {
             throw new FoldScriptException(number, "the line's two points are the same: a line needs a direction");
         }
         String sideWord = tokens.word("left or right (the side that moves)");
-        Fold.Side side = switch (sideWord) {
-            case "left" -> Fold.Side.LEFT;
-            case "right" -> Fold.Side.RIGHT;
+        Side side = switch (sideWord) {
+            case "left" -> Side.LEFT;
+            case "right" -> Side.RIGHT;
             default -> throw new FoldScriptException(number, "'" + sideWord + "': expected left or right (the side that moves)");
         };
         return new Step(kind, degrees, onPaper, flap, from, to, side, number);

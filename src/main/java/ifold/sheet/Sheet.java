@@ -41,7 +41,7 @@ public final class Sheet {
     public enum Placement { OVER, UNDER }
 
     /** Why the paper is creased along an edge of the sheet. */
-    public enum Crease { TURN, GADGET, CROSSING, TUCK }
+    public enum Crease { TURN, GADGET, CROSSING, TUCK, FOLD }
 
     private final double width;
     private final double thickness;
@@ -72,7 +72,7 @@ public final class Sheet {
         int[] faces = new int[8];
         int count;
         /** Pairs (above << 32 | below) of overlapping faces. */
-        List<Long> above = new ArrayList<>();
+        LongList above = new LongList();
         int[] levels;
         int top = -1;
 
@@ -81,6 +81,17 @@ public final class Sheet {
                 faces = Arrays.copyOf(faces, 2 * count);
             }
             faces[count++] = f;
+            levels = null;
+        }
+
+        void remove(Set<Integer> gone) {
+            int n = 0;
+            for (int i = 0; i < count; i++) {
+                if (!gone.contains(faces[i])) {
+                    faces[n++] = faces[i];
+                }
+            }
+            count = n;
             levels = null;
         }
     }
@@ -105,6 +116,23 @@ public final class Sheet {
         tailB = addVertex(0, width);
         tailHost = host;
         tailPose = pose;
+    }
+
+    /**
+     * A whole sheet of {@code length} × {@code width} (paper coordinates [0, length] × [0,
+     * width]), one face lying flat on {@code host} where {@code pose} puts it: the paper of a
+     * fold script. It has no tail to fold; its laid paper is folded by {@link #edit() edits}.
+     */
+    public static Sheet rectangle(double length, double width, double thickness, double tolerance, int host, Isometry2 pose) {
+        if (!(length > 0) || !Double.isFinite(length)) {
+            throw new IllegalArgumentException("the sheet's length must be a positive number, got " + length);
+        }
+        Sheet sheet = new Sheet(width, thickness, tolerance, host, pose);
+        int a = sheet.addVertex(length, 0);
+        int b = sheet.addVertex(length, width);
+        sheet.addFace(new int[] {sheet.tailA, a, b, sheet.tailB}, host, pose, Placement.OVER);
+        sheet.length = length;
+        return sheet;
     }
 
     // ---------------------------------------------------------------- the tail
@@ -249,49 +277,22 @@ public final class Sheet {
      *     the rest by anything but the line (tucking it would tear the strip)
      */
     public Tuck tuck(int host, double px, double py, double dx, double dy) throws FoldException {
-        Stack stack = stacks.get(host);
-        if (stack == null) {
+        if (stacks.get(host) == null) {
             throw new FoldException("no paper rests on triangle " + host);
         }
-        double length = Math.hypot(dx, dy);
-        double nx = dy / length; // right of the direction
-        double ny = -dx / length;
-        double c = nx * px + ny * py;
-        Map<Long, Integer> splitOfEdge = new HashMap<>();
-        Set<Integer> moving = new HashSet<>();
-        int faces = stack.count;
-        int facesBefore = loops.size();
-        List<Integer> changed = new ArrayList<>();
-        List<int[]> loopsBefore = new ArrayList<>();
-        List<Isometry2> posesBefore = new ArrayList<>();
-        Set<Integer> cut = new HashSet<>();
-        for (int i = 0; i < faces; i++) {
-            int f = stack.faces[i];
-            int[] loop = loops.get(f);
-            Isometry2 pose = poseOf.get(f);
-            double min = Double.POSITIVE_INFINITY;
-            double max = Double.NEGATIVE_INFINITY;
-            for (int v : loop) {
-                double d = nx * pose.x(u(v), v(v)) + ny * pose.y(u(v), v(v)) - c;
-                min = Math.min(min, d);
-                max = Math.max(max, d);
-            }
-            if (max <= tolerance) {
-                continue;
-            }
-            changed.add(f);
-            loopsBefore.add(loop);
-            posesBefore.add(pose);
-            if (min >= -tolerance) {
-                moving.add(f);
-                continue;
-            }
-            cut.add(f);
-            moving.add(split(f, nx, ny, c, splitOfEdge));
-        }
-        if (moving.isEmpty()) {
+        Edit edit = edit();
+        int[] beyond = edit.cutOnHost(host, px, py, dx, dy);
+        if (beyond.length == 0) {
             throw new FoldException("nothing to tuck: no paper on triangle " + host + " lies beyond the line");
         }
+        Set<Integer> moving = new HashSet<>();
+        for (int f : beyond) {
+            moving.add(f);
+        }
+        double length = Math.hypot(dx, dy);
+        double nx = dy / length;
+        double ny = -dx / length;
+        double c = nx * px + ny * py;
         // The flap may be joined to the rest only along the tuck line.
         for (int f : moving) {
             int[] loop = loops.get(f);
@@ -309,47 +310,292 @@ public final class Sheet {
                     throw new FoldException("tucking under triangle " + host + " would tear the strip: paper beyond the line"
                             + " is joined to paper that stays by a crease off the line");
                 }
-                if (creases.get(undirected(a, b), -1) < 0) { // a crease over an edge on the line stays one
-                    creases.put(undirected(a, b), Crease.TUCK.ordinal());
-                }
             }
         }
-        Isometry2 reflection = Isometry2.reflection(px, py, dx, dy);
-        List<Long> kept = new ArrayList<>();
-        for (long pair : stack.above) {
-            int upper = (int) (pair >>> 32);
-            int lower = (int) pair;
-            boolean upperMoves = moving.contains(upper);
-            boolean lowerMoves = moving.contains(lower);
-            if (upperMoves != lowerMoves) {
-                continue; // they lay side by side before; where the flap lands is decided below
-            }
-            boolean reshaped = cut.contains(upper) || cut.contains(lower) || upper >= facesBefore || lower >= facesBefore;
-            if (reshaped && !overlap(upper, lower)) {
-                continue; // a face cut by the line keeps only the relations of the part that overlaps
-            }
-            kept.add(upperMoves ? ((long) lower << 32) | upper : pair); // the flap turns over: its order reverses
-        }
-        for (int f : moving) {
-            poseOf.set(f, reflection.after(poseOf.get(f)));
-            changed(f);
-        }
-        for (int i = 0; i < stack.count; i++) {
-            int g = stack.faces[i];
-            if (moving.contains(g)) {
-                continue;
-            }
-            for (int f : moving) {
-                if (overlap(f, g)) {
-                    kept.add(((long) g << 32) | f);
-                }
-            }
-        }
-        stack.above = kept;
-        stack.levels = null;
+        edit.crease(moving, Crease.TUCK);
+        edit.move(moving, host, Isometry2.reflection(px, py, dx, dy), Placement.UNDER);
+        Edit.Journal journal = edit.journal();
         int[] moved = moving.stream().mapToInt(Integer::intValue).sorted().toArray();
-        return new Tuck(host, moved, px, py, dx, dy, facesBefore, changed.stream().mapToInt(Integer::intValue).toArray(),
-                loopsBefore.toArray(new int[0][]), posesBefore.toArray(new Isometry2[0]));
+        return new Tuck(host, moved, px, py, dx, dy, journal.facesBefore(), journal.changed(), journal.loopsBefore(),
+                journal.posesBefore());
+    }
+
+    /** Begins an edit of the laid paper: cuts and moves of faces, journaled. */
+    public Edit edit() {
+        return new Edit();
+    }
+
+    /**
+     * An edit of the paper already laid, as a fold of it makes: cut faces along a line, then
+     * move some of them to a host (the same one, reflected, or another) over or under the paper
+     * there. Every face it cuts or moves is journaled with its loop, pose and host before, for
+     * the animation.
+     */
+    public final class Edit {
+        private final int facesBefore = loops.size();
+        private final Map<Integer, Integer> journalIndex = new HashMap<>();
+        private final List<Integer> changedFaces = new ArrayList<>();
+        private final List<int[]> loopsBefore = new ArrayList<>();
+        private final List<Isometry2> posesBefore = new ArrayList<>();
+        private final List<Integer> hostsBefore = new ArrayList<>();
+        private final Map<Long, Integer> splitOfEdge = new HashMap<>();
+        /** Faces whose shape changed (cut, or made by a cut): their relations are checked again. */
+        private final Set<Integer> reshaped = new HashSet<>();
+        /** For each face made by a cut, the face it was cut from. */
+        private final List<Integer> parents = new ArrayList<>();
+        /** Whether a cut ran along a line on the sheet rather than on a host. */
+        private boolean sheetCut;
+
+        private Edit() {
+        }
+
+        /**
+         * What the edit did.
+         *
+         * @param facesBefore the faces before it: those from it on were cut off by it
+         * @param changed the faces there before that it cut or moved
+         * @param loopsBefore their loops before
+         * @param posesBefore their poses before
+         * @param hostsBefore their hosts before
+         * @param parents for each face made by the edit (facesBefore, facesBefore + 1, ...), the
+         *     face there before that it was cut from
+         */
+        public record Journal(int facesBefore, int[] changed, int[][] loopsBefore, Isometry2[] posesBefore, int[] hostsBefore,
+                int[] parents) {
+            /** The face there before the edit that face g was cut from (g itself if it was there). */
+            public int parentOf(int g) {
+                return g < facesBefore ? g : parents[g - facesBefore];
+            }
+        }
+
+        public Journal journal() {
+            return new Journal(facesBefore, changedFaces.stream().mapToInt(Integer::intValue).toArray(),
+                    loopsBefore.toArray(new int[0][]), posesBefore.toArray(new Isometry2[0]),
+                    hostsBefore.stream().mapToInt(Integer::intValue).toArray(), parents.stream().mapToInt(Integer::intValue).toArray());
+        }
+
+        private void note(int f) {
+            if (f < facesBefore && !journalIndex.containsKey(f)) {
+                journalIndex.put(f, changedFaces.size());
+                changedFaces.add(f);
+                loopsBefore.add(loops.get(f));
+                posesBefore.add(poseOf.get(f));
+                hostsBefore.add(hostOf[f]);
+            }
+        }
+
+        /**
+         * Cuts the faces on {@code host} that the directed line through (px, py) with direction
+         * (dx, dy), in the host's frame, crosses.
+         *
+         * @return the faces of the host right of the line, after cutting
+         */
+        public int[] cutOnHost(int host, double px, double py, double dx, double dy) {
+            Stack stack = stacks.get(host);
+            if (stack == null) {
+                return new int[0];
+            }
+            double length = Math.hypot(dx, dy);
+            double nx = dy / length; // right of the direction
+            double ny = -dx / length;
+            double c = nx * px + ny * py;
+            List<Integer> beyond = new ArrayList<>();
+            int faces = stack.count;
+            for (int i = 0; i < faces; i++) {
+                int f = stack.faces[i];
+                double[] range = range(f, nx, ny, c, false);
+                if (range[1] <= tolerance) {
+                    continue;
+                }
+                note(f);
+                if (range[0] >= -tolerance) {
+                    beyond.add(f);
+                    continue;
+                }
+                beyond.add(split(f, nx, ny, c, false, splitOfEdge, this));
+            }
+            return beyond.stream().mapToInt(Integer::intValue).toArray();
+        }
+
+        /**
+         * Cuts every face the directed line through paper points (u1, v1) and (u2, v2) crosses,
+         * wherever it lies.
+         *
+         * @return the faces right of the line on the sheet (seen from its top), after cutting
+         */
+        public int[] cutOnSheet(double u1, double v1, double u2, double v2) {
+            double du = u2 - u1;
+            double dv = v2 - v1;
+            double length = Math.hypot(du, dv);
+            double nu = dv / length;
+            double nv = -du / length;
+            double c = nu * u1 + nv * v1;
+            sheetCut = true;
+            List<Integer> beyond = new ArrayList<>();
+            int faces = loops.size();
+            for (int f = 0; f < faces; f++) {
+                double[] range = range(f, nu, nv, c, true);
+                if (range[1] <= tolerance) {
+                    continue;
+                }
+                note(f);
+                if (range[0] >= -tolerance) {
+                    beyond.add(f);
+                    continue;
+                }
+                beyond.add(split(f, nu, nv, c, true, splitOfEdge, this));
+            }
+            return beyond.stream().mapToInt(Integer::intValue).toArray();
+        }
+
+        private double[] range(int f, double nx, double ny, double c, boolean onSheet) {
+            int[] loop = loops.get(f);
+            Isometry2 pose = poseOf.get(f);
+            double min = Double.POSITIVE_INFINITY;
+            double max = Double.NEGATIVE_INFINITY;
+            for (int v : loop) {
+                double d = onSheet ? nx * u(v) + ny * v(v) - c : nx * pose.x(u(v), v(v)) + ny * pose.y(u(v), v(v)) - c;
+                min = Math.min(min, d);
+                max = Math.max(max, d);
+            }
+            return new double[] {min, max};
+        }
+
+        /** Marks the paper edges between {@code moving} faces and the rest as creases of {@code kind}, where they are not creases already. */
+        public void crease(Set<Integer> moving, Crease kind) {
+            for (int f : moving) {
+                int[] loop = loops.get(f);
+                for (int i = 0; i < loop.length; i++) {
+                    int a = loop[i];
+                    int b = loop[(i + 1) % loop.length];
+                    int across = faceOfEdge.get(directed(b, a), -1);
+                    if (across >= 0 && !moving.contains(across) && creases.get(undirected(a, b), -1) < 0) {
+                        creases.put(undirected(a, b), kind.ordinal());
+                    }
+                }
+            }
+        }
+
+        /**
+         * Moves {@code faces}, all resting on one host, to {@code toHost} (which may be the same):
+         * each pose is composed with {@code frameChange}, which maps the old host's frame to the
+         * new one's. Their order among themselves is kept, or reversed where the change mirrors
+         * (the paper turned over); where they overlap paper already on the new host they land
+         * {@code placement} it.
+         */
+        public void move(Set<Integer> faces, int toHost, Isometry2 frameChange, Placement placement) {
+            if (faces.isEmpty()) {
+                return;
+            }
+            int fromHost = hostOf[faces.iterator().next()];
+            Stack from = stacks.get(fromHost);
+            boolean mirrors = frameChange.mirrors();
+            LongList kept = new LongList();
+            LongList carried = new LongList();
+            // Marks by face, not set lookups: a stack folded again and again holds many relations.
+            boolean[] moves = new boolean[loops.size()];
+            for (int f : faces) {
+                moves[f] = true;
+            }
+            boolean[] cut = new boolean[loops.size()];
+            for (int f : reshaped) {
+                cut[f] = true;
+            }
+            // A cut along a line on the sheet can take away paper that lay between two faces that
+            // stay, wherever they lie: their order, implied through it, is then recorded itself.
+            Map<Integer, List<Integer>> stayingAbove = new HashMap<>();
+            Map<Integer, List<Integer>> stayingBelow = new HashMap<>();
+            for (int r = 0; r < from.above.size(); r++) {
+                long pair = from.above.get(r);
+                int upper = (int) (pair >>> 32);
+                int lower = (int) pair;
+                boolean upperMoves = moves[upper];
+                boolean lowerMoves = moves[lower];
+                if (upperMoves != lowerMoves) {
+                    if (sheetCut) {
+                        (upperMoves ? stayingBelow : stayingAbove).computeIfAbsent(upperMoves ? upper : lower, k -> new ArrayList<>())
+                                .add(upperMoves ? lower : upper);
+                    }
+                    continue; // they lay side by side before; where the moved paper lands is decided below
+                }
+                if ((cut[upper] || cut[lower]) && !overlap(upper, lower)) {
+                    continue; // a face cut by the line keeps only the relations of the part that overlaps
+                }
+                if (upperMoves) {
+                    carried.add(mirrors ? ((long) lower << 32) | upper : pair);
+                } else {
+                    kept.add(pair);
+                }
+            }
+            for (Map.Entry<Integer, List<Integer>> entry : stayingAbove.entrySet()) {
+                for (int upper : entry.getValue()) {
+                    for (int lower : stayingBelow.getOrDefault(entry.getKey(), List.of())) {
+                        if (overlap(upper, lower)) {
+                            kept.add(((long) upper << 32) | lower);
+                        }
+                    }
+                }
+            }
+            from.above = kept;
+            from.remove(faces);
+            for (int f : faces) {
+                note(f);
+                if (hostOf[f] != fromHost) {
+                    throw new IllegalArgumentException("the faces moved together must rest on one host");
+                }
+                poseOf.set(f, frameChange.after(poseOf.get(f)));
+                hostOf[f] = toHost;
+                changed(f);
+            }
+            Stack to = stacks.computeIfAbsent(toHost, h -> new Stack());
+            // Each moved face lands over (or under) the faces it overlaps, unless a moved face it
+            // rests on, and that holds all of it, lies between: the order is then implied, and a
+            // stack folded again and again would otherwise hold every pair of its layers.
+            Map<Integer, List<Integer>> between = new HashMap<>();
+            for (int r = 0; r < carried.size(); r++) {
+                long pair = carried.get(r);
+                int upper = (int) (pair >>> 32);
+                int lower = (int) pair;
+                if (placement == Placement.OVER) {
+                    between.computeIfAbsent(upper, k -> new ArrayList<>()).add(lower);
+                } else {
+                    between.computeIfAbsent(lower, k -> new ArrayList<>()).add(upper);
+                }
+            }
+            boolean[] touches = new boolean[loops.size()];
+            List<Integer> touching = new ArrayList<>();
+            for (int i = 0; i < to.count; i++) {
+                int g = to.faces[i];
+                touching.clear();
+                for (int f : faces) {
+                    if (overlap(f, g)) {
+                        touches[f] = true;
+                        touching.add(f);
+                    }
+                }
+                for (int f : touching) {
+                    boolean implied = false;
+                    for (int h : between.getOrDefault(f, List.of())) {
+                        if (touches[h] && contains(h, f)) {
+                            implied = true;
+                            break;
+                        }
+                    }
+                    if (!implied) {
+                        to.above.add(placement == Placement.OVER ? ((long) f << 32) | g : ((long) g << 32) | f);
+                    }
+                }
+                for (int f : touching) {
+                    touches[f] = false;
+                }
+            }
+            to.above.addAll(carried);
+            for (int f : faces) {
+                to.add(f);
+            }
+            to.levels = null;
+            from.levels = null;
+        }
     }
 
     /**
@@ -358,14 +604,14 @@ public final class Sheet {
      * face across it on the sheet, which is given the vertex too so that no edge of the sheet
      * ends in the middle of another.
      */
-    private int split(int f, double nx, double ny, double c, Map<Long, Integer> splitOfEdge) {
+    private int split(int f, double nx, double ny, double c, boolean onSheet, Map<Long, Integer> splitOfEdge, Edit edit) {
         int[] loop = loops.get(f);
         Isometry2 pose = poseOf.get(f);
         int n = loop.length;
         double[] d = new double[n];
         for (int i = 0; i < n; i++) {
             int v = loop[i];
-            d[i] = nx * pose.x(u(v), v(v)) + ny * pose.y(u(v), v(v)) - c;
+            d[i] = onSheet ? nx * u(v) + ny * v(v) - c : nx * pose.x(u(v), v(v)) + ny * pose.y(u(v), v(v)) - c;
         }
         int[] withSplits = new int[2 * n];
         int[] side = new int[2 * n];
@@ -382,7 +628,7 @@ public final class Sheet {
                     double t = d[i] / (d[i] - d[j]);
                     split = addVertex(u(a) + t * (u(b) - u(a)), v(a) + t * (v(b) - v(a)));
                     splitOfEdge.put(undirected(a, b), split);
-                    insertAcross(a, b, split);
+                    insertAcross(a, b, split, edit);
                 }
                 withSplits[m] = split;
                 side[m++] = 0;
@@ -410,10 +656,14 @@ public final class Sheet {
         ensureFaceCapacity(g + 1);
         hostOf[g] = hostOf[f];
         register(g);
+        edit.reshaped.add(f);
+        edit.reshaped.add(g);
+        edit.parents.add(f < edit.facesBefore ? f : edit.parents.get(f - edit.facesBefore));
         Stack stack = stacks.get(hostOf[f]);
         // The new part inherits f's relations; those that no longer overlap are dropped later.
-        List<Long> inherited = new ArrayList<>();
-        for (long pair : stack.above) {
+        LongList inherited = new LongList();
+        for (int r = 0; r < stack.above.size(); r++) {
+            long pair = stack.above.get(r);
             int upper = (int) (pair >>> 32);
             int lower = (int) pair;
             if (upper == f) {
@@ -428,11 +678,12 @@ public final class Sheet {
     }
 
     /** Gives the face across edge a → b (the one holding b → a) the vertex m between b and a. */
-    private void insertAcross(int a, int b, int m) {
+    private void insertAcross(int a, int b, int m, Edit edit) {
         int g = faceOfEdge.get(directed(b, a), -1);
         if (g < 0) {
             return; // the strip's own border
         }
+        edit.note(g);
         int[] loop = loops.get(g);
         int[] longer = new int[loop.length + 1];
         int k = 0;
@@ -494,6 +745,27 @@ public final class Sheet {
         }
     }
 
+    /** Whether face g, as placed, lies wholly inside face h (convex, either way round). */
+    private boolean contains(int h, int g) {
+        double[] outer = placedCached(h);
+        double[] inner = placedCached(g);
+        int n = outer.length / 2;
+        double orientation = Math.signum(Polygons2.twiceArea(outer, n));
+        for (int i = 0; i < n; i++) {
+            int j = (i + 1) % n;
+            double ex = outer[2 * j] - outer[2 * i];
+            double ey = outer[2 * j + 1] - outer[2 * i + 1];
+            double length = Math.hypot(ex, ey);
+            for (int k = 0; k < inner.length; k += 2) {
+                double cross = ex * (inner[k + 1] - outer[2 * i + 1]) - ey * (inner[k] - outer[2 * i]);
+                if (orientation * cross < -tolerance * length) {
+                    return false;
+                }
+            }
+        }
+        return true;
+    }
+
     private boolean overlap(int f, int g) {
         double[] a = placedCached(f);
         double[] b = placedCached(g);
@@ -548,21 +820,32 @@ public final class Sheet {
         if (stack.levels != null) {
             return stack.levels;
         }
-        Map<Integer, Integer> index = new HashMap<>();
-        for (int i = 0; i < stack.count; i++) {
-            index.put(stack.faces[i], i);
-        }
+        // Faces by their place in the stack, and the relations as arrays (compressed rows): a
+        // stack folded over and over holds hundreds of thousands of them.
         int n = stack.count;
-        int[] below = new int[n]; // how many faces lie directly below each, still to place
-        List<List<Integer>> over = new ArrayList<>();
+        int[] index = new int[loops.size()];
         for (int i = 0; i < n; i++) {
-            over.add(new ArrayList<>());
+            index[stack.faces[i]] = i;
         }
-        for (long pair : stack.above) {
-            int upper = index.get((int) (pair >>> 32));
-            int lower = index.get((int) pair);
-            below[upper]++;
-            over.get(lower).add(upper);
+        int relations = stack.above.size();
+        int[] uppers = new int[relations];
+        int[] lowers = new int[relations];
+        int[] below = new int[n]; // how many faces lie directly below each, still to place
+        int[] start = new int[n + 1];
+        for (int r = 0; r < relations; r++) {
+            long pair = stack.above.get(r);
+            uppers[r] = index[(int) (pair >>> 32)];
+            lowers[r] = index[(int) pair];
+            below[uppers[r]]++;
+            start[lowers[r] + 1]++;
+        }
+        for (int i = 0; i < n; i++) {
+            start[i + 1] += start[i];
+        }
+        int[] fill = Arrays.copyOf(start, n);
+        int[] over = new int[relations];
+        for (int r = 0; r < relations; r++) {
+            over[fill[lowers[r]]++] = uppers[r];
         }
         int[] level = new int[n];
         int[] queue = new int[n];
@@ -575,7 +858,8 @@ public final class Sheet {
         }
         while (head < tail) {
             int i = queue[head++];
-            for (int upper : over.get(i)) {
+            for (int k = start[i]; k < start[i + 1]; k++) {
+                int upper = over[k];
                 level[upper] = Math.max(level[upper], level[i] + 1);
                 if (--below[upper] == 0) {
                     queue[tail++] = upper;

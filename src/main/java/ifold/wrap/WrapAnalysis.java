@@ -100,6 +100,41 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
     }
 
     /**
+     * The most layers of paper over any point of any of the first {@code hosts} hosts of a
+     * sheet, counted exactly on the arrangement of each host's faces (for paper that rests on
+     * planes rather than on triangles: the faces are cut into cells inside a triangle around
+     * them all).
+     */
+    public static int maxLayers(Sheet sheet, int hosts) {
+        int most = 0;
+        for (int h = 0; h < hosts; h++) {
+            int[] faces = sheet.facesOn(h);
+            if (faces.length == 0) {
+                continue;
+            }
+            List<double[]> polygons = new ArrayList<>();
+            double[] box = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+            for (int f : faces) {
+                double[] xy = sheet.placed(f);
+                polygons.add(xy);
+                double[] b = Polygons2.bounds(xy);
+                box[0] = Math.min(box[0], b[0]);
+                box[1] = Math.min(box[1], b[1]);
+                box[2] = Math.max(box[2], b[2]);
+                box[3] = Math.max(box[3], b[3]);
+            }
+            double margin = Math.max(box[2] - box[0], box[3] - box[1]) * 0.1 + sheet.width();
+            double x0 = box[0] - margin;
+            double y0 = box[1] - margin;
+            double legX = 2 * (box[2] - box[0] + 2 * margin);
+            double legY = 2 * (box[3] - box[1] + 2 * margin);
+            double[] around = {x0, y0, x0 + legX, y0, x0, y0 + legY};
+            most = Math.max(most, (int) depths(around, polygons, sheet.tolerance())[2]);
+        }
+        return most;
+    }
+
+    /**
      * The area of paper whose shadow on its triangle falls outside it: each face less its part
      * inside the triangle. After the tucks, nothing (up to rounding).
      */
@@ -388,7 +423,7 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
      * coordinate u on a strip of length L is a double good to about 1e-16 L, so a sliver far
      * along a long strip cannot be exact to 1e-9 of its own size.
      */
-    static double isometryError(WrapGeometry geometry, double width) {
+    public static double isometryError(WrapGeometry geometry, double width) {
         double worst = 0;
         double[] xyz = geometry.xyz();
         double[] uv = geometry.uv();

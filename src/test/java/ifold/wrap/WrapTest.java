@@ -72,6 +72,9 @@ class WrapTest {
             assertEquals(result.width(), truths.width(k), 1e-12 * result.width(), "strip width");
         }
         assertTrue(analysis.coverage() > 1 - 1e-9, "coverage " + analysis.coverage());
+        for (Wrap.Strip strip : result.strips()) {
+            ifold.sheet.SheetChecks.assertLayersApart(strip.sheet(), result.frames().length);
+        }
         assertTrue(analysis.isometryError() <= 1e-9, "isometry " + analysis.isometryError());
         assertTrue(analysis.outsidePaper() <= 1e-9 * 100, "paper outside " + analysis.outsidePaper());
         assertTrue(analysis.maxLayers() >= 1 && analysis.maxLayers() <= analysis.stackLevels(), "layers within the stack");
