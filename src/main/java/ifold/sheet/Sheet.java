@@ -9,13 +9,14 @@ import java.util.Map;
 import java.util.Set;
 
 /**
- * One strip of paper being folded onto the triangles of a surface: the fold engine that a wrap
- * needs, in which a fold costs what it touches, not what has been folded before.
+ * One sheet of paper being folded: the fold engine of iFold, in which a fold costs what it
+ * touches, not what has been folded before. A wrap folds a strip onto the triangles of a
+ * surface; a fold script folds a whole sheet ({@link #rectangle}) in space.
  *
- * <p><b>The sheet.</b> The strip's paper, [0, L] × [0, w] in paper coordinates (u, v), is cut into
- * convex faces over shared paper vertices; the faces tile the strip exactly once, because every
+ * <p><b>The sheet.</b> The paper, [0, L] × [0, w] in paper coordinates (u, v), is cut into
+ * convex faces over shared paper vertices; the faces tile the sheet exactly once, because every
  * cut splits one face into two along a line. Each face <em>rests on a host</em> (an integer: a
- * triangle of the surface) and has a <em>pose</em>, the rigid motion from paper coordinates
+ * triangle of the surface, or a plane) and has a <em>pose</em>, the rigid motion from paper coordinates
  * into the host's 2D frame, so a face is congruent to its paper by construction. Its height
  * above the host is its <em>level</em> in the host's stack times the thickness.
  *
@@ -25,16 +26,21 @@ import java.util.Set;
  * reflection (a flat fold) or with the development of the next host (a fold over an edge of the
  * surface). That is O(1) whatever came before: laid paper never moves with the tail.
  *
- * <p><b>Tucks</b> fold the paper resting on one host beyond a line under the rest of that
- * host's paper. Only that host's faces are cut and moved, with their neighbours on the sheet
- * given the new vertices, so a tuck costs what lies on its triangle.
+ * <p><b>Edits of laid paper.</b> {@link #edit() An edit} cuts faces along a line (of one host,
+ * or of the sheet) and moves some of them to a host, over or under the paper there, with their
+ * neighbours on the sheet given the new vertices; it journals what it changed. A <b>tuck</b> is
+ * one: it folds the paper resting on one host beyond a line under the rest of that host's
+ * paper, so it costs what lies on its triangle.
  *
  * <p><b>Stacks.</b> Each host keeps which of its overlapping faces lies above which: a face laid
  * over (a valley fold, seen from the strip's outer side) lies above every face of the host it
  * overlaps, one laid under (a mountain fold) below every one, and a tucked flap goes under the
  * paper it lands below, its own order reversed. Each new relation starts or ends at the face
  * just placed, so the order never has a cycle. A face's level is the longest chain of faces
- * below it: faces rest on what is under them, the first on the surface.
+ * below it: faces rest on what is under them, the first on the surface. An order implied by a
+ * moved face that lies between and covers the other is not recorded again (a pile of N layers
+ * keeps N relations, not N²); where a cut along the sheet takes such a face away, the order it
+ * implied is recorded.
  */
 public final class Sheet {
     /** Where the paper just folded lands: over the paper it overlaps, or under it. */
@@ -493,13 +499,15 @@ public final class Sheet {
             LongList kept = new LongList();
             LongList carried = new LongList();
             // Marks by face, not set lookups: a stack folded again and again holds many relations.
-            boolean[] moves = new boolean[loops.size()];
+            // (Kept by the sheet and told apart by a count, not cleared: a tuck must not cost the
+            // whole sheet.)
+            int moves = nextMark();
             for (int f : faces) {
-                moves[f] = true;
+                mark[f] = moves;
             }
-            boolean[] cut = new boolean[loops.size()];
+            int cut = nextMark();
             for (int f : reshaped) {
-                cut[f] = true;
+                cutMark[f] = cut;
             }
             // A cut along a line on the sheet can take away paper that lay between two faces that
             // stay, wherever they lie: their order, implied through it, is then recorded itself.
@@ -509,8 +517,8 @@ public final class Sheet {
                 long pair = from.above.get(r);
                 int upper = (int) (pair >>> 32);
                 int lower = (int) pair;
-                boolean upperMoves = moves[upper];
-                boolean lowerMoves = moves[lower];
+                boolean upperMoves = mark[upper] == moves;
+                boolean lowerMoves = mark[lower] == moves;
                 if (upperMoves != lowerMoves) {
                     if (sheetCut) {
                         (upperMoves ? stayingBelow : stayingAbove).computeIfAbsent(upperMoves ? upper : lower, k -> new ArrayList<>())
@@ -518,7 +526,7 @@ public final class Sheet {
                     }
                     continue; // they lay side by side before; where the moved paper lands is decided below
                 }
-                if ((cut[upper] || cut[lower]) && !overlap(upper, lower)) {
+                if ((cutMark[upper] == cut || cutMark[lower] == cut) && !overlap(upper, lower)) {
                     continue; // a face cut by the line keeps only the relations of the part that overlaps
                 }
                 if (upperMoves) {
@@ -562,21 +570,21 @@ public final class Sheet {
                     between.computeIfAbsent(lower, k -> new ArrayList<>()).add(upper);
                 }
             }
-            boolean[] touches = new boolean[loops.size()];
             List<Integer> touching = new ArrayList<>();
             for (int i = 0; i < to.count; i++) {
                 int g = to.faces[i];
                 touching.clear();
+                int touches = nextMark();
                 for (int f : faces) {
                     if (overlap(f, g)) {
-                        touches[f] = true;
+                        mark[f] = touches;
                         touching.add(f);
                     }
                 }
                 for (int f : touching) {
                     boolean implied = false;
                     for (int h : between.getOrDefault(f, List.of())) {
-                        if (touches[h] && contains(h, f)) {
+                        if (mark[h] == touches && contains(h, f)) {
                             implied = true;
                             break;
                         }
@@ -584,9 +592,6 @@ public final class Sheet {
                     if (!implied) {
                         to.above.add(placement == Placement.OVER ? ((long) f << 32) | g : ((long) g << 32) | f);
                     }
-                }
-                for (int f : touching) {
-                    touches[f] = false;
                 }
             }
             to.above.addAll(carried);
@@ -745,6 +750,21 @@ public final class Sheet {
         }
     }
 
+    /** Per-face marks for one pass over a stack, told apart by {@link #nextMark()} rather than cleared. */
+    private int[] mark = new int[16];
+    private int[] cutMark = new int[16];
+    private int markCount;
+    /** Scratch: each face's place in the stack whose levels are being found. */
+    private int[] placeInStack = new int[16];
+
+    private int nextMark() {
+        if (mark.length < loops.size()) {
+            mark = Arrays.copyOf(mark, Math.max(loops.size(), 2 * mark.length));
+            cutMark = Arrays.copyOf(cutMark, mark.length);
+        }
+        return ++markCount;
+    }
+
     /** Whether face g, as placed, lies wholly inside face h (convex, either way round). */
     private boolean contains(int h, int g) {
         double[] outer = placedCached(h);
@@ -823,7 +843,10 @@ public final class Sheet {
         // Faces by their place in the stack, and the relations as arrays (compressed rows): a
         // stack folded over and over holds hundreds of thousands of them.
         int n = stack.count;
-        int[] index = new int[loops.size()];
+        if (placeInStack.length < loops.size()) {
+            placeInStack = new int[Math.max(loops.size(), 2 * placeInStack.length)];
+        }
+        int[] index = placeInStack; // only the stack's own faces are read, and all are written first
         for (int i = 0; i < n; i++) {
             index[stack.faces[i]] = i;
         }
