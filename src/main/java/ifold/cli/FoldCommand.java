@@ -75,10 +75,10 @@ final class FoldCommand implements Callable<Integer> {
         Scene scene = new Scene();
         Geometry geometry = new Geometry("paper", PaperView.mesh(folded, result.sheet()), PaperView.MATERIAL);
         scene.root().attach(geometry);
-        Animation animation = PaperView.folding(geometry, result, folded);
-        animation.apply(0);
         scene.camera().setOrientation(new Quaterniond().rotateX(-0.75).rotateZ(-0.35));
-        scene.frameAll();
+        // The camera frames the paper as it stands, folding up.
+        Animation animation = PaperView.folding(geometry, result, folded, scene.camera());
+        animation.apply(0);
         outputs.show(scene, animation, script.getFileName() + ": " + result.steps().size() + " folds", outputs.frameOptions.seconds,
                 false, spec);
         out.flush();

@@ -1,15 +1,28 @@
 package ifold.cli;
 
+import ifold.image.FrameSink;
+import ifold.image.FrameWriter;
+import ifold.image.GifWriter;
+import ifold.image.Mp4Writer;
+import ifold.render.FrameExport;
+import ifold.render.RenderUnavailableException;
+import ifold.scene.Animation;
+import ifold.scene.Scene;
+import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.io.IOException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import picocli.CommandLine.Option;
 
 /**
- * The options every command that shows something takes to render frames instead of opening a
- * window: {@code --frames DIR [--size WxH] [--fps N] [--seconds S]}. Checked before any work.
+ * The options every command that shows something takes to render frames or a movie instead of
+ * opening a window: {@code --frames DIR --movie FILE [--size WxH] [--fps N] [--seconds S]
+ * [--no-captions]}. Checked before any work.
  */
 final class FrameOptions {
     private static final Pattern SIZE = Pattern.compile("(\\d{1,5})x(\\d{1,5})");
@@ -25,6 +38,13 @@ final class FrameOptions {
 
     @Option(names = "--seconds", paramLabel = "S", defaultValue = "10", description = "length of the animation in seconds (default ${DEFAULT-VALUE})")
     double seconds;
+
+    @Option(names = "--movie", paramLabel = "FILE", description = "render offscreen into a movie instead of opening a window: "
+            + "FILE.mp4 (H.264, through ffmpeg) or FILE.gif (looping, at most 50 frames/s); with --frames, both")
+    Path movie;
+
+    @Option(names = "--no-captions", description = "no caption naming the step along the bottom of frames and movies")
+    boolean noCaptions;
 
     int width;
     int height;
@@ -48,9 +68,88 @@ final class FrameOptions {
         if (!(seconds > 0) || seconds > 3600) {
             throw new UserError("option --seconds: must be more than 0 and at most 3600, got " + seconds);
         }
+        if (movie != null) {
+            checkMovie();
+        }
         if (frames != null) {
             prepareFolder();
         }
+    }
+
+    /** Whether frames or a movie are asked for: rendered offscreen rather than shown. */
+    boolean renders() {
+        return frames != null || movie != null;
+    }
+
+    private boolean isGif() {
+        return movie.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".gif");
+    }
+
+    private void checkMovie() {
+        OutputFiles.checkWritableFile(movie, "--movie", ".mp4", ".gif");
+        if (isGif()) {
+            if (fps > GifWriter.MAX_FPS) {
+                throw new UserError("option --fps: a GIF keeps at most " + GifWriter.MAX_FPS + " frames a second, got " + fps
+                        + "; write an .mp4 for more");
+            }
+            return;
+        }
+        if (width % 2 != 0 || height % 2 != 0) {
+            throw new UserError("option --size: an MP4 needs an even width and height, got " + size);
+        }
+        if (!Mp4Writer.available()) {
+            throw new UserError("option --movie: writing an .mp4 needs ffmpeg, which is not installed (scripts/setup installs it);"
+                    + " or write a .gif");
+        }
+    }
+
+    /**
+     * Renders {@code frameCount} frames of the animation into the folder and the movie asked
+     * for, with a progress bar on {@code err}, and says what it wrote on {@code out}. A failure
+     * is a {@link UserError}; a movie not finished is not left behind.
+     */
+    void export(Scene scene, Animation animation, int frameCount, int samples, PrintWriter out, PrintWriter err) {
+        List<FrameSink> sinks = new ArrayList<>();
+        FrameExport.Result result;
+        try {
+            try {
+                if (frames != null) {
+                    sinks.add(new FrameWriter(frames));
+                }
+                if (movie != null) {
+                    sinks.add(isGif() ? new GifWriter(movie, width, height, fps) : new Mp4Writer(movie, width, height, fps));
+                }
+                result = FrameExport.export(scene, animation, FrameSink.all(sinks), width, height, frameCount, samples, !noCaptions,
+                        new ProgressBar(err));
+            } finally {
+                for (FrameSink sink : sinks) {
+                    sink.close();
+                }
+            }
+        } catch (RenderUnavailableException e) {
+            removeFolderIfUnused();
+            throw new UserError(e.getMessage());
+        } catch (IOException e) {
+            removeFolderIfUnused();
+            throw new UserError((movie != null ? "option --movie: cannot write " + movie : "option --frames: cannot write frames to "
+                    + frames) + ": " + e.getMessage());
+        }
+        if (frames != null) {
+            out.printf(Locale.ROOT, "wrote %d frames of %dx%d to %s in %.1f s (%.1f frames/s)%n", result.frames(), width, height,
+                    frames.toAbsolutePath(), result.seconds(), result.framesPerSecond());
+        }
+        if (movie != null) {
+            long bytes;
+            try {
+                bytes = Files.size(movie);
+            } catch (IOException e) {
+                bytes = -1;
+            }
+            out.printf(Locale.ROOT, "wrote %s: %d frames of %dx%d at %d frames/s (%.1f s), %.2f MB, in %.1f s (%.1f frames/s)%n",
+                    movie, result.frames(), width, height, fps, (double) result.frames() / fps, bytes / 1e6, result.seconds(),
+                    result.framesPerSecond());
+        }
+        out.flush();
     }
 
     /** After a failure: removes the folder if this run made it and left it empty. */

@@ -1,7 +1,6 @@
 package ifold.cli;
 
 import ifold.io.AtomicFile;
-import ifold.render.FrameExport;
 import ifold.render.RenderUnavailableException;
 import ifold.render.ViewerWindow;
 import ifold.scene.Animation;
@@ -52,7 +51,7 @@ final class PaperOutputs {
         if (report != null) {
             OutputFiles.checkWritableFile(report, "--report", ".json");
         }
-        if (framesWithoutDisplay && frameOptions.frames == null && !noView && !hasDisplay()) {
+        if (framesWithoutDisplay && !frameOptions.renders() && !noView && !hasDisplay()) {
             frameOptions.frames = Path.of(name + "-frames");
             err.println("ifold: no display: rendering frames into " + frameOptions.frames.toAbsolutePath() + "/ instead");
         }
@@ -136,21 +135,8 @@ final class PaperOutputs {
         PrintWriter err = spec.commandLine().getErr();
         boolean secondsGiven = spec.commandLine().getParseResult().hasMatchedOption("--seconds");
         double seconds = secondsGiven ? frameOptions.seconds : defaultSeconds;
-        if (frameOptions.frames != null) {
-            try {
-                int frames = Math.max(1, (int) Math.round(frameOptions.fps * seconds));
-                FrameExport.Result result = FrameExport.export(scene, animation, frameOptions.frames, frameOptions.width,
-                        frameOptions.height, frames, samples, err);
-                out.printf(Locale.ROOT, "wrote %d frames of %dx%d to %s in %.1f s (%.1f frames/s)%n", result.frames(),
-                        frameOptions.width, frameOptions.height, frameOptions.frames.toAbsolutePath(), result.seconds(),
-                        result.framesPerSecond());
-            } catch (RenderUnavailableException e) {
-                discardWritten();
-                throw new UserError(e.getMessage());
-            } catch (IOException e) {
-                discardWritten();
-                throw new UserError("option --frames: cannot write frames to " + frameOptions.frames + ": " + e.getMessage());
-            }
+        if (frameOptions.renders()) {
+            frameOptions.export(scene, animation, Math.max(1, (int) Math.round(frameOptions.fps * seconds)), samples, out, err);
         } else if (!noView) {
             Player player = new Player(animation, seconds);
             if (autoplay) {
@@ -160,7 +146,7 @@ final class PaperOutputs {
                 new ViewerWindow(scene, player, title, err, samples).show("iFold - " + title, 1280, 720, 0);
             } catch (RenderUnavailableException e) {
                 discardWritten();
-                throw new UserError(e.getMessage() + "; or render frames with --frames DIR, or pass --no-view");
+                throw new UserError(e.getMessage() + "; or render frames with --frames DIR or a movie with --movie FILE, or pass --no-view");
             }
         }
         out.flush();

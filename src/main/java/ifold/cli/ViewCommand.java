@@ -4,7 +4,6 @@ import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.Topology;
 import ifold.refine.HamiltonianRefinement;
-import ifold.render.FrameExport;
 import ifold.render.RenderUnavailableException;
 import ifold.render.ViewerWindow;
 import ifold.scene.Animation;
@@ -102,7 +101,7 @@ final class ViewCommand implements Callable<Integer> {
         animation = path ? PathView.reveal(geometry) : new Turntable(scene.camera());
 
         int samples = geometry.mesh().triangleCount() <= DENSE ? 4 : 0;
-        if (frameOptions.frames == null) {
+        if (!frameOptions.renders()) {
             Player player = new Player(animation, frameOptions.seconds);
             if (path) {
                 player.seek(animation.stepCount()); // open on the whole path; space plays it from the start
@@ -119,20 +118,10 @@ final class ViewCommand implements Callable<Integer> {
             return 0;
         }
         int frames = frameOptions.frameCount();
-        removeStaleFrames(frameOptions.frames, frames);
-        try {
-            FrameExport.Result result = FrameExport.export(scene, animation, frameOptions.frames,
-                    frameOptions.width, frameOptions.height, frames, samples, err);
-            out.printf(Locale.ROOT, "wrote %d frames of %dx%d to %s in %.1f s (%.1f frames/s, %s)%n", result.frames(),
-                    frameOptions.width, frameOptions.height, frameOptions.frames, result.seconds(), result.framesPerSecond(),
-                    result.renderer());
-        } catch (RenderUnavailableException e) {
-            frameOptions.removeFolderIfUnused();
-            throw new UserError(e.getMessage());
-        } catch (IOException e) {
-            throw new UserError("option --frames: cannot write frames to " + frameOptions.frames + ": " + e.getMessage());
+        if (frameOptions.frames != null) {
+            removeStaleFrames(frameOptions.frames, frames);
         }
-        out.flush();
+        frameOptions.export(scene, animation, frames, samples, out, err);
         return 0;
     }
 

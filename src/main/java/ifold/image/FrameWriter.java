@@ -2,10 +2,8 @@ package ifold.image;
 
 import ifold.io.AtomicFile;
 import java.io.IOException;
-import java.io.PrintWriter;
 import java.io.UncheckedIOException;
 import java.nio.file.Path;
-import java.util.Locale;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Future;
@@ -16,6 +14,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.ExecutionException;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 
 /**
  * Writes a numbered sequence of frames, {@code frame_00000.png}, {@code frame_00001.png}, ...,
@@ -24,30 +23,17 @@ import java.util.List;
  * A bounded number of frames wait for encoding at once, so memory stays flat however long the
  * sequence.
  */
-public final class FrameWriter implements AutoCloseable {
+public final class FrameWriter implements FrameSink {
     private final Path folder;
-    private final int total;
-    private final PrintWriter progress;
-    /** Whether the progress bar goes to a terminal (the JVM has a console: stdin and stdout are one). */
-    private static final boolean ON_TERMINAL = System.console() != null;
     private final ExecutorService encoders;
     private final Semaphore inFlight;
     private final List<Future<?>> pending = new ArrayList<>();
     /** Pictures whose frames are on disk, ready to be drawn into again: a long export allocates no more than a few. */
     private final ConcurrentLinkedQueue<byte[]> spare = new ConcurrentLinkedQueue<>();
-    private final long start = System.nanoTime();
-    private int submitted;
-    private int lastPrinted = -1;
 
-    /**
-     * @param folder where the frames go; it must exist and be writable
-     * @param total how many frames will come, for the progress bar
-     * @param progress where the progress bar goes (stderr), or null for none
-     */
-    public FrameWriter(Path folder, int total, PrintWriter progress) {
+    /** @param folder where the frames go; it must exist and be writable */
+    public FrameWriter(Path folder) {
         this.folder = folder;
-        this.total = total;
-        this.progress = progress;
         int threads = Math.max(1, Runtime.getRuntime().availableProcessors());
         this.encoders = new ThreadPoolExecutor(threads, threads, 0, TimeUnit.SECONDS, new LinkedBlockingQueue<>(), r -> {
             Thread thread = new Thread(r, "png-encoder");
@@ -58,6 +44,7 @@ public final class FrameWriter implements AutoCloseable {
     }
 
     /** A picture of {@code size} bytes to draw the next frame into: one handed back by an earlier frame if there is one. */
+    @Override
     public byte[] buffer(int size) {
         byte[] recycled = spare.poll();
         return recycled != null && recycled.length == size ? recycled : new byte[size];
@@ -73,6 +60,7 @@ public final class FrameWriter implements AutoCloseable {
      * while too many frames wait; rethrows the first failure of an earlier frame. The writer
      * owns {@code rgb} from now on, and hands it out again through {@link #buffer(int)}.
      */
+    @Override
     public void write(int index, int width, int height, byte[] rgb) throws IOException {
         try {
             inFlight.acquire();
@@ -93,9 +81,7 @@ public final class FrameWriter implements AutoCloseable {
                 inFlight.release();
             }
         }));
-        submitted++;
         checkFailures(false);
-        printProgress(submitted);
     }
 
     private void checkFailures(boolean wait) throws IOException {
@@ -117,39 +103,10 @@ public final class FrameWriter implements AutoCloseable {
         }
     }
 
-    private void printProgress(int done) {
-        if (progress == null || done == lastPrinted) {
-            return;
-        }
-        // Redrawn in place on a terminal; into a log or a pipe, a line every tenth of the way.
-        if (!ON_TERMINAL && done != total && (long) done * 10 / Math.max(1, total) == (long) lastPrinted * 10 / Math.max(1, total)) {
-            return;
-        }
-        lastPrinted = done;
-        int width = 30;
-        int filled = total == 0 ? width : (int) ((long) width * done / total);
-        double seconds = (System.nanoTime() - start) * 1e-9;
-        progress.printf(Locale.ROOT, "%s[%s%s] %d/%d frames, %.1f frames/s%s", ON_TERMINAL ? "\r" : "", "#".repeat(filled),
-                " ".repeat(width - filled), done, total, seconds > 0 ? done / seconds : 0.0, ON_TERMINAL ? "" : "\n");
-        progress.flush();
-    }
-
-    /** Frames per second so far, counting from the writer's creation. */
-    public double framesPerSecond() {
-        double seconds = (System.nanoTime() - start) * 1e-9;
-        return seconds > 0 ? submitted / seconds : 0;
-    }
-
     /** Waits for every frame to be on disk; rethrows the first failure. */
+    @Override
     public void finish() throws IOException {
         checkFailures(true);
-        if (progress != null) {
-            printProgress(submitted);
-            if (ON_TERMINAL) {
-                progress.println();
-            }
-            progress.flush();
-        }
     }
 
     @Override

@@ -59,6 +59,76 @@ public final class AtomicFile {
     }
 
     /**
+     * A file being written in steps (a movie, frame by frame): its content goes to a hidden
+     * temporary file beside the target, renamed over it by {@link #commit()}. {@link #close()}
+     * without a commit deletes it, and so does the JVM's shutdown (Ctrl-C, SIGTERM) while it is
+     * pending: an interrupted export leaves no half-written file.
+     */
+    public static final class Pending implements AutoCloseable {
+        private final Path target;
+        private final Path temp;
+        private final Thread cleanup;
+        private boolean done;
+
+        private Pending(Path target) throws IOException {
+            this.target = target;
+            this.temp = createTemporary(target);
+            Path doomed = temp;
+            this.cleanup = new Thread(() -> {
+                try {
+                    Files.deleteIfExists(doomed);
+                } catch (IOException e) {
+                    // Exiting anyway: nothing more to do.
+                }
+            }, "discard " + temp.getFileName());
+            Runtime.getRuntime().addShutdownHook(cleanup);
+        }
+
+        /** The temporary file to write to. */
+        public Path path() {
+            return temp;
+        }
+
+        /** Renames the whole file over the target. */
+        public void commit() throws IOException {
+            try {
+                Files.move(temp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+            } catch (AtomicMoveNotSupportedException e) {
+                Files.move(temp, target, StandardCopyOption.REPLACE_EXISTING);
+            }
+            finish();
+        }
+
+        /** Deletes the temporary file unless it was committed. */
+        @Override
+        public void close() {
+            if (!done) {
+                try {
+                    Files.deleteIfExists(temp);
+                } catch (IOException e) {
+                    // The shutdown hook tries again.
+                    return;
+                }
+                finish();
+            }
+        }
+
+        private void finish() {
+            done = true;
+            try {
+                Runtime.getRuntime().removeShutdownHook(cleanup);
+            } catch (IllegalStateException e) {
+                // Shutting down already: the hook runs, and finds nothing to delete.
+            }
+        }
+    }
+
+    /** Begins a file written in steps; see {@link Pending}. */
+    public static Pending begin(Path file) throws IOException {
+        return new Pending(file.toAbsolutePath());
+    }
+
+    /**
      * Creates an empty, uniquely named hidden file beside {@code target}. Files.createTempFile
      * would make it readable by its owner only, and the rename would carry that over.
      */

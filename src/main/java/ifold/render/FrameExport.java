@@ -1,12 +1,11 @@
 package ifold.render;
 
-import ifold.image.FrameWriter;
+import ifold.image.FrameSink;
 import ifold.scene.Animation;
 import ifold.scene.Geometry;
 import ifold.scene.RevealAnimation;
 import ifold.scene.Scene;
 import java.io.IOException;
-import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -41,29 +40,56 @@ public final class FrameExport {
     }
 
     /**
+     * Renders {@code frames} frames of the animation into {@code sink}.
+     *
      * @param samples samples per pixel for antialiasing (0 for none)
-     * @param progress where the progress bar goes, or null
+     * @param captions whether each frame carries a caption naming the step it shows
+     * @param progress told of each frame done, or null
      */
-    public static Result export(Scene scene, Animation animation, Path folder, int width, int height, int frames,
-            int samples, PrintWriter progress) throws RenderUnavailableException, IOException {
+    public static Result export(Scene scene, Animation animation, FrameSink sink, int width, int height, int frames,
+            int samples, boolean captions, FrameSink.Progress progress) throws RenderUnavailableException, IOException {
         long start = System.nanoTime();
         scene.bindToThread(Thread.currentThread());
-        try (OffscreenRenderer renderer = new OffscreenRenderer(width, height, samples);
-                FrameWriter writer = new FrameWriter(folder, frames, progress)) {
-            boolean composite = animation instanceof RevealAnimation reveal && isOnlyGeometry(scene, reveal.geometry());
+        try (OffscreenRenderer renderer = new OffscreenRenderer(width, height, samples)) {
+            Captions caption = captions ? new Captions(width, height) : null;
+            // A GIF picks its palette from frames spread over the movie, before the first.
+            int samplesWanted = Math.min(sink.samplesWanted(), frames);
+            for (int k = 0; k < samplesWanted; k++) {
+                double at = samplesWanted == 1 ? 0 : animation.stepCount() * (double) k / (samplesWanted - 1);
+                animation.apply(at);
+                byte[] picture = renderer.render(scene);
+                if (caption != null) {
+                    caption.draw(picture, animation.describe(at));
+                }
+                sink.sample(picture);
+            }
+            boolean composite = caption == null && animation instanceof RevealAnimation reveal && isOnlyGeometry(scene, reveal.geometry());
             if (composite) {
-                composite(scene, (RevealAnimation) animation, renderer, writer, frames);
+                composite(scene, (RevealAnimation) animation, renderer, sink, frames, progress);
             } else {
                 for (int i = 0; i < frames; i++) {
-                    animation.apply(position(animation, i, frames));
-                    writer.write(i, width, height, renderer.render(scene, writer.buffer(3 * width * height)));
+                    double at = position(animation, i, frames);
+                    animation.apply(at);
+                    byte[] picture = renderer.render(scene, sink.buffer(3 * width * height));
+                    if (caption != null) {
+                        caption.draw(picture, animation.describe(at));
+                    }
+                    sink.write(i, width, height, picture);
+                    if (progress != null) {
+                        progress.framesDone(i + 1, frames);
+                    }
                 }
             }
-            writer.finish();
+            sink.finish();
             return new Result(frames, (System.nanoTime() - start) * 1e-9, renderer.describe(), composite);
         } finally {
             scene.bindToThread(null);
         }
+    }
+
+    /** The rows of a frame that a caption covers, from the bottom. */
+    public static int captionBand(int width, int height) {
+        return new Captions(width, height).band();
     }
 
     /**
@@ -107,8 +133,8 @@ public final class FrameExport {
         return all.size() == 1 && all.get(0) == geometry;
     }
 
-    private static void composite(Scene scene, RevealAnimation reveal, OffscreenRenderer renderer, FrameWriter writer,
-            int frames) throws IOException {
+    private static void composite(Scene scene, RevealAnimation reveal, OffscreenRenderer renderer, FrameSink writer,
+            int frames, FrameSink.Progress progress) throws IOException {
         Geometry geometry = reveal.geometry();
         geometry.setRevealed(Geometry.ALL);
         byte[] revealed = renderer.render(scene);
@@ -126,6 +152,9 @@ public final class FrameExport {
                 frame[b + 2] = source[b + 2];
             }
             writer.write(i, renderer.width(), renderer.height(), frame);
+            if (progress != null) {
+                progress.framesDone(i + 1, frames);
+            }
         }
     }
 }

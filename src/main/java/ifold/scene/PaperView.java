@@ -57,7 +57,16 @@ public final class PaperView {
      * faces it changed, not kept whole per fold.
      */
     public static Animation folding(Geometry geometry, ScriptFolding.Result result, WrapGeometry folded) {
-        return new Playback(geometry, result, folded);
+        return new Playback(geometry, result, folded, null);
+    }
+
+    /**
+     * As {@link #folding(Geometry, ScriptFolding.Result, WrapGeometry)}, the camera framing the
+     * paper as it stands in every frame (its direction kept): it follows the paper as it folds
+     * up, and moves smoothly, since the paper does.
+     */
+    public static Animation folding(Geometry geometry, ScriptFolding.Result result, WrapGeometry folded, Camera camera) {
+        return new Playback(geometry, result, folded, camera);
     }
 
     private static final class Playback implements Animation {
@@ -73,9 +82,12 @@ public final class PaperView {
         /** The folds made in the arrays above. */
         private int at;
         private double shown = Double.NaN;
+        private final Camera camera;
+        private double sceneRadius;
 
-        Playback(Geometry geometry, ScriptFolding.Result result, WrapGeometry folded) {
+        Playback(Geometry geometry, ScriptFolding.Result result, WrapGeometry folded, Camera camera) {
             this.geometry = geometry;
+            this.camera = camera;
             this.result = result;
             this.sheet = result.sheet();
             this.end = mesh(folded, sheet);
@@ -133,7 +145,7 @@ public final class PaperView {
             shown = position;
             List<ScriptFolding.Step> steps = result.steps();
             if (steps.isEmpty() || position >= steps.size()) {
-                geometry.setMesh(end);
+                show(end);
                 return;
             }
             int k = Math.max(0, (int) Math.floor(position));
@@ -173,7 +185,29 @@ public final class PaperView {
                 mesh.face(corners, PAPER);
                 mesh.outline(corners, loop, sheet);
             }
-            geometry.setMesh(mesh.build());
+            show(mesh.build());
+        }
+
+        private void show(SceneMesh mesh) {
+            geometry.setMesh(mesh);
+            if (camera == null || mesh.vertexCount() == 0) {
+                return;
+            }
+            double[] p = mesh.positions();
+            double[] min = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
+            double[] max = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+            for (int i = 0; i < p.length; i += 3) {
+                for (int axis = 0; axis < 3; axis++) {
+                    min[axis] = Math.min(min[axis], p[i + axis]);
+                    max[axis] = Math.max(max[axis], p[i + axis]);
+                }
+            }
+            org.joml.Vector3d centre = new org.joml.Vector3d((min[0] + max[0]) / 2, (min[1] + max[1]) / 2, (min[2] + max[2]) / 2);
+            double radius = Math.max(1e-9, Math.hypot(max[0] - min[0], Math.hypot(max[1] - min[1], max[2] - min[2])) / 2);
+            camera.frame(centre, radius);
+            // Clipping planes for the largest the paper gets (the flat sheet), so that they do not hop.
+            sceneRadius = Math.max(sceneRadius, 4 * radius);
+            camera.setSceneRadius(sceneRadius);
         }
 
         @Override

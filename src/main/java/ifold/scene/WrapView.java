@@ -23,6 +23,8 @@ public final class WrapView {
     public static final int MODEL = 0xFF7D8A99;
     private static final int REVEAL_STEPS = 4 * 360;
     private static final int TURN_STEPS = 360;
+    /** The part of the final turn over which the camera glides from the last fold's view. */
+    private static final double GLIDE = 0.12;
 
     private WrapView() {
     }
@@ -225,7 +227,19 @@ public final class WrapView {
                 current.setMesh(EMPTY);
                 camera.frame(modelCentre, modelRadius);
                 double angle = Math.toRadians((position - REVEAL_STEPS) * 360.0 / TURN_STEPS);
-                camera.setOrientation(new Quaterniond().rotateX(-0.5).rotateY(finalTurn + Math.max(0, angle)).mul(finalFacing));
+                Quaterniond turn = new Quaterniond().rotateX(-0.5).rotateY(finalTurn + Math.max(0, angle)).mul(finalFacing);
+                camera.setOrientation(turn);
+                // The first moments of the turn glide from where the camera followed the last fold.
+                double glide = steps.isEmpty() ? 1 : (position - REVEAL_STEPS) / (GLIDE * TURN_STEPS);
+                if (glide < 1) {
+                    Camera last = new Camera();
+                    follow(last, triangles, underAt(steps.size()));
+                    double b = smooth(Math.max(0, glide));
+                    camera.setOrientation(new Quaterniond(last.orientation()).slerp(turn, b));
+                    camera.setTarget(new Vector3d(last.target()).lerp(camera.target(), b));
+                    camera.setDistance(last.distance() + b * (camera.distance() - last.distance()));
+                    camera.setSceneRadius(Math.max(last.sceneRadius(), camera.sceneRadius()));
+                }
                 return;
             }
             double along = along(position);
@@ -240,7 +254,34 @@ public final class WrapView {
             done.setRevealed(doneTriangles);
             int firstFace = i > 0 ? strip.facesAfter()[i - 1] : 0;
             current.setMesh(currentMesh(strip, step, j, firstFace, fraction));
-            follow(camera, triangleOf[j] + Math.min(1, (j + fraction - firstStepOf(j)) / Math.max(1, stepsOf(j))));
+            follow(camera, triangleOf[j] + Math.min(1, (j + fraction - firstStepOf(j)) / Math.max(1, stepsOf(j))), underAt(along));
+        }
+
+        /**
+         * How far the camera has turned to look from below at a position along the folds (0 to
+         * 1): on a lone triangle, its tucks fold the excess under it, out of sight from above,
+         * so the camera turns under for them, easing in half a fold before and out by the end.
+         * A polyhedron hides its tucks in the solid; the camera stays outside.
+         */
+        private double underAt(double along) {
+            if (triangles != 1) {
+                return 0;
+            }
+            double under = 0;
+            int n = steps.size();
+            for (int j = 0; j < n; j++) {
+                if (steps.get(j).kind() != Wrap.Kind.TUCK) {
+                    continue;
+                }
+                double rise = (along - (j - 0.5)) / 0.5;
+                double fall = j == n - 1 ? (n - along) / 0.5 : ((j + 1.5) - along) / 0.5;
+                under = Math.max(under, smooth(Math.max(0, Math.min(1, Math.min(rise, fall)))));
+            }
+            return under;
+        }
+
+        private static double smooth(double t) {
+            return t * t * (3 - 2 * t);
         }
 
         private static int last(int[] a) {
@@ -264,7 +305,7 @@ public final class WrapView {
             return end - first;
         }
 
-        private void follow(Camera camera, double at) {
+        private void follow(Camera camera, double at, double under) {
             Vector3d centre = new Vector3d();
             Vector3d normal = new Vector3d();
             double weights = 0;
@@ -294,7 +335,7 @@ public final class WrapView {
             Vector3d target = new Vector3d(modelCentre).lerp(centre, 0.6);
             camera.frame(target, (triangles <= 2 ? 1.15 : 0.8) * modelRadius);
             camera.setSceneRadius(3 * modelRadius);
-            camera.setOrientation(new Quaterniond().rotateX(-0.25).mul(Camera.facing(normal)));
+            camera.setOrientation(new Quaterniond().rotateX(-0.25 - under * (Math.PI - 0.9)).mul(Camera.facing(normal)));
         }
 
         /**
@@ -441,7 +482,8 @@ public final class WrapView {
         @Override
         public String describe(double position) {
             if (position >= REVEAL_STEPS || steps.isEmpty()) {
-                return "wrapped: " + result.strips().size() + " strip(s) over " + triangles + " triangles";
+                return triangles == 1 ? "wrapped: the strip covers the triangle, its excess tucked under"
+                        : "wrapped: " + result.strips().size() + " strip(s) over " + triangles + " triangles";
             }
             int j = Math.min(steps.size() - 1, (int) Math.floor(along(position)));
             Wrap.Step step = steps.get(j);

@@ -99,13 +99,14 @@ public final class TurnGadget {
         Sheet sheet = new Sheet(width, thickness, tolerance, TABLE, Isometry2.IDENTITY);
         List<Wrap.Step> steps = new ArrayList<>();
         // Across the strip at u = p: it runs back along -x, back side up.
-        fold(sheet, steps, p, 0, 0, 1);
+        fold(sheet, steps, p, 0, 0, 1, "the fold across lays the strip back over itself");
         // The first fold took paper point (u, v) to (2p - u, v): the turn crease, from paper
         // (p + X, 0) to (p + X + slant, w), lies from (p - X, 0) towards (-slant, w) on the table.
-        fold(sheet, steps, p - overhang, 0, -slant, width);
+        fold(sheet, steps, p - overhang, 0, -slant, width, String.format(java.util.Locale.ROOT,
+                "the turn fold sets it running at %.4g°, top side up", angleDegrees));
         Isometry2 pose = sheet.tailPose();
         int last = sheet.endTail(pose.x(length, 0), pose.y(length, 0), pose.dx(0, 1), pose.dy(0, 1));
-        steps.add(new Wrap.Step(Wrap.Kind.END, 0, TABLE, 0, 1, last, null, sheet.faceCount(), null));
+        steps.add(new Wrap.Step(Wrap.Kind.END, 0, TABLE, 0, 1, last, null, sheet.faceCount(), null, "on at the angle asked, top side up"));
 
         // The table: a triangle under all the paper, folded and as it came in.
         double[] box = {0, 0, length, width};
@@ -118,12 +119,17 @@ public final class TurnGadget {
                 box[3] = Math.max(box[3], xy[k + 1]);
             }
         }
-        double margin = width;
-        double x0 = box[0] - margin;
-        double y0 = box[1] - margin;
-        double legX = 2 * (box[2] - box[0] + 2 * margin);
-        double legY = 2 * (box[3] - box[1] + 2 * margin);
-        double[] corners = {x0, y0, x0 + legX, y0, x0, y0 + legY};
+        // A triangle about the paper's middle (its incircle holds the paper's bounding circle): the
+        // view that follows the triangle being folded then looks at the paper.
+        double cx = (box[0] + box[2]) / 2;
+        double cy = (box[1] + box[3]) / 2;
+        double around = 2 * (Math.hypot(box[2] - box[0], box[3] - box[1]) / 2 + width);
+        double[] corners = new double[6];
+        for (int k = 0; k < 3; k++) {
+            double angle = Math.PI / 2 + k * 2 * Math.PI / 3;
+            corners[2 * k] = cx + around * Math.cos(angle);
+            corners[2 * k + 1] = cy + around * Math.sin(angle);
+        }
         HostFrame table = new HostFrame(new double[] {0, 0, 0}, new double[] {1, 0, 0}, new double[] {0, 1, 0},
                 new double[] {0, 0, 1}, corners);
         PolygonSoup mesh = new PolygonSoup();
@@ -141,11 +147,12 @@ public final class TurnGadget {
     private static final int TABLE = 0;
 
     /** A fold of the tail over the paper it lies on (a valley fold of the strip's top as it lies then), recorded as a step. */
-    private static void fold(Sheet sheet, List<Wrap.Step> steps, double px, double py, double dx, double dy) throws FoldException {
+    private static void fold(Sheet sheet, List<Wrap.Step> steps, double px, double py, double dx, double dy, String detail)
+            throws FoldException {
         Isometry2 before = sheet.tailPose();
         int face = sheet.foldTail(px, py, dx, dy, Placement.OVER, Crease.GADGET);
         Wrap.TailMove move = new Wrap.TailMove(TABLE, before, TABLE, sheet.tailPose(), sheet.tailStart(false), sheet.tailStart(true),
                 true);
-        steps.add(new Wrap.Step(Wrap.Kind.TURN_GADGET, 0, TABLE, 0, 1, face, null, sheet.faceCount(), move));
+        steps.add(new Wrap.Step(Wrap.Kind.TURN_GADGET, 0, TABLE, 0, 1, face, null, sheet.faceCount(), move, detail));
     }
 }

@@ -115,19 +115,25 @@ public final class Wrap {
      * @param tuck the tuck, or null
      * @param facesAfter the faces of the strip's sheet once it is made
      * @param tail for a fold of the tail, where the tail lay before and after it; else null
+     * @param detail where in the triangle's work the fold comes, for a caption: "pass 2 of 5,
+     *     45° valley fold", "tuck 3, along edge AB"
      */
     public record Step(Kind kind, int strip, int triangle, int pathIndex, int pathLength, int face, Sheet.Tuck tuck, int facesAfter,
-            TailMove tail) {
+            TailMove tail, String detail) {
         public String describe() {
             String what = switch (kind) {
-                case ZIGZAG_TURN -> "zig-zag turn (45° fold)";
-                case TURN_GADGET -> "turn gadget fold";
+                case ZIGZAG_TURN -> "zig-zag turn";
+                case TURN_GADGET -> "turn gadget";
                 case EDGE_CROSSING -> "fold over the edge to the next triangle";
                 case OVERLAP -> "overlap: the last pass laid back over itself";
-                case TUCK -> "tuck: excess folded under along an edge";
+                case TUCK -> "tuck: excess folded under";
                 case END -> "the strip ends";
             };
-            return String.format(Locale.ROOT, "triangle %d of %d: %s", pathIndex + 1, pathLength, what);
+            String where = pathLength > 1 ? String.format(Locale.ROOT, "triangle %d of %d: ", pathIndex + 1, pathLength) : "";
+            if ((kind == Kind.TUCK || kind == Kind.ZIGZAG_TURN) && detail != null && !detail.isEmpty()) {
+                return where + detail; // "tuck 2: excess folded under along edge CA", "pass 3 of 5: turn, 45° valley fold"
+            }
+            return where + what + (detail == null || detail.isEmpty() ? "" : ", " + detail);
         }
     }
 
@@ -530,6 +536,20 @@ public final class Wrap {
         return firstDirection(plan, 0, width) * lastIfFirstPositive != lastDirectionToEnd(plan);
     }
 
+    /** The name of a lone triangle's corner at place {@code k} of its face: A, B, C, as the user gave them. */
+    private static String cornerName(int k) {
+        return String.valueOf((char) ('A' + k));
+    }
+
+    /** The name of corner {@code c} of path triangle i's frame (0 and 1 its base, 2 its start), by its place in the face. */
+    private static String frameCornerName(PathPlan plan, int i, int c) {
+        int k = 0;
+        while (plan.corners[i][k] != plan.start[i]) {
+            k++;
+        }
+        return cornerName((k + 1 + c) % 3);
+    }
+
     private static int[] sharedEdge(int[] a, int[] b) {
         int[] shared = new int[2];
         int n = 0;
@@ -579,6 +599,9 @@ public final class Wrap {
         private final List<Step> steps;
         private Sheet sheet;
         private int pathIndex;
+        /** The caption's detail for the folds being made, and the pass they belong to. */
+        private String detail = "";
+        private String passNote = "";
 
         Folding(IndexedPolygons mesh, PathPlan plan, int strip, double width, double thickness, double tolerance, List<Step> steps) {
             this.mesh = mesh;
@@ -626,17 +649,22 @@ public final class Wrap {
             } else {
                 checkEntry(d, bottom[0]);
             }
+            int passes = k + (last && overlapped(plan, w) ? 1 : 0);
             for (int j = 0; j + 1 < k; j++) {
+                passNote = String.format(Locale.ROOT, "pass %d of %d", j + 1, passes);
                 turn(edges, d, bottom[j], bottom[j + 1], host);
                 d = -d;
             }
+            passNote = String.format(Locale.ROOT, "pass %d of %d", k, passes);
             if (last) {
                 double end = endOfPass(edges, d, bottom[k - 1]);
                 if (overlapped(plan, w)) {
+                    detail = "the strip turns back to end at corner " + cornerName(plan.ends.end());
                     tailFold(Kind.OVERLAP, host, end, 0, 0, 1, Placement.OVER, Crease.TURN);
                     d = -d;
                     end = endOfPass(edges, d, bottom[k - 1]);
                 }
+                detail = "";
                 record(Kind.END, host, sheet.endTail(end, 0, 0, 1));
             } else {
                 leave(i, edges, d);
@@ -669,13 +697,16 @@ public final class Wrap {
             if (Math.abs(shift - w) <= 1e-9 * w) {
                 // A valley fold lays the strip back across itself along the edge, a mountain fold
                 // one width on lays it flat beside the pass it left, running back.
+                detail = passNote + ": turn, 45° valley fold";
                 tailFold(Kind.ZIGZAG_TURN, host, x1, y + w, d, -1, Placement.OVER, Crease.TURN);
+                detail = passNote + ": turn, 45° mountain fold";
                 tailFold(Kind.ZIGZAG_TURN, host, x1 + d * w, y, -d, -1, Placement.UNDER, Crease.TURN);
                 return;
             }
             // Two 90° turn gadgets: down a vertical band [x1, x1 + w] beyond the edge, then back
             // along the next pass; the fold across the vertical band sets where the next pass lies.
             double middle = x1 + d * w / 2;
+            detail = passNote + ": shift by less than a width, two 90° gadgets";
             tailFold(Kind.TURN_GADGET, host, x1 + d * w, 0, 0, 1, Placement.OVER, Crease.GADGET);
             tailFold(Kind.TURN_GADGET, host, middle, y + w / 2, -d, -1, Placement.OVER, Crease.GADGET);
             tailFold(Kind.TURN_GADGET, host, 0, next, 1, 0, Placement.OVER, Crease.GADGET);
@@ -710,8 +741,11 @@ public final class Wrap {
             double reach = Math.abs(w / 2 * lx / ly);
             double fold = d > 0 ? Math.max(edges.rightmost(0, w) + margin, meetX + reach)
                     : Math.min(edges.leftmost(0, w) - margin, meetX - reach);
+            detail = "fold back across the strip";
             tailFold(Kind.TURN_GADGET, host, fold, 0, 0, 1, Placement.OVER, Crease.GADGET);
+            detail = "turn to run along the next triangle's first pass";
             tailFold(Kind.TURN_GADGET, host, meetX, w / 2, lx, ly, Placement.OVER, Crease.GADGET);
+            detail = "";
             tailCross(Kind.EDGE_CROSSING, host, 0, 0, 1, 0, plan.first + i + 1, development);
             // The crease over the edge must lie on the edge itself: paper beyond its ends would be
             // joined to paper on both triangles' excess, which no tuck could then fold away.
@@ -755,7 +789,10 @@ public final class Wrap {
                 int from = edge;
                 int to = (edge + 1) % 3;
                 Sheet.Tuck tuck = sheet.tuck(host, c[2 * from], c[2 * from + 1], c[2 * to] - c[2 * from], c[2 * to + 1] - c[2 * from + 1]);
-                steps.add(new Step(Kind.TUCK, strip, host, pathIndex, plan.m, -1, tuck, sheet.faceCount(), null));
+                // A lone triangle's corners are the ones the user named A, B and C.
+                String edgeName = plan.m == 1 ? "along edge " + frameCornerName(plan, i, from) + frameCornerName(plan, i, to) : "along an edge";
+                steps.add(new Step(Kind.TUCK, strip, host, pathIndex, plan.m, -1, tuck, sheet.faceCount(), null,
+                        "tuck " + (tucks + 1) + ": excess folded under " + edgeName));
             }
         }
 
@@ -814,11 +851,11 @@ public final class Wrap {
         private void recordTail(Kind kind, int host, int face, int hostBefore, Isometry2 before, boolean over) {
             TailMove move = new TailMove(hostBefore, before, sheet.tailHost(), sheet.tailPose(), sheet.tailStart(false),
                     sheet.tailStart(true), over);
-            steps.add(new Step(kind, strip, host, pathIndex, plan.m, face, null, sheet.faceCount(), move));
+            steps.add(new Step(kind, strip, host, pathIndex, plan.m, face, null, sheet.faceCount(), move, detail));
         }
 
         private void record(Kind kind, int host, int face) {
-            steps.add(new Step(kind, strip, host, pathIndex, plan.m, face, null, sheet.faceCount(), null));
+            steps.add(new Step(kind, strip, host, pathIndex, plan.m, face, null, sheet.faceCount(), null, detail));
         }
     }
 }

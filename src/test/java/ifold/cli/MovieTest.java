@@ -1,0 +1,125 @@
+package ifold.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import ifold.image.FrameWriter;
+import ifold.image.Mp4Writer;
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import javax.imageio.ImageIO;
+import javax.imageio.ImageReader;
+import javax.imageio.stream.ImageInputStream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** Movies and captions from the command line, checked by their pixels and frames. */
+class MovieTest {
+    @TempDir
+    Path dir;
+
+    /** The demos' background. */
+    private static final int BACKGROUND = 0xD3DAE2;
+
+    private static void assumeDisplay() {
+        String display = System.getenv("DISPLAY");
+        assumeTrue(display != null && !display.isEmpty(), "no X display (run the tests under xvfb-run)");
+    }
+
+    private static BufferedImage frame(Path folder, int index) throws Exception {
+        return ImageIO.read(folder.resolve(FrameWriter.frameName(index)).toFile());
+    }
+
+    @Test
+    void aGifOfTheDemoLoopsWithOneFrameAPeriod() throws Exception {
+        assumeDisplay();
+        Path gif = dir.resolve("zigzag.gif");
+        CliTest.Run run = CliTest.run("demo", "zigzag", "--movie", gif.toString(), "--size", "160x90", "--fps", "5", "--seconds", "3");
+        assertEquals(0, run.code(), run.err());
+        assertTrue(run.out().contains("wrote " + gif + ": 15 frames of 160x90 at 5 frames/s (3.0 s)"), run.out());
+        try (ImageInputStream in = ImageIO.createImageInputStream(gif.toFile())) {
+            ImageReader reader = ImageIO.getImageReadersByFormatName("gif").next();
+            reader.setInput(in);
+            assertEquals(15, reader.getNumImages(true));
+        }
+    }
+
+    @Test
+    void anMp4OfTheTurnDemoHasItsFrames() throws Exception {
+        assumeDisplay();
+        assumeTrue(Mp4Writer.available(), "no ffmpeg here (scripts/setup installs it)");
+        Path mp4 = dir.resolve("turn.mp4");
+        CliTest.Run run = CliTest.run("demo", "turn", "--angle", "60", "--movie", mp4.toString(), "--size", "160x90", "--fps", "10",
+                "--seconds", "2");
+        assertEquals(0, run.code(), run.err());
+        assertTrue(Files.size(mp4) > 0);
+        assertTrue(run.out().contains("20 frames of 160x90 at 10 frames/s"), run.out());
+    }
+
+    @Test
+    void everyFrameKeepsItsBorderClearAndCarriesACaptionUnlessToldNot() throws Exception {
+        assumeDisplay();
+        Path with = dir.resolve("with");
+        Path without = dir.resolve("without");
+        int frames = 60;
+        assertEquals(0, CliTest.run("demo", "zigzag", "--frames", with.toString(), "--size", "320x180", "--fps", "2").code());
+        assertEquals(0, CliTest.run("demo", "zigzag", "--frames", without.toString(), "--size", "320x180", "--fps", "2",
+                "--no-captions").code());
+        int band = ifold.render.FrameExport.captionBand(320, 180);
+        BufferedImage previous = null;
+        for (int i = 0; i < frames; i++) {
+            BufferedImage plain = frame(without, i);
+            // The paper and the triangle stay inside the picture: its border is background.
+            for (int x = 0; x < 320; x++) {
+                assertEquals(BACKGROUND, plain.getRGB(x, 0) & 0xFFFFFF, "frame " + i + ": top border at x = " + x);
+                assertEquals(BACKGROUND, plain.getRGB(x, 179) & 0xFFFFFF, "frame " + i + ": bottom border at x = " + x);
+            }
+            for (int y = 0; y < 180; y++) {
+                assertEquals(BACKGROUND, plain.getRGB(0, y) & 0xFFFFFF, "frame " + i + ": left border at y = " + y);
+                assertEquals(BACKGROUND, plain.getRGB(319, y) & 0xFFFFFF, "frame " + i + ": right border at y = " + y);
+            }
+            // The caption band differs from the background where there is a caption.
+            BufferedImage captioned = frame(with, i);
+            int differing = 0;
+            for (int y = 180 - band; y < 180; y++) {
+                for (int x = 0; x < 320; x++) {
+                    differing += (captioned.getRGB(x, y) & 0xFFFFFF) != (plain.getRGB(x, y) & 0xFFFFFF) ? 1 : 0;
+                }
+            }
+            assertTrue(differing > 320 * band / 2, "frame " + i + " has a caption: " + differing + " pixels differ");
+            // Something moves in every frame.
+            if (previous != null) {
+                assertFalse(same(previous, plain), "frame " + i + " is the same as the one before");
+            }
+            previous = plain;
+        }
+    }
+
+    private static boolean same(BufferedImage a, BufferedImage b) {
+        for (int y = 0; y < a.getHeight(); y++) {
+            for (int x = 0; x < a.getWidth(); x++) {
+                if (a.getRGB(x, y) != b.getRGB(x, y)) {
+                    return false;
+                }
+            }
+        }
+        return true;
+    }
+
+    @Test
+    void badMovieOptionsGetOneLineAndWriteNothing() throws Exception {
+        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--movie", dir.resolve("z.avi").toString()), "--movie", ".mp4 or .gif");
+        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--movie", dir.resolve("z.gif").toString(), "--fps", "60"), "--fps", "GIF");
+        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--movie", dir.resolve("no/z.gif").toString()), "--movie", "does not exist");
+        if (Mp4Writer.available()) {
+            CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--movie", dir.resolve("z.mp4").toString(), "--size", "641x360"),
+                    "--size", "even");
+        }
+        try (var files = Files.list(dir)) {
+            assertEquals(0, files.count(), "nothing written");
+        }
+    }
+}
