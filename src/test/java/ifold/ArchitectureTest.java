@@ -50,6 +50,73 @@ class ArchitectureTest {
     }
 
     /**
+     * The table of packages in docs/architecture.md is the map: every import of one iFold
+     * package from another (and of JOML, JOGL, picocli) must be allowed by its row's "may
+     * import" column, so the document and the code cannot drift apart.
+     */
+    @Test
+    void importsFollowTheTableOfPackages() throws IOException {
+        java.util.Map<String, String> allowed = new java.util.LinkedHashMap<>();
+        java.util.regex.Pattern row = java.util.regex.Pattern.compile("^\\| `ifold\\.([a-z.]+)` \\|.*\\| ([^|]+) \\|$");
+        for (String line : Files.readAllLines(Path.of("docs", "architecture.md"))) {
+            java.util.regex.Matcher m = row.matcher(line.trim());
+            if (m.matches()) {
+                allowed.put(m.group(1), m.group(2).trim());
+            }
+        }
+        assertTrue(allowed.size() > 8, "setup: read the table, got " + allowed.keySet());
+        List<String> offences = new ArrayList<>();
+        try (Stream<Path> files = Files.walk(SOURCES)) {
+            for (Path file : (Iterable<Path>) files.filter(p -> p.toString().endsWith(".java"))::iterator) {
+                String pkg = SOURCES.relativize(file.getParent()).toString().replace('/', '.');
+                String rule = allowed.get(pkg);
+                if (rule == null) {
+                    offences.add(file + ": package ifold." + pkg + " is not in the table");
+                    continue;
+                }
+                if (rule.equals("everything")) {
+                    continue;
+                }
+                for (String line : Files.readAllLines(file)) {
+                    String trimmed = line.trim();
+                    if (!trimmed.startsWith("import ")) {
+                        continue;
+                    }
+                    String name = trimmed.replace("import static ", "").replace("import ", "").replace(";", "");
+                    boolean ok;
+                    if (name.startsWith("ifold.")) {
+                        String target = name.substring(6);
+                        ok = target.startsWith(pkg + ".") || allowedPackage(rule, target, allowed.keySet());
+                    } else if (name.startsWith("org.joml.")) {
+                        ok = rule.contains("JOML");
+                    } else if (name.startsWith("com.jogamp.")) {
+                        ok = rule.contains("JOGL");
+                    } else if (name.startsWith("picocli.")) {
+                        ok = rule.contains("picocli");
+                    } else {
+                        ok = name.startsWith("java.") || name.startsWith("javax.") || name.startsWith("org.w3c.");
+                    }
+                    if (!ok) {
+                        offences.add(file + ": " + trimmed + " (may import: " + rule + ")");
+                    }
+                }
+            }
+        }
+        assertEquals(List.of(), offences);
+    }
+
+    /** Whether {@code target} (a class below ifold.) lies in a package the rule names, as `name`. */
+    private static boolean allowedPackage(String rule, String target, java.util.Set<String> packages) {
+        String owner = "";
+        for (String pkg : packages) {
+            if (target.startsWith(pkg + ".") && pkg.length() > owner.length()) {
+                owner = pkg;
+            }
+        }
+        return !owner.isEmpty() && rule.contains("`" + owner + "`");
+    }
+
+    /**
      * JOML 1.10.8's {@code Quaterniond.rotationX} builds (sin, 0, cos, 0): not a turn about x but
      * one of 180 degrees about a tilted axis, which turned every camera upside down. The fix is
      * {@code new Quaterniond().rotateX(a)}; this keeps the broken call out.

@@ -54,7 +54,8 @@ final class DemoCommand implements Runnable {
         CommandSpec spec;
 
         @Option(names = "--triangle", paramLabel = "x1,y1,x2,y2,x3,y3", defaultValue = "0,0,10,0,3.5,8",
-                description = "the triangle's corners A, B and C (default ${DEFAULT-VALUE}: acute and scalene)")
+                description = "the triangle's corners A, B and C in the plane z = 0, or nine numbers for a triangle in space "
+                    + "(default ${DEFAULT-VALUE}: acute and scalene)")
         String triangle;
 
         @Option(names = "--start", paramLabel = "A|B|C", defaultValue = "C",
@@ -290,14 +291,18 @@ final class DemoCommand implements Runnable {
     /** A soft grey-blue: the white paper stands out on it, and the triangle's colour is darker still. */
     private static final int BACKGROUND = 0xFFD3DAE2;
 
-    /** Parses {@code x1,y1,x2,y2,x3,y3}; a bad value or a triangle with no area is the option's error. */
+    /**
+     * Parses {@code x1,y1,x2,y2,x3,y3} (a triangle in the plane z = 0) or
+     * {@code x1,y1,z1,x2,y2,z2,x3,y3,z3} (one in space); a bad value or a triangle with no area
+     * is the option's error.
+     */
     static Triangle parseTriangle(String text) {
         String[] parts = text.split(",", -1);
-        if (parts.length != 6) {
-            throw new UserError("option --triangle: expected six numbers x1,y1,x2,y2,x3,y3, got '" + text + "'");
+        if (parts.length != 6 && parts.length != 9) {
+            throw new UserError("option --triangle: expected six numbers x1,y1,x2,y2,x3,y3 or nine x1,y1,z1,...,z3, got '" + text + "'");
         }
-        double[] values = new double[6];
-        for (int i = 0; i < 6; i++) {
+        double[] values = new double[parts.length];
+        for (int i = 0; i < parts.length; i++) {
             try {
                 values[i] = Double.parseDouble(parts[i].strip());
             } catch (NumberFormatException e) {
@@ -309,7 +314,9 @@ final class DemoCommand implements Runnable {
         }
         Triangle triangle;
         try {
-            triangle = Triangle.planar(values[0], values[1], values[2], values[3], values[4], values[5]);
+            triangle = values.length == 6 ? Triangle.planar(values[0], values[1], values[2], values[3], values[4], values[5])
+                    : new Triangle(new org.joml.Vector3d(values[0], values[1], values[2]), new org.joml.Vector3d(values[3], values[4], values[5]),
+                            new org.joml.Vector3d(values[6], values[7], values[8]));
         } catch (IllegalArgumentException e) {
             throw new UserError("option --triangle: " + e.getMessage());
         }

@@ -104,7 +104,7 @@ final class ViewCommand implements Callable<Integer> {
         if (!frameOptions.renders()) {
             Player player = new Player(animation, frameOptions.seconds);
             if (path) {
-                player.seek(animation.stepCount()); // open on the whole path; space plays it from the start
+                player.togglePlaying(); // the path grows from its first triangle; space pauses it
             }
             try {
                 double fps = new ViewerWindow(scene, player, caption, err, samples).show("iFold - " + model.getFileName(), 1280, 720, closeAfter);

@@ -52,7 +52,7 @@ public final class Player {
     public void step(int count) {
         playing = false;
         int stride = Math.max(1, animation.stepCount() / 100);
-        seek(Math.floor(position / stride + 1e-9) * stride + (double) count * stride);
+        seek(position + (double) count * stride); // equal steps from wherever it stands
     }
 
     public void restart() {

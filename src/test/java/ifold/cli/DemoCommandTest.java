@@ -68,6 +68,15 @@ class DemoCommandTest {
     }
 
     @Test
+    void aTriangleInSpaceIsWrappedOnItsFront() throws Exception {
+        Path report = dir.resolve("space.json");
+        CliTest.Run run = CliTest.run("demo", "zigzag", "--triangle", "1,2,3,6,1,5,2,7,4", "--no-view", "--report", report.toString());
+        assertEquals(0, run.code(), run.err());
+        assertEquals(1.0, CliTest.number(Files.readString(report), "coverage"), 0);
+        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--triangle", "1,2,3,6,1,5,2,7", "--no-view"), "--triangle", "nine");
+    }
+
+    @Test
     void everyStartCornerWorksWithTheDefaultEnd() throws Exception {
         for (String start : new String[] {"A", "B", "C"}) {
             CliTest.Run run = CliTest.run("demo", "zigzag", "--start", start, "--no-view");
