@@ -47,6 +47,12 @@ final class ViewCommand implements Callable<Integer> {
     @Option(names = "--path", description = "animate the Hamiltonian path (implies --refine)")
     boolean path;
 
+    @Option(names = "--colors", paramLabel = "darkness|rainbow", defaultValue = "darkness",
+            description = "how --path colours the triangles along the path: lighter to darker, as the seed's Figure 10 (default), or rainbow")
+    String colorsName;
+
+    private PathView.Colors colors;
+
     @Option(names = "--strict", description = "refuse defective input instead of repairing it")
     boolean strict;
 
@@ -63,6 +69,11 @@ final class ViewCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         frameOptions.check();
+        colors = switch (colorsName.strip().toLowerCase(Locale.ROOT)) {
+            case "darkness" -> PathView.Colors.DARKNESS;
+            case "rainbow" -> PathView.Colors.RAINBOW;
+            default -> throw new UserError("option --colors: expected darkness or rainbow, got '" + colorsName + "'");
+        };
         PrintWriter err = spec.commandLine().getErr();
         PrintWriter out = spec.commandLine().getOut();
         boolean refined = refine || path;
@@ -79,7 +90,7 @@ final class ViewCommand implements Callable<Integer> {
         String caption;
         if (refined) {
             HamiltonianRefinement.Result result = HamiltonianRefinement.refine(mesh);
-            SceneMesh sceneMesh = PathView.mesh(result);
+            SceneMesh sceneMesh = PathView.mesh(result, colors, 5L * mesh.faceCount() > DENSE);
             geometry = new Geometry("refined", sceneMesh, path ? Material.FACE_COLORS : Material.PAPER);
             caption = String.format(Locale.ROOT, "%s: %d -> %d triangles", model.getFileName(), mesh.faceCount(), sceneMesh.triangleCount());
         } else {
@@ -88,8 +99,10 @@ final class ViewCommand implements Callable<Integer> {
             caption = String.format(Locale.ROOT, "%s: %d faces, %d triangles", model.getFileName(), mesh.faceCount(), sceneMesh.triangleCount());
         }
         // On a dense mesh the outlines would paint it black, and antialiasing cannot be seen on
-        // triangles of a pixel or two, while both cost a software renderer dearly.
-        if (geometry.mesh().triangleCount() > DENSE) {
+        // triangles of a pixel or two, while both cost a software renderer dearly. A dense
+        // refinement keeps its original edges, tree edges and path (without the Steiner edges):
+        // they are what it shows.
+        if (geometry.mesh().triangleCount() > DENSE && !refined) {
             Material m = geometry.material();
             geometry.setMaterial(new Material(m.front(), m.back(), m.useFaceColors(), false));
         }

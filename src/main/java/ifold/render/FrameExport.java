@@ -63,9 +63,9 @@ public final class FrameExport {
                 }
                 sink.sample(picture);
             }
-            boolean composite = caption == null && animation instanceof RevealAnimation reveal && isOnlyGeometry(scene, reveal.geometry());
+            boolean composite = animation instanceof RevealAnimation reveal && isOnlyGeometry(scene, reveal.geometry());
             if (composite) {
-                composite(scene, (RevealAnimation) animation, renderer, sink, frames, progress);
+                composite(scene, (RevealAnimation) animation, renderer, sink, frames, caption, progress);
             } else {
                 for (int i = 0; i < frames; i++) {
                     double at = position(animation, i, frames);
@@ -134,7 +134,7 @@ public final class FrameExport {
     }
 
     private static void composite(Scene scene, RevealAnimation reveal, OffscreenRenderer renderer, FrameSink writer,
-            int frames, FrameSink.Progress progress) throws IOException {
+            int frames, Captions caption, FrameSink.Progress progress) throws IOException {
         Geometry geometry = reveal.geometry();
         geometry.setRevealed(Geometry.ALL);
         byte[] revealed = renderer.render(scene);
@@ -150,6 +150,9 @@ public final class FrameExport {
                 frame[b] = source[b];
                 frame[b + 1] = source[b + 1];
                 frame[b + 2] = source[b + 2];
+            }
+            if (caption != null) {
+                caption.draw(frame, reveal.describe(position(reveal, i, frames)));
             }
             writer.write(i, renderer.width(), renderer.height(), frame);
             if (progress != null) {

@@ -1,7 +1,7 @@
 package ifold.scene;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
@@ -14,6 +14,30 @@ class PathViewTest {
     private static HamiltonianRefinement.Result refineIcosahedron() throws Exception {
         HalfedgeMesh mesh = MeshBuilder.build(Solids.icosahedron(), MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();
         return HamiltonianRefinement.refine(mesh);
+    }
+
+    private static int brightness(int argb) {
+        return ((argb >>> 16) & 0xff) + ((argb >>> 8) & 0xff) + (argb & 0xff);
+    }
+
+    @Test
+    void thePathIsADottedCurveAndDenseMeshesKeepTheirTree() throws Exception {
+        HamiltonianRefinement.Result refinement = refineIcosahedron();
+        SceneMesh mesh = PathView.mesh(refinement);
+        int curve = 0;
+        for (int color : mesh.edgeColors()) {
+            curve += color == PathView.PATH_CURVE ? 1 : 0;
+        }
+        // 98 incentres and 97 edge middles: 195 points; each cut of the corners doubles them (the
+        // ends kept), 780 in all, and every other of the 779 pieces is drawn.
+        assertEquals(390, curve);
+        SceneMesh dense = PathView.mesh(refinement, PathView.Colors.DARKNESS, true);
+        int[] counts = PathView.edgeKindCounts(dense);
+        assertEquals(2 * 19, counts[0], "the tree is kept: two halves of each tree edge");
+        assertEquals(0, counts[1], "the Steiner edges are left out");
+        for (int color : dense.edgeColors()) {
+            assertTrue(color != PathView.PATH_CURVE, "and the path's curve: its colours show it");
+        }
     }
 
     @Test
@@ -31,11 +55,16 @@ class PathViewTest {
 
     @Test
     void coloursRunAlongThePathAndRevealCountsTriangles() throws Exception {
+        SceneMesh rainbow = PathView.mesh(refineIcosahedron(), PathView.Colors.RAINBOW, false);
+        assertEquals(Colormap.turbo(0.08), rainbow.triangleColors()[0]);
+        assertEquals(Colormap.turbo(0.92), rainbow.triangleColors()[rainbow.triangleCount() - 1]);
+        // By default darker and darker along the path, as the seed's Figure 10.
         SceneMesh mesh = PathView.mesh(refineIcosahedron());
         int[] colors = mesh.triangleColors();
-        assertEquals(Colormap.turbo(0.08), colors[0]);
-        assertEquals(Colormap.turbo(0.92), colors[colors.length - 1]);
-        assertNotEquals(colors[0], colors[colors.length - 1]);
+        for (int t = 1; t < colors.length; t++) {
+            assertTrue(brightness(colors[t]) <= brightness(colors[t - 1]), "triangle " + t + " is no lighter than the one before");
+        }
+        assertTrue(brightness(colors[0]) - brightness(colors[colors.length - 1]) > 400, "from light to dark");
         Geometry geometry = new Geometry("path", mesh, Material.FACE_COLORS);
         Player player = new Player(PathView.reveal(geometry), 10);
         assertEquals(0, geometry.revealed());
