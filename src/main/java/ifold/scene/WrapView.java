@@ -331,9 +331,12 @@ public final class WrapView {
             normal.normalize();
             // Aim between the model's centre and the triangle, close enough to see the fold and
             // far enough to see where on the model it is; the triangle faces the viewer.
-            // A lone triangle or two are seen whole.
-            Vector3d target = new Vector3d(modelCentre).lerp(centre, 0.6);
-            camera.frame(target, (triangles <= 2 ? 1.15 : 0.8) * modelRadius);
+            // The whole model stays in the picture, with a margin (the caption's band included):
+            // the aim leans 0.3 of the way towards the triangle, and the view holds 0.3 more than
+            // the model, so the model's sphere never leaves it; the triangle faces the viewer.
+            // A lone triangle or two are the model.
+            Vector3d target = new Vector3d(modelCentre).lerp(centre, triangles <= 2 ? 0.6 : 0.3);
+            camera.frame(target, (triangles <= 2 ? 1.15 : 1.38) * modelRadius);
             camera.setSceneRadius(3 * modelRadius);
             camera.setOrientation(new Quaterniond().rotateX(-0.25 - under * (Math.PI - 0.9)).mul(Camera.facing(normal)));
         }

@@ -110,6 +110,35 @@ class MovieTest {
     }
 
     @Test
+    void theWrapAndThePathKeepTheirModelInsideThePicture() throws Exception {
+        assumeDisplay();
+        Path wrap = dir.resolve("wrap");
+        Path path = dir.resolve("path");
+        assertEquals(0, CliTest.run("wrap", "models/cube.off", "--frames", wrap.toString(), "--size", "320x180", "--fps", "1",
+                "--seconds", "40", "--no-captions").code());
+        assertEquals(0, CliTest.run("view", "models/torus.off", "--path", "--frames", path.toString(), "--size", "320x180", "--fps",
+                "2", "--seconds", "10", "--no-captions").code());
+        for (Path folder : new Path[] {wrap, path}) {
+            try (var files = Files.list(folder)) {
+                int count = (int) files.count();
+                BufferedImage first = frame(folder, 0);
+                int background = first.getRGB(0, 0) & 0xFFFFFF;
+                for (int i = 0; i < count; i++) {
+                    BufferedImage image = frame(folder, i);
+                    for (int x = 0; x < 320; x++) {
+                        assertEquals(background, image.getRGB(x, 0) & 0xFFFFFF, folder.getFileName() + " frame " + i + ", top, x = " + x);
+                        assertEquals(background, image.getRGB(x, 179) & 0xFFFFFF, folder.getFileName() + " frame " + i + ", bottom, x = " + x);
+                    }
+                    for (int y = 0; y < 180; y++) {
+                        assertEquals(background, image.getRGB(0, y) & 0xFFFFFF, folder.getFileName() + " frame " + i + ", left, y = " + y);
+                        assertEquals(background, image.getRGB(319, y) & 0xFFFFFF, folder.getFileName() + " frame " + i + ", right, y = " + y);
+                    }
+                }
+            }
+        }
+    }
+
+    @Test
     void badMovieOptionsGetOneLineAndWriteNothing() throws Exception {
         CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--movie", dir.resolve("z.avi").toString()), "--movie", ".mp4 or .gif");
         CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--movie", dir.resolve("z.gif").toString(), "--fps", "60"), "--fps", "GIF");
