@@ -1,5 +1,6 @@
 package ifold.cli;
 
+import ifold.fold.FoldFile;
 import ifold.geom.Triangle;
 import ifold.mesh.PolygonSoup;
 import ifold.render.FrameExport;
@@ -158,6 +159,7 @@ final class DemoCommand implements Runnable {
             figures.put("isometryError", analysis.isometryError());
             figures.put("triangleArea", analysis.surfaceArea());
             figures.put("thickness", t);
+            outputs.exportFold(List.of(new FoldFile.Folded(sheet, result.frames())), "demo zigzag --triangle " + triangle, figures, out);
             outputs.write(result, geometries, "demo zigzag --triangle " + triangle, figures, out);
             out.printf(Locale.ROOT, "zigzag: strip %.4g x %.4g (L/w %.1f), %d passes%s, %d turn folds, %d tucks, %d layers at most (a stack of %d), "
                     + "paper efficiency %.3f, coverage %.3f, paper outside %.2g, isometry error %.1e%n",
@@ -262,6 +264,8 @@ final class DemoCommand implements Runnable {
             figures.put("maxLayers", analysis.maxLayers());
             figures.put("stackLayers", analysis.stackLevels());
             figures.put("isometryError", analysis.isometryError());
+            outputs.exportFold(List.of(new FoldFile.Folded(gadget.sheet(), result.frames())),
+                    String.format(Locale.ROOT, "demo turn --angle %s", angle), figures, out);
             outputs.write(result, geometries, String.format(Locale.ROOT, "demo turn --angle %s", angle), figures, out);
             out.printf(Locale.ROOT, "turn: %.6g degrees asked, %.6g measured, top side %s, %d layers at most, strip %.4g x %.4g%n",
                     angle, gadget.measuredAngle(), gadget.endFacesUp() ? "up" : "down", analysis.maxLayers(), gadget.length(), width);

@@ -1,5 +1,6 @@
 package ifold.cli;
 
+import ifold.fold.FoldFile;
 import ifold.scene.Animation;
 import ifold.scene.Geometry;
 import ifold.scene.PaperView;
@@ -66,6 +67,7 @@ final class FoldCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         Map<String, Object> figures = figures(result, folded);
         figures.put("timing", timing(nanosPerFold, result.steps()));
+        outputs.exportFold(List.of(new FoldFile.Folded(result.sheet(), result.frames())), "ifold fold " + script, figures, out);
         outputs.write(List.of(folded), "iFold fold script " + script + ": " + result.steps().size() + " folds, thickness "
                 + result.sheet().thickness(), figures, out);
         out.printf(Locale.ROOT, "%s: %d folds, %d layers at most, %d creases, isometry error %.1e%n", script.getFileName(),

@@ -1,6 +1,7 @@
 package ifold.cli;
 
 import ifold.io.AtomicFile;
+import ifold.fold.FoldFile;
 import ifold.render.RenderUnavailableException;
 import ifold.render.ViewerWindow;
 import ifold.scene.Animation;
@@ -31,6 +32,10 @@ final class PaperOutputs {
     @Option(names = "--export-obj", paramLabel = "FILE", description = "write the folded paper as OBJ: vt = paper coordinates, caps in group 'cap'")
     Path exportObj;
 
+    @Option(names = "--export-fold", paramLabel = "FILE.fold", description = "write the crease pattern and the folded state as a "
+            + "FOLD file (docs/fold-format.md): Origami Simulator, Rabbit Ear and ORIPA read it")
+    Path exportFold;
+
     @Option(names = "--report", paramLabel = "FILE", description = "write the figures of the result as JSON")
     Path report;
 
@@ -51,6 +56,9 @@ final class PaperOutputs {
         if (report != null) {
             OutputFiles.checkWritableFile(report, "--report", ".json");
         }
+        if (exportFold != null) {
+            OutputFiles.checkWritableFile(exportFold, "--export-fold", ".fold");
+        }
         if (framesWithoutDisplay && !frameOptions.renders() && !noView && !hasDisplay()) {
             frameOptions.frames = Path.of(name + "-frames");
             err.println("ifold: no display: rendering frames into " + frameOptions.frames.toAbsolutePath() + "/ instead");
@@ -64,6 +72,34 @@ final class PaperOutputs {
     /** Notes a file this run wrote by itself, so that a later failure takes it back too. */
     void wrote(Path file) {
         written.add(file);
+    }
+
+    /**
+     * Writes the sheets as a FOLD file if asked, and adds what its crease pattern holds to the
+     * figures ({@code creasePattern}: mountains, valleys, flat creases, border edges).
+     */
+    void exportFold(List<FoldFile.Folded> sheets, String title, Map<String, Object> figures, PrintWriter out) {
+        if (exportFold == null) {
+            return;
+        }
+        try {
+            FoldFile.Counts counts = FoldFile.write(exportFold, title, sheets);
+            written.add(exportFold);
+            out.println("wrote " + exportFold);
+            Map<String, Object> pattern = new java.util.LinkedHashMap<>();
+            pattern.put("vertices", counts.vertices());
+            pattern.put("faces", counts.faces());
+            pattern.put("edges", counts.edges());
+            pattern.put("mountains", counts.mountains());
+            pattern.put("valleys", counts.valleys());
+            pattern.put("flat", counts.flat());
+            pattern.put("border", counts.border());
+            pattern.put("faceOrders", counts.faceOrders());
+            figures.put("creasePattern", pattern);
+        } catch (IOException e) {
+            discardWritten();
+            throw new UserError("option --export-fold: cannot write " + exportFold + ": " + e.getMessage());
+        }
     }
 
     /** Writes folded paper (a fold script's) as OBJ under {@code header}, and its figures as JSON, as asked. */

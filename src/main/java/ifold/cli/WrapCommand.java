@@ -1,6 +1,7 @@
 package ifold.cli;
 
 import ifold.io.AtomicFile;
+import ifold.fold.FoldFile;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.refine.HamiltonianRefinement;
@@ -123,6 +124,14 @@ final class WrapCommand implements Callable<Integer> {
                 WrapExport.writeObj(exportObj, model.toString(), result, geometries);
                 written.add(exportObj);
                 outputs.wrote(exportObj);
+            }
+            if (outputs.exportFold != null) {
+                List<FoldFile.Folded> sheets = new ArrayList<>();
+                for (Wrap.Strip strip : result.strips()) {
+                    sheets.add(new FoldFile.Folded(strip.sheet(), result.frames()));
+                }
+                outputs.exportFold(sheets, "ifold wrap " + model, figures, new PrintWriter(java.io.Writer.nullWriter()));
+                written.add(outputs.exportFold);
             }
             long writtenAt = System.nanoTime();
             Map<String, Object> seconds = new LinkedHashMap<>();

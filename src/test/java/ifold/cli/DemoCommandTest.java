@@ -77,6 +77,26 @@ class DemoCommandTest {
     }
 
     @Test
+    void theCreasePatternIsWrittenAsFold() throws Exception {
+        Path fold = dir.resolve("zigzag.fold");
+        Path report = dir.resolve("fold.json");
+        CliTest.Run run = CliTest.run("demo", "zigzag", "--no-view", "--export-fold", fold.toString(), "--report", report.toString());
+        assertEquals(0, run.code(), run.err());
+        String json = Files.readString(report);
+        assertEquals(13, CliTest.number(json, "mountains"), 0, json);
+        assertEquals(16, CliTest.number(json, "valleys"), 0, json);
+        assertTrue(Files.readString(fold).contains("\"creasePattern\""));
+        Path wrapFold = dir.resolve("cube.fold");
+        assertEquals(0, CliTest.run("wrap", "models/cube.off", "--no-view", "--export-fold", wrapFold.toString()).code());
+        assertTrue(Files.size(wrapFold) > 0);
+        Path scriptFold = dir.resolve("pleat.fold");
+        assertEquals(0, CliTest.run("fold", "models/scripts/pleat20.fold", "--no-view", "--export-fold", scriptFold.toString()).code());
+        assertTrue(Files.size(scriptFold) > 0);
+        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--no-view", "--export-fold", dir.resolve("x.json").toString()),
+                "--export-fold", ".fold");
+    }
+
+    @Test
     void everyStartCornerWorksWithTheDefaultEnd() throws Exception {
         for (String start : new String[] {"A", "B", "C"}) {
             CliTest.Run run = CliTest.run("demo", "zigzag", "--start", start, "--no-view");

@@ -1,0 +1,390 @@
+package ifold.fold;
+
+import com.fasterxml.jackson.core.JsonFactory;
+import com.fasterxml.jackson.core.JsonGenerator;
+import com.fasterxml.jackson.core.StreamWriteFeature;
+import ifold.io.AtomicFile;
+import ifold.sheet.HostFrame;
+import ifold.sheet.Isometry2;
+import ifold.sheet.Polygons2;
+import ifold.sheet.Sheet;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * A folded sheet (or several: a wrap's strips) as a FOLD file.
+ *
+ * <p><b>The crease pattern</b> (the key frame, {@code frame_classes: ["creasePattern"]}): each
+ * sheet's paper vertices at their paper coordinates (strips one above another, a width apart),
+ * its faces counter-clockwise, and every edge with its assignment: {@code B} on the border,
+ * {@code M} or {@code V} where the paper is creased, {@code F} where a crease lies flat again;
+ * {@code edges_foldAngle} in degrees, positive for valley.
+ *
+ * <p><b>Mountain and valley</b> are the paper's own, as an origamist reads them on the crease
+ * pattern: a fold is a valley where it brings the two faces' top sides towards each other. The
+ * angle is found on the folded state: between the faces' top normals, its sign from whether
+ * the second face rises on the first face's top side; for a flat fold (180°), from which of the
+ * two lies on the other's top side in the stack.
+ *
+ * <p><b>The folded state</b> ({@code file_frames[0]}, {@code frame_classes: ["foldedForm"]},
+ * inheriting the crease pattern's faces and edges): each vertex in space where the paper lies
+ * (layers of a stack share their place: FOLD orders them by {@code faceOrders}, [f, g, s] with
+ * s = +1 where face f lies on the side g's normal points to); the paper's thickness in
+ * {@code frame_ifold:thickness} and each face's level in its stack in {@code faces_ifold:level},
+ * from which its height above its plane is (level + ½) × thickness.
+ *
+ * <p>Written with jackson-core's streaming generator: every number is the shortest decimal that
+ * reads back as the same double. Written under a temporary name and renamed when whole.
+ */
+public final class FoldFile {
+    private static final JsonFactory JSON = JsonFactory.builder().enable(StreamWriteFeature.USE_FAST_DOUBLE_WRITER)
+            .disable(StreamWriteFeature.AUTO_CLOSE_TARGET).build();
+
+    private FoldFile() {
+    }
+
+    /** One sheet and the planes (or triangles) its hosts are. */
+    public record Folded(Sheet sheet, HostFrame[] frames) {
+    }
+
+    /** What the crease pattern holds, for the report and tests: counts by assignment. */
+    public record Counts(int vertices, int faces, int edges, int mountains, int valleys, int flat, int border, int faceOrders) {
+    }
+
+    /**
+     * Writes the sheets to {@code file}.
+     *
+     * @param title the frame's title (what was folded)
+     */
+    public static Counts write(Path file, String title, List<Folded> sheets) throws IOException {
+        Pattern pattern = new Pattern(sheets);
+        AtomicFile.write(file, stream -> {
+            try (JsonGenerator json = JSON.createGenerator(stream)) {
+                pattern.writeTo(json, title);
+            }
+        }, true);
+        return pattern.counts;
+    }
+
+    /** The crease pattern and folded state, found once and written after. */
+    private static final class Pattern {
+        final List<Folded> sheets;
+        final int[] vertexBase;
+        final int[] faceBase;
+        int vertexCount;
+        int faceCount;
+        /** Edges: vertices (global), left face and right face (global, -1 for none), sheet. */
+        final List<int[]> edges = new ArrayList<>();
+        final List<String> assignments = new ArrayList<>();
+        final List<Double> angles = new ArrayList<>();
+        final List<int[]> orders = new ArrayList<>();
+        final List<int[]> levels = new ArrayList<>();
+        Counts counts;
+
+        Pattern(List<Folded> sheets) {
+            this.sheets = sheets;
+            vertexBase = new int[sheets.size()];
+            faceBase = new int[sheets.size()];
+            for (int k = 0; k < sheets.size(); k++) {
+                Sheet sheet = sheets.get(k).sheet();
+                vertexBase[k] = vertexCount;
+                faceBase[k] = faceCount;
+                vertexCount += sheet.vertexCount();
+                faceCount += sheet.faceCount();
+                levels.add(sheet.levels());
+            }
+            int mountains = 0;
+            int valleys = 0;
+            int flat = 0;
+            int border = 0;
+            for (int k = 0; k < sheets.size(); k++) {
+                Folded folded = sheets.get(k);
+                Sheet sheet = folded.sheet();
+                Map<Long, Integer> seen = new HashMap<>();
+                for (int f = 0; f < sheet.faceCount(); f++) {
+                    int[] loop = sheet.loop(f);
+                    for (int i = 0; i < loop.length; i++) {
+                        int a = loop[i];
+                        int b = loop[(i + 1) % loop.length];
+                        long key = ((long) Math.min(a, b) << 32) | Math.max(a, b);
+                        if (seen.containsKey(key)) {
+                            continue;
+                        }
+                        seen.put(key, edges.size());
+                        int g = sheet.faceAcross(a, b);
+                        edges.add(new int[] {vertexBase[k] + a, vertexBase[k] + b, faceBase[k] + f, g < 0 ? -1 : faceBase[k] + g, k});
+                        if (g < 0) {
+                            assignments.add("B");
+                            angles.add(0.0);
+                            border++;
+                            continue;
+                        }
+                        double angle = sheet.crease(a, b) == null ? 0 : foldAngle(folded, levels.get(k), f, g, a, b);
+                        if (Math.abs(angle) < 1e-9) {
+                            assignments.add("F");
+                            angles.add(0.0);
+                            flat++;
+                        } else {
+                            assignments.add(angle > 0 ? "V" : "M");
+                            angles.add(angle);
+                            if (angle > 0) {
+                                valleys++;
+                            } else {
+                                mountains++;
+                            }
+                        }
+                    }
+                }
+                findOrders(k);
+            }
+            counts = new Counts(vertexCount, faceCount, edges.size(), mountains, valleys, flat, border, orders.size());
+        }
+
+        /** Every pair of faces of one sheet that overlap on one host, ordered as the stack has them. */
+        private void findOrders(int k) {
+            Folded folded = sheets.get(k);
+            Sheet sheet = folded.sheet();
+            int[] level = levels.get(k);
+            Map<Integer, List<Integer>> byHost = new HashMap<>();
+            for (int f = 0; f < sheet.faceCount(); f++) {
+                byHost.computeIfAbsent(sheet.host(f), h -> new ArrayList<>()).add(f);
+            }
+            for (List<Integer> faces : byHost.values()) {
+                int n = faces.size();
+                double[][] placed = new double[n][];
+                double[][] boxes = new double[n][];
+                for (int i = 0; i < n; i++) {
+                    placed[i] = sheet.placed(faces.get(i));
+                    boxes[i] = Polygons2.bounds(placed[i]);
+                }
+                double tolerance = sheet.tolerance();
+                for (int i = 0; i < n; i++) {
+                    for (int j = i + 1; j < n; j++) {
+                        if (boxes[i][0] >= boxes[j][2] - tolerance || boxes[j][0] >= boxes[i][2] - tolerance
+                                || boxes[i][1] >= boxes[j][3] - tolerance || boxes[j][1] >= boxes[i][3] - tolerance) {
+                            continue;
+                        }
+                        if (!Polygons2.overlap(placed[i], placed[i].length / 2, placed[j], placed[j].length / 2, tolerance)) {
+                            continue;
+                        }
+                        int f = faces.get(i);
+                        int g = faces.get(j);
+                        if (level[f] == level[g]) {
+                            continue; // not stacked: cannot happen on a sound sheet
+                        }
+                        // +1 where f lies on the side g's (top) normal points to.
+                        int side = (level[f] > level[g] ? 1 : -1) * (sheet.pose(g).mirrors() ? -1 : 1);
+                        orders.add(new int[] {faceBase[k] + f, faceBase[k] + g, side});
+                    }
+                }
+            }
+        }
+
+        void writeTo(JsonGenerator json, String title) throws IOException {
+            json.writeStartObject();
+            json.writeNumberField("file_spec", 1.2);
+            json.writeStringField("file_creator", "iFold");
+            json.writeFieldName("file_classes");
+            json.writeStartArray();
+            json.writeString("singleModel");
+            json.writeEndArray();
+            json.writeStringField("frame_title", title);
+            stringArray(json, "frame_classes", "creasePattern");
+            stringArray(json, "frame_attributes", "2D");
+            json.writeStringField("frame_unit", "unit");
+            json.writeNumberField("frame_ifold:thickness", sheets.isEmpty() ? 0 : sheets.get(0).sheet().thickness());
+            json.writeFieldName("vertices_coords");
+            json.writeStartArray();
+            double offset = 0;
+            for (Folded folded : sheets) {
+                Sheet sheet = folded.sheet();
+                for (int v = 0; v < sheet.vertexCount(); v++) {
+                    json.writeStartArray();
+                    json.writeNumber(sheet.u(v));
+                    json.writeNumber(sheet.v(v) + offset);
+                    json.writeEndArray();
+                }
+                offset += 2 * sheet.width(); // the next strip a width above
+            }
+            json.writeEndArray();
+            json.writeFieldName("edges_vertices");
+            json.writeStartArray();
+            for (int[] edge : edges) {
+                json.writeStartArray();
+                json.writeNumber(edge[0]);
+                json.writeNumber(edge[1]);
+                json.writeEndArray();
+            }
+            json.writeEndArray();
+            json.writeFieldName("edges_assignment");
+            json.writeStartArray();
+            for (String assignment : assignments) {
+                json.writeString(assignment);
+            }
+            json.writeEndArray();
+            json.writeFieldName("edges_foldAngle");
+            json.writeStartArray();
+            for (double angle : angles) {
+                json.writeNumber(angle);
+            }
+            json.writeEndArray();
+            json.writeFieldName("faces_vertices");
+            json.writeStartArray();
+            for (int k = 0; k < sheets.size(); k++) {
+                Sheet sheet = sheets.get(k).sheet();
+                for (int f = 0; f < sheet.faceCount(); f++) {
+                    json.writeStartArray();
+                    for (int v : sheet.loop(f)) {
+                        json.writeNumber(vertexBase[k] + v);
+                    }
+                    json.writeEndArray();
+                }
+            }
+            json.writeEndArray();
+
+            json.writeFieldName("file_frames");
+            json.writeStartArray();
+            json.writeStartObject();
+            stringArray(json, "frame_classes", "foldedForm");
+            stringArray(json, "frame_attributes", "3D");
+            json.writeNumberField("frame_parent", 0);
+            json.writeBooleanField("frame_inherit", true);
+            json.writeFieldName("vertices_coords");
+            json.writeStartArray();
+            for (int k = 0; k < sheets.size(); k++) {
+                for (double[] p : foldedVertices(sheets.get(k))) {
+                    json.writeStartArray();
+                    json.writeNumber(p[0]);
+                    json.writeNumber(p[1]);
+                    json.writeNumber(p[2]);
+                    json.writeEndArray();
+                }
+            }
+            json.writeEndArray();
+            json.writeFieldName("faceOrders");
+            json.writeStartArray();
+            for (int[] order : orders) {
+                json.writeStartArray();
+                json.writeNumber(order[0]);
+                json.writeNumber(order[1]);
+                json.writeNumber(order[2]);
+                json.writeEndArray();
+            }
+            json.writeEndArray();
+            json.writeFieldName("faces_ifold:level");
+            json.writeStartArray();
+            for (int[] level : levels) {
+                for (int l : level) {
+                    json.writeNumber(l);
+                }
+            }
+            json.writeEndArray();
+            json.writeEndObject();
+            json.writeEndArray();
+            json.writeEndObject();
+        }
+
+        private static void stringArray(JsonGenerator json, String field, String value) throws IOException {
+            json.writeFieldName(field);
+            json.writeStartArray();
+            json.writeString(value);
+            json.writeEndArray();
+        }
+    }
+
+    /** Each paper vertex in space, on the planes its faces rest on (their mean, where layers of different planes meet). */
+    static List<double[]> foldedVertices(Folded folded) {
+        Sheet sheet = folded.sheet();
+        double[][] sum = new double[sheet.vertexCount()][3];
+        int[] count = new int[sheet.vertexCount()];
+        double[] point = new double[3];
+        for (int f = 0; f < sheet.faceCount(); f++) {
+            HostFrame frame = folded.frames()[sheet.host(f)];
+            Isometry2 pose = sheet.pose(f);
+            for (int v : sheet.loop(f)) {
+                frame.toSpace(pose.x(sheet.u(v), sheet.v(v)), pose.y(sheet.u(v), sheet.v(v)), 0, point, 0);
+                for (int axis = 0; axis < 3; axis++) {
+                    sum[v][axis] += point[axis];
+                }
+                count[v]++;
+            }
+        }
+        List<double[]> points = new ArrayList<>();
+        for (int v = 0; v < sheet.vertexCount(); v++) {
+            int n = Math.max(1, count[v]);
+            points.add(new double[] {sum[v][0] / n, sum[v][1] / n, sum[v][2] / n});
+        }
+        return points;
+    }
+
+    /**
+     * The fold angle in degrees along paper edge a → b between face f (left of it on the sheet)
+     * and face g: positive for a valley, negative for a mountain, measured on the folded state
+     * against the paper's top side.
+     */
+    static double foldAngle(Folded folded, int[] levels, int f, int g, int a, int b) {
+        Sheet sheet = folded.sheet();
+        double[] nf = topNormal(folded, f);
+        double[] ng = topNormal(folded, g);
+        double cos = Math.max(-1, Math.min(1, dot(nf, ng)));
+        double degrees = Math.toDegrees(Math.acos(cos));
+        if (degrees < 1e-7) {
+            return 0;
+        }
+        if (cos < -1 + 1e-12 && sheet.host(f) == sheet.host(g)) {
+            // Flat: a valley lays g on f's top side.
+            double[] hostNormal = folded.frames()[sheet.host(f)].normal();
+            double side = (levels[g] - levels[f]) * dot(hostNormal, nf);
+            return side > 0 ? 180 : -180;
+        }
+        double[] pa = onPlane(folded, g, a);
+        double[] pb = onPlane(folded, g, b);
+        double[] d = unit(sub(pb, pa));
+        double[] centre = new double[3];
+        int[] loop = sheet.loop(g);
+        for (int v : loop) {
+            double[] p = onPlane(folded, g, v);
+            for (int axis = 0; axis < 3; axis++) {
+                centre[axis] += p[axis] / loop.length;
+            }
+        }
+        double[] into = sub(centre, pa);
+        double along = dot(into, d);
+        for (int axis = 0; axis < 3; axis++) {
+            into[axis] -= along * d[axis];
+        }
+        return dot(into, nf) > 0 ? degrees : -degrees;
+    }
+
+    /** The normal of face f's top side (the side up on the unfolded sheet), in space. */
+    private static double[] topNormal(Folded folded, int f) {
+        double[] n = folded.frames()[folded.sheet().host(f)].normal();
+        double sign = folded.sheet().pose(f).mirrors() ? -1 : 1;
+        return new double[] {sign * n[0], sign * n[1], sign * n[2]};
+    }
+
+    private static double[] onPlane(Folded folded, int f, int v) {
+        Sheet sheet = folded.sheet();
+        Isometry2 pose = sheet.pose(f);
+        double[] p = new double[3];
+        folded.frames()[sheet.host(f)].toSpace(pose.x(sheet.u(v), sheet.v(v)), pose.y(sheet.u(v), sheet.v(v)), 0, p, 0);
+        return p;
+    }
+
+    private static double dot(double[] a, double[] b) {
+        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    }
+
+    private static double[] sub(double[] a, double[] b) {
+        return new double[] {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+    }
+
+    private static double[] unit(double[] a) {
+        double length = Math.sqrt(dot(a, a));
+        return new double[] {a[0] / length, a[1] / length, a[2] / length};
+    }
+}

@@ -1,0 +1,271 @@
+package ifold.fold;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.fasterxml.jackson.core.JsonFactory;
+import com.fasterxml.jackson.core.JsonParser;
+import com.fasterxml.jackson.core.JsonToken;
+import ifold.geom.Triangle;
+import ifold.mesh.PolygonSoup;
+import ifold.script.FoldScript;
+import ifold.script.ScriptFolding;
+import ifold.sheet.Sheet;
+import ifold.wrap.TurnGadget;
+import ifold.wrap.Wrap;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Random;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+
+/**
+ * FOLD files read back by an independent reader (jackson's parser into plain lists and maps):
+ * the crease pattern is the sheet, every number as computed, and every flat-folded crease
+ * pattern satisfies Maekawa and Kawasaki at every interior vertex.
+ */
+class FoldFileTest {
+    @TempDir
+    Path dir;
+
+    /** Reads JSON into maps, lists, doubles, strings and booleans. */
+    static Object read(Path file) throws Exception {
+        try (JsonParser parser = new JsonFactory().createParser(file.toFile())) {
+            parser.nextToken();
+            return value(parser);
+        }
+    }
+
+    private static Object value(JsonParser parser) throws Exception {
+        JsonToken token = parser.currentToken();
+        switch (token) {
+            case START_OBJECT -> {
+                Map<String, Object> map = new LinkedHashMap<>();
+                while (parser.nextToken() != JsonToken.END_OBJECT) {
+                    String name = parser.currentName();
+                    parser.nextToken();
+                    map.put(name, value(parser));
+                }
+                return map;
+            }
+            case START_ARRAY -> {
+                List<Object> list = new ArrayList<>();
+                while (parser.nextToken() != JsonToken.END_ARRAY) {
+                    list.add(value(parser));
+                }
+                return list;
+            }
+            case VALUE_NUMBER_INT, VALUE_NUMBER_FLOAT -> {
+                return parser.getDoubleValue();
+            }
+            case VALUE_STRING -> {
+                return parser.getText();
+            }
+            case VALUE_TRUE, VALUE_FALSE -> {
+                return parser.getBooleanValue();
+            }
+            default -> {
+                return null;
+            }
+        }
+    }
+
+    @SuppressWarnings("unchecked")
+    private static List<List<Double>> numbers(Map<String, Object> fold, String key) {
+        return (List<List<Double>>) fold.get(key);
+    }
+
+    /**
+     * Maekawa (|M - V| = 2) and Kawasaki (alternate angles sum to 180°) at every vertex of the
+     * crease pattern that is not on its border and has creases; returns the number checked.
+     */
+    @SuppressWarnings("unchecked")
+    static int assertFlatFoldable(Map<String, Object> fold) {
+        List<List<Double>> coords = numbers(fold, "vertices_coords");
+        List<List<Double>> edges = numbers(fold, "edges_vertices");
+        List<String> assignment = (List<String>) fold.get("edges_assignment");
+        int n = coords.size();
+        boolean[] border = new boolean[n];
+        List<List<Integer>> creases = new ArrayList<>();
+        for (int v = 0; v < n; v++) {
+            creases.add(new ArrayList<>());
+        }
+        for (int e = 0; e < edges.size(); e++) {
+            int a = edges.get(e).get(0).intValue();
+            int b = edges.get(e).get(1).intValue();
+            if (assignment.get(e).equals("B")) {
+                border[a] = true;
+                border[b] = true;
+            } else if (assignment.get(e).equals("M") || assignment.get(e).equals("V")) {
+                creases.get(a).add(e);
+                creases.get(b).add(e);
+            }
+        }
+        int checked = 0;
+        for (int v = 0; v < n; v++) {
+            if (border[v] || creases.get(v).isEmpty()) {
+                continue;
+            }
+            int mountains = 0;
+            int valleys = 0;
+            List<Double> angles = new ArrayList<>();
+            for (int e : creases.get(v)) {
+                int a = edges.get(e).get(0).intValue();
+                int w = a == v ? edges.get(e).get(1).intValue() : a;
+                angles.add(Math.atan2(coords.get(w).get(1) - coords.get(v).get(1), coords.get(w).get(0) - coords.get(v).get(0)));
+                mountains += assignment.get(e).equals("M") ? 1 : 0;
+                valleys += assignment.get(e).equals("V") ? 1 : 0;
+            }
+            assertEquals(2, Math.abs(mountains - valleys), "Maekawa at vertex " + v + " " + coords.get(v));
+            angles.sort(Double::compare);
+            double alternate = 0;
+            for (int i = 0; i < angles.size(); i++) {
+                double next = i + 1 < angles.size() ? angles.get(i + 1) : angles.get(0) + 2 * Math.PI;
+                alternate += (i % 2 == 0 ? 1 : -1) * (next - angles.get(i));
+            }
+            assertEquals(0, alternate, 1e-7, "Kawasaki at vertex " + v + " " + coords.get(v));
+            checked++;
+        }
+        return checked;
+    }
+
+    @SuppressWarnings("unchecked")
+    private Map<String, Object> writeAndRead(List<FoldFile.Folded> sheets) throws Exception {
+        Path file = dir.resolve("out.fold");
+        FoldFile.Counts counts = FoldFile.write(file, "test", sheets);
+        Map<String, Object> fold = (Map<String, Object>) read(file);
+        assertEquals(1.2, fold.get("file_spec"));
+        assertEquals(List.of("creasePattern"), fold.get("frame_classes"));
+        assertEquals(counts.vertices(), numbers(fold, "vertices_coords").size());
+        assertEquals(counts.edges(), numbers(fold, "edges_vertices").size());
+        assertEquals(counts.faces(), numbers(fold, "faces_vertices").size());
+        List<Map<String, Object>> frames = (List<Map<String, Object>>) fold.get("file_frames");
+        assertEquals(List.of("foldedForm"), frames.get(0).get("frame_classes"));
+        assertEquals(true, frames.get(0).get("frame_inherit"));
+        assertEquals(counts.vertices(), numbers(frames.get(0), "vertices_coords").size());
+        // The crease pattern is the sheet: every coordinate read back is the one the sheet holds.
+        int base = 0;
+        double offset = 0;
+        List<List<Double>> coords = numbers(fold, "vertices_coords");
+        for (FoldFile.Folded folded : sheets) {
+            Sheet sheet = folded.sheet();
+            for (int v = 0; v < sheet.vertexCount(); v++) {
+                assertEquals(sheet.u(v), coords.get(base + v).get(0), 0);
+                assertEquals(sheet.v(v) + offset, coords.get(base + v).get(1), 0);
+            }
+            base += sheet.vertexCount();
+            offset += 2 * sheet.width();
+        }
+        // Faces counter-clockwise in the crease pattern.
+        for (List<Double> face : numbers(fold, "faces_vertices")) {
+            double twice = 0;
+            for (int i = 0; i < face.size(); i++) {
+                List<Double> p = coords.get(face.get(i).intValue());
+                List<Double> q = coords.get(face.get((i + 1) % face.size()).intValue());
+                twice += p.get(0) * q.get(1) - q.get(0) * p.get(1);
+            }
+            assertTrue(twice > 0, "a face runs counter-clockwise");
+        }
+        // Angles agree with assignments.
+        List<String> assignment = (List<String>) fold.get("edges_assignment");
+        List<Double> angles = (List<Double>) fold.get("edges_foldAngle");
+        for (int e = 0; e < assignment.size(); e++) {
+            String a = assignment.get(e);
+            double angle = angles.get(e);
+            assertTrue(a.equals("V") ? angle > 0 : a.equals("M") ? angle < 0 : angle == 0, "edge " + e + ": " + a + " " + angle);
+        }
+        return fold;
+    }
+
+    static Stream<String> scripts() {
+        return Stream.of("pleat20.fold", "square-quarters.fold", "strip-turn.fold", "zigzag-turn.fold");
+    }
+
+    @ParameterizedTest
+    @MethodSource("scripts")
+    void everyExampleScriptIsAFlatFoldableCreasePattern(String name) throws Exception {
+        ScriptFolding.Result result = FoldScript.read(Path.of("models", "scripts", name)).play();
+        Map<String, Object> fold = writeAndRead(List.of(new FoldFile.Folded(result.sheet(), result.frames())));
+        assertFlatFoldable(fold);
+    }
+
+    @Test
+    @SuppressWarnings("unchecked")
+    void mountainAndValleyAreThePapersOwn() throws Exception {
+        // A valley, then a mountain flap fold on the part turned back up: on the paper both are
+        // valleys (the second is a mountain only as seen from above, the paper being back up).
+        ScriptFolding.Result turn = FoldScript.read(Path.of("models", "scripts", "zigzag-turn.fold")).play();
+        Map<String, Object> fold = writeAndRead(List.of(new FoldFile.Folded(turn.sheet(), turn.frames())));
+        List<String> assignment = (List<String>) fold.get("edges_assignment");
+        assertEquals(2, assignment.stream().filter("V"::equals).count());
+        assertEquals(0, assignment.stream().filter("M"::equals).count());
+        // A Z: a valley, then a mountain of the paper; a roll (valley on valley) is two valleys.
+        ScriptFolding.Result z = FoldScript.parse("paper strip 12 1\nthickness 0\nfold valley 180 paper 4 0 4 1 right\n"
+                + "fold valley 180 flap 8 0 8 1 right\n").play();
+        List<String> zAssignment = (List<String>) writeAndRead(List.of(new FoldFile.Folded(z.sheet(), z.frames())))
+                .get("edges_assignment");
+        assertEquals(1, zAssignment.stream().filter("V"::equals).count(), zAssignment.toString());
+        assertEquals(1, zAssignment.stream().filter("M"::equals).count(), "the flap, back up, folded towards the table: "
+                + "a mountain of the paper");
+    }
+
+    @Test
+    void theZigZagOfAHundredRandomTrianglesIsFlatFoldable() throws Exception {
+        Random random = new Random(20261201);
+        int vertices = 0;
+        for (int i = 0; i < 100; i++) {
+            Triangle triangle;
+            do {
+                triangle = Triangle.planar(10 * random.nextDouble(), 10 * random.nextDouble(), 10 * random.nextDouble(),
+                        10 * random.nextDouble(), 10 * random.nextDouble(), 10 * random.nextDouble());
+            } while (triangle.smallestAngle() < 12);
+            int start = random.nextInt(3);
+            PolygonSoup path = new PolygonSoup();
+            for (int k = 0; k < 3; k++) {
+                path.addVertex(triangle.corner(k).x(), triangle.corner(k).y(), 0);
+            }
+            path.addTriangle(0, 1, 2);
+            double width = triangle.height(start) / (1 + 9 * random.nextDouble());
+            Wrap.Result result = Wrap.wrap(path, new int[] {0, 1}, new Wrap.Options(width, width / 80,
+                    new Wrap.Ends(start, (start + 1) % 3, random.nextBoolean() ? -1 : (start + 2) % 3)));
+            Map<String, Object> fold = writeAndRead(List.of(new FoldFile.Folded(result.strips().get(0).sheet(), result.frames())));
+            vertices += assertFlatFoldable(fold);
+        }
+        assertTrue(vertices > 100, "interior crease vertices checked: " + vertices);
+    }
+
+    @Test
+    void theTurnGadgetAndAWrapAreWrittenWhole() throws Exception {
+        TurnGadget.Result gadget = TurnGadget.turn(70, 0.5, 1, 0.02, 4, 6);
+        assertFlatFoldable(writeAndRead(List.of(new FoldFile.Folded(gadget.sheet(), gadget.wrap().frames()))));
+        PolygonSoup square = new PolygonSoup();
+        square.addVertex(0, 0, 0);
+        square.addVertex(4, 0, 0);
+        square.addVertex(4, 4, 1);
+        square.addVertex(0, 4, 0);
+        square.addTriangle(0, 1, 2);
+        square.addTriangle(0, 2, 3);
+        Wrap.Result wrap = Wrap.wrap(square, new int[] {0, 2}, new Wrap.Options(Wrap.widest(square, new int[] {0, 2}) / 3, 0));
+        Map<String, Object> fold = writeAndRead(List.of(new FoldFile.Folded(wrap.strips().get(0).sheet(), wrap.frames())));
+        // The folded state is the crease pattern moved rigidly: every edge keeps its length.
+        @SuppressWarnings("unchecked")
+        List<List<Double>> folded = numbers(((List<Map<String, Object>>) fold.get("file_frames")).get(0), "vertices_coords");
+        List<List<Double>> flat = numbers(fold, "vertices_coords");
+        for (List<Double> edge : numbers(fold, "edges_vertices")) {
+            int a = edge.get(0).intValue();
+            int b = edge.get(1).intValue();
+            double paper = Math.hypot(flat.get(a).get(0) - flat.get(b).get(0), flat.get(a).get(1) - flat.get(b).get(1));
+            double space = Math.sqrt(Math.pow(folded.get(a).get(0) - folded.get(b).get(0), 2)
+                    + Math.pow(folded.get(a).get(1) - folded.get(b).get(1), 2) + Math.pow(folded.get(a).get(2) - folded.get(b).get(2), 2));
+            assertEquals(paper, space, 1e-9 * Math.max(1, paper), "edge " + a + "-" + b);
+        }
+        assertTrue(Files.size(dir.resolve("out.fold")) > 0);
+    }
+}
