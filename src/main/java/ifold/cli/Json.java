@@ -1,92 +1,78 @@
 package ifold.cli;
 
-import java.util.Locale;
+import com.fasterxml.jackson.core.JsonFactory;
+import com.fasterxml.jackson.core.JsonGenerator;
+import com.fasterxml.jackson.core.StreamWriteFeature;
+import com.fasterxml.jackson.core.util.DefaultIndenter;
+import com.fasterxml.jackson.core.util.DefaultPrettyPrinter;
+import com.fasterxml.jackson.core.util.Separators;
+import java.io.IOException;
+import java.io.StringWriter;
+import java.io.UncheckedIOException;
+import java.util.List;
 import java.util.Map;
 
 /**
- * Just enough JSON for the reports: objects and lists of numbers, strings, booleans and nested
- * objects, written in insertion order. Numbers are written as {@link Double#toString} writes
- * them, the shortest decimal that reads back as the same double (JSON takes its exponent):
- * a number read from a report equals the number computed.
+ * The reports as JSON, through jackson-core's streaming generator: objects in insertion order,
+ * lists, numbers, strings, booleans. A double is written as the shortest decimal that reads back
+ * as the same double (a whole number below 10^15 without its ".0"); one that is not finite, as
+ * null. A number read from a report equals the number computed.
  */
 final class Json {
+    private static final JsonFactory FACTORY = JsonFactory.builder().enable(StreamWriteFeature.USE_FAST_DOUBLE_WRITER).build();
+
     private Json() {
     }
 
-    /** Writes {@code value} (a Map, Number, Boolean, CharSequence or null) as indented JSON. */
+    /** Writes {@code value} (a Map, List, Number, Boolean, CharSequence or null) as indented JSON. */
     static String write(Object value) {
-        StringBuilder out = new StringBuilder();
-        write(value, out, "");
-        return out.append('\n').toString();
+        StringWriter text = new StringWriter();
+        try (JsonGenerator json = FACTORY.createGenerator(text)) {
+            DefaultPrettyPrinter pretty = new DefaultPrettyPrinter(Separators.createDefaultInstance()
+                    .withObjectFieldValueSpacing(Separators.Spacing.AFTER).withObjectEmptySeparator("").withArrayEmptySeparator(""));
+            pretty.indentArraysWith(DefaultIndenter.SYSTEM_LINEFEED_INSTANCE.withLinefeed("\n"));
+            pretty.indentObjectsWith(DefaultIndenter.SYSTEM_LINEFEED_INSTANCE.withLinefeed("\n"));
+            json.setPrettyPrinter(pretty);
+            write(value, json);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e); // a StringWriter does not fail
+        }
+        return text.append('\n').toString();
     }
 
-    private static void write(Object value, StringBuilder out, String indent) {
+    private static void write(Object value, JsonGenerator json) throws IOException {
         if (value == null) {
-            out.append("null");
+            json.writeNull();
         } else if (value instanceof Map<?, ?> map) {
-            if (map.isEmpty()) {
-                out.append("{}");
-                return;
-            }
-            out.append("{\n");
-            String inner = indent + "  ";
-            int i = 0;
+            json.writeStartObject();
             for (Map.Entry<?, ?> entry : map.entrySet()) {
-                out.append(inner);
-                string(String.valueOf(entry.getKey()), out);
-                out.append(": ");
-                write(entry.getValue(), out, inner);
-                out.append(++i < map.size() ? ",\n" : "\n");
+                json.writeFieldName(String.valueOf(entry.getKey()));
+                write(entry.getValue(), json);
             }
-            out.append(indent).append('}');
-        } else if (value instanceof java.util.List<?> list) {
-            if (list.isEmpty()) {
-                out.append("[]");
-                return;
+            json.writeEndObject();
+        } else if (value instanceof List<?> list) {
+            json.writeStartArray();
+            for (Object item : list) {
+                write(item, json);
             }
-            out.append("[\n");
-            String inner = indent + "  ";
-            for (int i = 0; i < list.size(); i++) {
-                out.append(inner);
-                write(list.get(i), out, inner);
-                out.append(i + 1 < list.size() ? ",\n" : "\n");
-            }
-            out.append(indent).append(']');
+            json.writeEndArray();
         } else if (value instanceof Double || value instanceof Float) {
             double d = ((Number) value).doubleValue();
             if (!Double.isFinite(d)) {
-                out.append("null");
+                json.writeNull();
             } else if (d == Math.rint(d) && Math.abs(d) < 1e15) {
-                out.append((long) d);
+                json.writeNumber((long) d);
             } else {
-                out.append(Double.toString(d));
+                json.writeNumber(d);
             }
-        } else if (value instanceof Number || value instanceof Boolean) {
-            out.append(value);
+        } else if (value instanceof Integer || value instanceof Long || value instanceof Short || value instanceof Byte) {
+            json.writeNumber(((Number) value).longValue());
+        } else if (value instanceof Number number) {
+            json.writeNumber(number.doubleValue());
+        } else if (value instanceof Boolean b) {
+            json.writeBoolean(b);
         } else {
-            string(value.toString(), out);
+            json.writeString(value.toString());
         }
-    }
-
-    private static void string(String s, StringBuilder out) {
-        out.append('"');
-        for (int i = 0; i < s.length(); i++) {
-            char c = s.charAt(i);
-            switch (c) {
-                case '"' -> out.append("\\\"");
-                case '\\' -> out.append("\\\\");
-                case '\n' -> out.append("\\n");
-                case '\r' -> out.append("\\r");
-                case '\t' -> out.append("\\t");
-                default -> {
-                    if (c < 0x20) {
-                        out.append(String.format(Locale.ROOT, "\\u%04x", (int) c));
-                    } else {
-                        out.append(c);
-                    }
-                }
-            }
-        }
-        out.append('"');
     }
 }
