@@ -109,6 +109,9 @@ public final class ScriptFolding {
         int host;
         double[] from2;
         double[] to2;
+        // Whether the paper the fold is named by lies back up: its valley then turns away from
+        // the plane's normal.
+        boolean backUp;
         Set<Integer> moving = new HashSet<>();
         if (fold.flap()) {
             double u1 = fold.from().x;
@@ -133,6 +136,7 @@ public final class ScriptFolding {
             }
             host = sheet.host(along);
             Isometry2 pose = sheet.pose(along);
+            backUp = pose.mirrors();
             from2 = new double[] {pose.x(u1, v1), pose.y(u1, v1)};
             to2 = new double[] {pose.x(u2, v2), pose.y(u2, v2)};
             if (pose.mirrors()) {
@@ -160,6 +164,8 @@ public final class ScriptFolding {
             host = (int) line[2][0];
             from2 = line[0];
             to2 = line[1];
+            backUp = fold.onPaper() ? sheet.pose(topFaceAt(fold.from().x, fold.from().y, host)).mirrors()
+                    : topLayerBackUp(host, from2, to2);
             if (fold.moving() == FoldScript.Side.LEFT) {
                 double[] swap = from2;
                 from2 = to2;
@@ -190,7 +196,9 @@ public final class ScriptFolding {
         // Right of the direction, in the plane seen from its normal: direction × n.
         double[] right = cross(direction, n);
         double[] axis = cross(right, n); // = -direction: turning right towards n is positive about it
-        boolean valley = fold.kind() == FoldScript.Kind.VALLEY;
+        // Valley and mountain are the paper's own: a valley turns the moving paper towards the
+        // top side of the paper the fold is named by.
+        boolean valley = (fold.kind() == FoldScript.Kind.VALLEY) != backUp;
         double angle = Math.toRadians(fold.degrees()) * (valley ? 1 : -1);
         // A valley turns about the top of the layers, a mountain about their bottom: either way
         // the moving paper turns clear of the paper that stays.
@@ -276,6 +284,32 @@ public final class ScriptFolding {
                 loopsBefore.toArray(new int[0][]), posesBefore.toArray(new Isometry2[0]),
                 hostsBefore.stream().mapToInt(Integer::intValue).toArray(), levelsOfBefore.stream().mapToInt(Integer::intValue).toArray(),
                 loopsAfter, posesAfter, hostsAfter, levelsOfAfter));
+    }
+
+    /**
+     * Whether the top layer that the line crosses on {@code host} lies back up (false where
+     * none does: the line misses the paper, which the fold then reports).
+     */
+    private boolean topLayerBackUp(int host, double[] from, double[] to) {
+        double dx = to[0] - from[0];
+        double dy = to[1] - from[1];
+        double length = Math.hypot(dx, dy);
+        int[] levels = sheet.levels();
+        int best = -1;
+        for (int f : sheet.facesOn(host)) {
+            double[] xy = sheet.placed(f);
+            double min = Double.POSITIVE_INFINITY;
+            double max = Double.NEGATIVE_INFINITY;
+            for (int k = 0; k < xy.length; k += 2) {
+                double d = (dx * (xy[k + 1] - from[1]) - dy * (xy[k] - from[0])) / length;
+                min = Math.min(min, d);
+                max = Math.max(max, d);
+            }
+            if (min < -sheet.tolerance() && max > sheet.tolerance() && (best < 0 || levels[f] > levels[best])) {
+                best = f;
+            }
+        }
+        return best >= 0 && sheet.pose(best).mirrors();
     }
 
     /** A face beyond the crease with an edge on it, or failing that one on the near side; -1 if none touches it. */

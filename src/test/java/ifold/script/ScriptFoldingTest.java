@@ -159,7 +159,7 @@ class ScriptFoldingTest {
         // The builder makes the same folds.
         ScriptFolding.Result built = FoldScript.builder().strip(12, 1).thickness(0.02)
                 .flap(FoldScript.Kind.VALLEY, 180, 5, 1, 6, 0, FoldScript.Side.LEFT)
-                .flap(FoldScript.Kind.MOUNTAIN, 180, 6, 0, 7, 1, FoldScript.Side.RIGHT).build().play();
+                .flap(FoldScript.Kind.VALLEY, 180, 6, 0, 7, 1, FoldScript.Side.RIGHT).build().play();
         assertEquals(result.sheet().vertexCount(), built.sheet().vertexCount());
         assertEquals(end[1], where(built, 12, 1)[1], 0);
     }
@@ -208,6 +208,26 @@ class ScriptFoldingTest {
             }
         }
         assertTrue(made > 40, "most random folds were made: " + made);
+    }
+
+    @Test
+    void valleyAndMountainAreThePapersOwn() throws Exception {
+        // The far half laid back over (back up), then its end folded: a paper valley on paper
+        // lying back up turns down, under; a paper mountain turns up, over.
+        ScriptFolding.Result valley = play("paper strip 12 1\nthickness 0.01\nfold valley 180 paper 6 0 6 1 right\n"
+                + "fold valley 180 flap 9 0 9 1 right\n");
+        ScriptFolding.Result mountain = play("paper strip 12 1\nthickness 0.01\nfold valley 180 paper 6 0 6 1 right\n"
+                + "fold mountain 180 flap 9 0 9 1 right\n");
+        assertSound(valley);
+        assertSound(mountain);
+        double[] under = where(valley, 12, 0);
+        double[] over = where(mountain, 12, 0);
+        assertEquals(6, under[0], 1e-12, "the end comes back to x = 6");
+        assertEquals(6, over[0], 1e-12);
+        assertEquals(heights(valley).first(), under[2], 1e-12, "a valley of the back-up flap goes down, under the layers");
+        assertEquals(heights(mountain).last(), over[2], 1e-12, "a mountain of the back-up flap comes up, over them");
+        assertEquals(3, heights(valley).size());
+        assertEquals(3, heights(mountain).size());
     }
 
     @Test
