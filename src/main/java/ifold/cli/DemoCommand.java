@@ -93,27 +93,27 @@ final class DemoCommand implements Runnable {
             int startCorner = corner(start, "--start");
             int endCorner = end == null ? (startCorner + 1) % 3 : corner(end, "--end");
             if (endCorner == startCorner) {
-                throw new UserError("option --end: the strip must end at another corner than its start " + start.toUpperCase(Locale.ROOT));
+                throw UserError.usage("option --end: the strip must end at another corner than its start " + start.toUpperCase(Locale.ROOT));
             }
             int enterCorner = enterFrom == null ? -1 : corner(enterFrom, "--enter-from");
             if (enterCorner == startCorner) {
-                throw new UserError("option --enter-from: the strip comes in beside one of the corners other than the start");
+                throw UserError.usage("option --enter-from: the strip comes in beside one of the corners other than the start");
             }
             double w = width == null ? shape.height(startCorner) / 5 : width;
             if (!(w > 0) || !Double.isFinite(w)) {
-                throw new UserError("option --width: must be a positive number, got " + width);
+                throw UserError.usage("option --width: must be a positive number, got " + width);
             }
             if (w > shape.height(startCorner)) {
-                throw new UserError(String.format(Locale.ROOT, "option --width: %s is wider than the altitude %.4g from the start corner: "
+                throw UserError.usage(String.format(Locale.ROOT, "option --width: %s is wider than the altitude %.4g from the start corner: "
                         + "one pass of that width already covers the triangle", width, shape.height(startCorner)));
             }
             if (w < shape.height(startCorner) / 400) {
-                throw new UserError(String.format(Locale.ROOT, "option --width: %s is under 1/400 of the altitude %.4g: "
+                throw UserError.usage(String.format(Locale.ROOT, "option --width: %s is under 1/400 of the altitude %.4g: "
                         + "the demo keeps to 400 passes", width, shape.height(startCorner)));
             }
             double t = thickness == null ? w / 80 : thickness;
             if (!(t >= 0) || !Double.isFinite(t) || t > w / 4) {
-                throw new UserError("option --thickness: must be zero or more and at most a quarter of the width, got " + thickness);
+                throw UserError.usage("option --thickness: must be zero or more and at most a quarter of the width, got " + thickness);
             }
             PrintWriter out = spec.commandLine().getOut();
             outputs.check("zigzag", spec.commandLine().getErr(), true);
@@ -224,21 +224,21 @@ final class DemoCommand implements Runnable {
         @Override
         public Integer call() {
             if (!(angle >= 0.5 && angle < 180)) {
-                throw new UserError("option --angle: must be at least 0.5 and less than 180 degrees, got " + angle);
+                throw UserError.usage("option --angle: must be at least 0.5 and less than 180 degrees, got " + angle);
             }
             if (angle > 175) {
-                throw new UserError("option --angle: above 175 degrees the turn fold runs more than 20 widths along the strip; "
+                throw UserError.usage("option --angle: above 175 degrees the turn fold runs more than 20 widths along the strip; "
                         + "turn in two gadgets instead, got " + angle);
             }
             if (!(overhang >= 0) || !Double.isFinite(overhang) || overhang > 100) {
-                throw new UserError("option --overhang: must be between 0 and 100 strip widths, got " + overhang);
+                throw UserError.usage("option --overhang: must be between 0 and 100 strip widths, got " + overhang);
             }
             if (!(width > 0) || !Double.isFinite(width)) {
-                throw new UserError("option --width: must be a positive number, got " + width);
+                throw UserError.usage("option --width: must be a positive number, got " + width);
             }
             double t = thickness == null ? width / 50 : thickness;
             if (!(t >= 0) || !Double.isFinite(t) || t > width / 4) {
-                throw new UserError("option --thickness: must be zero or more and at most a quarter of the width, got " + thickness);
+                throw UserError.usage("option --thickness: must be zero or more and at most a quarter of the width, got " + thickness);
             }
             PrintWriter out = spec.commandLine().getOut();
             outputs.check("turn", spec.commandLine().getErr(), true);
@@ -303,17 +303,17 @@ final class DemoCommand implements Runnable {
     static Triangle parseTriangle(String text) {
         String[] parts = text.split(",", -1);
         if (parts.length != 6 && parts.length != 9) {
-            throw new UserError("option --triangle: expected six numbers x1,y1,x2,y2,x3,y3 or nine x1,y1,z1,...,z3, got '" + text + "'");
+            throw UserError.usage("option --triangle: expected six numbers x1,y1,x2,y2,x3,y3 or nine x1,y1,z1,...,z3, got '" + text + "'");
         }
         double[] values = new double[parts.length];
         for (int i = 0; i < parts.length; i++) {
             try {
                 values[i] = Double.parseDouble(parts[i].strip());
             } catch (NumberFormatException e) {
-                throw new UserError("option --triangle: '" + parts[i].strip() + "' is not a number");
+                throw UserError.usage("option --triangle: '" + parts[i].strip() + "' is not a number");
             }
             if (!Double.isFinite(values[i])) {
-                throw new UserError("option --triangle: '" + parts[i].strip() + "' is not a finite number");
+                throw UserError.usage("option --triangle: '" + parts[i].strip() + "' is not a finite number");
             }
         }
         Triangle triangle;
@@ -322,7 +322,7 @@ final class DemoCommand implements Runnable {
                     : new Triangle(new org.joml.Vector3d(values[0], values[1], values[2]), new org.joml.Vector3d(values[3], values[4], values[5]),
                             new org.joml.Vector3d(values[6], values[7], values[8]));
         } catch (IllegalArgumentException e) {
-            throw new UserError("option --triangle: " + e.getMessage());
+            throw UserError.usage("option --triangle: " + e.getMessage());
         }
         double size = Math.max(triangle.opposite(0), Math.max(triangle.opposite(1), triangle.opposite(2)));
         double far = 0;
@@ -331,7 +331,7 @@ final class DemoCommand implements Runnable {
         }
         if (far > 1e6 * size) {
             // Thickness offsets of a millionth of the size would drown in the coordinates' rounding.
-            throw new UserError("option --triangle: the triangle is too small for its distance from the origin: move it nearer");
+            throw UserError.usage("option --triangle: the triangle is too small for its distance from the origin: move it nearer");
         }
         return triangle;
     }
@@ -341,7 +341,7 @@ final class DemoCommand implements Runnable {
             case "A" -> 0;
             case "B" -> 1;
             case "C" -> 2;
-            default -> throw new UserError("option " + option + ": expected A, B or C, got '" + name + "'");
+            default -> throw UserError.usage("option " + option + ": expected A, B or C, got '" + name + "'");
         };
     }
 

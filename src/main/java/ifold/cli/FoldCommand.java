@@ -14,6 +14,7 @@ import ifold.wrap.WrapGeometry;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.AccessDeniedException;
+import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
@@ -24,6 +25,7 @@ import java.util.concurrent.Callable;
 import org.joml.Quaterniond;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
@@ -40,19 +42,32 @@ final class FoldCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "SCRIPT", description = "a fold script")
     Path script;
 
+    @Option(names = "--max-faces", paramLabel = "N", defaultValue = "10000",
+            description = "the most faces the folds may cut the paper into (default ${DEFAULT-VALUE}): a fold that would make more is refused")
+    int maxFaces;
+
     @Mixin
     PaperOutputs outputs = new PaperOutputs();
 
     @Override
     public Integer call() {
-        outputs.check("fold", spec.commandLine().getErr(), false);
+        if (maxFaces < 1) {
+            throw UserError.usage("option --max-faces: must be at least 1, got " + maxFaces);
+        }
+        // Without a display it does the exports asked for and renders frames where the viewer was
+        // wanted, as the demos and the wrap do.
+        outputs.check("fold", spec.commandLine().getErr(), true);
         FoldScript parsed;
         ScriptFolding.Result result;
         long[] nanosPerFold;
+        if (Files.isDirectory(script)) {
+            throw new UserError(script + ": is a folder, expected a fold script");
+        }
+        LoadedModel.requireRegularFile(script);
         try {
             parsed = FoldScript.read(script);
             nanosPerFold = new long[parsed.steps().size()];
-            result = parsed.play(nanosPerFold);
+            result = parsed.play(nanosPerFold, maxFaces);
         } catch (NoSuchFileException e) {
             throw new UserError(script + ": no such file");
         } catch (AccessDeniedException e) {

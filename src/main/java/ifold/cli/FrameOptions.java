@@ -55,18 +55,18 @@ final class FrameOptions {
     void check() {
         Matcher m = SIZE.matcher(size);
         if (!m.matches()) {
-            throw new UserError("option --size: '" + size + "' is not WIDTHxHEIGHT, e.g. 1280x720");
+            throw UserError.usage("option --size: '" + size + "' is not WIDTHxHEIGHT, e.g. 1280x720");
         }
         width = Integer.parseInt(m.group(1));
         height = Integer.parseInt(m.group(2));
         if (width < 16 || height < 16 || width > 8192 || height > 8192) {
-            throw new UserError("option --size: each side must be between 16 and 8192 pixels, got " + size);
+            throw UserError.usage("option --size: each side must be between 16 and 8192 pixels, got " + size);
         }
         if (fps < 1 || fps > 240) {
-            throw new UserError("option --fps: must be between 1 and 240, got " + fps);
+            throw UserError.usage("option --fps: must be between 1 and 240, got " + fps);
         }
         if (!(seconds > 0) || seconds > 3600) {
-            throw new UserError("option --seconds: must be more than 0 and at most 3600, got " + seconds);
+            throw UserError.usage("option --seconds: must be more than 0 and at most 3600, got " + seconds);
         }
         if (movie != null) {
             checkMovie();
@@ -89,16 +89,16 @@ final class FrameOptions {
         OutputFiles.checkWritableFile(movie, "--movie", ".mp4", ".gif");
         if (isGif()) {
             if (fps > GifWriter.MAX_FPS) {
-                throw new UserError("option --fps: a GIF keeps at most " + GifWriter.MAX_FPS + " frames a second, got " + fps
+                throw UserError.usage("option --fps: a GIF keeps at most " + GifWriter.MAX_FPS + " frames a second, got " + fps
                         + "; write an .mp4 for more");
             }
             return;
         }
         if (width % 2 != 0 || height % 2 != 0) {
-            throw new UserError("option --size: an MP4 needs an even width and height, got " + size);
+            throw UserError.usage("option --size: an MP4 needs an even width and height, got " + size);
         }
         if (!Mp4Writer.available()) {
-            throw new UserError("option --movie: writing an .mp4 needs ffmpeg, which is not installed (scripts/setup installs it);"
+            throw UserError.usage("option --movie: writing an .mp4 needs ffmpeg, which is not installed (scripts/setup installs it);"
                     + " or write a .gif");
         }
     }
@@ -169,12 +169,12 @@ final class FrameOptions {
 
     private void prepareFolder() {
         if (Files.exists(frames) && !Files.isDirectory(frames)) {
-            throw new UserError("option --frames: " + frames + " is a file, not a folder");
+            throw UserError.usage("option --frames: " + frames + " is a file, not a folder");
         }
         if (!Files.exists(frames)) {
             Path parent = frames.toAbsolutePath().getParent();
             if (parent == null || !Files.isDirectory(parent)) {
-                throw new UserError("option --frames: folder " + parent + " does not exist");
+                throw UserError.usage("option --frames: folder " + parent + " does not exist");
             }
             try {
                 Files.createDirectory(frames);
@@ -184,7 +184,7 @@ final class FrameOptions {
             }
         }
         if (!Files.isWritable(frames)) {
-            throw new UserError("option --frames: folder " + frames + " is not writable");
+            throw UserError.usage("option --frames: folder " + frames + " is not writable");
         }
     }
 }

@@ -42,7 +42,7 @@ final class GenerateCommand implements Callable<Integer> {
     public Integer call() {
         OutputFiles.checkWritableFile(output, "-o", ".off", ".obj");
         if (shape == Shape.torus && (around < 3 || across < 3 || (long) around * across > 50_000_000L)) {
-            throw new UserError("options --around and --across: each must be at least 3, and their product at most 50000000");
+            throw UserError.usage("options --around and --across: each must be at least 3, and their product at most 50000000");
         }
         if (shape == Shape.icosphere && (subdivisions < 0 || subdivisions > 8)) {
             throw new CommandLine.ParameterException(spec.commandLine(), "option --subdivisions: must be 0 to 8, got " + subdivisions);

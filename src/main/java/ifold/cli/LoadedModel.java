@@ -26,6 +26,16 @@ import java.util.Map;
  */
 record LoadedModel(int inputVertices, int inputFaces, MeshBuilder.Result built, double parseSeconds, double buildSeconds) {
 
+    /**
+     * Refuses a pipe, a device or a socket before reading it: reading one would wait for ever
+     * for a writer, or for an end that never comes.
+     */
+    static void requireRegularFile(Path file) {
+        if (Files.exists(file) && !Files.isDirectory(file) && !Files.isRegularFile(file)) {
+            throw new UserError(file + ": not a regular file (a pipe, a device or a socket): iFold reads files");
+        }
+    }
+
     static LoadedModel load(Path file, MeshBuilder.Options options) {
         long start = System.nanoTime();
         PolygonSoup soup;
@@ -33,6 +43,7 @@ record LoadedModel(int inputVertices, int inputFaces, MeshBuilder.Result built, 
             if (Files.isDirectory(file)) {
                 throw new UserError(file + ": is a folder, expected an .off or .obj file");
             }
+            requireRegularFile(file);
             soup = MeshReaders.read(file);
         } catch (MeshFormatException e) {
             throw new UserError(e.getMessage());

@@ -31,10 +31,10 @@ public final class Main implements Runnable {
             return cmd.getCommandSpec().exitCodeOnInvalidInput();
         });
         commandLine.setExecutionExceptionHandler((ex, cmd, parseResult) -> {
-            if (ex instanceof UserError) {
+            if (ex instanceof UserError error) {
                 cmd.getErr().println("ifold: " + ex.getMessage());
                 cmd.getErr().flush();
-                return UserError.EXIT_CODE;
+                return error.exitCode();
             }
             // A bug, not bad input: still one line, with the kind of failure so it can be reported.
             cmd.getErr().println("ifold: internal error: " + ex + " (please report it)");

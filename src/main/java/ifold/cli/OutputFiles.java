@@ -20,17 +20,17 @@ final class OutputFiles {
             known |= name.endsWith(extension);
         }
         if (!known) {
-            throw new UserError("option " + option + ": " + file + " must end in " + String.join(" or ", extensions));
+            throw UserError.usage("option " + option + ": " + file + " must end in " + String.join(" or ", extensions));
         }
         Path folder = file.toAbsolutePath().getParent();
         if (folder == null || !Files.isDirectory(folder)) {
-            throw new UserError("option " + option + ": folder " + folder + " does not exist");
+            throw UserError.usage("option " + option + ": folder " + folder + " does not exist");
         }
         if (!Files.isWritable(folder)) {
-            throw new UserError("option " + option + ": folder " + folder + " is not writable");
+            throw UserError.usage("option " + option + ": folder " + folder + " is not writable");
         }
         if (Files.isDirectory(file)) {
-            throw new UserError("option " + option + ": " + file + " is a folder");
+            throw UserError.usage("option " + option + ": " + file + " is a folder");
         }
     }
 }

@@ -72,7 +72,7 @@ final class ViewCommand implements Callable<Integer> {
         colors = switch (colorsName.strip().toLowerCase(Locale.ROOT)) {
             case "darkness" -> PathView.Colors.DARKNESS;
             case "rainbow" -> PathView.Colors.RAINBOW;
-            default -> throw new UserError("option --colors: expected darkness or rainbow, got '" + colorsName + "'");
+            default -> throw UserError.usage("option --colors: expected darkness or rainbow, got '" + colorsName + "'");
         };
         PrintWriter err = spec.commandLine().getErr();
         PrintWriter out = spec.commandLine().getOut();

@@ -34,6 +34,9 @@ public final class FrameWriter implements FrameSink {
     /** @param folder where the frames go; it must exist and be writable */
     public FrameWriter(Path folder) {
         this.folder = folder;
+        // Frames a killed export left half-written, under their temporary names, go now:
+        // whichever frames this export writes.
+        AtomicFile.sweepStale(folder, ".frame_*.png.*.tmp", "\\.frame_[0-9]{5}\\.png\\.[0-9a-f]+\\.tmp");
         int threads = Math.max(1, Runtime.getRuntime().availableProcessors());
         this.encoders = new ThreadPoolExecutor(threads, threads, 0, TimeUnit.SECONDS, new LinkedBlockingQueue<>(), r -> {
             Thread thread = new Thread(r, "png-encoder");

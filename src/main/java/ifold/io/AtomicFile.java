@@ -123,6 +123,52 @@ public final class AtomicFile {
         }
     }
 
+    /** When this process started: temporary files older than that are no run's now. */
+    private static final long STARTED = ProcessHandle.current().info().startInstant().map(java.time.Instant::toEpochMilli)
+            .orElse(System.currentTimeMillis());
+
+    /**
+     * Removes the temporary files that writing {@code dir/name} would make, older than this
+     * process: left by a run that was killed before it could take them back (SIGKILL, a power
+     * cut). A running export's own are younger than the run, and stay.
+     */
+    public static void sweepStale(Path dir, String name) {
+        String base = "." + (name.length() > 200 ? name.substring(0, 200) : name) + ".";
+        sweepStale(dir, glob(base) + "*.tmp", java.util.regex.Pattern.quote(base) + "[0-9a-f]+\\.tmp");
+    }
+
+    /** As {@link #sweepStale(Path, String)}, for every file in {@code dir} matching {@code glob} and {@code regex}. */
+    public static void sweepStale(Path dir, String glob, String regex) {
+        java.util.regex.Pattern pattern = java.util.regex.Pattern.compile(regex);
+        try (java.nio.file.DirectoryStream<Path> files = Files.newDirectoryStream(dir, glob)) {
+            for (Path file : files) {
+                if (!pattern.matcher(file.getFileName().toString()).matches()) {
+                    continue;
+                }
+                try {
+                    if (Files.getLastModifiedTime(file).toMillis() < STARTED - 1000) {
+                        Files.deleteIfExists(file);
+                    }
+                } catch (IOException e) {
+                    // Someone else's, or gone already: leave it.
+                }
+            }
+        } catch (IOException | RuntimeException e) {
+            // Sweeping is a courtesy: the write itself goes on.
+        }
+    }
+
+    private static String glob(String literal) {
+        StringBuilder glob = new StringBuilder();
+        for (char c : literal.toCharArray()) {
+            if ("*?[]{}\\".indexOf(c) >= 0) {
+                glob.append('\\');
+            }
+            glob.append(c);
+        }
+        return glob.toString();
+    }
+
     /** Begins a file written in steps; see {@link Pending}. */
     public static Pending begin(Path file) throws IOException {
         return new Pending(file.toAbsolutePath());
@@ -137,6 +183,7 @@ public final class AtomicFile {
         String name = target.getFileName().toString();
         // Keeps the temporary name within the usual 255-byte limit.
         String base = "." + (name.length() > 200 ? name.substring(0, 200) : name) + ".";
+        sweepStale(dir, name);
         for (int attempt = 0; ; attempt++) {
             Path temp = dir.resolve(base + Long.toHexString(ThreadLocalRandom.current().nextLong()) + ".tmp");
             try {

@@ -84,7 +84,12 @@ public final class FoldScript {
 
     /** Like {@link #play()}, writing the nanoseconds each fold took to {@code nanosPerFold}. */
     public ScriptFolding.Result play(long[] nanosPerFold) throws FoldScriptException {
-        return ScriptFolding.play(this, nanosPerFold);
+        return ScriptFolding.play(this, nanosPerFold, ScriptFolding.DEFAULT_MAX_FACES);
+    }
+
+    /** Like {@link #play(long[])}, with at most {@code maxFaces} faces of paper. */
+    public ScriptFolding.Result play(long[] nanosPerFold, int maxFaces) throws FoldScriptException {
+        return ScriptFolding.play(this, nanosPerFold, maxFaces);
     }
 
     private static String fmt(double value) {

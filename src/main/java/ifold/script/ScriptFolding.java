@@ -40,6 +40,7 @@ public final class ScriptFolding {
     private final double size;
     private final double planeTolerance;
     private final List<Step> steps = new ArrayList<>();
+    private int maxFaces = DEFAULT_MAX_FACES;
 
     private ScriptFolding(double length, double width, double thickness) {
         size = Math.hypot(length, width);
@@ -86,9 +87,18 @@ public final class ScriptFolding {
     public record Result(Sheet sheet, HostFrame[] frames, List<Step> steps) {
     }
 
-    /** Plays every fold of the script, writing the nanoseconds each took to {@code nanosPerFold}. */
-    static Result play(FoldScript script, long[] nanosPerFold) throws FoldScriptException {
+    /** The most faces a script may fold the paper into unless told otherwise: folds that halve the paper again and again double them. */
+    public static final int DEFAULT_MAX_FACES = 10_000;
+
+    /**
+     * Plays every fold of the script, writing the nanoseconds each took to {@code nanosPerFold};
+     * refuses, naming the fold, one that would cut the paper into more than {@code maxFaces}
+     * faces (it is checked once the fold has cut, before it moves anything: the faces then are
+     * at most twice those before).
+     */
+    static Result play(FoldScript script, long[] nanosPerFold, int maxFaces) throws FoldScriptException {
         ScriptFolding folding = new ScriptFolding(script.length(), script.width(), script.thickness());
+        folding.maxFaces = maxFaces;
         List<FoldScript.Step> folds = script.steps();
         for (int i = 0; i < folds.size(); i++) {
             FoldScript.Step fold = folds.get(i);
@@ -175,6 +185,10 @@ public final class ScriptFolding {
                 moving.add(f);
             }
             hanging(moving, host, from2, to2);
+        }
+        if (sheet.faceCount() > maxFaces) {
+            throw new FoldException(String.format(Locale.ROOT, "it cuts the paper into %d faces, more than the %d allowed"
+                    + " (each fold through every layer can double them; --max-faces raises the limit)", sheet.faceCount(), maxFaces));
         }
         if (moving.isEmpty()) {
             throw new FoldException("nothing moves: no paper lies on that side of the line");

@@ -50,8 +50,10 @@ class CliTest {
     }
 
     static void assertOneLineError(Run run, String... fragments) {
-        assertEquals(UserError.EXIT_CODE, run.code(), run.err());
         String[] lines = run.err().strip().split("\n");
+        // What the user typed (an option's value) exits 2; what the data holds exits 1.
+        boolean usage = lines[0].startsWith("ifold: option ") && !lines[0].contains("cannot ");
+        assertEquals(usage ? UserError.USAGE_EXIT_CODE : UserError.EXIT_CODE, run.code(), run.err());
         assertEquals(1, lines.length, "one line: " + run.err());
         assertTrue(lines[0].startsWith("ifold: "), lines[0]);
         for (String fragment : fragments) {
@@ -191,5 +193,21 @@ class CliTest {
         assertEquals(0, run.code(), run.err());
         assertTrue(Files.size(out) > 0);
         assertFalse(run.err().contains("\tat "));
+    }
+
+    @Test
+    void pipesAndFoldersAreRefusedAtOnceNotReadForEver() throws Exception {
+        Path pipe = dir.resolve("model.off");
+        Process mkfifo = new ProcessBuilder("mkfifo", pipe.toString()).start();
+        org.junit.jupiter.api.Assumptions.assumeTrue(mkfifo.waitFor() == 0, "mkfifo is not here");
+        long start = System.nanoTime();
+        for (String[] args : new String[][] {{"info", pipe.toString()}, {"refine", pipe.toString(), "-o", dir.resolve("o.off").toString()},
+            {"wrap", pipe.toString(), "--no-view"}, {"view", pipe.toString(), "--frames", dir.resolve("f").toString()},
+            {"fold", pipe.toString(), "--no-view"}}) {
+            assertOneLineError(run(args), "not a regular file");
+        }
+        assertTrue((System.nanoTime() - start) * 1e-9 < 60, "none waited for a writer");
+        assertOneLineError(run("fold", dir.toString(), "--no-view"), "is a folder");
+        assertOneLineError(run("info", dir.toString()), "is a folder");
     }
 }

@@ -44,4 +44,28 @@ class FoldCommandTest {
         CliTest.Run badOption = CliTest.run("fold", script.toString(), "--export-obj", dir.resolve("x.stl").toString());
         assertTrue(badOption.err().contains("--export-obj"), badOption.err());
     }
+
+    @Test
+    void foldsThatHalveThePaperAgainAndAgainStopAtTheLimitOfFaces() throws Exception {
+        StringBuilder script = new StringBuilder("paper square 1024\nthickness 0.0001\n");
+        double x = 1024;
+        double y = 1024;
+        for (int k = 0; k < 25; k++) {
+            if (k % 2 == 0) {
+                x /= 2;
+                script.append("fold valley 180 points ").append(x).append(" 0 0 ").append(x).append(" 1 0 right\n");
+            } else {
+                y /= 2;
+                script.append("fold valley 180 points 0 ").append(y).append(" 0 1 ").append(y).append(" 0 left\n");
+            }
+        }
+        Path file = Files.writeString(dir.resolve("halve.fold"), script.toString());
+        Path obj = dir.resolve("out.obj");
+        long start = System.nanoTime();
+        CliTest.Run run = CliTest.run("fold", file.toString(), "--no-view", "--max-faces", "1000", "--export-obj", obj.toString());
+        CliTest.assertOneLineError(run, "halve.fold:12: fold 10", "more than the 1000 allowed", "--max-faces");
+        assertTrue((System.nanoTime() - start) * 1e-9 < 30, "refused in bounded time");
+        assertFalse(Files.exists(obj));
+        CliTest.assertOneLineError(CliTest.run("fold", file.toString(), "--no-view", "--max-faces", "0"), "--max-faces");
+    }
 }

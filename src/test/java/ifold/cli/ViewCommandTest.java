@@ -24,8 +24,9 @@ class ViewCommandTest {
         return file;
     }
 
+    /** An option's value refused: what the user typed, exit 2. */
     private static void assertRefused(CliTest.Run run, String fragment) {
-        assertEquals(UserError.EXIT_CODE, run.code(), run.err());
+        assertEquals(UserError.USAGE_EXIT_CODE, run.code(), run.err());
         assertEquals(1, run.err().strip().split("\n").length, run.err());
         assertTrue(run.err().contains(fragment), fragment + " in " + run.err());
     }

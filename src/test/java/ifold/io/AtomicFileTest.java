@@ -1,0 +1,68 @@
+package ifold.io;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import ifold.image.FrameWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.FileTime;
+import java.time.Instant;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** Temporary files a killed run left are swept by the next run that writes there; a running run's own stay. */
+class AtomicFileTest {
+    @TempDir
+    Path dir;
+
+    private Path stale(String name) throws Exception {
+        Path file = Files.writeString(dir.resolve(name), "half");
+        Files.setLastModifiedTime(file, FileTime.from(Instant.now().minusSeconds(3600)));
+        return file;
+    }
+
+    @Test
+    void staleTemporaryFilesOfTheSameNameAreSwept() throws Exception {
+        Path old = stale(".out.off.47e1c33894c13d2a.tmp");
+        Path other = stale(".other.off.47e1c33894c13d2a.tmp");
+        Path notOurs = stale(".out.off.notours.tmp");
+        Path running = Files.writeString(dir.resolve(".out.off.00ff.tmp"), "a run writing now");
+        AtomicFile.write(dir.resolve("out.off"), out -> out.write(1), false);
+        assertFalse(Files.exists(old), "a killed run's temporary file is gone");
+        assertTrue(Files.exists(running), "one younger than this run is another run's, writing now");
+        assertTrue(Files.exists(other), "another file's is left for its own next writer");
+        assertTrue(Files.exists(notOurs), "a name not of our making is left alone");
+        assertEquals(1, Files.size(dir.resolve("out.off")));
+    }
+
+    @Test
+    void aFrameExportSweepsHalfWrittenFramesOfAKilledOne() throws Exception {
+        Path frame = stale(".frame_00031.png.0a1b2c.tmp");
+        Path whole = stale("frame_00031.png");
+        try (FrameWriter writer = new FrameWriter(dir)) {
+            writer.finish();
+        }
+        assertFalse(Files.exists(frame));
+        assertTrue(Files.exists(whole), "whole frames are the export's to replace, not the sweep's");
+    }
+
+    @Test
+    void aPendingFileIsRenamedWhenWholeAndTakenBackOtherwise() throws Exception {
+        Path movie = dir.resolve("m.gif");
+        try (AtomicFile.Pending pending = AtomicFile.begin(movie)) {
+            Files.writeString(pending.path(), "whole");
+            pending.commit();
+        }
+        assertEquals("whole", Files.readString(movie));
+        Path half = dir.resolve("half.gif");
+        try (AtomicFile.Pending pending = AtomicFile.begin(half)) {
+            Files.writeString(pending.path(), "half");
+        }
+        assertFalse(Files.exists(half));
+        try (var files = Files.list(dir)) {
+            assertEquals(1, files.count(), "only the whole movie: " + dir);
+        }
+    }
+}
