@@ -18,6 +18,35 @@ public final class Main implements Runnable {
         throw new CommandLine.ParameterException(spec.commandLine(), "missing command: try 'ifold --help'");
     }
 
+    /**
+     * Under the launcher's own virtual display, the launcher waits for iFold and stops it on
+     * Ctrl-C or SIGTERM; killed outright (SIGKILL), it cannot. iFold then notices that its parent
+     * is gone and stops too, its shutdown hooks taking back unfinished outputs; the display ends
+     * with its last client.
+     */
+    private static void watchLauncher() {
+        if (System.getenv("IFOLD_IN_XVFB") == null) {
+            return;
+        }
+        ProcessHandle parent = ProcessHandle.current().parent().orElse(null);
+        if (parent == null) {
+            return;
+        }
+        Thread watch = new Thread(() -> {
+            while (parent.isAlive()) {
+                try {
+                    Thread.sleep(250);
+                } catch (InterruptedException e) {
+                    return;
+                }
+            }
+            System.err.println("ifold: the launcher was killed: stopping");
+            System.exit(143);
+        }, "launcher watch");
+        watch.setDaemon(true);
+        watch.start();
+    }
+
     /** A command line with iFold's error handling: one line per error, never a stack trace. */
     public static CommandLine commandLine(PrintWriter out, PrintWriter err) {
         CommandLine commandLine = new CommandLine(new Main());
@@ -45,6 +74,7 @@ public final class Main implements Runnable {
     }
 
     public static void main(String[] args) {
+        watchLauncher();
         PrintWriter out = new PrintWriter(System.out, true);
         PrintWriter err = new PrintWriter(System.err, true);
         int code;

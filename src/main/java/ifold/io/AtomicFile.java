@@ -34,6 +34,7 @@ public final class AtomicFile {
     public static void write(Path file, Content content, boolean durable) throws IOException {
         Path target = file.toAbsolutePath();
         Path temp = createTemporary(target);
+        IN_FLIGHT.add(temp);
         try {
             try (FileChannel channel = FileChannel.open(temp, StandardOpenOption.WRITE)) {
                 OutputStream out = Channels.newOutputStream(channel);
@@ -55,7 +56,24 @@ public final class AtomicFile {
                 e.addSuppressed(cleanup);
             }
             throw e;
+        } finally {
+            IN_FLIGHT.remove(temp);
         }
+    }
+
+    /** Temporary files being written now: Ctrl-C or SIGTERM mid-write takes them back. */
+    private static final java.util.Set<Path> IN_FLIGHT = java.util.concurrent.ConcurrentHashMap.newKeySet();
+
+    static {
+        Runtime.getRuntime().addShutdownHook(new Thread(() -> {
+            for (Path temp : IN_FLIGHT) {
+                try {
+                    Files.deleteIfExists(temp);
+                } catch (IOException e) {
+                    // Exiting anyway; the next run that writes there sweeps it.
+                }
+            }
+        }, "discard unfinished files"));
     }
 
     /**

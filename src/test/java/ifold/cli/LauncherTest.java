@@ -1,0 +1,93 @@
+package ifold.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The installed launcher without a display: it starts its own virtual display, and SIGTERM on
+ * it stops iFold and the display and leaves no temporary files; SIGKILL on it, iFold notices
+ * and stops by itself.
+ */
+class LauncherTest {
+    private static final Path LAUNCHER = Path.of("build", "install", "ifold", "bin", "ifold");
+
+    @TempDir
+    Path dir;
+
+    private static boolean hasXvfb() throws Exception {
+        return new ProcessBuilder("sh", "-c", "command -v Xvfb").start().waitFor() == 0;
+    }
+
+    /** Starts a long headless export, and waits for its first frames; returns the launcher and everything it started. */
+    private Process start(Path frames) throws Exception {
+        ProcessBuilder builder = new ProcessBuilder(LAUNCHER.toString(), "demo", "zigzag", "--frames", frames.toString(), "--size",
+                "1280x720", "--fps", "30", "--seconds", "300").redirectErrorStream(true).redirectOutput(dir.resolve("log").toFile());
+        builder.environment().remove("DISPLAY");
+        builder.environment().remove("IFOLD_IN_XVFB");
+        Process launcher = builder.start();
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+        while (System.nanoTime() < deadline) {
+            if (Files.isDirectory(frames)) {
+                try (var files = Files.list(frames)) {
+                    if (files.count() > 20) {
+                        return launcher;
+                    }
+                }
+            }
+            Thread.sleep(100);
+        }
+        launcher.destroyForcibly();
+        throw new AssertionError("no frames after 60 s: " + Files.readString(dir.resolve("log")));
+    }
+
+    private static void assertAllGone(List<ProcessHandle> started) throws Exception {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
+        while (System.nanoTime() < deadline && started.stream().anyMatch(ProcessHandle::isAlive)) {
+            Thread.sleep(100);
+        }
+        for (ProcessHandle process : started) {
+            assertFalse(process.isAlive() && !process.info().command().orElse("").isEmpty(),
+                    "still running: " + process.pid() + " " + process.info().commandLine().orElse(""));
+        }
+    }
+
+    @Test
+    void sigtermStopsIfoldAndItsDisplayAndLeavesNoTemporaryFiles() throws Exception {
+        assumeTrue(Files.isExecutable(LAUNCHER) && hasXvfb(), "no installed launcher or no Xvfb");
+        Path frames = dir.resolve("frames");
+        Process launcher = start(frames);
+        List<ProcessHandle> started = launcher.descendants().toList();
+        assertTrue(started.stream().anyMatch(p -> p.info().command().orElse("").contains("Xvfb")), "its own display");
+        assertTrue(started.stream().anyMatch(p -> p.info().command().orElse("").contains("java")), "and iFold");
+        launcher.destroy(); // SIGTERM
+        assertTrue(launcher.waitFor(30, TimeUnit.SECONDS), "the launcher stops");
+        assertEquals(143, launcher.exitValue());
+        assertAllGone(started);
+        try (var files = Files.list(frames)) {
+            assertEquals(0, files.filter(p -> p.getFileName().toString().endsWith(".tmp")).count(), "no temporary frames");
+        }
+        try (var files = Files.list(frames)) {
+            assertTrue(files.count() < 9000, "it stopped before the end");
+        }
+    }
+
+    @Test
+    void sigkillOnTheLauncherStopsIfoldToo() throws Exception {
+        assumeTrue(Files.isExecutable(LAUNCHER) && hasXvfb(), "no installed launcher or no Xvfb");
+        Path frames = dir.resolve("frames");
+        Process launcher = start(frames);
+        List<ProcessHandle> started = launcher.descendants().toList();
+        launcher.destroyForcibly(); // SIGKILL: the launcher cannot clean up; iFold must notice
+        launcher.waitFor(10, TimeUnit.SECONDS);
+        assertAllGone(started);
+    }
+}
