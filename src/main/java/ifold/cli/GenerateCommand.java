@@ -15,7 +15,7 @@ import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code ifold generate SHAPE -o OUT}: the models iFold makes itself (those in models/, and big tori for benchmarks). */
 @Command(name = "generate", mixinStandardHelpOptions = true,
-        description = "Writes one of the built-in models: ${COMPLETION-CANDIDATES}.")
+        description = "Writes one of the built-in models: tetrahedron, cube, octahedron, icosahedron, icosphere, torus, triangle, figure3.")
 final class GenerateCommand implements Callable<Integer> {
 
     enum Shape { tetrahedron, cube, octahedron, icosahedron, icosphere, torus, triangle, figure3 }

@@ -53,7 +53,7 @@ final class RefineCommand implements Callable<Integer> {
         try {
             MeshWriters.write(result.mesh(), output);
         } catch (IOException e) {
-            throw new UserError(output + ": cannot write: " + e.getMessage());
+            throw new UserError("cannot write " + e.getMessage());
         }
         long written = System.nanoTime();
         double minIn = RefinementClaims.minAngleDegrees(mesh);

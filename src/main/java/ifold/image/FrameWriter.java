@@ -3,6 +3,7 @@ package ifold.image;
 import ifold.io.AtomicFile;
 import java.io.IOException;
 import java.io.UncheckedIOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.ExecutorService;
@@ -31,9 +32,33 @@ public final class FrameWriter implements FrameSink {
     /** Pictures whose frames are on disk, ready to be drawn into again: a long export allocates no more than a few. */
     private final ConcurrentLinkedQueue<byte[]> spare = new ConcurrentLinkedQueue<>();
 
-    /** @param folder where the frames go; it must exist and be writable */
-    public FrameWriter(Path folder) {
+    /** The export's hold on its folder: two exports into one folder would mix their frames. */
+    private final java.nio.channels.FileChannel lockFile;
+    private final java.nio.channels.FileLock lock;
+    /** Frames this export wrote: a failed export takes them back. */
+    private final java.util.Set<Path> written = java.util.concurrent.ConcurrentHashMap.newKeySet();
+    private boolean finished;
+
+    /**
+     * @param folder where the frames go; it must exist and be writable
+     * @throws IOException if another export holds the folder, or it cannot be locked
+     */
+    public FrameWriter(Path folder) throws IOException {
         this.folder = folder;
+        Path lockPath = folder.resolve(".ifold-frames.lock");
+        lockFile = java.nio.channels.FileChannel.open(lockPath, java.nio.file.StandardOpenOption.CREATE,
+                java.nio.file.StandardOpenOption.WRITE);
+        java.nio.channels.FileLock held;
+        try {
+            held = lockFile.tryLock();
+        } catch (java.nio.channels.OverlappingFileLockException e) {
+            held = null;
+        }
+        if (held == null) {
+            lockFile.close();
+            throw new IOException("another export is writing frames into " + folder + ": wait for it, or choose another folder");
+        }
+        lock = held;
         // Frames a killed export left half-written, under their temporary names, go now:
         // whichever frames this export writes.
         AtomicFile.sweepStale(folder, ".frame_*.png.*.tmp", "\\.frame_[0-9]{5}\\.png\\.[0-9a-f]+\\.tmp");
@@ -75,7 +100,9 @@ public final class FrameWriter implements FrameSink {
             try {
                 // Not forced to disk: a frame a second is not worth an fsync, and a killed export
                 // still leaves only whole frames, since the rename comes after the last byte.
-                AtomicFile.write(folder.resolve(frameName(index)), out -> PngEncoder.encode(width, height, rgb, out), false);
+                Path frame = folder.resolve(frameName(index));
+                AtomicFile.write(frame, out -> PngEncoder.encode(width, height, rgb, out), false);
+                written.add(frame);
                 return null;
             } catch (IOException e) {
                 throw new UncheckedIOException(e);
@@ -110,10 +137,33 @@ public final class FrameWriter implements FrameSink {
     @Override
     public void finish() throws IOException {
         checkFailures(true);
+        finished = true;
     }
 
+    /** Stops the encoders and lets the folder go; an export that did not finish takes back the frames it wrote. */
     @Override
     public void close() {
         encoders.shutdownNow();
+        if (!finished) {
+            try {
+                encoders.awaitTermination(10, TimeUnit.SECONDS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+            for (Path frame : written) {
+                try {
+                    Files.deleteIfExists(frame);
+                } catch (IOException e) {
+                    // Left, whole: the next export into the folder replaces it.
+                }
+            }
+        }
+        try {
+            lock.release();
+            lockFile.close();
+            Files.deleteIfExists(folder.resolve(".ifold-frames.lock"));
+        } catch (IOException e) {
+            // The lock goes with the process anyway.
+        }
     }
 }

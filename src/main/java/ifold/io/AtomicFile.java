@@ -33,8 +33,19 @@ public final class AtomicFile {
      */
     public static void write(Path file, Content content, boolean durable) throws IOException {
         Path target = file.toAbsolutePath();
-        Path temp = createTemporary(target);
-        IN_FLIGHT.add(temp);
+        Path temp;
+        synchronized (IN_FLIGHT) {
+            if (shuttingDown) {
+                throw new IOException(target + ": not written: iFold is stopping");
+            }
+            try {
+                temp = createTemporary(target);
+            } catch (IOException e) {
+                // Name the file the user asked for, not the temporary one beside it.
+                throw new IOException(target + ": " + reason(e), e);
+            }
+            IN_FLIGHT.add(temp);
+        }
         try {
             try (FileChannel channel = FileChannel.open(temp, StandardOpenOption.WRITE)) {
                 OutputStream out = Channels.newOutputStream(channel);
@@ -49,28 +60,57 @@ public final class AtomicFile {
             } catch (AtomicMoveNotSupportedException e) {
                 Files.move(temp, target, StandardCopyOption.REPLACE_EXISTING);
             }
-        } catch (IOException | RuntimeException | Error e) {
-            try {
-                Files.deleteIfExists(temp);
-            } catch (IOException | RuntimeException cleanup) {
-                e.addSuppressed(cleanup);
-            }
+        } catch (IOException e) {
+            discard(temp, e);
+            // Name the file the user asked for, not the temporary one beside it.
+            throw new IOException(target + ": " + reason(e), e);
+        } catch (RuntimeException | Error e) {
+            discard(temp, e);
             throw e;
         } finally {
             IN_FLIGHT.remove(temp);
         }
     }
 
+    /** Why a write failed, in words, without the temporary file's name. */
+    private static String reason(IOException e) {
+        if (e instanceof java.nio.file.AccessDeniedException) {
+            return "permission denied";
+        }
+        if (e instanceof java.nio.file.NoSuchFileException) {
+            return "no such folder";
+        }
+        if (e instanceof java.nio.file.FileSystemException fse && fse.getReason() != null) {
+            return fse.getReason();
+        }
+        String message = e.getMessage();
+        return message == null || message.isBlank() ? e.getClass().getSimpleName() : message.replaceAll("\\S*\\.tmp\\b", "").strip();
+    }
+
+    private static void discard(Path temp, Throwable failure) {
+        try {
+            Files.deleteIfExists(temp);
+        } catch (IOException | RuntimeException cleanup) {
+            failure.addSuppressed(cleanup);
+        }
+    }
+
     /** Temporary files being written now: Ctrl-C or SIGTERM mid-write takes them back. */
     private static final java.util.Set<Path> IN_FLIGHT = java.util.concurrent.ConcurrentHashMap.newKeySet();
 
+    /** Set once the JVM shuts down: no new file is begun after the unfinished ones are taken back. */
+    private static boolean shuttingDown;
+
     static {
         Runtime.getRuntime().addShutdownHook(new Thread(() -> {
-            for (Path temp : IN_FLIGHT) {
-                try {
-                    Files.deleteIfExists(temp);
-                } catch (IOException e) {
-                    // Exiting anyway; the next run that writes there sweeps it.
+            synchronized (IN_FLIGHT) {
+                shuttingDown = true;
+                for (Path temp : IN_FLIGHT) {
+                    try {
+                        Files.deleteIfExists(temp);
+                    } catch (IOException e) {
+                        // Exiting anyway; the next run that writes there sweeps it.
+                    }
                 }
             }
         }, "discard unfinished files"));

@@ -93,7 +93,8 @@ public final class FoldScript {
     }
 
     private static String fmt(double value) {
-        return value == Math.rint(value) ? Long.toString((long) value) : Double.toString(value);
+        // Whole numbers without ".0"; beyond a long's range, as doubles are written.
+        return value == Math.rint(value) && Math.abs(value) < 1e15 ? Long.toString((long) value) : Double.toString(value);
     }
 
     public static Builder builder() {

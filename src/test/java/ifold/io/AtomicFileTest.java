@@ -49,6 +49,28 @@ class AtomicFileTest {
     }
 
     @Test
+    void twoExportsCannotShareAFolderAndAFailedOneTakesBackItsFrames() throws Exception {
+        Path frames = Files.createDirectory(dir.resolve("frames"));
+        try (FrameWriter first = new FrameWriter(frames)) {
+            java.io.IOException refused = org.junit.jupiter.api.Assertions.assertThrows(java.io.IOException.class,
+                    () -> new FrameWriter(frames));
+            assertTrue(refused.getMessage().contains("another export"), refused.getMessage());
+            for (int i = 0; i < 3; i++) {
+                first.write(i, 4, 4, new byte[48]);
+            }
+            // No finish: the export failed.
+        }
+        try (var files = Files.list(frames)) {
+            assertEquals(0, files.count(), "its frames taken back, and its lock");
+        }
+        try (FrameWriter second = new FrameWriter(frames)) {
+            second.write(0, 4, 4, new byte[48]);
+            second.finish();
+        }
+        assertTrue(Files.exists(frames.resolve(FrameWriter.frameName(0))), "a finished export keeps its frames");
+    }
+
+    @Test
     void aPendingFileIsRenamedWhenWholeAndTakenBackOtherwise() throws Exception {
         Path movie = dir.resolve("m.gif");
         try (AtomicFile.Pending pending = AtomicFile.begin(movie)) {
