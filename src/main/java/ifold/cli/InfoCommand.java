@@ -36,6 +36,7 @@ final class InfoCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         LoadedModel loaded = LoadedModel.load(model, new MeshBuilder.Options(strict, false));
+        loaded.requireFaces(model, "nothing to describe");
         loaded.reportRepairs(model, spec.commandLine().getErr());
         HalfedgeMesh mesh = loaded.built().mesh();
         Topology topology = Topology.of(mesh);

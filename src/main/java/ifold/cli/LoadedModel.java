@@ -73,6 +73,26 @@ record LoadedModel(int inputVertices, int inputFaces, MeshBuilder.Result built, 
     }
 
     /** One line on {@code err} for each kind of repair made, with its count. */
+    /** The repairs made, in one phrase: "dropped 1 zero-area faces, removed 3 unreferenced vertices". */
+    String repairsText() {
+        java.util.List<String> parts = new java.util.ArrayList<>();
+        for (Map.Entry<Defect, Integer> repair : new java.util.TreeMap<>(built.repairs()).entrySet()) {
+            parts.add(repair.getKey().describeRepair(repair.getValue()));
+        }
+        return String.join(", ", parts);
+    }
+
+    /**
+     * Refuses a model its repairs left without faces, in one line that names the repairs
+     * (rather than a line per repair and then the refusal).
+     */
+    void requireFaces(Path file, String what) {
+        if (built.mesh().faceCount() == 0) {
+            String repairs = repairsText();
+            throw new UserError(file + ": no faces left" + (repairs.isEmpty() ? "" : " after the repairs (" + repairs + ")") + ": " + what);
+        }
+    }
+
     void reportRepairs(Path file, PrintWriter err) {
         for (Map.Entry<Defect, Integer> repair : new java.util.TreeMap<>(built.repairs()).entrySet()) {
             err.println("ifold: " + file + ": repaired: " + repair.getKey().describeRepair(repair.getValue()));

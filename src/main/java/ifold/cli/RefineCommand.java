@@ -42,6 +42,7 @@ final class RefineCommand implements Callable<Integer> {
     public Integer call() throws IOException {
         OutputFiles.checkWritableFile(output, "-o", ".off", ".obj");
         LoadedModel loaded = LoadedModel.load(model, new MeshBuilder.Options(strict, true));
+        loaded.requireFaces(model, "nothing to refine");
         loaded.reportRepairs(model, spec.commandLine().getErr());
         HalfedgeMesh mesh = loaded.built().mesh();
         if (mesh.faceCount() == 0) {

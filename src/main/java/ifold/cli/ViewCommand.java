@@ -78,6 +78,7 @@ final class ViewCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         boolean refined = refine || path;
         LoadedModel loaded = LoadedModel.load(model, new MeshBuilder.Options(strict, refined));
+        loaded.requireFaces(model, "nothing to show");
         loaded.reportRepairs(model, err);
         HalfedgeMesh mesh = loaded.built().mesh();
         if (mesh.faceCount() == 0) {

@@ -90,6 +90,7 @@ final class WrapCommand implements Callable<Integer> {
         Path report = outputs.report;
         long started = System.nanoTime();
         LoadedModel loaded = LoadedModel.load(model, new MeshBuilder.Options(strict, true));
+        loaded.requireFaces(model, "nothing to wrap");
         loaded.reportRepairs(model, err);
         HalfedgeMesh mesh = loaded.built().mesh();
         if (mesh.faceCount() == 0) {

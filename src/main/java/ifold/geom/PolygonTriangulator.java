@@ -57,9 +57,19 @@ public final class PolygonTriangulator {
         double[] v = new double[size];
         int[] nextOf = new int[size];
         int[] prevOf = new int[size];
+        // Relative to the first corner and scaled to order 1: ears are judged the same way on a
+        // model of side 1e-100 or 1e154 (no product underflows or overflows).
+        double scale = 0;
         for (int i = 0; i < size; i++) {
-            u[i] = xyz[3 * polygon[i] + axisU];
-            v[i] = xyz[3 * polygon[i] + axisV];
+            scale = Math.max(scale, Math.abs(xyz[3 * polygon[i] + axisU] * 0.5 - xyz[3 * polygon[0] + axisU] * 0.5));
+            scale = Math.max(scale, Math.abs(xyz[3 * polygon[i] + axisV] * 0.5 - xyz[3 * polygon[0] + axisV] * 0.5));
+        }
+        if (!(scale > 0) || !Double.isFinite(scale)) {
+            return 0;
+        }
+        for (int i = 0; i < size; i++) {
+            u[i] = (xyz[3 * polygon[i] + axisU] * 0.5 - xyz[3 * polygon[0] + axisU] * 0.5) / scale;
+            v[i] = (xyz[3 * polygon[i] + axisV] * 0.5 - xyz[3 * polygon[0] + axisV] * 0.5) / scale;
             nextOf[i] = (i + 1) % size;
             prevOf[i] = (i + size - 1) % size;
         }

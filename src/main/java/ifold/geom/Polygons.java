@@ -12,19 +12,39 @@ public final class Polygons {
      * @return whether the polygon has area in the sense of {@link Tolerance#DEGENERATE_AREA}
      */
     public static boolean newellNormal(double[] xyz, int[] polygon, int size, double[] dest) {
+        // On corners taken relative to the first and scaled to order 1 (halved first, so that
+        // coordinates near 1e308 do not overflow): the normal's direction and the area test are
+        // the same for a polygon of side 1e-100 or 1e154 as for one of side 1.
+        int first = 3 * polygon[0];
+        double scale = 0;
+        for (int i = 0; i < size; i++) {
+            for (int axis = 0; axis < 3; axis++) {
+                scale = Math.max(scale, Math.abs(xyz[3 * polygon[i] + axis] * 0.5 - xyz[first + axis] * 0.5));
+            }
+        }
+        if (!(scale > 0) || !Double.isFinite(scale)) {
+            dest[0] = 0;
+            dest[1] = 0;
+            dest[2] = 0;
+            return false;
+        }
         double nx = 0;
         double ny = 0;
         double nz = 0;
         double longest = 0;
+        double[] p = new double[3];
+        double[] q = new double[3];
         for (int i = 0; i < size; i++) {
-            int a = polygon[i];
-            int b = polygon[(i + 1) % size];
-            int pa = 3 * a;
-            int pb = 3 * b;
-            nx += (xyz[pa + 1] - xyz[pb + 1]) * (xyz[pa + 2] + xyz[pb + 2]);
-            ny += (xyz[pa + 2] - xyz[pb + 2]) * (xyz[pa] + xyz[pb]);
-            nz += (xyz[pa] - xyz[pb]) * (xyz[pa + 1] + xyz[pb + 1]);
-            longest = Math.max(longest, Triangles.distanceSquared(xyz, a, b));
+            int pa = 3 * polygon[i];
+            int pb = 3 * polygon[(i + 1) % size];
+            for (int axis = 0; axis < 3; axis++) {
+                p[axis] = (xyz[pa + axis] * 0.5 - xyz[first + axis] * 0.5) / scale;
+                q[axis] = (xyz[pb + axis] * 0.5 - xyz[first + axis] * 0.5) / scale;
+            }
+            nx += (p[1] - q[1]) * (p[2] + q[2]);
+            ny += (p[2] - q[2]) * (p[0] + q[0]);
+            nz += (p[0] - q[0]) * (p[1] + q[1]);
+            longest = Math.max(longest, (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
         }
         dest[0] = nx;
         dest[1] = ny;

@@ -2,8 +2,9 @@ package ifold.geom;
 
 /**
  * Measures of triangles given by the positions of their corners in an interleaved coordinate
- * array ({@code xyz[3 * v]}, {@code xyz[3 * v + 1]}, {@code xyz[3 * v + 2]}). Nothing here
- * allocates, so it can run in the loops over millions of faces.
+ * array ({@code xyz[3 * v]}, {@code xyz[3 * v + 1]}, {@code xyz[3 * v + 2]}). Shapes (no area,
+ * angles) are measured on edges scaled to order 1, so that models of any size, 1e-100 to 1e300,
+ * give the same answers.
  */
 public final class Triangles {
     private Triangles() {
@@ -23,13 +24,6 @@ public final class Triangles {
         return Math.sqrt(nx * nx + ny * ny + nz * nz);
     }
 
-    /** The dot product of the edges from a to b and from a to c. */
-    private static double dot(double[] xyz, int a, int b, int c) {
-        return (xyz[3 * b] - xyz[3 * a]) * (xyz[3 * c] - xyz[3 * a])
-                + (xyz[3 * b + 1] - xyz[3 * a + 1]) * (xyz[3 * c + 1] - xyz[3 * a + 1])
-                + (xyz[3 * b + 2] - xyz[3 * a + 2]) * (xyz[3 * c + 2] - xyz[3 * a + 2]);
-    }
-
     public static double distanceSquared(double[] xyz, int a, int b) {
         double dx = xyz[3 * b] - xyz[3 * a];
         double dy = xyz[3 * b + 1] - xyz[3 * a + 1];
@@ -37,15 +31,65 @@ public final class Triangles {
         return dx * dx + dy * dy + dz * dz;
     }
 
+    /** The distance from a to b, without overflow or underflow whatever the model's size. */
     public static double distance(double[] xyz, int a, int b) {
-        return Math.sqrt(distanceSquared(xyz, a, b));
+        double dx = xyz[3 * b] * 0.5 - xyz[3 * a] * 0.5;
+        double dy = xyz[3 * b + 1] * 0.5 - xyz[3 * a + 1] * 0.5;
+        double dz = xyz[3 * b + 2] * 0.5 - xyz[3 * a + 2] * 0.5;
+        double scale = Math.max(Math.abs(dx), Math.max(Math.abs(dy), Math.abs(dz)));
+        if (scale == 0) {
+            return 0;
+        }
+        dx /= scale;
+        dy /= scale;
+        dz /= scale;
+        return 2 * scale * Math.sqrt(dx * dx + dy * dy + dz * dz);
     }
 
-    /** Whether triangle (a, b, c) has no area in the sense of {@link Tolerance#DEGENERATE_AREA}. */
+    /**
+     * Whether triangle (a, b, c) has no area in the sense of {@link Tolerance#DEGENERATE_AREA}.
+     * Measured on its edges scaled to the largest coordinate difference: a triangle of side
+     * 1e-100 or 1e154 is the same shape as one of side 1, and its squares neither underflow nor
+     * overflow.
+     */
     public static boolean isDegenerate(double[] xyz, int a, int b, int c) {
-        double longest = Math.max(distanceSquared(xyz, a, b),
-                Math.max(distanceSquared(xyz, b, c), distanceSquared(xyz, c, a)));
-        return Tolerance.isDegenerateTriangle(twiceArea(xyz, a, b, c), longest);
+        double[] e = scaledEdges(xyz, a, b, c);
+        if (e == null) {
+            return true; // all three corners at one point
+        }
+        double[] w = {e[3] - e[0], e[4] - e[1], e[5] - e[2]};
+        double longest = Math.max(e[0] * e[0] + e[1] * e[1] + e[2] * e[2],
+                Math.max(e[3] * e[3] + e[4] * e[4] + e[5] * e[5], w[0] * w[0] + w[1] * w[1] + w[2] * w[2]));
+        return Tolerance.isDegenerateTriangle(crossLength(e), longest);
+    }
+
+    /**
+     * The edges from a to b and from a to c, u then v, divided by their largest coordinate
+     * difference; null if that is zero (or not finite).
+     */
+    private static double[] scaledEdges(double[] xyz, int a, int b, int c) {
+        double[] e = new double[6];
+        double scale = 0;
+        for (int axis = 0; axis < 3; axis++) {
+            // Halved before subtracting: coordinates near 1e308 differ by more than a double holds.
+            e[axis] = xyz[3 * b + axis] * 0.5 - xyz[3 * a + axis] * 0.5;
+            e[3 + axis] = xyz[3 * c + axis] * 0.5 - xyz[3 * a + axis] * 0.5;
+            scale = Math.max(scale, Math.max(Math.abs(e[axis]), Math.abs(e[3 + axis])));
+        }
+        if (!(scale > 0) || !Double.isFinite(scale)) {
+            return null;
+        }
+        for (int k = 0; k < 6; k++) {
+            e[k] /= scale;
+        }
+        return e;
+    }
+
+    private static double crossLength(double[] e) {
+        double nx = e[1] * e[5] - e[2] * e[4];
+        double ny = e[2] * e[3] - e[0] * e[5];
+        double nz = e[0] * e[4] - e[1] * e[3];
+        return Math.sqrt(nx * nx + ny * ny + nz * nz);
     }
 
     /**
@@ -54,7 +98,12 @@ public final class Triangles {
      * does not.
      */
     public static double angleAt(double[] xyz, int a, int b, int c) {
-        return Math.atan2(twiceArea(xyz, a, b, c), dot(xyz, a, b, c));
+        // On the edges scaled to order 1: the angle is the same, and tiny or huge models keep it.
+        double[] e = scaledEdges(xyz, a, b, c);
+        if (e == null) {
+            return 0;
+        }
+        return Math.atan2(crossLength(e), e[0] * e[3] + e[1] * e[4] + e[2] * e[5]);
     }
 
     /** The smallest of the three angles of triangle (a, b, c), in radians. */
@@ -72,9 +121,12 @@ public final class Triangles {
         double lb = distance(xyz, c, a);
         double lc = distance(xyz, a, b);
         double sum = la + lb + lc;
+        // Weights first, then the corners: products of two huge (or tiny) numbers would overflow.
+        double wa = la / sum;
+        double wb = lb / sum;
+        double wc = lc / sum;
         for (int axis = 0; axis < 3; axis++) {
-            dest[destOffset + axis] =
-                    (la * xyz[3 * a + axis] + lb * xyz[3 * b + axis] + lc * xyz[3 * c + axis]) / sum;
+            dest[destOffset + axis] = wa * xyz[3 * a + axis] + wb * xyz[3 * b + axis] + wc * xyz[3 * c + axis];
         }
     }
 }

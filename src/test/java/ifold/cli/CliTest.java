@@ -210,4 +210,27 @@ class CliTest {
         assertOneLineError(run("fold", dir.toString(), "--no-view"), "is a folder");
         assertOneLineError(run("info", dir.toString()), "is a folder");
     }
+
+    @Test
+    void tinyAndHugeModelsKeepTheirFacesAndAngles() throws Exception {
+        for (double scale : new double[] {1e-300, 1e-100, 1, 1e80, 1e154, 1e300}) {
+            StringBuilder off = new StringBuilder("OFF\n8 6 0\n");
+            int[][] corners = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+            for (int[] c : corners) {
+                off.append(c[0] * scale).append(' ').append(c[1] * scale).append(' ').append(c[2] * scale).append('\n');
+            }
+            off.append("4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n");
+            Path model = Files.writeString(dir.resolve("cube.off"), off.toString());
+            Run info = run("info", model.toString(), "--json");
+            assertEquals(0, info.code(), scale + ": " + info.err());
+            assertEquals(6, number(info.out(), "faces"), 0, scale + ": no face dropped as without area");
+            assertTrue(info.out().contains("\"valid\": true"), info.out());
+            Run refine = run("refine", model.toString(), "-o", dir.resolve("r.off").toString(), "--json");
+            assertEquals(0, refine.code(), scale + ": " + refine.err());
+            assertEquals(45, number(refine.out(), "minAngleInDegrees"), 1e-9, "the faces' triangles, at " + scale);
+            assertEquals(22.5, number(refine.out(), "minAngleOutDegrees"), 1e-9, "half of it, at " + scale);
+        }
+        Path empty = Files.writeString(dir.resolve("flat.off"), "OFF\n3 1 0\n0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n");
+        assertOneLineError(run("info", empty.toString()), "no faces left");
+    }
 }
