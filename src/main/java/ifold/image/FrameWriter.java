@@ -144,7 +144,9 @@ public final class FrameWriter implements FrameSink {
     @Override
     public void close() {
         encoders.shutdownNow();
-        if (!finished) {
+        // A failed export takes back its frames; one stopped by Ctrl-C or SIGTERM leaves the
+        // whole frames it made (only whole ones: the unfinished are taken back as it stops).
+        if (!finished && !AtomicFile.stopping()) {
             try {
                 encoders.awaitTermination(10, TimeUnit.SECONDS);
             } catch (InterruptedException e) {

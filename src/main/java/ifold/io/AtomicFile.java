@@ -101,6 +101,13 @@ public final class AtomicFile {
     /** Set once the JVM shuts down: no new file is begun after the unfinished ones are taken back. */
     private static boolean shuttingDown;
 
+    /** Whether the JVM is shutting down (Ctrl-C, SIGTERM): what is whole stays, nothing new is begun. */
+    public static boolean stopping() {
+        synchronized (IN_FLIGHT) {
+            return shuttingDown;
+        }
+    }
+
     static {
         Runtime.getRuntime().addShutdownHook(new Thread(() -> {
             synchronized (IN_FLIGHT) {

@@ -90,8 +90,8 @@ final class AsciiOutput {
 
     /**
      * Writes a finite double so that {@link Double#parseDouble} and the readers give back the
-     * same bits: integral values as integers ("-0" keeps the sign of zero), others through
-     * {@link Double#toString(double)}, whose digits always round-trip.
+     * same bits: integral values as integers ("-0" keeps the sign of zero), others as the
+     * shortest decimal that round-trips.
      */
     void writeDouble(double value) throws IOException {
         if (value == 0) {
@@ -99,7 +99,9 @@ final class AsciiOutput {
         } else if (value == Math.rint(value) && Math.abs(value) < EXACT_LONGS) {
             writeLong((long) value);
         } else {
-            String text = Double.toString(value);
+            // The shortest digits that read back as the same double (Schubfach, jackson-core's
+            // writer): exact as Double.toString, and a good deal faster.
+            String text = com.fasterxml.jackson.core.io.NumberOutput.toString(value, true);
             ensure(LONGEST);
             for (int i = 0; i < text.length(); i++) {
                 buf[size++] = (byte) text.charAt(i);
