@@ -282,14 +282,7 @@ final class DemoCommand implements Runnable {
     private static WrapView.Playback playback(Scene scene, Wrap.Result result, List<WrapGeometry> geometries) {
         // White paper on a white background would not be seen where it leaves the triangle.
         scene.setBackground(BACKGROUND);
-        WrapView.Strips strips = WrapView.strips(result, geometries);
-        Geometry paper = new Geometry("paper", strips.mesh(), WrapView.PAPER);
-        paper.setHiddenColor(0); // not yet laid: not there
-        scene.root().attach(paper);
-        Geometry current = new Geometry("folding", strips.mesh(), WrapView.PAPER_FOLDING);
-        scene.root().attach(current);
-        scene.frameAll();
-        return WrapView.animation(scene, paper, current, strips, result);
+        return WrapView.play(scene, result, geometries);
     }
 
     /** A soft grey-blue: the white paper stands out on it, and the triangle's colour is darker still. */

@@ -68,12 +68,12 @@ final class ViewCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        frameOptions.check();
         colors = switch (colorsName.strip().toLowerCase(Locale.ROOT)) {
             case "darkness" -> PathView.Colors.DARKNESS;
             case "rainbow" -> PathView.Colors.RAINBOW;
             default -> throw UserError.usage("option --colors: expected darkness or rainbow, got '" + colorsName + "'");
         };
+        frameOptions.check();
         PrintWriter err = spec.commandLine().getErr();
         PrintWriter out = spec.commandLine().getOut();
         boolean refined = refine || path;

@@ -167,14 +167,7 @@ final class WrapCommand implements Callable<Integer> {
         Scene scene = new Scene();
         Geometry solid = new Geometry("model", SceneMesh.of(mesh), new Material(WrapView.MODEL, 0xFF4A5460, false, false));
         scene.root().attach(solid);
-        WrapView.Strips strips = WrapView.strips(result, geometries);
-        Geometry paper = new Geometry("paper", strips.mesh(), WrapView.PAPER);
-        paper.setHiddenColor(0); // not yet laid: not there
-        scene.root().attach(paper);
-        Geometry current = new Geometry("folding", strips.mesh(), WrapView.PAPER_FOLDING);
-        scene.root().attach(current);
-        scene.frameAll();
-        Animation animation = WrapView.animation(scene, paper, current, strips, result);
+        Animation animation = WrapView.play(scene, result, geometries);
         // Layer on layer of paper makes multisampling dear on a software renderer (4 samples a
         // pixel: 16 frames/s for the cube; none: 60), and the layers' edges are what the eye follows.
         outputs.show(scene, animation, model.getFileName() + ": " + result.strips().size() + " strip(s)", 120, true, spec, 0);

@@ -110,6 +110,21 @@ public final class WrapView {
         return new Playback(scene, done, current, strips, result);
     }
 
+    /**
+     * Adds the wrap's paper to the scene (what the scene holds already, the model or a
+     * triangle, stays under it), frames the whole, and returns its playback.
+     */
+    public static Playback play(Scene scene, Wrap.Result result, List<WrapGeometry> geometries) {
+        Strips strips = strips(result, geometries);
+        Geometry paper = new Geometry("paper", strips.mesh(), PAPER);
+        paper.setHiddenColor(0); // not yet laid: not there
+        scene.root().attach(paper);
+        Geometry current = new Geometry("folding", strips.mesh(), PAPER_FOLDING);
+        scene.root().attach(current);
+        scene.frameAll();
+        return animation(scene, paper, current, strips, result);
+    }
+
     /** The wrap played fold by fold, then one turn around the result. */
     public static final class Playback implements Animation {
         private final Scene scene;

@@ -405,22 +405,7 @@ public final class Sheet {
             double nx = dy / length; // right of the direction
             double ny = -dx / length;
             double c = nx * px + ny * py;
-            List<Integer> beyond = new ArrayList<>();
-            int faces = stack.count;
-            for (int i = 0; i < faces; i++) {
-                int f = stack.faces[i];
-                double[] range = range(f, nx, ny, c, false);
-                if (range[1] <= tolerance) {
-                    continue;
-                }
-                note(f);
-                if (range[0] >= -tolerance) {
-                    beyond.add(f);
-                    continue;
-                }
-                beyond.add(split(f, nx, ny, c, false, splitOfEdge, this));
-            }
-            return beyond.stream().mapToInt(Integer::intValue).toArray();
+            return cut(Arrays.copyOf(stack.faces, stack.count), nx, ny, c, false);
         }
 
         /**
@@ -437,10 +422,23 @@ public final class Sheet {
             double nv = -du / length;
             double c = nu * u1 + nv * v1;
             sheetCut = true;
+            int[] all = new int[loops.size()];
+            for (int f = 0; f < all.length; f++) {
+                all[f] = f;
+            }
+            return cut(all, nu, nv, c, true);
+        }
+
+        /**
+         * Cuts those of {@code faces} that the line n·p = c crosses (p in their host's frame, or
+         * on the sheet): each keeps its near side, a new face takes the far side.
+         *
+         * @return the faces beyond the line, after cutting
+         */
+        private int[] cut(int[] faces, double nx, double ny, double c, boolean onSheet) {
             List<Integer> beyond = new ArrayList<>();
-            int faces = loops.size();
-            for (int f = 0; f < faces; f++) {
-                double[] range = range(f, nu, nv, c, true);
+            for (int f : faces) {
+                double[] range = range(f, nx, ny, c, onSheet);
                 if (range[1] <= tolerance) {
                     continue;
                 }
@@ -449,7 +447,7 @@ public final class Sheet {
                     beyond.add(f);
                     continue;
                 }
-                beyond.add(split(f, nu, nv, c, true, splitOfEdge, this));
+                beyond.add(split(f, nx, ny, c, onSheet, splitOfEdge, this));
             }
             return beyond.stream().mapToInt(Integer::intValue).toArray();
         }

@@ -38,6 +38,7 @@ class ViewCommandTest {
         assertRefused(CliTest.run("view", model, "--frames", frames, "--size", "big"), "option --size");
         assertRefused(CliTest.run("view", model, "--frames", frames, "--size", "8x8"), "option --size");
         assertRefused(CliTest.run("view", model, "--frames", frames, "--fps", "0"), "option --fps");
+        assertRefused(CliTest.run("view", model, "--path", "--colors", "purple", "--frames", frames), "option --colors");
         assertRefused(CliTest.run("view", model, "--frames", frames, "--seconds", "-1"), "option --seconds");
         assertRefused(CliTest.run("view", model, "--frames", dir.resolve("no/such/folder").toString()), "does not exist");
         Path file = Files.writeString(dir.resolve("a-file"), "x");
