@@ -1,5 +1,6 @@
 package ifold.cli;
 
+import ifold.fold.CreasePattern;
 import ifold.fold.FoldFile;
 import ifold.scene.Animation;
 import ifold.scene.Geometry;
@@ -64,18 +65,34 @@ final class FoldCommand implements Callable<Integer> {
             throw new UserError(script + ": is a folder, expected a fold script");
         }
         LoadedModel.requireRegularFile(script);
+        CreasePattern pattern = null;
         try {
-            parsed = FoldScript.read(script);
+            if (isFoldFile(script)) {
+                // A FOLD crease pattern, folded one crease line at a time.
+                pattern = CreasePattern.read(script);
+                parsed = pattern.script();
+            } else {
+                parsed = FoldScript.read(script);
+            }
             nanosPerFold = new long[parsed.steps().size()];
             result = parsed.play(nanosPerFold, maxFaces);
+            if (pattern != null) {
+                pattern.verify(result);
+            }
         } catch (NoSuchFileException e) {
             throw new UserError(script + ": no such file");
         } catch (AccessDeniedException e) {
             throw new UserError(script + ": permission denied");
         } catch (IOException e) {
             throw new UserError(script + ": cannot read: " + e.getMessage());
+        } catch (CreasePattern.Refused e) {
+            outputs.frameOptions.removeFolderIfUnused();
+            throw new UserError(script + ": " + e.getMessage());
         } catch (FoldScriptException e) {
             outputs.frameOptions.removeFolderIfUnused();
+            if (pattern != null) {
+                throw new UserError(script + ": cannot be folded one crease line at a time in this order: " + e.getMessage());
+            }
             throw new UserError(script + (e.line() > 0 ? ":" + e.getMessage().replaceFirst("^line ", "") : ": " + e.getMessage()));
         }
         WrapGeometry folded = WrapGeometry.of(result.sheet(), result.frames());
@@ -100,6 +117,19 @@ final class FoldCommand implements Callable<Integer> {
                 false, spec);
         out.flush();
         return 0;
+    }
+
+    /** Whether the file is FOLD (JSON) rather than a fold script: its first character that is not white space is '{'. */
+    private static boolean isFoldFile(Path file) throws IOException {
+        try (java.io.InputStream in = Files.newInputStream(file)) {
+            byte[] head = in.readNBytes(4096);
+            for (byte b : head) {
+                if (!Character.isWhitespace(b)) {
+                    return b == '{';
+                }
+            }
+            return false;
+        }
     }
 
     private static Map<String, Object> figures(ScriptFolding.Result result, WrapGeometry folded) {

@@ -68,4 +68,30 @@ class FoldCommandTest {
         assertFalse(Files.exists(obj));
         CliTest.assertOneLineError(CliTest.run("fold", file.toString(), "--no-view", "--max-faces", "0"), "--max-faces");
     }
+
+    @Test
+    void aCreasePatternExportedAsFoldFoldsBackToTheSamePattern() throws Exception {
+        for (String name : new String[] {"square-quarters", "pleat20", "zigzag-turn"}) {
+            Path pattern = dir.resolve(name + ".cp.fold");
+            Path first = dir.resolve(name + ".json");
+            Path second = dir.resolve(name + ".back.json");
+            assertEquals(0, CliTest.run("fold", "models/scripts/" + name + ".fold", "--no-view", "--export-fold", pattern.toString(),
+                    "--report", first.toString()).code());
+            CliTest.Run back = CliTest.run("fold", pattern.toString(), "--no-view", "--export-fold", dir.resolve("again.fold").toString(),
+                    "--report", second.toString());
+            assertEquals(0, back.code(), name + ": " + back.err());
+            String a = Files.readString(first);
+            String b = Files.readString(second);
+            for (String key : new String[] {"mountains", "valleys", "maxLayers"}) {
+                assertEquals(CliTest.number(a, key), CliTest.number(b, key), 0, name + ": " + key);
+            }
+        }
+        // A pattern whose creases cannot be folded line by line in the order of its edges (the
+        // zig-zag's tucks come between its turns) is refused, saying so.
+        Path zigzag = dir.resolve("zigzag.fold");
+        assertEquals(0, CliTest.run("demo", "zigzag", "--no-view", "--export-fold", zigzag.toString()).code());
+        CliTest.assertOneLineError(CliTest.run("fold", zigzag.toString(), "--no-view"), "cannot be folded one crease line at a time");
+        Path broken = Files.writeString(dir.resolve("broken.fold"), "{\"vertices_coords\": [[0, 0], [1, 0]],\n \"edges_vertices\": [[0, 1]");
+        CliTest.assertOneLineError(CliTest.run("fold", broken.toString(), "--no-view"), "broken.fold", "JSON");
+    }
 }

@@ -1,0 +1,260 @@
+package ifold.fold;
+
+import com.fasterxml.jackson.core.JsonFactory;
+import com.fasterxml.jackson.core.JsonParseException;
+import com.fasterxml.jackson.core.JsonParser;
+import com.fasterxml.jackson.core.JsonToken;
+import ifold.script.FoldScript;
+import ifold.script.ScriptFolding;
+import ifold.sheet.Sheet;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+
+/**
+ * A FOLD crease pattern read to be folded, one crease line at a time: in the order the file
+ * gives ({@code edges_ifold:order}, a list of edge indices) or else in the order of its edges.
+ * Each crease line is a flap fold of the paper beyond it (the side away from the sheet's first
+ * corner), valley or mountain as the file says, by its fold angle or 180°. Once folded, every
+ * crease of the file must come out as the file labels it; a pattern that cannot be folded that
+ * way is refused, naming the edge.
+ *
+ * @param length the sheet's extent along u
+ * @param width its extent along v
+ * @param script the folds, as a fold script on a sheet with its corner at (0, 0)
+ * @param creases each mountain or valley edge: u1, v1, u2, v2 (moved to the sheet's corner) and +1 (valley) or -1
+ */
+public record CreasePattern(double length, double width, FoldScript script, List<double[]> creases) {
+
+    /** A crease pattern that cannot be read, or cannot be folded as iFold folds. */
+    public static final class Refused extends Exception {
+        private static final long serialVersionUID = 1L;
+
+        public Refused(String message) {
+            super(message);
+        }
+    }
+
+    /**
+     * Reads {@code file}, a FOLD file whose key frame is a crease pattern. The paper's thickness
+     * is the file's {@code frame_ifold:thickness}, or a thousandth of the sheet's diagonal.
+     */
+    @SuppressWarnings("unchecked")
+    public static CreasePattern read(Path file) throws IOException, Refused {
+        Map<String, Object> fold;
+        try (JsonParser parser = new JsonFactory().createParser(file.toFile())) {
+            if (parser.nextToken() != JsonToken.START_OBJECT) {
+                throw new Refused("not a FOLD file: it does not begin with a JSON object");
+            }
+            fold = (Map<String, Object>) value(parser);
+        } catch (JsonParseException e) {
+            throw new Refused(String.format(Locale.ROOT, "line %d: not valid JSON: %s", e.getLocation().getLineNr(),
+                    e.getOriginalMessage()));
+        }
+        List<double[]> vertices = points(fold, "vertices_coords");
+        List<double[]> edges = points(fold, "edges_vertices");
+        Object assignmentsValue = fold.get("edges_assignment");
+        if (!(assignmentsValue instanceof List<?> assignments) || assignments.size() != edges.size()) {
+            throw new Refused("edges_assignment must give each edge B, M, V or F");
+        }
+        List<Object> angles = fold.get("edges_foldAngle") instanceof List<?> list ? (List<Object>) list : null;
+        double[] box = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        for (double[] v : vertices) {
+            if (v.length < 2 || !Double.isFinite(v[0]) || !Double.isFinite(v[1])) {
+                throw new Refused("vertices_coords must hold finite 2D points");
+            }
+            box[0] = Math.min(box[0], v[0]);
+            box[1] = Math.min(box[1], v[1]);
+            box[2] = Math.max(box[2], v[0]);
+            box[3] = Math.max(box[3], v[1]);
+        }
+        double length = box[2] - box[0];
+        double width = box[3] - box[1];
+        if (!(length > 0) || !(width > 0)) {
+            throw new Refused("the crease pattern has no area");
+        }
+        double tolerance = 1e-9 * Math.hypot(length, width);
+        List<double[]> creases = new ArrayList<>();
+        List<Integer> creaseEdges = new ArrayList<>();
+        for (int e = 0; e < edges.size(); e++) {
+            double[] edge = edges.get(e);
+            int a = (int) edge[0];
+            int b = (int) edge[1];
+            if (edge.length != 2 || a != edge[0] || b != edge[1] || a < 0 || b < 0 || a >= vertices.size() || b >= vertices.size()) {
+                throw new Refused("edge " + e + ": edges_vertices must name two vertices");
+            }
+            double[] p = {vertices.get(a)[0] - box[0], vertices.get(a)[1] - box[1]};
+            double[] q = {vertices.get(b)[0] - box[0], vertices.get(b)[1] - box[1]};
+            String assignment = String.valueOf(assignments.get(e)).toUpperCase(Locale.ROOT);
+            switch (assignment) {
+                case "B" -> {
+                    boolean onBorder = (Math.abs(p[0] - q[0]) <= tolerance && (Math.abs(p[0]) <= tolerance || Math.abs(p[0] - length) <= tolerance))
+                            || (Math.abs(p[1] - q[1]) <= tolerance && (Math.abs(p[1]) <= tolerance || Math.abs(p[1] - width) <= tolerance));
+                    if (!onBorder) {
+                        throw new Refused("edge " + e + " is a border edge inside the sheet: iFold folds rectangular sheets");
+                    }
+                }
+                case "M", "V" -> {
+                    double angle = angles != null && angles.get(e) instanceof Number n ? Math.abs(n.doubleValue()) : 180;
+                    if (!(angle > 0 && angle <= 180)) {
+                        throw new Refused("edge " + e + ": its fold angle must be more than 0 and at most 180 degrees");
+                    }
+                    creases.add(new double[] {p[0], p[1], q[0], q[1], assignment.equals("V") ? 1 : -1, angle});
+                    creaseEdges.add(e);
+                }
+                case "F", "J", "C" -> {
+                    // flat, joined or cut: nothing to fold
+                }
+                default -> throw new Refused("edge " + e + " is " + assignment + ": iFold folds mountains and valleys (M, V), "
+                        + "not unassigned creases");
+            }
+        }
+        // The order of folding: the file's, or the edges'.
+        List<Integer> order = new ArrayList<>();
+        if (fold.get("edges_ifold:order") instanceof List<?> given) {
+            for (Object o : given) {
+                int e = o instanceof Number n ? n.intValue() : -1;
+                int k = creaseEdges.indexOf(e);
+                if (k < 0) {
+                    throw new Refused("edges_ifold:order names " + o + ", which is not a mountain or valley edge");
+                }
+                order.add(k);
+            }
+        } else {
+            for (int k = 0; k < creases.size(); k++) {
+                order.add(k);
+            }
+        }
+        double thickness = fold.get("frame_ifold:thickness") instanceof Number n && n.doubleValue() >= 0 ? n.doubleValue()
+                : 1e-3 * Math.hypot(length, width);
+        FoldScript.Builder builder = FoldScript.builder().rectangle(length, width).thickness(thickness);
+        List<double[]> folded = new ArrayList<>();
+        for (int k : order) {
+            double[] c = creases.get(k);
+            boolean done = false;
+            for (double[] line : folded) {
+                done |= onLine(line, c[0], c[1], tolerance) && onLine(line, c[2], c[3], tolerance);
+            }
+            if (done) {
+                continue; // folded with an earlier crease of its line
+            }
+            folded.add(c);
+            // The paper beyond the line from the sheet's first corner (0, 0) moves; if the line
+            // runs through that corner, from the opposite one.
+            double[] corner = onLine(c, 0, 0, tolerance) ? new double[] {length, width} : new double[] {0, 0};
+            double cross = (c[2] - c[0]) * (corner[1] - c[1]) - (c[3] - c[1]) * (corner[0] - c[0]);
+            FoldScript.Side moving = cross > 0 ? FoldScript.Side.RIGHT : FoldScript.Side.LEFT;
+            builder.flap(c[4] > 0 ? FoldScript.Kind.VALLEY : FoldScript.Kind.MOUNTAIN, c[5], c[0], c[1], c[2], c[3], moving);
+        }
+        return new CreasePattern(length, width, builder.build(), creases);
+    }
+
+    /**
+     * Refuses a folding whose creases do not come out as the pattern labels them: the pattern
+     * cannot be folded one crease line at a time in its order.
+     */
+    public void verify(ScriptFolding.Result result) throws Refused {
+        Sheet sheet = result.sheet();
+        FoldFile.Folded folded = new FoldFile.Folded(sheet, result.frames());
+        int[] levels = sheet.levels();
+        double tolerance = 1e-7 * Math.hypot(length, width);
+        for (int k = 0; k < creases.size(); k++) {
+            double[] c = creases.get(k);
+            double mu = (c[0] + c[2]) / 2;
+            double mv = (c[1] + c[3]) / 2;
+            double found = Double.NaN;
+            for (int f = 0; f < sheet.faceCount() && Double.isNaN(found); f++) {
+                int[] loop = sheet.loop(f);
+                for (int i = 0; i < loop.length; i++) {
+                    int a = loop[i];
+                    int b = loop[(i + 1) % loop.length];
+                    int g = sheet.faceAcross(a, b);
+                    if (g < 0 || !onSegment(sheet, a, b, mu, mv, tolerance)) {
+                        continue;
+                    }
+                    found = sheet.crease(a, b) == null ? 0 : FoldFile.foldAngle(folded, levels, f, g, a, b);
+                    break;
+                }
+            }
+            if (Double.isNaN(found) || found == 0 || Math.signum(found) != c[4]) {
+                throw new Refused(String.format(Locale.ROOT, "cannot be folded one crease line at a time in this order: the crease"
+                        + " (%.6g, %.6g)-(%.6g, %.6g) comes out %s, the file says %s", c[0], c[1], c[2], c[3],
+                        Double.isNaN(found) || found == 0 ? "flat" : found > 0 ? "a valley" : "a mountain", c[4] > 0 ? "valley" : "mountain"));
+            }
+        }
+    }
+
+    private static boolean onSegment(Sheet sheet, int a, int b, double u, double v, double tolerance) {
+        double du = sheet.u(b) - sheet.u(a);
+        double dv = sheet.v(b) - sheet.v(a);
+        double length = Math.hypot(du, dv);
+        double across = (du * (v - sheet.v(a)) - dv * (u - sheet.u(a))) / length;
+        double along = (du * (u - sheet.u(a)) + dv * (v - sheet.v(a))) / (length * length);
+        return Math.abs(across) <= tolerance && along > 0 && along < 1;
+    }
+
+    private static boolean onLine(double[] line, double u, double v, double tolerance) {
+        double du = line[2] - line[0];
+        double dv = line[3] - line[1];
+        return Math.abs(du * (v - line[1]) - dv * (u - line[0])) / Math.hypot(du, dv) <= tolerance;
+    }
+
+    private static List<double[]> points(Map<String, Object> fold, String key) throws Refused {
+        if (!(fold.get(key) instanceof List<?> list) || list.isEmpty()) {
+            throw new Refused("no " + key + ": a crease pattern needs vertices_coords, edges_vertices and edges_assignment");
+        }
+        List<double[]> points = new ArrayList<>();
+        for (Object item : list) {
+            if (!(item instanceof List<?> coords)) {
+                throw new Refused(key + " must be a list of lists of numbers");
+            }
+            double[] p = new double[coords.size()];
+            for (int i = 0; i < p.length; i++) {
+                if (!(coords.get(i) instanceof Number n)) {
+                    throw new Refused(key + " must be a list of lists of numbers");
+                }
+                p[i] = n.doubleValue();
+            }
+            points.add(p);
+        }
+        return points;
+    }
+
+    private static Object value(JsonParser parser) throws IOException {
+        JsonToken token = parser.currentToken();
+        switch (token) {
+            case START_OBJECT -> {
+                Map<String, Object> map = new LinkedHashMap<>();
+                while (parser.nextToken() != JsonToken.END_OBJECT) {
+                    String name = parser.currentName();
+                    parser.nextToken();
+                    map.put(name, value(parser));
+                }
+                return map;
+            }
+            case START_ARRAY -> {
+                List<Object> list = new ArrayList<>();
+                while (parser.nextToken() != JsonToken.END_ARRAY) {
+                    list.add(value(parser));
+                }
+                return list;
+            }
+            case VALUE_NUMBER_INT, VALUE_NUMBER_FLOAT -> {
+                return parser.getDoubleValue();
+            }
+            case VALUE_STRING -> {
+                return parser.getText();
+            }
+            case VALUE_TRUE, VALUE_FALSE -> {
+                return parser.getBooleanValue();
+            }
+            default -> {
+                return null;
+            }
+        }
+    }
+}
