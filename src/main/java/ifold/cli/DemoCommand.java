@@ -205,8 +205,11 @@ final class DemoCommand implements Runnable {
         @Spec
         CommandSpec spec;
 
-        @Option(names = "--angle", paramLabel = "DEG", required = true, description = "the turn, more than 0 and less than 180 degrees")
+        @Option(names = "--angle", paramLabel = "DEG", required = true, description = "the turn, from 0.01 to 179.9 degrees")
         double angle;
+
+        static final double MIN_TURN = 0.01;
+        static final double MAX_TURN = 179.9;
 
         @Option(names = "--overhang", paramLabel = "X", defaultValue = "0",
                 description = "how far beyond the fold across the turn fold begins, in strip widths (default ${DEFAULT-VALUE}: the basic gadget)")
@@ -223,12 +226,11 @@ final class DemoCommand implements Runnable {
 
         @Override
         public Integer call() {
-            if (!(angle >= 0.5 && angle < 180)) {
-                throw UserError.usage("option --angle: must be at least 0.5 and less than 180 degrees, got " + angle);
-            }
-            if (angle > 175) {
-                throw UserError.usage("option --angle: above 175 degrees the turn fold runs more than 20 widths along the strip; "
-                        + "turn in two gadgets instead, got " + angle);
+            // The turn crease runs w·tan(θ/2) along the strip: past 179.9° that is over 1,000 widths,
+            // and below 0.01° the two creases part by less than a millionth of the width.
+            if (!(angle >= MIN_TURN && angle <= MAX_TURN)) {
+                throw UserError.usage(String.format(Locale.ROOT, "option --angle: must be from %s to %s degrees, got %s", MIN_TURN,
+                        MAX_TURN, angle));
             }
             if (!(overhang >= 0) || !Double.isFinite(overhang) || overhang > 100) {
                 throw UserError.usage("option --overhang: must be between 0 and 100 strip widths, got " + overhang);
@@ -325,6 +327,11 @@ final class DemoCommand implements Runnable {
         if (far > 1e6 * size) {
             // Thickness offsets of a millionth of the size would drown in the coordinates' rounding.
             throw UserError.usage("option --triangle: the triangle is too small for its distance from the origin: move it nearer");
+        }
+        if (far > 1e150 || size < 1e-150) {
+            // Lengths squared (areas, the stacks' overlaps) would overflow or underflow a double.
+            throw UserError.usage(String.format(Locale.ROOT, "option --triangle: iFold wraps triangles of sizes from 1e-150 to 1e150,"
+                    + " got %s up to %.3g", far > 1e150 ? "coordinates" : "sides", far > 1e150 ? far : size));
         }
         return triangle;
     }

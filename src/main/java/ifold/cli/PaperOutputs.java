@@ -192,7 +192,7 @@ final class PaperOutputs {
      * Whether a window can open: a display is set, and it is not the virtual one the launcher
      * started only to render frames.
      */
-    private static boolean hasDisplay() {
+    static boolean hasDisplay() {
         String display = System.getenv("DISPLAY");
         return display != null && !display.isEmpty() && System.getenv("IFOLD_IN_XVFB") == null;
     }

@@ -73,8 +73,13 @@ final class ViewCommand implements Callable<Integer> {
             case "rainbow" -> PathView.Colors.RAINBOW;
             default -> throw UserError.usage("option --colors: expected darkness or rainbow, got '" + colorsName + "'");
         };
-        frameOptions.check();
         PrintWriter err = spec.commandLine().getErr();
+        // Without a display it renders frames where the window was wanted, as every command does.
+        if (!frameOptions.renders() && closeAfter == 0 && !PaperOutputs.hasDisplay()) {
+            frameOptions.frames = Path.of("view-frames");
+            err.println("ifold: no display: rendering frames into " + frameOptions.frames.toAbsolutePath() + "/ instead");
+        }
+        frameOptions.check();
         PrintWriter out = spec.commandLine().getOut();
         boolean refined = refine || path;
         LoadedModel loaded = LoadedModel.load(model, new MeshBuilder.Options(strict, refined));

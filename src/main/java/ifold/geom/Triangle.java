@@ -18,9 +18,9 @@ public final class Triangle {
                 throw new IllegalArgumentException("the triangle's corners must be finite numbers");
             }
         }
-        Vector3d cross = new Vector3d(b).sub(a).cross(new Vector3d(c).sub(a));
-        double longest = Math.max(a.distanceSquared(b), Math.max(b.distanceSquared(c), c.distanceSquared(a)));
-        if (Tolerance.isDegenerateTriangle(cross.length(), longest)) {
+        // Measured as Triangles measures faces: on edges scaled to order 1, whatever the size.
+        double[] xyz = {a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), c.x(), c.y(), c.z()};
+        if (Triangles.isDegenerate(xyz, 0, 1, 2)) {
             throw new IllegalArgumentException("the triangle has no area: its corners lie on one line");
         }
     }

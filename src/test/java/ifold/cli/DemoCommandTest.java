@@ -62,6 +62,9 @@ class DemoCommandTest {
         CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--triangle", "0,0,10,0,5,0.05", "--width", "0.0025", "--no-view",
                 "--report", out), "cannot wrap this triangle", "degrees");
         CliTest.assertOneLineError(CliTest.run("demo", "turn", "--angle", "180", "--no-view"), "--angle");
+        CliTest.assertOneLineError(CliTest.run("demo", "turn", "--angle", "0.001", "--no-view"), "--angle", "0.01 to 179.9");
+        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--triangle", "0,0,1e308,0,3e307,8e307", "--no-view"), "--triangle",
+                "1e150");
         CliTest.assertOneLineError(CliTest.run("demo", "turn", "--angle", "90", "--overhang", "-1", "--no-view"), "--overhang");
         assertFalse(Files.exists(report), "nothing written by a refused run");
         assertEquals(2, CliTest.run("demo").code(), "a demo must be named");
@@ -101,6 +104,16 @@ class DemoCommandTest {
         for (String start : new String[] {"A", "B", "C"}) {
             CliTest.Run run = CliTest.run("demo", "zigzag", "--start", start, "--no-view");
             assertEquals(0, run.code(), start + ": " + run.err());
+        }
+    }
+
+    @Test
+    void theTurnGadgetTakesTheWholeRangeItsGeometryAllows() throws Exception {
+        for (String angle : new String[] {"0.05", "179.5"}) {
+            Path report = dir.resolve("turn" + angle + ".json");
+            CliTest.Run run = CliTest.run("demo", "turn", "--angle", angle, "--no-view", "--report", report.toString());
+            assertEquals(0, run.code(), run.err());
+            assertEquals(Double.parseDouble(angle), CliTest.number(Files.readString(report), "measuredAngle"), 1e-9);
         }
     }
 
