@@ -224,14 +224,10 @@ public final class PaperView {
         }
     }
 
+    /** Point p turned by {@code angle} about the line through {@code origin} along the unit {@code axis}. */
     private static double[] turned(double[] p, double[] origin, double[] axis, double angle) {
-        double[] v = {p[0] - origin[0], p[1] - origin[1], p[2] - origin[2]};
-        double c = Math.cos(angle);
-        double s = Math.sin(angle);
-        double kv = axis[0] * v[0] + axis[1] * v[1] + axis[2] * v[2];
-        double[] kxv = {axis[1] * v[2] - axis[2] * v[1], axis[2] * v[0] - axis[0] * v[2], axis[0] * v[1] - axis[1] * v[0]};
-        return new double[] {origin[0] + v[0] * c + kxv[0] * s + axis[0] * kv * (1 - c),
-            origin[1] + v[1] * c + kxv[1] * s + axis[1] * kv * (1 - c), origin[2] + v[2] * c + kxv[2] * s + axis[2] * kv * (1 - c)};
+        double[] v = HostFrame.turn(new double[] {p[0] - origin[0], p[1] - origin[1], p[2] - origin[2]}, axis, angle);
+        return new double[] {origin[0] + v[0], origin[1] + v[1], origin[2] + v[2]};
     }
 
     /** A mesh being put together: points, fans of convex faces, outlines (creases in red). */

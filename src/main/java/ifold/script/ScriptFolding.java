@@ -544,19 +544,9 @@ public final class ScriptFolding {
     /** The frame turned by {@code angle} about the line through {@code point} with direction {@code axis}. */
     static HostFrame rotate(HostFrame frame, double[] point, double[] axis, double angle) {
         double[] k = unit(axis);
-        double[] origin = add(point, turn(sub(frame.origin(), point), k, angle));
-        return new HostFrame(origin, turn(frame.ex(), k, angle), turn(frame.ey(), k, angle), turn(frame.normal(), k, angle),
+        double[] origin = add(point, HostFrame.turn(sub(frame.origin(), point), k, angle));
+        return new HostFrame(origin, HostFrame.turn(frame.ex(), k, angle), HostFrame.turn(frame.ey(), k, angle), HostFrame.turn(frame.normal(), k, angle),
                 frame.corners().clone());
-    }
-
-    /** Rodrigues: v turned by angle about the unit axis k. */
-    static double[] turn(double[] v, double[] k, double angle) {
-        double c = Math.cos(angle);
-        double s = Math.sin(angle);
-        double[] kxv = cross(k, v);
-        double kv = dot(k, v);
-        return new double[] {v[0] * c + kxv[0] * s + k[0] * kv * (1 - c), v[1] * c + kxv[1] * s + k[1] * kv * (1 - c),
-            v[2] * c + kxv[2] * s + k[2] * kv * (1 - c)};
     }
 
     private static double[] add(double[] a, double[] b) {
