@@ -13,6 +13,7 @@ import ifold.scene.SceneMesh;
 import ifold.scene.WrapView;
 import ifold.sheet.FoldException;
 import ifold.sheet.Sheet;
+import ifold.wrap.ParameterException;
 import ifold.wrap.TurnGadget;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapAnalysis;
@@ -92,29 +93,16 @@ final class DemoCommand implements Runnable {
             Triangle shape = parseTriangle(triangle);
             int startCorner = corner(start, "--start");
             int endCorner = end == null ? (startCorner + 1) % 3 : corner(end, "--end");
-            if (endCorner == startCorner) {
-                throw UserError.usage("option --end: the strip must end at another corner than its start " + start.toUpperCase(Locale.ROOT));
-            }
             int enterCorner = enterFrom == null ? -1 : corner(enterFrom, "--enter-from");
-            if (enterCorner == startCorner) {
-                throw UserError.usage("option --enter-from: the strip comes in beside one of the corners other than the start");
+            Wrap.Options options;
+            try {
+                options = Wrap.Options.loneTriangle(shape, new Wrap.Ends(startCorner, endCorner, enterCorner),
+                        width == null ? Double.NaN : width, thickness == null ? Double.NaN : thickness);
+            } catch (ParameterException e) {
+                throw UserError.usage(e);
             }
-            double w = width == null ? shape.height(startCorner) / 5 : width;
-            if (!(w > 0) || !Double.isFinite(w)) {
-                throw UserError.usage("option --width: must be a positive number, got " + width);
-            }
-            if (w > shape.height(startCorner)) {
-                throw UserError.usage(String.format(Locale.ROOT, "option --width: %s is wider than the altitude %.4g from the start corner: "
-                        + "one pass of that width already covers the triangle", width, shape.height(startCorner)));
-            }
-            if (w < shape.height(startCorner) / 400) {
-                throw UserError.usage(String.format(Locale.ROOT, "option --width: %s is under 1/400 of the altitude %.4g: "
-                        + "the demo keeps to 400 passes", width, shape.height(startCorner)));
-            }
-            double t = thickness == null ? w / 80 : thickness;
-            if (!(t >= 0) || !Double.isFinite(t) || t > w / 4) {
-                throw UserError.usage("option --thickness: must be zero or more and at most a quarter of the width, got " + thickness);
-            }
+            double w = options.width();
+            double t = options.thickness();
             PrintWriter out = spec.commandLine().getOut();
             outputs.check("zigzag", spec.commandLine().getErr(), true);
             PolygonSoup path = new PolygonSoup();
@@ -124,7 +112,7 @@ final class DemoCommand implements Runnable {
             path.addTriangle(0, 1, 2);
             Wrap.Result result;
             try {
-                result = Wrap.wrap(path, new int[] {0, 1}, new Wrap.Options(w, t, new Wrap.Ends(startCorner, endCorner, enterCorner)));
+                result = Wrap.wrap(path, new int[] {0, 1}, options);
             } catch (Wrap.WrapException e) {
                 outputs.frameOptions.removeFolderIfUnused();
                 throw new UserError("cannot wrap this triangle: " + e.getMessage());
@@ -208,9 +196,6 @@ final class DemoCommand implements Runnable {
         @Option(names = "--angle", paramLabel = "DEG", required = true, description = "the turn, from 0.01 to 179.9 degrees")
         double angle;
 
-        static final double MIN_TURN = 0.01;
-        static final double MAX_TURN = 179.9;
-
         @Option(names = "--overhang", paramLabel = "X", defaultValue = "0",
                 description = "how far beyond the fold across the turn fold begins, in strip widths (default ${DEFAULT-VALUE}: the basic gadget)")
         double overhang;
@@ -226,27 +211,18 @@ final class DemoCommand implements Runnable {
 
         @Override
         public Integer call() {
-            // The turn crease runs w·tan(θ/2) along the strip: past 179.9° that is over 1,000 widths,
-            // and below 0.01° the two creases part by less than a millionth of the width.
-            if (!(angle >= MIN_TURN && angle <= MAX_TURN)) {
-                throw UserError.usage(String.format(Locale.ROOT, "option --angle: must be from %s to %s degrees, got %s", MIN_TURN,
-                        MAX_TURN, angle));
+            TurnGadget.Options options;
+            try {
+                options = new TurnGadget.Options(angle, overhang, width, thickness == null ? Double.NaN : thickness);
+            } catch (ParameterException e) {
+                throw UserError.usage(e);
             }
-            if (!(overhang >= 0) || !Double.isFinite(overhang) || overhang > 100) {
-                throw UserError.usage("option --overhang: must be between 0 and 100 strip widths, got " + overhang);
-            }
-            if (!(width > 0) || !Double.isFinite(width)) {
-                throw UserError.usage("option --width: must be a positive number, got " + width);
-            }
-            double t = thickness == null ? width / 50 : thickness;
-            if (!(t >= 0) || !Double.isFinite(t) || t > width / 4) {
-                throw UserError.usage("option --thickness: must be zero or more and at most a quarter of the width, got " + thickness);
-            }
+            double t = options.thickness();
             PrintWriter out = spec.commandLine().getOut();
             outputs.check("turn", spec.commandLine().getErr(), true);
             TurnGadget.Result gadget;
             try {
-                gadget = TurnGadget.turn(angle, overhang * width, width, t, 4 * width, 6 * width);
+                gadget = TurnGadget.turn(options);
             } catch (FoldException e) {
                 outputs.frameOptions.removeFolderIfUnused();
                 throw new UserError("cannot make this turn: " + e.getMessage());

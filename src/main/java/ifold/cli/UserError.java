@@ -1,5 +1,7 @@
 package ifold.cli;
 
+import ifold.wrap.ParameterException;
+
 /**
  * A failure the user can act on: printed as one line, {@code ifold: MESSAGE}. An error in what
  * the user typed (an option's value, a path that cannot be an output) exits
@@ -29,6 +31,15 @@ final class UserError extends RuntimeException {
     /** An error in what the user typed: exit 2. */
     static UserError usage(String message) {
         return new UserError(message, USAGE_EXIT_CODE);
+    }
+
+    /**
+     * A parameter the core refused, as an error in the option that gave it: the core's name
+     * {@code enterFrom} is the option {@code --enter-from}.
+     */
+    static UserError usage(ParameterException e) {
+        String option = "--" + e.parameter().replaceAll("([A-Z])", "-$1").toLowerCase(java.util.Locale.ROOT);
+        return usage("option " + option + ": " + e.getMessage());
     }
 
     int exitCode() {

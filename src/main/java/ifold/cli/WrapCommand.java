@@ -11,6 +11,7 @@ import ifold.scene.Material;
 import ifold.scene.Scene;
 import ifold.scene.SceneMesh;
 import ifold.scene.WrapView;
+import ifold.wrap.ParameterException;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapAnalysis;
 import ifold.wrap.WrapExport;
@@ -57,6 +58,10 @@ final class WrapCommand implements Callable<Integer> {
     @Option(names = "--thickness", paramLabel = "T", description = "the paper's thickness (default: the width / 80)")
     Double thickness;
 
+    @Option(names = "--max-faces", paramLabel = "N", defaultValue = "" + Wrap.DEFAULT_MAX_FACES,
+            description = "the most faces of paper the wrap may make, about 2.4 kB of memory each (default ${DEFAULT-VALUE})")
+    int maxFaces;
+
     @Option(names = "--strict", description = "refuse defective input instead of repairing it")
     boolean strict;
 
@@ -65,25 +70,22 @@ final class WrapCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        if (width != null && (!(width > 0) || !Double.isFinite(width))) {
-            throw new CommandLine.ParameterException(spec.commandLine(), "option --width: must be a positive number, got " + width);
-        }
-        if (thickness != null && (!(thickness >= 0) || !Double.isFinite(thickness))) {
-            throw new CommandLine.ParameterException(spec.commandLine(), "option --thickness: must be zero or more, got " + thickness);
-        }
-        if (thickness != null && width != null && thickness > width / 4) {
-            throw new CommandLine.ParameterException(spec.commandLine(), "option --thickness: at most a quarter of the width, got " + thickness);
+        Wrap.Options options;
+        try { // checked before the model is read: what can be checked without it
+            options = new Wrap.Options(width == null ? Double.NaN : width, thickness == null ? Double.NaN : thickness, null, maxFaces);
+        } catch (ParameterException e) {
+            throw UserError.usage(e);
         }
         outputs.check("wrap", spec.commandLine().getErr(), true);
         try {
-            return wrap();
+            return wrap(options);
         } catch (UserError | CommandLine.ParameterException e) {
             outputs.discardWritten(); // the frames folder check() made, or files written before the failure
             throw e;
         }
     }
 
-    private int wrap() {
+    private int wrap(Wrap.Options options) {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         Path exportObj = outputs.exportObj;
@@ -99,14 +101,13 @@ final class WrapCommand implements Callable<Integer> {
         long loadedAt = System.nanoTime();
         HamiltonianRefinement.Result refinement = HamiltonianRefinement.refine(mesh);
         long refinedAt = System.nanoTime();
-        double w = width != null ? width : Wrap.defaultWidth(refinement);
-        if (thickness != null && thickness > w / 4) {
-            throw new CommandLine.ParameterException(spec.commandLine(), "option --thickness: at most a quarter of the width "
-                    + w + ", got " + thickness);
-        }
         Wrap.Result result;
         try {
-            result = Wrap.wrap(refinement, new Wrap.Options(w, thickness == null ? Double.NaN : thickness));
+            result = Wrap.wrap(refinement, options);
+        } catch (ParameterException e) {
+            throw UserError.usage(e);
+        } catch (Wrap.FaceLimitException e) {
+            throw new UserError(model + ": cannot wrap: " + e.getMessage() + " (--max-faces raises it)");
         } catch (Wrap.WrapException e) {
             throw new UserError(model + ": cannot wrap: " + e.getMessage());
         }

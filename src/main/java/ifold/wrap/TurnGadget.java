@@ -30,6 +30,48 @@ public final class TurnGadget {
     }
 
     /**
+     * The gadget asked for: a strip of width {@code width}, turned by {@code angle} degrees with an
+     * overhang of {@code overhang} widths, running 4 widths before the turn and 6 after it. The
+     * turn crease runs w·tan(θ/2) along the strip: past {@link #MAX_ANGLE} that is over 1,000
+     * widths, and below {@link #MIN_ANGLE} the two creases part by less than a millionth of the
+     * width.
+     *
+     * @param thickness the paper's thickness, or NaN for width / 50; at most a quarter of the width
+     * @throws ParameterException naming the value out of range
+     */
+    public record Options(double angle, double overhang, double width, double thickness) {
+        public static final double MIN_ANGLE = 0.01;
+        public static final double MAX_ANGLE = 179.9;
+        /** The most overhang, in strip widths. */
+        public static final double MAX_OVERHANG = 100;
+
+        public Options {
+            if (!(angle >= MIN_ANGLE && angle <= MAX_ANGLE)) {
+                throw new ParameterException("angle", String.format(java.util.Locale.ROOT, "must be from %s to %s degrees, got %s",
+                        MIN_ANGLE, MAX_ANGLE, angle));
+            }
+            if (!(overhang >= 0 && overhang <= MAX_OVERHANG)) {
+                throw new ParameterException("overhang", "must be between 0 and " + (int) MAX_OVERHANG + " strip widths, got " + overhang);
+            }
+            if (!(width > 0) || !Double.isFinite(width)) {
+                throw new ParameterException("width", "must be a positive number, got " + width);
+            }
+            if (Double.isNaN(thickness)) {
+                thickness = width / 50;
+            }
+            if (!(thickness >= 0) || !Double.isFinite(thickness) || thickness > width / 4) {
+                throw new ParameterException("thickness", "must be zero or more and at most a quarter of the width, got " + thickness);
+            }
+        }
+    }
+
+    /** Makes the gadget {@code options} asks for. */
+    public static Result turn(Options options) throws FoldException {
+        double w = options.width();
+        return turn(options.angle(), options.overhang() * w, w, options.thickness(), 4 * w, 6 * w);
+    }
+
+    /**
      * The gadget made.
      *
      * @param wrap the strip on its table: one strip, one host (a triangle holding all the paper,

@@ -1,6 +1,7 @@
 package ifold.wrap;
 
 import ifold.geom.SlantedEdges;
+import ifold.geom.Triangle;
 import ifold.mesh.IndexedPolygons;
 import ifold.refine.HamiltonianRefinement;
 import ifold.sheet.FoldException;
@@ -53,25 +54,86 @@ public final class Wrap {
     public static final int MAX_TUCKS = 300;
 
     /**
-     * The most passes over all triangles: each is a few faces and folds, so this keeps a wrap
-     * within a few seconds and a gigabyte.
+     * The most faces of paper a wrap makes unless {@link Options#maxFaces} says otherwise: about
+     * 1.2 GB of memory (a 1,280-triangle icosphere takes 280,000). Each pass is at least one
+     * face, so a wrap that needs more passes is refused before any fold, and one whose faces
+     * cross the limit while folding is stopped there.
      */
-    public static final long MAX_PASSES = 2_000_000;
+    public static final int DEFAULT_MAX_FACES = 500_000;
 
     private Wrap() {
     }
 
     /**
-     * What to wrap with.
+     * What to wrap with. The constructor checks every value on its own (and the thickness
+     * against a width given); {@link #wrap} checks the thickness against a default width, and
+     * the width against the triangles.
      *
      * @param width the strip's width, or NaN for {@link #defaultWidth}
-     * @param thickness the paper's thickness, or NaN for width / 80
+     * @param thickness the paper's thickness, or NaN for width / 80; at most a quarter of the width
      * @param ends for paths of one triangle, where the strip starts, ends and comes in; null to
      *     let the planner choose (a path of several triangles sets them itself)
+     * @param maxFaces the most faces of paper the wrap may make
+     * @throws ParameterException naming the value out of range
      */
-    public record Options(double width, double thickness, Ends ends) {
+    public record Options(double width, double thickness, Ends ends, int maxFaces) {
+        /** The widest strip of a lone triangle, over its altitude from the start: one pass. */
+        public static final double LONE_WIDEST = 1;
+
+        /** The narrowest strip of a lone triangle, over its altitude from the start: 400 passes, each a few folds to watch. */
+        public static final double LONE_NARROWEST = 1.0 / 400;
+
+        public Options {
+            if (!Double.isNaN(width) && !(width > 0 && Double.isFinite(width))) {
+                throw new ParameterException("width", "must be a positive number, got " + width);
+            }
+            if (!Double.isNaN(thickness) && !(thickness >= 0 && Double.isFinite(thickness))) {
+                throw new ParameterException("thickness", "must be zero or more, got " + thickness);
+            }
+            if (!Double.isNaN(width) && thickness > width / 4) {
+                throw new ParameterException("thickness", "must be at most a quarter of the width " + width + ", got " + thickness);
+            }
+            if (maxFaces < 1) {
+                throw new ParameterException("maxFaces", "must be at least 1, got " + maxFaces);
+            }
+        }
+
+        public Options(double width, double thickness, Ends ends) {
+            this(width, thickness, ends, DEFAULT_MAX_FACES);
+        }
+
         public Options(double width, double thickness) {
             this(width, thickness, null);
+        }
+
+        /**
+         * The options for wrapping the lone triangle {@code shape} (the single-triangle demo):
+         * a width of NaN is a fifth of the altitude from the start corner, a thickness of NaN the
+         * width / 80. The width must lie between {@link #LONE_NARROWEST} and {@link #LONE_WIDEST}
+         * times that altitude.
+         *
+         * @throws ParameterException naming the value out of range
+         */
+        public static Options loneTriangle(Triangle shape, Ends ends, double width, double thickness) {
+            double altitude = shape.height(ends.start());
+            double w = Double.isNaN(width) ? altitude / 5 : width;
+            if (!(w > 0) || !Double.isFinite(w)) {
+                throw new ParameterException("width", "must be a positive number, got " + w);
+            }
+            if (w > altitude * LONE_WIDEST) {
+                throw new ParameterException("width", String.format(Locale.ROOT, "%s is wider than the altitude %.4g from the start "
+                        + "corner: one pass of that width already covers the triangle", w, altitude));
+            }
+            if (w < altitude * LONE_NARROWEST) {
+                throw new ParameterException("width", String.format(Locale.ROOT, "%s is under 1/400 of the altitude %.4g from the "
+                        + "start corner: a lone triangle takes at most 400 passes", w, altitude));
+            }
+            return new Options(w, Double.isNaN(thickness) ? w / 80 : thickness, ends, DEFAULT_MAX_FACES);
+        }
+
+        /** These options with another limit on faces. */
+        public Options withMaxFaces(int limit) {
+            return new Options(width, thickness, ends, limit);
         }
     }
 
@@ -88,14 +150,18 @@ public final class Wrap {
      */
     public record Ends(int start, int end, int enterFrom) {
         public Ends {
-            if (start < 0 || start > 2 || end < 0 || end > 2) {
-                throw new IllegalArgumentException("corners are 0, 1 or 2");
+            if (start < 0 || start > 2) {
+                throw new ParameterException("start", "corners are 0, 1 or 2, got " + start);
+            }
+            if (end < 0 || end > 2) {
+                throw new ParameterException("end", "corners are 0, 1 or 2, got " + end);
             }
             if (start == end) {
-                throw new IllegalArgumentException("the strip must end at another corner than its start");
+                throw new ParameterException("end", "the strip must end at another corner than its start " + cornerName(start));
             }
             if (enterFrom != -1 && (enterFrom < 0 || enterFrom > 2 || enterFrom == start)) {
-                throw new IllegalArgumentException("the strip comes in beside one of the corners other than its start");
+                throw new ParameterException("enterFrom", "the strip comes in beside one of the corners other than its start "
+                        + cornerName(start));
             }
         }
     }
@@ -187,10 +253,19 @@ public final class Wrap {
     }
 
     /** A width the path cannot take, or a triangle the tucks cannot finish: the message names the triangle. */
-    public static final class WrapException extends Exception {
+    public static class WrapException extends Exception {
         private static final long serialVersionUID = 1L;
 
         public WrapException(String message) {
+            super(message);
+        }
+    }
+
+    /** A wrap that would make more faces of paper than {@link Options#maxFaces} allows. */
+    public static final class FaceLimitException extends WrapException {
+        private static final long serialVersionUID = 1L;
+
+        public FaceLimitException(String message) {
             super(message);
         }
     }
@@ -293,12 +368,12 @@ public final class Wrap {
         double widest = narrowestTriangle[0];
         int narrowest = (int) narrowestTriangle[1];
         double width = Double.isNaN(options.width()) ? widest / DEFAULT_PASSES : options.width();
-        if (!(width > 0) || !Double.isFinite(width)) {
-            throw new IllegalArgumentException("the strip width must be a positive number, got " + width);
+        if (!(width > 0) || !Double.isFinite(width)) { // no triangle with an altitude to take a default from
+            throw new WrapException("no triangle gives the strip a width: give one");
         }
         double thickness = Double.isNaN(options.thickness()) ? width / 80 : options.thickness();
-        if (!(thickness >= 0) || !Double.isFinite(thickness)) {
-            throw new IllegalArgumentException("the thickness must be zero or more, got " + thickness);
+        if (thickness > width / 4) {
+            throw new ParameterException("thickness", "must be at most a quarter of the width " + width + ", got " + thickness);
         }
         List<Strip> strips = new ArrayList<>();
         List<Step> steps = new ArrayList<>();
@@ -330,9 +405,10 @@ public final class Wrap {
                 }
             }
         }
-        if (passes > MAX_PASSES) {
-            throw new WrapException(String.format(Locale.ROOT, "a strip %.4g wide would need %d passes, more than the %d iFold makes: "
-                    + "triangle %s alone needs %d; %s", width, passes, MAX_PASSES, cornersText(mesh, most), mostPasses,
+        if (passes > options.maxFaces()) {
+            throw new FaceLimitException(String.format(Locale.ROOT, "a strip %.4g wide would need %d passes, each at least a face "
+                    + "of paper, more than the limit of %d faces: triangle %s alone needs %d; %s", width, passes, options.maxFaces(),
+                    cornersText(mesh, most), mostPasses,
                     Double.isNaN(options.width()) ? "the default strip is set by the narrowest triangle ("
                     + cornersText(mesh, narrowest) + "): a model with slivers needs its faces remeshed first"
                     : "give a wider --width"));
@@ -340,7 +416,7 @@ public final class Wrap {
         for (int c = 0; c < plans.size(); c++) {
             PathPlan plan = plans.get(c);
             try {
-                strips.add(new Folding(mesh, plan, c, width, thickness, tolerance, steps).fold());
+                strips.add(new Folding(mesh, plan, c, width, thickness, tolerance, steps, options.maxFaces()).fold());
             } catch (FoldException e) {
                 throw new WrapException(e.getMessage());
             }
@@ -602,8 +678,11 @@ public final class Wrap {
         /** The caption's detail for the folds being made, and the pass they belong to. */
         private String detail = "";
         private String passNote = "";
+        private final int maxFaces;
 
-        Folding(IndexedPolygons mesh, PathPlan plan, int strip, double width, double thickness, double tolerance, List<Step> steps) {
+        Folding(IndexedPolygons mesh, PathPlan plan, int strip, double width, double thickness, double tolerance, List<Step> steps,
+                int maxFaces) {
+            this.maxFaces = maxFaces;
             this.mesh = mesh;
             this.plan = plan;
             this.strip = strip;
@@ -626,7 +705,7 @@ public final class Wrap {
             return new Strip(sheet, plan.first, plan.m, after);
         }
 
-        private void wrapTriangle(int i) throws FoldException {
+        private void wrapTriangle(int i) throws FoldException, WrapException {
             HostFrame frame = plan.frames[i];
             SlantedEdges edges = new SlantedEdges(frame.corners()[2], frame.corners()[4], frame.corners()[5]);
             double h = edges.h();
@@ -691,7 +770,7 @@ public final class Wrap {
         }
 
         /** A turn beyond a slanted edge from the pass in band [y, y + w] running in direction d to the band [next, next + w]. */
-        private void turn(SlantedEdges edges, int d, double y, double next, int host) throws FoldException {
+        private void turn(SlantedEdges edges, int d, double y, double next, int host) throws FoldException, WrapException {
             double x1 = d > 0 ? edges.rightmost(next, y + w) + margin : edges.leftmost(next, y + w) - margin;
             double shift = y - next;
             if (Math.abs(shift - w) <= 1e-9 * w) {
@@ -714,7 +793,7 @@ public final class Wrap {
         }
 
         /** From the last pass of triangle i (band [0, w], direction d) into the first pass of triangle i + 1. */
-        private void leave(int i, SlantedEdges edges, int d) throws FoldException {
+        private void leave(int i, SlantedEdges edges, int d) throws FoldException, WrapException {
             HostFrame here = plan.frames[i];
             HostFrame there = plan.frames[i + 1];
             int host = plan.first + i;
@@ -793,6 +872,7 @@ public final class Wrap {
                 String edgeName = plan.m == 1 ? "along edge " + frameCornerName(plan, i, from) + frameCornerName(plan, i, to) : "along an edge";
                 steps.add(new Step(Kind.TUCK, strip, host, pathIndex, plan.m, -1, tuck, sheet.faceCount(), null,
                         "tuck " + (tucks + 1) + ": excess folded under " + edgeName));
+                checkFaces();
             }
         }
 
@@ -832,7 +912,7 @@ public final class Wrap {
 
         /** A flat fold of the tail, recorded as a step with where the tail lay before and after. */
         private void tailFold(Kind kind, int host, double px, double py, double dx, double dy, Placement next, Crease crease)
-                throws FoldException {
+                throws FoldException, WrapException {
             int hostBefore = sheet.tailHost();
             Isometry2 before = sheet.tailPose();
             int face = sheet.foldTail(px, py, dx, dy, next, crease);
@@ -841,20 +921,31 @@ public final class Wrap {
 
         /** The fold of the tail over an edge onto the next triangle, recorded likewise. */
         private void tailCross(Kind kind, int host, double px, double py, double dx, double dy, int nextHost, Isometry2 development)
-                throws FoldException {
+                throws FoldException, WrapException {
             int hostBefore = sheet.tailHost();
             Isometry2 before = sheet.tailPose();
             int face = sheet.crossTail(px, py, dx, dy, nextHost, development);
             recordTail(kind, host, face, hostBefore, before, true);
         }
 
-        private void recordTail(Kind kind, int host, int face, int hostBefore, Isometry2 before, boolean over) {
+        /** Stops the wrap at the fold that takes the paper past the limit, before memory runs out. */
+        private void checkFaces() throws FaceLimitException {
+            if (sheet.faceCount() > maxFaces) {
+                throw new FaceLimitException(String.format(Locale.ROOT, "the strip has %d faces of paper on triangle %d of %d on the "
+                        + "path (%s), more than the limit of %d faces", sheet.faceCount(), pathIndex + 1, plan.m,
+                        cornersText(mesh, plan.first + pathIndex), maxFaces));
+            }
+        }
+
+        private void recordTail(Kind kind, int host, int face, int hostBefore, Isometry2 before, boolean over) throws FaceLimitException {
+            checkFaces();
             TailMove move = new TailMove(hostBefore, before, sheet.tailHost(), sheet.tailPose(), sheet.tailStart(false),
                     sheet.tailStart(true), over);
             steps.add(new Step(kind, strip, host, pathIndex, plan.m, face, null, sheet.faceCount(), move, detail));
         }
 
-        private void record(Kind kind, int host, int face) {
+        private void record(Kind kind, int host, int face) throws FaceLimitException {
+            checkFaces();
             steps.add(new Step(kind, strip, host, pathIndex, plan.m, face, null, sheet.faceCount(), null, detail));
         }
     }

@@ -69,6 +69,22 @@ class WrapCommandTest {
         assertFalse(Files.exists(report), "no report after a failure");
     }
 
+    @Test
+    void aWrapPastItsLimitOfFacesIsStoppedAndNamesTheLimit() throws Exception {
+        Path report = dir.resolve("r.json");
+        Path obj = dir.resolve("r.obj");
+        String[] outputs = {"--no-view", "--report", report.toString(), "--export-obj", obj.toString()};
+        assertOptionError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--max-faces", "0"}, outputs)), "--max-faces");
+        // The cube's default wrap takes nearly 300 passes and makes 2,686 faces.
+        CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--max-faces", "100"}, outputs)),
+                "cube.off", "passes", "more than the limit of 100 faces", "--max-faces");
+        CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--max-faces", "1000"}, outputs)),
+                "cube.off", "faces of paper on triangle", "more than the limit of 1000 faces", "--max-faces");
+        assertFalse(Files.exists(report), "no report after a failure");
+        assertFalse(Files.exists(obj), "no OBJ after a failure");
+        assertEquals(0, CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--max-faces", "100000"}, outputs)).code());
+    }
+
     private static void assertOptionError(CliTest.Run run, String option) {
         assertEquals(2, run.code(), "a mistyped option exits 2: " + run.err());
         assertTrue(run.err().startsWith("ifold: option " + option), run.err());

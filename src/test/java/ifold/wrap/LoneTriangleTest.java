@@ -131,7 +131,28 @@ class LoneTriangleTest {
     }
 
     @Test
+    void aLoneTriangleTakesOneTo400Passes() {
+        Triangle triangle = new Triangle(new Vector3d(0, 0, 0), new Vector3d(10, 0, 0), new Vector3d(4, 8, 0));
+        Wrap.Ends ends = new Wrap.Ends(2, 0, -1);
+        double altitude = triangle.height(2);
+        Wrap.Options options = Wrap.Options.loneTriangle(triangle, ends, Double.NaN, Double.NaN);
+        assertEquals(altitude / 5, options.width(), 1e-12, "a fifth of the altitude from the start by default");
+        assertEquals(options.width() / 80, options.thickness(), 1e-15);
+        Wrap.Options.loneTriangle(triangle, ends, altitude, 0); // one pass
+        Wrap.Options.loneTriangle(triangle, ends, altitude / 400, 0); // 400 passes
+        assertEquals("width", assertThrows(ParameterException.class,
+                () -> Wrap.Options.loneTriangle(triangle, ends, altitude * 1.001, 0)).parameter());
+        assertEquals("width", assertThrows(ParameterException.class,
+                () -> Wrap.Options.loneTriangle(triangle, ends, altitude / 401, 0)).parameter());
+        assertEquals("thickness", assertThrows(ParameterException.class,
+                () -> Wrap.Options.loneTriangle(triangle, ends, 1, 0.3)).parameter());
+    }
+
+    @Test
     void badEndsAreRefused() {
+        assertEquals("end", assertThrows(ParameterException.class, () -> new Wrap.Ends(1, 1, -1)).parameter());
+        assertEquals("start", assertThrows(ParameterException.class, () -> new Wrap.Ends(3, 1, -1)).parameter());
+        assertEquals("enterFrom", assertThrows(ParameterException.class, () -> new Wrap.Ends(0, 1, 0)).parameter());
         assertThrows(IllegalArgumentException.class, () -> new Wrap.Ends(1, 1, -1));
         assertThrows(IllegalArgumentException.class, () -> new Wrap.Ends(0, 3, -1));
         assertThrows(IllegalArgumentException.class, () -> new Wrap.Ends(0, 1, 0));

@@ -66,4 +66,26 @@ class TurnGadgetTest {
         assertThrows(IllegalArgumentException.class, () -> TurnGadget.turn(Double.NaN, 0, 1, 0.01, 3, 3));
         assertThrows(IllegalArgumentException.class, () -> TurnGadget.turn(90, 0, 1, -0.01, 3, 3));
     }
+
+    @Test
+    void optionsCheckEveryValueAndNameIt() throws Exception {
+        assertParameter("angle", () -> new TurnGadget.Options(0.005, 0, 1, Double.NaN));
+        assertParameter("angle", () -> new TurnGadget.Options(179.95, 0, 1, Double.NaN));
+        assertParameter("angle", () -> new TurnGadget.Options(Double.NaN, 0, 1, Double.NaN));
+        assertParameter("overhang", () -> new TurnGadget.Options(90, -0.5, 1, Double.NaN));
+        assertParameter("overhang", () -> new TurnGadget.Options(90, 101, 1, Double.NaN));
+        assertParameter("width", () -> new TurnGadget.Options(90, 0, 0, Double.NaN));
+        assertParameter("thickness", () -> new TurnGadget.Options(90, 0, 1, 0.3));
+        TurnGadget.Options options = new TurnGadget.Options(TurnGadget.Options.MAX_ANGLE, 2, 0.5, Double.NaN);
+        assertEquals(0.01, options.thickness(), 0, "a fiftieth of the width by default");
+        TurnGadget.Result gadget = TurnGadget.turn(options);
+        assertEquals(179.9, gadget.measuredAngle(), 1e-6, "the whole range turns");
+        assertEquals(1.0, gadget.overhang(), 0, "the overhang is given in widths");
+        assertEquals(0.01, TurnGadget.turn(new TurnGadget.Options(0.01, 0, 1, 0)).measuredAngle(), 1e-9);
+    }
+
+    private static void assertParameter(String parameter, org.junit.jupiter.api.function.Executable make) {
+        ParameterException e = assertThrows(ParameterException.class, make);
+        assertEquals(parameter, e.parameter(), e.getMessage());
+    }
 }

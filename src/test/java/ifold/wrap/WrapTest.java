@@ -231,10 +231,10 @@ class WrapTest {
         Path file = SharedMeshes.ROOT.resolve("valid").resolve("cgal_mpi.off");
         assumeTrue(Files.isRegularFile(file), "../shared/meshes is absent");
         HamiltonianRefinement.Result refinement = HamiltonianRefinement.refine(build(MeshReaders.read(file)));
-        Wrap.WrapException e = assertThrows(Wrap.WrapException.class,
+        Wrap.WrapException e = assertThrows(Wrap.FaceLimitException.class,
                 () -> Wrap.wrap(refinement, new Wrap.Options(Double.NaN, Double.NaN)));
-        assertTrue(e.getMessage().contains("passes, more than the 2000000") && e.getMessage().contains("narrowest triangle"),
-                e.getMessage());
+        assertTrue(e.getMessage().contains("passes, each at least a face of paper, more than the limit of 500000 faces")
+                && e.getMessage().contains("narrowest triangle"), e.getMessage());
     }
 
     /** Any path of triangles wraps, not only a refinement's: one triangle, and a square's two halves. */
@@ -274,5 +274,45 @@ class WrapTest {
         Wrap.WrapException e = assertThrows(Wrap.WrapException.class,
                 () -> Wrap.wrap(refinement, new Wrap.Options(widest * 1.01, Double.NaN)));
         assertTrue(e.getMessage().matches(".*too wide for triangle \\d+ of 58 on the path \\(\\(.*\\)\\).*"), e.getMessage());
+    }
+
+    @Test
+    void optionsOutOfRangeAreRefusedNamingTheParameter() throws Exception {
+        assertParameter("width", () -> new Wrap.Options(0, Double.NaN));
+        assertParameter("width", () -> new Wrap.Options(-1, Double.NaN));
+        assertParameter("width", () -> new Wrap.Options(Double.POSITIVE_INFINITY, Double.NaN));
+        assertParameter("thickness", () -> new Wrap.Options(1, -0.01));
+        assertParameter("thickness", () -> new Wrap.Options(1, 0.26));
+        assertParameter("maxFaces", () -> new Wrap.Options(1, 0.01, null, 0));
+        new Wrap.Options(1, 0.25); // a quarter of the width is allowed
+        new Wrap.Options(Double.NaN, 1e9); // checked against the default width once it is known
+        HamiltonianRefinement.Result refinement = HamiltonianRefinement.refine(build(Solids.cube()));
+        double thick = Wrap.defaultWidth(refinement) / 3;
+        ParameterException e = assertParameter("thickness", () -> Wrap.wrap(refinement, new Wrap.Options(Double.NaN, thick)));
+        assertTrue(e.getMessage().contains("quarter of the width " + Wrap.defaultWidth(refinement)), e.getMessage());
+    }
+
+    /** The limit stops a wrap before any fold where its passes alone pass it, and at the fold that passes it otherwise. */
+    @Test
+    void aWrapStopsAtItsLimitOfFaces() throws Exception {
+        HamiltonianRefinement.Result refinement = HamiltonianRefinement.refine(build(Solids.cube()));
+        Wrap.Options options = new Wrap.Options(Double.NaN, Double.NaN);
+        Wrap.Result whole = Wrap.wrap(refinement, options);
+        int faces = whole.strips().get(0).sheet().faceCount();
+        Wrap.wrap(refinement, options.withMaxFaces(faces)); // exactly enough
+        Wrap.FaceLimitException during = assertThrows(Wrap.FaceLimitException.class,
+                () -> Wrap.wrap(refinement, options.withMaxFaces(faces - 1)));
+        assertTrue(during.getMessage().matches("the strip has " + faces + " faces of paper on triangle \\d+ of 58 .*more than the "
+                + "limit of " + (faces - 1) + " faces"), during.getMessage());
+        Wrap.FaceLimitException before = assertThrows(Wrap.FaceLimitException.class,
+                () -> Wrap.wrap(refinement, options.withMaxFaces(58)));
+        assertTrue(before.getMessage().contains("passes, each at least a face of paper, more than the limit of 58 faces"),
+                before.getMessage());
+    }
+
+    private static ParameterException assertParameter(String parameter, org.junit.jupiter.api.function.Executable make) {
+        ParameterException e = assertThrows(ParameterException.class, make);
+        assertEquals(parameter, e.parameter(), e.getMessage());
+        return e;
     }
 }
