@@ -95,6 +95,8 @@ class ArchitectureTest {
                         ok = rule.contains("picocli");
                     } else if (name.startsWith("com.fasterxml.jackson.")) {
                         ok = rule.contains("jackson");
+                    } else if (name.startsWith("ch.randelshofer.fastdoubleparser.")) {
+                        ok = rule.contains("fastdoubleparser");
                     } else {
                         ok = name.startsWith("java.") || name.startsWith("javax.") || name.startsWith("org.w3c.");
                     }

@@ -3,8 +3,6 @@ package ifold.mesh.io;
 import java.io.Closeable;
 import java.io.IOException;
 import java.io.InputStream;
-import java.math.BigInteger;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 
@@ -19,7 +17,7 @@ import java.nio.file.Path;
  * could start or end, CR, LF and CRLF all end a line, and a NUL or other control byte stops
  * the read as binary content.
  *
- * <p>Numbers are parsed in place: see {@link #parseDecimal} and {@link #parseLong}.
+ * <p>Numbers are parsed in place by {@link DecimalParser}.
  */
 final class ByteTokenizer implements Closeable {
     /** What {@link #advance()} found. */
@@ -54,12 +52,6 @@ final class ByteTokenizer implements Closeable {
         CLASSES['\r'] = CR;
         CLASSES['#'] = HASH;
     }
-
-    /** Exact powers of ten as doubles: 10^0 .. 10^22 are all representable without rounding. */
-    private static final double[] POWERS_OF_TEN = {
-        1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11,
-        1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
-    };
 
     private final Path file;
     private final InputStream in;
@@ -329,14 +321,14 @@ final class ByteTokenizer implements Closeable {
         return true;
     }
 
-    /** The current token parsed as a decimal number; see {@link #parseDecimal}. */
+    /** The current token parsed as a decimal number; see {@link DecimalParser#parseDouble}. */
     double tokenDouble() {
-        return parseDecimal(buf, tokenStart, tokenEnd);
+        return DecimalParser.parseDouble(buf, tokenStart, tokenEnd);
     }
 
-    /** The current token parsed as an integer; see {@link #parseLong}. */
+    /** The current token parsed as an integer; see {@link DecimalParser#parseLong}. */
     long tokenLong() {
-        return parseLong(buf, tokenStart, tokenEnd);
+        return DecimalParser.parseLong(buf, tokenStart, tokenEnd);
     }
 
     /**
@@ -345,7 +337,7 @@ final class ByteTokenizer implements Closeable {
      * NaN, infinities in any spelling and numbers too large for a double are refused.
      */
     double finiteDouble(String what) throws MeshFormatException {
-        double value = parseDecimal(buf, tokenStart, tokenEnd);
+        double value = DecimalParser.parseDouble(buf, tokenStart, tokenEnd);
         if (Double.isFinite(value)) {
             return value;
         }
@@ -358,7 +350,7 @@ final class ByteTokenizer implements Closeable {
         if (isNonFiniteSpelling(text)) {
             return error(tokenLine, what + " '" + text + "' is not a finite number");
         }
-        if (Double.isInfinite(parseDecimal(buf, tokenStart, tokenEnd))) {
+        if (Double.isInfinite(DecimalParser.parseDouble(buf, tokenStart, tokenEnd))) {
             return error(tokenLine, what + " '" + text + "' is not a finite number (too large for a double)");
         }
         return error(tokenLine, "expected a " + what + ", found '" + text + "'");
@@ -403,307 +395,5 @@ final class ByteTokenizer implements Closeable {
     @Override
     public void close() throws IOException {
         in.close();
-    }
-
-    /**
-     * Parses b[from .. to) as a decimal number {@code [+-]digits[.digits][(e|E)[+-]digits]}
-     * (digits may be missing on one side of the point), with exactly the result of
-     * {@link Double#parseDouble}.
-     *
-     * <p>The digits become an integer w of at most 19 significant digits and a power of ten q.
-     * Short coordinates take Clinger's fast path: a w below 2^53 and a power of ten up to 10^22
-     * are both exact doubles, so one multiplication or division rounds once, correctly. Other
-     * values of up to 19 digits, which is what a shortest round-trip printer such as
-     * {@link Double#toString} writes for most doubles, go through {@link #eiselLemire}. Only
-     * a longer mantissa (zeros after the 19th digit aside), an exponent beyond 99999 or a rare
-     * case Eisel-Lemire cannot decide reach {@code Double.parseDouble}. The first two paths
-     * allocate nothing.
-     *
-     * @return the value, which is infinite when it overflows a double and a zero of the same
-     *         sign when it underflows; NaN when the text is not a decimal number (this includes
-     *         "NaN", "inf" and hexadecimal forms)
-     */
-    static double parseDecimal(byte[] b, int from, int to) {
-        int i = from;
-        boolean negative = false;
-        if (i < to && (b[i] == '-' || b[i] == '+')) {
-            negative = b[i] == '-';
-            i++;
-        }
-        // Unsigned: 19 digits can pass 2^63, never 2^64.
-        long mantissa = 0;
-        int significantDigits = 0;
-        int digits = 0;
-        int exponent = 0;
-        boolean exact = true; // false once a non-zero digit did not fit into the mantissa
-        for (; i < to; i++) {
-            int d = b[i] - '0';
-            if (d < 0 || d > 9) {
-                break;
-            }
-            digits++;
-            if (mantissa == 0 && d == 0) {
-                continue; // leading zeros carry no precision
-            }
-            if (significantDigits < MAX_MANTISSA_DIGITS) {
-                mantissa = 10 * mantissa + d;
-                significantDigits++;
-            } else {
-                // A dropped zero only scales, so "1000...0" of any length stays on a fast path.
-                exponent++;
-                exact &= d == 0;
-            }
-        }
-        if (i < to && b[i] == '.') {
-            i++;
-            for (; i < to; i++) {
-                int d = b[i] - '0';
-                if (d < 0 || d > 9) {
-                    break;
-                }
-                digits++;
-                if (mantissa == 0 && d == 0) {
-                    exponent--;
-                    continue;
-                }
-                if (significantDigits < MAX_MANTISSA_DIGITS) {
-                    mantissa = 10 * mantissa + d;
-                    significantDigits++;
-                    exponent--;
-                } else {
-                    exact &= d == 0;
-                }
-            }
-        }
-        if (digits == 0) {
-            return Double.NaN;
-        }
-        if (i < to && (b[i] == 'e' || b[i] == 'E')) {
-            i++;
-            boolean negativeExponent = false;
-            if (i < to && (b[i] == '-' || b[i] == '+')) {
-                negativeExponent = b[i] == '-';
-                i++;
-            }
-            int exponentStart = i;
-            int explicit = 0;
-            for (; i < to; i++) {
-                int d = b[i] - '0';
-                if (d < 0 || d > 9) {
-                    break;
-                }
-                // Beyond this any double is 0 or infinite; the slow path decides which.
-                if (explicit < 100_000) {
-                    explicit = 10 * explicit + d;
-                } else {
-                    exact = false;
-                }
-            }
-            if (i == exponentStart) {
-                return Double.NaN;
-            }
-            exponent += negativeExponent ? -explicit : explicit;
-        }
-        if (i != to) {
-            return Double.NaN;
-        }
-        if (!exact) {
-            return slowParse(b, from, to);
-        }
-        if (mantissa == 0) {
-            return negative ? -0.0 : 0.0;
-        }
-        if (mantissa >>> 53 == 0 && exponent >= -22 && exponent <= 22) {
-            double value = exponent >= 0
-                    ? mantissa * POWERS_OF_TEN[exponent]
-                    : mantissa / POWERS_OF_TEN[-exponent];
-            return negative ? -value : value;
-        }
-        long bits = eiselLemire(mantissa, exponent);
-        if (bits == UNDECIDED) {
-            return slowParse(b, from, to);
-        }
-        return Double.longBitsToDouble(negative ? bits | Long.MIN_VALUE : bits);
-    }
-
-    /** The most significant digits {@link #parseDecimal} keeps: 10^19 - 1 &lt; 2^64. */
-    private static final int MAX_MANTISSA_DIGITS = 19;
-    /** The decimal exponents {@link PowersOfFive} covers; outside them w * 10^q is 0 or infinite for any w. */
-    static final int MIN_EXPONENT_10 = -342;
-    static final int MAX_EXPONENT_10 = 308;
-    /** {@link #eiselLemire}'s answer when the truncated product cannot tell how to round. */
-    static final long UNDECIDED = -1;
-    private static final long INFINITY_BITS = 0x7FF0_0000_0000_0000L;
-
-    /**
-     * The bits of the double nearest to w * 10^q (ties to even), positive; or {@link #UNDECIDED}.
-     * This is the Eisel-Lemire algorithm (D. Lemire, "Number Parsing at a Gigabyte per
-     * Second", Software: Practice and Experience 51(8), 2021, Algorithm 1; the same as
-     * fast_float's {@code compute_float}, Go's {@code eiselLemire64} and Rust's
-     * {@code core::num::dec2flt::lemire}).
-     *
-     * <p>w is shifted until its top bit is set and multiplied by the 128-bit approximation of
-     * 5^q (the factor 2^q only moves the binary exponent). The top 54 or 55 bits of the product
-     * hold the 53-bit significand and a rounding bit, and the bits below them say whether the
-     * truncation of 5^q or of the product could have changed those: only when they are all
-     * ones after the refined product, outside the exponents where the product is exact, is the
-     * answer left to the slow path.
-     *
-     * @param w the decimal significand, unsigned and not 0
-     * @param q the power of ten
-     */
-    static long eiselLemire(long w, int q) {
-        if (q < MIN_EXPONENT_10) {
-            return 0; // w * 10^q < 2^64 * 10^-343 < 2^-1076: rounds to zero
-        }
-        if (q > MAX_EXPONENT_10) {
-            return INFINITY_BITS; // w * 10^q >= 10^309
-        }
-        int leadingZeros = Long.numberOfLeadingZeros(w);
-        w <<= leadingZeros;
-        int index = 2 * (q - MIN_EXPONENT_10);
-        long powerHigh = PowersOfFive.TABLE[index];
-        long high = unsignedMultiplyHigh(w, powerHigh);
-        long low = w * powerHigh;
-        // 55 bits are needed (52 stored, the implicit one, a rounding bit and one the leading
-        // bit may lose); when the 9 below them are all ones, a carry from the product with the
-        // low word of 5^q could still change them.
-        if ((high & 0x1FF) == 0x1FF) {
-            long secondHigh = unsignedMultiplyHigh(w, PowersOfFive.TABLE[index + 1]);
-            low += secondHigh;
-            if (Long.compareUnsigned(secondHigh, low) > 0) {
-                high++;
-            }
-        }
-        // All ones might still be a carry short of the truth. Not for q in [0, 55], where 5^q fits
-        // in 128 bits and the product is exact, nor for q in [-27, -1], where 5^-q fits in 64 bits
-        // and the paper shows the 128-bit reciprocal suffices.
-        if (low == -1 && (q < -27 || q > 55)) {
-            return UNDECIDED;
-        }
-        int upperBit = (int) (high >>> 63);
-        int shift = upperBit + 9;
-        long significand = high >>> shift; // 54 bits: 53 and a rounding bit
-        // floor(log2(10^q)) + 63 is where the product's top bit sits; 217706 / 2^16 ~ log2(10).
-        int exponent2 = ((217706 * q) >> 16) + 63 + upperBit - leadingZeros + 1023;
-        if (exponent2 <= 0) {
-            // Subnormal or zero. q <= -308 here, where no tie is possible (see below), so
-            // rounding up on the rounding bit is rounding to nearest.
-            if (-exponent2 + 1 >= 64) {
-                return 0;
-            }
-            significand >>>= -exponent2 + 1;
-            significand += significand & 1;
-            significand >>>= 1;
-            // Rounding up to 2^52 gives the smallest normal, whose bits are the same 2^52.
-            return significand;
-        }
-        // Rounding up on the rounding bit is wrong only for a tie on an even significand. A tie
-        // is a dyadic fraction with 54 significant bits: for q > 0 the odd part 5^q must fit in
-        // them (q <= 23), for q < 0 w must be 5^-q times 2^53 or more (q >= -4); and the product
-        // then has nothing but zeros below the rounding bit.
-        if (Long.compareUnsigned(low, 1) <= 0 && q >= -4 && q <= 23 && (significand & 3) == 1
-                && significand << shift == high) {
-            significand &= ~1L;
-        }
-        significand += significand & 1;
-        significand >>>= 1;
-        if (significand >= 1L << 53) {
-            // Rounded up past the top: 1.111..1 became 10.000..0.
-            significand = 1L << 52;
-            exponent2++;
-        }
-        if (exponent2 >= 0x7FF) {
-            return INFINITY_BITS;
-        }
-        return (long) exponent2 << 52 | (significand & ~(1L << 52));
-    }
-
-    /** The high 64 bits of the unsigned 128-bit product a * b (Math.unsignedMultiplyHigh arrived in Java 18). */
-    private static long unsignedMultiplyHigh(long a, long b) {
-        return Math.multiplyHigh(a, b) + ((a >> 63) & b) + ((b >> 63) & a);
-    }
-
-    /**
-     * 5^q for q in [{@link #MIN_EXPONENT_10}, {@link #MAX_EXPONENT_10}] as 128-bit significands
-     * with the top bit set, high word then low word, exactly fast_float's
-     * {@code power_of_five_128}. A holder class, so that files of short numbers never build it.
-     */
-    static final class PowersOfFive {
-        static final long[] TABLE = new long[2 * (MAX_EXPONENT_10 - MIN_EXPONENT_10 + 1)];
-
-        static {
-            for (int q = MIN_EXPONENT_10; q <= MAX_EXPONENT_10; q++) {
-                BigInteger power = BigInteger.valueOf(5).pow(Math.abs(q));
-                BigInteger entry;
-                if (q >= 0) {
-                    // 5^q shifted to 128 bits, truncated: exact up to 5^55.
-                    int excess = power.bitLength() - 128;
-                    entry = excess > 0 ? power.shiftRight(excess) : power.shiftLeft(-excess);
-                } else {
-                    // The reciprocal 2^b / 5^-q plus one, truncated to 128 bits, with z the bit
-                    // length of 5^-q: for q >= -27 (5^-q < 2^64) b = z + 127 makes it exactly
-                    // 128 bits wide, so the entry is the reciprocal rounded up; below, b =
-                    // 2z + 128 and the truncation drops the extra bits. These are the paper's
-                    // and fast_float's definitions, and the error analysis depends on them.
-                    int z = power.bitLength();
-                    int b = q >= -27 ? z + 127 : 2 * z + 128;
-                    entry = BigInteger.ONE.shiftLeft(b).divide(power).add(BigInteger.ONE);
-                    entry = entry.shiftRight(Math.max(0, entry.bitLength() - 128));
-                }
-                int index = 2 * (q - MIN_EXPONENT_10);
-                TABLE[index] = entry.shiftRight(64).longValue();
-                TABLE[index + 1] = entry.longValue();
-            }
-        }
-    }
-
-    private static double slowParse(byte[] b, int from, int to) {
-        // The text is known to be plain decimal, which Double.parseDouble reads the same way.
-        return Double.parseDouble(new String(b, from, to - from, StandardCharsets.ISO_8859_1));
-    }
-
-    /** Returned by {@link #parseLong} for text that is not an integer. */
-    static final long NOT_AN_INTEGER = Long.MIN_VALUE;
-    /** Returned by {@link #parseLong} for an integer of more than 18 digits. */
-    static final long TOO_LARGE = Long.MAX_VALUE;
-
-    /**
-     * Parses b[from .. to) as a decimal integer {@code [+-]digits}.
-     *
-     * @return the value; {@link #NOT_AN_INTEGER} for other text; {@link #TOO_LARGE} when the
-     *         digits (leading zeros aside) are more than 18, whatever the sign
-     */
-    static long parseLong(byte[] b, int from, int to) {
-        int i = from;
-        boolean negative = false;
-        if (i < to && (b[i] == '-' || b[i] == '+')) {
-            negative = b[i] == '-';
-            i++;
-        }
-        if (i == to) {
-            return NOT_AN_INTEGER;
-        }
-        long value = 0;
-        int significantDigits = 0;
-        for (; i < to; i++) {
-            int d = b[i] - '0';
-            if (d < 0 || d > 9) {
-                return NOT_AN_INTEGER;
-            }
-            if (value != 0 || d != 0) {
-                if (++significantDigits > 18) {
-                    // Finish checking the syntax, so that "1234567890123456789x" is not "too large".
-                    for (i++; i < to; i++) {
-                        if (b[i] < '0' || b[i] > '9') {
-                            return NOT_AN_INTEGER;
-                        }
-                    }
-                    return TOO_LARGE;
-                }
-                value = 10 * value + d;
-            }
-        }
-        return negative ? -value : value;
     }
 }

@@ -36,18 +36,18 @@ public final class ObjWriter {
         if (mesh.hasFaceColors()) {
             out.writeAscii("# face colours not written: OBJ has no standard per-face colour\n");
         }
-        for (int v = 0; v < vertexCount; v++) {
-            out.writeAscii("v ");
-            MeshWriters.writeVertex(mesh, v, out);
-        }
-        for (int f = 0; f < faceCount; f++) {
+        out.writeLines(vertexCount, (block, v) -> {
+            block.writeAscii("v ");
+            MeshWriters.writeVertex(mesh, v, block);
+        });
+        out.writeLines(faceCount, (block, f) -> {
             int size = MeshWriters.checkedFaceSize(mesh, f);
-            out.writeByte('f');
+            block.writeByte('f');
             for (int k = 0; k < size; k++) {
-                out.writeByte(' ');
-                out.writeLong(MeshWriters.checkedFaceVertex(mesh, f, k) + 1L);
+                block.writeByte(' ');
+                block.writeLong(MeshWriters.checkedFaceVertex(mesh, f, k) + 1L);
             }
-            out.writeByte('\n');
-        }
+            block.writeByte('\n');
+        });
     }
 }

@@ -1,9 +1,9 @@
 package ifold.mesh.io;
 
 import static ifold.mesh.io.ByteTokenizer.EOF;
-import static ifold.mesh.io.ByteTokenizer.NOT_AN_INTEGER;
+import static ifold.mesh.io.DecimalParser.NOT_AN_INTEGER;
 import static ifold.mesh.io.ByteTokenizer.TOKEN;
-import static ifold.mesh.io.ByteTokenizer.TOO_LARGE;
+import static ifold.mesh.io.DecimalParser.TOO_LARGE;
 
 import ifold.mesh.PolygonSoup;
 import java.io.IOException;

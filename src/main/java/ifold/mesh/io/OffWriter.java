@@ -35,26 +35,26 @@ public final class OffWriter {
         out.writeByte(' ');
         out.writeLong(faceCount);
         out.writeAscii(" 0\n");
-        for (int v = 0; v < vertexCount; v++) {
-            MeshWriters.writeVertex(mesh, v, out);
+        out.writeLines(vertexCount, (block, v) -> MeshWriters.writeVertex(mesh, v, block));
+        out.writeLines(faceCount, (block, f) -> writeFace(mesh, f, colors, block));
+    }
+
+    private static void writeFace(IndexedPolygons mesh, int f, boolean colors, AsciiOutput out) throws IOException {
+        int size = MeshWriters.checkedFaceSize(mesh, f);
+        out.writeLong(size);
+        for (int k = 0; k < size; k++) {
+            out.writeByte(' ');
+            out.writeLong(MeshWriters.checkedFaceVertex(mesh, f, k));
         }
-        for (int f = 0; f < faceCount; f++) {
-            int size = MeshWriters.checkedFaceSize(mesh, f);
-            out.writeLong(size);
-            for (int k = 0; k < size; k++) {
-                out.writeByte(' ');
-                out.writeLong(MeshWriters.checkedFaceVertex(mesh, f, k));
-            }
-            if (colors) {
-                int argb = mesh.faceColor(f);
-                out.writeByte(' ');
-                out.writeLong(argb >>> 16 & 0xFF);
-                out.writeByte(' ');
-                out.writeLong(argb >>> 8 & 0xFF);
-                out.writeByte(' ');
-                out.writeLong(argb & 0xFF);
-            }
-            out.writeByte('\n');
+        if (colors) {
+            int argb = mesh.faceColor(f);
+            out.writeByte(' ');
+            out.writeLong(argb >>> 16 & 0xFF);
+            out.writeByte(' ');
+            out.writeLong(argb >>> 8 & 0xFF);
+            out.writeByte(' ');
+            out.writeLong(argb & 0xFF);
         }
+        out.writeByte('\n');
     }
 }

@@ -21,12 +21,12 @@ class ByteTokenizerTest {
 
     private static double parse(String s) {
         byte[] b = ("xx" + s + "yy").getBytes(StandardCharsets.ISO_8859_1);
-        return ByteTokenizer.parseDecimal(b, 2, b.length - 2);
+        return DecimalParser.parseDouble(b, 2, b.length - 2);
     }
 
     private static long parseLong(String s) {
         byte[] b = s.getBytes(StandardCharsets.ISO_8859_1);
-        return ByteTokenizer.parseLong(b, 0, b.length);
+        return DecimalParser.parseLong(b, 0, b.length);
     }
 
     private static void assertSameAsJdk(String s) {
@@ -108,10 +108,10 @@ class ByteTokenizerTest {
         assertEquals(353535235358L, parseLong("353535235358"));
         assertEquals(999_999_999_999_999_999L, parseLong("999999999999999999"));
         assertEquals(5, parseLong("0000000000000000000000005"));
-        assertEquals(ByteTokenizer.TOO_LARGE, parseLong("1000000000000000000"));
-        assertEquals(ByteTokenizer.TOO_LARGE, parseLong("-99999999999999999999999"));
+        assertEquals(DecimalParser.TOO_LARGE, parseLong("1000000000000000000"));
+        assertEquals(DecimalParser.TOO_LARGE, parseLong("-99999999999999999999999"));
         for (String s : new String[] {"", "-", "1.0", "1e3", "12a", "a12", "1-", "1234567890123456789x"}) {
-            assertEquals(ByteTokenizer.NOT_AN_INTEGER, parseLong(s), s);
+            assertEquals(DecimalParser.NOT_AN_INTEGER, parseLong(s), s);
         }
     }
 

@@ -17,14 +17,14 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
 /**
- * {@link ByteTokenizer#parseDecimal} against {@link Double#parseDouble}, bit for bit, on the
+ * {@link DecimalParser#parseDouble} against {@link Double#parseDouble}, bit for bit, on the
  * texts printers write and on the cases that break fast parsers: ties, subnormals, the ends
  * of the power table, long mantissas. {@link ByteTokenizerTest} covers the syntax.
  */
 class DecimalParsingTest {
     private static double parse(String s) {
         byte[] b = ("xx" + s + "yy").getBytes(StandardCharsets.ISO_8859_1);
-        return ByteTokenizer.parseDecimal(b, 2, b.length - 2);
+        return DecimalParser.parseDouble(b, 2, b.length - 2);
     }
 
     private static void assertSameAsJdk(String s) {
@@ -38,6 +38,8 @@ class DecimalParsingTest {
         }
     }
 
+    private static final MathContext SEVENTEEN_DIGITS = new MathContext(17, RoundingMode.HALF_EVEN);
+
     /** A finite double from random bits: every exponent, subnormals included, about equally likely. */
     private static double randomFinite(Random random) {
         double d;
@@ -46,85 +48,6 @@ class DecimalParsingTest {
         } while (!Double.isFinite(d));
         return d;
     }
-
-    @Test
-    void tableHoldsThePublishedPowersOfFive() {
-        // Entries of fast_float's power_of_five_128 (include/fast_float/fast_table.h): both ends,
-        // both sides of q = -27 where the reciprocals change form, and of q = 27 and 55 where
-        // 5^q stops fitting in 64 and in 128 bits.
-        long[][] published = {
-            {-342, 0xeef453d6923bd65aL, 0x113faa2906a13b3fL},
-            {-341, 0x9558b4661b6565f8L, 0x4ac7ca59a424c507L},
-            {-28, 0xfd87b5f28300ca0dL, 0x8bca9d6e188853fcL},
-            {-27, 0x9e74d1b791e07e48L, 0x775ea264cf55347eL},
-            {-26, 0xc612062576589ddaL, 0x95364afe032a819eL},
-            {-2, 0xa3d70a3d70a3d70aL, 0x3d70a3d70a3d70a4L},
-            {-1, 0xccccccccccccccccL, 0xcccccccccccccccdL},
-            {0, 0x8000000000000000L, 0},
-            {1, 0xa000000000000000L, 0},
-            {27, 0xcecb8f27f4200f3aL, 0},
-            {28, 0x813f3978f8940984L, 0x4000000000000000L},
-            {55, 0xd0cf4b50cfe20765L, 0xfff4b4e3f741cf6dL},
-            {56, 0x82818f1281ed449fL, 0xbff8f10e7a8921a4L},
-            {307, 0xe3d8f9e563a198e5L, 0x58180fddd97723a6L},
-            {308, 0x8e679c2f5e44ff8fL, 0x570f09eaa7ea7648L},
-        };
-        long[] table = ByteTokenizer.PowersOfFive.TABLE;
-        assertEquals(2 * (ByteTokenizer.MAX_EXPONENT_10 - ByteTokenizer.MIN_EXPONENT_10 + 1), table.length);
-        for (long[] entry : published) {
-            int index = 2 * ((int) entry[0] - ByteTokenizer.MIN_EXPONENT_10);
-            assertEquals(Long.toHexString(entry[1]), Long.toHexString(table[index]), "high word of 5^" + entry[0]);
-            assertEquals(Long.toHexString(entry[2]), Long.toHexString(table[index + 1]), "low word of 5^" + entry[0]);
-        }
-        for (int q = ByteTokenizer.MIN_EXPONENT_10; q <= ByteTokenizer.MAX_EXPONENT_10; q++) {
-            int index = 2 * (q - ByteTokenizer.MIN_EXPONENT_10);
-            assertTrue(table[index] < 0, "5^" + q + " is normalised to its top bit");
-            // The table's definition: 5^q to 128 bits, and 2^128 / 5^-q within a unit of its last place.
-            BigInteger entry = new BigInteger(Long.toUnsignedString(table[index])).shiftLeft(64)
-                    .or(new BigInteger(Long.toUnsignedString(table[index + 1])));
-            BigInteger power = BigInteger.valueOf(5).pow(Math.abs(q));
-            if (q >= 0) {
-                int excess = power.bitLength() - 128;
-                assertEquals(excess > 0 ? power.shiftRight(excess) : power.shiftLeft(-excess), entry, "5^" + q);
-            } else {
-                int bits = power.bitLength() + 127;
-                BigInteger reciprocal = BigInteger.ONE.shiftLeft(bits).divide(power);
-                assertTrue(entry.subtract(reciprocal).abs().compareTo(BigInteger.ONE) <= 0, "5^" + q);
-            }
-        }
-    }
-
-    @Test
-    void eiselLemireDecidesEverySignificandOfUpTo19Digits() {
-        // Straight to the algorithm: an undecided answer here would pass through parseDecimal
-        // unnoticed, as a slow but correct parse.
-        Random random = new Random(19);
-        long tens = 1;
-        long[] powersOfTen = new long[20];
-        for (int i = 0; i < 19; i++) {
-            powersOfTen[i] = tens;
-            tens *= 10;
-        }
-        for (int n = 0; n < 300_000; n++) {
-            int digits = 1 + random.nextInt(19);
-            long w = digits == 19
-                    ? Long.remainderUnsigned(random.nextLong(), 9_000_000_000_000_000_000L) + 1_000_000_000_000_000_000L
-                    : powersOfTen[digits - 1] + (long) (random.nextDouble() * 9 * powersOfTen[digits - 1]);
-            int q = random.nextInt(ByteTokenizer.MAX_EXPONENT_10 - ByteTokenizer.MIN_EXPONENT_10 + 20)
-                    + ByteTokenizer.MIN_EXPONENT_10 - 10;
-            String text = Long.toUnsignedString(w) + "e" + q;
-            long bits = ByteTokenizer.eiselLemire(w, q);
-            assertTrue(bits != ByteTokenizer.UNDECIDED, text + " was left undecided");
-            if (bits != Double.doubleToRawLongBits(Double.parseDouble(text))) {
-                assertEquals(Double.parseDouble(text), Double.longBitsToDouble(bits), text);
-            }
-        }
-    }
-
-    // The next three tests read 2.1 million doubles as Java prints them, and samples as other
-    // printers do: C's %.17g (correctly rounded 17 digits, like most exporters), Java's %.17g
-    // (shortest digits padded with zeros) and %.15e.
-    private static final MathContext SEVENTEEN_DIGITS = new MathContext(17, RoundingMode.HALF_EVEN);
 
     @Test
     void parsesRandomBitPatterns() {
@@ -289,7 +212,7 @@ class DecimalParsingTest {
     }
 
     @Test
-    void allocatesNothingForUpTo19Digits() {
+    void allocatesNextToNothingPerNumber() {
         Assumptions.assumeTrue(ManagementFactory.getThreadMXBean() instanceof com.sun.management.ThreadMXBean);
         com.sun.management.ThreadMXBean threads = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
         Assumptions.assumeTrue(threads.isThreadAllocatedMemorySupported() && threads.isThreadAllocatedMemoryEnabled());
@@ -313,14 +236,15 @@ class DecimalParsingTest {
             ends[count++] = i;
         }
         double sum = 0;
-        sum += ByteTokenizer.parseDecimal(b, starts[0], ends[0]); // loads the power table
+        sum += DecimalParser.parseDouble(b, starts[0], ends[0]); // loads the parser's classes
         long thread = Thread.currentThread().getId();
         long before = threads.getThreadAllocatedBytes(thread);
         for (int k = 0; k < count; k++) {
-            sum += ByteTokenizer.parseDecimal(b, starts[k], ends[k]);
+            sum += DecimalParser.parseDouble(b, starts[k], ends[k]);
         }
         long allocated = threads.getThreadAllocatedBytes(thread) - before;
-        // The slow path made a String and more per number: megabytes here.
-        assertTrue(allocated < 16_384, allocated + " bytes allocated parsing " + count + " numbers (sum " + sum + ")");
+        // A String per number would be megabytes here; fastdoubleparser's rare slow cases
+        // (19-digit mantissas it cannot decide at once) allocate a few kilobytes in all.
+        assertTrue(allocated < count, allocated + " bytes allocated parsing " + count + " numbers (sum " + sum + ")");
     }
 }

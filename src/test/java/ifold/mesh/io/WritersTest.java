@@ -185,7 +185,7 @@ class WritersTest {
         for (int i = 0; i < values.length; i++) {
             byte[] text = lines.get(i).getBytes(StandardCharsets.US_ASCII);
             assertEquals(Double.doubleToRawLongBits(values[i]),
-                    Double.doubleToRawLongBits(ByteTokenizer.parseDecimal(text, 0, text.length)), lines.get(i));
+                    Double.doubleToRawLongBits(DecimalParser.parseDouble(text, 0, text.length)), lines.get(i));
         }
     }
 
@@ -376,6 +376,41 @@ class WritersTest {
                     actual[k] = back.faceVertex(f, k);
                 }
                 assertArrayEquals(faces[f], actual, name + " face " + f);
+            }
+        }
+    }
+
+    /** Big models are formatted in blocks on every core: the file must not depend on how many. */
+    @ParameterizedTest
+    @ValueSource(strings = {"torus.off", "torus.obj"})
+    void aBigModelIsWrittenTheSameWhateverTheThreads(String name) throws Exception {
+        PolygonSoup torus = ifold.mesh.Solids.torus(3, 1, 300, 120); // 36,000 vertices, 72,000 faces: several blocks
+        torus.setFaceColor(7, 0xFF102030);
+        assertTrue(torus.vertexCount() > 2 * AsciiOutput.BLOCK_LINES, "setup: more than one block of lines");
+        String old = System.getProperty("ifold.threads");
+        try {
+            System.setProperty("ifold.threads", "1");
+            Path one = dir.resolve("one-" + name);
+            MeshWriters.write(torus, one);
+            System.setProperty("ifold.threads", "3");
+            Path three = dir.resolve("three-" + name);
+            MeshWriters.write(torus, three);
+            assertArrayEquals(Files.readAllBytes(one), Files.readAllBytes(three));
+            PolygonSoup back = MeshReaders.read(three);
+            assertEquals(torus.faceCount(), back.faceCount());
+            assertEquals(torus.coordinate(35_999, 2), back.coordinate(35_999, 2), 0, "bit for bit");
+            // A failure in a late block comes out as the sequential write's, and leaves no file.
+            PolygonSoup broken = ifold.mesh.Solids.torus(3, 1, 300, 120);
+            broken.addFace(new int[] {0, 1, 99_999}, 3, 0);
+            Path none = dir.resolve("broken-" + name);
+            IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> MeshWriters.write(broken, none));
+            assertTrue(e.getMessage().contains("face 72000 has vertex index 99999"), e.getMessage());
+            assertFalse(Files.exists(none));
+        } finally {
+            if (old == null) {
+                System.clearProperty("ifold.threads");
+            } else {
+                System.setProperty("ifold.threads", old);
             }
         }
     }
