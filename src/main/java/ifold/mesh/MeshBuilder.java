@@ -119,20 +119,27 @@ public final class MeshBuilder {
     private Result run() throws InvalidMeshException {
         checkCoordinates();
         cleanFaces();
-        // Duplicate faces are rare, and looking for them is a pass of random look-ups: do it on
-        // a second core while the corners are grouped, and group again only if some turn up.
-        FutureTask<boolean[]> duplicates = new FutureTask<>(this::findDuplicateFaces);
-        if (wFaceCount >= PARALLEL_FACES) {
-            Thread thread = new Thread(duplicates, "duplicate-faces");
-            thread.setDaemon(true);
-            thread.start();
+        boolean[] drop;
+        if (wStart == null) {
+            // Triangles: the mates rule out almost every face at once (duplicateCandidates).
+            findMates();
+            drop = findDuplicateFaces(duplicateCandidates());
         } else {
-            duplicates.run();
+            // Polygons: duplicates are rare, and looking for them is a pass of random look-ups:
+            // do it on a second core while the corners are grouped.
+            FutureTask<boolean[]> duplicates = new FutureTask<>(() -> findDuplicateFaces(null));
+            if (wFaceCount >= PARALLEL_FACES) {
+                Thread thread = new Thread(duplicates, "duplicate-faces");
+                thread.setDaemon(true);
+                thread.start();
+            } else {
+                duplicates.run();
+            }
+            cornerFace = cornerFaces();
+            findMates();
+            drop = await(duplicates);
         }
-        cornerFace = wStart == null ? null : cornerFaces();
-        findMates();
-        boolean[] drop = await(duplicates);
-        if (drop != null) {
+        if (drop != null) { // group again without them
             compactWorkingFaces(drop);
             cornerFace = wStart == null ? null : cornerFaces();
             findMates();
@@ -268,13 +275,49 @@ public final class MeshBuilder {
      *
      * @return which faces to drop, or null if none
      */
-    private boolean[] findDuplicateFaces() throws InvalidMeshException {
+    /**
+     * For triangles, once the mates are known: the faces that may have a duplicate. Two
+     * triangles on the same three vertices share all three edges, so a triangle with a
+     * duplicate has no edge of its own (a boundary mate), and no edge shared with exactly one
+     * other triangle on other vertices; most are ruled out by their first corner.
+     */
+    private boolean[] duplicateCandidates() {
+        boolean[] candidate = new boolean[wFaceCount];
+        for (int f = 0; f < wFaceCount; f++) {
+            boolean may = true;
+            for (int c = 3 * f; c < 3 * f + 3 && may; c++) {
+                int m = mate[c];
+                may = m != BOUNDARY && (m == NON_MANIFOLD || sameVertexSet(m / 3, f));
+            }
+            candidate[f] = may;
+        }
+        return candidate;
+    }
+
+    /**
+     * Marks every face with the same vertex set as an earlier one, looking only at the faces of
+     * {@code candidates} (null for all): a face that is not one has no duplicate either way.
+     */
+    private boolean[] findDuplicateFaces(boolean[] candidates) throws InvalidMeshException {
+        int count = wFaceCount;
+        if (candidates != null) {
+            count = 0;
+            for (boolean candidate : candidates) {
+                count += candidate ? 1 : 0;
+            }
+            if (count == 0) {
+                return null;
+            }
+        }
         // Open addressing at a load of at most 0.7.
-        int capacity = Integer.highestOneBit(Math.max(4, (int) (wFaceCount / 0.7))) << 1;
+        int capacity = Integer.highestOneBit(Math.max(4, (int) (count / 0.7))) << 1;
         int[] table = new int[capacity]; // face + 1, 0 for empty
         boolean[] drop = new boolean[wFaceCount];
         int dropped = 0;
         for (int f = 0; f < wFaceCount; f++) {
+            if (candidates != null && !candidates[f]) {
+                continue;
+            }
             int slot = faceKeyHash(f) & (capacity - 1);
             while (table[slot] != 0) {
                 if (sameVertexSet(table[slot] - 1, f)) {

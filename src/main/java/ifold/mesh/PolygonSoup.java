@@ -25,6 +25,57 @@ public final class PolygonSoup implements IndexedPolygons {
     private int[] faceColor;
     private int faceCount;
 
+    /**
+     * A soup of {@code vertexCount} vertices, {@code coordinates} (x, y, z interleaved, taken
+     * as it is, not copied), and the faces of {@code faceParts} one part after another, with
+     * their source lines and colours; the parts' own vertices are ignored. For readers that
+     * read a file in pieces.
+     */
+    public static PolygonSoup joined(double[] coordinates, int vertexCount, java.util.List<PolygonSoup> faceParts) {
+        if (coordinates.length < 3 * vertexCount) {
+            throw new IllegalArgumentException("fewer coordinates than 3 x " + vertexCount);
+        }
+        long faces = 0;
+        long corners = 0;
+        boolean colors = false;
+        for (PolygonSoup part : faceParts) {
+            faces += part.faceCount;
+            corners += part.cornerCount();
+            colors |= part.faceColor != null;
+        }
+        if (faces + 1 > Integer.MAX_VALUE - 8 || corners > Integer.MAX_VALUE - 8) {
+            throw new IllegalArgumentException("more faces or corners than a soup can hold");
+        }
+        PolygonSoup soup = new PolygonSoup();
+        soup.coordinates = coordinates;
+        soup.vertexCount = vertexCount;
+        soup.faceStart = new int[(int) faces + 1];
+        soup.faceVertices = new int[(int) corners];
+        soup.faceLine = new int[Math.max(1, (int) faces)];
+        if (colors) {
+            soup.faceColor = new int[soup.faceStart.length];
+            Arrays.fill(soup.faceColor, DEFAULT_COLOR);
+        }
+        int f = 0;
+        int c = 0;
+        for (PolygonSoup part : faceParts) {
+            int n = part.faceCount;
+            int k = part.cornerCount();
+            System.arraycopy(part.faceVertices, 0, soup.faceVertices, c, k);
+            for (int g = 0; g < n; g++) {
+                soup.faceStart[f + g + 1] = c + part.faceStart[g + 1];
+            }
+            System.arraycopy(part.faceLine, 0, soup.faceLine, f, n);
+            if (part.faceColor != null) {
+                System.arraycopy(part.faceColor, 0, soup.faceColor, f, n);
+            }
+            f += n;
+            c += k;
+        }
+        soup.faceCount = f;
+        return soup;
+    }
+
     /** The coordinates array itself (x, y, z interleaved; only the first 3·vertexCount entries count). */
     double[] coordinateArray() {
         return coordinates;

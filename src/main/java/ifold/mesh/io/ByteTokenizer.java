@@ -61,6 +61,8 @@ final class ByteTokenizer implements Closeable {
     private final byte[] buf = new byte[BUFFER_SIZE];
     private int pos;
     private int limit;
+    /** Where in the file buf[0] lies. */
+    private long bufferOffset;
     private boolean endOfInput;
     /** The line pos is on, 1-based. */
     private int line = 1;
@@ -91,6 +93,18 @@ final class ByteTokenizer implements Closeable {
             in.close();
             throw e;
         }
+    }
+
+    /**
+     * A tokenizer over part of a file that starts at the beginning of line {@code firstLine}
+     * at file offset {@code offset}: {@code in} gives its bytes (a file of its own, no byte
+     * order mark). For reading a file in pieces.
+     */
+    static ByteTokenizer region(Path file, InputStream in, long offset, int firstLine) {
+        ByteTokenizer tokenizer = new ByteTokenizer(file, in, false);
+        tokenizer.bufferOffset = offset;
+        tokenizer.line = firstLine;
+        return tokenizer;
     }
 
     private ByteTokenizer(Path file, InputStream in, boolean backslashContinuesLine) {
@@ -246,6 +260,7 @@ final class ByteTokenizer implements Closeable {
         }
         int keep = limit - keepFrom;
         if (keepFrom > 0) {
+            bufferOffset += keepFrom;
             System.arraycopy(buf, keepFrom, buf, 0, keep);
             pos -= keepFrom;
             tokenStart -= keepFrom;
@@ -283,6 +298,23 @@ final class ByteTokenizer implements Closeable {
             t = advance();
         } while (t == EOL);
         return t;
+    }
+
+    /**
+     * Right after {@link #advance()} reported an end of line: the file offset where the next
+     * line begins (past the LF of a CRLF) and that line's number.
+     */
+    long nextLineOffset() throws IOException, MeshFormatException {
+        if (afterCr && (pos < limit || fill(limit)) && buf[pos] == '\n') {
+            pos++;
+            afterCr = false;
+        }
+        return bufferOffset + pos;
+    }
+
+    /** The line {@link #advance()} is on: after an end of line, the next one. */
+    int line() {
+        return line;
     }
 
     byte[] buffer() {

@@ -38,6 +38,16 @@ public final class OffReader {
     private int vertexValuesMin;
     private int vertexValuesMax;
 
+    /** The counts of the header. */
+    private int vertexCount;
+    private int faceCount;
+
+    /**
+     * Where a piece of a file read in parallel puts its vertices (x, y, z interleaved, at their
+     * index in the whole file); null when reading a file whole, into {@link #soup}.
+     */
+    private double[] coordinates;
+
     private OffReader(ByteTokenizer tokens) {
         this.tokens = tokens;
     }
@@ -50,18 +60,41 @@ public final class OffReader {
      * @throws IOException when the file cannot be read
      */
     public static PolygonSoup read(Path file) throws MeshFormatException, IOException {
+        PolygonSoup parallel = ParallelOffReader.read(file);
+        if (parallel != null) {
+            return parallel;
+        }
         try (ByteTokenizer tokens = ByteTokenizer.open(file, false)) {
             return new OffReader(tokens).read();
         }
     }
 
     private PolygonSoup read() throws MeshFormatException, IOException {
+        readPreamble();
+        for (int v = 0; v < vertexCount; v++) {
+            readVertex(v);
+        }
+        for (int f = 0; f < faceCount; f++) {
+            readFace(f);
+        }
+        if (tokens.advanceAcrossLines() == TOKEN) {
+            throw tokens.error(tokens.tokenLine(), "extra data '" + tokens.tokenText() + "' after the last of "
+                    + faceCount + " faces: the header counts disagree with the data");
+        }
+        return soup;
+    }
+
+    /**
+     * Reads the header and its counts. Returns true where the counts' line ends in a line
+     * break (the records start on the next line), false where the file ends there.
+     */
+    private boolean readPreamble() throws MeshFormatException, IOException {
         if (tokens.advanceAcrossLines() == EOF) {
             throw tokens.error(0, "no data: only comments and blank lines");
         }
         readHeader();
-        int vertexCount = readCount("vertex", "vertices");
-        int faceCount = readCount("face", "faces");
+        vertexCount = readCount("vertex", "vertices");
+        faceCount = readCount("face", "faces");
         int countsLine = tokens.tokenLine();
         // advance() stops at a line end, so a token here is on the line of the face count.
         int t = tokens.advance();
@@ -69,7 +102,8 @@ public final class OffReader {
             if (tokens.tokenLong() == NOT_AN_INTEGER) {
                 throw tokens.error(countsLine, "expected the edge count, found '" + tokens.tokenText() + "'");
             }
-            if (tokens.advance() == TOKEN) {
+            t = tokens.advance();
+            if (t == TOKEN) {
                 throw tokens.error(countsLine, "unexpected '" + tokens.tokenText()
                         + "' after the header counts (vertices faces edges)");
             }
@@ -77,17 +111,59 @@ public final class OffReader {
         if (faceCount == 0) {
             throw tokens.error(countsLine, "no faces: the header declares 0 faces");
         }
-        for (int v = 0; v < vertexCount; v++) {
-            readVertex(v, vertexCount);
+        return t != EOF;
+    }
+
+    /** What the header says, for reading the records of a file in pieces. */
+    record Preamble(String header, int vertexValuesMin, int vertexValuesMax, int vertexCount, int faceCount,
+            long recordsOffset, int recordsLine) {
+    }
+
+    /**
+     * Reads the header of {@code file}, or returns null where it holds nothing but a header
+     * (the whole-file reader then says what is wrong).
+     */
+    static Preamble preamble(Path file) throws MeshFormatException, IOException {
+        try (ByteTokenizer tokens = ByteTokenizer.open(file, false)) {
+            OffReader reader = new OffReader(tokens);
+            if (!reader.readPreamble()) {
+                return null;
+            }
+            long offset = tokens.nextLineOffset();
+            return new Preamble(reader.header, reader.vertexValuesMin, reader.vertexValuesMax, reader.vertexCount,
+                    reader.faceCount, offset, tokens.line());
         }
-        for (int f = 0; f < faceCount; f++) {
-            readFace(f, faceCount, vertexCount);
+    }
+
+    /**
+     * Reads records {@code first} to {@code end - 1} (vertices, then faces, counted together)
+     * from {@code tokens}, a piece of a file that holds exactly them, each on a line of its
+     * own: vertices into {@code coordinates}, faces into the soup returned.
+     *
+     * @throws MeshFormatException for anything the whole-file reader would not read the same
+     *     way, a face over several lines included: the caller then reads the file whole
+     */
+    static PolygonSoup readRecords(ByteTokenizer tokens, Preamble preamble, double[] coordinates, int first, int end)
+            throws MeshFormatException, IOException {
+        OffReader reader = new OffReader(tokens);
+        reader.header = preamble.header();
+        reader.vertexValuesMin = preamble.vertexValuesMin();
+        reader.vertexValuesMax = preamble.vertexValuesMax();
+        reader.vertexCount = preamble.vertexCount();
+        reader.faceCount = preamble.faceCount();
+        reader.coordinates = coordinates;
+        int vertices = preamble.vertexCount();
+        for (int r = first; r < end; r++) {
+            if (r < vertices) {
+                reader.readVertex(r);
+            } else {
+                reader.readFace(r - vertices);
+            }
         }
-        if (tokens.advanceAcrossLines() == TOKEN) {
-            throw tokens.error(tokens.tokenLine(), "extra data '" + tokens.tokenText() + "' after the last of "
-                    + faceCount + " faces: the header counts disagree with the data");
+        if (tokens.advanceAcrossLines() != EOF) {
+            throw tokens.error(tokens.tokenLine(), "more records in the piece than counted");
         }
-        return soup;
+        return reader.soup;
     }
 
     /** Reads [ST][C][N]OFF and sets what a vertex record holds. */
@@ -151,7 +227,7 @@ public final class OffReader {
         return (int) count;
     }
 
-    private void readVertex(int v, int vertexCount) throws MeshFormatException, IOException {
+    private void readVertex(int v) throws MeshFormatException, IOException {
         if (tokens.advanceAcrossLines() == EOF) {
             throw truncated("the file ends after " + v + " of " + vertexCount + " vertices");
         }
@@ -179,7 +255,13 @@ public final class OffReader {
         if (values < vertexValuesMin || values > vertexValuesMax) {
             throw badVertex(TOKEN, line, values);
         }
-        soup.addVertex(x, y, z);
+        if (coordinates != null) {
+            coordinates[3 * v] = x;
+            coordinates[3 * v + 1] = y;
+            coordinates[3 * v + 2] = z;
+        } else {
+            soup.addVertex(x, y, z);
+        }
     }
 
     private MeshFormatException badVertex(int t, int line, int values) {
@@ -192,7 +274,7 @@ public final class OffReader {
                 + header + " expects " + expected);
     }
 
-    private void readFace(int f, int faceCount, int vertexCount) throws MeshFormatException, IOException {
+    private void readFace(int f) throws MeshFormatException, IOException {
         if (tokens.advanceAcrossLines() == EOF) {
             throw truncated("the file ends after " + f + " of " + faceCount + " faces");
         }
@@ -223,8 +305,12 @@ public final class OffReader {
             }
             face[k] = (int) index;
         }
-        soup.addFace(face, n, line);
-        readFaceColor(f, n);
+        if (coordinates != null && tokens.tokenLine() != line) {
+            // Read in pieces, a record is a line; a face over several is read whole instead.
+            throw tokens.error(line, "a face over several lines");
+        }
+        int local = soup.addFace(face, n, line);
+        readFaceColor(local, n);
     }
 
     private MeshFormatException badIndex(long index, int vertexCount) {
