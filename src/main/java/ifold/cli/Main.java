@@ -1,13 +1,16 @@
 package ifold.cli;
 
 import java.io.PrintWriter;
+import java.util.Collection;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
 /** The {@code ifold} command: the entry point and the only place that calls System.exit. */
 @Command(name = "ifold", mixinStandardHelpOptions = true, version = "ifold 0.1.0",
-        description = "Wraps polyhedra in a strip of paper, the zig-zag way.",
-        subcommands = {WrapCommand.class, ViewCommand.class, FoldCommand.class, DemoCommand.class, RefineCommand.class, InfoCommand.class, GenerateCommand.class, CommandLine.HelpCommand.class})
+        description = "Wraps polyhedra in a strip of paper, the zig-zag way.")
 public final class Main implements Runnable {
 
     @CommandLine.Spec
@@ -48,8 +51,55 @@ public final class Main implements Runnable {
     }
 
     /** A command line with iFold's error handling: one line per error, never a stack trace. */
+    /** The subcommands, by name, in the order help lists them. */
+    private static final Map<String, Class<?>> SUBCOMMANDS = new LinkedHashMap<>();
+
+    static {
+        SUBCOMMANDS.put("wrap", WrapCommand.class);
+        SUBCOMMANDS.put("view", ViewCommand.class);
+        SUBCOMMANDS.put("fold", FoldCommand.class);
+        SUBCOMMANDS.put("demo", DemoCommand.class);
+        SUBCOMMANDS.put("refine", RefineCommand.class);
+        SUBCOMMANDS.put("info", InfoCommand.class);
+        SUBCOMMANDS.put("generate", GenerateCommand.class);
+        SUBCOMMANDS.put("help", CommandLine.HelpCommand.class);
+    }
+
+    /** The command line with every subcommand. */
     public static CommandLine commandLine(PrintWriter out, PrintWriter err) {
+        return commandLine(out, err, SUBCOMMANDS.keySet());
+    }
+
+    /**
+     * The command line that {@code args} need. picocli reads the annotations of every command
+     * it is given, over 100 ms for all of iFold's: a run of one subcommand needs only that
+     * one, and {@code --version} none. Help, a misspelt name (for picocli's suggestions) and
+     * anything else get them all.
+     */
+    static CommandLine commandLineFor(PrintWriter out, PrintWriter err, String[] args) {
+        String first = null;
+        boolean help = false;
+        for (String arg : args) {
+            if (!arg.startsWith("-")) {
+                first = arg;
+                break;
+            }
+            help |= arg.equals("-h") || arg.equals("--help");
+        }
+        if (first == null) {
+            return commandLine(out, err, help ? SUBCOMMANDS.keySet() : List.of());
+        }
+        if (SUBCOMMANDS.containsKey(first) && !first.equals("help")) {
+            return commandLine(out, err, List.of(first));
+        }
+        return commandLine(out, err, SUBCOMMANDS.keySet());
+    }
+
+    private static CommandLine commandLine(PrintWriter out, PrintWriter err, Collection<String> subcommands) {
         CommandLine commandLine = new CommandLine(new Main());
+        for (String name : subcommands) {
+            commandLine.addSubcommand(name, SUBCOMMANDS.get(name));
+        }
         commandLine.setOut(out);
         commandLine.setErr(err);
         commandLine.setParameterExceptionHandler((ex, args) -> {
@@ -79,7 +129,7 @@ public final class Main implements Runnable {
         PrintWriter err = new PrintWriter(System.err, true);
         int code;
         try {
-            code = commandLine(out, err).execute(args);
+            code = commandLineFor(out, err, args).execute(args);
         } catch (OutOfMemoryError e) {
             // picocli passes Errors through; a model too big for the heap is still the user's to fix.
             err.println("ifold: out of memory: give the JVM more, e.g. JAVA_OPTS=-Xmx8g");

@@ -130,11 +130,18 @@ public final class MeshValidator {
             return; // vertex orbits would walk broken loops
         }
         checkVertexOrbits();
-        checkDuplicateEdges();
     }
 
+    /**
+     * Each vertex's fan holds all its outgoing halfedges, and reaches each neighbour once (two
+     * edges between the same two vertices are a split that did not go through; each is
+     * reported once, at the lower vertex).
+     */
     private void checkVertexOrbits() {
         int vertices = mesh.vertexCount();
+        // The last vertex whose fan reached each vertex: a neighbour met twice in one fan is a double edge.
+        int[] reachedFrom = new int[vertices];
+        Arrays.fill(reachedFrom, -1);
         int[] outgoing = new int[vertices];
         for (int h = 0; h < mesh.halfedgeCount(); h++) {
             outgoing[mesh.fromVertex(h)]++;
@@ -156,6 +163,11 @@ public final class MeshValidator {
             do {
                 boundary |= mesh.isBoundary(h);
                 count++;
+                int neighbour = mesh.toVertex(h);
+                if (reachedFrom[neighbour] == v && v < neighbour) {
+                    report(MeshError.Kind.DUPLICATE_EDGE, v, "vertices " + v + " and " + neighbour + " are joined by two edges");
+                }
+                reachedFrom[neighbour] = v;
                 h = HalfedgeMesh.twin(mesh.prev(h));
             } while (h != start && count <= outgoing[v]);
             if (count != outgoing[v]) {
@@ -164,25 +176,6 @@ public final class MeshValidator {
             } else if (boundary && !mesh.isBoundary(start)) {
                 report(MeshError.Kind.VERTEX_HALFEDGE_WRONG, v, "boundary vertex " + v
                         + " does not start at its boundary halfedge");
-            }
-        }
-    }
-
-    /** Two edges between the same two vertices: a split that did not go through. */
-    private void checkDuplicateEdges() {
-        int edges = mesh.edgeCount();
-        long[] keys = new long[edges];
-        for (int e = 0; e < edges; e++) {
-            int a = mesh.toVertex(2 * e);
-            int b = mesh.toVertex(2 * e + 1);
-            keys[e] = ((long) Math.min(a, b) << 32) | Math.max(a, b);
-        }
-        Arrays.sort(keys);
-        for (int i = 1; i < edges; i++) {
-            if (keys[i] == keys[i - 1]) {
-                int a = (int) (keys[i] >>> 32);
-                int b = (int) keys[i];
-                report(MeshError.Kind.DUPLICATE_EDGE, a, "vertices " + a + " and " + b + " are joined by two edges");
             }
         }
     }

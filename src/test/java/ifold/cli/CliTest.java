@@ -62,6 +62,23 @@ class CliTest {
         assertFalse(run.err().contains("\tat "), "no stack trace");
     }
 
+    /** main() builds only the subcommands a run needs (picocli's annotation reading is most of start-up). */
+    @Test
+    void aRunBuildsOnlyTheSubcommandItNeeds() {
+        PrintWriter sink = new PrintWriter(new StringWriter());
+        assertEquals(java.util.Set.of("info"), Main.commandLineFor(sink, sink, new String[] {"info", "x.off", "--json"})
+                .getSubcommands().keySet());
+        assertEquals(java.util.Set.of(), Main.commandLineFor(sink, sink, new String[] {"--version"}).getSubcommands().keySet());
+        java.util.Set<String> all = Main.commandLine(sink, sink).getSubcommands().keySet();
+        assertTrue(all.containsAll(java.util.List.of("wrap", "view", "fold", "demo", "refine", "info", "generate", "help")), all.toString());
+        for (String[] args : new String[][] {{"--help"}, {"wrapp", "x.off"}, {"help", "info"}}) {
+            assertEquals(all, Main.commandLineFor(sink, sink, args).getSubcommands().keySet(), String.join(" ", args));
+        }
+        StringWriter help = new StringWriter();
+        Main.commandLineFor(new PrintWriter(help), sink, new String[] {"--help"}).execute("--help");
+        assertTrue(help.toString().contains("generate") && help.toString().contains("wrap"), help.toString());
+    }
+
     @Test
     void refineWritesFacesInPathOrder() throws Exception {
         Path model = write(Solids.icosahedron(), "ico.off");

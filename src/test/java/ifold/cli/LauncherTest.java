@@ -90,4 +90,51 @@ class LauncherTest {
         launcher.waitFor(10, TimeUnit.SECONDS);
         assertAllGone(started);
     }
+
+    /** What the launcher at {@code launcher} prints for {@code ifold info models/cube.off --json}: stdout, then stderr. */
+    private String info(Path launcher, boolean noArchive) throws Exception {
+        ProcessBuilder builder = new ProcessBuilder(launcher.toString(), "info", Path.of("models", "cube.off").toAbsolutePath().toString(),
+                "--json").redirectOutput(dir.resolve("out").toFile()).redirectError(dir.resolve("err").toFile());
+        if (noArchive) {
+            builder.environment().put("IFOLD_NO_CDS", "1");
+        } else {
+            builder.environment().remove("IFOLD_NO_CDS");
+        }
+        Process process = builder.start();
+        assertTrue(process.waitFor(60, TimeUnit.SECONDS), "ended");
+        assertEquals(0, process.exitValue());
+        return Files.readString(dir.resolve("out")) + "\n--- stderr ---\n" + Files.readString(dir.resolve("err"));
+    }
+
+    /**
+     * The class-data-sharing archive installDist makes is used where it fits and quietly
+     * ignored where it does not (another install directory, a jar changed): the output is the
+     * same byte for byte, with nothing on stderr.
+     */
+    @Test
+    void theStartUpArchiveNeverShowsInTheOutput() throws Exception {
+        Path archive = LAUNCHER.getParent().getParent().resolve("lib").resolve("ifold.jsa");
+        assumeTrue(Files.isRegularFile(archive), "installDist made no class-data-sharing archive here");
+        String without = info(LAUNCHER, true);
+        assertTrue(without.endsWith("--- stderr ---\n"), without);
+        assertEquals(without, info(LAUNCHER, false));
+        // A copy elsewhere, one of its jars touched: the archive is stale twice over.
+        Path copy = dir.resolve("install");
+        try (var files = Files.walk(LAUNCHER.getParent().getParent())) {
+            for (Path from : (Iterable<Path>) files::iterator) {
+                Path to = copy.resolve(LAUNCHER.getParent().getParent().relativize(from).toString());
+                if (Files.isDirectory(from)) {
+                    Files.createDirectories(to);
+                } else {
+                    Files.copy(from, to, java.nio.file.StandardCopyOption.COPY_ATTRIBUTES);
+                }
+            }
+        }
+        Path jar;
+        try (var jars = Files.list(copy.resolve("lib"))) {
+            jar = jars.filter(p -> p.getFileName().toString().startsWith("picocli")).findFirst().orElseThrow();
+        }
+        Files.setLastModifiedTime(jar, java.nio.file.attribute.FileTime.fromMillis(System.currentTimeMillis()));
+        assertEquals(without, info(copy.resolve("bin").resolve("ifold"), false));
+    }
 }

@@ -112,4 +112,46 @@ class MeshValidatorTest {
         List<MeshError> errors = MeshValidator.validate(mesh);
         assertTrue(errors.stream().anyMatch(e -> e.kind() == MeshError.Kind.NON_MANIFOLD_VERTEX), errors.toString());
     }
+
+    /**
+     * A closed surface of four triangles in which two edges join the same two vertices u and
+     * v (two digons, each filled by two triangles): every orbit is sound, and only the double
+     * edge is wrong, reported once.
+     */
+    @Test
+    void twoEdgesBetweenTheSameVerticesAreReportedOnce() {
+        HalfedgeMesh mesh = new HalfedgeMesh();
+        int u = mesh.addVertex(0, 0, 0);
+        int v = mesh.addVertex(1, 0, 0);
+        int a = mesh.addVertex(0.5, 1, 0);
+        int b = mesh.addVertex(0.5, -1, 0.5);
+        int e1 = mesh.addEdge(u, v);
+        int e2 = mesh.addEdge(u, v);
+        int ua = mesh.addEdge(u, a);
+        int va = mesh.addEdge(v, a);
+        int ub = mesh.addEdge(u, b);
+        int vb = mesh.addEdge(v, b);
+        int[][] loops = {
+            {e1, va, HalfedgeMesh.twin(ua)}, // u v a
+            {HalfedgeMesh.twin(e2), ua, HalfedgeMesh.twin(va)}, // v u a
+            {HalfedgeMesh.twin(e1), ub, HalfedgeMesh.twin(vb)}, // v u b
+            {e2, vb, HalfedgeMesh.twin(ub)}, // u v b
+        };
+        for (int[] loop : loops) {
+            int f = mesh.addFace(loop[0]);
+            for (int k = 0; k < 3; k++) {
+                mesh.link(loop[k], loop[(k + 1) % 3]);
+                mesh.setFace(loop[k], f);
+            }
+        }
+        mesh.setHalfedge(u, e1);
+        mesh.setHalfedge(v, HalfedgeMesh.twin(e1));
+        mesh.setHalfedge(a, HalfedgeMesh.twin(ua));
+        mesh.setHalfedge(b, HalfedgeMesh.twin(ub));
+        assertEquals(2, Topology.of(mesh).eulerCharacteristic(), "setup: a sphere");
+        List<MeshError> errors = MeshValidator.validate(mesh);
+        assertEquals(1, errors.size(), errors.toString());
+        assertEquals(MeshError.Kind.DUPLICATE_EDGE, errors.get(0).kind());
+        assertEquals("vertices 0 and 1 are joined by two edges", errors.get(0).message());
+    }
 }
