@@ -8,7 +8,9 @@ import java.util.Arrays;
  * turns it into a {@link HalfedgeMesh}. Every face remembers the source line it came from so
  * that a problem found later can still be reported by file and line.
  *
- * <p>Arrays grow by doubling, so a soup never trusts a header's count to size itself.
+ * <p>Arrays grow by doubling. A reader may size them at the start ({@link #PolygonSoup(int, int,
+ * int)}), from a header's counts as far as the file's size bears them out, never from the
+ * counts alone.
  */
 public final class PolygonSoup implements IndexedPolygons {
     /** x, y, z of each vertex, interleaved. */
@@ -24,6 +26,22 @@ public final class PolygonSoup implements IndexedPolygons {
     /** Packed 0xAARRGGBB colour of each face; null until the first colour is set. */
     private int[] faceColor;
     private int faceCount;
+
+    /** An empty soup. */
+    public PolygonSoup() {
+    }
+
+    /**
+     * An empty soup with room for {@code vertices} vertices and {@code faces} faces of
+     * {@code corners} corners in all before its arrays grow: a big file read into it makes no
+     * garbage of half-grown arrays.
+     */
+    public PolygonSoup(int vertices, int faces, int corners) {
+        coordinates = new double[3 * Math.max(64, vertices)];
+        faceStart = new int[Math.max(64, faces) + 1];
+        faceVertices = new int[Math.max(3 * 64, corners)];
+        faceLine = new int[faceStart.length - 1];
+    }
 
     /**
      * A soup of {@code vertexCount} vertices, {@code coordinates} (x, y, z interleaved, taken

@@ -7,6 +7,7 @@ import static ifold.mesh.io.DecimalParser.TOO_LARGE;
 
 import ifold.mesh.PolygonSoup;
 import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
 
@@ -27,7 +28,7 @@ import java.util.Arrays;
  */
 public final class OffReader {
     private final ByteTokenizer tokens;
-    private final PolygonSoup soup = new PolygonSoup();
+    private PolygonSoup soup = new PolygonSoup();
     /** The indices of the face being read. */
     private int[] face = new int[16];
     /** The colour values after the indices of the face being read. */
@@ -65,12 +66,20 @@ public final class OffReader {
             return parallel;
         }
         try (ByteTokenizer tokens = ByteTokenizer.open(file, false)) {
-            return new OffReader(tokens).read();
+            return new OffReader(tokens).read(Files.size(file));
         }
     }
 
-    private PolygonSoup read() throws MeshFormatException, IOException {
+    /** The shortest records: "0 0 0" and "3 0 1 2", each with its line break. */
+    private static final int SHORTEST_VERTEX = 6;
+    private static final int SHORTEST_TRIANGLE = 8;
+
+    private PolygonSoup read(long fileSize) throws MeshFormatException, IOException {
         readPreamble();
+        // Room for what the header says, as far as the file is big enough to hold it.
+        int vertices = (int) Math.min(vertexCount, fileSize / SHORTEST_VERTEX);
+        int faces = (int) Math.min(faceCount, fileSize / SHORTEST_TRIANGLE);
+        soup = new PolygonSoup(vertices, faces, (int) Math.min(3L * faces, Integer.MAX_VALUE - 8));
         for (int v = 0; v < vertexCount; v++) {
             readVertex(v);
         }
