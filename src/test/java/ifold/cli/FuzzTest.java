@@ -21,7 +21,7 @@ import org.junit.jupiter.api.io.TempDir;
  * lines dropped, doubled or cut short, numbers replaced by extreme ones, garbage inserted), and
  * each fed to the command line. Every outcome must be a clean error (one line naming the file,
  * exit 1 or 2, no stack trace) or a verified result (a valid mesh with faces; paper folded
- * without stretching), within seconds. Seeded: the same cases every run; FUZZ_CASES=N runs more.
+ * without stretching), within seconds. Seeded: the same cases every run; FUZZ_CASES=N (scripts/test -PfuzzCases=N) runs more.
  */
 class FuzzTest {
     @TempDir
