@@ -3,14 +3,10 @@ package ifold.mesh;
 import ifold.geom.PolygonTriangulator;
 import ifold.geom.Polygons;
 import ifold.geom.Triangles;
-import ifold.io.Workers;
-import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.EnumMap;
-import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ExecutionException;
-import java.util.concurrent.Future;
 import java.util.concurrent.FutureTask;
 
 /**
@@ -452,54 +448,7 @@ public final class MeshBuilder {
         }
         fill = null;
         boolean nonManifold = false;
-        int threads = Workers.threads();
-        if (wCornerCount >= PARALLEL_FACES && threads > 1) {
-            // The buckets are independent: split them where the corners split evenly.
-            List<Future<Boolean>> parts = new ArrayList<>();
-            int from = 0;
-            for (int k = 1; k <= threads; k++) {
-                int to = k == threads ? vertexCount : firstBucketFrom(bucketStart, (int) ((long) wCornerCount * k / threads));
-                int start = from;
-                parts.add(Workers.pool().submit(() -> matesInBuckets(start, to, bucketStart, high)));
-                from = to;
-            }
-            for (Future<Boolean> part : parts) {
-                try {
-                    nonManifold |= Workers.await(part);
-                } catch (java.io.IOException e) {
-                    throw new java.io.UncheckedIOException(e); // grouping reads no files
-                }
-            }
-        } else {
-            nonManifold = matesInBuckets(0, vertexCount, bucketStart, high);
-        }
-        if (!nonManifold) {
-            byMin = null;
-        }
-    }
-
-    /** The first vertex whose bucket starts at or after corner {@code corner}. */
-    private static int firstBucketFrom(int[] bucketStart, int corner) {
-        int low = 0;
-        int high = bucketStart.length - 1;
-        while (low < high) {
-            int middle = (low + high) >>> 1;
-            if (bucketStart[middle] < corner) {
-                low = middle + 1;
-            } else {
-                high = middle;
-            }
-        }
-        return low;
-    }
-
-    /**
-     * Sorts the buckets of vertices [from, to) by the higher vertex and sets the mates of their
-     * corners; returns whether some edge has more than two corners.
-     */
-    private boolean matesInBuckets(int from, int to, int[] bucketStart, int[] high) {
-        boolean nonManifold = false;
-        for (int v = from; v < to; v++) {
+        for (int v = 0; v < vertexCount; v++) {
             int start = bucketStart[v];
             int end = bucketStart[v + 1];
             // A bucket holds the few edges of one vertex: insertion sort by the higher vertex.
@@ -532,7 +481,9 @@ public final class MeshBuilder {
                 i = runEnd;
             }
         }
-        return nonManifold;
+        if (!nonManifold) {
+            byMin = null;
+        }
     }
 
     // ---- step 4: orientation ----------------------------------------------------------------

@@ -279,47 +279,4 @@ class MeshBuilderTest {
         assertEquals(192, topology.faces());
         assertEquals(0, topology.eulerCharacteristic());
     }
-
-    /**
-     * A big soup with defects of every kind the grouping meets (duplicate faces, an edge of
-     * three faces, a pinch): the same mesh and the same repairs on one thread as on several.
-     */
-    @Test
-    void theMeshAndItsRepairsDoNotDependOnTheThreads() throws Exception {
-        PolygonSoup soup = Solids.torus(3, 1, 300, 100); // 60,000 triangles, above the parallel threshold
-        soup.addFace(new int[] {0, 1, 2}, 3, 0);
-        soup.addFace(new int[] {2, 1, 0}, 3, 0);
-        soup.addFace(new int[] {500, 501, 29_000}, 3, 0);
-        soup.addFace(new int[] {10_000, 10_301, 20_000}, 3, 0);
-        String old = System.getProperty("ifold.threads");
-        try {
-            System.setProperty("ifold.threads", "1");
-            MeshBuilder.Result one = MeshBuilder.build(soup, MeshBuilder.Options.REPAIR);
-            System.setProperty("ifold.threads", "2");
-            MeshBuilder.Result two = MeshBuilder.build(soup, MeshBuilder.Options.REPAIR);
-            assertTrue(one.repairs().containsKey(Defect.DUPLICATE_FACE) && one.repairs().containsKey(Defect.NON_MANIFOLD_EDGE),
-                    "setup: " + one.repairs());
-            assertEquals(one.repairs(), two.repairs());
-            HalfedgeMesh a = one.mesh();
-            HalfedgeMesh b = two.mesh();
-            assertEquals(a.halfedgeCount(), b.halfedgeCount());
-            assertEquals(a.vertexCount(), b.vertexCount());
-            assertEquals(a.faceCount(), b.faceCount());
-            for (int h = 0; h < a.halfedgeCount(); h++) {
-                if (a.next(h) != b.next(h) || a.toVertex(h) != b.toVertex(h) || a.face(h) != b.face(h)) {
-                    throw new AssertionError("halfedge " + h + " differs");
-                }
-            }
-            for (int v = 0; v < a.vertexCount(); v++) {
-                assertEquals(a.halfedge(v), b.halfedge(v), "vertex " + v);
-            }
-            assertEquals(java.util.Arrays.toString(one.sourceFace()), java.util.Arrays.toString(two.sourceFace()));
-        } finally {
-            if (old == null) {
-                System.clearProperty("ifold.threads");
-            } else {
-                System.setProperty("ifold.threads", old);
-            }
-        }
-    }
 }
