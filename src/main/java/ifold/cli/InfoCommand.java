@@ -1,6 +1,5 @@
 package ifold.cli;
 
-import ifold.io.Workers;
 import ifold.mesh.Defect;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
@@ -11,7 +10,6 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
 import java.util.concurrent.Callable;
-import java.util.concurrent.Future;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -41,15 +39,8 @@ final class InfoCommand implements Callable<Integer> {
         loaded.requireFaces(model, "nothing to describe");
         loaded.reportRepairs(model, spec.commandLine().getErr());
         HalfedgeMesh mesh = loaded.built().mesh();
-        // Two read-only walks of the mesh: the topology on a second core while this one validates.
-        Future<Topology> counting = Workers.pool().submit(() -> Topology.of(mesh));
+        Topology topology = Topology.of(mesh);
         boolean valid = MeshValidator.validate(mesh).isEmpty();
-        Topology topology;
-        try {
-            topology = Workers.await(counting);
-        } catch (java.io.IOException e) {
-            throw new java.io.UncheckedIOException(e); // counting reads no files
-        }
         Map<Defect, Integer> repairs = loaded.repairs();
         // The input was manifold if nothing had to be split or cut to make it so.
         boolean manifold = !repairs.containsKey(Defect.NON_MANIFOLD_EDGE) && !repairs.containsKey(Defect.NON_MANIFOLD_VERTEX);

@@ -1,2 +1,2 @@
-/** Files written whole or not at all, and the threads that data-parallel steps share. Plain Java. */
+/** Files written whole or not at all. Plain Java. */
 package ifold.io;

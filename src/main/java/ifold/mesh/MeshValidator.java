@@ -1,11 +1,9 @@
 package ifold.mesh;
 
 import ifold.geom.Polygons;
-import ifold.io.Workers;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
-import java.util.concurrent.Future;
 
 /**
  * Checks every invariant of a {@link HalfedgeMesh} and returns what is broken as values. The
@@ -29,31 +27,12 @@ public final class MeshValidator {
     /** All broken invariants of {@code mesh}, or an empty list when it is valid. */
     public static List<MeshError> validate(HalfedgeMesh mesh) {
         MeshValidator validator = new MeshValidator(mesh);
-        if (!validator.checkStructure()) {
-            return List.copyOf(validator.errors);
-        }
-        // Once the handles are sound, the orbits and the geometry are read-only checks of their
-        // own: the geometry goes to a second core for a big mesh, and its errors still come last.
-        MeshValidator geometry = new MeshValidator(mesh);
-        if (mesh.faceCount() >= PARALLEL_FACES && Workers.threads() > 1) {
-            Future<?> task = Workers.pool().submit(geometry::checkGeometry);
+        if (validator.checkStructure()) {
             validator.checkOrbits();
-            try {
-                Workers.await(task);
-            } catch (java.io.IOException e) {
-                throw new java.io.UncheckedIOException(e); // the checks read no files
-            }
-        } else {
-            validator.checkOrbits();
-            geometry.checkGeometry();
+            validator.checkGeometry();
         }
-        List<MeshError> errors = new ArrayList<>(validator.errors);
-        errors.addAll(geometry.errors);
-        return List.copyOf(errors.subList(0, Math.min(LIMIT, errors.size())));
+        return List.copyOf(validator.errors);
     }
-
-    /** Below this many faces a second thread costs more than it saves. */
-    private static final int PARALLEL_FACES = 50_000;
 
     public static boolean isValid(HalfedgeMesh mesh) {
         return validate(mesh).isEmpty();

@@ -154,29 +154,4 @@ class MeshValidatorTest {
         assertEquals(MeshError.Kind.DUPLICATE_EDGE, errors.get(0).kind());
         assertEquals("vertices 0 and 1 are joined by two edges", errors.get(0).message());
     }
-
-    /** A big mesh is checked on two threads: the errors, and their order, are the same as on one. */
-    @Test
-    void aBigMeshGetsTheSameErrorsWhateverTheThreads() {
-        HalfedgeMesh mesh = Fixtures.build(Solids.torus(3, 1, 300, 100)); // 60,000 faces
-        mesh.setPosition(7, mesh.x(8), mesh.y(8), mesh.z(8)); // faces around 7 and 8 lose their area
-        int h = mesh.faceHalfedge(40_000);
-        mesh.setHalfedge(mesh.fromVertex(h), HalfedgeMesh.twin(h)); // a vertex whose halfedge does not leave it
-        String old = System.getProperty("ifold.threads");
-        try {
-            System.setProperty("ifold.threads", "1");
-            List<MeshError> one = MeshValidator.validate(mesh);
-            System.setProperty("ifold.threads", "2");
-            List<MeshError> two = MeshValidator.validate(mesh);
-            assertEquals(one, two);
-            assertEquals(MeshError.Kind.VERTEX_HALFEDGE_WRONG, one.get(0).kind(), one.toString());
-            assertEquals(MeshError.Kind.ZERO_AREA_FACE, one.get(one.size() - 1).kind(), "the geometry's errors come last: " + one);
-        } finally {
-            if (old == null) {
-                System.clearProperty("ifold.threads");
-            } else {
-                System.setProperty("ifold.threads", old);
-            }
-        }
-    }
 }
