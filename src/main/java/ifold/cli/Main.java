@@ -7,15 +7,23 @@ import picocli.CommandLine.Command;
 /** The {@code ifold} command: the entry point and the only place that calls System.exit. */
 @Command(name = "ifold", mixinStandardHelpOptions = true, version = "ifold 0.1.0",
         description = "Wraps polyhedra in a strip of paper, the zig-zag way.",
-        subcommands = {WrapCommand.class, ViewCommand.class, FoldCommand.class, DemoCommand.class, RefineCommand.class, InfoCommand.class, GenerateCommand.class, CommandLine.HelpCommand.class})
+        subcommands = {AppCommand.class, WrapCommand.class, ViewCommand.class, FoldCommand.class, DemoCommand.class, RefineCommand.class, InfoCommand.class, GenerateCommand.class, CommandLine.HelpCommand.class})
 public final class Main implements Runnable {
 
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
+    /** {@code ifold} alone: the window where there is a display; without one, the usage error of old. */
     @Override
     public void run() {
-        throw new CommandLine.ParameterException(spec.commandLine(), "missing command: try 'ifold --help'");
+        if (!PaperOutputs.hasDisplay() || !ifold.ui.App.canOpen()) {
+            throw new CommandLine.ParameterException(spec.commandLine(), "missing command: try 'ifold --help'");
+        }
+        try {
+            AppCommand.open(null, null);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 
     /**

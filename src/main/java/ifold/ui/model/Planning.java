@@ -294,7 +294,7 @@ public final class Planning {
             FoldScript.Step fold = result.steps().get(k).fold();
             String kind = fold.kind().name().toLowerCase(Locale.ROOT);
             folds.add(new Fold(String.format(Locale.ROOT, "fold %d: %s %.4g°%s", k + 1, kind, fold.degrees(),
-                    fold.line() > 0 ? ", line " + fold.line() : ""), kind, k + 1));
+                    fold.line() > 0 ? ", line " + fold.line() : ""), kind, k));
         }
         String header = "iFold fold script " + file + ": " + result.steps().size() + " folds, thickness " + result.sheet().thickness();
         return new Plan(job, file.getFileName() + ": " + result.steps().size() + " folds", shown, List.copyOf(folds), figures, 10,
@@ -326,7 +326,7 @@ public final class Planning {
                 continue; // the strip's end is a step of the animation, not a fold
             }
             folds.add(new Fold((several ? "strip " + (step.strip() + 1) + ", " : "") + step.describe(), kindName(step.kind()),
-                    playback.positionAfter(j + 1)));
+                    playback.positionAfter(j)));
         }
         List<FoldFile.Folded> sheets = new ArrayList<>();
         for (Wrap.Strip strip : result.strips()) {

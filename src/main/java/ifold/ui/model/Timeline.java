@@ -20,7 +20,7 @@ public final class Timeline {
 
     /**
      * @param end the animation's length, in its steps
-     * @param folds the folds, in order, with the positions at which each is made
+     * @param folds the folds, in order, with the positions at which each begins
      * @param seconds how long the whole plays at speed 1
      */
     public Timeline(double end, List<Fold> folds, double seconds) {
@@ -99,8 +99,8 @@ public final class Timeline {
     }
 
     /**
-     * Pauses and moves to the next fold made (forward) or the one before (back): to the
-     * positions at which folds are made, the start and the end.
+     * Pauses and moves a fold forward or back: to the positions at which folds begin (so that
+     * a step forward makes one fold), the start and the end.
      */
     public void stepFold(int direction) {
         playing = false;
@@ -124,13 +124,13 @@ public final class Timeline {
         }
     }
 
-    /** Pauses and shows fold {@code index} made. */
+    /** Pauses at the beginning of fold {@code index}: the folds before it made, and it next. */
     public void jumpTo(int index) {
         playing = false;
         seek(folds.get(index).position());
     }
 
-    /** The last fold made at this position, or -1 before the first. */
+    /** The fold under way (or next) at this position: the last that has begun; -1 before the first. */
     public int currentFold() {
         double tolerance = 1e-9 * Math.max(1, end);
         int low = 0;

@@ -37,6 +37,9 @@ public final class Worker {
     private final String name;
     private final Executor deliver;
     private final AtomicLong generation = new AtomicLong();
+    /** The ticket of the task whose outcome the listener has yet to hear, or 0. */
+    private volatile long busy;
+    /** The thread of the latest task, for {@link #await}. */
     private volatile Thread running;
 
     /**
@@ -68,25 +71,34 @@ public final class Worker {
             }
         };
         Thread thread = new Thread(() -> {
+            Runnable outcome;
             try {
                 T value = task.run(progress);
-                deliverIfCurrent(ticket, () -> listener.succeeded(value));
+                outcome = () -> listener.succeeded(value);
             } catch (CancellationException e) {
-                // Cancelled or superseded: cancel() said so already, or the next task speaks now.
+                // Cancelled or superseded (cancel() said so, or the next task speaks now); or the
+                // task gave up by itself, which is a cancel too.
+                outcome = () -> listener.failed(Problem.of("cancelled"));
             } catch (JobFailure e) {
-                deliverIfCurrent(ticket, () -> listener.failed(e.problem()));
+                outcome = () -> listener.failed(e.problem());
             } catch (OutOfMemoryError e) {
-                deliverIfCurrent(ticket, () -> listener.failed(Problem.of("out of memory: give iFold more, e.g. JAVA_OPTS=-Xmx8g")));
+                outcome = () -> listener.failed(Problem.of("out of memory: give iFold more, e.g. JAVA_OPTS=-Xmx8g"));
             } catch (Exception | LinkageError | AssertionError e) {
                 // A bug, not bad input: still one line, with the kind of failure so it can be reported.
-                deliverIfCurrent(ticket, () -> listener.failed(Problem.of("internal error: " + e + " (please report it)")));
-            } finally {
-                if (running == Thread.currentThread()) {
-                    running = null;
-                }
+                outcome = () -> listener.failed(Problem.of("internal error: " + e + " (please report it)"));
+            }
+            Runnable told = outcome;
+            if (generation.get() == ticket) {
+                deliver.execute(() -> {
+                    if (generation.get() == ticket) {
+                        busy = 0; // busy until the listener hears: the window's state and the worker's agree
+                        told.run();
+                    }
+                });
             }
         }, name + " " + ticket);
         thread.setDaemon(true);
+        busy = ticket;
         running = thread;
         thread.start();
     }
@@ -98,20 +110,21 @@ public final class Worker {
      * @return whether a task was cancelled
      */
     public boolean cancel() {
-        if (running == null) {
+        if (!isBusy()) {
             return false;
         }
         generation.incrementAndGet();
-        running = null;
+        busy = 0;
         return true;
     }
 
-    /** Whether a task is running and not yet superseded or cancelled. */
+    /** Whether a task runs, not superseded nor cancelled, or its outcome is yet to be heard. */
     public boolean isBusy() {
-        return running != null;
+        long ticket = busy;
+        return ticket != 0 && ticket == generation.get();
     }
 
-    /** Waits up to {@code millis} for the task running to end: for tests and for closing the window. */
+    /** Waits up to {@code millis} for the latest task's thread to end, cancelled or not: for tests. */
     public boolean await(long millis) throws InterruptedException {
         Thread thread = running;
         if (thread != null) {

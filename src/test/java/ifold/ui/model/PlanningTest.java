@@ -43,6 +43,7 @@ class PlanningTest {
         int folds = (Integer) plan.figures().get("folds");
         assertEquals(folds, plan.folds().size(), "one entry a fold");
         assertEquals("zig-zag turn", plan.folds().get(0).kind());
+        assertEquals(0.0, plan.folds().get(0).position(), "the first fold begins at the start");
         assertEquals("tuck", plan.folds().get(folds - 1).kind(), "the tucks come last");
         for (int i = 1; i < folds; i++) {
             assertTrue(plan.folds().get(i).position() > plan.folds().get(i - 1).position(), "folds in order along the animation");
@@ -105,10 +106,11 @@ class PlanningTest {
         Plan turn = Planning.plan(Job.Turn.DEMO, Progress.NONE);
         assertEquals(turn.figures().get("folds"), turn.folds().size(), "folds, not the strip's end");
         assertTrue(turn.folds().stream().allMatch(f -> f.kind().equals("turn gadget")), turn.folds().toString());
-        Plan script = Planning.plan(new Job.Script(Path.of("models", "scripts", "strip-turn.fold")), Progress.NONE);
+        Plan script = Planning.plan(new Job.Script(Path.of("models", "scripts", "pleat20.fold")), Progress.NONE);
         assertEquals(script.figures().get("folds"), script.folds().size());
         assertEquals(script.folds().size(), script.stepCount(), "a script's animation is a step a fold");
-        assertEquals(1.0, script.folds().get(0).position());
+        assertEquals(0.0, script.folds().get(0).position(), "the first fold begins at the start");
+        assertEquals(1.0, script.folds().get(1).position(), "and the second once it is made");
     }
 
     @Test

@@ -10,7 +10,7 @@ import org.junit.jupiter.api.Test;
 
 /** The timeline: seeking, playing at a speed, stepping from fold to fold. */
 class TimelineTest {
-    /** Three folds made at 10, 20 and 30 of an animation 50 long that plays in 5 seconds. */
+    /** Three folds beginning at 10, 20 and 30 of an animation 50 long that plays in 5 seconds. */
     private static Timeline threeFolds() {
         return new Timeline(50, List.of(new Fold("one", "tuck", 10), new Fold("two", "tuck", 20), new Fold("three", "tuck", 30)), 5);
     }
@@ -18,7 +18,7 @@ class TimelineTest {
     @Test
     void stepsGoFromFoldToFoldAndPause() {
         Timeline timeline = threeFolds();
-        assertEquals(-1, timeline.currentFold(), "setup: no fold made at the start");
+        assertEquals(-1, timeline.currentFold(), "setup: no fold begun at the start");
         timeline.togglePlaying();
         timeline.stepFold(1);
         assertFalse(timeline.isPlaying(), "a step pauses");

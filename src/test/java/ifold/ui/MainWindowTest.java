@@ -1,0 +1,369 @@
+package ifold.ui;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import ifold.image.Mp4Writer;
+import ifold.ui.model.Exports;
+import ifold.ui.model.Job;
+import ifold.ui.model.Planning;
+import ifold.ui.model.Progress;
+import ifold.ui.model.Settings;
+import java.awt.Component;
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.Callable;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.BooleanSupplier;
+import java.util.stream.Stream;
+import javax.swing.JMenu;
+import javax.swing.JMenuItem;
+import javax.swing.MenuElement;
+import javax.swing.SwingUtilities;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The real window, opened on the X display (scripts/test runs under Xvfb) and driven through
+ * its menus and controls on the event thread; outcomes checked by pixels and by the files
+ * written. Skipped without a display.
+ */
+@Timeout(180)
+class MainWindowTest {
+    @TempDir
+    Path dir;
+
+    private MainWindow window;
+
+    @BeforeAll
+    static void needsDisplay() {
+        String display = System.getenv("DISPLAY");
+        assumeTrue(display != null && !display.isEmpty() && App.canOpen(), "no X display (run the tests under xvfb-run)");
+    }
+
+    @AfterEach
+    void close() throws Exception {
+        if (window != null) {
+            onEdt(() -> {
+                window.dispose();
+                return null;
+            });
+        }
+    }
+
+    private Settings settings() {
+        return new Settings(dir.resolve("settings.properties"));
+    }
+
+    static <T> T onEdt(Callable<T> action) throws Exception {
+        AtomicReference<T> result = new AtomicReference<>();
+        AtomicReference<Exception> failure = new AtomicReference<>();
+        SwingUtilities.invokeAndWait(() -> {
+            try {
+                result.set(action.call());
+            } catch (Exception e) {
+                failure.set(e);
+            }
+        });
+        if (failure.get() != null) {
+            throw failure.get();
+        }
+        return result.get();
+    }
+
+    /** Waits for the condition, checked on the event thread, for up to {@code seconds}. */
+    static void waitFor(String what, double seconds, BooleanSupplier condition) throws Exception {
+        long deadline = System.nanoTime() + (long) (seconds * 1e9);
+        while (System.nanoTime() < deadline) {
+            if (onEdt(condition::getAsBoolean)) {
+                return;
+            }
+            Thread.sleep(50);
+        }
+        throw new AssertionError("waited " + seconds + " s for " + what);
+    }
+
+    /** The window planned and drew its current job: the view's picture is of it. */
+    private BufferedImage settled() throws Exception {
+        waitFor("the plan", 60, () -> !window.isWorking() && window.plan() != null);
+        assertTrue(window.view.awaitFrame(30_000), "the view drew the plan");
+        return window.view.picture();
+    }
+
+    /** Pixels of the strip's underside (0x8FAACB, lit): bluer than the model's grey-blue and the background. */
+    static int undersidePixels(BufferedImage image) {
+        int count = 0;
+        for (int y = 0; y < image.getHeight(); y++) {
+            for (int x = 0; x < image.getWidth(); x++) {
+                int rgb = image.getRGB(x, y);
+                if ((rgb & 0xFF) > (rgb >> 16 & 0xFF) + 40) {
+                    count++;
+                }
+            }
+        }
+        return count;
+    }
+
+    static int differing(BufferedImage a, BufferedImage b) {
+        int count = 0;
+        for (int y = 0; y < Math.min(a.getHeight(), b.getHeight()); y++) {
+            for (int x = 0; x < Math.min(a.getWidth(), b.getWidth()); x++) {
+                count += a.getRGB(x, y) == b.getRGB(x, y) ? 0 : 1;
+            }
+        }
+        return count;
+    }
+
+    static int pixelsOf(BufferedImage image, int rgb, int tolerance) {
+        int count = 0;
+        for (int y = 0; y < image.getHeight(); y++) {
+            for (int x = 0; x < image.getWidth(); x++) {
+                int p = image.getRGB(x, y);
+                if (Math.abs((p >> 16 & 0xFF) - (rgb >> 16 & 0xFF)) <= tolerance && Math.abs((p >> 8 & 0xFF) - (rgb >> 8 & 0xFF)) <= tolerance
+                        && Math.abs((p & 0xFF) - (rgb & 0xFF)) <= tolerance) {
+                    count++;
+                }
+            }
+        }
+        return count;
+    }
+
+    private static JMenuItem menuItem(MainWindow window, String text) {
+        for (MenuElement menu : window.getJMenuBar().getSubElements()) {
+            JMenuItem found = find(menu, text);
+            if (found != null) {
+                return found;
+            }
+        }
+        throw new AssertionError("no menu item " + text);
+    }
+
+    private static JMenuItem find(MenuElement element, String text) {
+        if (element instanceof JMenuItem item && item.getText().startsWith(text)) {
+            return item;
+        }
+        MenuElement[] children = element instanceof JMenu menu ? menu.getPopupMenu().getSubElements() : element.getSubElements();
+        for (MenuElement child : children) {
+            JMenuItem found = find(child, text);
+            if (found != null) {
+                return found;
+            }
+        }
+        return null;
+    }
+
+    @Test
+    void opensOnTheZigZagDemoAndDrawsItWithItsReport() throws Exception {
+        window = App.open(null, settings());
+        BufferedImage picture = settled();
+        assertNotNull(picture);
+        assertTrue(onEdt(() -> window.getTitle()).contains("zig-zag"), "the title says what is shown");
+        assertTrue(pixelsOf(picture, 0xD3DAE2, 3) > picture.getWidth() * picture.getHeight() / 10, "the demo's background");
+        assertEquals("5", onEdt(() -> window.report.value("passes")), "the report panel holds the --report figures");
+        assertEquals("1", onEdt(() -> window.report.value("coverage")));
+        assertEquals(Planning.plan(Job.ZigZag.DEMO, Progress.NONE).folds().size(), (int) onEdt(() -> window.timeline.folds.getModel().getSize()));
+        // Every menu the issue asks for, each item with its shortcut.
+        for (String item : List.of("Open model", "Open fold script", "Export frames", "Export movie", "Export OBJ", "Export FOLD",
+                "Export report", "Quit", "Model", "Captions", "Reset camera", "Underside", "Zig-zag a triangle", "Turn gadget",
+                "Wrap the model", "Play a script", "Keys")) {
+            assertNotNull(onEdt(() -> menuItem(window, item).getAccelerator()), item + " has a shortcut");
+        }
+    }
+
+    @Test
+    void aBadWidthIsMarkedWithTheCoresMessageAndAGoodOneReplans() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        onEdt(() -> {
+            window.parameters.zigzagWidth.setText("9");
+            return null;
+        });
+        String expected = Planning.check(new Job.ZigZag("0,0,10,0,3.5,8", 2, 0, -1, "9", "")).get(0).message();
+        waitFor("the width marked", 10, () -> window.parameters.isMarked("width"));
+        assertEquals(expected, onEdt(() -> window.parameters.note("width")), "the core's message, at the field");
+        assertEquals("1.6", onEdt(() -> window.report.value("stripWidth")), "nothing ran: the last plan stays");
+        onEdt(() -> {
+            window.parameters.zigzagWidth.setText("0.8");
+            return null;
+        });
+        waitFor("the new plan", 60, () -> "0.8".equals(window.report.value("stripWidth")));
+        assertFalse(onEdt(() -> window.parameters.isMarked("width")));
+        assertEquals("10", onEdt(() -> window.report.value("passes")), "half the width, twice the passes");
+    }
+
+    @Test
+    void theSliderScrubsThroughTheFoldsAndTheListJumps() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        onEdt(() -> {
+            window.timeline.slider.setValue(0);
+            return null;
+        });
+        assertTrue(window.view.awaitFrame(30_000));
+        BufferedImage start = window.view.picture();
+        int last = onEdt(() -> window.timeline.folds.getModel().getSize()) - 1;
+        onEdt(() -> {
+            window.timeline.folds.setSelectedIndex(last);
+            return null;
+        });
+        assertTrue(window.view.awaitFrame(30_000));
+        BufferedImage folded = window.view.picture();
+        assertEquals(last, (int) onEdt(() -> window.timeline.timeline().currentFold()), "the fold chosen is the one shown");
+        assertTrue(onEdt(() -> window.view.status()).startsWith("tuck"), "the status line names the last fold: " + window.view.status());
+        // The tucks are shown from below, where the strip's underside (blue) covers the triangle.
+        int before = undersidePixels(start);
+        int after = undersidePixels(folded);
+        assertTrue(before < 100 && after > 20_000, "the strip laid over the triangle: " + before + " underside pixels at the start, "
+                + after + " folded");
+        assertTrue(differing(start, folded) > start.getWidth() * start.getHeight() / 10, "the view changed");
+        onEdt(() -> {
+            window.timeline.slider.setValue(TimelinePanel.TICKS / 4);
+            return null;
+        });
+        double quarter = onEdt(() -> window.timeline.timeline().position() / window.timeline.timeline().end());
+        assertEquals(0.25, quarter, 1e-4, "dragging the slider moves the timeline at once");
+        assertFalse(onEdt(() -> window.timeline.timeline().isPlaying()), "and pauses it");
+    }
+
+    @Test
+    void aModelOpensThroughTheMenuAndIsWrapped() throws Exception {
+        Settings settings = settings();
+        settings.addRecent(Path.of("models", "cube.off"));
+        window = App.open(null, settings);
+        settled();
+        onEdt(() -> {
+            menuItem(window, "1  cube.off").doClick();
+            return null;
+        });
+        waitFor("the cube wrapped", 60, () -> window.plan() != null && window.plan().job() instanceof Job.WrapModel && !window.isWorking());
+        BufferedImage picture = settled();
+        assertEquals("12", onEdt(() -> window.report.value("inputTriangles")));
+        assertEquals("wrap", onEdt(() -> window.parameters.card()));
+        assertTrue(onEdt(() -> window.getTitle()).contains("cube.off"));
+        assertTrue(pixelsOf(picture, 0xFFFFFF, 0) > 1000, "the cube's white background");
+        onEdt(() -> {
+            window.parameters.wrapWidth.setText("0.1");
+            return null;
+        });
+        waitFor("the narrower wrap", 60, () -> "0.1".equals(window.report.value("width")));
+    }
+
+    @Test
+    void aMovieIsExportedAndACancelledOneLeavesNothing() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        List<String> said = new CopyOnWriteArrayList<>();
+        onEdt(() -> {
+            window.messages = said::add;
+            return null;
+        });
+        Path gif = dir.resolve("zigzag.gif");
+        onEdt(() -> {
+            window.exportMovie(gif, new Exports.FrameSettings(160, 90, 10, 1, true));
+            return null;
+        });
+        waitFor("the GIF", 60, () -> !window.isWorking());
+        assertTrue(window.awaitExport(10_000));
+        assertTrue(Files.isRegularFile(gif), "written: " + said);
+        byte[] head = Files.readAllBytes(gif);
+        assertEquals("GIF89a", new String(head, 0, 6, java.nio.charset.StandardCharsets.US_ASCII));
+        assertTrue(said.stream().anyMatch(s -> s.startsWith("wrote " + gif)), said.toString());
+
+        if (Mp4Writer.available()) {
+            Path mp4 = dir.resolve("zigzag.mp4");
+            onEdt(() -> {
+                window.exportMovie(mp4, new Exports.FrameSettings(320, 180, 10, 1, true));
+                return null;
+            });
+            waitFor("the MP4", 60, () -> !window.isWorking());
+            assertTrue(Files.size(mp4) > 1000, "an MP4 with frames in it");
+        }
+
+        Path cancelled = dir.resolve("cancelled.gif");
+        onEdt(() -> {
+            window.exportMovie(cancelled, new Exports.FrameSettings(640, 360, 30, 60, true));
+            return null;
+        });
+        waitFor("the export under way", 60, () -> window.progress.isVisible() && !window.progress.isIndeterminate());
+        onEdt(() -> {
+            window.cancel.doClick();
+            return null;
+        });
+        assertTrue(window.awaitExport(60_000), "the export stopped");
+        assertFalse(onEdt(() -> window.isWorking()));
+        try (Stream<Path> files = Files.list(dir)) {
+            List<String> names = files.map(p -> p.getFileName().toString()).filter(n -> n.contains("cancelled")).toList();
+            assertEquals(List.of(), names, "a cancelled export leaves no file, whole or temporary");
+        }
+        assertTrue(said.stream().anyMatch(s -> s.contains("cancelled")), said.toString());
+    }
+
+    @Test
+    void theEventThreadIsNeverHeldWhileAnExportRuns() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        Path gif = dir.resolve("busy.gif");
+        onEdt(() -> {
+            window.exportMovie(gif, new Exports.FrameSettings(480, 270, 20, 3, true));
+            return null;
+        });
+        long worst = 0;
+        int pings = 0;
+        while (onEdt(() -> window.isWorking()) && pings < 2000) {
+            long sent = System.nanoTime();
+            SwingUtilities.invokeAndWait(() -> { });
+            worst = Math.max(worst, System.nanoTime() - sent);
+            pings++;
+            Thread.sleep(10);
+        }
+        assertTrue(pings > 5, "setup: the export took a while, " + pings + " pings");
+        assertTrue(worst < 100_000_000L, "the event thread answered within 100 ms, at worst " + worst / 1e6 + " ms");
+        assertTrue(Files.isRegularFile(gif));
+    }
+
+    @Test
+    void settingsAreRememberedBetweenRuns() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        onEdt(() -> {
+            window.parameters.zigzagWidth.setText("1.2");
+            window.setSize(1000, 700);
+            return null;
+        });
+        waitFor("the new plan", 60, () -> "1.2".equals(window.report.value("stripWidth")));
+        onEdt(() -> {
+            window.dispose();
+            return null;
+        });
+        window = App.open(null, settings());
+        assertEquals("1.2", onEdt(() -> window.parameters.zigzagWidth.getText()));
+        assertEquals(1000, (int) onEdt(() -> window.getWidth()));
+        settled();
+        assertEquals("1.2", onEdt(() -> window.report.value("stripWidth")));
+    }
+
+    /** Finds a component of a type below {@code root}: for the screenshots. */
+    static <T extends Component> T below(Component root, Class<T> type) {
+        if (type.isInstance(root)) {
+            return type.cast(root);
+        }
+        if (root instanceof java.awt.Container container) {
+            for (Component child : container.getComponents()) {
+                T found = below(child, type);
+                if (found != null) {
+                    return found;
+                }
+            }
+        }
+        return null;
+    }
+}
