@@ -89,7 +89,9 @@ final class MainWindow extends JFrame {
 
         JScrollPane left = new JScrollPane(parameters);
         left.setBorder(BorderFactory.createEmptyBorder());
-        left.setPreferredSize(new Dimension(300, 400));
+        left.setPreferredSize(new Dimension(320, 400));
+        left.setHorizontalScrollBarPolicy(JScrollPane.HORIZONTAL_SCROLLBAR_NEVER);
+        left.setMinimumSize(new Dimension(280, 200)); // the split panes share out what is left, never the parameters' room
         JScrollPane figures = new JScrollPane(report);
         figures.setBorder(BorderFactory.createTitledBorder("Report"));
         JScrollPane foldList = new JScrollPane(timeline.folds);
@@ -97,6 +99,7 @@ final class MainWindow extends JFrame {
         JSplitPane right = new JSplitPane(JSplitPane.VERTICAL_SPLIT, figures, foldList);
         right.setResizeWeight(0.5);
         right.setPreferredSize(new Dimension(330, 400));
+        right.setMinimumSize(new Dimension(260, 200));
         JPanel centre = new JPanel(new BorderLayout());
         centre.add(view, BorderLayout.CENTER);
         centre.add(timeline, BorderLayout.SOUTH);

@@ -19,6 +19,7 @@ import javax.swing.JComboBox;
 import javax.swing.JComponent;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
+import javax.swing.JTextArea;
 import javax.swing.JTextField;
 import javax.swing.Timer;
 import javax.swing.event.DocumentEvent;
@@ -31,7 +32,7 @@ import javax.swing.event.DocumentListener;
  * change is told (to re-plan) a moment after the typing stops; a field the core refused is
  * outlined in red with the core's message under it.
  */
-final class ParameterPanel extends JPanel {
+final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
     private static final long serialVersionUID = 1L;
 
     static final String[] CORNERS = {"A", "B", "C"};
@@ -81,37 +82,37 @@ final class ParameterPanel extends JPanel {
         settle.setRepeats(false);
 
         Card zigzag = new Card("Zig-zag a triangle", "zigzag");
-        zigzag.row("triangle", "Corners", triangle, "x1,y1, x2,y2, x3,y3 (nine numbers for a triangle in space)");
+        zigzag.row("triangle", "Corners", triangle, "x1,y1,x2,y2,x3,y3 (or nine numbers)");
         zigzag.wide(sketch);
-        zigzag.row("start", "Start corner", start, "its passes run parallel to the opposite edge");
+        zigzag.row("start", "Start corner", start, "passes run parallel to the edge opposite");
         zigzag.row("end", "End corner", end, null);
         zigzag.row("enterFrom", "Enter beside", enterFrom, null);
-        zigzag.row("width", "Width", zigzagWidth, "blank: a fifth of the altitude from the start");
+        zigzag.row("width", "Width", zigzagWidth, "blank: a fifth of the altitude");
         zigzag.row("thickness", "Thickness", zigzagThickness, "blank: the width / 80");
-        deck.add(zigzag.panel, "zigzag");
+        deck.add(top(zigzag.panel), "zigzag");
 
         Card turn = new Card("Turn gadget", "turn");
         turn.row("angle", "Angle (degrees)", angle, "from 0.01 to 179.9");
         turn.row("overhang", "Overhang", overhang, "in strip widths; 0 is the basic gadget");
         turn.row("width", "Width", turnWidth, null);
         turn.row("thickness", "Thickness", turnThickness, "blank: the width / 50");
-        deck.add(turn.panel, "turn");
+        deck.add(top(turn.panel), "turn");
 
         Card wrap = new Card("Wrap a model", "wrap");
         JButton chooseModelButton = new JButton("Choose model...");
         chooseModelButton.addActionListener(e -> chooseModel.run());
         wrap.row("model", "Model", modelName, null);
         wrap.wide(chooseModelButton);
-        wrap.row("width", "Width", wrapWidth, "blank: a third of the widest the path takes");
+        wrap.row("width", "Width", wrapWidth, "blank: a third of the widest possible");
         wrap.row("thickness", "Thickness", wrapThickness, "blank: the width / 80");
-        deck.add(wrap.panel, "wrap");
+        deck.add(top(wrap.panel), "wrap");
 
         Card play = new Card("Play a fold script", "script");
         JButton chooseScriptButton = new JButton("Choose script or FOLD...");
         chooseScriptButton.addActionListener(e -> chooseScript.run());
         play.row("script", "Script", scriptName, null);
         play.wide(chooseScriptButton);
-        deck.add(play.panel, "script");
+        deck.add(top(play.panel), "script");
 
         add(deck, java.awt.BorderLayout.NORTH);
         message.setForeground(new Color(0xB00020));
@@ -150,13 +151,20 @@ final class ParameterPanel extends JPanel {
             c = constraints(1, row++, 1);
             c.insets = new Insets(3, 0, 0, 0);
             panel.add(input, c);
-            JLabel note = new JLabel(hint == null ? " " : hint);
-            note.setFont(note.getFont().deriveFont(note.getFont().getSize2D() - 1));
+            // A message wraps under its field: the column keeps its width, however long the core's message.
+            JTextArea note = new JTextArea(hint == null ? " " : hint, 1, 1);
+            note.setLineWrap(true);
+            note.setWrapStyleWord(true);
+            note.setEditable(false);
+            note.setFocusable(false);
+            note.setOpaque(false);
+            note.setBorder(BorderFactory.createEmptyBorder());
+            note.setFont(name.getFont().deriveFont(name.getFont().getSize2D() - 1));
             note.setForeground(Color.GRAY);
             c = constraints(1, row++, 1);
             panel.add(note, c);
             if (input instanceof JTextField text) {
-                text.setColumns(12);
+                text.setColumns(8);
                 text.getDocument().addDocumentListener(new DocumentListener() {
                     @Override
                     public void insertUpdate(DocumentEvent e) {
@@ -184,6 +192,13 @@ final class ParameterPanel extends JPanel {
         }
     }
 
+    /** A card held at the top of the deck: the cards are as tall as the tallest, and a short one would float in the middle. */
+    private static JPanel top(JPanel card) {
+        JPanel holder = new JPanel(new java.awt.BorderLayout());
+        holder.add(card, java.awt.BorderLayout.NORTH);
+        return holder;
+    }
+
     private static GridBagConstraints constraints(int x, int y, int span) {
         GridBagConstraints c = new GridBagConstraints();
         c.gridx = x;
@@ -196,13 +211,14 @@ final class ParameterPanel extends JPanel {
     }
 
     /** A parameter's input and the line under it: its hint, or what is wrong with it. */
-    private record Field(JComponent input, JLabel note, String hint) {
+    private record Field(JComponent input, JTextArea note, String hint) {
         void mark(String problem) {
             input.putClientProperty("JComponent.outline", problem == null ? null : "error");
             note.setText(problem == null ? hint : problem);
             note.setForeground(problem == null ? Color.GRAY : new Color(0xB00020));
             note.setToolTipText(problem);
             input.repaint();
+            note.revalidate();
         }
     }
 
@@ -310,6 +326,33 @@ final class ParameterPanel extends JPanel {
 
     String card() {
         return card;
+    }
+
+    // As wide as its scroll pane, so that the fields fit the column and only long hints are cut.
+
+    @Override
+    public java.awt.Dimension getPreferredScrollableViewportSize() {
+        return getPreferredSize();
+    }
+
+    @Override
+    public int getScrollableUnitIncrement(java.awt.Rectangle visible, int orientation, int direction) {
+        return 16;
+    }
+
+    @Override
+    public int getScrollableBlockIncrement(java.awt.Rectangle visible, int orientation, int direction) {
+        return visible.height - 16;
+    }
+
+    @Override
+    public boolean getScrollableTracksViewportWidth() {
+        return true;
+    }
+
+    @Override
+    public boolean getScrollableTracksViewportHeight() {
+        return false;
     }
 
     private static String escape(String text) {

@@ -70,14 +70,13 @@ final class SceneView extends JComponent {
     private double position;
     private int width;
     private int height;
-    private long fpsStart;
-    private int fpsFrames;
     private boolean failed;
 
     // Read by the event thread.
     private volatile BufferedImage picture;
     private volatile String status = "";
-    private volatile double fps;
+    /** How long the last frame took to render, in milliseconds: the view's cost, shown when paused too (fps would say 0). */
+    private volatile double frameMillis;
     private volatile boolean showHelp;
     private volatile boolean showStatus = true;
     private volatile String caption = "";
@@ -233,6 +232,7 @@ final class SceneView extends JComponent {
             SwingUtilities.invokeLater(() -> failures.accept(e.getMessage()));
             return;
         }
+        long started = System.nanoTime();
         Scene scene = shown.scene();
         shown.animation().apply(position);
         byte[] rgb = renderer.render(scene);
@@ -243,13 +243,7 @@ final class SceneView extends JComponent {
         }
         scene.clearChanged();
         status = shown.animation().describe(position);
-        long now = System.nanoTime();
-        fpsFrames++;
-        if (now - fpsStart >= 1_000_000_000L) {
-            fps = fpsFrames / ((now - fpsStart) * 1e-9);
-            fpsFrames = 0;
-            fpsStart = now;
-        }
+        frameMillis = (System.nanoTime() - started) * 1e-6;
         picture = image;
         frames++;
         repaint();
@@ -277,7 +271,7 @@ final class SceneView extends JComponent {
             g2.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
             FontMetrics metrics = g2.getFontMetrics();
             if (showStatus) {
-                String line = String.format(Locale.ROOT, "%s | %.1f fps | %s | H: help", caption, fps, status);
+                String line = String.format(Locale.ROOT, "%s | %.0f ms a frame | %s | H: help", caption, frameMillis, status);
                 int band = metrics.getHeight() + 6;
                 g2.setColor(new Color(0, 0, 0, 150));
                 g2.fillRect(0, getHeight() - band, getWidth(), band);

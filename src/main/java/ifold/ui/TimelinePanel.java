@@ -27,8 +27,8 @@ final class TimelinePanel extends JPanel {
     static final int TICKS = 100_000;
 
     final JButton play = new JButton("Play");
-    final JButton back = new JButton("\u23EE Fold");
-    final JButton forward = new JButton("Fold \u23ED");
+    final JButton back = new JButton("\u25C0 Fold");
+    final JButton forward = new JButton("Fold \u25B6");
     final JSlider slider = new JSlider(0, TICKS, 0);
     final JComboBox<String> speed = new JComboBox<>();
     final JList<String> folds = new JList<>();
@@ -49,6 +49,9 @@ final class TimelinePanel extends JPanel {
         }
         speed.setSelectedIndex(2);
         speed.setToolTipText("speed");
+        back.setToolTipText("back one fold");
+        forward.setToolTipText("forward one fold");
+        slider.setToolTipText("drag through the folds");
         JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
         buttons.add(back);
         buttons.add(play);

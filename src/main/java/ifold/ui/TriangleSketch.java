@@ -77,6 +77,16 @@ final class TriangleSketch extends JComponent {
         addMouseMotionListener(mouse);
     }
 
+    /** Where corner {@code i} is drawn, in the sketch's pixels (null if the field holds no triangle): for tests. */
+    java.awt.Point corner(int i) {
+        double[] xy = values();
+        if (xy == null) {
+            return null;
+        }
+        fit(xy);
+        return new java.awt.Point((int) Math.round(screenX(xy[2 * i])), (int) Math.round(screenY(xy[2 * i + 1])));
+    }
+
     /** Dragged corners land on a tenth of a unit: values that read well, typed or not. */
     private static double round(double value) {
         return Math.round(value * 10) / 10.0;

@@ -201,6 +201,55 @@ class MainWindowTest {
     }
 
     @Test
+    void draggingACornerOfTheSketchMovesItAndReplans() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        TriangleSketch sketch = window.parameters.sketch;
+        java.awt.Point c = onEdt(() -> sketch.corner(2));
+        assertNotNull(c, "setup: the demo's triangle is drawn");
+        onEdt(() -> {
+            long now = System.currentTimeMillis();
+            sketch.dispatchEvent(new java.awt.event.MouseEvent(sketch, java.awt.event.MouseEvent.MOUSE_PRESSED, now, 0, c.x, c.y, 1, false,
+                    java.awt.event.MouseEvent.BUTTON1));
+            sketch.dispatchEvent(new java.awt.event.MouseEvent(sketch, java.awt.event.MouseEvent.MOUSE_DRAGGED, now + 10,
+                    java.awt.event.InputEvent.BUTTON1_DOWN_MASK, c.x, c.y - 20, 0, false, 0));
+            sketch.dispatchEvent(new java.awt.event.MouseEvent(sketch, java.awt.event.MouseEvent.MOUSE_RELEASED, now + 20, 0, c.x, c.y - 20,
+                    1, false, java.awt.event.MouseEvent.BUTTON1));
+            return null;
+        });
+        String corners = onEdt(() -> window.parameters.triangle.getText());
+        assertTrue(corners.startsWith("0,0,10,0,3.5,"), "A and B stay, C moves: " + corners);
+        double y = Double.parseDouble(corners.substring(corners.lastIndexOf(',') + 1));
+        assertTrue(y > 8.5, "C dragged up: " + corners);
+        waitFor("the taller triangle planned", 60, () -> corners.equals(window.report.value("triangle")));
+    }
+
+    @Test
+    void runReturnsOnceTheWindowIsClosed() throws Exception {
+        Thread run = new Thread(() -> {
+            try {
+                App.run(null, settings());
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }, "app run");
+        run.start();
+        waitFor("the window", 30, () -> java.util.Arrays.stream(java.awt.Frame.getFrames())
+                .anyMatch(f -> f instanceof MainWindow && f.isDisplayable()));
+        onEdt(() -> {
+            for (java.awt.Frame frame : java.awt.Frame.getFrames()) {
+                if (frame instanceof MainWindow && frame.isDisplayable()) {
+                    frame.dispose(); // as File, Quit does
+                }
+            }
+            return null;
+        });
+        run.join(30_000);
+        assertFalse(run.isAlive(), "App.run returned: the launcher then exits");
+        assertTrue(Files.isRegularFile(dir.resolve("settings.properties")), "and the settings were saved");
+    }
+
+    @Test
     void theSliderScrubsThroughTheFoldsAndTheListJumps() throws Exception {
         window = App.open(null, settings());
         settled();

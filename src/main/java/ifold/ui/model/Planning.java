@@ -186,7 +186,7 @@ public final class Planning {
         Map<String, Object> figures = Reports.zigzag(job.triangle(), job.start(), job.end(), result, analysis);
         progress.check();
         String source = "demo zigzag --triangle " + job.triangle();
-        return paperPlan(job, "zig-zag: " + result.steps().size() + " folds", result, geometries, figures,
+        return paperPlan(job, "zig-zag: " + figures.get("folds") + " folds", result, geometries, figures,
                 Math.min(120, 2.0 * (result.steps().size() + 2)), source, scene -> Scenes.zigzag(scene, shape, result, geometries));
     }
 
@@ -252,7 +252,8 @@ public final class Planning {
         WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
         Map<String, Object> figures = Reports.wrap(model.toString(), mesh.faceCount(), built.repairs(), refinement, result, analysis);
         progress.check();
-        return paperPlan(job, model.getFileName() + ": " + result.strips().size() + " strip(s), " + result.steps().size() + " folds",
+        int folds = result.steps().size() - result.count(Wrap.Kind.END);
+        return paperPlan(job, model.getFileName() + ": " + result.strips().size() + " strip(s), " + folds + " folds",
                 result, geometries, figures, 120, "ifold wrap " + model, scene -> Scenes.wrap(scene, mesh, result, geometries));
     }
 
