@@ -357,6 +357,51 @@ class MainWindowTest {
     }
 
     @Test
+    void objFoldAndReportAreWrittenAsTheCommandLineWritesThem() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        Path obj = dir.resolve("zigzag.obj");
+        Path fold = dir.resolve("zigzag.fold");
+        Path json = dir.resolve("zigzag.json");
+        for (Runnable export : List.<Runnable>of(() -> window.exportObj(obj), () -> window.exportFold(fold), () -> window.exportReport(json))) {
+            onEdt(() -> {
+                export.run();
+                return null;
+            });
+            waitFor("the export", 60, () -> !window.isWorking());
+        }
+        Path cliObj = dir.resolve("cli.obj");
+        Path cliFold = dir.resolve("cli.fold");
+        Path cliJson = dir.resolve("cli.json");
+        cli("demo", "zigzag", "--no-view", "--export-obj", cliObj.toString(), "--report", cliJson.toString());
+        cli("demo", "zigzag", "--no-view", "--export-fold", cliFold.toString());
+        assertEquals(Files.readString(cliObj), Files.readString(obj), "the OBJ is the command line's");
+        assertEquals(Files.readString(cliFold), Files.readString(fold), "the FOLD file is the command line's");
+        assertEquals(Files.readString(cliJson), Files.readString(json), "the report is the command line's");
+    }
+
+    @Test
+    void theEventThreadIsNeverHeldWhileAModelIsWrapped() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        onEdt(() -> {
+            window.open(Path.of("models", "torus.off"));
+            return null;
+        });
+        long worst = 0;
+        int pings = 0;
+        while ((pings < 3 || onEdt(() -> window.isWorking())) && pings < 3000) {
+            long sent = System.nanoTime();
+            SwingUtilities.invokeAndWait(() -> { });
+            worst = Math.max(worst, System.nanoTime() - sent);
+            pings++;
+            Thread.sleep(10);
+        }
+        assertTrue(onEdt(() -> window.plan().job() instanceof Job.WrapModel), "the torus was wrapped");
+        assertTrue(worst < 100_000_000L, "the event thread answered within 100 ms, at worst " + worst / 1e6 + " ms over " + pings + " pings");
+    }
+
+    @Test
     void theEventThreadIsNeverHeldWhileAnExportRuns() throws Exception {
         window = App.open(null, settings());
         settled();
@@ -398,6 +443,12 @@ class MainWindowTest {
         assertEquals(1000, (int) onEdt(() -> window.getWidth()));
         settled();
         assertEquals("1.2", onEdt(() -> window.report.value("stripWidth")));
+    }
+
+    private static void cli(String... args) {
+        java.io.StringWriter err = new java.io.StringWriter();
+        int code = ifold.cli.Main.commandLine(new java.io.PrintWriter(new java.io.StringWriter()), new java.io.PrintWriter(err)).execute(args);
+        assertEquals(0, code, err.toString());
     }
 
     /** Finds a component of a type below {@code root}: for the screenshots. */
