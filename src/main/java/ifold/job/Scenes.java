@@ -2,10 +2,12 @@ package ifold.job;
 
 import ifold.geom.Triangle;
 import ifold.mesh.HalfedgeMesh;
+import ifold.refine.HamiltonianRefinement;
 import ifold.scene.Animation;
 import ifold.scene.Geometry;
 import ifold.scene.Material;
 import ifold.scene.PaperView;
+import ifold.scene.PathView;
 import ifold.scene.Scene;
 import ifold.scene.SceneMesh;
 import ifold.scene.WrapView;
@@ -27,6 +29,9 @@ public final class Scenes {
     /** The name of the geometry that shows the model (or the lone triangle) under the paper. */
     public static final String MODEL = "model";
 
+    /** The name of the geometry that shows a model's refinement, coloured along its Hamiltonian path; hidden at first. */
+    public static final String REFINEMENT = "refinement";
+
     /** A soft grey-blue: the white paper stands out on it, and the triangle's colour is darker still. */
     public static final int BACKGROUND = 0xFFD3DAE2;
 
@@ -47,6 +52,19 @@ public final class Scenes {
         Geometry solid = new Geometry(MODEL, SceneMesh.of(mesh), new Material(WrapView.MODEL, 0xFF4A5460, false, false));
         scene.root().attach(solid);
         return WrapView.play(scene, result, geometries);
+    }
+
+    /**
+     * Adds the refinement the wrap followed, its triangles lighter to darker along the path,
+     * spanning-tree edges in green (as {@code ifold view --path} shows it), hidden: shown
+     * instead of the model, it says which way the strip goes.
+     */
+    public static Geometry refinement(Scene scene, HamiltonianRefinement.Result refinement) {
+        boolean dense = 5L * refinement.mesh().faceCount() > 125_000; // ViewCommand's threshold: edges too fine to tell apart
+        Geometry refined = new Geometry(REFINEMENT, PathView.mesh(refinement, PathView.Colors.DARKNESS, dense), Material.FACE_COLORS);
+        refined.setVisible(false);
+        scene.root().attach(refined);
+        return refined;
     }
 
     /** A fold script's paper, folding up, the camera framing it as it stands. */

@@ -72,6 +72,7 @@ final class MainWindow extends JFrame {
     private final JMenu recent = new JMenu("Open recent");
     private final JCheckBoxMenuItem showModel = new JCheckBoxMenuItem("Model", true);
     private final JCheckBoxMenuItem captions = new JCheckBoxMenuItem("Captions", true);
+    private final JCheckBoxMenuItem refinement = new JCheckBoxMenuItem("Refinement and Hamiltonian path", false);
     private transient Plan plan;
     /** Where the next export's settings start: the last ones used. */
     private transient Exports.FrameSettings frameSettings = Exports.FrameSettings.DEFAULT;
@@ -135,6 +136,7 @@ final class MainWindow extends JFrame {
         setMinimumSize(new Dimension(900, 600));
         setLocationRelativeTo(null);
         refreshRecent();
+        view.setPaperColours(settings.getInt("paper.top", 0), settings.getInt("paper.bottom", 0));
     }
 
     /** Closes the window: the work under way is cancelled (an export writes nothing), the settings are saved first. */
@@ -174,12 +176,17 @@ final class MainWindow extends JFrame {
         JMenu show = new JMenu("View");
         show.setMnemonic(KeyEvent.VK_V);
         showModel.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_M, ctrl | shift));
-        showModel.addActionListener(e -> view.setVisible(Scenes.MODEL, showModel.isSelected()));
+        showModel.addActionListener(e -> showSurface());
         show.add(showModel);
+        refinement.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_H, ctrl | shift));
+        refinement.setToolTipText("a wrap's model refined, lighter to darker along the path the strip follows, tree edges in green");
+        refinement.addActionListener(e -> showSurface());
+        show.add(refinement);
         captions.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_K, ctrl));
         captions.setToolTipText("the status line in the view, and the caption of exported frames and movies");
         captions.addActionListener(e -> view.setShowStatus(captions.isSelected()));
         show.add(captions);
+        show.add(item("Paper colours...", KeyEvent.VK_L, ctrl, this::choosePaperColours));
         show.addSeparator();
         show.add(item("Reset camera", KeyEvent.VK_0, ctrl, view::resetCamera));
         show.add(item("Underside", KeyEvent.VK_U, ctrl, view::underside));
@@ -236,6 +243,36 @@ final class MainWindow extends JFrame {
                 action.run();
             }
         });
+    }
+
+    /** The model, or its refinement with the path in its place (they lie on the same surface), or neither. */
+    private void showSurface() {
+        view.setVisible(Scenes.MODEL, showModel.isSelected() && !refinement.isSelected());
+        view.setVisible(Scenes.REFINEMENT, showModel.isSelected() && refinement.isSelected());
+    }
+
+    /** Asks the paper's top and bottom colours; "as planned" keeps the plan's own (white, with grey caps; blue-grey below). */
+    private void choosePaperColours() {
+        int top = settings.getInt("paper.top", 0);
+        int bottom = settings.getInt("paper.bottom", 0);
+        java.awt.Color chosenTop = javax.swing.JColorChooser.showDialog(this, "The paper's top side",
+                new java.awt.Color(top == 0 ? 0xF4F1EA : top));
+        if (chosenTop == null) {
+            return;
+        }
+        java.awt.Color chosenBottom = javax.swing.JColorChooser.showDialog(this, "The paper's bottom side",
+                new java.awt.Color(bottom == 0 ? 0x8FAACB : bottom));
+        if (chosenBottom == null) {
+            return;
+        }
+        setPaperColours(chosenTop.getRGB(), chosenBottom.getRGB());
+    }
+
+    /** Colours the paper, top and bottom (0xAARRGGBB; 0 keeps the plan's own), and remembers it. */
+    void setPaperColours(int top, int bottom) {
+        settings.putInt("paper.top", top);
+        settings.putInt("paper.bottom", bottom);
+        view.setPaperColours(top, bottom);
     }
 
     private void showKeys() {
@@ -384,7 +421,7 @@ final class MainWindow extends JFrame {
         Timeline fresh = Timeline.of(next);
         fresh.seek(fraction * fresh.end());
         view.show(next.shown(), fresh.position(), next.title());
-        view.setVisible(Scenes.MODEL, showModel.isSelected());
+        showSurface();
         timeline.setTimeline(fresh, !sameKind || (old != null && old.isPlaying()));
         report.show(next.figures());
         setTitle("iFold - " + next.title());

@@ -65,6 +65,11 @@ final class SceneView extends JComponent {
 
     // Render thread only.
     private transient OffscreenRenderer renderer;
+    /** The paper's colours, top and bottom (0xAARRGGBB), or 0 for the plan's own. */
+    private int paperTop;
+    private int paperBottom;
+    /** Each paper geometry's own material, to go back to. */
+    private final transient java.util.Map<ifold.scene.Geometry, ifold.scene.Material> ownMaterials = new java.util.IdentityHashMap<>();
     private transient Plan.Shown shown;
     private transient Trackball trackball;
     private double position;
@@ -111,6 +116,8 @@ final class SceneView extends JComponent {
             next.animation().apply(at);
             trackball = new Trackball(next.scene().camera());
             trackball.remember();
+            ownMaterials.clear();
+            paint();
             closeRenderer(); // the old scene's buffers go with the old context
         });
         requestFrame();
@@ -145,18 +152,53 @@ final class SceneView extends JComponent {
         repaint();
     }
 
+    /**
+     * Colours the paper: {@code top} the side its faces face (caps and per-face colours give
+     * way to it), {@code bottom} the other; 0 for either keeps the plan's own.
+     */
+    void setPaperColours(int top, int bottom) {
+        input.add(() -> {
+            paperTop = top;
+            paperBottom = bottom;
+            paint();
+        });
+        requestFrame();
+    }
+
+    /** On the render thread: the paper's materials as the colours chosen say. */
+    private void paint() {
+        if (shown == null) {
+            return;
+        }
+        shown.scene().root().visitGeometry(g -> {
+            if (!g.name().equals("paper") && !g.name().equals("folding")) {
+                return;
+            }
+            ifold.scene.Material own = ownMaterials.computeIfAbsent(g, ignored -> g.material());
+            g.setMaterial(new ifold.scene.Material(paperTop == 0 ? own.front() : paperTop, paperBottom == 0 ? own.back() : paperBottom,
+                    paperTop == 0 && own.useFaceColors(), own.showEdges()));
+        });
+    }
+
     /** Shows or hides the geometry named {@code name} (the model under the paper). */
     void setVisible(String name, boolean visible) {
         input.add(() -> {
             if (shown != null) {
-                shown.scene().root().visitGeometry(g -> {
-                    if (g.name().equals(name)) {
-                        g.setVisible(visible);
-                    }
-                });
+                setVisible(shown.scene().root(), name, visible);
             }
         });
         requestFrame();
+    }
+
+    /** Walks the children themselves: visiting geometry passes the hidden by, and they are the ones to show again. */
+    private static void setVisible(ifold.scene.Node node, String name, boolean visible) {
+        for (ifold.scene.Spatial child : node.children()) {
+            if (child instanceof ifold.scene.Node inner) {
+                setVisible(inner, name, visible);
+            } else if (child.name().equals(name)) {
+                child.setVisible(visible);
+            }
+        }
     }
 
     /** The last picture drawn, or null before the first: for tests and screenshots. */

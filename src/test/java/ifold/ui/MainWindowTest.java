@@ -173,7 +173,7 @@ class MainWindowTest {
         assertEquals(Planning.plan(Job.ZigZag.DEMO, Progress.NONE).folds().size(), (int) onEdt(() -> window.timeline.folds.getModel().getSize()));
         // Every menu the issue asks for, each item with its shortcut.
         for (String item : List.of("Open model", "Open fold script", "Export frames", "Export movie", "Export OBJ", "Export FOLD",
-                "Export report", "Quit", "Model", "Captions", "Reset camera", "Underside", "Zig-zag a triangle", "Turn gadget",
+                "Export report", "Quit", "Model", "Refinement and Hamiltonian path", "Paper colours", "Captions", "Reset camera", "Underside", "Zig-zag a triangle", "Turn gadget",
                 "Wrap the model", "Play a script", "Keys")) {
             assertNotNull(onEdt(() -> menuItem(window, item).getAccelerator()), item + " has a shortcut");
         }
@@ -250,6 +250,39 @@ class MainWindowTest {
     }
 
     @Test
+    void thePapersColoursAreChosenAndKept() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        onEdt(() -> {
+            window.timeline.folds.setSelectedIndex(window.timeline.folds.getModel().getSize() - 1); // the tucks: seen from below
+            return null;
+        });
+        assertTrue(window.view.awaitFrame(30_000));
+        assertTrue(undersidePixels(window.view.picture()) > 20_000, "setup: the blue-grey underside shows");
+        onEdt(() -> {
+            window.setPaperColours(0xFFFFFF00, 0xFFFF0000);
+            return null;
+        });
+        assertTrue(window.view.awaitFrame(30_000));
+        BufferedImage red = window.view.picture();
+        assertTrue(undersidePixels(red) < 100, "no blue-grey left");
+        int reddish = 0;
+        for (int y = 0; y < red.getHeight(); y++) {
+            for (int x = 0; x < red.getWidth(); x++) {
+                int p = red.getRGB(x, y);
+                reddish += (p >> 16 & 0xFF) > 120 && (p >> 8 & 0xFF) < 40 && (p & 0xFF) < 40 ? 1 : 0;
+            }
+        }
+        assertTrue(reddish > 20_000, "the underside is red: " + reddish + " pixels");
+        onEdt(() -> {
+            window.dispose();
+            return null;
+        });
+        window = App.open(null, settings());
+        assertEquals(0xFFFF0000, settings().getInt("paper.bottom", 0), "remembered");
+    }
+
+    @Test
     void theSliderScrubsThroughTheFoldsAndTheListJumps() throws Exception {
         window = App.open(null, settings());
         settled();
@@ -299,6 +332,20 @@ class MainWindowTest {
         assertEquals("wrap", onEdt(() -> window.parameters.card()));
         assertTrue(onEdt(() -> window.getTitle()).contains("cube.off"));
         assertTrue(pixelsOf(picture, 0xFFFFFF, 0) > 1000, "the cube's white background");
+        onEdt(() -> {
+            window.timeline.seek(0);
+            return null;
+        });
+        assertTrue(window.view.awaitFrame(30_000));
+        BufferedImage plain = window.view.picture();
+        onEdt(() -> {
+            menuItem(window, "Refinement and Hamiltonian path").doClick();
+            return null;
+        });
+        assertTrue(window.view.awaitFrame(30_000));
+        BufferedImage path = window.view.picture();
+        assertTrue(pixelsOf(path, 0x00A030, 60) > 50 && pixelsOf(plain, 0x00A030, 60) < 10,
+                "the path's tree edges in green, where the plain model has none");
         onEdt(() -> {
             window.parameters.wrapWidth.setText("0.1");
             return null;

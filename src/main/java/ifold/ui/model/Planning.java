@@ -254,7 +254,11 @@ public final class Planning {
         progress.check();
         int folds = result.steps().size() - result.count(Wrap.Kind.END);
         return paperPlan(job, model.getFileName() + ": " + result.strips().size() + " strip(s), " + folds + " folds",
-                result, geometries, figures, 120, "ifold wrap " + model, scene -> Scenes.wrap(scene, mesh, result, geometries));
+                result, geometries, figures, 120, "ifold wrap " + model, scene -> {
+                    WrapView.Playback playback = Scenes.wrap(scene, mesh, result, geometries);
+                    Scenes.refinement(scene, refinement);
+                    return playback;
+                });
     }
 
     private static Plan script(Job.Script job, Progress progress) throws JobFailure {
