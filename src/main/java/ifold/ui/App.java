@@ -30,6 +30,12 @@ public final class App {
     public static void run(Path file, Settings settings) throws InterruptedException {
         CountDownLatch closed = new CountDownLatch(1);
         MainWindow window = open(file, settings);
+        // A bug on the event thread: one line in the window's status bar and on stderr, never a stack trace.
+        Thread.setDefaultUncaughtExceptionHandler((thread, e) -> {
+            String message = "internal error: " + e + " (please report it)";
+            System.err.println("ifold: " + message);
+            SwingUtilities.invokeLater(() -> window.say(message));
+        });
         window.addWindowListener(new java.awt.event.WindowAdapter() {
             @Override
             public void windowClosed(java.awt.event.WindowEvent e) {

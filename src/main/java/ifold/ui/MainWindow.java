@@ -295,7 +295,7 @@ final class MainWindow extends JFrame {
     void open(Path file) {
         String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
         Job job = name.endsWith(".off") || name.endsWith(".obj") ? new Job.WrapModel(file, parameters.wrapWidth.getText(),
-                parameters.wrapThickness.getText()) : new Job.Script(file);
+                parameters.wrapThickness.getText(), parameters.wrapMaxFaces.getText()) : new Job.Script(file);
         settings.addRecent(file);
         Path folder = file.toAbsolutePath().getParent();
         if (folder != null) {
@@ -321,7 +321,8 @@ final class MainWindow extends JFrame {
         for (Path file : settings.recent()) {
             String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
             if ((name.endsWith(".off") || name.endsWith(".obj")) && Files.isRegularFile(file)) {
-                return new Job.WrapModel(file, parameters.wrapWidth.getText(), parameters.wrapThickness.getText());
+                return new Job.WrapModel(file, parameters.wrapWidth.getText(), parameters.wrapThickness.getText(),
+                        parameters.wrapMaxFaces.getText());
             }
         }
         return null;
@@ -702,6 +703,7 @@ final class MainWindow extends JFrame {
         } else if (job instanceof Job.WrapModel w) {
             settings.put("wrap.width", w.width());
             settings.put("wrap.thickness", w.thickness());
+            settings.put("wrap.maxFaces", w.maxFaces());
         }
         settings.put("job", job instanceof Job.ZigZag ? "zigzag" : job instanceof Job.Turn ? "turn" : job instanceof Job.WrapModel
                 ? "wrap" : "script");
@@ -724,6 +726,7 @@ final class MainWindow extends JFrame {
         parameters.turnThickness.setText(settings.get("turn.thickness", ""));
         parameters.wrapWidth.setText(settings.get("wrap.width", ""));
         parameters.wrapThickness.setText(settings.get("wrap.thickness", ""));
+        parameters.wrapMaxFaces.setText(settings.get("wrap.maxFaces", ""));
     }
 
     private static int clampCorner(int corner, int fallback) {

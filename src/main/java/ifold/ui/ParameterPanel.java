@@ -65,6 +65,7 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
     private final JLabel modelName = new JLabel("no model");
     final JTextField wrapWidth = new JTextField();
     final JTextField wrapThickness = new JTextField();
+    final JTextField wrapMaxFaces = new JTextField();
     // The script.
     private Path script;
     private final JLabel scriptName = new JLabel("no script");
@@ -105,6 +106,7 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
         wrap.wide(chooseModelButton);
         wrap.row("width", "Width", wrapWidth, "blank: a third of the widest possible");
         wrap.row("thickness", "Thickness", wrapThickness, "blank: the width / 80");
+        wrap.row("maxFaces", "Max faces", wrapMaxFaces, "blank: 500,000 (about 2.4 kB each)");
         deck.add(top(wrap.panel), "wrap");
 
         Card play = new Card("Play a fold script", "script");
@@ -233,7 +235,7 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
     Job job() {
         return switch (card) {
             case "turn" -> new Job.Turn(angle.getText(), overhang.getText(), turnWidth.getText(), turnThickness.getText());
-            case "wrap" -> new Job.WrapModel(model, wrapWidth.getText(), wrapThickness.getText());
+            case "wrap" -> new Job.WrapModel(model, wrapWidth.getText(), wrapThickness.getText(), wrapMaxFaces.getText());
             case "script" -> new Job.Script(script);
             default -> new Job.ZigZag(triangle.getText(), start.getSelectedIndex(), end.getSelectedIndex(),
                     enterFrom.getSelectedIndex() - 1, zigzagWidth.getText(), zigzagThickness.getText());
@@ -256,6 +258,7 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
                 modelName.setToolTipText(model == null ? null : model.toString());
                 wrapWidth.setText(w.width());
                 wrapThickness.setText(w.thickness());
+                wrapMaxFaces.setText(w.maxFaces());
                 card = "wrap";
             } else if (job instanceof Job.Script s) {
                 script = s.file();

@@ -22,8 +22,10 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.BooleanSupplier;
 import java.util.stream.Stream;
+import javax.swing.JComponent;
 import javax.swing.JMenu;
 import javax.swing.JMenuItem;
+import javax.swing.KeyStroke;
 import javax.swing.MenuElement;
 import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.AfterEach;
@@ -222,6 +224,67 @@ class MainWindowTest {
         double y = Double.parseDouble(corners.substring(corners.lastIndexOf(',') + 1));
         assertTrue(y > 8.5, "C dragged up: " + corners);
         waitFor("the taller triangle planned", 60, () -> corners.equals(window.report.value("triangle")));
+    }
+
+    @Test
+    void theViewersKeysDriveTheTimeline() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        onEdt(() -> {
+            window.timeline.restart();
+            return null;
+        });
+        for (int key : new int[] {java.awt.event.KeyEvent.VK_RIGHT, java.awt.event.KeyEvent.VK_RIGHT}) {
+            onEdt(() -> {
+                press(window.view, key);
+                return null;
+            });
+        }
+        assertEquals(window.plan().folds().get(2).position(), onEdt(() -> window.timeline.timeline().position()), 1e-12,
+                "two folds forward: the third begins");
+        onEdt(() -> {
+            press(window.view, java.awt.event.KeyEvent.VK_LEFT);
+            press(window.view, java.awt.event.KeyEvent.VK_SPACE);
+            return null;
+        });
+        assertTrue(onEdt(() -> window.timeline.timeline().isPlaying()), "space plays");
+        assertEquals("Pause", onEdt(() -> window.timeline.play.getText()));
+        onEdt(() -> {
+            press(window.view, java.awt.event.KeyEvent.VK_H);
+            return null;
+        });
+        assertTrue(onEdt(() -> window.view.isShowingHelp()), "H shows the keys");
+    }
+
+    @Test
+    void theTurnFromTheFoldMenuMarksABadAngle() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        onEdt(() -> {
+            menuItem(window, "Turn gadget").doClick();
+            return null;
+        });
+        waitFor("the turn planned", 60, () -> window.plan() != null && window.plan().job() instanceof Job.Turn && !window.isWorking());
+        assertEquals("60", onEdt(() -> window.report.value("angle")));
+        onEdt(() -> {
+            window.parameters.angle.setText("200");
+            return null;
+        });
+        waitFor("the angle marked", 10, () -> window.parameters.isMarked("angle"));
+        assertEquals(Planning.check(new Job.Turn("200", "0", "1", "")).get(0).message(), onEdt(() -> window.parameters.note("angle")));
+        onEdt(() -> {
+            window.parameters.angle.setText("90");
+            return null;
+        });
+        waitFor("the right angle", 60, () -> "90".equals(window.report.value("angle")));
+    }
+
+    /** A key pressed on a component with the focus, as the keyboard would: its WHEN_FOCUSED bindings answer. */
+    private static void press(JComponent component, int key) {
+        KeyStroke stroke = KeyStroke.getKeyStroke(key, 0);
+        Object name = component.getInputMap(JComponent.WHEN_FOCUSED).get(stroke);
+        assertNotNull(name, "a binding for " + stroke);
+        component.getActionMap().get(name).actionPerformed(new java.awt.event.ActionEvent(component, 0, String.valueOf(name)));
     }
 
     @Test

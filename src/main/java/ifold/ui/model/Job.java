@@ -27,8 +27,15 @@ public sealed interface Job {
         public static final Turn DEMO = new Turn("60", "0", "1", "");
     }
 
-    /** A model (OFF or OBJ) wrapped along its Hamiltonian path. */
-    record WrapModel(Path model, String width, String thickness) implements Job {
+    /**
+     * A model (OFF or OBJ) wrapped along its Hamiltonian path.
+     *
+     * @param maxFaces the most faces of paper the wrap may make; blank for the command line's default
+     */
+    record WrapModel(Path model, String width, String thickness, String maxFaces) implements Job {
+        public WrapModel(Path model, String width, String thickness) {
+            this(model, width, thickness, "");
+        }
     }
 
     /** A fold script, or a FOLD crease pattern folded one crease line at a time. */

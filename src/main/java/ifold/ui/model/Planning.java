@@ -148,10 +148,19 @@ public final class Planning {
         requireFile(job.model(), "model", problems);
         double width = number(job.width(), "width", Double.NaN, problems);
         double thickness = number(job.thickness(), "thickness", Double.NaN, problems);
+        int maxFaces = Wrap.DEFAULT_MAX_FACES;
+        String limit = job.maxFaces() == null ? "" : job.maxFaces().strip();
+        if (!limit.isEmpty()) {
+            try {
+                maxFaces = Integer.parseInt(limit);
+            } catch (NumberFormatException e) {
+                problems.add(new Problem("maxFaces", "'" + limit + "' is not a whole number"));
+            }
+        }
         if (!problems.isEmpty()) {
             return null;
         }
-        return new Wrap.Options(width, thickness, null, Wrap.DEFAULT_MAX_FACES);
+        return new Wrap.Options(width, thickness, null, maxFaces);
     }
 
     private static void requireFile(Path file, String field, List<Problem> problems) {
@@ -239,7 +248,7 @@ public final class Planning {
         try {
             result = Wrap.wrap(refinement, options);
         } catch (Wrap.FaceLimitException e) {
-            throw new JobFailure(model + ": cannot wrap: " + e.getMessage());
+            throw new JobFailure(new Problem("maxFaces", model + ": cannot wrap: " + e.getMessage() + " (Max faces raises it)"));
         } catch (Wrap.WrapException e) {
             throw new JobFailure(model + ": cannot wrap: " + e.getMessage());
         }

@@ -134,6 +134,18 @@ class PlanningTest {
     }
 
     @Test
+    void theWrapsLimitOnFacesIsItsFieldsProblem() throws Exception {
+        Path cube = Path.of("models", "cube.off");
+        Problem zero = Planning.check(new Job.WrapModel(cube, "", "", "0")).get(0);
+        assertEquals("maxFaces", zero.field());
+        Run run = cli("wrap", cube.toString(), "--no-view", "--max-faces", "0");
+        assertEquals("ifold: option --max-faces: " + zero.message(), run.err().strip());
+        assertEquals("maxFaces", Planning.check(new Job.WrapModel(cube, "", "", "many")).get(0).field());
+        JobFailure few = assertThrows(JobFailure.class, () -> Planning.plan(new Job.WrapModel(cube, "", "", "50"), Progress.NONE));
+        assertEquals("maxFaces", few.problem().field(), "a wrap stopped by the limit marks the limit");
+    }
+
+    @Test
     void aCancelledPlanStopsAtItsNextStage() {
         Progress cancelled = new Progress() {
             @Override
