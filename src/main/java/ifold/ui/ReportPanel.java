@@ -19,8 +19,16 @@ final class ReportPanel extends JTable {
     ReportPanel() {
         setModel(rows);
         setFillsViewportHeight(true);
+        javax.swing.ToolTipManager.sharedInstance().registerComponent(this);
         getColumnModel().getColumn(0).setPreferredWidth(140);
         getColumnModel().getColumn(1).setPreferredWidth(140);
+    }
+
+    /** A long value is cut in its cell: the whole of it under the mouse. */
+    @Override
+    public String getToolTipText(java.awt.event.MouseEvent e) {
+        int row = rowAtPoint(e.getPoint());
+        return row < 0 ? null : rows.getValueAt(row, 0) + " = " + rows.getValueAt(row, 1);
     }
 
     void show(Map<String, Object> figures) {

@@ -31,7 +31,16 @@ final class TimelinePanel extends JPanel {
     final JButton forward = new JButton("Fold \u25B6");
     final JSlider slider = new JSlider(0, TICKS, 0);
     final JComboBox<String> speed = new JComboBox<>();
-    final JList<String> folds = new JList<>();
+    final JList<String> folds = new JList<>() {
+        private static final long serialVersionUID = 1L;
+
+        /** A long name is cut in the list: the whole of it under the mouse. */
+        @Override
+        public String getToolTipText(java.awt.event.MouseEvent e) {
+            int index = locationToIndex(e.getPoint());
+            return index < 0 ? null : getModel().getElementAt(index);
+        }
+    };
     private final JLabel where = new JLabel(" ");
     private final SceneView view;
     private final Timer clock;
@@ -62,6 +71,7 @@ final class TimelinePanel extends JPanel {
         where.setBorder(BorderFactory.createEmptyBorder(0, 8, 0, 0));
         add(where, BorderLayout.EAST);
         folds.setSelectionMode(ListSelectionModel.SINGLE_SELECTION);
+        javax.swing.ToolTipManager.sharedInstance().registerComponent(folds);
         folds.setPrototypeCellValue("pass 12 of 40: turn, 45° valley fold and more"); // a fixed height: 100,000 folds list at once
         play.addActionListener(e -> togglePlaying());
         back.addActionListener(e -> step(-1));
