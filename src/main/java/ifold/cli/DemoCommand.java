@@ -136,9 +136,7 @@ final class DemoCommand implements Runnable {
             Scene scene = new Scene();
             WrapView.Playback animation = Scenes.zigzag(scene, shape, result, geometries);
             if (figure != null) {
-                int laid = turns + overlaps;
-                double[] stages = {animation.positionAfter(Math.min(2, laid)), animation.positionAfter(laid),
-                    animation.positionAfter(result.steps().size()), animation.halfTurn()};
+                double[] stages = Scenes.figure11Stages(animation, result);
                 try {
                     FrameExport.panel(scene, animation, stages, 2, 800, 500, 4, figure);
                     outputs.wrote(figure);

@@ -42,6 +42,16 @@ public final class Scenes {
         return paper(scene, result, geometries);
     }
 
+    /**
+     * The stages of the seed's Figure 11 re-made from a lone triangle's playback: the first
+     * turn, every pass laid, the excess tucked under, the underside.
+     */
+    public static double[] figure11Stages(WrapView.Playback playback, Wrap.Result result) {
+        int laid = result.count(Wrap.Kind.ZIGZAG_TURN) + result.count(Wrap.Kind.OVERLAP);
+        return new double[] {playback.positionAfter(Math.min(2, laid)), playback.positionAfter(laid),
+            playback.positionAfter(result.steps().size()), playback.halfTurn()};
+    }
+
     /** The turn gadget's strip folded on an empty table. */
     public static WrapView.Playback turn(Scene scene, Wrap.Result result, List<WrapGeometry> geometries) {
         return paper(scene, result, geometries);

@@ -135,6 +135,11 @@ final class MainWindow extends JFrame {
         setSize(Math.min(width, screen.width), Math.min(height, screen.height));
         setMinimumSize(new Dimension(900, 600));
         setLocationRelativeTo(null);
+        int x = settings.getInt("window.x", Integer.MIN_VALUE);
+        int y = settings.getInt("window.y", Integer.MIN_VALUE);
+        if (x != Integer.MIN_VALUE && y != Integer.MIN_VALUE && x >= 0 && y >= 0 && x < screen.width - 100 && y < screen.height - 100) {
+            setLocation(x, y); // where it was left, if that is still on the screen
+        }
         refreshRecent();
         view.setPaperColours(settings.getInt("paper.top", 0), settings.getInt("paper.bottom", 0));
     }
@@ -169,6 +174,7 @@ final class MainWindow extends JFrame {
         file.add(item("Export OBJ...", KeyEvent.VK_E, ctrl, () -> exportFileAsk("OBJ", "obj")));
         file.add(item("Export FOLD...", KeyEvent.VK_E, ctrl | shift, () -> exportFileAsk("FOLD", "fold")));
         file.add(item("Export report (JSON)...", KeyEvent.VK_J, ctrl, () -> exportFileAsk("report", "json")));
+        file.add(item("Export figure (PNG)...", KeyEvent.VK_G, ctrl, () -> exportFileAsk("figure", "png")));
         file.addSeparator();
         file.add(item("Quit", KeyEvent.VK_Q, ctrl, this::dispose));
         bar.add(file);
@@ -194,8 +200,9 @@ final class MainWindow extends JFrame {
 
         JMenu fold = new JMenu("Fold");
         fold.setMnemonic(KeyEvent.VK_O);
-        fold.add(item("Zig-zag a triangle", KeyEvent.VK_1, ctrl, () -> parameters.show(Job.ZigZag.DEMO)));
-        fold.add(item("Turn gadget", KeyEvent.VK_2, ctrl, () -> parameters.show(Job.Turn.DEMO)));
+        // Each job as its fields were left: switching back and forth loses nothing.
+        fold.add(item("Zig-zag a triangle", KeyEvent.VK_1, ctrl, () -> parameters.show(parameters.zigzag())));
+        fold.add(item("Turn gadget", KeyEvent.VK_2, ctrl, () -> parameters.show(parameters.turn())));
         fold.add(item("Wrap the model", KeyEvent.VK_3, ctrl, this::wrapModel));
         fold.add(item("Play a script", KeyEvent.VK_4, ctrl, this::playScript));
         fold.addSeparator();
@@ -457,6 +464,7 @@ final class MainWindow extends JFrame {
         switch (extension) {
             case "obj" -> exportObj(file);
             case "fold" -> exportFold(file);
+            case "png" -> exportFigure(file);
             default -> exportReport(file);
         }
     }
@@ -473,6 +481,14 @@ final class MainWindow extends JFrame {
         Plan shown = plan;
         export("FOLD", file, progress -> {
             Exports.fold(shown, file, progress);
+            return "wrote " + file;
+        });
+    }
+
+    void exportFigure(Path file) {
+        Plan shown = plan;
+        export("figure", file, progress -> {
+            Exports.figure(shown, file, progress);
             return "wrote " + file;
         });
     }
@@ -736,6 +752,8 @@ final class MainWindow extends JFrame {
     private void saveSettings() {
         settings.putInt("window.width", getWidth());
         settings.putInt("window.height", getHeight());
+        settings.putInt("window.x", getX());
+        settings.putInt("window.y", getY());
         try {
             settings.save();
         } catch (IOException e) {

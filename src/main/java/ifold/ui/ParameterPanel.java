@@ -231,14 +231,24 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
         }
     }
 
+    /** The zig-zag as its fields now stand, whichever card is shown. */
+    Job.ZigZag zigzag() {
+        return new Job.ZigZag(triangle.getText(), start.getSelectedIndex(), end.getSelectedIndex(), enterFrom.getSelectedIndex() - 1,
+                zigzagWidth.getText(), zigzagThickness.getText());
+    }
+
+    /** The turn as its fields now stand, whichever card is shown. */
+    Job.Turn turn() {
+        return new Job.Turn(angle.getText(), overhang.getText(), turnWidth.getText(), turnThickness.getText());
+    }
+
     /** The job as the fields now stand. */
     Job job() {
         return switch (card) {
-            case "turn" -> new Job.Turn(angle.getText(), overhang.getText(), turnWidth.getText(), turnThickness.getText());
+            case "turn" -> turn();
             case "wrap" -> new Job.WrapModel(model, wrapWidth.getText(), wrapThickness.getText(), wrapMaxFaces.getText());
             case "script" -> new Job.Script(script);
-            default -> new Job.ZigZag(triangle.getText(), start.getSelectedIndex(), end.getSelectedIndex(),
-                    enterFrom.getSelectedIndex() - 1, zigzagWidth.getText(), zigzagThickness.getText());
+            default -> zigzag();
         };
     }
 

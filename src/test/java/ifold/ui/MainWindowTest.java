@@ -175,7 +175,7 @@ class MainWindowTest {
         assertEquals(Planning.plan(Job.ZigZag.DEMO, Progress.NONE).folds().size(), (int) onEdt(() -> window.timeline.folds.getModel().getSize()));
         // Every menu the issue asks for, each item with its shortcut.
         for (String item : List.of("Open model", "Open fold script", "Export frames", "Export movie", "Export OBJ", "Export FOLD",
-                "Export report", "Quit", "Model", "Refinement and Hamiltonian path", "Paper colours", "Captions", "Reset camera", "Underside", "Zig-zag a triangle", "Turn gadget",
+                "Export report", "Export figure", "Quit", "Model", "Refinement and Hamiltonian path", "Paper colours", "Captions", "Reset camera", "Underside", "Zig-zag a triangle", "Turn gadget",
                 "Wrap the model", "Play a script", "Keys")) {
             assertNotNull(onEdt(() -> menuItem(window, item).getAccelerator()), item + " has a shortcut");
         }
@@ -488,6 +488,15 @@ class MainWindowTest {
         assertEquals(Files.readString(cliObj), Files.readString(obj), "the OBJ is the command line's");
         assertEquals(Files.readString(cliFold), Files.readString(fold), "the FOLD file is the command line's");
         assertEquals(Files.readString(cliJson), Files.readString(json), "the report is the command line's");
+        Path figure = dir.resolve("figure11.png");
+        onEdt(() -> {
+            window.exportFigure(figure);
+            return null;
+        });
+        waitFor("the figure", 60, () -> !window.isWorking());
+        BufferedImage panel = javax.imageio.ImageIO.read(figure.toFile());
+        assertEquals(2 * 800 + 2, panel.getWidth(), "two stages a row, as --figure draws them");
+        assertEquals(2 * 500 + 2, panel.getHeight());
     }
 
     @Test

@@ -136,6 +136,26 @@ public final class Exports {
         }
     }
 
+    /**
+     * Writes the zig-zag demo's figure (the seed's Figure 11 re-made: four stages, 800 by 500
+     * each), as {@code ifold demo zigzag --figure} does.
+     */
+    public static void figure(Plan plan, Path file, Progress progress) throws JobFailure {
+        if (plan.figureStages() == null) {
+            throw new JobFailure("the figure is the zig-zag demo's: Fold, Zig-zag a triangle first");
+        }
+        progress.stage("rendering " + file.getFileName());
+        Plan.Shown shown = plan.newScene();
+        progress.check();
+        try {
+            FrameExport.panel(shown.scene(), shown.animation(), plan.figureStages(), 2, 800, 500, 4, file);
+        } catch (RenderUnavailableException e) {
+            throw new JobFailure(e.getMessage());
+        } catch (IOException e) {
+            throw new JobFailure("cannot write " + file + ": " + e.getMessage());
+        }
+    }
+
     /** Writes the folded paper as OBJ. */
     public static void obj(Plan plan, Path file, Progress progress) throws JobFailure {
         progress.stage("writing " + file.getFileName());

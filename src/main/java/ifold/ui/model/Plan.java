@@ -20,9 +20,15 @@ import java.util.function.Supplier;
  * @param folds every fold in order, with where the animation has made it
  * @param figures the report, as {@code --report} writes it
  * @param seconds how long the animation plays at speed 1 (the command line's default length)
+ * @param scenes makes a new scene of the result, for an export
+ * @param obj writes the folded paper as OBJ
+ * @param sheets the folded sheets, for FOLD
+ * @param source what the OBJ and FOLD files say they hold
+ * @param figureStages where the zig-zag demo's figure (the seed's Figure 11) shows the
+ *     animation, or null for a job that has none
  */
 public record Plan(Job job, String title, Shown shown, List<Fold> folds, Map<String, Object> figures, double seconds,
-        Supplier<Shown> scenes, Writer obj, List<FoldFile.Folded> sheets, String source) {
+        Supplier<Shown> scenes, Writer obj, List<FoldFile.Folded> sheets, String source, double[] figureStages) {
 
     /** A scene and the animation that plays it. */
     public record Shown(Scene scene, Animation animation) {

@@ -313,7 +313,7 @@ public final class Planning {
         String header = "iFold fold script " + file + ": " + result.steps().size() + " folds, thickness " + result.sheet().thickness();
         return new Plan(job, file.getFileName() + ": " + result.steps().size() + " folds", shown, List.copyOf(folds), figures, 10,
                 () -> scriptScene(result, folded), out -> WrapExport.writeObj(out, header, List.of(folded)),
-                List.of(new FoldFile.Folded(result.sheet(), result.frames())), "ifold fold " + file);
+                List.of(new FoldFile.Folded(result.sheet(), result.frames())), "ifold fold " + file, null);
     }
 
     private static Plan.Shown scriptScene(ScriptFolding.Result result, WrapGeometry folded) {
@@ -349,7 +349,8 @@ public final class Planning {
         return new Plan(job, title, new Plan.Shown(scene, playback), List.copyOf(folds), figures, seconds, () -> {
             Scene another = new Scene();
             return new Plan.Shown(another, scenes.fill(another));
-        }, out -> WrapExport.writeObj(out, source, result, geometries), List.copyOf(sheets), source);
+        }, out -> WrapExport.writeObj(out, source, result, geometries), List.copyOf(sheets), source,
+                job instanceof Job.ZigZag ? Scenes.figure11Stages(playback, result) : null);
     }
 
     /** A fold's kind as the list shows it. */
