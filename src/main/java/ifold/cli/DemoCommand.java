@@ -1,15 +1,15 @@
 package ifold.cli;
 
 import ifold.fold.FoldFile;
+import ifold.job.Reports;
+import ifold.job.Scenes;
+import ifold.job.Triangles;
 import ifold.geom.Triangle;
 import ifold.mesh.PolygonSoup;
 import ifold.render.FrameExport;
 import ifold.render.RenderUnavailableException;
 import ifold.scene.Animation;
-import ifold.scene.Geometry;
-import ifold.scene.Material;
 import ifold.scene.Scene;
-import ifold.scene.SceneMesh;
 import ifold.scene.WrapView;
 import ifold.sheet.FoldException;
 import ifold.sheet.Sheet;
@@ -21,7 +21,6 @@ import ifold.wrap.WrapGeometry;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -123,30 +122,8 @@ final class DemoCommand implements Runnable {
             int turns = result.count(Wrap.Kind.ZIGZAG_TURN);
             int overlaps = result.count(Wrap.Kind.OVERLAP);
             int tucks = result.count(Wrap.Kind.TUCK);
-            // Two turn folds between passes, and the overlap is a pass of its own.
-            int passes = turns / 2 + 1 + overlaps;
-            Map<String, Object> figures = new LinkedHashMap<>();
-            figures.put("triangle", triangle);
-            figures.put("start", Triangle.name(startCorner));
-            figures.put("end", Triangle.name(endCorner));
-            figures.put("stripLength", sheet.length());
-            figures.put("stripWidth", sheet.width());
-            figures.put("aspectRatio", sheet.length() / sheet.width());
-            figures.put("folds", turns + overlaps + tucks);
-            figures.put("zigzagFolds", turns + overlaps);
-            figures.put("tucks", tucks);
-            figures.put("passes", passes);
-            figures.put("lastPassOverlapped", overlaps > 0);
-            figures.put("maxLayers", analysis.maxLayers());
-            figures.put("stackLayers", analysis.stackLevels());
-            figures.put("paperEfficiency", analysis.surfaceArea() / analysis.paperArea());
-            figures.put("coverage", analysis.coverage());
-            figures.put("paperOutsideArea", WrapAnalysis.outsideArea(result));
-            figures.put("paperOutside", analysis.outsidePaper());
-            figures.put("farthestFromTriangle", analysis.farthest());
-            figures.put("isometryError", analysis.isometryError());
-            figures.put("triangleArea", analysis.surfaceArea());
-            figures.put("thickness", t);
+            int passes = Reports.passes(result);
+            Map<String, Object> figures = Reports.zigzag(triangle, startCorner, endCorner, result, analysis);
             outputs.exportFold(List.of(new FoldFile.Folded(sheet, result.frames())), "demo zigzag --triangle " + triangle, figures, out);
             outputs.write(result, geometries, "demo zigzag --triangle " + triangle, figures, out);
             out.printf(Locale.ROOT, "zigzag: strip %.4g x %.4g (L/w %.1f), %d passes%s, %d turn folds, %d tucks, %d layers at most (a stack of %d), "
@@ -157,13 +134,9 @@ final class DemoCommand implements Runnable {
             out.flush();
 
             Scene scene = new Scene();
-            scene.root().attach(solid(shape));
-            scene.root().attach(outline(shape));
-            WrapView.Playback animation = playback(scene, result, geometries);
+            WrapView.Playback animation = Scenes.zigzag(scene, shape, result, geometries);
             if (figure != null) {
-                int laid = turns + overlaps;
-                double[] stages = {animation.positionAfter(Math.min(2, laid)), animation.positionAfter(laid),
-                    animation.positionAfter(result.steps().size()), animation.halfTurn()};
+                double[] stages = Scenes.figure11Stages(animation, result);
                 try {
                     FrameExport.panel(scene, animation, stages, 2, 800, 500, 4, figure);
                     outputs.wrote(figure);
@@ -230,18 +203,7 @@ final class DemoCommand implements Runnable {
             Wrap.Result result = gadget.wrap();
             List<WrapGeometry> geometries = List.of(WrapGeometry.of(gadget.sheet(), result.frames()));
             WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
-            Map<String, Object> figures = new LinkedHashMap<>();
-            figures.put("angle", angle);
-            figures.put("measuredAngle", gadget.measuredAngle());
-            figures.put("overhang", overhang * width);
-            figures.put("topSideUp", gadget.endFacesUp());
-            figures.put("stripLength", gadget.length());
-            figures.put("stripWidth", width);
-            figures.put("thickness", t);
-            figures.put("folds", result.count(Wrap.Kind.TURN_GADGET));
-            figures.put("maxLayers", analysis.maxLayers());
-            figures.put("stackLayers", analysis.stackLevels());
-            figures.put("isometryError", analysis.isometryError());
+            Map<String, Object> figures = Reports.turn(options, gadget, analysis);
             outputs.exportFold(List.of(new FoldFile.Folded(gadget.sheet(), result.frames())),
                     String.format(Locale.ROOT, "demo turn --angle %s", angle), figures, out);
             outputs.write(result, geometries, String.format(Locale.ROOT, "demo turn --angle %s", angle), figures, out);
@@ -250,21 +212,11 @@ final class DemoCommand implements Runnable {
             out.flush();
 
             Scene scene = new Scene();
-            Animation animation = playback(scene, result, geometries);
+            Animation animation = Scenes.turn(scene, result, geometries);
             outputs.show(scene, animation, String.format(Locale.ROOT, "turn gadget: %.4g degrees", angle), 6, true, spec, 0);
             return 0;
         }
     }
-
-    /** The strip laid fold by fold over what the scene holds (the triangle's outline, or nothing), then turned round. */
-    private static WrapView.Playback playback(Scene scene, Wrap.Result result, List<WrapGeometry> geometries) {
-        // White paper on a white background would not be seen where it leaves the triangle.
-        scene.setBackground(BACKGROUND);
-        return WrapView.play(scene, result, geometries);
-    }
-
-    /** A soft grey-blue: the white paper stands out on it, and the triangle's colour is darker still. */
-    private static final int BACKGROUND = 0xFFD3DAE2;
 
     /**
      * Parses {@code x1,y1,x2,y2,x3,y3} (a triangle in the plane z = 0) or
@@ -272,44 +224,11 @@ final class DemoCommand implements Runnable {
      * is the option's error.
      */
     static Triangle parseTriangle(String text) {
-        String[] parts = text.split(",", -1);
-        if (parts.length != 6 && parts.length != 9) {
-            throw UserError.usage("option --triangle: expected six numbers x1,y1,x2,y2,x3,y3 or nine x1,y1,z1,...,z3, got '" + text + "'");
-        }
-        double[] values = new double[parts.length];
-        for (int i = 0; i < parts.length; i++) {
-            try {
-                values[i] = Double.parseDouble(parts[i].strip());
-            } catch (NumberFormatException e) {
-                throw UserError.usage("option --triangle: '" + parts[i].strip() + "' is not a number");
-            }
-            if (!Double.isFinite(values[i])) {
-                throw UserError.usage("option --triangle: '" + parts[i].strip() + "' is not a finite number");
-            }
-        }
-        Triangle triangle;
         try {
-            triangle = values.length == 6 ? Triangle.planar(values[0], values[1], values[2], values[3], values[4], values[5])
-                    : new Triangle(new org.joml.Vector3d(values[0], values[1], values[2]), new org.joml.Vector3d(values[3], values[4], values[5]),
-                            new org.joml.Vector3d(values[6], values[7], values[8]));
-        } catch (IllegalArgumentException e) {
-            throw UserError.usage("option --triangle: " + e.getMessage());
+            return Triangles.parse(text);
+        } catch (ParameterException e) {
+            throw UserError.usage(e);
         }
-        double size = Math.max(triangle.opposite(0), Math.max(triangle.opposite(1), triangle.opposite(2)));
-        double far = 0;
-        for (double value : values) {
-            far = Math.max(far, Math.abs(value));
-        }
-        if (far > 1e6 * size) {
-            // Thickness offsets of a millionth of the size would drown in the coordinates' rounding.
-            throw UserError.usage("option --triangle: the triangle is too small for its distance from the origin: move it nearer");
-        }
-        if (far > 1e150 || size < 1e-150) {
-            // Lengths squared (areas, the stacks' overlaps) would overflow or underflow a double.
-            throw UserError.usage(String.format(Locale.ROOT, "option --triangle: iFold wraps triangles of sizes from 1e-150 to 1e150,"
-                    + " got %s up to %.3g", far > 1e150 ? "coordinates" : "sides", far > 1e150 ? far : size));
-        }
-        return triangle;
     }
 
     private static int corner(String name, String option) {
@@ -319,35 +238,5 @@ final class DemoCommand implements Runnable {
             case "C" -> 2;
             default -> throw UserError.usage("option " + option + ": expected A, B or C, got '" + name + "'");
         };
-    }
-
-    /**
-     * The triangle itself, in the wrap's quiet model colour, seen from its front only: from
-     * behind, the paper tucked under it shows through.
-     */
-    private static Geometry solid(Triangle triangle) {
-        double[] positions = new double[9];
-        for (int i = 0; i < 3; i++) {
-            positions[3 * i] = triangle.corner(i).x();
-            positions[3 * i + 1] = triangle.corner(i).y();
-            positions[3 * i + 2] = triangle.corner(i).z();
-        }
-        SceneMesh mesh = new SceneMesh(positions, new int[] {0, 1, 2}, new int[] {WrapView.MODEL}, new int[0], new int[0]);
-        Geometry solid = new Geometry("triangle face", mesh, new Material(WrapView.MODEL, WrapView.MODEL, false, false));
-        solid.setClosed(true);
-        return solid;
-    }
-
-    /** The triangle's edges, drawn in green: the paper must cover them and end inside them. */
-    private static Geometry outline(Triangle triangle) {
-        double[] positions = new double[9];
-        for (int i = 0; i < 3; i++) {
-            positions[3 * i] = triangle.corner(i).x();
-            positions[3 * i + 1] = triangle.corner(i).y();
-            positions[3 * i + 2] = triangle.corner(i).z();
-        }
-        int green = 0xFF1E8C3A;
-        SceneMesh mesh = new SceneMesh(positions, new int[0], new int[0], new int[] {0, 1, 1, 2, 2, 0}, new int[] {green, green, green});
-        return new Geometry("triangle", mesh, new Material(green, green, false, true));
     }
 }

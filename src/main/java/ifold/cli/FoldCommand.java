@@ -2,15 +2,14 @@ package ifold.cli;
 
 import ifold.fold.CreasePattern;
 import ifold.fold.FoldFile;
+import ifold.job.Reports;
+import ifold.job.Scenes;
+import ifold.job.Scripts;
 import ifold.scene.Animation;
-import ifold.scene.Geometry;
-import ifold.scene.PaperView;
 import ifold.scene.Scene;
 import ifold.script.FoldScript;
 import ifold.script.FoldScriptException;
 import ifold.script.ScriptFolding;
-import ifold.sheet.Sheet;
-import ifold.wrap.WrapAnalysis;
 import ifold.wrap.WrapGeometry;
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -23,7 +22,6 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
-import org.joml.Quaterniond;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -67,7 +65,7 @@ final class FoldCommand implements Callable<Integer> {
         LoadedModel.requireRegularFile(script);
         CreasePattern pattern = null;
         try {
-            if (isFoldFile(script)) {
+            if (Scripts.isFoldFile(script)) {
                 // A FOLD crease pattern, folded one crease line at a time.
                 pattern = CreasePattern.read(script);
                 parsed = pattern.script();
@@ -97,7 +95,7 @@ final class FoldCommand implements Callable<Integer> {
         }
         WrapGeometry folded = WrapGeometry.of(result.sheet(), result.frames());
         PrintWriter out = spec.commandLine().getOut();
-        Map<String, Object> figures = figures(result, folded);
+        Map<String, Object> figures = Reports.script(result, folded);
         figures.put("timing", timing(nanosPerFold, result.steps()));
         outputs.exportFold(List.of(new FoldFile.Folded(result.sheet(), result.frames())), "ifold fold " + script, figures, out);
         outputs.write(List.of(folded), "iFold fold script " + script + ": " + result.steps().size() + " folds, thickness "
@@ -107,59 +105,12 @@ final class FoldCommand implements Callable<Integer> {
         out.flush();
 
         Scene scene = new Scene();
-        Geometry geometry = new Geometry("paper", PaperView.mesh(folded, result.sheet()), PaperView.MATERIAL);
-        scene.root().attach(geometry);
-        scene.camera().setOrientation(new Quaterniond().rotateX(-0.75).rotateZ(-0.35));
         // The camera frames the paper as it stands, folding up.
-        Animation animation = PaperView.folding(geometry, result, folded, scene.camera());
-        animation.apply(0);
+        Animation animation = Scenes.script(scene, result, folded);
         outputs.show(scene, animation, script.getFileName() + ": " + result.steps().size() + " folds", outputs.frameOptions.seconds,
                 false, spec);
         out.flush();
         return 0;
-    }
-
-    /** Whether the file is FOLD (JSON) rather than a fold script: its first character that is not white space is '{'. */
-    private static boolean isFoldFile(Path file) throws IOException {
-        try (java.io.InputStream in = Files.newInputStream(file)) {
-            byte[] head = in.readNBytes(4096);
-            for (byte b : head) {
-                if (!Character.isWhitespace(b)) {
-                    return b == '{';
-                }
-            }
-            return false;
-        }
-    }
-
-    private static Map<String, Object> figures(ScriptFolding.Result result, WrapGeometry folded) {
-        Sheet sheet = result.sheet();
-        int creases = 0;
-        double area = 0;
-        for (int f = 0; f < sheet.faceCount(); f++) {
-            int[] loop = sheet.loop(f);
-            for (int i = 0; i < loop.length; i++) {
-                int a = loop[i];
-                int b = loop[(i + 1) % loop.length];
-                area += sheet.u(a) * sheet.v(b) - sheet.u(b) * sheet.v(a);
-                if (sheet.crease(a, b) != null && (sheet.faceAcross(a, b) < f)) {
-                    creases++; // each crease edge once, from the later of its two faces
-                }
-            }
-        }
-        Map<String, Object> figures = new LinkedHashMap<>();
-        figures.put("folds", result.steps().size());
-        figures.put("thickness", sheet.thickness());
-        figures.put("vertices", folded.vertexCount());
-        figures.put("faces", sheet.faceCount());
-        figures.put("capFacets", folded.caps().size());
-        figures.put("creases", creases);
-        figures.put("planes", result.frames().length);
-        figures.put("maxLayers", WrapAnalysis.maxLayers(sheet, result.frames().length));
-        figures.put("stackLayers", sheet.stackLevels());
-        figures.put("paperArea", area / 2);
-        figures.put("isometryError", WrapAnalysis.isometryError(folded, sheet.width()));
-        return figures;
     }
 
     /**

@@ -16,9 +16,17 @@ public final class Main implements Runnable {
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
+    /** {@code ifold} alone: the window where there is a display; without one, the usage error of old. */
     @Override
     public void run() {
-        throw new CommandLine.ParameterException(spec.commandLine(), "missing command: try 'ifold --help'");
+        if (!PaperOutputs.hasDisplay() || !ifold.ui.App.canOpen()) {
+            throw new CommandLine.ParameterException(spec.commandLine(), "missing command: try 'ifold --help'");
+        }
+        try {
+            AppCommand.open(null, null);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 
     /**
@@ -55,6 +63,7 @@ public final class Main implements Runnable {
     private static final Map<String, Class<?>> SUBCOMMANDS = new LinkedHashMap<>();
 
     static {
+        SUBCOMMANDS.put("app", AppCommand.class);
         SUBCOMMANDS.put("wrap", WrapCommand.class);
         SUBCOMMANDS.put("view", ViewCommand.class);
         SUBCOMMANDS.put("fold", FoldCommand.class);

@@ -1,5 +1,6 @@
 package ifold.cli;
 
+import ifold.job.Json;
 import ifold.io.AtomicFile;
 import ifold.fold.FoldFile;
 import ifold.render.RenderUnavailableException;

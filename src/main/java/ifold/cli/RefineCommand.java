@@ -1,5 +1,6 @@
 package ifold.cli;
 
+import ifold.job.Json;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.io.MeshWriters;

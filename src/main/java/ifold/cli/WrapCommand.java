@@ -1,16 +1,15 @@
 package ifold.cli;
 
+import ifold.job.Json;
+import ifold.job.Reports;
+import ifold.job.Scenes;
 import ifold.io.AtomicFile;
 import ifold.fold.FoldFile;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.refine.HamiltonianRefinement;
 import ifold.scene.Animation;
-import ifold.scene.Geometry;
-import ifold.scene.Material;
 import ifold.scene.Scene;
-import ifold.scene.SceneMesh;
-import ifold.scene.WrapView;
 import ifold.wrap.ParameterException;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapAnalysis;
@@ -25,7 +24,6 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import java.util.TreeMap;
 import java.util.concurrent.Callable;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -119,7 +117,7 @@ final class WrapCommand implements Callable<Integer> {
         WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
         long analysedAt = System.nanoTime();
 
-        Map<String, Object> figures = figures(loaded, mesh, refinement, result, analysis);
+        Map<String, Object> figures = Reports.wrap(model.toString(), mesh.faceCount(), loaded.repairs(), refinement, result, analysis);
         List<Path> written = new ArrayList<>();
         try {
             if (exportObj != null) {
@@ -166,9 +164,7 @@ final class WrapCommand implements Callable<Integer> {
     /** The model, solid, and the strips laid over it along the path; then a turn around it. */
     private void show(HalfedgeMesh mesh, Wrap.Result result, List<WrapGeometry> geometries, List<Path> written) {
         Scene scene = new Scene();
-        Geometry solid = new Geometry("model", SceneMesh.of(mesh), new Material(WrapView.MODEL, 0xFF4A5460, false, false));
-        scene.root().attach(solid);
-        Animation animation = WrapView.play(scene, result, geometries);
+        Animation animation = Scenes.wrap(scene, mesh, result, geometries);
         // Layer on layer of paper makes multisampling dear on a software renderer (4 samples a
         // pixel: 16 frames/s for the cube; none: 60), and the layers' edges are what the eye follows.
         outputs.show(scene, animation, model.getFileName() + ": " + result.strips().size() + " strip(s)", 120, true, spec, 0);
@@ -186,56 +182,5 @@ final class WrapCommand implements Callable<Integer> {
                 result.count(Wrap.Kind.TURN_GADGET), result.count(Wrap.Kind.EDGE_CROSSING), result.count(Wrap.Kind.TUCK),
                 analysis.maxLayers(), analysis.stackLevels(), analysis.surfaceArea() / analysis.paperArea(), analysis.coverage(),
                 analysis.isometryError());
-    }
-
-    private Map<String, Object> figures(LoadedModel loaded, HalfedgeMesh mesh, HamiltonianRefinement.Result refinement,
-            Wrap.Result result, WrapAnalysis analysis) {
-        Map<String, Object> figures = new LinkedHashMap<>();
-        figures.put("model", model.toString());
-        figures.put("inputTriangles", mesh.faceCount());
-        figures.put("refinedTriangles", refinement.mesh().faceCount());
-        figures.put("components", refinement.componentCount());
-        Map<String, Object> repairs = new LinkedHashMap<>();
-        new TreeMap<>(loaded.repairs()).forEach((defect, count) -> repairs.put(defect.name().toLowerCase(Locale.ROOT), count));
-        figures.put("repairs", repairs);
-        figures.put("width", result.width());
-        figures.put("widestWidth", result.widest());
-        figures.put("thickness", result.thickness());
-        List<Object> strips = new ArrayList<>();
-        double totalLength = 0;
-        for (Wrap.Strip strip : result.strips()) {
-            Map<String, Object> one = new LinkedHashMap<>();
-            one.put("triangles", strip.triangles());
-            one.put("length", strip.sheet().length());
-            one.put("width", strip.sheet().width());
-            one.put("lengthOverWidth", strip.sheet().length() / strip.sheet().width());
-            one.put("faces", strip.sheet().faceCount());
-            strips.add(one);
-            totalLength += strip.sheet().length();
-        }
-        figures.put("strips", strips);
-        figures.put("length", totalLength);
-        Map<String, Object> folds = new LinkedHashMap<>();
-        folds.put("zigzagTurns", result.count(Wrap.Kind.ZIGZAG_TURN));
-        folds.put("turnGadgets", result.count(Wrap.Kind.TURN_GADGET));
-        folds.put("edgeCrossings", result.count(Wrap.Kind.EDGE_CROSSING));
-        folds.put("tucks", result.count(Wrap.Kind.TUCK));
-        figures.put("folds", folds);
-        figures.put("maxLayers", analysis.maxLayers());
-        figures.put("stackLayers", analysis.stackLevels());
-        figures.put("surfaceArea", analysis.surfaceArea());
-        figures.put("paperArea", analysis.paperArea());
-        figures.put("paperEfficiency", analysis.surfaceArea() / analysis.paperArea());
-        figures.put("coverage", analysis.coverage());
-        figures.put("paperOutside", analysis.outsidePaper());
-        figures.put("farthestFromSurface", analysis.farthest());
-        figures.put("isometryError", analysis.isometryError());
-        Map<String, Object> creases = new LinkedHashMap<>();
-        creases.put("insideFaces", analysis.creasesInside());
-        creases.put("insideFacesLength", analysis.creaseLengthInside());
-        creases.put("alongEdges", analysis.creasesOnEdges());
-        creases.put("alongEdgesLength", analysis.creaseLengthOnEdges());
-        figures.put("creases", creases);
-        return figures;
     }
 }

@@ -147,7 +147,8 @@ class CliTest {
         assertEquals(2, usage.code());
         assertTrue(usage.err().startsWith("ifold: Missing required option"), usage.err());
         assertEquals(2, run("refine", model.toString(), "-o", "x.off", "--bogus").code());
-        assertEquals(2, run().code());
+        // 'ifold' alone opens the window where there is a display (as here, under Xvfb); without
+        // one it is still this usage error: AppCommandTest runs it so.
         try (Stream<Path> files = Files.list(dir)) {
             assertEquals(1, files.count(), "nothing but the model was written");
         }

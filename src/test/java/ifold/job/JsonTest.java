@@ -1,4 +1,4 @@
-package ifold.cli;
+package ifold.job;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 

@@ -1,4 +1,4 @@
-package ifold.cli;
+package ifold.job;
 
 import com.fasterxml.jackson.core.JsonFactory;
 import com.fasterxml.jackson.core.JsonGenerator;
@@ -18,14 +18,14 @@ import java.util.Map;
  * as the same double (a whole number below 10^15 without its ".0"); one that is not finite, as
  * null. A number read from a report equals the number computed.
  */
-final class Json {
+public final class Json {
     private static final JsonFactory FACTORY = JsonFactory.builder().enable(StreamWriteFeature.USE_FAST_DOUBLE_WRITER).build();
 
     private Json() {
     }
 
     /** Writes {@code value} (a Map, List, Number, Boolean, CharSequence or null) as indented JSON. */
-    static String write(Object value) {
+    public static String write(Object value) {
         StringWriter text = new StringWriter();
         try (JsonGenerator json = FACTORY.createGenerator(text)) {
             DefaultPrettyPrinter pretty = new DefaultPrettyPrinter(Separators.createDefaultInstance()

@@ -1,0 +1,42 @@
+package ifold.cli;
+
+import ifold.ui.App;
+import ifold.ui.model.Settings;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+
+/** {@code ifold app [FILE]}, and {@code ifold} alone where there is a display: the desktop window. */
+@Command(name = "app", mixinStandardHelpOptions = true,
+        description = {"Opens the desktop window: menus, the parameters of the zig-zag, the turn and the wrap, a timeline "
+            + "to play and scrub through the folds, the report, and every export of the command line. It opens on FILE "
+            + "(a model to wrap, a fold script or a FOLD file to play), or on the zig-zag demo as it was left. "
+            + "'ifold' with no arguments does the same where there is a display."})
+final class AppCommand implements Callable<Integer> {
+    @Parameters(index = "0", arity = "0..1", paramLabel = "FILE", description = "an .off or .obj model, a fold script or a .fold file")
+    Path file;
+
+    @Option(names = "--settings", paramLabel = "FILE", hidden = true,
+            description = "keep the window's settings in FILE instead of ~/.config/ifold/settings.properties (for tests)")
+    Path settings;
+
+    @Override
+    public Integer call() throws InterruptedException {
+        if (file != null && !Files.isRegularFile(file)) {
+            throw UserError.usage(file + (Files.exists(file) ? ": not a regular file" : ": no such file"));
+        }
+        open(file, settings);
+        return 0;
+    }
+
+    /** Opens the window and waits for it to close; without a display, says so in one line. */
+    static void open(Path file, Path settings) throws InterruptedException {
+        if (!PaperOutputs.hasDisplay() || !App.canOpen()) {
+            throw new UserError("no display: the window needs one (the command line works without: try 'ifold --help')");
+        }
+        App.run(file, new Settings(settings != null ? settings : Settings.defaultFile()));
+    }
+}

@@ -1,0 +1,123 @@
+package ifold.job;
+
+import ifold.geom.Triangle;
+import ifold.mesh.HalfedgeMesh;
+import ifold.refine.HamiltonianRefinement;
+import ifold.scene.Animation;
+import ifold.scene.Geometry;
+import ifold.scene.Material;
+import ifold.scene.PaperView;
+import ifold.scene.PathView;
+import ifold.scene.Scene;
+import ifold.scene.SceneMesh;
+import ifold.scene.WrapView;
+import ifold.script.ScriptFolding;
+import ifold.wrap.Wrap;
+import ifold.wrap.WrapGeometry;
+import java.util.List;
+import org.joml.Quaterniond;
+
+/**
+ * The scenes that show each kind of result, and their animations: the command line's viewer and
+ * frames, and the window's view and exports, show the same. Each call fills a new scene, so
+ * that a view and an export running at once never share one.
+ */
+public final class Scenes {
+    private Scenes() {
+    }
+
+    /** The name of the geometry that shows the model (or the lone triangle) under the paper. */
+    public static final String MODEL = "model";
+
+    /** The name of the geometry that shows a model's refinement, coloured along its Hamiltonian path; hidden at first. */
+    public static final String REFINEMENT = "refinement";
+
+    /** A soft grey-blue: the white paper stands out on it, and the triangle's colour is darker still. */
+    public static final int BACKGROUND = 0xFFD3DAE2;
+
+    /** The lone triangle, solid and outlined in green, and the strip laid fold by fold over it, then turned round. */
+    public static WrapView.Playback zigzag(Scene scene, Triangle shape, Wrap.Result result, List<WrapGeometry> geometries) {
+        scene.root().attach(solid(shape));
+        scene.root().attach(outline(shape));
+        return paper(scene, result, geometries);
+    }
+
+    /**
+     * The stages of the seed's Figure 11 re-made from a lone triangle's playback: the first
+     * turn, every pass laid, the excess tucked under, the underside.
+     */
+    public static double[] figure11Stages(WrapView.Playback playback, Wrap.Result result) {
+        int laid = result.count(Wrap.Kind.ZIGZAG_TURN) + result.count(Wrap.Kind.OVERLAP);
+        return new double[] {playback.positionAfter(Math.min(2, laid)), playback.positionAfter(laid),
+            playback.positionAfter(result.steps().size()), playback.halfTurn()};
+    }
+
+    /** The turn gadget's strip folded on an empty table. */
+    public static WrapView.Playback turn(Scene scene, Wrap.Result result, List<WrapGeometry> geometries) {
+        return paper(scene, result, geometries);
+    }
+
+    /** The model, solid, and the strips laid over it along the path; then a turn around it. */
+    public static WrapView.Playback wrap(Scene scene, HalfedgeMesh mesh, Wrap.Result result, List<WrapGeometry> geometries) {
+        Geometry solid = new Geometry(MODEL, SceneMesh.of(mesh), new Material(WrapView.MODEL, 0xFF4A5460, false, false));
+        scene.root().attach(solid);
+        return WrapView.play(scene, result, geometries);
+    }
+
+    /**
+     * Adds the refinement the wrap followed, its triangles lighter to darker along the path,
+     * spanning-tree edges in green (as {@code ifold view --path} shows it), hidden: shown
+     * instead of the model, it says which way the strip goes.
+     */
+    public static Geometry refinement(Scene scene, HamiltonianRefinement.Result refinement) {
+        boolean dense = 5L * refinement.mesh().faceCount() > 125_000; // ViewCommand's threshold: edges too fine to tell apart
+        Geometry refined = new Geometry(REFINEMENT, PathView.mesh(refinement, PathView.Colors.DARKNESS, dense), Material.FACE_COLORS);
+        refined.setVisible(false);
+        scene.root().attach(refined);
+        return refined;
+    }
+
+    /** A fold script's paper, folding up, the camera framing it as it stands. */
+    public static Animation script(Scene scene, ScriptFolding.Result result, WrapGeometry folded) {
+        Geometry geometry = new Geometry("paper", PaperView.mesh(folded, result.sheet()), PaperView.MATERIAL);
+        scene.root().attach(geometry);
+        scene.camera().setOrientation(new Quaterniond().rotateX(-0.75).rotateZ(-0.35));
+        Animation animation = PaperView.folding(geometry, result, folded, scene.camera());
+        animation.apply(0);
+        return animation;
+    }
+
+    private static WrapView.Playback paper(Scene scene, Wrap.Result result, List<WrapGeometry> geometries) {
+        // White paper on a white background would not be seen where it leaves the triangle.
+        scene.setBackground(BACKGROUND);
+        return WrapView.play(scene, result, geometries);
+    }
+
+    /**
+     * The triangle itself, in the wrap's quiet model colour, seen from its front only: from
+     * behind, the paper tucked under it shows through.
+     */
+    private static Geometry solid(Triangle triangle) {
+        SceneMesh mesh = new SceneMesh(corners(triangle), new int[] {0, 1, 2}, new int[] {WrapView.MODEL}, new int[0], new int[0]);
+        Geometry solid = new Geometry(MODEL, mesh, new Material(WrapView.MODEL, WrapView.MODEL, false, false));
+        solid.setClosed(true);
+        return solid;
+    }
+
+    /** The triangle's edges, drawn in green: the paper must cover them and end inside them. */
+    private static Geometry outline(Triangle triangle) {
+        int green = 0xFF1E8C3A;
+        SceneMesh mesh = new SceneMesh(corners(triangle), new int[0], new int[0], new int[] {0, 1, 1, 2, 2, 0}, new int[] {green, green, green});
+        return new Geometry("triangle", mesh, new Material(green, green, false, true));
+    }
+
+    private static double[] corners(Triangle triangle) {
+        double[] positions = new double[9];
+        for (int i = 0; i < 3; i++) {
+            positions[3 * i] = triangle.corner(i).x();
+            positions[3 * i + 1] = triangle.corner(i).y();
+            positions[3 * i + 2] = triangle.corner(i).z();
+        }
+        return positions;
+    }
+}

@@ -1,0 +1,764 @@
+package ifold.ui;
+
+import ifold.job.Scenes;
+import ifold.render.FrameExport;
+import ifold.ui.model.Exports;
+import ifold.ui.model.Job;
+import ifold.ui.model.Plan;
+import ifold.ui.model.Planning;
+import ifold.ui.model.Problem;
+import ifold.ui.model.Settings;
+import ifold.ui.model.Timeline;
+import ifold.ui.model.Worker;
+import java.awt.BorderLayout;
+import java.awt.Dimension;
+import java.awt.FlowLayout;
+import java.awt.GridLayout;
+import java.awt.Toolkit;
+import java.awt.event.ActionEvent;
+import java.awt.event.InputEvent;
+import java.awt.event.KeyEvent;
+import java.io.File;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.function.Consumer;
+import javax.swing.AbstractAction;
+import javax.swing.BorderFactory;
+import javax.swing.JButton;
+import javax.swing.JCheckBox;
+import javax.swing.JCheckBoxMenuItem;
+import javax.swing.JComboBox;
+import javax.swing.JComponent;
+import javax.swing.JFileChooser;
+import javax.swing.JFrame;
+import javax.swing.JLabel;
+import javax.swing.JMenu;
+import javax.swing.JMenuBar;
+import javax.swing.JMenuItem;
+import javax.swing.JOptionPane;
+import javax.swing.JPanel;
+import javax.swing.JProgressBar;
+import javax.swing.JScrollPane;
+import javax.swing.JSpinner;
+import javax.swing.JSplitPane;
+import javax.swing.KeyStroke;
+import javax.swing.SpinnerNumberModel;
+import javax.swing.SwingUtilities;
+import javax.swing.WindowConstants;
+import javax.swing.filechooser.FileNameExtensionFilter;
+
+/**
+ * The main window: menus, the parameters on the left, the 3D view in the middle, the report
+ * and the folds on the right, the timeline below, and a status bar with progress and Cancel.
+ * Everything here runs on the event thread; planning and exports run on two {@link Worker}s,
+ * whose reports come back to it.
+ */
+final class MainWindow extends JFrame {
+    private static final long serialVersionUID = 1L;
+
+    private final transient Settings settings;
+    private final transient Worker planner = new Worker("ifold plan", SwingUtilities::invokeLater);
+    private final transient Worker exporter = new Worker("ifold export", SwingUtilities::invokeLater);
+    final SceneView view;
+    final ParameterPanel parameters;
+    final TimelinePanel timeline;
+    final ReportPanel report = new ReportPanel();
+    final JProgressBar progress = new JProgressBar();
+    final JButton cancel = new JButton("Cancel");
+    final JLabel message = new JLabel(" ");
+    private final JMenu recent = new JMenu("Open recent");
+    private final JCheckBoxMenuItem showModel = new JCheckBoxMenuItem("Model", true);
+    private final JCheckBoxMenuItem captions = new JCheckBoxMenuItem("Captions", true);
+    private final JCheckBoxMenuItem refinement = new JCheckBoxMenuItem("Refinement and Hamiltonian path", false);
+    private transient Plan plan;
+    /** Where the next export's settings start: the last ones used. */
+    private transient Exports.FrameSettings frameSettings = Exports.FrameSettings.DEFAULT;
+    /** Told of every message shown, for tests: a failure must be seen, not just logged. */
+    transient Consumer<String> messages = text -> { };
+
+    MainWindow(Settings settings) {
+        super("iFold");
+        this.settings = settings;
+        view = new SceneView(this::say);
+        parameters = new ParameterPanel(this::planLater, this::chooseModel, this::chooseScript);
+        timeline = new TimelinePanel(view);
+        setDefaultCloseOperation(WindowConstants.DISPOSE_ON_CLOSE);
+        setJMenuBar(menus());
+
+        JScrollPane left = new JScrollPane(parameters);
+        left.setBorder(BorderFactory.createEmptyBorder());
+        left.setPreferredSize(new Dimension(320, 400));
+        left.setHorizontalScrollBarPolicy(JScrollPane.HORIZONTAL_SCROLLBAR_NEVER);
+        left.setMinimumSize(new Dimension(280, 200)); // the split panes share out what is left, never the parameters' room
+        JScrollPane figures = new JScrollPane(report);
+        figures.setBorder(BorderFactory.createTitledBorder("Report"));
+        JScrollPane foldList = new JScrollPane(timeline.folds);
+        foldList.setBorder(BorderFactory.createTitledBorder("Folds"));
+        JSplitPane right = new JSplitPane(JSplitPane.VERTICAL_SPLIT, figures, foldList);
+        right.setResizeWeight(0.5);
+        right.setPreferredSize(new Dimension(330, 400));
+        right.setMinimumSize(new Dimension(260, 200));
+        JPanel centre = new JPanel(new BorderLayout());
+        centre.add(view, BorderLayout.CENTER);
+        centre.add(timeline, BorderLayout.SOUTH);
+        JSplitPane main = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, left,
+                new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, centre, right) {
+                    private static final long serialVersionUID = 1L;
+
+                    {
+                        setResizeWeight(1);
+                    }
+                });
+        add(main, BorderLayout.CENTER);
+
+        JPanel status = new JPanel(new BorderLayout(8, 0));
+        status.setBorder(BorderFactory.createEmptyBorder(3, 8, 3, 8));
+        message.setToolTipText("what iFold is doing, or why it could not");
+        status.add(message, BorderLayout.CENTER);
+        JPanel work = new JPanel(new FlowLayout(FlowLayout.RIGHT, 6, 0));
+        progress.setPreferredSize(new Dimension(180, progress.getPreferredSize().height));
+        progress.setVisible(false);
+        cancel.setVisible(false);
+        cancel.addActionListener(e -> cancelWork());
+        work.add(progress);
+        work.add(cancel);
+        status.add(work, BorderLayout.EAST);
+        add(status, BorderLayout.SOUTH);
+
+        keys();
+        int width = settings.getInt("window.width", 1360);
+        int height = settings.getInt("window.height", 860);
+        Dimension screen = Toolkit.getDefaultToolkit().getScreenSize();
+        setSize(Math.min(width, screen.width), Math.min(height, screen.height));
+        setMinimumSize(new Dimension(900, 600));
+        setLocationRelativeTo(null);
+        int x = settings.getInt("window.x", Integer.MIN_VALUE);
+        int y = settings.getInt("window.y", Integer.MIN_VALUE);
+        if (x != Integer.MIN_VALUE && y != Integer.MIN_VALUE && x >= 0 && y >= 0 && x < screen.width - 100 && y < screen.height - 100) {
+            setLocation(x, y); // where it was left, if that is still on the screen
+        }
+        refreshRecent();
+        view.setPaperColours(settings.getInt("paper.top", 0), settings.getInt("paper.bottom", 0));
+    }
+
+    /** Closes the window: the work under way is cancelled (an export writes nothing), the settings are saved first. */
+    @Override
+    public void dispose() {
+        if (isDisplayable()) {
+            planner.cancel();
+            exporter.cancel();
+            view.dispose();
+            saveSettings();
+        }
+        super.dispose();
+    }
+
+    // ---- Menus and keys ----
+
+    private JMenuBar menus() {
+        JMenuBar bar = new JMenuBar();
+        int ctrl = Toolkit.getDefaultToolkit().getMenuShortcutKeyMaskEx();
+        int shift = InputEvent.SHIFT_DOWN_MASK;
+
+        JMenu file = new JMenu("File");
+        file.setMnemonic(KeyEvent.VK_F);
+        file.add(item("Open model (OFF, OBJ)...", KeyEvent.VK_O, ctrl, this::chooseModel));
+        file.add(item("Open fold script or FOLD...", KeyEvent.VK_O, ctrl | shift, this::chooseScript));
+        file.add(recent);
+        file.addSeparator();
+        file.add(item("Export frames...", KeyEvent.VK_F, ctrl | shift, () -> exportFramesAsk()));
+        file.add(item("Export movie (MP4, GIF)...", KeyEvent.VK_M, ctrl, () -> exportMovieAsk()));
+        file.add(item("Export OBJ...", KeyEvent.VK_E, ctrl, () -> exportFileAsk("OBJ", "obj")));
+        file.add(item("Export FOLD...", KeyEvent.VK_E, ctrl | shift, () -> exportFileAsk("FOLD", "fold")));
+        file.add(item("Export report (JSON)...", KeyEvent.VK_J, ctrl, () -> exportFileAsk("report", "json")));
+        file.add(item("Export figure (PNG)...", KeyEvent.VK_G, ctrl, () -> exportFileAsk("figure", "png")));
+        file.addSeparator();
+        file.add(item("Quit", KeyEvent.VK_Q, ctrl, this::dispose));
+        bar.add(file);
+
+        JMenu show = new JMenu("View");
+        show.setMnemonic(KeyEvent.VK_V);
+        showModel.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_M, ctrl | shift));
+        showModel.addActionListener(e -> showSurface());
+        show.add(showModel);
+        refinement.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_H, ctrl | shift));
+        refinement.setToolTipText("a wrap's model refined, lighter to darker along the path the strip follows, tree edges in green");
+        refinement.addActionListener(e -> showSurface());
+        show.add(refinement);
+        captions.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_K, ctrl));
+        captions.setToolTipText("the status line in the view, and the caption of exported frames and movies");
+        captions.addActionListener(e -> view.setShowStatus(captions.isSelected()));
+        show.add(captions);
+        show.add(item("Paper colours...", KeyEvent.VK_L, ctrl, this::choosePaperColours));
+        show.addSeparator();
+        show.add(item("Reset camera", KeyEvent.VK_0, ctrl, view::resetCamera));
+        show.add(item("Underside", KeyEvent.VK_U, ctrl, view::underside));
+        bar.add(show);
+
+        JMenu fold = new JMenu("Fold");
+        fold.setMnemonic(KeyEvent.VK_O);
+        // Each job as its fields were left: switching back and forth loses nothing.
+        fold.add(item("Zig-zag a triangle", KeyEvent.VK_1, ctrl, () -> parameters.show(parameters.zigzag())));
+        fold.add(item("Turn gadget", KeyEvent.VK_2, ctrl, () -> parameters.show(parameters.turn())));
+        fold.add(item("Wrap the model", KeyEvent.VK_3, ctrl, this::wrapModel));
+        fold.add(item("Play a script", KeyEvent.VK_4, ctrl, this::playScript));
+        fold.addSeparator();
+        fold.add(item("Play / pause", KeyEvent.VK_P, ctrl, timeline::togglePlaying));
+        fold.add(item("Previous fold", KeyEvent.VK_OPEN_BRACKET, ctrl, () -> timeline.step(-1)));
+        fold.add(item("Next fold", KeyEvent.VK_CLOSE_BRACKET, ctrl, () -> timeline.step(1)));
+        fold.add(item("Back to the start", KeyEvent.VK_HOME, ctrl, timeline::restart));
+        bar.add(fold);
+
+        JMenu help = new JMenu("Help");
+        help.setMnemonic(KeyEvent.VK_H);
+        help.add(item("Keys", KeyEvent.VK_F1, 0, this::showKeys));
+        help.add(item("About iFold", 0, 0, this::showAbout));
+        bar.add(help);
+        return bar;
+    }
+
+    private static JMenuItem item(String name, int key, int modifiers, Runnable action) {
+        JMenuItem item = new JMenuItem(name);
+        if (key != 0) {
+            item.setAccelerator(KeyStroke.getKeyStroke(key, modifiers));
+        }
+        item.addActionListener(e -> action.run());
+        return item;
+    }
+
+    /** The viewer's keys, where the view has the focus (a click gives it): typing in a field stays typing. */
+    private void keys() {
+        bind("SPACE", timeline::togglePlaying);
+        bind("LEFT", () -> timeline.step(-1));
+        bind("RIGHT", () -> timeline.step(1));
+        bind("HOME", timeline::restart);
+        bind("R", view::resetCamera);
+        bind("U", view::underside);
+        bind("H", () -> view.setShowHelp(!view.isShowingHelp()));
+    }
+
+    private void bind(String key, Runnable action) {
+        view.getInputMap(JComponent.WHEN_FOCUSED).put(KeyStroke.getKeyStroke(key), key);
+        view.getActionMap().put(key, new AbstractAction() {
+            private static final long serialVersionUID = 1L;
+
+            @Override
+            public void actionPerformed(ActionEvent e) {
+                action.run();
+            }
+        });
+    }
+
+    /** The model, or its refinement with the path in its place (they lie on the same surface), or neither. */
+    private void showSurface() {
+        view.setVisible(Scenes.MODEL, showModel.isSelected() && !refinement.isSelected());
+        view.setVisible(Scenes.REFINEMENT, showModel.isSelected() && refinement.isSelected());
+    }
+
+    /** Asks the paper's top and bottom colours; "as planned" keeps the plan's own (white, with grey caps; blue-grey below). */
+    private void choosePaperColours() {
+        int top = settings.getInt("paper.top", 0);
+        int bottom = settings.getInt("paper.bottom", 0);
+        java.awt.Color chosenTop = javax.swing.JColorChooser.showDialog(this, "The paper's top side",
+                new java.awt.Color(top == 0 ? 0xF4F1EA : top));
+        if (chosenTop == null) {
+            return;
+        }
+        java.awt.Color chosenBottom = javax.swing.JColorChooser.showDialog(this, "The paper's bottom side",
+                new java.awt.Color(bottom == 0 ? 0x8FAACB : bottom));
+        if (chosenBottom == null) {
+            return;
+        }
+        setPaperColours(chosenTop.getRGB(), chosenBottom.getRGB());
+    }
+
+    /** Colours the paper, top and bottom (0xAARRGGBB; 0 keeps the plan's own), and remembers it. */
+    void setPaperColours(int top, int bottom) {
+        settings.putInt("paper.top", top);
+        settings.putInt("paper.bottom", bottom);
+        view.setPaperColours(top, bottom);
+    }
+
+    private void showKeys() {
+        StringBuilder text = new StringBuilder("In the view (click it first):\n");
+        for (String line : SceneView.HELP) {
+            text.append("  ").append(line).append('\n');
+        }
+        text.append("\nEverywhere: the shortcuts shown in the menus.");
+        JOptionPane.showMessageDialog(this, text.toString(), "Keys", JOptionPane.INFORMATION_MESSAGE);
+    }
+
+    private void showAbout() {
+        JOptionPane.showMessageDialog(this, "iFold " + App.version() + "\n\nWraps polyhedra in a strip of paper, the zig-zag way\n"
+                + "(Demaine, Demaine and Mitchell), folded with the paper's thickness.", "About iFold", JOptionPane.INFORMATION_MESSAGE);
+    }
+
+    // ---- Jobs ----
+
+    /** Opens a file: a model to wrap, or a fold script or FOLD file to play (as {@code ifold app FILE}). */
+    void open(Path file) {
+        String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
+        Job job = name.endsWith(".off") || name.endsWith(".obj") ? new Job.WrapModel(file, parameters.wrapWidth.getText(),
+                parameters.wrapThickness.getText(), parameters.wrapMaxFaces.getText()) : new Job.Script(file);
+        settings.addRecent(file);
+        Path folder = file.toAbsolutePath().getParent();
+        if (folder != null) {
+            settings.put("folder", folder.toString());
+        }
+        refreshRecent();
+        parameters.show(job);
+    }
+
+    private void wrapModel() {
+        if (parameters.job() instanceof Job.WrapModel) {
+            return;
+        }
+        Job last = lastModel();
+        if (last == null) {
+            chooseModel();
+        } else {
+            parameters.show(last);
+        }
+    }
+
+    private Job lastModel() {
+        for (Path file : settings.recent()) {
+            String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
+            if ((name.endsWith(".off") || name.endsWith(".obj")) && Files.isRegularFile(file)) {
+                return new Job.WrapModel(file, parameters.wrapWidth.getText(), parameters.wrapThickness.getText(),
+                        parameters.wrapMaxFaces.getText());
+            }
+        }
+        return null;
+    }
+
+    private void playScript() {
+        for (Path file : settings.recent()) {
+            String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
+            if (!name.endsWith(".off") && !name.endsWith(".obj") && Files.isRegularFile(file)) {
+                parameters.show(new Job.Script(file));
+                return;
+            }
+        }
+        chooseScript();
+    }
+
+    private void chooseModel() {
+        Path file = choose("Open a model", false, new FileNameExtensionFilter("Models (OFF, OBJ)", "off", "obj"));
+        if (file != null) {
+            open(file);
+        }
+    }
+
+    private void chooseScript() {
+        Path file = choose("Open a fold script or FOLD file", false, new FileNameExtensionFilter("Fold scripts and FOLD files", "fold", "txt"));
+        if (file != null) {
+            open(file);
+        }
+    }
+
+    private void refreshRecent() {
+        recent.removeAll();
+        List<Path> files = settings.recent();
+        for (int i = 0; i < files.size(); i++) {
+            Path file = files.get(i);
+            JMenuItem item = new JMenuItem((i + 1) + "  " + file.getFileName());
+            item.setToolTipText(file.toString());
+            if (i < 9) {
+                item.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_1 + i, InputEvent.ALT_DOWN_MASK));
+            }
+            item.addActionListener(e -> open(file));
+            recent.add(item);
+        }
+        recent.setEnabled(!files.isEmpty());
+    }
+
+    /** The parameters changed: check them at once (marking the fields), and plan if they pass. */
+    private void planLater(Job job) {
+        rememberParameters(job);
+        List<Problem> problems = Planning.check(job);
+        parameters.mark(problems);
+        if (!problems.isEmpty()) {
+            planner.cancel();
+            workEnded();
+            say("fix the marked values to fold again");
+            return;
+        }
+        plan(job);
+    }
+
+    private void plan(Job job) {
+        workStarted("planning");
+        planner.submit(progress -> Planning.plan(job, progress), new Worker.Listener<Plan>() {
+            @Override
+            public void stage(String what) {
+                say(what + "...");
+            }
+
+            @Override
+            public void done(int done, int total) {
+                MainWindow.this.done(done, total);
+            }
+
+            @Override
+            public void succeeded(Plan next) {
+                workEnded();
+                show(next);
+            }
+
+            @Override
+            public void failed(Problem problem) {
+                workEnded();
+                parameters.mark(List.of(problem));
+                say(problem.message());
+            }
+        });
+    }
+
+    /** Shows a new plan: at the same point of its animation as the one before if it is the same kind of job, else from the start, playing. */
+    private void show(Plan next) {
+        Plan before = plan;
+        Timeline old = timeline.timeline();
+        boolean sameKind = before != null && before.job().getClass() == next.job().getClass()
+                && !(next.job() instanceof Job.WrapModel w && !w.model().equals(((Job.WrapModel) before.job()).model()));
+        double fraction = sameKind && old != null && old.end() > 0 ? old.position() / old.end() : 0;
+        plan = next;
+        Timeline fresh = Timeline.of(next);
+        fresh.seek(fraction * fresh.end());
+        view.show(next.shown(), fresh.position(), next.title());
+        showSurface();
+        timeline.setTimeline(fresh, !sameKind || (old != null && old.isPlaying()));
+        report.show(next.figures());
+        setTitle("iFold - " + next.title());
+        say(next.title());
+    }
+
+    Plan plan() {
+        return plan;
+    }
+
+    // ---- Exports ----
+
+    private boolean needPlan() {
+        if (plan == null) {
+            say("nothing to export yet: the fold is still being planned");
+            return false;
+        }
+        return true;
+    }
+
+    private void exportFileAsk(String what, String extension) {
+        if (!needPlan()) {
+            return;
+        }
+        Path file = choose("Export " + what, true, new FileNameExtensionFilter(what + " (." + extension + ")", extension));
+        if (file == null) {
+            return;
+        }
+        if (!file.getFileName().toString().toLowerCase(Locale.ROOT).endsWith("." + extension)) {
+            file = file.resolveSibling(file.getFileName() + "." + extension);
+        }
+        switch (extension) {
+            case "obj" -> exportObj(file);
+            case "fold" -> exportFold(file);
+            case "png" -> exportFigure(file);
+            default -> exportReport(file);
+        }
+    }
+
+    void exportObj(Path file) {
+        Plan shown = plan;
+        export("OBJ", file, progress -> {
+            Exports.obj(shown, file, progress);
+            return "wrote " + file;
+        });
+    }
+
+    void exportFold(Path file) {
+        Plan shown = plan;
+        export("FOLD", file, progress -> {
+            Exports.fold(shown, file, progress);
+            return "wrote " + file;
+        });
+    }
+
+    void exportFigure(Path file) {
+        Plan shown = plan;
+        export("figure", file, progress -> {
+            Exports.figure(shown, file, progress);
+            return "wrote " + file;
+        });
+    }
+
+    void exportReport(Path file) {
+        Plan shown = plan;
+        export("report", file, progress -> {
+            Exports.report(shown, file, progress);
+            return "wrote " + file;
+        });
+    }
+
+    private void exportMovieAsk() {
+        if (!needPlan()) {
+            return;
+        }
+        Exports.FrameSettings chosen = askFrameSettings("Export movie");
+        if (chosen == null) {
+            return;
+        }
+        Path file = choose("Export movie", true, new FileNameExtensionFilter("Movies (MP4, GIF)", "mp4", "gif"));
+        if (file == null) {
+            return;
+        }
+        String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
+        if (!name.endsWith(".mp4") && !name.endsWith(".gif")) {
+            file = file.resolveSibling(file.getFileName() + ".mp4");
+        }
+        exportMovie(file, chosen);
+    }
+
+    private void exportFramesAsk() {
+        if (!needPlan()) {
+            return;
+        }
+        Exports.FrameSettings chosen = askFrameSettings("Export frames");
+        if (chosen == null) {
+            return;
+        }
+        Path folder = choose("Export frames into a folder", true, null);
+        if (folder != null) {
+            exportFrames(folder, chosen);
+        }
+    }
+
+    void exportMovie(Path file, Exports.FrameSettings chosen) {
+        Plan shown = plan;
+        export("movie", file, progress -> {
+            FrameExport.Result result = Exports.movie(shown, file, chosen, progress);
+            return String.format(Locale.ROOT, "wrote %s: %d frames of %dx%d in %.1f s", file, result.frames(), chosen.width(),
+                    chosen.height(), result.seconds());
+        });
+    }
+
+    void exportFrames(Path folder, Exports.FrameSettings chosen) {
+        Plan shown = plan;
+        export("frames", folder, progress -> {
+            FrameExport.Result result = Exports.frames(shown, folder, chosen, progress);
+            return String.format(Locale.ROOT, "wrote %d frames of %dx%d to %s in %.1f s", result.frames(), chosen.width(),
+                    chosen.height(), folder, result.seconds());
+        });
+    }
+
+    private void export(String what, Path file, Worker.Task<String> task) {
+        if (plan == null) {
+            say("nothing to export yet");
+            return;
+        }
+        workStarted("exporting " + what);
+        exporter.submit(task, new Worker.Listener<String>() {
+            @Override
+            public void stage(String text) {
+                say(text + "...");
+            }
+
+            @Override
+            public void done(int done, int total) {
+                MainWindow.this.done(done, total);
+            }
+
+            @Override
+            public void succeeded(String summary) {
+                workEnded();
+                Path folder = file.toAbsolutePath().getParent();
+                if (folder != null) {
+                    settings.put("folder", folder.toString());
+                }
+                say(summary);
+            }
+
+            @Override
+            public void failed(Problem problem) {
+                workEnded();
+                say("cannot export the " + what + ": " + problem.message());
+                JOptionPane.showMessageDialog(MainWindow.this, problem.message(), "Export failed", JOptionPane.ERROR_MESSAGE);
+            }
+        });
+    }
+
+    /** Asks the size, frames a second, length and captions of frames or a movie; null if cancelled. */
+    private Exports.FrameSettings askFrameSettings(String title) {
+        String[] sizes = {"640x360", "960x540", "1280x720", "1920x1080"};
+        JComboBox<String> size = new JComboBox<>(sizes);
+        size.setEditable(true);
+        size.setSelectedItem(frameSettings.width() + "x" + frameSettings.height());
+        JSpinner fps = new JSpinner(new SpinnerNumberModel(frameSettings.fps(), 1, 240, 1));
+        double length = plan == null ? frameSettings.seconds() : Math.min(3600, plan.seconds() / timeline.timeline().speed());
+        JSpinner seconds = new JSpinner(new SpinnerNumberModel(length, 0.1, 3600, 1));
+        JCheckBox withCaptions = new JCheckBox("captions naming each fold", captions.isSelected());
+        JPanel form = new JPanel(new GridLayout(0, 2, 6, 6));
+        form.add(new JLabel("Size (width x height)"));
+        form.add(size);
+        form.add(new JLabel("Frames a second"));
+        form.add(fps);
+        form.add(new JLabel("Seconds"));
+        form.add(seconds);
+        form.add(new JLabel(""));
+        form.add(withCaptions);
+        while (true) {
+            if (JOptionPane.showConfirmDialog(this, form, title, JOptionPane.OK_CANCEL_OPTION, JOptionPane.PLAIN_MESSAGE)
+                    != JOptionPane.OK_OPTION) {
+                return null;
+            }
+            String[] wh = String.valueOf(size.getSelectedItem()).strip().split("x");
+            try {
+                Exports.FrameSettings chosen = new Exports.FrameSettings(Integer.parseInt(wh[0].strip()), Integer.parseInt(wh[1].strip()),
+                        (Integer) fps.getValue(), ((Number) seconds.getValue()).doubleValue(), withCaptions.isSelected());
+                List<Problem> problems = chosen.check(null);
+                if (problems.isEmpty()) {
+                    frameSettings = chosen;
+                    return chosen;
+                }
+                JOptionPane.showMessageDialog(this, problems.get(0).field() + ": " + problems.get(0).message(), title,
+                        JOptionPane.WARNING_MESSAGE);
+            } catch (NumberFormatException | ArrayIndexOutOfBoundsException e) {
+                JOptionPane.showMessageDialog(this, "size: '" + size.getSelectedItem() + "' is not WIDTHxHEIGHT, e.g. 1280x720", title,
+                        JOptionPane.WARNING_MESSAGE);
+            }
+        }
+    }
+
+    private Path choose(String title, boolean save, FileNameExtensionFilter filter) {
+        JFileChooser chooser = new JFileChooser(settings.get("folder", System.getProperty("user.dir")));
+        chooser.setDialogTitle(title);
+        if (filter != null) {
+            chooser.setFileFilter(filter);
+        } else {
+            chooser.setFileSelectionMode(JFileChooser.DIRECTORIES_ONLY);
+        }
+        int answer = save ? chooser.showSaveDialog(this) : chooser.showOpenDialog(this);
+        File chosen = chooser.getSelectedFile();
+        if (answer != JFileChooser.APPROVE_OPTION || chosen == null) {
+            return null;
+        }
+        Path folder = chosen.toPath().toAbsolutePath().getParent();
+        if (folder != null) {
+            settings.put("folder", folder.toString());
+        }
+        return chosen.toPath();
+    }
+
+    // ---- Work in progress ----
+
+    private void workStarted(String what) {
+        progress.setIndeterminate(true);
+        progress.setVisible(true);
+        progress.setString(what);
+        cancel.setVisible(true);
+        say(what + "...");
+    }
+
+    private void done(int done, int total) {
+        progress.setIndeterminate(false);
+        progress.setMaximum(total);
+        progress.setValue(done);
+        progress.setStringPainted(true);
+        progress.setString(done + " / " + total);
+    }
+
+    private void workEnded() {
+        if (!planner.isBusy() && !exporter.isBusy()) {
+            progress.setVisible(false);
+            progress.setStringPainted(false);
+            cancel.setVisible(false);
+        }
+    }
+
+    /** Cancel: the export if one runs (its file is not written), else the planning (the last plan stays). */
+    void cancelWork() {
+        if (exporter.cancel()) {
+            say("export cancelled: nothing written");
+        } else if (planner.cancel()) {
+            say("planning cancelled" + (plan == null ? "" : ": still showing " + plan.title()));
+        }
+        workEnded();
+    }
+
+    boolean isWorking() {
+        return planner.isBusy() || exporter.isBusy();
+    }
+
+    /** Waits for the export's thread to end, cancelled or not: for tests. */
+    boolean awaitExport(long millis) throws InterruptedException {
+        return exporter.await(millis);
+    }
+
+    void say(String text) {
+        message.setText(text);
+        message.setToolTipText(text);
+        messages.accept(text);
+    }
+
+    // ---- Settings ----
+
+    private void rememberParameters(Job job) {
+        if (job instanceof Job.ZigZag z) {
+            settings.put("zigzag.triangle", z.triangle());
+            settings.putInt("zigzag.start", z.start());
+            settings.putInt("zigzag.end", z.end());
+            settings.putInt("zigzag.enterFrom", z.enterFrom());
+            settings.put("zigzag.width", z.width());
+            settings.put("zigzag.thickness", z.thickness());
+        } else if (job instanceof Job.Turn t) {
+            settings.put("turn.angle", t.angle());
+            settings.put("turn.overhang", t.overhang());
+            settings.put("turn.width", t.width());
+            settings.put("turn.thickness", t.thickness());
+        } else if (job instanceof Job.WrapModel w) {
+            settings.put("wrap.width", w.width());
+            settings.put("wrap.thickness", w.thickness());
+            settings.put("wrap.maxFaces", w.maxFaces());
+        }
+        settings.put("job", job instanceof Job.ZigZag ? "zigzag" : job instanceof Job.Turn ? "turn" : job instanceof Job.WrapModel
+                ? "wrap" : "script");
+    }
+
+    /** The zig-zag as it was left last time, or the demo. */
+    Job.ZigZag rememberedZigZag() {
+        Job.ZigZag demo = Job.ZigZag.DEMO;
+        return new Job.ZigZag(settings.get("zigzag.triangle", demo.triangle()), clampCorner(settings.getInt("zigzag.start", demo.start()), 0),
+                clampCorner(settings.getInt("zigzag.end", demo.end()), 0), Math.max(-1, Math.min(2, settings.getInt("zigzag.enterFrom", -1))),
+                settings.get("zigzag.width", ""), settings.get("zigzag.thickness", ""));
+    }
+
+    /** Sets the fields of the turn and the wrap as they were left, without planning them. */
+    void restoreOtherParameters() {
+        Job.Turn demo = Job.Turn.DEMO;
+        parameters.angle.setText(settings.get("turn.angle", demo.angle()));
+        parameters.overhang.setText(settings.get("turn.overhang", demo.overhang()));
+        parameters.turnWidth.setText(settings.get("turn.width", demo.width()));
+        parameters.turnThickness.setText(settings.get("turn.thickness", ""));
+        parameters.wrapWidth.setText(settings.get("wrap.width", ""));
+        parameters.wrapThickness.setText(settings.get("wrap.thickness", ""));
+        parameters.wrapMaxFaces.setText(settings.get("wrap.maxFaces", ""));
+    }
+
+    private static int clampCorner(int corner, int fallback) {
+        return corner >= 0 && corner <= 2 ? corner : fallback;
+    }
+
+    private void saveSettings() {
+        settings.putInt("window.width", getWidth());
+        settings.putInt("window.height", getHeight());
+        settings.putInt("window.x", getX());
+        settings.putInt("window.y", getY());
+        try {
+            settings.save();
+        } catch (IOException e) {
+            // Settings are a convenience: the window closes all the same.
+            System.err.println("ifold: cannot save the settings to " + settings.file() + ": " + e.getMessage());
+        }
+    }
+}

@@ -1,0 +1,97 @@
+package ifold.ui;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import javax.swing.JTable;
+import javax.swing.table.AbstractTableModel;
+
+/**
+ * The figures of the current result as the {@code --report} JSON holds them, one row a value:
+ * a nested figure by its path ("folds.tucks", "strips.1.length"), a number as the shortest
+ * decimal that reads back as it (what the JSON writes).
+ */
+final class ReportPanel extends JTable {
+    private static final long serialVersionUID = 1L;
+
+    private final Rows rows = new Rows();
+
+    ReportPanel() {
+        setModel(rows);
+        setFillsViewportHeight(true);
+        javax.swing.ToolTipManager.sharedInstance().registerComponent(this);
+        getColumnModel().getColumn(0).setPreferredWidth(140);
+        getColumnModel().getColumn(1).setPreferredWidth(140);
+    }
+
+    /** A long value is cut in its cell: the whole of it under the mouse. */
+    @Override
+    public String getToolTipText(java.awt.event.MouseEvent e) {
+        int row = rowAtPoint(e.getPoint());
+        return row < 0 ? null : rows.getValueAt(row, 0) + " = " + rows.getValueAt(row, 1);
+    }
+
+    void show(Map<String, Object> figures) {
+        List<String[]> flat = new ArrayList<>();
+        if (figures != null) {
+            flatten("", figures, flat);
+        }
+        rows.set(flat);
+    }
+
+    /** The value shown for {@code key}, or null: for tests. */
+    String value(String key) {
+        for (String[] row : rows.rows) {
+            if (row[0].equals(key)) {
+                return row[1];
+            }
+        }
+        return null;
+    }
+
+    private static void flatten(String prefix, Object value, List<String[]> out) {
+        if (value instanceof Map<?, ?> map) {
+            for (Map.Entry<?, ?> entry : map.entrySet()) {
+                flatten(prefix.isEmpty() ? String.valueOf(entry.getKey()) : prefix + "." + entry.getKey(), entry.getValue(), out);
+            }
+        } else if (value instanceof List<?> list) {
+            for (int i = 0; i < list.size(); i++) {
+                flatten(prefix + "." + (i + 1), list.get(i), out);
+            }
+        } else if (value instanceof Double d) {
+            out.add(new String[] {prefix, d == Math.rint(d) && Math.abs(d) < 1e15 ? Long.toString(d.longValue()) : d.toString()});
+        } else {
+            out.add(new String[] {prefix, String.valueOf(value)});
+        }
+    }
+
+    private static final class Rows extends AbstractTableModel {
+        private static final long serialVersionUID = 1L;
+        private List<String[]> rows = List.of();
+
+        void set(List<String[]> next) {
+            rows = next;
+            fireTableDataChanged();
+        }
+
+        @Override
+        public int getRowCount() {
+            return rows.size();
+        }
+
+        @Override
+        public int getColumnCount() {
+            return 2;
+        }
+
+        @Override
+        public String getColumnName(int column) {
+            return column == 0 ? "figure" : "value";
+        }
+
+        @Override
+        public Object getValueAt(int row, int column) {
+            return rows.get(row)[column];
+        }
+    }
+}

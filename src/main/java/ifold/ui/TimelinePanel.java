@@ -1,0 +1,216 @@
+package ifold.ui;
+
+import ifold.ui.model.Fold;
+import ifold.ui.model.Timeline;
+import java.awt.BorderLayout;
+import java.awt.FlowLayout;
+import java.util.List;
+import javax.swing.AbstractListModel;
+import javax.swing.BorderFactory;
+import javax.swing.JButton;
+import javax.swing.JComboBox;
+import javax.swing.JLabel;
+import javax.swing.JList;
+import javax.swing.JPanel;
+import javax.swing.JSlider;
+import javax.swing.ListSelectionModel;
+import javax.swing.Timer;
+
+/**
+ * The timeline: play and pause, a fold back and forward, a slider over the whole animation
+ * (dragging shows each position at once), the speed; and the list of folds by name and kind,
+ * where choosing one shows it made. It drives the {@link Timeline} and tells the view.
+ */
+final class TimelinePanel extends JPanel {
+    private static final long serialVersionUID = 1L;
+    /** The slider's resolution: enough for a position per pixel of any screen. */
+    static final int TICKS = 100_000;
+
+    final JButton play = new JButton("Play");
+    final JButton back = new JButton("\u25C0 Fold");
+    final JButton forward = new JButton("Fold \u25B6");
+    final JSlider slider = new JSlider(0, TICKS, 0);
+    final JComboBox<String> speed = new JComboBox<>();
+    final JList<String> folds = new JList<>() {
+        private static final long serialVersionUID = 1L;
+
+        /** A long name is cut in the list: the whole of it under the mouse. */
+        @Override
+        public String getToolTipText(java.awt.event.MouseEvent e) {
+            int index = locationToIndex(e.getPoint());
+            return index < 0 ? null : getModel().getElementAt(index);
+        }
+    };
+    private final JLabel where = new JLabel(" ");
+    private final SceneView view;
+    private final Timer clock;
+    private Timeline timeline;
+    private long lastTick;
+    /** Set while the panel moves its own controls, so that they do not answer back. */
+    private boolean updating;
+
+    TimelinePanel(SceneView view) {
+        super(new BorderLayout(8, 0));
+        this.view = view;
+        setBorder(BorderFactory.createEmptyBorder(4, 8, 4, 8));
+        for (double s : Timeline.SPEEDS) {
+            speed.addItem(s + "\u00D7");
+        }
+        speed.setSelectedIndex(2);
+        speed.setToolTipText("speed");
+        back.setToolTipText("back one fold");
+        forward.setToolTipText("forward one fold");
+        slider.setToolTipText("drag through the folds");
+        JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
+        buttons.add(back);
+        buttons.add(play);
+        buttons.add(forward);
+        buttons.add(speed);
+        add(buttons, BorderLayout.WEST);
+        add(slider, BorderLayout.CENTER);
+        where.setBorder(BorderFactory.createEmptyBorder(0, 8, 0, 0));
+        add(where, BorderLayout.EAST);
+        folds.setSelectionMode(ListSelectionModel.SINGLE_SELECTION);
+        javax.swing.ToolTipManager.sharedInstance().registerComponent(folds);
+        folds.setPrototypeCellValue("pass 12 of 40: turn, 45° valley fold and more"); // a fixed height: 100,000 folds list at once
+        play.addActionListener(e -> togglePlaying());
+        back.addActionListener(e -> step(-1));
+        forward.addActionListener(e -> step(1));
+        slider.addChangeListener(e -> {
+            if (!updating && timeline != null) {
+                timeline.pause();
+                timeline.seek(timeline.end() * slider.getValue() / TICKS);
+                shown();
+            }
+        });
+        speed.addActionListener(e -> {
+            if (timeline != null) {
+                timeline.setSpeed(Timeline.SPEEDS[speed.getSelectedIndex()]);
+            }
+        });
+        folds.addListSelectionListener(e -> {
+            if (!updating && !e.getValueIsAdjusting() && timeline != null && folds.getSelectedIndex() >= 0) {
+                timeline.jumpTo(folds.getSelectedIndex());
+                shown();
+            }
+        });
+        clock = new Timer(33, e -> tick());
+        setEnabled(false);
+    }
+
+    /** Takes a new timeline (a new plan), at its position, playing if {@code playing}. */
+    void setTimeline(Timeline next, boolean playing) {
+        timeline = next;
+        timeline.setSpeed(Timeline.SPEEDS[speed.getSelectedIndex()]);
+        List<Fold> list = next.folds();
+        updating = true;
+        try {
+            folds.setModel(new AbstractListModel<>() {
+                private static final long serialVersionUID = 1L;
+
+                @Override
+                public int getSize() {
+                    return list.size();
+                }
+
+                @Override
+                public String getElementAt(int index) {
+                    Fold fold = list.get(index);
+                    return (index + 1) + ". " + fold.name() + "  [" + fold.kind() + "]";
+                }
+            });
+        } finally {
+            updating = false;
+        }
+        setEnabled(true);
+        if (playing && !timeline.isPlaying()) {
+            timeline.togglePlaying();
+        }
+        shown();
+    }
+
+    Timeline timeline() {
+        return timeline;
+    }
+
+    @Override
+    public void setEnabled(boolean enabled) {
+        super.setEnabled(enabled);
+        for (javax.swing.JComponent c : List.of(play, back, forward, slider, speed, folds)) {
+            c.setEnabled(enabled);
+        }
+    }
+
+    void togglePlaying() {
+        if (timeline != null) {
+            timeline.togglePlaying();
+            shown();
+        }
+    }
+
+    void step(int direction) {
+        if (timeline != null) {
+            timeline.stepFold(direction);
+            shown();
+        }
+    }
+
+    void restart() {
+        if (timeline != null) {
+            timeline.pause();
+            timeline.seek(0);
+            shown();
+        }
+    }
+
+    /** Moves to {@code position} as the slider would (for tests and keys). */
+    void seek(double position) {
+        if (timeline != null) {
+            timeline.pause();
+            timeline.seek(position);
+            shown();
+        }
+    }
+
+    private void tick() {
+        long now = System.nanoTime();
+        double elapsed = Math.min(0.25, (now - lastTick) * 1e-9); // a stall does not jump the animation ahead
+        lastTick = now;
+        if (timeline != null && timeline.advance(elapsed)) {
+            shown();
+        } else if (timeline == null || !timeline.isPlaying()) {
+            shown();
+        }
+    }
+
+    /** Brings the view and the controls to the timeline's state. */
+    private void shown() {
+        view.setPosition(timeline.position());
+        updating = true;
+        try {
+            if (!slider.getValueIsAdjusting()) {
+                slider.setValue((int) Math.round(timeline.end() == 0 ? 0 : TICKS * timeline.position() / timeline.end()));
+            }
+            int current = timeline.currentFold();
+            if (current != folds.getSelectedIndex()) {
+                if (current < 0) {
+                    folds.clearSelection();
+                } else {
+                    folds.setSelectedIndex(current);
+                    folds.ensureIndexIsVisible(current);
+                }
+            }
+        } finally {
+            updating = false;
+        }
+        int current = timeline.currentFold();
+        where.setText(String.format(java.util.Locale.ROOT, "fold %d of %d", current + 1, timeline.folds().size()));
+        play.setText(timeline.isPlaying() ? "Pause" : "Play");
+        if (timeline.isPlaying() && !clock.isRunning()) {
+            lastTick = System.nanoTime();
+            clock.start();
+        } else if (!timeline.isPlaying()) {
+            clock.stop();
+        }
+    }
+}

@@ -1,0 +1,195 @@
+package ifold.ui.model;
+
+import ifold.image.FrameSink;
+import ifold.image.FrameWriter;
+import ifold.image.GifWriter;
+import ifold.image.Mp4Writer;
+import ifold.io.AtomicFile;
+import ifold.job.Json;
+import ifold.render.FrameExport;
+import ifold.render.RenderUnavailableException;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * Writing a plan out, as the command line's output options do: frames, a movie, OBJ, FOLD, the
+ * report. Each is written whole or not at all: the writers work under temporary names and a
+ * frame export that does not finish takes back its frames, so a cancelled export (its
+ * progress's {@link Progress#check()} throws between frames) leaves no file behind.
+ */
+public final class Exports {
+    private Exports() {
+    }
+
+    /**
+     * How frames and movies are rendered, as {@code --size --fps --seconds --no-captions} say.
+     *
+     * @param seconds the movie's length
+     */
+    public record FrameSettings(int width, int height, int fps, double seconds, boolean captions) {
+        public static final FrameSettings DEFAULT = new FrameSettings(1280, 720, 30, 10, true);
+
+        /** The frames in all. */
+        public int frameCount() {
+            return Math.max(1, (int) Math.round(fps * seconds));
+        }
+
+        /** What is wrong with these settings for {@code movie} (null for frames only), as the command line says it. */
+        public List<Problem> check(Path movie) {
+            List<Problem> problems = new ArrayList<>();
+            if (width < 16 || height < 16 || width > 8192 || height > 8192) {
+                problems.add(new Problem("size", "each side must be between 16 and 8192 pixels, got " + width + "x" + height));
+            }
+            if (fps < 1 || fps > 240) {
+                problems.add(new Problem("fps", "must be between 1 and 240, got " + fps));
+            }
+            if (!(seconds > 0) || seconds > 3600) {
+                problems.add(new Problem("seconds", "must be more than 0 and at most 3600, got " + seconds));
+            }
+            if (movie != null) {
+                if (isGif(movie)) {
+                    if (fps > GifWriter.MAX_FPS) {
+                        problems.add(new Problem("fps", "a GIF keeps at most " + GifWriter.MAX_FPS + " frames a second, got " + fps
+                                + "; write an .mp4 for more"));
+                    }
+                } else if (!isMp4(movie)) {
+                    problems.add(new Problem("movie", "a movie is an .mp4 or a .gif, got " + movie.getFileName()));
+                } else if (width % 2 != 0 || height % 2 != 0) {
+                    problems.add(new Problem("size", "an MP4 needs an even width and height, got " + width + "x" + height));
+                } else if (!Mp4Writer.available()) {
+                    problems.add(new Problem("movie", "writing an .mp4 needs ffmpeg, which is not installed; or write a .gif"));
+                }
+            }
+            return problems;
+        }
+    }
+
+    static boolean isGif(Path movie) {
+        return movie.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".gif");
+    }
+
+    static boolean isMp4(Path movie) {
+        return movie.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".mp4");
+    }
+
+    /** Renders the plan into a movie (.mp4 through ffmpeg, or .gif), on a scene of its own. */
+    public static FrameExport.Result movie(Plan plan, Path movie, FrameSettings settings, Progress progress) throws JobFailure {
+        requireValid(settings.check(movie));
+        progress.stage("rendering " + movie.getFileName());
+        try (FrameSink sink = isGif(movie) ? new GifWriter(movie, settings.width(), settings.height(), settings.fps())
+                : new Mp4Writer(movie, settings.width(), settings.height(), settings.fps())) {
+            return render(plan, sink, settings, progress);
+        } catch (IOException e) {
+            throw new JobFailure("cannot write " + movie + ": " + e.getMessage());
+        }
+    }
+
+    /** Renders the plan into {@code folder}/frame_00000.png, ...; the folder is made if it is not there. */
+    public static FrameExport.Result frames(Plan plan, Path folder, FrameSettings settings, Progress progress) throws JobFailure {
+        requireValid(settings.check(null));
+        boolean made = false;
+        try {
+            if (!Files.isDirectory(folder)) {
+                Files.createDirectory(folder);
+                made = true;
+            }
+        } catch (IOException e) {
+            throw new JobFailure("cannot make the folder " + folder + ": " + e.getMessage());
+        }
+        progress.stage("rendering frames into " + folder.getFileName());
+        boolean finished = false;
+        try (FrameSink sink = new FrameWriter(folder)) {
+            FrameExport.Result result = render(plan, sink, settings, progress);
+            finished = true;
+            return result;
+        } catch (IOException e) {
+            throw new JobFailure("cannot write frames to " + folder + ": " + e.getMessage());
+        } finally {
+            if (made && !finished) {
+                try {
+                    Files.deleteIfExists(folder); // empty again: the writer took back its frames
+                } catch (IOException e) {
+                    // Something else was put there meanwhile: it stays.
+                }
+            }
+        }
+    }
+
+    private static FrameExport.Result render(Plan plan, FrameSink sink, FrameSettings settings, Progress progress)
+            throws IOException, JobFailure {
+        Plan.Shown shown = plan.newScene();
+        progress.check();
+        try {
+            // Unfinished, the sink is closed without finishing: its output is discarded.
+            return FrameExport.export(shown.scene(), shown.animation(), sink, settings.width(), settings.height(),
+                    settings.frameCount(), 0, settings.captions(), (done, total) -> {
+                        progress.check();
+                        progress.done(done, total);
+                    });
+        } catch (RenderUnavailableException e) {
+            throw new JobFailure(e.getMessage());
+        }
+    }
+
+    /**
+     * Writes the zig-zag demo's figure (the seed's Figure 11 re-made: four stages, 800 by 500
+     * each), as {@code ifold demo zigzag --figure} does.
+     */
+    public static void figure(Plan plan, Path file, Progress progress) throws JobFailure {
+        if (plan.figureStages() == null) {
+            throw new JobFailure("the figure is the zig-zag demo's: Fold, Zig-zag a triangle first");
+        }
+        progress.stage("rendering " + file.getFileName());
+        Plan.Shown shown = plan.newScene();
+        progress.check();
+        try {
+            FrameExport.panel(shown.scene(), shown.animation(), plan.figureStages(), 2, 800, 500, 4, file);
+        } catch (RenderUnavailableException e) {
+            throw new JobFailure(e.getMessage());
+        } catch (IOException e) {
+            throw new JobFailure("cannot write " + file + ": " + e.getMessage());
+        }
+    }
+
+    /** Writes the folded paper as OBJ. */
+    public static void obj(Plan plan, Path file, Progress progress) throws JobFailure {
+        progress.stage("writing " + file.getFileName());
+        try {
+            plan.writeObj(file);
+        } catch (IOException e) {
+            throw new JobFailure("cannot write " + file + ": " + e.getMessage());
+        }
+    }
+
+    /** Writes the crease pattern and folded state as FOLD. */
+    public static void fold(Plan plan, Path file, Progress progress) throws JobFailure {
+        progress.stage("writing " + file.getFileName());
+        try {
+            plan.writeFold(file);
+        } catch (IOException e) {
+            throw new JobFailure("cannot write " + file + ": " + e.getMessage());
+        }
+    }
+
+    /** Writes the plan's figures as the {@code --report} JSON. */
+    public static void report(Plan plan, Path file, Progress progress) throws JobFailure {
+        progress.stage("writing " + file.getFileName());
+        String json = Json.write(plan.figures());
+        try {
+            AtomicFile.write(file, out -> out.write(json.getBytes(StandardCharsets.UTF_8)), true);
+        } catch (IOException e) {
+            throw new JobFailure("cannot write " + file + ": " + e.getMessage());
+        }
+    }
+
+    private static void requireValid(List<Problem> problems) throws JobFailure {
+        if (!problems.isEmpty()) {
+            throw new JobFailure(problems.get(0));
+        }
+    }
+}

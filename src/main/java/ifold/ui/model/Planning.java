@@ -1,0 +1,377 @@
+package ifold.ui.model;
+
+import ifold.fold.CreasePattern;
+import ifold.fold.FoldFile;
+import ifold.geom.Triangle;
+import ifold.job.Reports;
+import ifold.job.Scenes;
+import ifold.job.Scripts;
+import ifold.job.Triangles;
+import ifold.mesh.HalfedgeMesh;
+import ifold.mesh.InvalidMeshException;
+import ifold.mesh.MeshBuilder;
+import ifold.mesh.PolygonSoup;
+import ifold.mesh.io.MeshFormatException;
+import ifold.mesh.io.MeshReaders;
+import ifold.refine.HamiltonianRefinement;
+import ifold.scene.Animation;
+import ifold.scene.Scene;
+import ifold.scene.WrapView;
+import ifold.script.FoldScript;
+import ifold.script.FoldScriptException;
+import ifold.script.ScriptFolding;
+import ifold.sheet.FoldException;
+import ifold.wrap.ParameterException;
+import ifold.wrap.TurnGadget;
+import ifold.wrap.Wrap;
+import ifold.wrap.WrapAnalysis;
+import ifold.wrap.WrapExport;
+import ifold.wrap.WrapGeometry;
+import java.io.IOException;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+
+/**
+ * From a {@link Job} to a {@link Plan}, as the command line does it: the same checks (the
+ * core's {@link ParameterException} names the field), the same planner, the same figures and
+ * scenes ({@link Reports}, {@link Scenes}).
+ */
+public final class Planning {
+    private Planning() {
+    }
+
+    /**
+     * What is wrong with the job's parameters, field by field, before any work: a value that is
+     * not a number, then whatever the core refuses (it stops at the first such). Empty when
+     * the job may run; a wrap's width is checked against the model's triangles only when it runs.
+     */
+    public static List<Problem> check(Job job) {
+        List<Problem> problems = new ArrayList<>();
+        try {
+            if (job instanceof Job.ZigZag z) {
+                zigzagOptions(z, problems);
+            } else if (job instanceof Job.Turn t) {
+                turnOptions(t, problems);
+            } else if (job instanceof Job.WrapModel w) {
+                wrapOptions(w, problems);
+            } else if (job instanceof Job.Script s) {
+                requireFile(s.file(), "script", problems);
+            }
+        } catch (ParameterException e) {
+            problems.add(new Problem(e.parameter(), e.getMessage()));
+        }
+        return problems;
+    }
+
+    /**
+     * Does the job: checks, plans, analyses, and builds the scene that shows it, calling
+     * {@code progress.check()} between stages.
+     *
+     * @throws JobFailure with the problem to show, at a field or as one message
+     * @throws java.util.concurrent.CancellationException if the progress was cancelled
+     */
+    public static Plan plan(Job job, Progress progress) throws JobFailure {
+        List<Problem> problems = check(job);
+        if (!problems.isEmpty()) {
+            throw new JobFailure(problems.get(0));
+        }
+        try {
+            if (job instanceof Job.ZigZag z) {
+                return zigzag(z, progress);
+            } else if (job instanceof Job.Turn t) {
+                return turn(t, progress);
+            } else if (job instanceof Job.WrapModel w) {
+                return wrap(w, progress);
+            }
+            return script((Job.Script) job, progress);
+        } catch (ParameterException e) {
+            throw new JobFailure(new Problem(e.parameter(), e.getMessage()));
+        }
+    }
+
+    /** A text field as a number: blank is {@code blank} (NaN: the core's default); anything else must be a finite number. */
+    static double number(String text, String field, double blank, List<Problem> problems) {
+        String value = text == null ? "" : text.strip();
+        if (value.isEmpty()) {
+            return blank;
+        }
+        try {
+            double d = Double.parseDouble(value);
+            if (Double.isFinite(d)) {
+                return d;
+            }
+        } catch (NumberFormatException e) {
+            // said below
+        }
+        problems.add(new Problem(field, "'" + value + "' is not a number"));
+        return Double.NaN;
+    }
+
+    private static Wrap.Options zigzagOptions(Job.ZigZag job, List<Problem> problems) {
+        Triangle shape = null;
+        try {
+            shape = Triangles.parse(job.triangle());
+        } catch (ParameterException e) {
+            problems.add(new Problem(e.parameter(), e.getMessage()));
+        }
+        double width = number(job.width(), "width", Double.NaN, problems);
+        double thickness = number(job.thickness(), "thickness", Double.NaN, problems);
+        if (!problems.isEmpty()) {
+            return null;
+        }
+        return Wrap.Options.loneTriangle(shape, new Wrap.Ends(job.start(), job.end(), job.enterFrom()), width, thickness);
+    }
+
+    private static TurnGadget.Options turnOptions(Job.Turn job, List<Problem> problems) {
+        String angleText = job.angle() == null ? "" : job.angle().strip();
+        if (angleText.isEmpty()) {
+            problems.add(new Problem("angle", "the turn's angle is needed, from " + TurnGadget.Options.MIN_ANGLE + " to "
+                    + TurnGadget.Options.MAX_ANGLE + " degrees"));
+        }
+        double angle = number(angleText, "angle", Double.NaN, problems);
+        double overhang = number(job.overhang(), "overhang", 0, problems);
+        double width = number(job.width(), "width", 1, problems);
+        double thickness = number(job.thickness(), "thickness", Double.NaN, problems);
+        if (!problems.isEmpty()) {
+            return null;
+        }
+        return new TurnGadget.Options(angle, overhang, width, thickness);
+    }
+
+    private static Wrap.Options wrapOptions(Job.WrapModel job, List<Problem> problems) {
+        requireFile(job.model(), "model", problems);
+        double width = number(job.width(), "width", Double.NaN, problems);
+        double thickness = number(job.thickness(), "thickness", Double.NaN, problems);
+        int maxFaces = Wrap.DEFAULT_MAX_FACES;
+        String limit = job.maxFaces() == null ? "" : job.maxFaces().strip();
+        if (!limit.isEmpty()) {
+            try {
+                maxFaces = Integer.parseInt(limit);
+            } catch (NumberFormatException e) {
+                problems.add(new Problem("maxFaces", "'" + limit + "' is not a whole number"));
+            }
+        }
+        if (!problems.isEmpty()) {
+            return null;
+        }
+        return new Wrap.Options(width, thickness, null, maxFaces);
+    }
+
+    private static void requireFile(Path file, String field, List<Problem> problems) {
+        if (file == null) {
+            problems.add(new Problem(field, "no file chosen"));
+        } else if (!Files.exists(file)) {
+            problems.add(new Problem(field, file + ": no such file"));
+        } else if (!Files.isRegularFile(file)) {
+            problems.add(new Problem(field, file + ": not a regular file"));
+        }
+    }
+
+    private static Plan zigzag(Job.ZigZag job, Progress progress) throws JobFailure {
+        Wrap.Options options = zigzagOptions(job, new ArrayList<>());
+        Triangle shape = Triangles.parse(job.triangle());
+        PolygonSoup path = new PolygonSoup();
+        for (int i = 0; i < 3; i++) {
+            path.addVertex(shape.corner(i).x(), shape.corner(i).y(), shape.corner(i).z());
+        }
+        path.addTriangle(0, 1, 2);
+        progress.stage("wrapping the triangle");
+        Wrap.Result result;
+        try {
+            result = Wrap.wrap(path, new int[] {0, 1}, options);
+        } catch (Wrap.WrapException e) {
+            throw new JobFailure("cannot wrap this triangle: " + e.getMessage());
+        }
+        progress.check();
+        progress.stage("analysing");
+        List<WrapGeometry> geometries = List.of(WrapGeometry.of(result.strips().get(0).sheet(), result.frames()));
+        WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
+        Map<String, Object> figures = Reports.zigzag(job.triangle(), job.start(), job.end(), result, analysis);
+        progress.check();
+        String source = "demo zigzag --triangle " + job.triangle();
+        return paperPlan(job, "zig-zag: " + figures.get("folds") + " folds", result, geometries, figures,
+                Math.min(120, 2.0 * (result.steps().size() + 2)), source, scene -> Scenes.zigzag(scene, shape, result, geometries));
+    }
+
+    private static Plan turn(Job.Turn job, Progress progress) throws JobFailure {
+        TurnGadget.Options options = turnOptions(job, new ArrayList<>());
+        progress.stage("folding the turn");
+        TurnGadget.Result gadget;
+        try {
+            gadget = TurnGadget.turn(options);
+        } catch (FoldException e) {
+            throw new JobFailure("cannot make this turn: " + e.getMessage());
+        }
+        Wrap.Result result = gadget.wrap();
+        List<WrapGeometry> geometries = List.of(WrapGeometry.of(gadget.sheet(), result.frames()));
+        WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
+        Map<String, Object> figures = Reports.turn(options, gadget, analysis);
+        progress.check();
+        String source = String.format(Locale.ROOT, "demo turn --angle %s", options.angle());
+        return paperPlan(job, String.format(Locale.ROOT, "turn gadget: %.4g degrees", options.angle()), result, geometries, figures, 6,
+                source, scene -> Scenes.turn(scene, result, geometries));
+    }
+
+    private static Plan wrap(Job.WrapModel job, Progress progress) throws JobFailure {
+        Wrap.Options options = wrapOptions(job, new ArrayList<>());
+        Path model = job.model();
+        progress.stage("reading " + model.getFileName());
+        MeshBuilder.Result built;
+        try {
+            PolygonSoup soup = MeshReaders.read(model);
+            progress.check();
+            built = MeshBuilder.build(soup, new MeshBuilder.Options(false, true));
+        } catch (MeshFormatException e) {
+            throw new JobFailure(new Problem("model", e.getMessage()));
+        } catch (InvalidMeshException e) {
+            throw new JobFailure(new Problem("model", (e.sourceLine() > 0 ? model + ":" + e.sourceLine() : model.toString()) + ": "
+                    + e.getMessage()));
+        } catch (IOException e) {
+            throw new JobFailure(new Problem("model", readError(model, e)));
+        }
+        HalfedgeMesh mesh = built.mesh();
+        if (mesh.faceCount() == 0) {
+            throw new JobFailure(new Problem("model", model + ": no faces left to wrap"));
+        }
+        progress.check();
+        progress.stage("refining " + mesh.faceCount() + " triangles");
+        HamiltonianRefinement.Result refinement = HamiltonianRefinement.refine(mesh);
+        progress.check();
+        progress.stage("wrapping " + refinement.mesh().faceCount() + " triangles");
+        Wrap.Result result;
+        try {
+            result = Wrap.wrap(refinement, options);
+        } catch (Wrap.FaceLimitException e) {
+            throw new JobFailure(new Problem("maxFaces", model + ": cannot wrap: " + e.getMessage() + " (Max faces raises it)"));
+        } catch (Wrap.WrapException e) {
+            throw new JobFailure(model + ": cannot wrap: " + e.getMessage());
+        }
+        progress.check();
+        progress.stage("analysing");
+        List<WrapGeometry> geometries = new ArrayList<>();
+        for (Wrap.Strip strip : result.strips()) {
+            geometries.add(WrapGeometry.of(strip.sheet(), result.frames()));
+        }
+        WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
+        Map<String, Object> figures = Reports.wrap(model.toString(), mesh.faceCount(), built.repairs(), refinement, result, analysis);
+        progress.check();
+        int folds = result.steps().size() - result.count(Wrap.Kind.END);
+        return paperPlan(job, model.getFileName() + ": " + result.strips().size() + " strip(s), " + folds + " folds",
+                result, geometries, figures, 120, "ifold wrap " + model, scene -> {
+                    WrapView.Playback playback = Scenes.wrap(scene, mesh, result, geometries);
+                    Scenes.refinement(scene, refinement);
+                    return playback;
+                });
+    }
+
+    private static Plan script(Job.Script job, Progress progress) throws JobFailure {
+        Path file = job.file();
+        progress.stage("reading " + file.getFileName());
+        FoldScript parsed;
+        CreasePattern pattern = null;
+        ScriptFolding.Result result;
+        try {
+            if (Scripts.isFoldFile(file)) {
+                pattern = CreasePattern.read(file);
+                parsed = pattern.script();
+            } else {
+                parsed = FoldScript.read(file);
+            }
+            progress.check();
+            progress.stage("folding " + parsed.steps().size() + " folds");
+            result = parsed.play(new long[parsed.steps().size()], ScriptFolding.DEFAULT_MAX_FACES);
+            if (pattern != null) {
+                pattern.verify(result);
+            }
+        } catch (IOException e) {
+            throw new JobFailure(new Problem("script", readError(file, e)));
+        } catch (CreasePattern.Refused e) {
+            throw new JobFailure(file + ": " + e.getMessage());
+        } catch (FoldScriptException e) {
+            if (pattern != null) {
+                throw new JobFailure(file + ": cannot be folded one crease line at a time in this order: " + e.getMessage());
+            }
+            throw new JobFailure(file + (e.line() > 0 ? ":" + e.getMessage().replaceFirst("^line ", "") : ": " + e.getMessage()));
+        }
+        progress.check();
+        WrapGeometry folded = WrapGeometry.of(result.sheet(), result.frames());
+        Map<String, Object> figures = Reports.script(result, folded);
+        Plan.Shown shown = scriptScene(result, folded);
+        List<Fold> folds = new ArrayList<>();
+        for (int k = 0; k < result.steps().size(); k++) {
+            FoldScript.Step fold = result.steps().get(k).fold();
+            String kind = fold.kind().name().toLowerCase(Locale.ROOT);
+            folds.add(new Fold(String.format(Locale.ROOT, "fold %d: %s %.4g°%s", k + 1, kind, fold.degrees(),
+                    fold.line() > 0 ? ", line " + fold.line() : ""), kind, k));
+        }
+        String header = "iFold fold script " + file + ": " + result.steps().size() + " folds, thickness " + result.sheet().thickness();
+        return new Plan(job, file.getFileName() + ": " + result.steps().size() + " folds", shown, List.copyOf(folds), figures, 10,
+                () -> scriptScene(result, folded), out -> WrapExport.writeObj(out, header, List.of(folded)),
+                List.of(new FoldFile.Folded(result.sheet(), result.frames())), "ifold fold " + file, null);
+    }
+
+    private static Plan.Shown scriptScene(ScriptFolding.Result result, WrapGeometry folded) {
+        Scene scene = new Scene();
+        Animation animation = Scenes.script(scene, result, folded);
+        return new Plan.Shown(scene, animation);
+    }
+
+    /** How a scene of a wrap is made: filled into the scene given, its playback returned. */
+    @FunctionalInterface
+    private interface WrapScene {
+        WrapView.Playback fill(Scene scene);
+    }
+
+    private static Plan paperPlan(Job job, String title, Wrap.Result result, List<WrapGeometry> geometries, Map<String, Object> figures,
+            double seconds, String source, WrapScene scenes) {
+        Scene scene = new Scene();
+        WrapView.Playback playback = scenes.fill(scene);
+        List<Fold> folds = new ArrayList<>(result.steps().size());
+        boolean several = result.strips().size() > 1;
+        for (int j = 0; j < result.steps().size(); j++) {
+            Wrap.Step step = result.steps().get(j);
+            if (step.kind() == Wrap.Kind.END) {
+                continue; // the strip's end is a step of the animation, not a fold
+            }
+            folds.add(new Fold((several ? "strip " + (step.strip() + 1) + ", " : "") + step.describe(), kindName(step.kind()),
+                    playback.positionAfter(j)));
+        }
+        List<FoldFile.Folded> sheets = new ArrayList<>();
+        for (Wrap.Strip strip : result.strips()) {
+            sheets.add(new FoldFile.Folded(strip.sheet(), result.frames()));
+        }
+        return new Plan(job, title, new Plan.Shown(scene, playback), List.copyOf(folds), figures, seconds, () -> {
+            Scene another = new Scene();
+            return new Plan.Shown(another, scenes.fill(another));
+        }, out -> WrapExport.writeObj(out, source, result, geometries), List.copyOf(sheets), source,
+                job instanceof Job.ZigZag ? Scenes.figure11Stages(playback, result) : null);
+    }
+
+    /** A fold's kind as the list shows it. */
+    static String kindName(Wrap.Kind kind) {
+        return switch (kind) {
+            case ZIGZAG_TURN -> "zig-zag turn";
+            case TURN_GADGET -> "turn gadget";
+            case EDGE_CROSSING -> "edge crossing";
+            case OVERLAP -> "overlap";
+            case TUCK -> "tuck";
+            case END -> "the strip ends";
+        };
+    }
+
+    private static String readError(Path file, IOException e) {
+        if (e instanceof NoSuchFileException) {
+            return file + ": no such file";
+        }
+        if (e instanceof AccessDeniedException) {
+            return file + ": permission denied";
+        }
+        return file + ": cannot read: " + e.getMessage();
+    }
+}

@@ -1,0 +1,588 @@
+package ifold.ui;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import ifold.image.Mp4Writer;
+import ifold.ui.model.Exports;
+import ifold.ui.model.Job;
+import ifold.ui.model.Planning;
+import ifold.ui.model.Progress;
+import ifold.ui.model.Settings;
+import java.awt.Component;
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.Callable;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.BooleanSupplier;
+import java.util.stream.Stream;
+import javax.swing.JComponent;
+import javax.swing.JMenu;
+import javax.swing.JMenuItem;
+import javax.swing.KeyStroke;
+import javax.swing.MenuElement;
+import javax.swing.SwingUtilities;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The real window, opened on the X display (scripts/test runs under Xvfb) and driven through
+ * its menus and controls on the event thread; outcomes checked by pixels and by the files
+ * written. Skipped without a display.
+ */
+@Timeout(180)
+class MainWindowTest {
+    @TempDir
+    Path dir;
+
+    private MainWindow window;
+
+    @BeforeAll
+    static void needsDisplay() {
+        String display = System.getenv("DISPLAY");
+        assumeTrue(display != null && !display.isEmpty() && App.canOpen(), "no X display (run the tests under xvfb-run)");
+    }
+
+    @AfterEach
+    void close() throws Exception {
+        if (window != null) {
+            onEdt(() -> {
+                window.dispose();
+                return null;
+            });
+        }
+    }
+
+    private Settings settings() {
+        return new Settings(dir.resolve("settings.properties"));
+    }
+
+    static <T> T onEdt(Callable<T> action) throws Exception {
+        AtomicReference<T> result = new AtomicReference<>();
+        AtomicReference<Exception> failure = new AtomicReference<>();
+        SwingUtilities.invokeAndWait(() -> {
+            try {
+                result.set(action.call());
+            } catch (Exception e) {
+                failure.set(e);
+            }
+        });
+        if (failure.get() != null) {
+            throw failure.get();
+        }
+        return result.get();
+    }
+
+    /** Waits for the condition, checked on the event thread, for up to {@code seconds}. */
+    static void waitFor(String what, double seconds, BooleanSupplier condition) throws Exception {
+        long deadline = System.nanoTime() + (long) (seconds * 1e9);
+        while (System.nanoTime() < deadline) {
+            if (onEdt(condition::getAsBoolean)) {
+                return;
+            }
+            Thread.sleep(50);
+        }
+        throw new AssertionError("waited " + seconds + " s for " + what);
+    }
+
+    /** The window planned and drew its current job: the view's picture is of it. */
+    private BufferedImage settled() throws Exception {
+        waitFor("the plan", 60, () -> !window.isWorking() && window.plan() != null);
+        assertTrue(window.view.awaitFrame(30_000), "the view drew the plan");
+        return window.view.picture();
+    }
+
+    /** Pixels of the strip's underside (0x8FAACB, lit): bluer than the model's grey-blue and the background. */
+    static int undersidePixels(BufferedImage image) {
+        int count = 0;
+        for (int y = 0; y < image.getHeight(); y++) {
+            for (int x = 0; x < image.getWidth(); x++) {
+                int rgb = image.getRGB(x, y);
+                if ((rgb & 0xFF) > (rgb >> 16 & 0xFF) + 40) {
+                    count++;
+                }
+            }
+        }
+        return count;
+    }
+
+    static int differing(BufferedImage a, BufferedImage b) {
+        int count = 0;
+        for (int y = 0; y < Math.min(a.getHeight(), b.getHeight()); y++) {
+            for (int x = 0; x < Math.min(a.getWidth(), b.getWidth()); x++) {
+                count += a.getRGB(x, y) == b.getRGB(x, y) ? 0 : 1;
+            }
+        }
+        return count;
+    }
+
+    static int pixelsOf(BufferedImage image, int rgb, int tolerance) {
+        int count = 0;
+        for (int y = 0; y < image.getHeight(); y++) {
+            for (int x = 0; x < image.getWidth(); x++) {
+                int p = image.getRGB(x, y);
+                if (Math.abs((p >> 16 & 0xFF) - (rgb >> 16 & 0xFF)) <= tolerance && Math.abs((p >> 8 & 0xFF) - (rgb >> 8 & 0xFF)) <= tolerance
+                        && Math.abs((p & 0xFF) - (rgb & 0xFF)) <= tolerance) {
+                    count++;
+                }
+            }
+        }
+        return count;
+    }
+
+    private static JMenuItem menuItem(MainWindow window, String text) {
+        for (MenuElement menu : window.getJMenuBar().getSubElements()) {
+            JMenuItem found = find(menu, text);
+            if (found != null) {
+                return found;
+            }
+        }
+        throw new AssertionError("no menu item " + text);
+    }
+
+    private static JMenuItem find(MenuElement element, String text) {
+        if (element instanceof JMenuItem item && item.getText().startsWith(text)) {
+            return item;
+        }
+        MenuElement[] children = element instanceof JMenu menu ? menu.getPopupMenu().getSubElements() : element.getSubElements();
+        for (MenuElement child : children) {
+            JMenuItem found = find(child, text);
+            if (found != null) {
+                return found;
+            }
+        }
+        return null;
+    }
+
+    @Test
+    void opensOnTheZigZagDemoAndDrawsItWithItsReport() throws Exception {
+        window = App.open(null, settings());
+        BufferedImage picture = settled();
+        assertNotNull(picture);
+        assertTrue(onEdt(() -> window.getTitle()).contains("zig-zag"), "the title says what is shown");
+        assertTrue(pixelsOf(picture, 0xD3DAE2, 3) > picture.getWidth() * picture.getHeight() / 10, "the demo's background");
+        assertEquals("5", onEdt(() -> window.report.value("passes")), "the report panel holds the --report figures");
+        assertEquals("1", onEdt(() -> window.report.value("coverage")));
+        assertEquals(Planning.plan(Job.ZigZag.DEMO, Progress.NONE).folds().size(), (int) onEdt(() -> window.timeline.folds.getModel().getSize()));
+        // Every menu the issue asks for, each item with its shortcut.
+        for (String item : List.of("Open model", "Open fold script", "Export frames", "Export movie", "Export OBJ", "Export FOLD",
+                "Export report", "Export figure", "Quit", "Model", "Refinement and Hamiltonian path", "Paper colours", "Captions", "Reset camera", "Underside", "Zig-zag a triangle", "Turn gadget",
+                "Wrap the model", "Play a script", "Keys")) {
+            assertNotNull(onEdt(() -> menuItem(window, item).getAccelerator()), item + " has a shortcut");
+        }
+    }
+
+    @Test
+    void aBadWidthIsMarkedWithTheCoresMessageAndAGoodOneReplans() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        onEdt(() -> {
+            window.parameters.zigzagWidth.setText("9");
+            return null;
+        });
+        String expected = Planning.check(new Job.ZigZag("0,0,10,0,3.5,8", 2, 0, -1, "9", "")).get(0).message();
+        waitFor("the width marked", 10, () -> window.parameters.isMarked("width"));
+        assertEquals(expected, onEdt(() -> window.parameters.note("width")), "the core's message, at the field");
+        assertEquals("1.6", onEdt(() -> window.report.value("stripWidth")), "nothing ran: the last plan stays");
+        onEdt(() -> {
+            window.parameters.zigzagWidth.setText("0.8");
+            return null;
+        });
+        waitFor("the new plan", 60, () -> "0.8".equals(window.report.value("stripWidth")));
+        assertFalse(onEdt(() -> window.parameters.isMarked("width")));
+        assertEquals("10", onEdt(() -> window.report.value("passes")), "half the width, twice the passes");
+    }
+
+    @Test
+    void draggingACornerOfTheSketchMovesItAndReplans() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        TriangleSketch sketch = window.parameters.sketch;
+        java.awt.Point c = onEdt(() -> sketch.corner(2));
+        assertNotNull(c, "setup: the demo's triangle is drawn");
+        onEdt(() -> {
+            long now = System.currentTimeMillis();
+            sketch.dispatchEvent(new java.awt.event.MouseEvent(sketch, java.awt.event.MouseEvent.MOUSE_PRESSED, now, 0, c.x, c.y, 1, false,
+                    java.awt.event.MouseEvent.BUTTON1));
+            sketch.dispatchEvent(new java.awt.event.MouseEvent(sketch, java.awt.event.MouseEvent.MOUSE_DRAGGED, now + 10,
+                    java.awt.event.InputEvent.BUTTON1_DOWN_MASK, c.x, c.y - 20, 0, false, 0));
+            sketch.dispatchEvent(new java.awt.event.MouseEvent(sketch, java.awt.event.MouseEvent.MOUSE_RELEASED, now + 20, 0, c.x, c.y - 20,
+                    1, false, java.awt.event.MouseEvent.BUTTON1));
+            return null;
+        });
+        String corners = onEdt(() -> window.parameters.triangle.getText());
+        assertTrue(corners.startsWith("0,0,10,0,3.5,"), "A and B stay, C moves: " + corners);
+        double y = Double.parseDouble(corners.substring(corners.lastIndexOf(',') + 1));
+        assertTrue(y > 8.5, "C dragged up: " + corners);
+        waitFor("the taller triangle planned", 60, () -> corners.equals(window.report.value("triangle")));
+    }
+
+    @Test
+    void theViewersKeysDriveTheTimeline() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        onEdt(() -> {
+            window.timeline.restart();
+            return null;
+        });
+        for (int key : new int[] {java.awt.event.KeyEvent.VK_RIGHT, java.awt.event.KeyEvent.VK_RIGHT}) {
+            onEdt(() -> {
+                press(window.view, key);
+                return null;
+            });
+        }
+        assertEquals(window.plan().folds().get(2).position(), onEdt(() -> window.timeline.timeline().position()), 1e-12,
+                "two folds forward: the third begins");
+        onEdt(() -> {
+            press(window.view, java.awt.event.KeyEvent.VK_LEFT);
+            press(window.view, java.awt.event.KeyEvent.VK_SPACE);
+            return null;
+        });
+        assertTrue(onEdt(() -> window.timeline.timeline().isPlaying()), "space plays");
+        assertEquals("Pause", onEdt(() -> window.timeline.play.getText()));
+        onEdt(() -> {
+            press(window.view, java.awt.event.KeyEvent.VK_H);
+            return null;
+        });
+        assertTrue(onEdt(() -> window.view.isShowingHelp()), "H shows the keys");
+    }
+
+    @Test
+    void theTurnFromTheFoldMenuMarksABadAngle() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        onEdt(() -> {
+            menuItem(window, "Turn gadget").doClick();
+            return null;
+        });
+        waitFor("the turn planned", 60, () -> window.plan() != null && window.plan().job() instanceof Job.Turn && !window.isWorking());
+        assertEquals("60", onEdt(() -> window.report.value("angle")));
+        onEdt(() -> {
+            window.parameters.angle.setText("200");
+            return null;
+        });
+        waitFor("the angle marked", 10, () -> window.parameters.isMarked("angle"));
+        assertEquals(Planning.check(new Job.Turn("200", "0", "1", "")).get(0).message(), onEdt(() -> window.parameters.note("angle")));
+        onEdt(() -> {
+            window.parameters.angle.setText("90");
+            return null;
+        });
+        waitFor("the right angle", 60, () -> "90".equals(window.report.value("angle")));
+    }
+
+    /** A key pressed on a component with the focus, as the keyboard would: its WHEN_FOCUSED bindings answer. */
+    private static void press(JComponent component, int key) {
+        KeyStroke stroke = KeyStroke.getKeyStroke(key, 0);
+        Object name = component.getInputMap(JComponent.WHEN_FOCUSED).get(stroke);
+        assertNotNull(name, "a binding for " + stroke);
+        component.getActionMap().get(name).actionPerformed(new java.awt.event.ActionEvent(component, 0, String.valueOf(name)));
+    }
+
+    @Test
+    void runReturnsOnceTheWindowIsClosed() throws Exception {
+        Thread run = new Thread(() -> {
+            try {
+                App.run(null, settings());
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }, "app run");
+        run.start();
+        waitFor("the window", 30, () -> java.util.Arrays.stream(java.awt.Frame.getFrames())
+                .anyMatch(f -> f instanceof MainWindow && f.isDisplayable()));
+        onEdt(() -> {
+            for (java.awt.Frame frame : java.awt.Frame.getFrames()) {
+                if (frame instanceof MainWindow && frame.isDisplayable()) {
+                    frame.dispose(); // as File, Quit does
+                }
+            }
+            return null;
+        });
+        run.join(30_000);
+        assertFalse(run.isAlive(), "App.run returned: the launcher then exits");
+        assertTrue(Files.isRegularFile(dir.resolve("settings.properties")), "and the settings were saved");
+    }
+
+    @Test
+    void thePapersColoursAreChosenAndKept() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        onEdt(() -> {
+            window.timeline.folds.setSelectedIndex(window.timeline.folds.getModel().getSize() - 1); // the tucks: seen from below
+            return null;
+        });
+        assertTrue(window.view.awaitFrame(30_000));
+        assertTrue(undersidePixels(window.view.picture()) > 20_000, "setup: the blue-grey underside shows");
+        onEdt(() -> {
+            window.setPaperColours(0xFFFFFF00, 0xFFFF0000);
+            return null;
+        });
+        assertTrue(window.view.awaitFrame(30_000));
+        BufferedImage red = window.view.picture();
+        assertTrue(undersidePixels(red) < 100, "no blue-grey left");
+        int reddish = 0;
+        for (int y = 0; y < red.getHeight(); y++) {
+            for (int x = 0; x < red.getWidth(); x++) {
+                int p = red.getRGB(x, y);
+                reddish += (p >> 16 & 0xFF) > 120 && (p >> 8 & 0xFF) < 40 && (p & 0xFF) < 40 ? 1 : 0;
+            }
+        }
+        assertTrue(reddish > 20_000, "the underside is red: " + reddish + " pixels");
+        onEdt(() -> {
+            window.dispose();
+            return null;
+        });
+        window = App.open(null, settings());
+        assertEquals(0xFFFF0000, settings().getInt("paper.bottom", 0), "remembered");
+    }
+
+    @Test
+    void theSliderScrubsThroughTheFoldsAndTheListJumps() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        onEdt(() -> {
+            window.timeline.slider.setValue(0);
+            return null;
+        });
+        assertTrue(window.view.awaitFrame(30_000));
+        BufferedImage start = window.view.picture();
+        int last = onEdt(() -> window.timeline.folds.getModel().getSize()) - 1;
+        onEdt(() -> {
+            window.timeline.folds.setSelectedIndex(last);
+            return null;
+        });
+        assertTrue(window.view.awaitFrame(30_000));
+        BufferedImage folded = window.view.picture();
+        assertEquals(last, (int) onEdt(() -> window.timeline.timeline().currentFold()), "the fold chosen is the one shown");
+        assertTrue(onEdt(() -> window.view.status()).startsWith("tuck"), "the status line names the last fold: " + window.view.status());
+        // The tucks are shown from below, where the strip's underside (blue) covers the triangle.
+        int before = undersidePixels(start);
+        int after = undersidePixels(folded);
+        assertTrue(before < 100 && after > 20_000, "the strip laid over the triangle: " + before + " underside pixels at the start, "
+                + after + " folded");
+        assertTrue(differing(start, folded) > start.getWidth() * start.getHeight() / 10, "the view changed");
+        onEdt(() -> {
+            window.timeline.slider.setValue(TimelinePanel.TICKS / 4);
+            return null;
+        });
+        double quarter = onEdt(() -> window.timeline.timeline().position() / window.timeline.timeline().end());
+        assertEquals(0.25, quarter, 1e-4, "dragging the slider moves the timeline at once");
+        assertFalse(onEdt(() -> window.timeline.timeline().isPlaying()), "and pauses it");
+    }
+
+    @Test
+    void aModelOpensThroughTheMenuAndIsWrapped() throws Exception {
+        Settings settings = settings();
+        settings.addRecent(Path.of("models", "cube.off"));
+        window = App.open(null, settings);
+        settled();
+        onEdt(() -> {
+            menuItem(window, "1  cube.off").doClick();
+            return null;
+        });
+        waitFor("the cube wrapped", 60, () -> window.plan() != null && window.plan().job() instanceof Job.WrapModel && !window.isWorking());
+        BufferedImage picture = settled();
+        assertEquals("12", onEdt(() -> window.report.value("inputTriangles")));
+        assertEquals("wrap", onEdt(() -> window.parameters.card()));
+        assertTrue(onEdt(() -> window.getTitle()).contains("cube.off"));
+        assertTrue(pixelsOf(picture, 0xFFFFFF, 0) > 1000, "the cube's white background");
+        onEdt(() -> {
+            window.timeline.seek(0);
+            return null;
+        });
+        assertTrue(window.view.awaitFrame(30_000));
+        BufferedImage plain = window.view.picture();
+        onEdt(() -> {
+            menuItem(window, "Refinement and Hamiltonian path").doClick();
+            return null;
+        });
+        assertTrue(window.view.awaitFrame(30_000));
+        BufferedImage path = window.view.picture();
+        assertTrue(pixelsOf(path, 0x00A030, 60) > 50 && pixelsOf(plain, 0x00A030, 60) < 10,
+                "the path's tree edges in green, where the plain model has none");
+        onEdt(() -> {
+            window.parameters.wrapWidth.setText("0.1");
+            return null;
+        });
+        waitFor("the narrower wrap", 60, () -> "0.1".equals(window.report.value("width")));
+    }
+
+    @Test
+    void aMovieIsExportedAndACancelledOneLeavesNothing() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        List<String> said = new CopyOnWriteArrayList<>();
+        onEdt(() -> {
+            window.messages = said::add;
+            return null;
+        });
+        Path gif = dir.resolve("zigzag.gif");
+        onEdt(() -> {
+            window.exportMovie(gif, new Exports.FrameSettings(160, 90, 10, 1, true));
+            return null;
+        });
+        waitFor("the GIF", 60, () -> !window.isWorking());
+        assertTrue(window.awaitExport(10_000));
+        assertTrue(Files.isRegularFile(gif), "written: " + said);
+        byte[] head = Files.readAllBytes(gif);
+        assertEquals("GIF89a", new String(head, 0, 6, java.nio.charset.StandardCharsets.US_ASCII));
+        assertTrue(said.stream().anyMatch(s -> s.startsWith("wrote " + gif)), said.toString());
+
+        if (Mp4Writer.available()) {
+            Path mp4 = dir.resolve("zigzag.mp4");
+            onEdt(() -> {
+                window.exportMovie(mp4, new Exports.FrameSettings(320, 180, 10, 1, true));
+                return null;
+            });
+            waitFor("the MP4", 60, () -> !window.isWorking());
+            assertTrue(Files.size(mp4) > 1000, "an MP4 with frames in it");
+        }
+
+        Path cancelled = dir.resolve("cancelled.gif");
+        onEdt(() -> {
+            window.exportMovie(cancelled, new Exports.FrameSettings(640, 360, 30, 60, true));
+            return null;
+        });
+        waitFor("the export under way", 60, () -> window.progress.isVisible() && !window.progress.isIndeterminate());
+        onEdt(() -> {
+            window.cancel.doClick();
+            return null;
+        });
+        assertTrue(window.awaitExport(60_000), "the export stopped");
+        assertFalse(onEdt(() -> window.isWorking()));
+        try (Stream<Path> files = Files.list(dir)) {
+            List<String> names = files.map(p -> p.getFileName().toString()).filter(n -> n.contains("cancelled")).toList();
+            assertEquals(List.of(), names, "a cancelled export leaves no file, whole or temporary");
+        }
+        assertTrue(said.stream().anyMatch(s -> s.contains("cancelled")), said.toString());
+    }
+
+    @Test
+    void objFoldAndReportAreWrittenAsTheCommandLineWritesThem() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        Path obj = dir.resolve("zigzag.obj");
+        Path fold = dir.resolve("zigzag.fold");
+        Path json = dir.resolve("zigzag.json");
+        for (Runnable export : List.<Runnable>of(() -> window.exportObj(obj), () -> window.exportFold(fold), () -> window.exportReport(json))) {
+            onEdt(() -> {
+                export.run();
+                return null;
+            });
+            waitFor("the export", 60, () -> !window.isWorking());
+        }
+        Path cliObj = dir.resolve("cli.obj");
+        Path cliFold = dir.resolve("cli.fold");
+        Path cliJson = dir.resolve("cli.json");
+        cli("demo", "zigzag", "--no-view", "--export-obj", cliObj.toString(), "--report", cliJson.toString());
+        cli("demo", "zigzag", "--no-view", "--export-fold", cliFold.toString());
+        assertEquals(Files.readString(cliObj), Files.readString(obj), "the OBJ is the command line's");
+        assertEquals(Files.readString(cliFold), Files.readString(fold), "the FOLD file is the command line's");
+        assertEquals(Files.readString(cliJson), Files.readString(json), "the report is the command line's");
+        Path figure = dir.resolve("figure11.png");
+        onEdt(() -> {
+            window.exportFigure(figure);
+            return null;
+        });
+        waitFor("the figure", 60, () -> !window.isWorking());
+        BufferedImage panel = javax.imageio.ImageIO.read(figure.toFile());
+        assertEquals(2 * 800 + 2, panel.getWidth(), "two stages a row, as --figure draws them");
+        assertEquals(2 * 500 + 2, panel.getHeight());
+    }
+
+    @Test
+    void theEventThreadIsNeverHeldWhileAModelIsWrapped() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        onEdt(() -> {
+            window.open(Path.of("models", "torus.off"));
+            return null;
+        });
+        long worst = 0;
+        int pings = 0;
+        while ((pings < 3 || onEdt(() -> window.isWorking())) && pings < 3000) {
+            long sent = System.nanoTime();
+            SwingUtilities.invokeAndWait(() -> { });
+            worst = Math.max(worst, System.nanoTime() - sent);
+            pings++;
+            Thread.sleep(10);
+        }
+        assertTrue(onEdt(() -> window.plan().job() instanceof Job.WrapModel), "the torus was wrapped");
+        assertTrue(worst < 100_000_000L, "the event thread answered within 100 ms, at worst " + worst / 1e6 + " ms over " + pings + " pings");
+    }
+
+    @Test
+    void theEventThreadIsNeverHeldWhileAnExportRuns() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        Path gif = dir.resolve("busy.gif");
+        onEdt(() -> {
+            window.exportMovie(gif, new Exports.FrameSettings(480, 270, 20, 3, true));
+            return null;
+        });
+        long worst = 0;
+        int pings = 0;
+        while (onEdt(() -> window.isWorking()) && pings < 2000) {
+            long sent = System.nanoTime();
+            SwingUtilities.invokeAndWait(() -> { });
+            worst = Math.max(worst, System.nanoTime() - sent);
+            pings++;
+            Thread.sleep(10);
+        }
+        assertTrue(pings > 5, "setup: the export took a while, " + pings + " pings");
+        assertTrue(worst < 100_000_000L, "the event thread answered within 100 ms, at worst " + worst / 1e6 + " ms");
+        assertTrue(Files.isRegularFile(gif));
+    }
+
+    @Test
+    void settingsAreRememberedBetweenRuns() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        onEdt(() -> {
+            window.parameters.zigzagWidth.setText("1.2");
+            window.setSize(1000, 700);
+            return null;
+        });
+        waitFor("the new plan", 60, () -> "1.2".equals(window.report.value("stripWidth")));
+        onEdt(() -> {
+            window.dispose();
+            return null;
+        });
+        window = App.open(null, settings());
+        assertEquals("1.2", onEdt(() -> window.parameters.zigzagWidth.getText()));
+        assertEquals(1000, (int) onEdt(() -> window.getWidth()));
+        settled();
+        assertEquals("1.2", onEdt(() -> window.report.value("stripWidth")));
+    }
+
+    private static void cli(String... args) {
+        java.io.StringWriter err = new java.io.StringWriter();
+        int code = ifold.cli.Main.commandLine(new java.io.PrintWriter(new java.io.StringWriter()), new java.io.PrintWriter(err)).execute(args);
+        assertEquals(0, code, err.toString());
+    }
+
+    /** Finds a component of a type below {@code root}: for the screenshots. */
+    static <T extends Component> T below(Component root, Class<T> type) {
+        if (type.isInstance(root)) {
+            return type.cast(root);
+        }
+        if (root instanceof java.awt.Container container) {
+            for (Component child : container.getComponents()) {
+                T found = below(child, type);
+                if (found != null) {
+                    return found;
+                }
+            }
+        }
+        return null;
+    }
+}

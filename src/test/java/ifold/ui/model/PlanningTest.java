@@ -1,0 +1,177 @@
+package ifold.ui.model;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import ifold.cli.Main;
+import ifold.job.Json;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.CancellationException;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** Parameters to plan, as the command line does it: the same checks, messages, figures and folds. */
+class PlanningTest {
+    @TempDir
+    Path dir;
+
+    /** What the command line printed on stderr and the exit code. */
+    private record Run(int code, String err) {
+    }
+
+    private static Run cli(String... args) {
+        StringWriter err = new StringWriter();
+        int code = Main.commandLine(new PrintWriter(new StringWriter()), new PrintWriter(err)).execute(args);
+        return new Run(code, err.toString());
+    }
+
+    @Test
+    void theDemoPlansTheCommandLinesReport() throws Exception {
+        Path report = dir.resolve("zigzag.json");
+        Run run = cli("demo", "zigzag", "--no-view", "--report", report.toString());
+        assertEquals(0, run.code(), run.err());
+        Plan plan = Planning.plan(Job.ZigZag.DEMO, Progress.NONE);
+        assertEquals(Files.readString(report), Json.write(plan.figures()), "the window's report is the command line's, byte for byte");
+        assertEquals(5, plan.figures().get("passes"));
+        int folds = (Integer) plan.figures().get("folds");
+        assertEquals(folds, plan.folds().size(), "one entry a fold");
+        assertEquals("zig-zag turn", plan.folds().get(0).kind());
+        assertEquals(0.0, plan.folds().get(0).position(), "the first fold begins at the start");
+        assertEquals("tuck", plan.folds().get(folds - 1).kind(), "the tucks come last");
+        for (int i = 1; i < folds; i++) {
+            assertTrue(plan.folds().get(i).position() > plan.folds().get(i - 1).position(), "folds in order along the animation");
+        }
+        assertTrue(plan.folds().get(folds - 1).position() < plan.stepCount(), "the turn round comes after the last fold");
+    }
+
+    @Test
+    void aBadValueIsMarkedAtItsFieldWithTheCommandLinesMessage() {
+        String[][] cases = {
+            {"width", "9", "--width"},
+            {"width", "-1", "--width"},
+            {"thickness", "0.5", "--thickness"},
+            {"triangle", "0,0,1,1,2,2", "--triangle"},
+            {"triangle", "1,2,3", "--triangle"},
+        };
+        for (String[] c : cases) {
+            Job.ZigZag demo = Job.ZigZag.DEMO;
+            Job.ZigZag job = switch (c[0]) {
+                case "width" -> new Job.ZigZag(demo.triangle(), demo.start(), demo.end(), -1, c[1], "");
+                case "thickness" -> new Job.ZigZag(demo.triangle(), demo.start(), demo.end(), -1, "1", c[1]);
+                default -> new Job.ZigZag(c[1], demo.start(), demo.end(), -1, "", "");
+            };
+            List<Problem> problems = Planning.check(job);
+            assertEquals(1, problems.size(), c[0] + " " + c[1] + ": " + problems);
+            assertEquals(c[0], problems.get(0).field());
+            String[] args = c[0].equals("triangle") ? new String[] {"demo", "zigzag", "--no-view", "--triangle", c[1]}
+                    : c[0].equals("width") ? new String[] {"demo", "zigzag", "--no-view", "--width", c[1]}
+                    : new String[] {"demo", "zigzag", "--no-view", "--width", "1", "--thickness", c[1]};
+            Run run = cli(args);
+            assertEquals(2, run.code(), run.err());
+            assertEquals("ifold: option " + c[2] + ": " + problems.get(0).message(), run.err().lines().findFirst().orElseThrow(),
+                    "the same message as the command line");
+            JobFailure failure = assertThrows(JobFailure.class, () -> Planning.plan(job, Progress.NONE), "nothing runs");
+            assertEquals(c[0], failure.problem().field());
+        }
+    }
+
+    @Test
+    void textThatIsNoNumberIsItsFieldsProblemAndEveryFieldIsMarked() {
+        List<Problem> problems = Planning.check(new Job.ZigZag("0,0,10,0,3.5,8", 2, 0, -1, "wide", "thin"));
+        assertEquals(List.of(new Problem("width", "'wide' is not a number"), new Problem("thickness", "'thin' is not a number")), problems);
+        assertEquals("end", Planning.check(new Job.ZigZag("0,0,10,0,3.5,8", 1, 1, -1, "", "")).get(0).field());
+        assertEquals(List.of(), Planning.check(Job.ZigZag.DEMO));
+    }
+
+    @Test
+    void theTurnChecksItsAngleAndOverhangAsTheCommandLine() {
+        Problem tooFar = Planning.check(new Job.Turn("200", "0", "1", "")).get(0);
+        assertEquals("angle", tooFar.field());
+        Run run = cli("demo", "turn", "--no-view", "--angle", "200");
+        assertEquals("ifold: option --angle: " + tooFar.message(), run.err().lines().findFirst().orElseThrow());
+        assertEquals("angle", Planning.check(new Job.Turn(" ", "0", "1", "")).get(0).field(), "the angle has no default");
+        assertEquals("overhang", Planning.check(new Job.Turn("60", "-3", "1", "")).get(0).field());
+        assertEquals(List.of(), Planning.check(Job.Turn.DEMO));
+    }
+
+    @Test
+    void aTurnAndAScriptPlanWithTheirFolds() throws Exception {
+        Plan turn = Planning.plan(Job.Turn.DEMO, Progress.NONE);
+        assertEquals(turn.figures().get("folds"), turn.folds().size(), "folds, not the strip's end");
+        assertTrue(turn.folds().stream().allMatch(f -> f.kind().equals("turn gadget")), turn.folds().toString());
+        Plan script = Planning.plan(new Job.Script(Path.of("models", "scripts", "pleat20.fold")), Progress.NONE);
+        assertEquals(script.figures().get("folds"), script.folds().size());
+        assertEquals(script.folds().size(), script.stepCount(), "a script's animation is a step a fold");
+        assertEquals(0.0, script.folds().get(0).position(), "the first fold begins at the start");
+        assertEquals(1.0, script.folds().get(1).position(), "and the second once it is made");
+    }
+
+    @Test
+    void aModelIsWrappedAndItsFileIsItsField() throws Exception {
+        Plan cube = Planning.plan(new Job.WrapModel(Path.of("models", "cube.off"), "", ""), Progress.NONE);
+        assertEquals(1.0, (Double) cube.figures().get("coverage"), 1e-9);
+        assertEquals(12, cube.figures().get("inputTriangles"));
+        assertFalse(cube.folds().isEmpty());
+        Problem missing = Planning.check(new Job.WrapModel(dir.resolve("none.off"), "", "")).get(0);
+        assertEquals("model", missing.field());
+        assertTrue(missing.message().endsWith("none.off: no such file"), missing.message());
+        Path broken = dir.resolve("broken.off");
+        Files.writeString(broken, "OFF\n3 1 0\n0 0 0\n1 0 0\n");
+        JobFailure failure = assertThrows(JobFailure.class, () -> Planning.plan(new Job.WrapModel(broken, "", ""), Progress.NONE));
+        assertEquals("model", failure.problem().field());
+        assertFalse(failure.getMessage().contains("\n"), "one line: " + failure.getMessage());
+        JobFailure tooWide = assertThrows(JobFailure.class,
+                () -> Planning.plan(new Job.WrapModel(Path.of("models", "cube.off"), "5", ""), Progress.NONE));
+        Run run = cli("wrap", "models/cube.off", "--no-view", "--width", "5");
+        assertEquals("ifold: " + tooWide.getMessage(), run.err().strip(), "a width too wide for the triangles: the command line's message");
+    }
+
+    @Test
+    void theWrapsLimitOnFacesIsItsFieldsProblem() throws Exception {
+        Path cube = Path.of("models", "cube.off");
+        Problem zero = Planning.check(new Job.WrapModel(cube, "", "", "0")).get(0);
+        assertEquals("maxFaces", zero.field());
+        Run run = cli("wrap", cube.toString(), "--no-view", "--max-faces", "0");
+        assertEquals("ifold: option --max-faces: " + zero.message(), run.err().strip());
+        assertEquals("maxFaces", Planning.check(new Job.WrapModel(cube, "", "", "many")).get(0).field());
+        JobFailure few = assertThrows(JobFailure.class, () -> Planning.plan(new Job.WrapModel(cube, "", "", "50"), Progress.NONE));
+        assertEquals("maxFaces", few.problem().field(), "a wrap stopped by the limit marks the limit");
+    }
+
+    @Test
+    void aCancelledPlanStopsAtItsNextStage() {
+        Progress cancelled = new Progress() {
+            @Override
+            public void stage(String what) {
+            }
+
+            @Override
+            public void done(int done, int total) {
+            }
+
+            @Override
+            public boolean cancelled() {
+                return true;
+            }
+        };
+        assertThrows(CancellationException.class, () -> Planning.plan(Job.ZigZag.DEMO, cancelled));
+        assertThrows(CancellationException.class, () -> Planning.plan(new Job.WrapModel(Path.of("models", "cube.off"), "", ""), cancelled));
+    }
+
+    @Test
+    void eachExportSceneIsNewSoThatTheViewKeepsItsOwn() throws Exception {
+        Plan plan = Planning.plan(Job.ZigZag.DEMO, Progress.NONE);
+        Plan.Shown one = plan.newScene();
+        assertTrue(one.scene() != plan.shown().scene() && one.scene() != plan.newScene().scene());
+        assertEquals(plan.stepCount(), one.animation().stepCount());
+        Map<String, Object> figures = plan.figures();
+        assertEquals("C", figures.get("start"));
+    }
+}
