@@ -8,8 +8,9 @@ import javax.swing.table.AbstractTableModel;
 
 /**
  * The figures of the current result as the {@code --report} JSON holds them, one row a value:
- * a nested figure by its path ("folds.tucks", "strips.1.length"), a number as the shortest
- * decimal that reads back as it (what the JSON writes).
+ * a nested figure by its path ("folds.tucks", "strips.1.length"), a number to six significant
+ * digits so that it reads at a glance in its cell, and under the mouse as the shortest decimal
+ * that reads back as it (what the JSON writes).
  */
 final class ReportPanel extends JTable {
     private static final long serialVersionUID = 1L;
@@ -28,7 +29,7 @@ final class ReportPanel extends JTable {
     @Override
     public String getToolTipText(java.awt.event.MouseEvent e) {
         int row = rowAtPoint(e.getPoint());
-        return row < 0 ? null : rows.getValueAt(row, 0) + " = " + rows.getValueAt(row, 1);
+        return row < 0 ? null : rows.rows.get(row)[0] + " = " + rows.rows.get(row)[2];
     }
 
     void show(Map<String, Object> figures) {
@@ -59,10 +60,21 @@ final class ReportPanel extends JTable {
                 flatten(prefix + "." + (i + 1), list.get(i), out);
             }
         } else if (value instanceof Double d) {
-            out.add(new String[] {prefix, d == Math.rint(d) && Math.abs(d) < 1e15 ? Long.toString(d.longValue()) : d.toString()});
+            String exact = d == Math.rint(d) && Math.abs(d) < 1e15 ? Long.toString(d.longValue()) : d.toString();
+            out.add(new String[] {prefix, readable(d, exact), exact});
         } else {
-            out.add(new String[] {prefix, String.valueOf(value)});
+            out.add(new String[] {prefix, String.valueOf(value), String.valueOf(value)});
         }
+    }
+
+    /** Six significant digits, plainly written between 1e-4 and 1e7, in powers of ten beyond. */
+    static String readable(double d, String exact) {
+        if (!Double.isFinite(d) || d == 0 || exact.length() <= 8) {
+            return exact;
+        }
+        java.math.BigDecimal rounded = new java.math.BigDecimal(d).round(new java.math.MathContext(6)).stripTrailingZeros();
+        double size = Math.abs(d);
+        return size >= 1e-4 && size < 1e7 ? rounded.toPlainString() : rounded.toString().replace("E", "e");
     }
 
     private static final class Rows extends AbstractTableModel {
