@@ -347,7 +347,40 @@ public final class Wrap {
      * @throws WrapException if the width is too wide for a triangle, or a triangle's excess cannot be tucked
      */
     public static Result wrap(HamiltonianRefinement.Result refinement, Options options) throws WrapException {
-        return wrap(refinement.mesh(), refinement.componentStart(), options);
+        return wrap(refinement.mesh(), refinement.componentStart(), options, Watcher.NONE);
+    }
+
+    /**
+     * Like {@link #wrap(HamiltonianRefinement.Result, Options)}, told to {@code watcher} as it goes.
+     *
+     * @throws java.util.concurrent.CancellationException once the watcher says stop
+     */
+    public static Result wrap(HamiltonianRefinement.Result refinement, Options options, Watcher watcher) throws WrapException {
+        return wrap(refinement.mesh(), refinement.componentStart(), options, watcher);
+    }
+
+    /**
+     * Who watches a wrap while it folds (a window's progress bar and its Cancel): told as each
+     * triangle is wrapped, and asked at every fold whether to stop.
+     */
+    public interface Watcher {
+        /** {@code done} of the {@code total} triangles of all paths are wrapped. */
+        void wrapped(int done, int total);
+
+        /** Whether to stop: the wrap then throws {@link java.util.concurrent.CancellationException} at its next fold. */
+        boolean stopped();
+
+        /** Nobody watches, nothing stops. */
+        Watcher NONE = new Watcher() {
+            @Override
+            public void wrapped(int done, int total) {
+            }
+
+            @Override
+            public boolean stopped() {
+                return false;
+            }
+        };
     }
 
     /**
@@ -359,6 +392,15 @@ public final class Wrap {
      * @throws IllegalStateException if consecutive triangles of a path share no edge
      */
     public static Result wrap(IndexedPolygons path, int[] componentStart, Options options) throws WrapException {
+        return wrap(path, componentStart, options, Watcher.NONE);
+    }
+
+    /**
+     * Like {@link #wrap(IndexedPolygons, int[], Options)}, told to {@code watcher} as it goes.
+     *
+     * @throws java.util.concurrent.CancellationException once the watcher says stop
+     */
+    public static Result wrap(IndexedPolygons path, int[] componentStart, Options options, Watcher watcher) throws WrapException {
         IndexedPolygons mesh = path;
         HostFrame[] frames = new HostFrame[mesh.faceCount()];
         double size = modelSize(mesh);
@@ -416,7 +458,9 @@ public final class Wrap {
         for (int c = 0; c < plans.size(); c++) {
             PathPlan plan = plans.get(c);
             try {
-                strips.add(new Folding(mesh, plan, c, width, thickness, tolerance, steps, options.maxFaces()).fold());
+                Folding folding = new Folding(mesh, plan, c, width, thickness, tolerance, steps, options.maxFaces());
+                folding.watch(watcher, plan.first, mesh.faceCount());
+                strips.add(folding.fold());
             } catch (FoldException e) {
                 throw new WrapException(e.getMessage());
             }
@@ -679,6 +723,10 @@ public final class Wrap {
         private String detail = "";
         private String passNote = "";
         private final int maxFaces;
+        private Watcher watcher = Watcher.NONE;
+        /** Triangles of earlier paths, and of all paths: for the watcher. */
+        private int firstDone;
+        private int totalTriangles;
 
         Folding(IndexedPolygons mesh, PathPlan plan, int strip, double width, double thickness, double tolerance, List<Step> steps,
                 int maxFaces) {
@@ -701,6 +749,7 @@ public final class Wrap {
                 wrapTriangle(i);
                 tuckAll(i);
                 after[i] = sheet.faceCount();
+                watcher.wrapped(firstDone + i + 1, totalTriangles);
             }
             return new Strip(sheet, plan.first, plan.m, after);
         }
@@ -929,7 +978,17 @@ public final class Wrap {
         }
 
         /** Stops the wrap at the fold that takes the paper past the limit, before memory runs out. */
+        /** Tells {@code watcher} of this path's triangles as the {@code first}-th and on of {@code total}. */
+        void watch(Watcher watcher, int first, int total) {
+            this.watcher = watcher;
+            this.firstDone = first;
+            this.totalTriangles = total;
+        }
+
         private void checkFaces() throws FaceLimitException {
+            if (watcher.stopped()) {
+                throw new java.util.concurrent.CancellationException("the wrap was stopped");
+            }
             if (sheet.faceCount() > maxFaces) {
                 throw new FaceLimitException(String.format(Locale.ROOT, "the strip has %d faces of paper on triangle %d of %d on the "
                         + "path (%s), more than the limit of %d faces", sheet.faceCount(), pathIndex + 1, plan.m,

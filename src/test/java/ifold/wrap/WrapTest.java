@@ -315,4 +315,41 @@ class WrapTest {
         assertEquals(parameter, e.parameter(), e.getMessage());
         return e;
     }
+
+    /** A watcher hears every triangle wrapped, in order, and stops the wrap at the next fold when it says so. */
+    @Test
+    void aWatcherSeesEachTriangleAndCanStopTheWrap() throws Exception {
+        HamiltonianRefinement.Result refinement = HamiltonianRefinement.refine(build(Solids.cube()));
+        java.util.List<Integer> heard = new java.util.ArrayList<>();
+        Wrap.wrap(refinement, new Wrap.Options(Double.NaN, Double.NaN), new Wrap.Watcher() {
+            @Override
+            public void wrapped(int done, int total) {
+                assertEquals(58, total);
+                heard.add(done);
+            }
+
+            @Override
+            public boolean stopped() {
+                return false;
+            }
+        });
+        assertEquals(58, heard.size());
+        for (int i = 0; i < 58; i++) {
+            assertEquals(i + 1, heard.get(i));
+        }
+        int[] wrapped = {0};
+        assertThrows(java.util.concurrent.CancellationException.class,
+                () -> Wrap.wrap(refinement, new Wrap.Options(Double.NaN, Double.NaN), new Wrap.Watcher() {
+                    @Override
+                    public void wrapped(int done, int total) {
+                        wrapped[0] = done;
+                    }
+
+                    @Override
+                    public boolean stopped() {
+                        return wrapped[0] >= 5;
+                    }
+                }));
+        assertEquals(5, wrapped[0], "stopped at the first fold after the fifth triangle");
+    }
 }

@@ -184,7 +184,7 @@ public final class Planning {
         progress.stage("wrapping the triangle");
         Wrap.Result result;
         try {
-            result = Wrap.wrap(path, new int[] {0, 1}, options);
+            result = Wrap.wrap(path, new int[] {0, 1}, options, watcher(progress));
         } catch (Wrap.WrapException e) {
             throw new JobFailure("cannot wrap this triangle: " + e.getMessage());
         }
@@ -246,7 +246,7 @@ public final class Planning {
         progress.stage("wrapping " + refinement.mesh().faceCount() + " triangles");
         Wrap.Result result;
         try {
-            result = Wrap.wrap(refinement, options);
+            result = Wrap.wrap(refinement, options, watcher(progress));
         } catch (Wrap.FaceLimitException e) {
             throw new JobFailure(new Problem("maxFaces", model + ": cannot wrap: " + e.getMessage() + " (Max faces raises it)"));
         } catch (Wrap.WrapException e) {
@@ -373,5 +373,23 @@ public final class Planning {
             return file + ": permission denied";
         }
         return file + ": cannot read: " + e.getMessage();
+    }
+
+    /**
+     * The wrap as the window sees it: each triangle wrapped moves the progress bar, and Cancel
+     * (or a newer plan) stops it at its next fold rather than after the whole wrap.
+     */
+    private static Wrap.Watcher watcher(Progress progress) {
+        return new Wrap.Watcher() {
+            @Override
+            public void wrapped(int done, int total) {
+                progress.done(done, total);
+            }
+
+            @Override
+            public boolean stopped() {
+                return progress.cancelled();
+            }
+        };
     }
 }

@@ -12,8 +12,9 @@ import java.util.concurrent.atomic.AtomicLong;
  * result or failure) reaches the listener through {@code deliver}, which in the window is the
  * event thread; a superseded or cancelled task reports nothing more.
  *
- * <p>The planner cannot be stopped in the middle of a fold, so a superseded task may go on
- * working on its own thread until its next {@link Progress#check()}; it never delays the next.
+ * <p>A superseded task may go on working on its own thread until it next looks at its
+ * {@link Progress}: a wrap does at every fold ({@link ifold.wrap.Wrap.Watcher}), other stages
+ * (reading, refining, analysing) between them. It never delays the next.
  */
 public final class Worker {
     /** Work done in the background. */

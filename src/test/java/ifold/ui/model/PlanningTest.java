@@ -165,6 +165,32 @@ class PlanningTest {
         assertThrows(CancellationException.class, () -> Planning.plan(new Job.WrapModel(Path.of("models", "cube.off"), "", ""), cancelled));
     }
 
+    /** Cancel stops a wrap in the middle, not after it: the progress bar had moved, and not to the end. */
+    @Test
+    void aCancelledWrapStopsMidWrapAndItsProgressWasReported() {
+        int[] done = {0, 0};
+        Progress cancelledMidWrap = new Progress() {
+            @Override
+            public void stage(String what) {
+            }
+
+            @Override
+            public void done(int count, int total) {
+                done[0] = count;
+                done[1] = total;
+            }
+
+            @Override
+            public boolean cancelled() {
+                return done[0] >= 10;
+            }
+        };
+        assertThrows(CancellationException.class,
+                () -> Planning.plan(new Job.WrapModel(Path.of("models", "icosahedron.off"), "", ""), cancelledMidWrap));
+        assertEquals(10, done[0], "stopped after the tenth triangle");
+        assertEquals(98, done[1], "out of the refinement's 98");
+    }
+
     @Test
     void eachExportSceneIsNewSoThatTheViewKeepsItsOwn() throws Exception {
         Plan plan = Planning.plan(Job.ZigZag.DEMO, Progress.NONE);
