@@ -261,6 +261,18 @@ public final class Wrap {
         }
     }
 
+    /**
+     * A strip too wide for a triangle of the path: an error in the width asked for, for this
+     * model (a window marks its width field; the message names the triangle and the widest).
+     */
+    public static final class TooWideException extends WrapException {
+        private static final long serialVersionUID = 1L;
+
+        public TooWideException(String message) {
+            super(message);
+        }
+    }
+
     /** A wrap that would make more faces of paper than {@link Options#maxFaces} allows. */
     public static final class FaceLimitException extends WrapException {
         private static final long serialVersionUID = 1L;
@@ -423,7 +435,7 @@ public final class Wrap {
             PathPlan plan = plans.get(c);
             for (int i = 0; i + 1 < plan.m; i++) {
                 if (plan.frames[i].corners()[5] < width * (1 - 1e-12)) {
-                    throw new WrapException(tooWide(mesh, plan.first + i, i, plan.m, width, plan.frames[i].corners()[5]));
+                    throw new TooWideException(tooWide(mesh, plan.first + i, i, plan.m, width, plan.frames[i].corners()[5]));
                 }
             }
             chooseLastStart(mesh, plan, width);
@@ -584,7 +596,7 @@ public final class Wrap {
     private static void chooseLastStart(IndexedPolygons mesh, PathPlan plan, double width) throws WrapException {
         if (plan.m == 1) {
             if (plan.frames[0].corners()[5] < width * (1 - 1e-12)) {
-                throw new WrapException(tooWide(mesh, plan.first, 0, 1, width, plan.frames[0].corners()[5]));
+                throw new TooWideException(tooWide(mesh, plan.first, 0, 1, width, plan.frames[0].corners()[5]));
             }
             return;
         }
@@ -602,7 +614,7 @@ public final class Wrap {
                 return;
             }
         }
-        throw new WrapException(tooWide(mesh, plan.first + last, last, plan.m, width, plan.frames[last].corners()[5]));
+        throw new TooWideException(tooWide(mesh, plan.first + last, last, plan.m, width, plan.frames[last].corners()[5]));
     }
 
     static int passes(double h, double width) {

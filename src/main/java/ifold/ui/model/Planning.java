@@ -249,6 +249,8 @@ public final class Planning {
             result = Wrap.wrap(refinement, options, watcher(progress));
         } catch (Wrap.FaceLimitException e) {
             throw new JobFailure(new Problem("maxFaces", model + ": cannot wrap: " + e.getMessage() + " (Max faces raises it)"));
+        } catch (Wrap.TooWideException e) {
+            throw new JobFailure(new Problem("width", model + ": cannot wrap: " + e.getMessage()));
         } catch (Wrap.WrapException e) {
             throw new JobFailure(model + ": cannot wrap: " + e.getMessage());
         }

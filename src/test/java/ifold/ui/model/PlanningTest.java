@@ -143,6 +143,10 @@ class PlanningTest {
         assertEquals("maxFaces", Planning.check(new Job.WrapModel(cube, "", "", "many")).get(0).field());
         JobFailure few = assertThrows(JobFailure.class, () -> Planning.plan(new Job.WrapModel(cube, "", "", "50"), Progress.NONE));
         assertEquals("maxFaces", few.problem().field(), "a wrap stopped by the limit marks the limit");
+        JobFailure wide = assertThrows(JobFailure.class, () -> Planning.plan(new Job.WrapModel(cube, "0.3", "", ""), Progress.NONE));
+        assertEquals("width", wide.problem().field(), "a strip too wide for this model marks the width");
+        Run tooWide = cli("wrap", cube.toString(), "--no-view", "--width", "0.3");
+        assertEquals("ifold: " + wide.problem().message(), tooWide.err().strip(), "with the command line's message");
     }
 
     @Test
