@@ -100,14 +100,17 @@ final class WrapCommand implements Callable<Integer> {
         HamiltonianRefinement.Result refinement = HamiltonianRefinement.refine(mesh);
         long refinedAt = System.nanoTime();
         Wrap.Result result;
+        ProgressBar.WrapBar bar = ProgressBar.wrapping(err, refinement.mesh().faceCount());
         try {
-            result = Wrap.wrap(refinement, options);
+            result = Wrap.wrap(refinement, options, bar);
         } catch (ParameterException e) {
             throw UserError.usage(e);
         } catch (Wrap.FaceLimitException e) {
             throw new UserError(model + ": cannot wrap: " + e.getMessage() + " (--max-faces raises it)");
         } catch (Wrap.WrapException e) {
             throw new UserError(model + ": cannot wrap: " + e.getMessage());
+        } finally {
+            bar.wipe(); // before the summary or the error
         }
         long wrappedAt = System.nanoTime();
         List<WrapGeometry> geometries = new ArrayList<>();
