@@ -28,16 +28,18 @@ final class ByteTokenizer implements Closeable {
     /** Refill size; also the longest token accepted, which keeps garbage input from growing memory. */
     static final int BUFFER_SIZE = 1 << 16;
 
-    // Byte classes: what each byte value means to the tokenizer.
-    private static final byte PART = 0;
-    private static final byte SPACE = 1;
-    private static final byte LF = 2;
-    private static final byte CR = 3;
-    private static final byte HASH = 4;
-    private static final byte BINARY = 5;
+    // Byte classes: what each byte value means to the tokenizer (and to ParallelOffReader's
+    // counting, which must split lines exactly as the tokenizer does).
+    static final byte PART = 0;
+    static final byte SPACE = 1;
+    static final byte LF = 2;
+    static final byte CR = 3;
+    static final byte HASH = 4;
+    static final byte BINARY = 5;
     private static final byte BACKSLASH = 6;
 
-    private static final byte[] CLASSES = new byte[256];
+    /** The class of each byte value, by {@code b & 0xFF}; where a backslash is a byte like any other (OFF). Never written after the class is loaded. */
+    static final byte[] CLASSES = new byte[256];
 
     static {
         for (int b = 0; b < 32; b++) {

@@ -183,10 +183,10 @@ final class ParallelOffReader {
 
     /**
      * Counts the line breaks (CR, LF or CRLF) and the lines with a token in [from, to), as
-     * {@link ByteTokenizer} splits them: {@code #} starts a comment, space, tab, vertical tab
-     * and form feed separate tokens. Control bytes (binary content for the tokenizer) and a
-     * {@code #} right after a point (MSVC's {@code 1.#INF}, one token to the tokenizer) make
-     * the piece not plain.
+     * {@link ByteTokenizer} splits them, by its classes of bytes: {@code #} starts a comment,
+     * space, tab, vertical tab and form feed separate tokens. Control bytes (binary content
+     * for the tokenizer) and a {@code #} right after a point (MSVC's {@code 1.#INF}, one token
+     * to the tokenizer) make the piece not plain.
      */
     private static Count count(FileChannel channel, long from, long to) throws IOException {
         java.nio.MappedByteBuffer map = channel.map(FileChannel.MapMode.READ_ONLY, from, to - from);
@@ -199,31 +199,29 @@ final class ParallelOffReader {
         byte previous = '\n';
         for (int i = 0; i < n; i++) {
             byte c = map.get(i);
-            byte kind = KINDS[c & 0xFF];
-            if (kind == TOKEN_BYTE) {
+            byte kind = ByteTokenizer.CLASSES[c & 0xFF];
+            if (kind == ByteTokenizer.PART) {
                 afterCr = false;
                 token |= !comment;
-            } else if (kind == SEPARATOR) {
+            } else if (kind == ByteTokenizer.SPACE) {
                 afterCr = false;
-            } else if (kind == LINE_BREAK) {
-                if (c == '\n' && afterCr) {
-                    afterCr = false; // the LF of a CRLF: one line break
-                } else {
-                    breaks++;
-                    if (token) {
-                        records++;
-                    }
-                    token = false;
-                    comment = false;
-                    afterCr = c == '\r';
+            } else if (kind == ByteTokenizer.LF && afterCr) {
+                afterCr = false; // the LF of a CRLF: one line break
+            } else if (kind == ByteTokenizer.LF || kind == ByteTokenizer.CR) {
+                breaks++;
+                if (token) {
+                    records++;
                 }
-            } else if (kind == HASH) {
+                token = false;
+                comment = false;
+                afterCr = kind == ByteTokenizer.CR;
+            } else if (kind == ByteTokenizer.HASH) {
                 afterCr = false;
                 if (!comment && previous == '.') {
                     return new Count(breaks, records, false);
                 }
                 comment = true;
-            } else if (!comment || c == 0) { // a control byte: binary content, but for all but NUL in a comment
+            } else if (!comment || c == 0) { // binary content; in a comment only a NUL is
                 return new Count(breaks, records, false);
             }
             previous = c;
@@ -232,28 +230,6 @@ final class ParallelOffReader {
             records++; // the last line of the file, without a line break
         }
         return new Count(breaks, records, true);
-    }
-
-    private static final byte TOKEN_BYTE = 0;
-    private static final byte SEPARATOR = 1;
-    private static final byte LINE_BREAK = 2;
-    private static final byte HASH = 3;
-    private static final byte CONTROL = 4;
-    /** What each byte is to the counting, as to {@link ByteTokenizer}. */
-    private static final byte[] KINDS = new byte[256];
-
-    static {
-        for (int b = 0; b < 32; b++) {
-            KINDS[b] = CONTROL;
-        }
-        KINDS[0x7F] = CONTROL;
-        KINDS[' '] = SEPARATOR;
-        KINDS['\t'] = SEPARATOR;
-        KINDS[0x0B] = SEPARATOR;
-        KINDS[0x0C] = SEPARATOR;
-        KINDS['\n'] = LINE_BREAK;
-        KINDS['\r'] = LINE_BREAK;
-        KINDS['#'] = HASH;
     }
 
     /** The bytes of [from, to) of a file, read at their positions so that pieces share one channel. */
