@@ -270,12 +270,6 @@ public final class MeshBuilder {
     // ---- step 2: duplicate faces ------------------------------------------------------------
 
     /**
-     * Marks each face with the same vertex set as an earlier one, and counts it as repaired
-     * (strict mode throws at the first).
-     *
-     * @return which faces to drop, or null if none
-     */
-    /**
      * For triangles, once the mates are known: the faces that may have a duplicate. Two
      * triangles on the same three vertices share all three edges, so a triangle with a
      * duplicate has no edge of its own (a boundary mate), and no edge shared with exactly one
@@ -295,8 +289,11 @@ public final class MeshBuilder {
     }
 
     /**
-     * Marks every face with the same vertex set as an earlier one, looking only at the faces of
-     * {@code candidates} (null for all): a face that is not one has no duplicate either way.
+     * Marks each face with the same vertex set as an earlier one, and counts it as repaired
+     * (strict mode throws at the first); looks only at the faces of {@code candidates} (null for
+     * all): a face that is not one has no duplicate either way.
+     *
+     * @return which faces to drop, or null if none
      */
     private boolean[] findDuplicateFaces(boolean[] candidates) throws InvalidMeshException {
         int count = wFaceCount;
