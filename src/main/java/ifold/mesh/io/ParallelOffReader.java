@@ -35,8 +35,8 @@ final class ParallelOffReader {
     static final long MIN_BYTES = 1 << 22;
 
     /**
-     * The fewest threads it reads with unless {@code ifold.threads} asks: on two cores it was no
-     * faster in a fresh JVM (bench/run: 0.31-0.37 s against 0.28-0.33 s for 1.4M triangles,
+     * The fewest threads it reads with unless {@code ifold.threads} asks: on two cores it is
+     * slower in a fresh JVM (bench/run: 0.36 s against 0.24 s read whole for 1.4M triangles,
      * though 1.4 times as fast once warm), as the compiler threads warming the parser up take
      * the second core.
      */
