@@ -25,7 +25,12 @@ final class ProgressBar implements FrameSink.Progress {
      * a log or a pipe, where the wrap's one summary line says it all).
      */
     static WrapBar wrapping(PrintWriter out, int triangles) {
-        return new WrapBar(out, ON_TERMINAL && triangles >= LONG_WRAP);
+        return wrapping(out, triangles, ON_TERMINAL);
+    }
+
+    /** {@link #wrapping(PrintWriter, int)}, as on a terminal or not. */
+    static WrapBar wrapping(PrintWriter out, int triangles, boolean terminal) {
+        return new WrapBar(out, terminal && triangles >= LONG_WRAP);
     }
 
     /** A wrap's bar: {@link #wipe()} clears it, however the wrap ended, before anything else is printed. */
@@ -65,7 +70,7 @@ final class ProgressBar implements FrameSink.Progress {
     }
 
     /** Triangles on the path from which a wrap takes long enough (a second or more) to show its progress. */
-    private static final int LONG_WRAP = 1000;
+    static final int LONG_WRAP = 1000;
 
     @Override
     public void framesDone(int done, int total) {
