@@ -583,12 +583,15 @@ final class MainWindow extends JFrame {
             say("nothing to export yet");
             return;
         }
-        write(what, file, task, summary -> say(summary));
+        write("exporting " + what, "cannot export the " + what, file, task, summary -> say(summary));
     }
 
-    /** Writes {@code file} in the background with progress and Cancel; {@code written} hears the summary. */
-    private void write(String what, Path file, Worker.Task<String> task, Consumer<String> written) {
-        workStarted("exporting " + what);
+    /**
+     * Writes {@code file} in the background with progress and Cancel; {@code written} hears the
+     * summary, and a failure is said after {@code failed} ("cannot export the movie").
+     */
+    private void write(String doing, String failed, Path file, Worker.Task<String> task, Consumer<String> written) {
+        workStarted(doing);
         exporter.submit(task, new Worker.Listener<String>() {
             @Override
             public void stage(String text) {
@@ -613,8 +616,9 @@ final class MainWindow extends JFrame {
             @Override
             public void failed(Problem problem) {
                 workEnded();
-                say("cannot export the " + what + ": " + problem.message());
-                JOptionPane.showMessageDialog(MainWindow.this, problem.message(), "Export failed", JOptionPane.ERROR_MESSAGE);
+                say(failed + ": " + problem.message());
+                String title = Character.toUpperCase(failed.charAt(0)) + failed.substring(1);
+                JOptionPane.showMessageDialog(MainWindow.this, problem.message(), title, JOptionPane.ERROR_MESSAGE);
             }
         });
     }
@@ -767,7 +771,7 @@ final class MainWindow extends JFrame {
             return;
         }
         boolean strict = parameters.wrapStrict.isSelected();
-        write("refinement", file, progress -> {
+        write("exporting the refinement", "cannot export the refinement", file, progress -> {
             Exports.Refined refined = Exports.refinement(model, strict, file, progress);
             return String.format(Locale.ROOT, "wrote %s: %d triangles in %d component(s) -> %d triangles, in path order", file,
                     refined.inputTriangles(), refined.components(), refined.outputTriangles());
@@ -797,7 +801,7 @@ final class MainWindow extends JFrame {
 
     /** Makes {@code model}, writes it to {@code file}, and opens it to wrap once it is written. */
     void newModel(NewModel model, Path file) {
-        write("new model", file, progress -> {
+        write("making the " + model.shape(), "cannot make the " + model.shape(), file, progress -> {
             NewModel.Made made = model.write(file, progress);
             return "wrote " + made.file() + ": " + made.vertices() + " vertices, " + made.faces() + " faces";
         }, summary -> {

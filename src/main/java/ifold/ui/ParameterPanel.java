@@ -110,7 +110,7 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
         wrap.row("width", "Width", wrapWidth, "blank: a third of the widest possible");
         wrap.row("thickness", "Thickness", wrapThickness, "blank: the width / 80");
         wrap.row("maxFaces", "Max faces", wrapMaxFaces, "blank: 500,000 (about 2.4 kB each)");
-        wrap.row("strict", "Strict", wrapStrict, "refuse defective input instead of repairing it, as --strict");
+        wrap.row("strict", "Strict", wrapStrict, "instead of repairing it (--strict); for the information and refinement too");
         wrapStrict.addActionListener(e -> edited());
         deck.add(top(wrap.panel), "wrap");
 
