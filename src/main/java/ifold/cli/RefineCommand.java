@@ -1,6 +1,7 @@
 package ifold.cli;
 
 import ifold.job.Json;
+import ifold.job.Reports;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.io.MeshWriters;
@@ -10,7 +11,6 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.Map;
-import java.util.TreeMap;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -72,9 +72,7 @@ final class RefineCommand implements Callable<Integer> {
             report.put("outputVertices", result.mesh().vertexCount());
             report.put("minAngleInDegrees", minIn);
             report.put("minAngleOutDegrees", minOut);
-            Map<String, Object> repairs = new LinkedHashMap<>();
-            new TreeMap<>(loaded.repairs()).forEach((defect, count) -> repairs.put(defect.name().toLowerCase(java.util.Locale.ROOT), count));
-            report.put("repairs", repairs);
+            report.put("repairs", Reports.repairs(loaded.repairs()));
             Map<String, Object> seconds = new LinkedHashMap<>();
             seconds.put("parse", loaded.parseSeconds());
             seconds.put("build", loaded.buildSeconds());

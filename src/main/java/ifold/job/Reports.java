@@ -78,6 +78,13 @@ public final class Reports {
         return figures;
     }
 
+    /** The repairs made, by kind in the enum's order: {@code zero_area_face: 2}, as every report names them. */
+    public static Map<String, Object> repairs(Map<Defect, Integer> repairs) {
+        Map<String, Object> repaired = new LinkedHashMap<>();
+        new TreeMap<>(repairs).forEach((defect, count) -> repaired.put(defect.name().toLowerCase(Locale.ROOT), count));
+        return repaired;
+    }
+
     /**
      * A model's wrap: the model and its repairs, the refinement, each strip, the folds by kind,
      * layers, areas and quality, the creases.
@@ -92,9 +99,7 @@ public final class Reports {
         figures.put("inputTriangles", inputTriangles);
         figures.put("refinedTriangles", refinement.mesh().faceCount());
         figures.put("components", refinement.componentCount());
-        Map<String, Object> repaired = new LinkedHashMap<>();
-        new TreeMap<>(repairs).forEach((defect, count) -> repaired.put(defect.name().toLowerCase(Locale.ROOT), count));
-        figures.put("repairs", repaired);
+        figures.put("repairs", repairs(repairs));
         figures.put("width", result.width());
         figures.put("widestWidth", result.widest());
         figures.put("thickness", result.thickness());

@@ -4,6 +4,8 @@ import ifold.job.Scenes;
 import ifold.render.FrameExport;
 import ifold.ui.model.Exports;
 import ifold.ui.model.Job;
+import ifold.ui.model.ModelFile;
+import ifold.ui.model.NewModel;
 import ifold.ui.model.Plan;
 import ifold.ui.model.Planning;
 import ifold.ui.model.Problem;
@@ -24,6 +26,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.function.Consumer;
 import javax.swing.AbstractAction;
 import javax.swing.BorderFactory;
@@ -62,6 +65,8 @@ final class MainWindow extends JFrame {
     private final transient Settings settings;
     private final transient Worker planner = new Worker("ifold plan", SwingUtilities::invokeLater);
     private final transient Worker exporter = new Worker("ifold export", SwingUtilities::invokeLater);
+    /** Measures a model for Model information: of its own, so that it neither stops nor waits for a plan or an export. */
+    private final transient Worker inspector = new Worker("ifold info", SwingUtilities::invokeLater);
     final SceneView view;
     final ParameterPanel parameters;
     final TimelinePanel timeline;
@@ -73,6 +78,14 @@ final class MainWindow extends JFrame {
     private final JCheckBoxMenuItem showModel = new JCheckBoxMenuItem("Model", true);
     private final JCheckBoxMenuItem captions = new JCheckBoxMenuItem("Captions", true);
     private final JCheckBoxMenuItem refinement = new JCheckBoxMenuItem("Refinement and Hamiltonian path", false);
+    /** What needs a model open: the wrap's card has one. */
+    private final JMenuItem modelInformation;
+    private final JMenuItem exportRefinement;
+    /** The last Model information shown, kept open beside the window; null before the first. */
+    javax.swing.JDialog informationDialog;
+    final ReportPanel information = new ReportPanel();
+    /** The New model form, kept between askings so that it opens as it was left. */
+    final NewModelForm newModelForm = new NewModelForm();
     private transient Plan plan;
     /** Where the next export's settings start: the last ones used. */
     private transient Exports.FrameSettings frameSettings = Exports.FrameSettings.DEFAULT;
@@ -82,6 +95,11 @@ final class MainWindow extends JFrame {
     MainWindow(Settings settings) {
         super("iFold");
         this.settings = settings;
+        int ctrl = Toolkit.getDefaultToolkit().getMenuShortcutKeyMaskEx();
+        modelInformation = item("Model information...", KeyEvent.VK_I, ctrl, this::showModelInformation);
+        modelInformation.setToolTipText("the model's counts and topology, as ifold info prints them");
+        exportRefinement = item("Export refinement (OFF, OBJ)...", KeyEvent.VK_R, ctrl, this::exportRefinementAsk);
+        exportRefinement.setToolTipText("the model's Hamiltonian refinement, its triangles in path order, as ifold refine writes it");
         view = new SceneView(this::say);
         parameters = new ParameterPanel(this::planLater, this::chooseModel, this::chooseScript);
         timeline = new TimelinePanel(view);
@@ -150,6 +168,10 @@ final class MainWindow extends JFrame {
         if (isDisplayable()) {
             planner.cancel();
             exporter.cancel();
+            inspector.cancel();
+            if (informationDialog != null) {
+                informationDialog.dispose();
+            }
             view.dispose();
             saveSettings();
         }
@@ -168,6 +190,8 @@ final class MainWindow extends JFrame {
         file.add(item("Open model (OFF, OBJ)...", KeyEvent.VK_O, ctrl, this::chooseModel));
         file.add(item("Open fold script or FOLD...", KeyEvent.VK_O, ctrl | shift, this::chooseScript));
         file.add(recent);
+        file.add(item("New model...", KeyEvent.VK_N, ctrl, this::newModelAsk));
+        file.add(modelInformation);
         file.addSeparator();
         file.add(item("Export frames...", KeyEvent.VK_F, ctrl | shift, () -> exportFramesAsk()));
         file.add(item("Export movie (MP4, GIF)...", KeyEvent.VK_M, ctrl, () -> exportMovieAsk()));
@@ -175,6 +199,7 @@ final class MainWindow extends JFrame {
         file.add(item("Export FOLD...", KeyEvent.VK_E, ctrl | shift, () -> exportFileAsk("FOLD", "fold")));
         file.add(item("Export report (JSON)...", KeyEvent.VK_J, ctrl, () -> exportFileAsk("report", "json")));
         file.add(item("Export figure (PNG)...", KeyEvent.VK_G, ctrl, () -> exportFileAsk("figure", "png")));
+        file.add(exportRefinement);
         file.addSeparator();
         file.add(item("Quit", KeyEvent.VK_Q, ctrl, this::dispose));
         bar.add(file);
@@ -301,8 +326,7 @@ final class MainWindow extends JFrame {
     /** Opens a file: a model to wrap, or a fold script or FOLD file to play (as {@code ifold app FILE}). */
     void open(Path file) {
         String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
-        Job job = name.endsWith(".off") || name.endsWith(".obj") ? new Job.WrapModel(file, parameters.wrapWidth.getText(),
-                parameters.wrapThickness.getText(), parameters.wrapMaxFaces.getText()) : new Job.Script(file);
+        Job job = name.endsWith(".off") || name.endsWith(".obj") ? parameters.wrap(file) : new Job.Script(file);
         settings.addRecent(file);
         Path folder = file.toAbsolutePath().getParent();
         if (folder != null) {
@@ -328,8 +352,7 @@ final class MainWindow extends JFrame {
         for (Path file : settings.recent()) {
             String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
             if ((name.endsWith(".off") || name.endsWith(".obj")) && Files.isRegularFile(file)) {
-                return new Job.WrapModel(file, parameters.wrapWidth.getText(), parameters.wrapThickness.getText(),
-                        parameters.wrapMaxFaces.getText());
+                return parameters.wrap(file);
             }
         }
         return null;
@@ -378,6 +401,9 @@ final class MainWindow extends JFrame {
 
     /** The parameters changed: check them at once (marking the fields), and plan if they pass. */
     private void planLater(Job job) {
+        boolean modelOpen = parameters.model() != null;
+        modelInformation.setEnabled(modelOpen);
+        exportRefinement.setEnabled(modelOpen);
         rememberParameters(job);
         List<Problem> problems = Planning.check(job);
         parameters.mark(problems);
@@ -557,7 +583,15 @@ final class MainWindow extends JFrame {
             say("nothing to export yet");
             return;
         }
-        workStarted("exporting " + what);
+        write("exporting " + what, "cannot export the " + what, file, task, summary -> say(summary));
+    }
+
+    /**
+     * Writes {@code file} in the background with progress and Cancel; {@code written} hears the
+     * summary, and a failure is said after {@code failed} ("cannot export the movie").
+     */
+    private void write(String doing, String failed, Path file, Worker.Task<String> task, Consumer<String> written) {
+        workStarted(doing);
         exporter.submit(task, new Worker.Listener<String>() {
             @Override
             public void stage(String text) {
@@ -576,14 +610,15 @@ final class MainWindow extends JFrame {
                 if (folder != null) {
                     settings.put("folder", folder.toString());
                 }
-                say(summary);
+                written.accept(summary);
             }
 
             @Override
             public void failed(Problem problem) {
                 workEnded();
-                say("cannot export the " + what + ": " + problem.message());
-                JOptionPane.showMessageDialog(MainWindow.this, problem.message(), "Export failed", JOptionPane.ERROR_MESSAGE);
+                say(failed + ": " + problem.message());
+                String title = Character.toUpperCase(failed.charAt(0)) + failed.substring(1);
+                JOptionPane.showMessageDialog(MainWindow.this, problem.message(), title, JOptionPane.ERROR_MESSAGE);
             }
         });
     }
@@ -650,6 +685,148 @@ final class MainWindow extends JFrame {
         return chosen.toPath();
     }
 
+    // ---- The model: its information, its refinement, a new one ----
+
+    /** The model of the wrap's card, or null after saying in the status line that none is open. */
+    private Path openModel() {
+        Path model = parameters.model();
+        if (model == null) {
+            say("no model open: File, Open model or New model first");
+        }
+        return model;
+    }
+
+    /** File, Model information: the model's counts and topology, measured off the event thread, in a window beside this one. */
+    void showModelInformation() {
+        Path model = openModel();
+        if (model == null) {
+            return;
+        }
+        boolean strict = parameters.wrapStrict.isSelected();
+        workStarted("measuring " + model.getFileName());
+        inspector.submit(progress -> ModelFile.information(model, strict, progress), new Worker.Listener<Map<String, Object>>() {
+            @Override
+            public void stage(String what) {
+                say(what + "...");
+            }
+
+            @Override
+            public void done(int done, int total) {
+                MainWindow.this.done(done, total);
+            }
+
+            @Override
+            public void succeeded(Map<String, Object> figures) {
+                workEnded();
+                showInformation(model, figures);
+                say(model.getFileName() + ": " + figures.get("faces") + " faces, genus " + figures.get("genus"));
+            }
+
+            @Override
+            public void failed(Problem problem) {
+                workEnded();
+                say("no model information: " + problem.message());
+            }
+        });
+    }
+
+    private void showInformation(Path model, Map<String, Object> figures) {
+        if (informationDialog == null) {
+            informationDialog = new javax.swing.JDialog(this, false);
+            JScrollPane table = new JScrollPane(information);
+            table.setPreferredSize(new Dimension(360, 420));
+            informationDialog.add(table, BorderLayout.CENTER);
+            JButton close = new JButton("Close");
+            close.addActionListener(e -> informationDialog.setVisible(false));
+            JPanel buttons = new JPanel(new FlowLayout(FlowLayout.RIGHT));
+            buttons.add(close);
+            informationDialog.add(buttons, BorderLayout.SOUTH);
+            informationDialog.getRootPane().setDefaultButton(close);
+            informationDialog.pack();
+            informationDialog.setLocationRelativeTo(this);
+        }
+        information.show(figures);
+        informationDialog.setTitle("Model information: " + model.getFileName());
+        informationDialog.setVisible(true);
+    }
+
+    private void exportRefinementAsk() {
+        if (openModel() == null) {
+            return;
+        }
+        Path file = choose("Export refinement", true, new FileNameExtensionFilter("Meshes (OFF, OBJ)", "off", "obj"));
+        if (file == null) {
+            return;
+        }
+        if (!ModelFile.isModelName(file)) {
+            file = file.resolveSibling(file.getFileName() + ".off");
+        }
+        exportRefinement(file);
+    }
+
+    /** Writes the model's Hamiltonian refinement to {@code file}, as {@code ifold refine MODEL -o FILE} does. */
+    void exportRefinement(Path file) {
+        Path model = openModel();
+        if (model == null) {
+            return;
+        }
+        boolean strict = parameters.wrapStrict.isSelected();
+        write("exporting the refinement", "cannot export the refinement", file, progress -> {
+            Exports.Refined refined = Exports.refinement(model, strict, file, progress);
+            return String.format(Locale.ROOT, "wrote %s: %d triangles in %d component(s) -> %d triangles, in path order", file,
+                    refined.inputTriangles(), refined.components(), refined.outputTriangles());
+        }, this::say);
+    }
+
+    /** File, New model: asks the shape and its parameters (each refused at its field), where to save it, and opens it to wrap. */
+    private void newModelAsk() {
+        NewModel chosen = askNewModel();
+        if (chosen == null) {
+            return;
+        }
+        JFileChooser chooser = new JFileChooser(settings.get("folder", System.getProperty("user.dir")));
+        chooser.setDialogTitle("Save the new model");
+        chooser.setFileFilter(new FileNameExtensionFilter("Meshes (OFF, OBJ)", "off", "obj"));
+        chooser.setSelectedFile(new File(chooser.getCurrentDirectory(), chosen.fileName()));
+        File target = chooser.showSaveDialog(this) == JFileChooser.APPROVE_OPTION ? chooser.getSelectedFile() : null;
+        if (target == null) {
+            return;
+        }
+        Path file = target.toPath();
+        if (!ModelFile.isModelName(file)) {
+            file = file.resolveSibling(file.getFileName() + ".off");
+        }
+        newModel(chosen, file);
+    }
+
+    /** Makes {@code model}, writes it to {@code file}, and opens it to wrap once it is written. */
+    void newModel(NewModel model, Path file) {
+        write("making the " + model.shape(), "cannot make the " + model.shape(), file, progress -> {
+            NewModel.Made made = model.write(file, progress);
+            return "wrote " + made.file() + ": " + made.vertices() + " vertices, " + made.faces() + " faces";
+        }, summary -> {
+            open(file);
+            say(summary);
+        });
+    }
+
+    /** Asks for a shape and its parameters until they are good (each problem under its field) or the asking is cancelled. */
+    private NewModel askNewModel() {
+        newModelForm.mark(List.of());
+        while (true) {
+            if (JOptionPane.showConfirmDialog(this, newModelForm, "New model", JOptionPane.OK_CANCEL_OPTION, JOptionPane.PLAIN_MESSAGE)
+                    != JOptionPane.OK_OPTION) {
+                return null;
+            }
+            NewModel chosen = newModelForm.model();
+            List<Problem> problems = chosen.check();
+            if (problems.isEmpty()) {
+                return chosen;
+            }
+            newModelForm.mark(problems);
+        }
+    }
+
     // ---- Work in progress ----
 
     private void workStarted(String what) {
@@ -669,7 +846,7 @@ final class MainWindow extends JFrame {
     }
 
     private void workEnded() {
-        if (!planner.isBusy() && !exporter.isBusy()) {
+        if (!isWorking()) {
             progress.setVisible(false);
             progress.setStringPainted(false);
             cancel.setVisible(false);
@@ -680,6 +857,8 @@ final class MainWindow extends JFrame {
     void cancelWork() {
         if (exporter.cancel()) {
             say("export cancelled: nothing written");
+        } else if (inspector.cancel()) {
+            say("model information cancelled");
         } else if (planner.cancel()) {
             say("planning cancelled" + (plan == null ? "" : ": still showing " + plan.title()));
         }
@@ -687,7 +866,7 @@ final class MainWindow extends JFrame {
     }
 
     boolean isWorking() {
-        return planner.isBusy() || exporter.isBusy();
+        return planner.isBusy() || exporter.isBusy() || inspector.isBusy();
     }
 
     /** Waits for the export's thread to end, cancelled or not: for tests. */
@@ -720,6 +899,7 @@ final class MainWindow extends JFrame {
             settings.put("wrap.width", w.width());
             settings.put("wrap.thickness", w.thickness());
             settings.put("wrap.maxFaces", w.maxFaces());
+            settings.put("wrap.strict", Boolean.toString(w.strict()));
         }
         settings.put("job", job instanceof Job.ZigZag ? "zigzag" : job instanceof Job.Turn ? "turn" : job instanceof Job.WrapModel
                 ? "wrap" : "script");
@@ -743,6 +923,7 @@ final class MainWindow extends JFrame {
         parameters.wrapWidth.setText(settings.get("wrap.width", ""));
         parameters.wrapThickness.setText(settings.get("wrap.thickness", ""));
         parameters.wrapMaxFaces.setText(settings.get("wrap.maxFaces", ""));
+        parameters.wrapStrict.setSelected(Boolean.parseBoolean(settings.get("wrap.strict", "false")));
     }
 
     private static int clampCorner(int corner, int fallback) {

@@ -15,6 +15,7 @@ import java.util.Map;
 import java.util.function.Consumer;
 import javax.swing.BorderFactory;
 import javax.swing.JButton;
+import javax.swing.JCheckBox;
 import javax.swing.JComboBox;
 import javax.swing.JComponent;
 import javax.swing.JLabel;
@@ -28,7 +29,8 @@ import javax.swing.event.DocumentListener;
 /**
  * The parameters of the job the window folds, one card per kind: the zig-zag's triangle
  * (typed, or dragged on its sketch), its ends and entry side, width and thickness; the
- * turn's angle and overhang; the wrap's model, width and thickness; the script's file. A
+ * turn's angle and overhang; the wrap's model, width, thickness, limit on faces and strict mode;
+ * the script's file. A
  * change is told (to re-plan) a moment after the typing stops; a field the core refused is
  * outlined in red with the core's message under it.
  */
@@ -66,6 +68,7 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
     final JTextField wrapWidth = new JTextField();
     final JTextField wrapThickness = new JTextField();
     final JTextField wrapMaxFaces = new JTextField();
+    final JCheckBox wrapStrict = new JCheckBox("refuse defective input");
     // The script.
     private Path script;
     private final JLabel scriptName = new JLabel("no script");
@@ -107,6 +110,8 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
         wrap.row("width", "Width", wrapWidth, "blank: a third of the widest possible");
         wrap.row("thickness", "Thickness", wrapThickness, "blank: the width / 80");
         wrap.row("maxFaces", "Max faces", wrapMaxFaces, "blank: 500,000 (about 2.4 kB each)");
+        wrap.row("strict", "Strict", wrapStrict, "instead of repairing it (--strict); for the information and refinement too");
+        wrapStrict.addActionListener(e -> edited());
         deck.add(top(wrap.panel), "wrap");
 
         Card play = new Card("Play a fold script", "script");
@@ -242,11 +247,21 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
         return new Job.Turn(angle.getText(), overhang.getText(), turnWidth.getText(), turnThickness.getText());
     }
 
+    /** A wrap of {@code file} with the wrap's fields as they now stand, whichever card is shown. */
+    Job.WrapModel wrap(Path file) {
+        return new Job.WrapModel(file, wrapWidth.getText(), wrapThickness.getText(), wrapMaxFaces.getText(), wrapStrict.isSelected());
+    }
+
+    /** The model of the wrap's card, whichever card is shown; null before one is opened. */
+    Path model() {
+        return model;
+    }
+
     /** The job as the fields now stand. */
     Job job() {
         return switch (card) {
             case "turn" -> turn();
-            case "wrap" -> new Job.WrapModel(model, wrapWidth.getText(), wrapThickness.getText(), wrapMaxFaces.getText());
+            case "wrap" -> wrap(model);
             case "script" -> new Job.Script(script);
             default -> zigzag();
         };
@@ -269,6 +284,7 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
                 wrapWidth.setText(w.width());
                 wrapThickness.setText(w.thickness());
                 wrapMaxFaces.setText(w.maxFaces());
+                wrapStrict.setSelected(w.strict());
                 card = "wrap";
             } else if (job instanceof Job.Script s) {
                 script = s.file();

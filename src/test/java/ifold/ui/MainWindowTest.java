@@ -176,7 +176,7 @@ class MainWindowTest {
         // Every menu the issue asks for, each item with its shortcut.
         for (String item : List.of("Open model", "Open fold script", "Export frames", "Export movie", "Export OBJ", "Export FOLD",
                 "Export report", "Export figure", "Quit", "Model", "Refinement and Hamiltonian path", "Paper colours", "Captions", "Reset camera", "Underside", "Zig-zag a triangle", "Turn gadget",
-                "Wrap the model", "Play a script", "Keys")) {
+                "Wrap the model", "Play a script", "Keys", "New model", "Model information", "Export refinement")) {
             assertNotNull(onEdt(() -> menuItem(window, item).getAccelerator()), item + " has a shortcut");
         }
     }
@@ -562,6 +562,157 @@ class MainWindowTest {
         assertEquals(1000, (int) onEdt(() -> window.getWidth()));
         settled();
         assertEquals("1.2", onEdt(() -> window.report.value("stripWidth")));
+    }
+
+    /** A menu item clicked as the mouse would, later on the event thread: an item that opens a modal dialog waits in it. */
+    private static void clickLater(MainWindow window, String item) {
+        SwingUtilities.invokeLater(() -> menuItem(window, item).doClick());
+    }
+
+    /** The dialog now showing that holds a {@code type}, waited for. */
+    private static <T extends Component> T inDialog(Class<T> type) throws Exception {
+        AtomicReference<T> found = new AtomicReference<>();
+        waitFor("a dialog with a " + type.getSimpleName(), 30, () -> {
+            for (java.awt.Window shown : java.awt.Window.getWindows()) {
+                if (shown instanceof javax.swing.JDialog && shown.isShowing() && below(shown, type) != null) {
+                    found.set(below(shown, type));
+                    return true;
+                }
+            }
+            return false;
+        });
+        return found.get();
+    }
+
+    /** Answers the file chooser now showing with {@code file}, as typing its name and pressing Save would. */
+    private static void saveAs(Path file) throws Exception {
+        javax.swing.JFileChooser chooser = inDialog(javax.swing.JFileChooser.class);
+        onEdt(() -> {
+            chooser.setSelectedFile(file.toFile());
+            chooser.approveSelection();
+            return null;
+        });
+    }
+
+    /** Presses OK in the option pane now showing whose form is {@code form}. */
+    private static void pressOk(Component form) throws Exception {
+        onEdt(() -> {
+            javax.swing.JOptionPane pane = (javax.swing.JOptionPane) SwingUtilities.getAncestorOfClass(javax.swing.JOptionPane.class, form);
+            pane.setValue(javax.swing.JOptionPane.OK_OPTION);
+            return null;
+        });
+    }
+
+    @Test
+    void modelInformationShowsWhatInfoPrintsForTheOpenModel() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        assertFalse(onEdt(() -> menuItem(window, "Model information").isEnabled()), "no model open yet: the item is off");
+        assertFalse(onEdt(() -> menuItem(window, "Export refinement").isEnabled()));
+        onEdt(() -> {
+            window.open(Path.of("models", "cube.off"));
+            return null;
+        });
+        settled();
+        assertTrue(onEdt(() -> menuItem(window, "Model information").isEnabled()));
+        clickLater(window, "Model information");
+        waitFor("the model's information", 60, () -> window.informationDialog != null && window.informationDialog.isShowing());
+        assertEquals("Model information: cube.off", onEdt(() -> window.informationDialog.getTitle()));
+        CliRun info = cliRun("info", Path.of("models", "cube.off").toString());
+        assertEquals(0, info.code(), info.err());
+        for (String line : info.out().lines().toList()) {
+            String key = line.substring(0, line.indexOf(": "));
+            String value = line.substring(line.indexOf(": ") + 2);
+            if (key.equals("faceSizes")) {
+                assertEquals("6", onEdt(() -> window.information.value("faceSizes.4")), "the cube's six quads: " + value);
+            } else if (!key.equals("repairs")) {
+                assertEquals(value, onEdt(() -> window.information.value(key)), key + ", as ifold info prints it");
+            }
+        }
+        assertEquals(null, onEdt(() -> window.information.value("repairs")), "none to make");
+    }
+
+    @Test
+    void theRefinementIsExportedThroughTheMenuAsRefineWritesIt() throws Exception {
+        window = App.open(Path.of("models", "icosahedron.off"), settings());
+        settled();
+        Path file = dir.resolve("refined.obj");
+        clickLater(window, "Export refinement");
+        saveAs(file);
+        waitFor("the refinement written", 60, () -> Files.isRegularFile(file) && !window.isWorking());
+        Path cli = dir.resolve("cli.obj");
+        CliRun refine = cliRun("refine", Path.of("models", "icosahedron.off").toString(), "-o", cli.toString());
+        assertEquals(0, refine.code(), refine.err());
+        assertEquals(Files.readString(cli), Files.readString(file), "the refinement is ifold refine's, byte for byte");
+        assertTrue(onEdt(() -> window.message.getText()).startsWith("wrote " + file + ": 20 triangles"), window.message.getText());
+    }
+
+    @Test
+    void aNewModelIsMadeThroughTheMenuRefusedAtItsFieldAndWrapped() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        clickLater(window, "New model");
+        NewModelForm form = inDialog(NewModelForm.class);
+        onEdt(() -> {
+            form.shape.setSelectedItem(ifold.job.BuiltInModels.Shape.icosphere);
+            form.subdivisions.setText("9");
+            return null;
+        });
+        pressOk(form);
+        CliRun tooFine = cliRun("generate", "icosphere", "--subdivisions", "9", "-o", dir.resolve("fine.off").toString());
+        waitFor("the subdivisions refused", 30, () -> form.isShowing() && !form.note("subdivisions").startsWith("icosphere:"));
+        assertEquals(tooFine.err().lines().findFirst().orElseThrow(), "ifold: option --subdivisions: " + onEdt(() -> form.note("subdivisions")),
+                "the command line's message, at the field");
+        onEdt(() -> {
+            form.subdivisions.setText("1");
+            return null;
+        });
+        pressOk(form);
+        Path file = dir.resolve("sphere.off");
+        saveAs(file);
+        waitFor("the sphere wrapped", 60, () -> window.plan() != null && window.plan().job() instanceof Job.WrapModel w
+                && w.model().equals(file) && !window.isWorking());
+        assertEquals("80", onEdt(() -> window.report.value("inputTriangles")), "one subdivision: 80 triangles");
+        Path cli = dir.resolve("cli.off");
+        assertEquals(0, cliRun("generate", "icosphere", "--subdivisions", "1", "-o", cli.toString()).code());
+        assertEquals(Files.readString(cli), Files.readString(file), "the model is ifold generate's, byte for byte");
+    }
+
+    @Test
+    void strictModeRefusesADefectiveModelAtItsFieldAndIsRemembered() throws Exception {
+        ifold.mesh.PolygonSoup soup = ifold.mesh.Solids.tetrahedron();
+        soup.addTriangle(0, 1, 2); // a duplicate face
+        Path model = dir.resolve("dup.off");
+        ifold.mesh.io.MeshWriters.write(soup, model);
+        window = App.open(model, settings());
+        settled();
+        assertEquals("4", onEdt(() -> window.report.value("inputTriangles")), "repaired: the duplicate dropped");
+        onEdt(() -> {
+            window.parameters.wrapStrict.doClick();
+            return null;
+        });
+        waitFor("the model refused", 30, () -> window.parameters.isMarked("model"));
+        String note = onEdt(() -> window.parameters.note("model"));
+        assertTrue(note.contains("dup.off:11:") && note.contains("duplicates an earlier face") && note.endsWith("(clear Strict to repair it)"),
+                note);
+        onEdt(() -> {
+            window.dispose();
+            return null;
+        });
+        assertEquals("true", settings().get("wrap.strict", null), "remembered");
+        window = App.open(null, settings());
+        assertTrue(onEdt(() -> window.parameters.wrapStrict.isSelected()), "and set again");
+    }
+
+    /** What the command line printed and its exit code. */
+    private record CliRun(int code, String out, String err) {
+    }
+
+    private static CliRun cliRun(String... args) {
+        java.io.StringWriter out = new java.io.StringWriter();
+        java.io.StringWriter err = new java.io.StringWriter();
+        int code = ifold.cli.Main.commandLine(new java.io.PrintWriter(out), new java.io.PrintWriter(err)).execute(args);
+        return new CliRun(code, out.toString(), err.toString());
     }
 
     private static void cli(String... args) {

@@ -6,6 +6,10 @@ import ifold.image.GifWriter;
 import ifold.image.Mp4Writer;
 import ifold.io.AtomicFile;
 import ifold.job.Json;
+import ifold.mesh.HalfedgeMesh;
+import ifold.mesh.MeshBuilder;
+import ifold.mesh.io.MeshWriters;
+import ifold.refine.HamiltonianRefinement;
 import ifold.render.FrameExport;
 import ifold.render.RenderUnavailableException;
 import java.io.IOException;
@@ -18,9 +22,10 @@ import java.util.Locale;
 
 /**
  * Writing a plan out, as the command line's output options do: frames, a movie, OBJ, FOLD, the
- * report. Each is written whole or not at all: the writers work under temporary names and a
- * frame export that does not finish takes back its frames, so a cancelled export (its
- * progress's {@link Progress#check()} throws between frames) leaves no file behind.
+ * report; and a model's refinement, as {@code ifold refine} does. Each is written whole or not
+ * at all: the writers work under temporary names and a frame export that does not finish takes
+ * back its frames, so a cancelled export (its progress's {@link Progress#check()} throws between
+ * frames) leaves no file behind.
  */
 public final class Exports {
     private Exports() {
@@ -185,6 +190,37 @@ public final class Exports {
         } catch (IOException e) {
             throw new JobFailure("cannot write " + file + ": " + e.getMessage());
         }
+    }
+
+    /** A refinement written: the model's triangles, and the refinement's (5n - 2c for c components). */
+    public record Refined(int inputTriangles, int components, int outputTriangles) {
+    }
+
+    /**
+     * Writes the Hamiltonian refinement of {@code model} to {@code file} (.off or .obj), its
+     * triangles in path order, byte for byte as {@code ifold refine MODEL -o FILE} writes it.
+     * Cancel is looked at while the file is written too: the writer then discards it.
+     *
+     * @param strict refuse defective input instead of repairing it, as {@code --strict}
+     */
+    public static Refined refinement(Path model, boolean strict, Path file, Progress progress) throws JobFailure {
+        if (!ModelFile.isModelName(file)) {
+            throw new JobFailure(new Problem("file", "a refinement is written as .off or .obj, got " + file.getFileName()));
+        }
+        ModelFile loaded = ModelFile.load(model, new MeshBuilder.Options(strict, true), progress);
+        loaded.requireFaces(model, "refine");
+        HalfedgeMesh mesh = loaded.built().mesh();
+        progress.check();
+        progress.stage("refining " + mesh.faceCount() + " triangles");
+        HamiltonianRefinement.Result result = HamiltonianRefinement.refine(mesh);
+        progress.check();
+        progress.stage("writing " + file.getFileName());
+        try {
+            MeshWriters.write(new CancellableMesh(result.mesh(), progress), file);
+        } catch (IOException e) {
+            throw new JobFailure("cannot write " + e.getMessage());
+        }
+        return new Refined(mesh.faceCount(), result.componentCount(), result.mesh().faceCount());
     }
 
     private static void requireValid(List<Problem> problems) throws JobFailure {

@@ -31,10 +31,15 @@ public sealed interface Job {
      * A model (OFF or OBJ) wrapped along its Hamiltonian path.
      *
      * @param maxFaces the most faces of paper the wrap may make; blank for the command line's default
+     * @param strict refuse defective input instead of repairing it, as {@code --strict}
      */
-    record WrapModel(Path model, String width, String thickness, String maxFaces) implements Job {
+    record WrapModel(Path model, String width, String thickness, String maxFaces, boolean strict) implements Job {
         public WrapModel(Path model, String width, String thickness) {
-            this(model, width, thickness, "");
+            this(model, width, thickness, "", false);
+        }
+
+        public WrapModel(Path model, String width, String thickness, String maxFaces) {
+            this(model, width, thickness, maxFaces, false);
         }
     }
 

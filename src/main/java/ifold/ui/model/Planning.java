@@ -8,11 +8,8 @@ import ifold.job.Scenes;
 import ifold.job.Scripts;
 import ifold.job.Triangles;
 import ifold.mesh.HalfedgeMesh;
-import ifold.mesh.InvalidMeshException;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.PolygonSoup;
-import ifold.mesh.io.MeshFormatException;
-import ifold.mesh.io.MeshReaders;
 import ifold.refine.HamiltonianRefinement;
 import ifold.scene.Animation;
 import ifold.scene.Scene;
@@ -28,9 +25,7 @@ import ifold.wrap.WrapAnalysis;
 import ifold.wrap.WrapExport;
 import ifold.wrap.WrapGeometry;
 import java.io.IOException;
-import java.nio.file.AccessDeniedException;
 import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -221,24 +216,10 @@ public final class Planning {
     private static Plan wrap(Job.WrapModel job, Progress progress) throws JobFailure {
         Wrap.Options options = wrapOptions(job, new ArrayList<>());
         Path model = job.model();
-        progress.stage("reading " + model.getFileName());
-        MeshBuilder.Result built;
-        try {
-            PolygonSoup soup = MeshReaders.read(model);
-            progress.check();
-            built = MeshBuilder.build(soup, new MeshBuilder.Options(false, true));
-        } catch (MeshFormatException e) {
-            throw new JobFailure(new Problem("model", e.getMessage()));
-        } catch (InvalidMeshException e) {
-            throw new JobFailure(new Problem("model", (e.sourceLine() > 0 ? model + ":" + e.sourceLine() : model.toString()) + ": "
-                    + e.getMessage()));
-        } catch (IOException e) {
-            throw new JobFailure(new Problem("model", readError(model, e)));
-        }
+        ModelFile loaded = ModelFile.load(model, new MeshBuilder.Options(job.strict(), true), progress);
+        loaded.requireFaces(model, "wrap");
+        MeshBuilder.Result built = loaded.built();
         HalfedgeMesh mesh = built.mesh();
-        if (mesh.faceCount() == 0) {
-            throw new JobFailure(new Problem("model", model + ": no faces left to wrap"));
-        }
         progress.check();
         progress.stage("refining " + mesh.faceCount() + " triangles");
         HamiltonianRefinement.Result refinement = HamiltonianRefinement.refine(mesh);
@@ -292,7 +273,7 @@ public final class Planning {
                 pattern.verify(result);
             }
         } catch (IOException e) {
-            throw new JobFailure(new Problem("script", readError(file, e)));
+            throw new JobFailure(new Problem("script", ModelFile.readError(file, e)));
         } catch (CreasePattern.Refused e) {
             throw new JobFailure(file + ": " + e.getMessage());
         } catch (FoldScriptException e) {
@@ -365,16 +346,6 @@ public final class Planning {
             case TUCK -> "tuck";
             case END -> "the strip ends";
         };
-    }
-
-    private static String readError(Path file, IOException e) {
-        if (e instanceof NoSuchFileException) {
-            return file + ": no such file";
-        }
-        if (e instanceof AccessDeniedException) {
-            return file + ": permission denied";
-        }
-        return file + ": cannot read: " + e.getMessage();
     }
 
     /**

@@ -1,0 +1,84 @@
+package ifold.ui.model;
+
+import ifold.job.ModelInfo;
+import ifold.mesh.InvalidMeshException;
+import ifold.mesh.MeshBuilder;
+import ifold.mesh.PolygonSoup;
+import ifold.mesh.io.MeshFormatException;
+import ifold.mesh.io.MeshReaders;
+import java.io.IOException;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.Map;
+
+/**
+ * A model file read and built into a halfedge mesh, for the window's jobs on it (the wrap, its
+ * information, its refinement). Every way that fails is a {@link JobFailure} at the model's
+ * field, in one line naming the file and, where known, the line.
+ *
+ * @param inputVertices vertices in the file
+ * @param inputFaces faces in the file
+ * @param built the halfedge mesh and its repairs
+ */
+public record ModelFile(int inputVertices, int inputFaces, MeshBuilder.Result built) {
+
+    /**
+     * Reads and builds {@code file}; in strict mode a defect the builder could repair is refused.
+     *
+     * @throws java.util.concurrent.CancellationException if the progress was cancelled after reading
+     */
+    public static ModelFile load(Path file, MeshBuilder.Options options, Progress progress) throws JobFailure {
+        progress.stage("reading " + file.getFileName());
+        try {
+            PolygonSoup soup = MeshReaders.read(file);
+            progress.check();
+            MeshBuilder.Result built = MeshBuilder.build(soup, options);
+            return new ModelFile(soup.vertexCount(), soup.faceCount(), built);
+        } catch (MeshFormatException e) {
+            throw new JobFailure(new Problem("model", e.getMessage()));
+        } catch (InvalidMeshException e) {
+            String where = e.sourceLine() > 0 ? file + ":" + e.sourceLine() : file.toString();
+            String hint = e.defect().isRepairable() && options.strict() ? " (clear Strict to repair it)" : "";
+            throw new JobFailure(new Problem("model", where + ": " + e.getMessage() + hint));
+        } catch (IOException e) {
+            throw new JobFailure(new Problem("model", readError(file, e)));
+        }
+    }
+
+    /** Refuses a model its repairs left without faces: there is nothing to {@code what} ("wrap", "refine"). */
+    public void requireFaces(Path file, String what) throws JobFailure {
+        if (built.mesh().faceCount() == 0) {
+            throw new JobFailure(new Problem("model", file + ": no faces left to " + what));
+        }
+    }
+
+    /**
+     * What the model is, as a surface: the figures of {@code ifold info --json}, read and built
+     * as {@code ifold info} does (faces kept as they are, not triangulated).
+     */
+    public static Map<String, Object> information(Path file, boolean strict, Progress progress) throws JobFailure {
+        ModelFile loaded = load(file, new MeshBuilder.Options(strict, false), progress);
+        loaded.requireFaces(file, "describe");
+        progress.check();
+        progress.stage("measuring " + file.getFileName());
+        return ModelInfo.of(file.toString(), loaded.inputVertices(), loaded.inputFaces(), loaded.built());
+    }
+
+    /** Whether {@code file} is named as a model: .off or .obj, in any case. */
+    public static boolean isModelName(Path file) {
+        String name = file.getFileName() == null ? "" : file.getFileName().toString().toLowerCase(Locale.ROOT);
+        return name.endsWith(".off") || name.endsWith(".obj");
+    }
+
+    static String readError(Path file, IOException e) {
+        if (e instanceof NoSuchFileException) {
+            return file + ": no such file";
+        }
+        if (e instanceof AccessDeniedException) {
+            return file + ": permission denied";
+        }
+        return file + ": cannot read: " + e.getMessage();
+    }
+}
