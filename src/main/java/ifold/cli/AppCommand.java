@@ -25,8 +25,15 @@ final class AppCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws InterruptedException {
-        if (file != null && !Files.isRegularFile(file)) {
-            throw UserError.usage(file + (Files.exists(file) ? ": not a regular file" : ": no such file"));
+        // As every command refuses a file it cannot read: one line, exit 1.
+        if (file != null && !Files.exists(file)) {
+            throw new UserError(file + ": no such file");
+        }
+        if (file != null) {
+            LoadedModel.requireRegularFile(file);
+            if (Files.isDirectory(file)) {
+                throw new UserError(file + ": a directory, not a file");
+            }
         }
         open(file, settings);
         return 0;

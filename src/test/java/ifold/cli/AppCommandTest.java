@@ -52,7 +52,10 @@ class AppCommandTest {
         assertEquals("ifold: no display: the window needs one (the command line works without: try 'ifold --help')", ended.output().strip());
         assertTrue(!Files.exists(dir.resolve("s.properties")), "no settings written by a window that never opened");
         Ended missing = runWithoutDisplay("app", dir.resolve("none.off").toString());
-        assertEquals(2, missing.code(), missing.output());
+        assertEquals(1, missing.code(), "a file that cannot be read exits 1, as for every command: " + missing.output());
         assertTrue(missing.output().contains("none.off: no such file"), missing.output());
+        Ended folder = runWithoutDisplay("app", dir.toString());
+        assertEquals(1, folder.code(), folder.output());
+        assertTrue(folder.output().contains("a directory, not a file"), folder.output());
     }
 }
