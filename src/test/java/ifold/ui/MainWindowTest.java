@@ -7,6 +7,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import ifold.image.Mp4Writer;
+import ifold.job.Scenes;
+import ifold.scene.PathView;
 import ifold.ui.model.Exports;
 import ifold.ui.model.Job;
 import ifold.ui.model.Planning;
@@ -108,6 +110,23 @@ class MainWindowTest {
             for (int x = 0; x < image.getWidth(); x++) {
                 int rgb = image.getRGB(x, y);
                 if ((rgb & 0xFF) > (rgb >> 16 & 0xFF) + 40) {
+                    count++;
+                }
+            }
+        }
+        return count;
+    }
+
+    /** Pixels of the path's far end, as the darkness colours show it: dark, bluer than red or green. */
+    static int pathEndPixels(BufferedImage image) {
+        int count = 0;
+        for (int y = 0; y < image.getHeight(); y++) {
+            for (int x = 0; x < image.getWidth(); x++) {
+                int rgb = image.getRGB(x, y);
+                int red = rgb >> 16 & 0xFF;
+                int green = rgb >> 8 & 0xFF;
+                int blue = rgb & 0xFF;
+                if (red + green + blue < 3 * 130 && blue > red + 20 && green < blue) { // not the tree edges' green
                     count++;
                 }
             }
@@ -601,6 +620,68 @@ class MainWindowTest {
             pane.setValue(javax.swing.JOptionPane.OK_OPTION);
             return null;
         });
+    }
+
+    @Test
+    void aModelIsViewedThroughTheMenuItsPathScrubbedAndExported() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        clickLater(window, "View a model");
+        saveAs(Path.of("models", "icosahedron.off").toAbsolutePath()); // no model open yet: the chooser asks for one
+        waitFor("the icosahedron viewed", 60, () -> window.plan() != null && window.plan().job() instanceof Job.View && !window.isWorking());
+        assertEquals("view", onEdt(() -> window.parameters.card()));
+        onEdt(() -> {
+            window.parameters.viewShow.setSelectedItem("Model");
+            return null;
+        });
+        waitFor("the model itself", 60, () -> window.plan().job() instanceof Job.View v && v.show() == Scenes.Show.MODEL && !window.isWorking());
+        assertEquals("20", onEdt(() -> window.report.value("faces")));
+        assertFalse(onEdt(() -> window.parameters.viewColours.isEnabled()), "colours are the path's only");
+        onEdt(() -> {
+            window.parameters.viewShow.setSelectedItem("Hamiltonian path");
+            return null;
+        });
+        waitFor("the path", 60, () -> window.plan().job() instanceof Job.View v && v.show() == Scenes.Show.PATH && !window.isWorking());
+        settled();
+        assertEquals("98", onEdt(() -> window.report.value("outputTriangles")), "5 * 20 - 2 triangles, as ifold refine makes them");
+        assertTrue(onEdt(() -> window.getTitle()).contains("icosahedron.off: 20 -> 98 triangles"), window.getTitle());
+        assertEquals(10, (int) onEdt(() -> window.timeline.folds.getModel().getSize()), "the reveal in tenths");
+        assertEquals("1. triangles 1-10 of 98  [path]", onEdt(() -> window.timeline.folds.getModel().getElementAt(0)));
+
+        onEdt(() -> {
+            window.timeline.slider.setValue(TimelinePanel.TICKS / 10);
+            return null;
+        });
+        assertTrue(window.view.awaitFrame(30_000));
+        BufferedImage early = window.view.picture();
+        assertEquals("path: triangle 9 of 98", onEdt(() -> window.view.status()),
+                "a tenth of the way: 9.8 triangles, 9 whole ones shown");
+        onEdt(() -> {
+            window.timeline.slider.setValue(TimelinePanel.TICKS);
+            return null;
+        });
+        assertTrue(window.view.awaitFrame(30_000));
+        BufferedImage whole = window.view.picture();
+        assertEquals(9, (int) onEdt(() -> window.timeline.timeline().currentFold()), "the last tenth at the end");
+        assertTrue(differing(early, whole) > early.getWidth() * early.getHeight() / 50, "the path grew: "
+                + differing(early, whole) + " pixels changed");
+        assertTrue(pixelsOf(whole, PathView.TREE_EDGE, 50) > 50, "the tree edges in green");
+        // Along the path the triangles darken to a deep blue-grey; those not yet shown are light grey.
+        int darkEarly = pathEndPixels(early);
+        int darkWhole = pathEndPixels(whole);
+        assertTrue(darkEarly < 100 && darkWhole > 2000, "the path's dark end shown at the end only: " + darkEarly + " pixels early, "
+                + darkWhole + " at the end");
+
+        Path gif = dir.resolve("path.gif");
+        onEdt(() -> {
+            window.exportMovie(gif, new Exports.FrameSettings(160, 90, 10, 1, true));
+            return null;
+        });
+        waitFor("the GIF", 60, () -> !window.isWorking());
+        assertTrue(window.awaitExport(10_000));
+        byte[] head = Files.readAllBytes(gif);
+        assertEquals("GIF89a", new String(head, 0, 6, java.nio.charset.StandardCharsets.US_ASCII));
+        assertTrue(onEdt(() -> window.message.getText()).startsWith("wrote " + gif + ": 10 frames"), window.message.getText());
     }
 
     @Test
