@@ -785,6 +785,41 @@ class MainWindowTest {
         assertTrue(onEdt(() -> window.parameters.wrapStrict.isSelected()), "and set again");
     }
 
+    @Test
+    void theViewsStrictModeRefusesADefectiveModelAtItsFieldAndItsChoicesAreRemembered() throws Exception {
+        ifold.mesh.PolygonSoup soup = ifold.mesh.Solids.tetrahedron();
+        soup.addTriangle(0, 1, 2); // a duplicate face
+        Path model = dir.resolve("dup.off");
+        ifold.mesh.io.MeshWriters.write(soup, model);
+        window = App.open(model, settings());
+        settled();
+        onEdt(() -> {
+            menuItem(window, "View a model").doClick();
+            return null;
+        });
+        waitFor("the open model viewed", 60, () -> window.plan() != null && window.plan().job() instanceof Job.View && !window.isWorking());
+        assertEquals(model, ((Job.View) onEdt(() -> window.plan().job())).model(), "the wrap's model, without asking");
+        assertEquals("4", onEdt(() -> window.report.value("inputTriangles")), "repaired: the duplicate dropped");
+        onEdt(() -> {
+            window.parameters.viewColours.setSelectedItem("rainbow");
+            window.parameters.viewStrict.doClick();
+            return null;
+        });
+        waitFor("the model refused", 30, () -> window.parameters.isMarked("model"));
+        String note = onEdt(() -> window.parameters.note("model"));
+        assertTrue(note.contains("dup.off:11:") && note.endsWith("(clear Strict to repair it)") && !note.contains("Exception"), note);
+        onEdt(() -> {
+            window.dispose();
+            return null;
+        });
+        assertEquals("RAINBOW", settings().get("view.colors", null));
+        assertEquals("true", settings().get("view.strict", null));
+        window = App.open(null, settings());
+        assertEquals("rainbow", onEdt(() -> window.parameters.viewColours.getSelectedItem()), "set again");
+        assertTrue(onEdt(() -> window.parameters.viewStrict.isSelected()));
+        assertFalse(onEdt(() -> window.parameters.wrapStrict.isSelected()), "the wrap's own box untouched");
+    }
+
     /** What the command line printed and its exit code. */
     private record CliRun(int code, String out, String err) {
     }
