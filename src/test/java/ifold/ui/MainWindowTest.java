@@ -682,6 +682,17 @@ class MainWindowTest {
         byte[] head = Files.readAllBytes(gif);
         assertEquals("GIF89a", new String(head, 0, 6, java.nio.charset.StandardCharsets.US_ASCII));
         assertTrue(onEdt(() -> window.message.getText()).startsWith("wrote " + gif + ": 10 frames"), window.message.getText());
+        Path frames = dir.resolve("frames");
+        onEdt(() -> {
+            window.exportFrames(frames, new Exports.FrameSettings(320, 180, 4, 1, false));
+            return null;
+        });
+        waitFor("the frames", 60, () -> !window.isWorking());
+        assertTrue(window.awaitExport(10_000));
+        BufferedImage first = javax.imageio.ImageIO.read(frames.resolve("frame_00000.png").toFile());
+        BufferedImage last = javax.imageio.ImageIO.read(frames.resolve("frame_00003.png").toFile());
+        assertTrue(pathEndPixels(last) > 10 * Math.max(1, pathEndPixels(first)), "the exported frames reveal the path too: "
+                + pathEndPixels(first) + " dark pixels in the first, " + pathEndPixels(last) + " in the last");
     }
 
     @Test
