@@ -1,19 +1,15 @@
 package ifold.cli;
 
+import ifold.job.Scenes;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
-import ifold.mesh.Topology;
 import ifold.refine.HamiltonianRefinement;
 import ifold.render.RenderUnavailableException;
 import ifold.render.ViewerWindow;
 import ifold.scene.Animation;
-import ifold.scene.Geometry;
-import ifold.scene.Material;
 import ifold.scene.PathView;
 import ifold.scene.Player;
 import ifold.scene.Scene;
-import ifold.scene.SceneMesh;
-import ifold.scene.Turntable;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.DirectoryStream;
@@ -21,7 +17,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import org.joml.Quaterniond;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -63,9 +58,6 @@ final class ViewCommand implements Callable<Integer> {
     @Mixin
     FrameOptions frameOptions = new FrameOptions();
 
-    /** Above this many triangles, edges are not drawn and frames are not antialiased. */
-    static final int DENSE = 25_000;
-
     @Override
     public Integer call() {
         colors = switch (colorsName.strip().toLowerCase(Locale.ROOT)) {
@@ -91,35 +83,12 @@ final class ViewCommand implements Callable<Integer> {
         }
 
         Scene scene = new Scene();
-        Geometry geometry;
-        Animation animation;
-        String caption;
-        if (refined) {
-            HamiltonianRefinement.Result result = HamiltonianRefinement.refine(mesh);
-            SceneMesh sceneMesh = PathView.mesh(result, colors, 5L * mesh.faceCount() > DENSE);
-            geometry = new Geometry("refined", sceneMesh, path ? Material.FACE_COLORS : Material.PAPER);
-            caption = String.format(Locale.ROOT, "%s: %d -> %d triangles", model.getFileName(), mesh.faceCount(), sceneMesh.triangleCount());
-        } else {
-            SceneMesh sceneMesh = SceneMesh.of(mesh);
-            geometry = new Geometry("model", sceneMesh, mesh.hasFaceColors() ? Material.FACE_COLORS : Material.PAPER);
-            caption = String.format(Locale.ROOT, "%s: %d faces, %d triangles", model.getFileName(), mesh.faceCount(), sceneMesh.triangleCount());
-        }
-        // On a dense mesh the outlines would paint it black, and antialiasing cannot be seen on
-        // triangles of a pixel or two, while both cost a software renderer dearly. A dense
-        // refinement keeps its original edges, tree edges and path (without the Steiner edges):
-        // they are what it shows.
-        if (geometry.mesh().triangleCount() > DENSE && !refined) {
-            Material m = geometry.material();
-            geometry.setMaterial(new Material(m.front(), m.back(), m.useFaceColors(), false));
-        }
-        geometry.setClosed(Topology.of(mesh).boundaryLoops() == 0);
-        scene.root().attach(geometry);
-        // A three-quarter view from above reads as 3D at once, flat sheets included.
-        scene.camera().setOrientation(new Quaterniond().rotateX(-0.6).rotateY(-0.5));
-        scene.frameAll();
-        animation = path ? PathView.reveal(geometry) : new Turntable(scene.camera());
-
-        int samples = geometry.mesh().triangleCount() <= DENSE ? 4 : 0;
+        HamiltonianRefinement.Result refinement = refined ? HamiltonianRefinement.refine(mesh) : null;
+        Scenes.Show show = path ? Scenes.Show.PATH : refined ? Scenes.Show.REFINEMENT : Scenes.Show.MODEL;
+        Scenes.View view = Scenes.view(scene, model.getFileName().toString(), mesh, refinement, show, colors);
+        Animation animation = view.animation();
+        String caption = view.caption();
+        int samples = view.samples();
         if (!frameOptions.renders()) {
             Player player = new Player(animation, frameOptions.seconds);
             if (path) {

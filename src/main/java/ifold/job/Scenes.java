@@ -2,6 +2,7 @@ package ifold.job;
 
 import ifold.geom.Triangle;
 import ifold.mesh.HalfedgeMesh;
+import ifold.mesh.Topology;
 import ifold.refine.HamiltonianRefinement;
 import ifold.scene.Animation;
 import ifold.scene.Geometry;
@@ -10,11 +11,13 @@ import ifold.scene.PaperView;
 import ifold.scene.PathView;
 import ifold.scene.Scene;
 import ifold.scene.SceneMesh;
+import ifold.scene.Turntable;
 import ifold.scene.WrapView;
 import ifold.script.ScriptFolding;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapGeometry;
 import java.util.List;
+import java.util.Locale;
 import org.joml.Quaterniond;
 
 /**
@@ -31,6 +34,64 @@ public final class Scenes {
 
     /** The name of the geometry that shows a model's refinement, coloured along its Hamiltonian path; hidden at first. */
     public static final String REFINEMENT = "refinement";
+
+    /** The name of the geometry {@code ifold view} shows: the model or its refinement. */
+    public static final String VIEWED = "viewed";
+
+    /** Above this many triangles, {@code ifold view} draws no edges and does not antialias. */
+    public static final int DENSE = 25_000;
+
+    /** What {@code ifold view} shows: the model, its Hamiltonian refinement, or the path revealed on it. */
+    public enum Show { MODEL, REFINEMENT, PATH }
+
+    /**
+     * A model's view, as {@code ifold view} shows it.
+     *
+     * @param geometry the model or its refinement, named {@link #VIEWED}
+     * @param animation the path revealed triangle by triangle, or a turn around the model
+     * @param caption the model's name and its counts: "torus.off: 48 -> 238 triangles"
+     * @param samples the antialiasing samples for its frames: none on a dense mesh
+     */
+    public record View(Geometry geometry, Animation animation, String caption, int samples) {
+    }
+
+    /**
+     * Fills {@code scene} with what {@code ifold view} shows of {@code mesh}: the model (its own
+     * face colours, if it has them), or its refinement as paper, or the refinement coloured
+     * along the path in {@code colors}, revealed triangle by triangle; a still view turns round.
+     *
+     * @param name the model's file name, for the caption
+     * @param refinement the mesh's refinement; needed unless {@code show} is {@link Show#MODEL}
+     */
+    public static View view(Scene scene, String name, HalfedgeMesh mesh, HamiltonianRefinement.Result refinement, Show show,
+            PathView.Colors colors) {
+        Geometry geometry;
+        String caption;
+        if (show == Show.MODEL) {
+            SceneMesh sceneMesh = SceneMesh.of(mesh);
+            geometry = new Geometry(VIEWED, sceneMesh, mesh.hasFaceColors() ? Material.FACE_COLORS : Material.PAPER);
+            caption = String.format(Locale.ROOT, "%s: %d faces, %d triangles", name, mesh.faceCount(), sceneMesh.triangleCount());
+            // On a dense mesh the outlines would paint it black, and antialiasing cannot be seen on
+            // triangles of a pixel or two, while both cost a software renderer dearly. A dense
+            // refinement keeps its original edges, tree edges and path (without the Steiner
+            // edges): they are what it shows.
+            if (sceneMesh.triangleCount() > DENSE) {
+                Material m = geometry.material();
+                geometry.setMaterial(new Material(m.front(), m.back(), m.useFaceColors(), false));
+            }
+        } else {
+            SceneMesh sceneMesh = PathView.mesh(refinement, colors, 5L * mesh.faceCount() > DENSE);
+            geometry = new Geometry(VIEWED, sceneMesh, show == Show.PATH ? Material.FACE_COLORS : Material.PAPER);
+            caption = String.format(Locale.ROOT, "%s: %d -> %d triangles", name, mesh.faceCount(), sceneMesh.triangleCount());
+        }
+        geometry.setClosed(Topology.of(mesh).boundaryLoops() == 0);
+        scene.root().attach(geometry);
+        // A three-quarter view from above reads as 3D at once, flat sheets included.
+        scene.camera().setOrientation(new Quaterniond().rotateX(-0.6).rotateY(-0.5));
+        scene.frameAll();
+        Animation animation = show == Show.PATH ? PathView.reveal(geometry) : new Turntable(scene.camera());
+        return new View(geometry, animation, caption, geometry.mesh().triangleCount() <= DENSE ? 4 : 0);
+    }
 
     /** A soft grey-blue: the white paper stands out on it, and the triangle's colour is darker still. */
     public static final int BACKGROUND = 0xFFD3DAE2;
@@ -70,7 +131,7 @@ public final class Scenes {
      * instead of the model, it says which way the strip goes.
      */
     public static Geometry refinement(Scene scene, HamiltonianRefinement.Result refinement) {
-        boolean dense = 5L * refinement.mesh().faceCount() > 125_000; // ViewCommand's threshold: edges too fine to tell apart
+        boolean dense = refinement.mesh().faceCount() > DENSE; // the view's threshold: edges too fine to tell apart
         Geometry refined = new Geometry(REFINEMENT, PathView.mesh(refinement, PathView.Colors.DARKNESS, dense), Material.FACE_COLORS);
         refined.setVisible(false);
         scene.root().attach(refined);

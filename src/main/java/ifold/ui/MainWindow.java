@@ -2,6 +2,7 @@ package ifold.ui;
 
 import ifold.job.Scenes;
 import ifold.render.FrameExport;
+import ifold.scene.PathView;
 import ifold.ui.model.Exports;
 import ifold.ui.model.Job;
 import ifold.ui.model.ModelFile;
@@ -230,6 +231,7 @@ final class MainWindow extends JFrame {
         fold.add(item("Turn gadget", KeyEvent.VK_2, ctrl, () -> parameters.show(parameters.turn())));
         fold.add(item("Wrap the model", KeyEvent.VK_3, ctrl, this::wrapModel));
         fold.add(item("Play a script", KeyEvent.VK_4, ctrl, this::playScript));
+        fold.add(item("View a model", KeyEvent.VK_5, ctrl, this::viewModel));
         fold.addSeparator();
         fold.add(item("Play / pause", KeyEvent.VK_P, ctrl, timeline::togglePlaying));
         fold.add(item("Previous fold", KeyEvent.VK_OPEN_BRACKET, ctrl, () -> timeline.step(-1)));
@@ -323,10 +325,14 @@ final class MainWindow extends JFrame {
 
     // ---- Jobs ----
 
-    /** Opens a file: a model to wrap, or a fold script or FOLD file to play (as {@code ifold app FILE}). */
+    /**
+     * Opens a file: a model to wrap (or to view, while the view's card is shown), or a fold
+     * script or FOLD file to play (as {@code ifold app FILE}).
+     */
     void open(Path file) {
         String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
-        Job job = name.endsWith(".off") || name.endsWith(".obj") ? parameters.wrap(file) : new Job.Script(file);
+        boolean model = name.endsWith(".off") || name.endsWith(".obj");
+        Job job = !model ? new Job.Script(file) : parameters.card().equals("view") ? parameters.view(file) : parameters.wrap(file);
         settings.addRecent(file);
         Path folder = file.toAbsolutePath().getParent();
         if (folder != null) {
@@ -345,6 +351,22 @@ final class MainWindow extends JFrame {
             chooseModel();
         } else {
             parameters.show(last);
+        }
+    }
+
+    /** The view's card, on the open model (or the last one opened); without one, asks for it. */
+    private void viewModel() {
+        if (parameters.job() instanceof Job.View) {
+            return;
+        }
+        Path model = parameters.model();
+        if (model == null) {
+            Job last = lastModel();
+            model = last == null ? null : ((Job.WrapModel) last).model();
+        }
+        parameters.show(parameters.view(model));
+        if (model == null) {
+            chooseModel();
         }
     }
 
@@ -449,7 +471,9 @@ final class MainWindow extends JFrame {
         Plan before = plan;
         Timeline old = timeline.timeline();
         boolean sameKind = before != null && before.job().getClass() == next.job().getClass()
-                && !(next.job() instanceof Job.WrapModel w && !w.model().equals(((Job.WrapModel) before.job()).model()));
+                && !(next.job() instanceof Job.WrapModel w && !w.model().equals(((Job.WrapModel) before.job()).model()))
+                && !(next.job() instanceof Job.View v && !(v.model().equals(((Job.View) before.job()).model())
+                        && v.show() == ((Job.View) before.job()).show()));
         double fraction = sameKind && old != null && old.end() > 0 ? old.position() / old.end() : 0;
         plan = next;
         Timeline fresh = Timeline.of(next);
@@ -900,9 +924,13 @@ final class MainWindow extends JFrame {
             settings.put("wrap.thickness", w.thickness());
             settings.put("wrap.maxFaces", w.maxFaces());
             settings.put("wrap.strict", Boolean.toString(w.strict()));
+        } else if (job instanceof Job.View v) {
+            settings.put("view.show", v.show().name());
+            settings.put("view.colors", v.colors().name());
+            settings.put("view.strict", Boolean.toString(v.strict()));
         }
         settings.put("job", job instanceof Job.ZigZag ? "zigzag" : job instanceof Job.Turn ? "turn" : job instanceof Job.WrapModel
-                ? "wrap" : "script");
+                ? "wrap" : job instanceof Job.View ? "view" : "script");
     }
 
     /** The zig-zag as it was left last time, or the demo. */
@@ -924,6 +952,19 @@ final class MainWindow extends JFrame {
         parameters.wrapThickness.setText(settings.get("wrap.thickness", ""));
         parameters.wrapMaxFaces.setText(settings.get("wrap.maxFaces", ""));
         parameters.wrapStrict.setSelected(Boolean.parseBoolean(settings.get("wrap.strict", "false")));
+        parameters.viewShow.setSelectedIndex(enumIndex(Scenes.Show.values(), settings.get("view.show", Scenes.Show.PATH.name())));
+        parameters.viewColours.setSelectedIndex(enumIndex(PathView.Colors.values(), settings.get("view.colors", PathView.Colors.DARKNESS.name())));
+        parameters.viewStrict.setSelected(Boolean.parseBoolean(settings.get("view.strict", "false")));
+    }
+
+    /** The index of the constant named {@code name}; the first for a name no longer known (a settings file edited or older). */
+    private static int enumIndex(Enum<?>[] constants, String name) {
+        for (Enum<?> constant : constants) {
+            if (constant.name().equals(name)) {
+                return constant.ordinal();
+            }
+        }
+        return 0;
     }
 
     private static int clampCorner(int corner, int fallback) {

@@ -1,5 +1,7 @@
 package ifold.ui;
 
+import ifold.job.Scenes;
+import ifold.scene.PathView;
 import ifold.ui.model.Job;
 import ifold.ui.model.Problem;
 import java.awt.CardLayout;
@@ -30,7 +32,7 @@ import javax.swing.event.DocumentListener;
  * The parameters of the job the window folds, one card per kind: the zig-zag's triangle
  * (typed, or dragged on its sketch), its ends and entry side, width and thickness; the
  * turn's angle and overhang; the wrap's model, width, thickness, limit on faces and strict mode;
- * the script's file. A
+ * the script's file; the view's model (the wrap's), what it shows, its colours and strict mode. A
  * change is told (to re-plan) a moment after the typing stops; a field the core refused is
  * outlined in red with the core's message under it.
  */
@@ -39,6 +41,9 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
 
     static final String[] CORNERS = {"A", "B", "C"};
     static final String[] ENTRIES = {"(either side)", "A", "B", "C"};
+    /** The view's choices, in the order of {@link Scenes.Show} and {@link PathView.Colors}. */
+    static final String[] SHOWS = {"Model", "Refinement", "Hamiltonian path"};
+    static final String[] COLOURS = {"darkness", "rainbow"};
 
     private final CardLayout cards = new CardLayout();
     private final transient Consumer<Job> changed;
@@ -69,6 +74,11 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
     final JTextField wrapThickness = new JTextField();
     final JTextField wrapMaxFaces = new JTextField();
     final JCheckBox wrapStrict = new JCheckBox("refuse defective input");
+    // The view, of the wrap's model.
+    private final JLabel viewModelName = new JLabel("no model");
+    final JComboBox<String> viewShow = new JComboBox<>(SHOWS);
+    final JComboBox<String> viewColours = new JComboBox<>(COLOURS);
+    final JCheckBox viewStrict = new JCheckBox("refuse defective input");
     // The script.
     private Path script;
     private final JLabel scriptName = new JLabel("no script");
@@ -120,6 +130,23 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
         play.row("script", "Script", scriptName, null);
         play.wide(chooseScriptButton);
         deck.add(top(play.panel), "script");
+
+        Card look = new Card("View a model", "view");
+        JButton chooseViewedButton = new JButton("Choose model...");
+        chooseViewedButton.addActionListener(e -> chooseModel.run());
+        look.row("model", "Model", viewModelName, null);
+        look.wide(chooseViewedButton);
+        look.row("show", "Show", viewShow, "the refinement and the path as ifold view --refine and --path");
+        look.row("colors", "Colours", viewColours, "along the path: lighter to darker (the seed's Figure 10), or rainbow");
+        look.row("strict", "Strict", viewStrict, "instead of repairing it (--strict)");
+        viewShow.setSelectedIndex(Scenes.Show.PATH.ordinal());
+        viewShow.addActionListener(e -> {
+            viewColours.setEnabled(viewShow.getSelectedIndex() == Scenes.Show.PATH.ordinal());
+            edited();
+        });
+        viewColours.addActionListener(e -> edited());
+        viewStrict.addActionListener(e -> edited());
+        deck.add(top(look.panel), "view");
 
         add(deck, java.awt.BorderLayout.NORTH);
         message.setForeground(new Color(0xB00020));
@@ -252,7 +279,13 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
         return new Job.WrapModel(file, wrapWidth.getText(), wrapThickness.getText(), wrapMaxFaces.getText(), wrapStrict.isSelected());
     }
 
-    /** The model of the wrap's card, whichever card is shown; null before one is opened. */
+    /** A view of {@code file} with the view's fields as they now stand, whichever card is shown. */
+    Job.View view(Path file) {
+        return new Job.View(file, Scenes.Show.values()[viewShow.getSelectedIndex()], PathView.Colors.values()[viewColours.getSelectedIndex()],
+                viewStrict.isSelected());
+    }
+
+    /** The model of the wrap's and the view's cards, whichever card is shown; null before one is opened. */
     Path model() {
         return model;
     }
@@ -263,6 +296,7 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
             case "turn" -> turn();
             case "wrap" -> wrap(model);
             case "script" -> new Job.Script(script);
+            case "view" -> view(model);
             default -> zigzag();
         };
     }
@@ -278,9 +312,7 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
                 setTurn(t);
                 card = "turn";
             } else if (job instanceof Job.WrapModel w) {
-                model = w.model();
-                modelName.setText(model == null ? "no model" : model.getFileName().toString());
-                modelName.setToolTipText(model == null ? null : model.toString());
+                setModel(w.model());
                 wrapWidth.setText(w.width());
                 wrapThickness.setText(w.thickness());
                 wrapMaxFaces.setText(w.maxFaces());
@@ -291,6 +323,12 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
                 scriptName.setText(script == null ? "no script" : script.getFileName().toString());
                 scriptName.setToolTipText(script == null ? null : script.toString());
                 card = "script";
+            } else if (job instanceof Job.View v) {
+                setModel(v.model());
+                viewShow.setSelectedIndex(v.show().ordinal());
+                viewColours.setSelectedIndex(v.colors().ordinal());
+                viewStrict.setSelected(v.strict());
+                card = "view";
             }
         } finally {
             quiet = false;
@@ -299,6 +337,15 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
         settle.stop();
         mark(List.of());
         changed.accept(job());
+    }
+
+    /** The model the wrap and the view both work on, named on both cards. */
+    private void setModel(Path file) {
+        model = file;
+        for (JLabel name : List.of(modelName, viewModelName)) {
+            name.setText(model == null ? "no model" : model.getFileName().toString());
+            name.setToolTipText(model == null ? null : model.toString());
+        }
     }
 
     private void setZigZag(Job.ZigZag z) {

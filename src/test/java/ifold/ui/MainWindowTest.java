@@ -7,6 +7,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import ifold.image.Mp4Writer;
+import ifold.job.Scenes;
+import ifold.scene.PathView;
 import ifold.ui.model.Exports;
 import ifold.ui.model.Job;
 import ifold.ui.model.Planning;
@@ -108,6 +110,23 @@ class MainWindowTest {
             for (int x = 0; x < image.getWidth(); x++) {
                 int rgb = image.getRGB(x, y);
                 if ((rgb & 0xFF) > (rgb >> 16 & 0xFF) + 40) {
+                    count++;
+                }
+            }
+        }
+        return count;
+    }
+
+    /** Pixels of the path's far end, as the darkness colours show it: dark, bluer than red or green. */
+    static int pathEndPixels(BufferedImage image) {
+        int count = 0;
+        for (int y = 0; y < image.getHeight(); y++) {
+            for (int x = 0; x < image.getWidth(); x++) {
+                int rgb = image.getRGB(x, y);
+                int red = rgb >> 16 & 0xFF;
+                int green = rgb >> 8 & 0xFF;
+                int blue = rgb & 0xFF;
+                if (red + green + blue < 3 * 130 && blue > red + 20 && green < blue) { // not the tree edges' green
                     count++;
                 }
             }
@@ -604,6 +623,79 @@ class MainWindowTest {
     }
 
     @Test
+    void aModelIsViewedThroughTheMenuItsPathScrubbedAndExported() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        clickLater(window, "View a model");
+        saveAs(Path.of("models", "icosahedron.off").toAbsolutePath()); // no model open yet: the chooser asks for one
+        waitFor("the icosahedron viewed", 60, () -> window.plan() != null && window.plan().job() instanceof Job.View && !window.isWorking());
+        assertEquals("view", onEdt(() -> window.parameters.card()));
+        onEdt(() -> {
+            window.parameters.viewShow.setSelectedItem("Model");
+            return null;
+        });
+        waitFor("the model itself", 60, () -> window.plan().job() instanceof Job.View v && v.show() == Scenes.Show.MODEL && !window.isWorking());
+        assertEquals("20", onEdt(() -> window.report.value("faces")));
+        assertFalse(onEdt(() -> window.parameters.viewColours.isEnabled()), "colours are the path's only");
+        onEdt(() -> {
+            window.parameters.viewShow.setSelectedItem("Hamiltonian path");
+            return null;
+        });
+        waitFor("the path", 60, () -> window.plan().job() instanceof Job.View v && v.show() == Scenes.Show.PATH && !window.isWorking());
+        settled();
+        assertEquals("98", onEdt(() -> window.report.value("outputTriangles")), "5 * 20 - 2 triangles, as ifold refine makes them");
+        assertTrue(onEdt(() -> window.getTitle()).contains("icosahedron.off: 20 -> 98 triangles"), window.getTitle());
+        assertEquals(10, (int) onEdt(() -> window.timeline.folds.getModel().getSize()), "the reveal in tenths");
+        assertEquals("1. triangles 1-10 of 98  [path]", onEdt(() -> window.timeline.folds.getModel().getElementAt(0)));
+
+        onEdt(() -> {
+            window.timeline.slider.setValue(TimelinePanel.TICKS / 10);
+            return null;
+        });
+        assertTrue(window.view.awaitFrame(30_000));
+        BufferedImage early = window.view.picture();
+        assertEquals("path: triangle 9 of 98", onEdt(() -> window.view.status()),
+                "a tenth of the way: 9.8 triangles, 9 whole ones shown");
+        onEdt(() -> {
+            window.timeline.slider.setValue(TimelinePanel.TICKS);
+            return null;
+        });
+        assertTrue(window.view.awaitFrame(30_000));
+        BufferedImage whole = window.view.picture();
+        assertEquals(9, (int) onEdt(() -> window.timeline.timeline().currentFold()), "the last tenth at the end");
+        assertTrue(differing(early, whole) > early.getWidth() * early.getHeight() / 50, "the path grew: "
+                + differing(early, whole) + " pixels changed");
+        assertTrue(pixelsOf(whole, PathView.TREE_EDGE, 50) > 50, "the tree edges in green");
+        // Along the path the triangles darken to a deep blue-grey; those not yet shown are light grey.
+        int darkEarly = pathEndPixels(early);
+        int darkWhole = pathEndPixels(whole);
+        assertTrue(darkEarly < 100 && darkWhole > 2000, "the path's dark end shown at the end only: " + darkEarly + " pixels early, "
+                + darkWhole + " at the end");
+
+        Path gif = dir.resolve("path.gif");
+        onEdt(() -> {
+            window.exportMovie(gif, new Exports.FrameSettings(160, 90, 10, 1, true));
+            return null;
+        });
+        waitFor("the GIF", 60, () -> !window.isWorking());
+        assertTrue(window.awaitExport(10_000));
+        byte[] head = Files.readAllBytes(gif);
+        assertEquals("GIF89a", new String(head, 0, 6, java.nio.charset.StandardCharsets.US_ASCII));
+        assertTrue(onEdt(() -> window.message.getText()).startsWith("wrote " + gif + ": 10 frames"), window.message.getText());
+        Path frames = dir.resolve("frames");
+        onEdt(() -> {
+            window.exportFrames(frames, new Exports.FrameSettings(320, 180, 4, 1, false));
+            return null;
+        });
+        waitFor("the frames", 60, () -> !window.isWorking());
+        assertTrue(window.awaitExport(10_000));
+        BufferedImage first = javax.imageio.ImageIO.read(frames.resolve("frame_00000.png").toFile());
+        BufferedImage last = javax.imageio.ImageIO.read(frames.resolve("frame_00003.png").toFile());
+        assertTrue(pathEndPixels(last) > 10 * Math.max(1, pathEndPixels(first)), "the exported frames reveal the path too: "
+                + pathEndPixels(first) + " dark pixels in the first, " + pathEndPixels(last) + " in the last");
+    }
+
+    @Test
     void modelInformationShowsWhatInfoPrintsForTheOpenModel() throws Exception {
         window = App.open(null, settings());
         settled();
@@ -702,6 +794,41 @@ class MainWindowTest {
         assertEquals("true", settings().get("wrap.strict", null), "remembered");
         window = App.open(null, settings());
         assertTrue(onEdt(() -> window.parameters.wrapStrict.isSelected()), "and set again");
+    }
+
+    @Test
+    void theViewsStrictModeRefusesADefectiveModelAtItsFieldAndItsChoicesAreRemembered() throws Exception {
+        ifold.mesh.PolygonSoup soup = ifold.mesh.Solids.tetrahedron();
+        soup.addTriangle(0, 1, 2); // a duplicate face
+        Path model = dir.resolve("dup.off");
+        ifold.mesh.io.MeshWriters.write(soup, model);
+        window = App.open(model, settings());
+        settled();
+        onEdt(() -> {
+            menuItem(window, "View a model").doClick();
+            return null;
+        });
+        waitFor("the open model viewed", 60, () -> window.plan() != null && window.plan().job() instanceof Job.View && !window.isWorking());
+        assertEquals(model, ((Job.View) onEdt(() -> window.plan().job())).model(), "the wrap's model, without asking");
+        assertEquals("4", onEdt(() -> window.report.value("inputTriangles")), "repaired: the duplicate dropped");
+        onEdt(() -> {
+            window.parameters.viewColours.setSelectedItem("rainbow");
+            window.parameters.viewStrict.doClick();
+            return null;
+        });
+        waitFor("the model refused", 30, () -> window.parameters.isMarked("model"));
+        String note = onEdt(() -> window.parameters.note("model"));
+        assertTrue(note.contains("dup.off:11:") && note.endsWith("(clear Strict to repair it)") && !note.contains("Exception"), note);
+        onEdt(() -> {
+            window.dispose();
+            return null;
+        });
+        assertEquals("RAINBOW", settings().get("view.colors", null));
+        assertEquals("true", settings().get("view.strict", null));
+        window = App.open(null, settings());
+        assertEquals("rainbow", onEdt(() -> window.parameters.viewColours.getSelectedItem()), "set again");
+        assertTrue(onEdt(() -> window.parameters.viewStrict.isSelected()));
+        assertFalse(onEdt(() -> window.parameters.wrapStrict.isSelected()), "the wrap's own box untouched");
     }
 
     /** What the command line printed and its exit code. */

@@ -1,5 +1,7 @@
 package ifold.ui;
 
+import ifold.job.Scenes;
+import ifold.scene.PathView;
 import ifold.ui.model.Job;
 import ifold.ui.model.Settings;
 import java.awt.Graphics2D;
@@ -50,6 +52,11 @@ public final class Screenshots {
                 return null;
             });
             shoot(window, 0.7, out.resolve("app-script.png"));
+            MainWindowTest.onEdt(() -> {
+                window.parameters.show(new Job.View(Path.of("models", "icosahedron.off"), Scenes.Show.PATH, PathView.Colors.DARKNESS, false));
+                return null;
+            });
+            shoot(window, 0.6, out.resolve("app-view.png"));
         } finally {
             MainWindowTest.onEdt(() -> {
                 window.dispose();

@@ -163,6 +163,7 @@ public final class Exports {
 
     /** Writes the folded paper as OBJ. */
     public static void obj(Plan plan, Path file, Progress progress) throws JobFailure {
+        requirePaper(plan);
         progress.stage("writing " + file.getFileName());
         try {
             plan.writeObj(file);
@@ -173,6 +174,7 @@ public final class Exports {
 
     /** Writes the crease pattern and folded state as FOLD. */
     public static void fold(Plan plan, Path file, Progress progress) throws JobFailure {
+        requirePaper(plan);
         progress.stage("writing " + file.getFileName());
         try {
             plan.writeFold(file);
@@ -221,6 +223,12 @@ public final class Exports {
             throw new JobFailure("cannot write " + e.getMessage());
         }
         return new Refined(mesh.faceCount(), result.componentCount(), result.mesh().faceCount());
+    }
+
+    private static void requirePaper(Plan plan) throws JobFailure {
+        if (!plan.hasPaper()) {
+            throw new JobFailure("a view folds no paper: Fold, Wrap the model to export it as OBJ or FOLD");
+        }
     }
 
     private static void requireValid(List<Problem> problems) throws JobFailure {

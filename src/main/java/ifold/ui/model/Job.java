@@ -1,5 +1,7 @@
 package ifold.ui.model;
 
+import ifold.job.Scenes;
+import ifold.scene.PathView;
 import java.nio.file.Path;
 
 /**
@@ -45,5 +47,15 @@ public sealed interface Job {
 
     /** A fold script, or a FOLD crease pattern folded one crease line at a time. */
     record Script(Path file) implements Job {
+    }
+
+    /**
+     * A model looked at, as {@code ifold view} shows it: as it is, its Hamiltonian refinement
+     * ({@code --refine}), or the path revealed triangle by triangle ({@code --path}).
+     *
+     * @param colors how the path colours its triangles ({@code --colors}); the path's only
+     * @param strict refuse defective input instead of repairing it, as {@code --strict}
+     */
+    record View(Path model, Scenes.Show show, PathView.Colors colors, boolean strict) implements Job {
     }
 }

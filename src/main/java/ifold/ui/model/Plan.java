@@ -21,8 +21,8 @@ import java.util.function.Supplier;
  * @param figures the report, as {@code --report} writes it
  * @param seconds how long the animation plays at speed 1 (the command line's default length)
  * @param scenes makes a new scene of the result, for an export
- * @param obj writes the folded paper as OBJ
- * @param sheets the folded sheets, for FOLD
+ * @param obj writes the folded paper as OBJ; null for a job that folds no paper (a model's view)
+ * @param sheets the folded sheets, for FOLD; none for a job that folds no paper
  * @param source what the OBJ and FOLD files say they hold
  * @param figureStages where the zig-zag demo's figure (the seed's Figure 11) shows the
  *     animation, or null for a job that has none
@@ -48,6 +48,11 @@ public record Plan(Job job, String title, Shown shown, List<Fold> folds, Map<Str
     /** A new scene of the result, for an export: the view's own keeps playing. */
     public Shown newScene() {
         return scenes.get();
+    }
+
+    /** Whether the job folded paper, for OBJ and FOLD: a model's view folds none. */
+    public boolean hasPaper() {
+        return obj != null;
     }
 
     /** Writes the folded paper as OBJ, as {@code --export-obj} does. */

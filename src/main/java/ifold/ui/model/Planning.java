@@ -11,6 +11,8 @@ import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.PolygonSoup;
 import ifold.refine.HamiltonianRefinement;
+import ifold.refine.RefinementClaims;
+import ifold.scene.PathView;
 import ifold.scene.Animation;
 import ifold.scene.Scene;
 import ifold.scene.WrapView;
@@ -28,6 +30,7 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -57,6 +60,8 @@ public final class Planning {
                 wrapOptions(w, problems);
             } else if (job instanceof Job.Script s) {
                 requireFile(s.file(), "script", problems);
+            } else if (job instanceof Job.View v) {
+                requireFile(v.model(), "model", problems);
             }
         } catch (ParameterException e) {
             problems.add(new Problem(e.parameter(), e.getMessage()));
@@ -83,6 +88,8 @@ public final class Planning {
                 return turn(t, progress);
             } else if (job instanceof Job.WrapModel w) {
                 return wrap(w, progress);
+            } else if (job instanceof Job.View v) {
+                return view(v, progress);
             }
             return script((Job.Script) job, progress);
         } catch (ParameterException e) {
@@ -297,6 +304,84 @@ public final class Planning {
         return new Plan(job, file.getFileName() + ": " + result.steps().size() + " folds", shown, List.copyOf(folds), figures, 10,
                 () -> scriptScene(result, folded), out -> WrapExport.writeObj(out, header, List.of(folded)),
                 List.of(new FoldFile.Folded(result.sheet(), result.frames())), "ifold fold " + file, null);
+    }
+
+    /** The parts of the reveal the list names: about a tenth of the path's triangles each. */
+    static final int VIEW_PARTS = 10;
+
+    /** The turntable's parts, each so many degrees. */
+    static final int TURN_DEGREES = 45;
+
+    /**
+     * A model looked at, as {@code ifold view} does it: read and built as the view builds it
+     * (triangulated and refined for the refinement and the path), in the view's scene; the
+     * report holds the counts and angles {@code ifold refine} prints for it, and the view's
+     * edges by kind.
+     */
+    private static Plan view(Job.View job, Progress progress) throws JobFailure {
+        Path model = job.model();
+        boolean refined = job.show() != Scenes.Show.MODEL;
+        ModelFile loaded = ModelFile.load(model, new MeshBuilder.Options(job.strict(), refined), progress);
+        loaded.requireFaces(model, "show");
+        HalfedgeMesh mesh = loaded.built().mesh();
+        progress.check();
+        HamiltonianRefinement.Result refinement = null;
+        if (refined) {
+            progress.stage("refining " + mesh.faceCount() + " triangles");
+            refinement = HamiltonianRefinement.refine(mesh);
+            progress.check();
+        }
+        HamiltonianRefinement.Result shownRefinement = refinement;
+        String name = model.getFileName().toString();
+        Scene scene = new Scene();
+        Scenes.View view = Scenes.view(scene, name, mesh, refinement, job.show(), job.colors());
+        Map<String, Object> figures = new LinkedHashMap<>();
+        figures.put("model", model.toString());
+        if (refined) {
+            figures.put("inputTriangles", mesh.faceCount());
+            figures.put("components", refinement.componentCount());
+            figures.put("outputTriangles", refinement.mesh().faceCount());
+            figures.put("minAngleInDegrees", RefinementClaims.minAngleDegrees(mesh));
+            figures.put("minAngleOutDegrees", RefinementClaims.minAngleDegrees(refinement.mesh()));
+            int[] edges = PathView.edgeKindCounts(view.geometry().mesh());
+            figures.put("treeEdges", edges[0]);
+            figures.put("steinerEdges", edges[1]);
+            figures.put("originalEdges", edges[2]);
+        } else {
+            figures.put("faces", mesh.faceCount());
+            figures.put("triangles", view.geometry().mesh().triangleCount());
+        }
+        figures.put("repairs", Reports.repairs(loaded.built().repairs()));
+        progress.check();
+        return new Plan(job, view.caption(), new Plan.Shown(scene, view.animation()), viewParts(view.animation(), job.show()), figures,
+                10, () -> {
+                    Scene another = new Scene();
+                    return new Plan.Shown(another, Scenes.view(another, name, mesh, shownRefinement, job.show(), job.colors()).animation());
+                }, null, List.of(), "ifold view " + model, null);
+    }
+
+    /**
+     * The reveal in tenths ("triangles 11-20 of 98"), each beginning where the triangles before
+     * it are shown; or the turn around the model in eighths.
+     */
+    private static List<Fold> viewParts(Animation animation, Scenes.Show show) {
+        List<Fold> parts = new ArrayList<>();
+        int total = animation.stepCount();
+        if (show == Scenes.Show.PATH) {
+            int size = Math.max(1, (total + VIEW_PARTS - 1) / VIEW_PARTS);
+            for (int first = 0; first < total; first += size) {
+                int last = Math.min(total, first + size);
+                String name = last == first + 1 ? String.format(Locale.ROOT, "triangle %d of %d", last, total)
+                        : String.format(Locale.ROOT, "triangles %d-%d of %d", first + 1, last, total);
+                parts.add(new Fold(name, "path", first));
+            }
+        } else {
+            for (int degrees = 0; degrees < 360; degrees += TURN_DEGREES) {
+                parts.add(new Fold(String.format(Locale.ROOT, "turn %d°-%d°", degrees, degrees + TURN_DEGREES), "turntable",
+                        degrees * total / 360.0));
+            }
+        }
+        return List.copyOf(parts);
     }
 
     private static Plan.Shown scriptScene(ScriptFolding.Result result, WrapGeometry folded) {

@@ -7,6 +7,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import ifold.cli.Main;
 import ifold.job.Json;
+import ifold.job.Scenes;
+import ifold.scene.Geometry;
+import ifold.scene.PathView;
+import ifold.scene.RevealAnimation;
+import ifold.scene.Turntable;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
@@ -193,6 +198,76 @@ class PlanningTest {
                 () -> Planning.plan(new Job.WrapModel(Path.of("models", "icosahedron.off"), "", ""), cancelledMidWrap));
         assertEquals(10, done[0], "stopped after the tenth triangle");
         assertEquals(98, done[1], "out of the refinement's 98");
+    }
+
+    /** The command line's standard output for {@code args}, which must succeed. */
+    private static String cliOut(String... args) {
+        StringWriter out = new StringWriter();
+        StringWriter err = new StringWriter();
+        int code = Main.commandLine(new PrintWriter(out), new PrintWriter(err)).execute(args);
+        assertEquals(0, code, err.toString());
+        return out.toString();
+    }
+
+    @Test
+    void viewingTheTorussPathRevealsTheRefinementTheCommandLineMakes() throws Exception {
+        Path torus = Path.of("models", "torus.off");
+        Plan plan = Planning.plan(new Job.View(torus, Scenes.Show.PATH, PathView.Colors.DARKNESS, false), Progress.NONE);
+        String json = cliOut("refine", torus.toString(), "-o", dir.resolve("torus-refined.off").toString(), "--json");
+        for (String key : List.of("inputTriangles", "components", "outputTriangles", "minAngleInDegrees", "minAngleOutDegrees")) {
+            assertTrue(json.contains("\"" + key + "\": " + plan.figures().get(key) + ","), key + " as ifold refine reports it: "
+                    + plan.figures().get(key) + " in " + json);
+        }
+        assertEquals(576, plan.figures().get("inputTriangles"), "the torus's triangles");
+        int refined = (Integer) plan.figures().get("outputTriangles");
+        assertEquals(5 * 576 - 2, refined, "5n - 2c for one component");
+        Geometry shown = ((RevealAnimation) plan.shown().animation()).geometry();
+        assertEquals(Scenes.VIEWED, shown.name());
+        assertEquals(refined, shown.mesh().triangleCount(), "the view's mesh is the refinement");
+        assertEquals(refined, plan.stepCount(), "a step a triangle, as ifold view --path reveals them");
+        assertEquals("torus.off: 576 -> " + refined + " triangles", plan.title(), "ifold view's caption");
+        assertEquals(PathView.edgeKindCounts(shown.mesh())[0], plan.figures().get("treeEdges"));
+        assertTrue((Integer) plan.figures().get("treeEdges") > 0 && (Integer) plan.figures().get("steinerEdges") > 0,
+                "tree and Steiner edges drawn: " + plan.figures());
+
+        List<Fold> parts = plan.folds();
+        assertEquals(Planning.VIEW_PARTS, parts.size(), "the reveal in tenths: " + parts);
+        assertEquals(new Fold("triangles 1-288 of " + refined, "path", 0), parts.get(0));
+        assertEquals("triangles 2593-" + refined + " of " + refined, parts.get(parts.size() - 1).name());
+        for (int i = 1; i < parts.size(); i++) {
+            assertTrue(parts.get(i).position() > parts.get(i - 1).position() && parts.get(i).position() < plan.stepCount(), parts.toString());
+        }
+        plan.shown().animation().apply(parts.get(3).position());
+        assertEquals(3 * 288, shown.revealed(), "at a part's start, the parts before it shown");
+        assertEquals("path: triangle " + refined + " of " + refined, plan.shown().animation().describe(plan.stepCount()));
+
+        Plan.Shown export = plan.newScene();
+        assertTrue(export.scene() != plan.shown().scene(), "an export plays a scene of its own");
+        assertEquals(refined, export.animation().stepCount());
+        assertThrows(JobFailure.class, () -> Exports.obj(plan, dir.resolve("none.obj"), Progress.NONE), "a view folds no paper");
+        assertFalse(Files.exists(dir.resolve("none.obj")));
+    }
+
+    @Test
+    void aModelOrItsRefinementIsViewedTurningRound() throws Exception {
+        Path cube = Path.of("models", "cube.off");
+        Plan model = Planning.plan(new Job.View(cube, Scenes.Show.MODEL, PathView.Colors.DARKNESS, false), Progress.NONE);
+        assertEquals(6, model.figures().get("faces"), "the cube's quads, not triangulated, as ifold view reads them");
+        assertEquals(12, model.figures().get("triangles"));
+        assertEquals("cube.off: 6 faces, 12 triangles", model.title());
+        assertTrue(model.shown().animation() instanceof Turntable);
+        assertEquals(360 / Planning.TURN_DEGREES, model.folds().size());
+        assertEquals("turntable", model.folds().get(1).kind());
+        assertEquals(model.stepCount() * Planning.TURN_DEGREES / 360.0, model.folds().get(1).position(), 1e-9);
+        Plan refinement = Planning.plan(new Job.View(cube, Scenes.Show.REFINEMENT, PathView.Colors.RAINBOW, false), Progress.NONE);
+        assertEquals(58, refinement.figures().get("outputTriangles"), "5 * 12 - 2");
+        assertEquals("model", Planning.check(new Job.View(dir.resolve("none.off"), Scenes.Show.PATH, PathView.Colors.DARKNESS, false))
+                .get(0).field());
+        Path defective = dir.resolve("twice.off");
+        Files.writeString(defective, "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 1 2\n");
+        JobFailure strict = assertThrows(JobFailure.class,
+                () -> Planning.plan(new Job.View(defective, Scenes.Show.PATH, PathView.Colors.DARKNESS, true), Progress.NONE));
+        assertEquals("model", strict.problem().field(), strict.getMessage());
     }
 
     @Test
