@@ -480,7 +480,8 @@ final class MainWindow extends JFrame {
         fresh.seek(fraction * fresh.end());
         view.show(next.shown(), fresh.position(), next.title());
         showSurface();
-        timeline.setTimeline(fresh, !sameKind || (old != null && old.isPlaying()));
+        // A view reveals triangles and folds no paper: its steps are not folds.
+        timeline.setTimeline(fresh, !sameKind || (old != null && old.isPlaying()), next.hasPaper() ? "fold" : "step");
         report.show(next.figures());
         setTitle("iFold - " + next.title());
         say(next.title());

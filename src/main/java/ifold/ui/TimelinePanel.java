@@ -41,7 +41,7 @@ final class TimelinePanel extends JPanel {
             return index < 0 ? null : getModel().getElementAt(index);
         }
     };
-    private final JLabel where = new JLabel(" ");
+    final JLabel where = new JLabel(" ");
     private final SceneView view;
     private final Timer clock;
     private Timeline timeline;
@@ -98,9 +98,13 @@ final class TimelinePanel extends JPanel {
         setEnabled(false);
     }
 
-    /** Takes a new timeline (a new plan), at its position, playing if {@code playing}. */
-    void setTimeline(Timeline next, boolean playing) {
+    /** What the steps are called where the timeline says where it is: "fold 3 of 12", "step 3 of 10". */
+    private String unit = "fold";
+
+    /** Takes a new timeline (a new plan), at its position, playing if {@code playing}; its steps are {@code unit}s. */
+    void setTimeline(Timeline next, boolean playing, String unit) {
         timeline = next;
+        this.unit = unit;
         timeline.setSpeed(Timeline.SPEEDS[speed.getSelectedIndex()]);
         List<Fold> list = next.folds();
         updating = true;
@@ -204,7 +208,7 @@ final class TimelinePanel extends JPanel {
             updating = false;
         }
         int current = timeline.currentFold();
-        where.setText(String.format(java.util.Locale.ROOT, "fold %d of %d", current + 1, timeline.folds().size()));
+        where.setText(String.format(java.util.Locale.ROOT, "%s %d of %d", unit, current + 1, timeline.folds().size()));
         play.setText(timeline.isPlaying() ? "Pause" : "Play");
         if (timeline.isPlaying() && !clock.isRunning()) {
             lastTick = System.nanoTime();

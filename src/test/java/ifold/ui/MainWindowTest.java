@@ -190,6 +190,7 @@ class MainWindowTest {
         assertTrue(onEdt(() -> window.getTitle()).contains("zig-zag"), "the title says what is shown");
         assertTrue(pixelsOf(picture, 0xD3DAE2, 3) > picture.getWidth() * picture.getHeight() / 10, "the demo's background");
         assertEquals("5", onEdt(() -> window.report.value("passes")), "the report panel holds the --report figures");
+        assertTrue(onEdt(() -> window.timeline.where.getText()).matches("fold \\d+ of 12"), onEdt(() -> window.timeline.where.getText()));
         assertEquals("1", onEdt(() -> window.report.value("coverage")));
         assertEquals(Planning.plan(Job.ZigZag.DEMO, Progress.NONE).folds().size(), (int) onEdt(() -> window.timeline.folds.getModel().getSize()));
         // Every menu the issue asks for, each item with its shortcut.
@@ -647,6 +648,8 @@ class MainWindowTest {
         assertTrue(onEdt(() -> window.getTitle()).contains("icosahedron.off: 20 -> 98 triangles"), window.getTitle());
         assertEquals(10, (int) onEdt(() -> window.timeline.folds.getModel().getSize()), "the reveal in tenths");
         assertEquals("1. triangles 1-10 of 98  [path]", onEdt(() -> window.timeline.folds.getModel().getElementAt(0)));
+        assertTrue(onEdt(() -> window.timeline.where.getText()).matches("step \\d+ of 10"), "a view has steps, not folds: "
+                + onEdt(() -> window.timeline.where.getText()));
 
         onEdt(() -> {
             window.timeline.slider.setValue(TimelinePanel.TICKS / 10);
