@@ -48,7 +48,10 @@ final class Shaders {
                     if (hiddenColor.a == 0.0) {
                         discard; // a clear hidden colour: triangles not yet revealed are not there
                     }
-                    base = hiddenColor;
+                    // Unlit: one flat tone, so that no shading makes a triangle not yet revealed
+                    // look like one of the revealed, which are shaded.
+                    fragColor = hiddenColor;
+                    return;
                 } else if (gl_FrontFacing) {
                     base = useFaceColors ? texelFetch(triangleColors, gl_PrimitiveID) : frontColor;
                 } else {

@@ -17,7 +17,7 @@ public final class Geometry extends Spatial {
     private Material material;
     private int version;
     private int revealed = ALL;
-    private int hiddenColor = 0xFFE6E6E6;
+    private int hiddenColor = 0xFFF3F3F3;
     private boolean closed;
 
     public Geometry(String name, SceneMesh mesh, Material material) {
