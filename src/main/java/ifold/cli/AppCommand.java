@@ -31,9 +31,6 @@ final class AppCommand implements Callable<Integer> {
         }
         if (file != null) {
             LoadedModel.requireRegularFile(file);
-            if (Files.isDirectory(file)) {
-                throw new UserError(file + ": a directory, not a file");
-            }
         }
         open(file, settings);
         return 0;

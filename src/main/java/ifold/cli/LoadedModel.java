@@ -1,100 +1,75 @@
 package ifold.cli;
 
+import ifold.job.ModelFiles;
 import ifold.mesh.Defect;
-import ifold.mesh.InvalidMeshException;
 import ifold.mesh.MeshBuilder;
-import ifold.mesh.PolygonSoup;
-import ifold.mesh.io.MeshFormatException;
-import ifold.mesh.io.MeshReaders;
-import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.file.AccessDeniedException;
-import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.Map;
+import java.util.TreeMap;
 
 /**
- * A model file read and built into a halfedge mesh, with the time each step took. Turns every
- * way that can fail into a {@link UserError} naming the file and, where known, the line.
- *
- * @param inputVertices vertices in the file
- * @param inputFaces faces in the file
- * @param built the halfedge mesh and its repairs
- * @param parseSeconds time to read the file
- * @param buildSeconds time to build the mesh
+ * A model file read and built ({@link ModelFiles}, as the window reads it), for the commands:
+ * every way that can fail is a {@link UserError} naming the file and, where known, the line.
  */
-record LoadedModel(int inputVertices, int inputFaces, MeshBuilder.Result built, double parseSeconds, double buildSeconds) {
+final class LoadedModel {
+    private final ModelFiles.Loaded loaded;
 
-    /**
-     * Refuses a pipe, a device or a socket before reading it: reading one would wait for ever
-     * for a writer, or for an end that never comes.
-     */
+    private LoadedModel(ModelFiles.Loaded loaded) {
+        this.loaded = loaded;
+    }
+
+    /** Refuses a folder, a pipe, a device or a socket before reading it (see {@link ModelFiles#notAFile}). */
     static void requireRegularFile(Path file) {
-        if (Files.exists(file) && !Files.isDirectory(file) && !Files.isRegularFile(file)) {
-            throw new UserError(file + ": not a regular file (a pipe, a device or a socket): iFold reads files");
+        String refusal = ModelFiles.notAFile(file);
+        if (refusal != null) {
+            throw new UserError(refusal);
         }
     }
 
     static LoadedModel load(Path file, MeshBuilder.Options options) {
-        long start = System.nanoTime();
-        PolygonSoup soup;
         try {
-            if (Files.isDirectory(file)) {
-                throw new UserError(file + ": is a folder, expected an .off or .obj file");
-            }
-            requireRegularFile(file);
-            soup = MeshReaders.read(file);
-        } catch (MeshFormatException e) {
-            throw new UserError(e.getMessage());
-        } catch (NoSuchFileException e) {
-            throw new UserError(file + ": no such file");
-        } catch (AccessDeniedException e) {
-            throw new UserError(file + ": permission denied");
-        } catch (IOException e) {
-            throw new UserError(file + ": cannot read: " + e.getMessage());
+            return new LoadedModel(ModelFiles.load(file, options));
+        } catch (ModelFiles.LoadFailure e) {
+            throw new UserError(e.getMessage() + (e.repairable() ? " (run without --strict to repair)" : ""));
         }
-        long parsed = System.nanoTime();
-        MeshBuilder.Result built;
-        try {
-            built = MeshBuilder.build(soup, options);
-        } catch (InvalidMeshException e) {
-            String where = e.sourceLine() > 0 ? file + ":" + e.sourceLine() : file.toString();
-            String hint = e.defect().isRepairable() && options.strict() ? " (run without --strict to repair)" : "";
-            throw new UserError(where + ": " + e.getMessage() + hint);
-        }
-        long builtAt = System.nanoTime();
-        // The soup is not kept: for big models it is a third of the memory the refinement needs.
-        return new LoadedModel(soup.vertexCount(), soup.faceCount(), built, (parsed - start) * 1e-9, (builtAt - parsed) * 1e-9);
+    }
+
+    int inputVertices() {
+        return loaded.inputVertices();
+    }
+
+    int inputFaces() {
+        return loaded.inputFaces();
+    }
+
+    MeshBuilder.Result built() {
+        return loaded.built();
+    }
+
+    double parseSeconds() {
+        return loaded.parseSeconds();
+    }
+
+    double buildSeconds() {
+        return loaded.buildSeconds();
     }
 
     Map<Defect, Integer> repairs() {
-        return built.repairs();
+        return loaded.repairs();
+    }
+
+    /** Refuses a model its repairs left without faces, in one line that names the repairs (rather than a line per repair and then the refusal). */
+    void requireFaces(Path file, String what) {
+        String refusal = loaded.noFacesLeft(file, what);
+        if (refusal != null) {
+            throw new UserError(refusal);
+        }
     }
 
     /** One line on {@code err} for each kind of repair made, with its count. */
-    /** The repairs made, in one phrase: "dropped 1 zero-area faces, removed 3 unreferenced vertices". */
-    String repairsText() {
-        java.util.List<String> parts = new java.util.ArrayList<>();
-        for (Map.Entry<Defect, Integer> repair : new java.util.TreeMap<>(built.repairs()).entrySet()) {
-            parts.add(repair.getKey().describeRepair(repair.getValue()));
-        }
-        return String.join(", ", parts);
-    }
-
-    /**
-     * Refuses a model its repairs left without faces, in one line that names the repairs
-     * (rather than a line per repair and then the refusal).
-     */
-    void requireFaces(Path file, String what) {
-        if (built.mesh().faceCount() == 0) {
-            String repairs = repairsText();
-            throw new UserError(file + ": no faces left" + (repairs.isEmpty() ? "" : " after the repairs (" + repairs + ")") + ": " + what);
-        }
-    }
-
     void reportRepairs(Path file, PrintWriter err) {
-        for (Map.Entry<Defect, Integer> repair : new java.util.TreeMap<>(built.repairs()).entrySet()) {
+        for (Map.Entry<Defect, Integer> repair : new TreeMap<>(loaded.repairs()).entrySet()) {
             err.println("ifold: " + file + ": repaired: " + repair.getKey().describeRepair(repair.getValue()));
         }
         err.flush();

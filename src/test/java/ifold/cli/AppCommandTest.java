@@ -56,6 +56,6 @@ class AppCommandTest {
         assertTrue(missing.output().contains("none.off: no such file"), missing.output());
         Ended folder = runWithoutDisplay("app", dir.toString());
         assertEquals(1, folder.code(), folder.output());
-        assertTrue(folder.output().contains("a directory, not a file"), folder.output());
+        assertTrue(folder.output().contains("is a folder"), folder.output());
     }
 }

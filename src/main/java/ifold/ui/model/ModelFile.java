@@ -1,22 +1,18 @@
 package ifold.ui.model;
 
+import ifold.job.ModelFiles;
 import ifold.job.ModelInfo;
-import ifold.mesh.InvalidMeshException;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.PolygonSoup;
-import ifold.mesh.io.MeshFormatException;
-import ifold.mesh.io.MeshReaders;
 import java.io.IOException;
-import java.nio.file.AccessDeniedException;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.Map;
 
 /**
  * A model file read and built into a halfedge mesh, for the window's jobs on it (the wrap, its
- * information, its refinement). Every way that fails is a {@link JobFailure} at the model's
- * field, in one line naming the file and, where known, the line.
+ * information, its refinement), by {@link ModelFiles} as the command line reads it. Every way
+ * that fails is a {@link JobFailure} at the model's field, in the command line's one line.
  *
  * @param inputVertices vertices in the file
  * @param inputFaces faces in the file
@@ -32,25 +28,19 @@ public record ModelFile(int inputVertices, int inputFaces, MeshBuilder.Result bu
     public static ModelFile load(Path file, MeshBuilder.Options options, Progress progress) throws JobFailure {
         progress.stage("reading " + file.getFileName());
         try {
-            PolygonSoup soup = MeshReaders.read(file);
+            PolygonSoup soup = ModelFiles.read(file);
             progress.check();
-            MeshBuilder.Result built = MeshBuilder.build(soup, options);
-            return new ModelFile(soup.vertexCount(), soup.faceCount(), built);
-        } catch (MeshFormatException e) {
-            throw new JobFailure(new Problem("model", e.getMessage()));
-        } catch (InvalidMeshException e) {
-            String where = e.sourceLine() > 0 ? file + ":" + e.sourceLine() : file.toString();
-            String hint = e.defect().isRepairable() && options.strict() ? " (clear Strict to repair it)" : "";
-            throw new JobFailure(new Problem("model", where + ": " + e.getMessage() + hint));
-        } catch (IOException e) {
-            throw new JobFailure(new Problem("model", readError(file, e)));
+            return new ModelFile(soup.vertexCount(), soup.faceCount(), ModelFiles.build(file, soup, options));
+        } catch (ModelFiles.LoadFailure e) {
+            throw new JobFailure(new Problem("model", e.getMessage() + (e.repairable() ? " (clear Strict to repair it)" : "")));
         }
     }
 
-    /** Refuses a model its repairs left without faces: there is nothing to {@code what} ("wrap", "refine"). */
+    /** Refuses a model its repairs left without faces, naming the repairs: there is nothing to {@code what} ("wrap", "refine"). */
     public void requireFaces(Path file, String what) throws JobFailure {
-        if (built.mesh().faceCount() == 0) {
-            throw new JobFailure(new Problem("model", file + ": no faces left to " + what));
+        String refusal = ModelFiles.noFacesLeft(file, built, "nothing to " + what);
+        if (refusal != null) {
+            throw new JobFailure(new Problem("model", refusal));
         }
     }
 
@@ -73,12 +63,6 @@ public record ModelFile(int inputVertices, int inputFaces, MeshBuilder.Result bu
     }
 
     static String readError(Path file, IOException e) {
-        if (e instanceof NoSuchFileException) {
-            return file + ": no such file";
-        }
-        if (e instanceof AccessDeniedException) {
-            return file + ": permission denied";
-        }
-        return file + ": cannot read: " + e.getMessage();
+        return ModelFiles.readError(file, e);
     }
 }

@@ -179,4 +179,18 @@ class ModelFileTest {
         assertEquals("subdivisions", refused.problem().field());
         assertFalse(Files.exists(dir.resolve("fine.off")));
     }
+
+    /** A folder or a pipe is refused at the model's field with the command line's own line, and a pipe never hangs the reading. */
+    @Test
+    void aFolderOrAPipeIsRefusedAsTheCommandLineRefusesIt() throws Exception {
+        JobFailure folder = assertThrows(JobFailure.class, () -> ModelFile.load(dir, ifold.mesh.MeshBuilder.Options.REPAIR, Progress.NONE));
+        assertEquals("model", folder.problem().field());
+        assertEquals("ifold: " + folder.problem().message(), cli("info", dir.toString()).err().strip());
+        Path pipe = dir.resolve("pipe.off");
+        org.junit.jupiter.api.Assumptions.assumeTrue(new ProcessBuilder("mkfifo", pipe.toString()).start().waitFor() == 0, "no mkfifo here");
+        JobFailure refused = org.junit.jupiter.api.Assertions.assertTimeoutPreemptively(java.time.Duration.ofSeconds(10),
+                () -> assertThrows(JobFailure.class, () -> ModelFile.load(pipe, ifold.mesh.MeshBuilder.Options.REPAIR, Progress.NONE)));
+        assertEquals("ifold: " + refused.problem().message(), cli("info", pipe.toString()).err().strip());
+        assertTrue(refused.problem().message().contains("not a regular file"), refused.problem().message());
+    }
 }
