@@ -440,26 +440,14 @@ final class MainWindow extends JFrame {
 
     private void plan(Job job) {
         workStarted("planning");
-        planner.submit(progress -> Planning.plan(job, progress), new Worker.Listener<Plan>() {
+        planner.submit(progress -> Planning.plan(job, progress), new StatusLine<Plan>() {
             @Override
-            public void stage(String what) {
-                say(what + "...");
-            }
-
-            @Override
-            public void done(int done, int total) {
-                MainWindow.this.done(done, total);
-            }
-
-            @Override
-            public void succeeded(Plan next) {
-                workEnded();
+            void finished(Plan next) {
                 show(next);
             }
 
             @Override
-            public void failed(Problem problem) {
-                workEnded();
+            void refused(Problem problem) {
                 parameters.mark(List.of(problem));
                 say(problem.message());
             }
@@ -617,20 +605,9 @@ final class MainWindow extends JFrame {
      */
     private void write(String doing, String failed, Path file, Worker.Task<String> task, Consumer<String> written) {
         workStarted(doing);
-        exporter.submit(task, new Worker.Listener<String>() {
+        exporter.submit(task, new StatusLine<String>() {
             @Override
-            public void stage(String text) {
-                say(text + "...");
-            }
-
-            @Override
-            public void done(int done, int total) {
-                MainWindow.this.done(done, total);
-            }
-
-            @Override
-            public void succeeded(String summary) {
-                workEnded();
+            void finished(String summary) {
                 Path folder = file.toAbsolutePath().getParent();
                 if (folder != null) {
                     settings.put("folder", folder.toString());
@@ -639,13 +616,44 @@ final class MainWindow extends JFrame {
             }
 
             @Override
-            public void failed(Problem problem) {
-                workEnded();
+            void refused(Problem problem) {
                 say(failed + ": " + problem.message());
                 String title = Character.toUpperCase(failed.charAt(0)) + failed.substring(1);
                 JOptionPane.showMessageDialog(MainWindow.this, problem.message(), title, JOptionPane.ERROR_MESSAGE);
             }
         });
+    }
+
+    /**
+     * What the window hears of background work: its stages and progress on the status line, and
+     * its end, whichever it is, ends the work shown before {@link #finished} or {@link #refused}.
+     */
+    private abstract class StatusLine<T> implements Worker.Listener<T> {
+        @Override
+        public final void stage(String what) {
+            say(what + "...");
+        }
+
+        @Override
+        public final void done(int done, int total) {
+            MainWindow.this.done(done, total);
+        }
+
+        @Override
+        public final void succeeded(T value) {
+            workEnded();
+            finished(value);
+        }
+
+        @Override
+        public final void failed(Problem problem) {
+            workEnded();
+            refused(problem);
+        }
+
+        abstract void finished(T value);
+
+        abstract void refused(Problem problem);
     }
 
     /** Asks the size, frames a second, length and captions of frames or a movie; null if cancelled. */
@@ -729,27 +737,15 @@ final class MainWindow extends JFrame {
         }
         boolean strict = parameters.wrapStrict.isSelected();
         workStarted("measuring " + model.getFileName());
-        inspector.submit(progress -> ModelFile.information(model, strict, progress), new Worker.Listener<Map<String, Object>>() {
+        inspector.submit(progress -> ModelFile.information(model, strict, progress), new StatusLine<Map<String, Object>>() {
             @Override
-            public void stage(String what) {
-                say(what + "...");
-            }
-
-            @Override
-            public void done(int done, int total) {
-                MainWindow.this.done(done, total);
-            }
-
-            @Override
-            public void succeeded(Map<String, Object> figures) {
-                workEnded();
+            void finished(Map<String, Object> figures) {
                 showInformation(model, figures);
                 say(model.getFileName() + ": " + figures.get("faces") + " faces, genus " + figures.get("genus"));
             }
 
             @Override
-            public void failed(Problem problem) {
-                workEnded();
+            void refused(Problem problem) {
                 say("no model information: " + problem.message());
             }
         });
