@@ -32,19 +32,19 @@ public final class Polygons {
         double ny = 0;
         double nz = 0;
         double longest = 0;
-        double[] p = new double[3];
-        double[] q = new double[3];
         for (int i = 0; i < size; i++) {
             int pa = 3 * polygon[i];
             int pb = 3 * polygon[(i + 1) % size];
-            for (int axis = 0; axis < 3; axis++) {
-                p[axis] = (xyz[pa + axis] * 0.5 - xyz[first + axis] * 0.5) / scale;
-                q[axis] = (xyz[pb + axis] * 0.5 - xyz[first + axis] * 0.5) / scale;
-            }
-            nx += (p[1] - q[1]) * (p[2] + q[2]);
-            ny += (p[2] - q[2]) * (p[0] + q[0]);
-            nz += (p[0] - q[0]) * (p[1] + q[1]);
-            longest = Math.max(longest, (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+            double px = (xyz[pa] * 0.5 - xyz[first] * 0.5) / scale;
+            double py = (xyz[pa + 1] * 0.5 - xyz[first + 1] * 0.5) / scale;
+            double pz = (xyz[pa + 2] * 0.5 - xyz[first + 2] * 0.5) / scale;
+            double qx = (xyz[pb] * 0.5 - xyz[first] * 0.5) / scale;
+            double qy = (xyz[pb + 1] * 0.5 - xyz[first + 1] * 0.5) / scale;
+            double qz = (xyz[pb + 2] * 0.5 - xyz[first + 2] * 0.5) / scale;
+            nx += (py - qy) * (pz + qz);
+            ny += (pz - qz) * (px + qx);
+            nz += (px - qx) * (py + qy);
+            longest = Math.max(longest, (px - qx) * (px - qx) + (py - qy) * (py - qy) + (pz - qz) * (pz - qz));
         }
         dest[0] = nx;
         dest[1] = ny;

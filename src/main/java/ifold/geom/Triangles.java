@@ -53,14 +53,37 @@ public final class Triangles {
      * overflow.
      */
     public static boolean isDegenerate(double[] xyz, int a, int b, int c) {
-        double[] e = scaledEdges(xyz, a, b, c);
-        if (e == null) {
+        // The arithmetic of scaledEdges and crossLength, spelled out in locals: this runs for
+        // every triangle of every model loaded, and arrays per call cost a third of a load.
+        int pa = 3 * a;
+        int pb = 3 * b;
+        int pc = 3 * c;
+        double ux = xyz[pb] * 0.5 - xyz[pa] * 0.5;
+        double uy = xyz[pb + 1] * 0.5 - xyz[pa + 1] * 0.5;
+        double uz = xyz[pb + 2] * 0.5 - xyz[pa + 2] * 0.5;
+        double vx = xyz[pc] * 0.5 - xyz[pa] * 0.5;
+        double vy = xyz[pc + 1] * 0.5 - xyz[pa + 1] * 0.5;
+        double vz = xyz[pc + 2] * 0.5 - xyz[pa + 2] * 0.5;
+        double scale = Math.max(Math.max(Math.abs(ux), Math.abs(vx)),
+                Math.max(Math.max(Math.abs(uy), Math.abs(vy)), Math.max(Math.abs(uz), Math.abs(vz))));
+        if (!(scale > 0) || !Double.isFinite(scale)) {
             return true; // all three corners at one point
         }
-        double[] w = {e[3] - e[0], e[4] - e[1], e[5] - e[2]};
-        double longest = Math.max(e[0] * e[0] + e[1] * e[1] + e[2] * e[2],
-                Math.max(e[3] * e[3] + e[4] * e[4] + e[5] * e[5], w[0] * w[0] + w[1] * w[1] + w[2] * w[2]));
-        return Tolerance.isDegenerateTriangle(crossLength(e), longest);
+        ux /= scale;
+        uy /= scale;
+        uz /= scale;
+        vx /= scale;
+        vy /= scale;
+        vz /= scale;
+        double wx = vx - ux;
+        double wy = vy - uy;
+        double wz = vz - uz;
+        double longest = Math.max(ux * ux + uy * uy + uz * uz,
+                Math.max(vx * vx + vy * vy + vz * vz, wx * wx + wy * wy + wz * wz));
+        double nx = uy * vz - uz * vy;
+        double ny = uz * vx - ux * vz;
+        double nz = ux * vy - uy * vx;
+        return Tolerance.isDegenerateTriangle(Math.sqrt(nx * nx + ny * ny + nz * nz), longest);
     }
 
     /**

@@ -116,14 +116,16 @@ public final class MeshBuilder {
     /** Below this many faces a second thread costs more than it saves. */
     private static final int PARALLEL_FACES = 50_000;
 
+    static long T0; static void tick(String w){ if (System.getProperty("tick")!=null){ long t=System.nanoTime(); System.err.printf("  %s %.1f%n", w, (t-T0)/1e6); T0=t;} }
     private Result run() throws InvalidMeshException {
-        checkCoordinates();
-        cleanFaces();
+        T0=System.nanoTime();
+        checkCoordinates(); tick("coords");
+        cleanFaces(); tick("clean");
         boolean[] drop;
         if (wStart == null) {
             // Triangles: the mates rule out almost every face at once (duplicateCandidates).
-            findMates();
-            drop = findDuplicateFaces(duplicateCandidates());
+            findMates(); tick("mates");
+            drop = findDuplicateFaces(duplicateCandidates()); tick("dups");
         } else {
             // Polygons: duplicates are rare, and looking for them is a pass of random look-ups:
             // do it on a second core while the corners are grouped.
@@ -144,8 +146,10 @@ public final class MeshBuilder {
             cornerFace = wStart == null ? null : cornerFaces();
             findMates();
         }
-        reverseFlippedFaces(orient());
-        return assemble(pairHalfedges());
+        boolean[] fl = orient(); tick("orient");
+        reverseFlippedFaces(fl); tick("reverse");
+        int[] ph = pairHalfedges(); tick("pair");
+        Result r = assemble(ph); tick("assemble"); return r;
     }
 
     private static boolean[] await(FutureTask<boolean[]> task) throws InvalidMeshException {
@@ -183,6 +187,26 @@ public final class MeshBuilder {
         int[] triangles = new int[3 * 16];
         for (int f = 0; f < faceCount; f++) {
             int size = soup.faceSize(f);
+            if (size == 3 && wStart == null && wCornerCount + 3 <= wVerts.length && wFaceCount < wSource.length) {
+                // The common case, a proper triangle, without the copies of the general path
+                // below (which treats it the same way: nothing repeated, no area or kept).
+                int a = soup.faceVertex(f, 0);
+                int b = soup.faceVertex(f, 1);
+                int c = soup.faceVertex(f, 2);
+                if (a >= 0 && a < vertexCount && b >= 0 && b < vertexCount && c >= 0 && c < vertexCount
+                        && a != b && b != c && c != a) {
+                    if (Triangles.isDegenerate(xyz, a, b, c)) {
+                        repair(Defect.ZERO_AREA_FACE, f, 1);
+                    } else {
+                        wVerts[wCornerCount] = a;
+                        wVerts[wCornerCount + 1] = b;
+                        wVerts[wCornerCount + 2] = c;
+                        wCornerCount += 3;
+                        wSource[wFaceCount++] = f;
+                    }
+                    continue;
+                }
+            }
             if (size > polygon.length) {
                 polygon = new int[2 * size];
                 triangles = new int[6 * size];
@@ -489,14 +513,19 @@ public final class MeshBuilder {
         boolean[] flip = new boolean[wFaceCount];
         int[] component = new int[wFaceCount];
         Arrays.fill(component, -1);
+        // The components one after another, each in the order the walk reached its faces.
         int[] queue = new int[wFaceCount];
+        // Per component: turned over as a whole (the minority rule), and closed.
+        boolean[] inverted = new boolean[16];
+        boolean[] closedComponent = new boolean[16];
         int components = 0;
+        int tail = 0;
         for (int seed = 0; seed < wFaceCount; seed++) {
             if (component[seed] >= 0) {
                 continue;
             }
-            int head = 0;
-            int tail = 0;
+            int first = tail;
+            int head = tail;
             queue[tail++] = seed;
             component[seed] = components;
             int flipped = 0;
@@ -537,32 +566,72 @@ public final class MeshBuilder {
                     }
                 }
             }
-            int size = tail;
+            int size = tail - first;
             // Turn over the minority: the side most faces agree on is taken as meant.
             boolean invert = 2 * flipped > size;
             int turned = invert ? size - flipped : flipped;
             if (turned > 0) {
                 if (options.strict()) {
-                    int example = firstDisagreeing(queue, size, flip, invert);
+                    int example = firstDisagreeing(queue, first, tail, flip, invert);
                     throw refuse(Defect.INCONSISTENT_ORIENTATION, wSource[example], "face " + wSource[example]
                             + ": " + Defect.INCONSISTENT_ORIENTATION.description());
                 }
                 repair(Defect.INCONSISTENT_ORIENTATION, wSource[seed], turned);
             }
-            if (invert) {
-                for (int i = 0; i < size; i++) {
-                    flip[queue[i]] = !flip[queue[i]];
-                }
+            if (components == inverted.length) {
+                inverted = Arrays.copyOf(inverted, 2 * components);
+                closedComponent = Arrays.copyOf(closedComponent, 2 * components);
             }
-            if (closed && signedVolume(queue, size, flip) < 0) {
-                for (int i = 0; i < size; i++) {
-                    flip[queue[i]] = !flip[queue[i]];
-                }
-                repairs.merge(Defect.INWARD_COMPONENT, 1, Integer::sum);
-            }
+            inverted[components] = invert;
+            closedComponent[components] = closed;
             components++;
         }
+        // Closed components enclosing a negative volume are turned outward. The volumes are
+        // summed in face order, one pass over memory for all components together.
+        double[] volume = signedVolumes(component, flip, inverted, closedComponent, components);
+        for (int k = 0; k < components; k++) {
+            if (closedComponent[k] && volume[k] < 0) {
+                inverted[k] = !inverted[k];
+                repairs.merge(Defect.INWARD_COMPONENT, 1, Integer::sum);
+            }
+        }
+        for (int f = 0; f < wFaceCount; f++) {
+            flip[f] ^= inverted[component[f]];
+        }
         return flip;
+    }
+
+    private static int firstDisagreeing(int[] faces, int from, int to, boolean[] flip, boolean invert) {
+        for (int i = from; i < to; i++) {
+            if (flip[faces[i]] != invert) {
+                return faces[i];
+            }
+        }
+        return faces[from];
+    }
+
+    /**
+     * Six times the signed volume enclosed by each closed component, with its faces oriented as
+     * {@code flip}, then {@code inverted} for the whole component, will orient them.
+     */
+    private double[] signedVolumes(int[] component, boolean[] flip, boolean[] inverted, boolean[] closed,
+            int components) {
+        double[] volume = new double[components];
+        for (int f = 0; f < wFaceCount; f++) {
+            int k = component[f];
+            if (!closed[k]) {
+                continue;
+            }
+            int start = faceStart(f);
+            int end = faceStart(f + 1);
+            int a = wVerts[start];
+            double faceVolume = 0;
+            for (int c = start + 1; c + 1 < end; c++) {
+                faceVolume += tripleProduct(a, wVerts[c], wVerts[c + 1]);
+            }
+            volume[k] += flip[f] ^ inverted[k] ? -faceVolume : faceVolume;
+        }
+        return volume;
     }
 
     private static int firstDisagreeing(int[] faces, int size, boolean[] flip, boolean invert) {
@@ -572,21 +641,6 @@ public final class MeshBuilder {
             }
         }
         return faces[0];
-    }
-
-    /** Six times the signed volume enclosed by the faces, as they will be oriented. */
-    private double signedVolume(int[] faces, int size, boolean[] flip) {
-        double volume = 0;
-        for (int i = 0; i < size; i++) {
-            int f = faces[i];
-            int a = wVerts[faceStart(f)];
-            double faceVolume = 0;
-            for (int c = faceStart(f) + 1; c + 1 < faceStart(f + 1); c++) {
-                faceVolume += tripleProduct(a, wVerts[c], wVerts[c + 1]);
-            }
-            volume += flip[f] ? -faceVolume : faceVolume;
-        }
-        return volume;
     }
 
     private double tripleProduct(int a, int b, int c) {
@@ -744,10 +798,6 @@ public final class MeshBuilder {
         // Boundary halfedges have no corner: they are the twins not set below, and point back
         // to where their interior twin starts.
         Arrays.fill(face, -1);
-        for (int c = 0; c < wCornerCount; c++) {
-            int twin = cornerHalfedge[c] ^ 1;
-            toVertex[twin] = cornerFrom(c);
-        }
         int[] faceHalfedge = new int[wFaceCount];
         for (int f = 0; f < wFaceCount; f++) {
             int start = faceStart(f);
@@ -756,6 +806,9 @@ public final class MeshBuilder {
             for (int c = start; c < end; c++) {
                 int hc = cornerHalfedge[c];
                 int hn = cornerHalfedge[c + 1 < end ? c + 1 : start];
+                // The twin ends where this corner starts: a boundary twin gets its vertex only
+                // here; an interior twin is written again, the same, from its own corner.
+                toVertex[hc ^ 1] = wVerts[c];
                 toVertex[hc] = wVerts[c + 1 < end ? c + 1 : start];
                 face[hc] = f;
                 next[hc] = hn;
@@ -791,8 +844,10 @@ public final class MeshBuilder {
             }
             repairs.merge(Defect.UNREFERENCED_VERTEX, unreferenced, Integer::sum);
         }
-        for (int i = 0; i < halfedgeCount; i++) {
-            toVertex[i] = meshVertex[toVertex[i]];
+        if (unreferenced > 0) { // otherwise every vertex keeps its number
+            for (int i = 0; i < halfedgeCount; i++) {
+                toVertex[i] = meshVertex[toVertex[i]];
+            }
         }
         int[] sourceVertex = new int[Math.max(4, vertexCount + vertexCount / 8)];
         for (int v = 0; v < inputVertices; v++) {
@@ -812,16 +867,29 @@ public final class MeshBuilder {
             if (face[start] < 0 || visited[start]) {
                 continue;
             }
-            // Turn clockwise to the first halfedge of the fan (or all the way round).
-            int first = start;
-            while (face[first ^ 1] >= 0) {
-                int cw = next[first ^ 1];
-                if (cw == start) {
+            // Counter-clockwise from start to the boundary, or all the way round; an open fan
+            // is then walked clockwise from start to its other end.
+            int boundaryOut = -1;
+            int h = start;
+            while (true) {
+                visited[h] = true;
+                int ccw = prev[h] ^ 1;
+                if (face[ccw] < 0) {
+                    boundaryOut = ccw; // the boundary halfedge leaving this fan
                     break;
                 }
-                first = cw;
+                if (ccw == start) {
+                    break;
+                }
+                h = ccw;
             }
-            int v = toVertex[prev[first]];
+            if (boundaryOut >= 0) {
+                for (h = start; face[h ^ 1] >= 0; ) {
+                    h = next[h ^ 1];
+                    visited[h] = true;
+                }
+            }
+            int v = toVertex[prev[start]];
             if (vertexHalfedge[v] >= 0) {
                 if (options.strict()) {
                     throw new InvalidMeshException(Defect.NON_MANIFOLD_VERTEX, 0, "vertex "
@@ -836,25 +904,11 @@ public final class MeshBuilder {
                     vertexHalfedge = Arrays.copyOf(vertexHalfedge, 2 * vertexCount);
                 }
                 sourceVertex[vertexCount] = sourceVertex[v];
-                vertexHalfedge[vertexCount] = -1;
                 v = vertexCount++;
+                moveFan(start, v, toVertex, next, prev, face);
             }
-            vertexHalfedge[v] = first;
-            int hFan = first;
-            while (true) {
-                visited[hFan] = true;
-                toVertex[prev[hFan]] = v;
-                toVertex[hFan ^ 1] = v;
-                int ccw = prev[hFan] ^ 1;
-                if (face[ccw] < 0) {
-                    vertexHalfedge[v] = ccw; // the boundary halfedge leaving this fan
-                    break;
-                }
-                if (ccw == first) {
-                    break;
-                }
-                hFan = ccw;
-            }
+            // A closed fan starts one step counter-clockwise of where the walk began.
+            vertexHalfedge[v] = boundaryOut >= 0 ? boundaryOut : prev[start] ^ 1;
         }
         if (pinchCount > 0) {
             repairs.merge(Defect.NON_MANIFOLD_VERTEX, pinchCount, Integer::sum);
@@ -884,6 +938,31 @@ public final class MeshBuilder {
                 face, halfedgeCount, faceHalfedge, faceColor, wFaceCount);
         int[] sourceFace = Arrays.copyOf(wSource, wFaceCount);
         return new Result(mesh, Map.copyOf(repairs), sourceFace, Arrays.copyOf(sourceVertex, vertexCount));
+    }
+
+    /**
+     * Points the fan of halfedge {@code start} (its outgoing halfedges, and the incoming ones
+     * before them and across from them) at vertex {@code v}, the copy made for a pinch.
+     */
+    private static void moveFan(int start, int v, int[] toVertex, int[] next, int[] prev, int[] face) {
+        int h = start;
+        while (true) {
+            toVertex[prev[h]] = v;
+            toVertex[h ^ 1] = v;
+            int ccw = prev[h] ^ 1;
+            if (ccw == start) {
+                return; // closed: all of it done
+            }
+            if (face[ccw] < 0) {
+                break;
+            }
+            h = ccw;
+        }
+        for (h = start; face[h ^ 1] >= 0; ) {
+            h = next[h ^ 1];
+            toVertex[prev[h]] = v;
+            toVertex[h ^ 1] = v;
+        }
     }
 
     // ---- reporting --------------------------------------------------------------------------

@@ -1,6 +1,7 @@
 package ifold.mesh;
 
 import ifold.geom.Polygons;
+import ifold.geom.Triangles;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
@@ -199,7 +200,10 @@ public final class MeshValidator {
                 polygon[size++] = mesh.toVertex(h);
                 h = mesh.next(h);
             } while (h != start);
-            if (!Polygons.hasArea(xyz, polygon, size)) {
+            // Triangles are judged as the builder judges them (and without its polygon's copies).
+            boolean area = size == 3 ? !Triangles.isDegenerate(xyz, polygon[0], polygon[1], polygon[2])
+                    : Polygons.hasArea(xyz, polygon, size);
+            if (!area) {
                 report(MeshError.Kind.ZERO_AREA_FACE, f, "face " + f + " has no area");
             }
         }

@@ -96,6 +96,98 @@ class MeshBuilderTest {
     }
 
     @Test
+    void eachClosedComponentIsTurnedOutwardOnItsOwn() throws InvalidMeshException {
+        // Four tetrahedra side by side, the second and fourth inside out, and an open triangle
+        // between them: the volumes are summed per component in one pass over all faces.
+        PolygonSoup tetrahedron = Solids.tetrahedron();
+        PolygonSoup soup = new PolygonSoup();
+        for (int k = 0; k < 4; k++) {
+            int base = soup.vertexCount();
+            for (int v = 0; v < tetrahedron.vertexCount(); v++) {
+                soup.addVertex(tetrahedron.coordinate(v, 0) + 5 * k, tetrahedron.coordinate(v, 1), tetrahedron.coordinate(v, 2));
+            }
+            for (int f = 0; f < tetrahedron.faceCount(); f++) {
+                int a = base + tetrahedron.faceVertex(f, 0);
+                int b = base + tetrahedron.faceVertex(f, 1);
+                int c = base + tetrahedron.faceVertex(f, 2);
+                if (k % 2 == 1) {
+                    soup.addTriangle(c, b, a);
+                } else {
+                    soup.addTriangle(a, b, c);
+                }
+            }
+            if (k == 1) {
+                int t = soup.addVertex(0, 10, 0);
+                soup.addVertex(1, 10, 0);
+                soup.addVertex(0, 11, 0);
+                soup.addTriangle(t, t + 2, t + 1); // facing down, and open: left as it is
+            }
+        }
+        MeshBuilder.Result result = build(soup);
+        assertEquals(Map.of(Defect.INWARD_COMPONENT, 2), result.repairs());
+        HalfedgeMesh mesh = result.mesh();
+        assertEquals(5, Topology.of(mesh).components());
+        double[] volume = new double[4];
+        for (int f = 0; f < mesh.faceCount(); f++) {
+            int h = mesh.faceHalfedge(f);
+            int a = mesh.fromVertex(h);
+            int b = mesh.toVertex(h);
+            int c = mesh.toVertex(mesh.next(h));
+            if (mesh.y(a) > 5) {
+                assertTrue((mesh.x(b) - mesh.x(a)) * (mesh.y(c) - mesh.y(a)) - (mesh.y(b) - mesh.y(a)) * (mesh.x(c) - mesh.x(a)) < 0,
+                        "the open triangle keeps its side");
+                continue;
+            }
+            int k = (int) Math.round(mesh.x(a) / 5);
+            volume[k] += mesh.x(a) * (mesh.y(b) * mesh.z(c) - mesh.z(b) * mesh.y(c))
+                    + mesh.y(a) * (mesh.z(b) * mesh.x(c) - mesh.x(b) * mesh.z(c))
+                    + mesh.z(a) * (mesh.x(b) * mesh.y(c) - mesh.y(b) * mesh.x(c));
+        }
+        for (int k = 0; k < 4; k++) {
+            assertTrue(volume[k] > 0, "tetrahedron " + k + " faces outward: " + volume[k]);
+        }
+    }
+
+    @Test
+    void twoClosedSolidsTouchingAtAVertexGetAVertexEach() throws InvalidMeshException {
+        // Two tetrahedra sharing vertex 0: both fans around it are closed, and the second gets
+        // a copy of the vertex.
+        PolygonSoup tetrahedron = Solids.tetrahedron();
+        PolygonSoup soup = new PolygonSoup();
+        for (int v = 0; v < 4; v++) {
+            soup.addVertex(tetrahedron.coordinate(v, 0), tetrahedron.coordinate(v, 1), tetrahedron.coordinate(v, 2));
+        }
+        for (int v = 1; v < 4; v++) { // the point reflection of the first through vertex 0
+            soup.addVertex(2 - tetrahedron.coordinate(v, 0), 2 - tetrahedron.coordinate(v, 1), 2 - tetrahedron.coordinate(v, 2));
+        }
+        int[] second = {0, 4, 5, 6};
+        for (int f = 0; f < 4; f++) {
+            soup.addTriangle(tetrahedron.faceVertex(f, 0), tetrahedron.faceVertex(f, 1), tetrahedron.faceVertex(f, 2));
+        }
+        for (int f = 0; f < 4; f++) {
+            soup.addTriangle(second[tetrahedron.faceVertex(f, 0)], second[tetrahedron.faceVertex(f, 1)],
+                    second[tetrahedron.faceVertex(f, 2)]);
+        }
+        MeshBuilder.Result result = build(soup);
+        assertEquals(1, result.repairs().get(Defect.NON_MANIFOLD_VERTEX));
+        HalfedgeMesh mesh = result.mesh();
+        assertEquals(8, mesh.vertexCount());
+        assertEquals(0, result.sourceVertex()[7], "the copy comes from the shared vertex");
+        assertEquals(2, Topology.of(mesh).components());
+        assertEquals(0, Topology.of(mesh).boundaryLoops());
+        for (int v : new int[] {0, 7}) {
+            int degree = 0;
+            int h = mesh.halfedge(v);
+            do {
+                assertEquals(v, mesh.fromVertex(h));
+                degree++;
+                h = HalfedgeMesh.twin(mesh.prev(h));
+            } while (h != mesh.halfedge(v));
+            assertEquals(3, degree, "vertex " + v + " has a closed fan of three faces");
+        }
+    }
+
+    @Test
     void polygonsStayPolygonsUnlessTriangulated() throws InvalidMeshException {
         HalfedgeMesh cube = build(Solids.cube()).mesh();
         assertEquals(6, cube.faceCount());
