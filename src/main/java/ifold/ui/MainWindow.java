@@ -1,9 +1,7 @@
 package ifold.ui;
 
 import ifold.job.Scenes;
-import ifold.render.FrameExport;
 import ifold.scene.PathView;
-import ifold.ui.model.Exports;
 import ifold.ui.model.Job;
 import ifold.ui.model.ModelFile;
 import ifold.ui.model.NewModel;
@@ -16,7 +14,6 @@ import ifold.ui.model.Worker;
 import java.awt.BorderLayout;
 import java.awt.Dimension;
 import java.awt.FlowLayout;
-import java.awt.GridLayout;
 import java.awt.Toolkit;
 import java.awt.event.ActionEvent;
 import java.awt.event.InputEvent;
@@ -32,9 +29,7 @@ import java.util.function.Consumer;
 import javax.swing.AbstractAction;
 import javax.swing.BorderFactory;
 import javax.swing.JButton;
-import javax.swing.JCheckBox;
 import javax.swing.JCheckBoxMenuItem;
-import javax.swing.JComboBox;
 import javax.swing.JComponent;
 import javax.swing.JFileChooser;
 import javax.swing.JFrame;
@@ -46,10 +41,8 @@ import javax.swing.JOptionPane;
 import javax.swing.JPanel;
 import javax.swing.JProgressBar;
 import javax.swing.JScrollPane;
-import javax.swing.JSpinner;
 import javax.swing.JSplitPane;
 import javax.swing.KeyStroke;
-import javax.swing.SpinnerNumberModel;
 import javax.swing.SwingUtilities;
 import javax.swing.WindowConstants;
 import javax.swing.filechooser.FileNameExtensionFilter;
@@ -88,8 +81,8 @@ final class MainWindow extends JFrame {
     /** The New model form, kept between askings so that it opens as it was left. */
     final NewModelForm newModelForm = new NewModelForm();
     private transient Plan plan;
-    /** Where the next export's settings start: the last ones used. */
-    private transient Exports.FrameSettings frameSettings = Exports.FrameSettings.DEFAULT;
+    /** The File menu's exports, which ask what and where and hand the writing back here. */
+    final transient ExportDialogs exports;
     /** Told of every message shown, for tests: a failure must be seen, not just logged. */
     transient Consumer<String> messages = text -> { };
 
@@ -99,7 +92,8 @@ final class MainWindow extends JFrame {
         int ctrl = Toolkit.getDefaultToolkit().getMenuShortcutKeyMaskEx();
         modelInformation = item("Model information...", KeyEvent.VK_I, ctrl, this::showModelInformation);
         modelInformation.setToolTipText("the model's counts and topology, as ifold info prints them");
-        exportRefinement = item("Export refinement (OFF, OBJ)...", KeyEvent.VK_R, ctrl, this::exportRefinementAsk);
+        exports = new ExportDialogs(this, new ExportHost());
+        exportRefinement = item("Export refinement (OFF, OBJ)...", KeyEvent.VK_R, ctrl, exports::refinementAsk);
         exportRefinement.setToolTipText("the model's Hamiltonian refinement, its triangles in path order, as ifold refine writes it");
         view = new SceneView(this::say);
         parameters = new ParameterPanel(this::planLater, this::chooseModel, this::chooseScript);
@@ -194,12 +188,12 @@ final class MainWindow extends JFrame {
         file.add(item("New model...", KeyEvent.VK_N, ctrl, this::newModelAsk));
         file.add(modelInformation);
         file.addSeparator();
-        file.add(item("Export frames...", KeyEvent.VK_F, ctrl | shift, () -> exportFramesAsk()));
-        file.add(item("Export movie (MP4, GIF)...", KeyEvent.VK_M, ctrl, () -> exportMovieAsk()));
-        file.add(item("Export OBJ...", KeyEvent.VK_E, ctrl, () -> exportFileAsk("OBJ", "obj")));
-        file.add(item("Export FOLD...", KeyEvent.VK_E, ctrl | shift, () -> exportFileAsk("FOLD", "fold")));
-        file.add(item("Export report (JSON)...", KeyEvent.VK_J, ctrl, () -> exportFileAsk("report", "json")));
-        file.add(item("Export figure (PNG)...", KeyEvent.VK_G, ctrl, () -> exportFileAsk("figure", "png")));
+        file.add(item("Export frames...", KeyEvent.VK_F, ctrl | shift, exports::framesAsk));
+        file.add(item("Export movie (MP4, GIF)...", KeyEvent.VK_M, ctrl, exports::movieAsk));
+        file.add(item("Export OBJ...", KeyEvent.VK_E, ctrl, () -> exports.fileAsk("OBJ", "obj")));
+        file.add(item("Export FOLD...", KeyEvent.VK_E, ctrl | shift, () -> exports.fileAsk("FOLD", "fold")));
+        file.add(item("Export report (JSON)...", KeyEvent.VK_J, ctrl, () -> exports.fileAsk("report", "json")));
+        file.add(item("Export figure (PNG)...", KeyEvent.VK_G, ctrl, () -> exports.fileAsk("figure", "png")));
         file.add(exportRefinement);
         file.addSeparator();
         file.add(item("Quit", KeyEvent.VK_Q, ctrl, this::dispose));
@@ -479,124 +473,49 @@ final class MainWindow extends JFrame {
         return plan;
     }
 
-    // ---- Exports ----
+    // ---- Writing in the background ----
 
-    private boolean needPlan() {
-        if (plan == null) {
-            say("nothing to export yet: the fold is still being planned");
-            return false;
+    /** What the exports need of the window. */
+    private final class ExportHost implements ExportDialogs.Host {
+        @Override
+        public Plan plan() {
+            return plan;
         }
-        return true;
-    }
 
-    private void exportFileAsk(String what, String extension) {
-        if (!needPlan()) {
-            return;
+        @Override
+        public Path openModel() {
+            return MainWindow.this.openModel();
         }
-        Path file = choose("Export " + what, true, new FileNameExtensionFilter(what + " (." + extension + ")", extension));
-        if (file == null) {
-            return;
-        }
-        if (!file.getFileName().toString().toLowerCase(Locale.ROOT).endsWith("." + extension)) {
-            file = file.resolveSibling(file.getFileName() + "." + extension);
-        }
-        switch (extension) {
-            case "obj" -> exportObj(file);
-            case "fold" -> exportFold(file);
-            case "png" -> exportFigure(file);
-            default -> exportReport(file);
-        }
-    }
 
-    void exportObj(Path file) {
-        Plan shown = plan;
-        export("OBJ", file, progress -> {
-            Exports.obj(shown, file, progress);
-            return "wrote " + file;
-        });
-    }
-
-    void exportFold(Path file) {
-        Plan shown = plan;
-        export("FOLD", file, progress -> {
-            Exports.fold(shown, file, progress);
-            return "wrote " + file;
-        });
-    }
-
-    void exportFigure(Path file) {
-        Plan shown = plan;
-        export("figure", file, progress -> {
-            Exports.figure(shown, file, progress);
-            return "wrote " + file;
-        });
-    }
-
-    void exportReport(Path file) {
-        Plan shown = plan;
-        export("report", file, progress -> {
-            Exports.report(shown, file, progress);
-            return "wrote " + file;
-        });
-    }
-
-    private void exportMovieAsk() {
-        if (!needPlan()) {
-            return;
+        @Override
+        public boolean strict() {
+            return parameters.wrapStrict.isSelected();
         }
-        Exports.FrameSettings chosen = askFrameSettings("Export movie");
-        if (chosen == null) {
-            return;
-        }
-        Path file = choose("Export movie", true, new FileNameExtensionFilter("Movies (MP4, GIF)", "mp4", "gif"));
-        if (file == null) {
-            return;
-        }
-        String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
-        if (!name.endsWith(".mp4") && !name.endsWith(".gif")) {
-            file = file.resolveSibling(file.getFileName() + ".mp4");
-        }
-        exportMovie(file, chosen);
-    }
 
-    private void exportFramesAsk() {
-        if (!needPlan()) {
-            return;
+        @Override
+        public boolean captions() {
+            return captions.isSelected();
         }
-        Exports.FrameSettings chosen = askFrameSettings("Export frames");
-        if (chosen == null) {
-            return;
-        }
-        Path folder = choose("Export frames into a folder", true, null);
-        if (folder != null) {
-            exportFrames(folder, chosen);
-        }
-    }
 
-    void exportMovie(Path file, Exports.FrameSettings chosen) {
-        Plan shown = plan;
-        export("movie", file, progress -> {
-            FrameExport.Result result = Exports.movie(shown, file, chosen, progress);
-            return String.format(Locale.ROOT, "wrote %s: %d frames of %dx%d in %.1f s", file, result.frames(), chosen.width(),
-                    chosen.height(), result.seconds());
-        });
-    }
-
-    void exportFrames(Path folder, Exports.FrameSettings chosen) {
-        Plan shown = plan;
-        export("frames", folder, progress -> {
-            FrameExport.Result result = Exports.frames(shown, folder, chosen, progress);
-            return String.format(Locale.ROOT, "wrote %d frames of %dx%d to %s in %.1f s", result.frames(), chosen.width(),
-                    chosen.height(), folder, result.seconds());
-        });
-    }
-
-    private void export(String what, Path file, Worker.Task<String> task) {
-        if (plan == null) {
-            say("nothing to export yet");
-            return;
+        @Override
+        public double speed() {
+            return timeline.timeline().speed();
         }
-        write("exporting " + what, "cannot export the " + what, file, task, summary -> say(summary));
+
+        @Override
+        public Path choose(String title, boolean save, FileNameExtensionFilter filter) {
+            return MainWindow.this.choose(title, save, filter);
+        }
+
+        @Override
+        public void write(String doing, String failed, Path file, Worker.Task<String> task, Consumer<String> written) {
+            MainWindow.this.write(doing, failed, file, task, written);
+        }
+
+        @Override
+        public void say(String text) {
+            MainWindow.this.say(text);
+        }
     }
 
     /**
@@ -654,48 +573,6 @@ final class MainWindow extends JFrame {
         abstract void finished(T value);
 
         abstract void refused(Problem problem);
-    }
-
-    /** Asks the size, frames a second, length and captions of frames or a movie; null if cancelled. */
-    private Exports.FrameSettings askFrameSettings(String title) {
-        String[] sizes = {"640x360", "960x540", "1280x720", "1920x1080"};
-        JComboBox<String> size = new JComboBox<>(sizes);
-        size.setEditable(true);
-        size.setSelectedItem(frameSettings.width() + "x" + frameSettings.height());
-        JSpinner fps = new JSpinner(new SpinnerNumberModel(frameSettings.fps(), 1, 240, 1));
-        double length = plan == null ? frameSettings.seconds() : Math.min(3600, plan.seconds() / timeline.timeline().speed());
-        JSpinner seconds = new JSpinner(new SpinnerNumberModel(length, 0.1, 3600, 1));
-        JCheckBox withCaptions = new JCheckBox("captions naming each fold", captions.isSelected());
-        JPanel form = new JPanel(new GridLayout(0, 2, 6, 6));
-        form.add(new JLabel("Size (width x height)"));
-        form.add(size);
-        form.add(new JLabel("Frames a second"));
-        form.add(fps);
-        form.add(new JLabel("Seconds"));
-        form.add(seconds);
-        form.add(new JLabel(""));
-        form.add(withCaptions);
-        while (true) {
-            if (JOptionPane.showConfirmDialog(this, form, title, JOptionPane.OK_CANCEL_OPTION, JOptionPane.PLAIN_MESSAGE)
-                    != JOptionPane.OK_OPTION) {
-                return null;
-            }
-            String[] wh = String.valueOf(size.getSelectedItem()).strip().split("x");
-            try {
-                Exports.FrameSettings chosen = new Exports.FrameSettings(Integer.parseInt(wh[0].strip()), Integer.parseInt(wh[1].strip()),
-                        (Integer) fps.getValue(), ((Number) seconds.getValue()).doubleValue(), withCaptions.isSelected());
-                List<Problem> problems = chosen.check(null);
-                if (problems.isEmpty()) {
-                    frameSettings = chosen;
-                    return chosen;
-                }
-                JOptionPane.showMessageDialog(this, problems.get(0).field() + ": " + problems.get(0).message(), title,
-                        JOptionPane.WARNING_MESSAGE);
-            } catch (NumberFormatException | ArrayIndexOutOfBoundsException e) {
-                JOptionPane.showMessageDialog(this, "size: '" + size.getSelectedItem() + "' is not WIDTHxHEIGHT, e.g. 1280x720", title,
-                        JOptionPane.WARNING_MESSAGE);
-            }
-        }
     }
 
     private Path choose(String title, boolean save, FileNameExtensionFilter filter) {
@@ -769,34 +646,6 @@ final class MainWindow extends JFrame {
         information.show(figures);
         informationDialog.setTitle("Model information: " + model.getFileName());
         informationDialog.setVisible(true);
-    }
-
-    private void exportRefinementAsk() {
-        if (openModel() == null) {
-            return;
-        }
-        Path file = choose("Export refinement", true, new FileNameExtensionFilter("Meshes (OFF, OBJ)", "off", "obj"));
-        if (file == null) {
-            return;
-        }
-        if (!ModelFile.isModelName(file)) {
-            file = file.resolveSibling(file.getFileName() + ".off");
-        }
-        exportRefinement(file);
-    }
-
-    /** Writes the model's Hamiltonian refinement to {@code file}, as {@code ifold refine MODEL -o FILE} does. */
-    void exportRefinement(Path file) {
-        Path model = openModel();
-        if (model == null) {
-            return;
-        }
-        boolean strict = parameters.wrapStrict.isSelected();
-        write("exporting the refinement", "cannot export the refinement", file, progress -> {
-            Exports.Refined refined = Exports.refinement(model, strict, file, progress);
-            return String.format(Locale.ROOT, "wrote %s: %d triangles in %d component(s) -> %d triangles, in path order", file,
-                    refined.inputTriangles(), refined.components(), refined.outputTriangles());
-        }, this::say);
     }
 
     /** File, New model: asks the shape and its parameters (each refused at its field), where to save it, and opens it to wrap. */

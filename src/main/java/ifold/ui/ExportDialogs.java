@@ -1,0 +1,267 @@
+package ifold.ui;
+
+import ifold.render.FrameExport;
+import ifold.ui.model.Exports;
+import ifold.ui.model.ModelFile;
+import ifold.ui.model.Plan;
+import ifold.ui.model.Problem;
+import ifold.ui.model.Progress;
+import ifold.ui.model.Worker;
+import java.awt.Component;
+import java.awt.GridLayout;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.function.Consumer;
+import javax.swing.JCheckBox;
+import javax.swing.JComboBox;
+import javax.swing.JLabel;
+import javax.swing.JOptionPane;
+import javax.swing.JPanel;
+import javax.swing.JSpinner;
+import javax.swing.SpinnerNumberModel;
+import javax.swing.filechooser.FileNameExtensionFilter;
+
+/**
+ * The File menu's exports: each asks what it needs (where to write, and for frames and movies
+ * their size, rate, length and captions), then hands the writing to the window, which runs it in
+ * the background with progress and Cancel. What is written is what the command line writes:
+ * {@link Exports} does the work for both.
+ */
+final class ExportDialogs {
+
+    /** What the exports need of the window. */
+    interface Host {
+        /** The plan shown, or null while the first one is being planned. */
+        Plan plan();
+
+        /** The model of the wrap's card, or null after saying that none is open. */
+        Path openModel();
+
+        /** Whether models are read strictly (the wrap card's Strict box). */
+        boolean strict();
+
+        /** Whether the view shows captions: the default for exported frames. */
+        boolean captions();
+
+        /** The timeline's speed: a movie's default length is the plan's at that speed. */
+        double speed();
+
+        /** A file or, without a filter, a folder the user picks; null if cancelled. */
+        Path choose(String title, boolean save, FileNameExtensionFilter filter);
+
+        /**
+         * Writes {@code file} in the background; {@code written} hears the summary, and a failure
+         * is said after {@code failed} ("cannot export the movie").
+         */
+        void write(String doing, String failed, Path file, Worker.Task<String> task, Consumer<String> written);
+
+        /** Puts {@code text} on the status line. */
+        void say(String text);
+    }
+
+    private final Component parent;
+    private final Host host;
+    /** Where the next export's settings start: the last ones used. */
+    private Exports.FrameSettings frameSettings = Exports.FrameSettings.DEFAULT;
+
+    ExportDialogs(Component parent, Host host) {
+        this.parent = parent;
+        this.host = host;
+    }
+
+    // ---- Asking ----
+
+    /** Export OBJ, FOLD, report (json) or figure (png): asks where, adding the extension if it is missing. */
+    void fileAsk(String what, String extension) {
+        if (!hasPlan()) {
+            return;
+        }
+        Path file = host.choose("Export " + what, true, new FileNameExtensionFilter(what + " (." + extension + ")", extension));
+        if (file == null) {
+            return;
+        }
+        if (!file.getFileName().toString().toLowerCase(Locale.ROOT).endsWith("." + extension)) {
+            file = file.resolveSibling(file.getFileName() + "." + extension);
+        }
+        switch (extension) {
+            case "obj" -> obj(file);
+            case "fold" -> fold(file);
+            case "png" -> figure(file);
+            default -> report(file);
+        }
+    }
+
+    void movieAsk() {
+        if (!hasPlan()) {
+            return;
+        }
+        Exports.FrameSettings chosen = askFrameSettings("Export movie");
+        if (chosen == null) {
+            return;
+        }
+        Path file = host.choose("Export movie", true, new FileNameExtensionFilter("Movies (MP4, GIF)", "mp4", "gif"));
+        if (file == null) {
+            return;
+        }
+        String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
+        if (!name.endsWith(".mp4") && !name.endsWith(".gif")) {
+            file = file.resolveSibling(file.getFileName() + ".mp4");
+        }
+        movie(file, chosen);
+    }
+
+    void framesAsk() {
+        if (!hasPlan()) {
+            return;
+        }
+        Exports.FrameSettings chosen = askFrameSettings("Export frames");
+        if (chosen == null) {
+            return;
+        }
+        Path folder = host.choose("Export frames into a folder", true, null);
+        if (folder != null) {
+            frames(folder, chosen);
+        }
+    }
+
+    /** Export refinement: the open model's, as {@code ifold refine} writes it; OFF unless the name says OBJ. */
+    void refinementAsk() {
+        if (host.openModel() == null) {
+            return;
+        }
+        Path file = host.choose("Export refinement", true, new FileNameExtensionFilter("Meshes (OFF, OBJ)", "off", "obj"));
+        if (file == null) {
+            return;
+        }
+        if (!ModelFile.isModelName(file)) {
+            file = file.resolveSibling(file.getFileName() + ".off");
+        }
+        refinement(file);
+    }
+
+    private boolean hasPlan() {
+        if (host.plan() == null) {
+            host.say("nothing to export yet: the fold is still being planned");
+            return false;
+        }
+        return true;
+    }
+
+    /** Asks the size, frames a second, length and captions of frames or a movie; null if cancelled. */
+    private Exports.FrameSettings askFrameSettings(String title) {
+        String[] sizes = {"640x360", "960x540", "1280x720", "1920x1080"};
+        JComboBox<String> size = new JComboBox<>(sizes);
+        size.setEditable(true);
+        size.setSelectedItem(frameSettings.width() + "x" + frameSettings.height());
+        JSpinner fps = new JSpinner(new SpinnerNumberModel(frameSettings.fps(), 1, 240, 1));
+        Plan plan = host.plan();
+        double length = plan == null ? frameSettings.seconds() : Math.min(3600, plan.seconds() / host.speed());
+        JSpinner seconds = new JSpinner(new SpinnerNumberModel(length, 0.1, 3600, 1));
+        JCheckBox withCaptions = new JCheckBox("captions naming each fold", host.captions());
+        JPanel form = new JPanel(new GridLayout(0, 2, 6, 6));
+        form.add(new JLabel("Size (width x height)"));
+        form.add(size);
+        form.add(new JLabel("Frames a second"));
+        form.add(fps);
+        form.add(new JLabel("Seconds"));
+        form.add(seconds);
+        form.add(new JLabel(""));
+        form.add(withCaptions);
+        while (true) {
+            if (JOptionPane.showConfirmDialog(parent, form, title, JOptionPane.OK_CANCEL_OPTION, JOptionPane.PLAIN_MESSAGE)
+                    != JOptionPane.OK_OPTION) {
+                return null;
+            }
+            String[] wh = String.valueOf(size.getSelectedItem()).strip().split("x");
+            try {
+                Exports.FrameSettings chosen = new Exports.FrameSettings(Integer.parseInt(wh[0].strip()), Integer.parseInt(wh[1].strip()),
+                        (Integer) fps.getValue(), ((Number) seconds.getValue()).doubleValue(), withCaptions.isSelected());
+                List<Problem> problems = chosen.check(null);
+                if (problems.isEmpty()) {
+                    frameSettings = chosen;
+                    return chosen;
+                }
+                JOptionPane.showMessageDialog(parent, problems.get(0).field() + ": " + problems.get(0).message(), title,
+                        JOptionPane.WARNING_MESSAGE);
+            } catch (NumberFormatException | ArrayIndexOutOfBoundsException e) {
+                JOptionPane.showMessageDialog(parent, "size: '" + size.getSelectedItem() + "' is not WIDTHxHEIGHT, e.g. 1280x720", title,
+                        JOptionPane.WARNING_MESSAGE);
+            }
+        }
+    }
+
+    // ---- Writing, once asked (the tests start here) ----
+
+    void obj(Path file) {
+        plan("OBJ", file, (shown, progress) -> {
+            Exports.obj(shown, file, progress);
+            return "wrote " + file;
+        });
+    }
+
+    void fold(Path file) {
+        plan("FOLD", file, (shown, progress) -> {
+            Exports.fold(shown, file, progress);
+            return "wrote " + file;
+        });
+    }
+
+    void figure(Path file) {
+        plan("figure", file, (shown, progress) -> {
+            Exports.figure(shown, file, progress);
+            return "wrote " + file;
+        });
+    }
+
+    void report(Path file) {
+        plan("report", file, (shown, progress) -> {
+            Exports.report(shown, file, progress);
+            return "wrote " + file;
+        });
+    }
+
+    void movie(Path file, Exports.FrameSettings chosen) {
+        plan("movie", file, (shown, progress) -> {
+            FrameExport.Result result = Exports.movie(shown, file, chosen, progress);
+            return String.format(Locale.ROOT, "wrote %s: %d frames of %dx%d in %.1f s", file, result.frames(), chosen.width(),
+                    chosen.height(), result.seconds());
+        });
+    }
+
+    void frames(Path folder, Exports.FrameSettings chosen) {
+        plan("frames", folder, (shown, progress) -> {
+            FrameExport.Result result = Exports.frames(shown, folder, chosen, progress);
+            return String.format(Locale.ROOT, "wrote %d frames of %dx%d to %s in %.1f s", result.frames(), chosen.width(),
+                    chosen.height(), folder, result.seconds());
+        });
+    }
+
+    /** Writes the open model's Hamiltonian refinement to {@code file}, as {@code ifold refine MODEL -o FILE} does. */
+    void refinement(Path file) {
+        Path model = host.openModel();
+        if (model == null) {
+            return;
+        }
+        boolean strict = host.strict();
+        host.write("exporting the refinement", "cannot export the refinement", file, progress -> {
+            Exports.Refined refined = Exports.refinement(model, strict, file, progress);
+            return String.format(Locale.ROOT, "wrote %s: %d triangles in %d component(s) -> %d triangles, in path order", file,
+                    refined.inputTriangles(), refined.components(), refined.outputTriangles());
+        }, host::say);
+    }
+
+    /** An export of the plan shown now: later plans do not change what this one writes. */
+    private interface PlanExport {
+        String write(Plan shown, Progress progress) throws Exception;
+    }
+
+    private void plan(String what, Path file, PlanExport export) {
+        Plan shown = host.plan();
+        if (shown == null) {
+            host.say("nothing to export yet");
+            return;
+        }
+        host.write("exporting " + what, "cannot export the " + what, file, progress -> export.write(shown, progress), host::say);
+    }
+}
