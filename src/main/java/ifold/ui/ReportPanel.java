@@ -38,6 +38,42 @@ final class ReportPanel extends JTable {
             flatten("", figures, flat);
         }
         rows.set(flat);
+        fitColumns();
+    }
+
+    /** The widest name and the widest value shown, in pixels with their cells' padding. */
+    private int namesWidth = 140;
+    private int valuesWidth = 140;
+
+    /** Measures what the columns hold, for {@link #doLayout}. */
+    private void fitColumns() {
+        java.awt.FontMetrics metrics = getFontMetrics(getFont());
+        int names = metrics.stringWidth(rows.getColumnName(0));
+        int values = metrics.stringWidth(rows.getColumnName(1));
+        for (String[] row : rows.rows) {
+            names = Math.max(names, metrics.stringWidth(row[0]));
+            values = Math.max(values, metrics.stringWidth(row[1]));
+        }
+        int padding = 2 * getIntercellSpacing().width + 12;
+        namesWidth = names + padding;
+        valuesWidth = values + padding;
+        revalidate();
+    }
+
+    /**
+     * The names take the width they need, so that a long one ({@code minAngleInDegrees}) reads
+     * whole, up to two thirds of the panel when the values need the rest; the values get what
+     * is left (a long one is whole under the mouse).
+     */
+    @Override
+    public void doLayout() {
+        int width = getWidth();
+        if (width > 0 && getColumnCount() == 2) {
+            int names = Math.min(namesWidth, Math.max(width - valuesWidth, width * 2 / 3));
+            getColumnModel().getColumn(0).setPreferredWidth(names);
+            getColumnModel().getColumn(1).setPreferredWidth(width - names);
+        }
+        super.doLayout();
     }
 
     /** The value shown for {@code key}, or null: for tests. */

@@ -90,7 +90,9 @@ final class SceneView extends JComponent {
     /** @param failures told (on the event thread) why nothing can be drawn, once */
     SceneView(Consumer<String> failures) {
         this.failures = failures;
-        setPreferredSize(new Dimension(800, 560));
+        // With the parameters (320) and the report (330) beside it, this fills a window of 1360:
+        // the view takes what a bigger window adds, the report keeps room for its names.
+        setPreferredSize(new Dimension(700, 560));
         setMinimumSize(new Dimension(200, 150));
         setFocusable(true);
         setOpaque(true);

@@ -1,6 +1,10 @@
 package ifold.ui;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.LinkedHashMap;
+import java.util.Map;
 
 import org.junit.jupiter.api.Test;
 
@@ -20,5 +24,23 @@ class ReportPanelTest {
         assertEquals("1.6", readable(1.6), "short values as they are");
         assertEquals("0.0208333", readable(0.020833333333333332));
         assertEquals("-0.333333", readable(-1.0 / 3));
+    }
+
+    @Test
+    void aLongFigureNameReadsWholeInThePanelsWidth() {
+        Map<String, Object> refinement = new LinkedHashMap<>();
+        refinement.put("minAngleInDegrees", 12.345678901);
+        refinement.put("outputTriangles", 2878);
+        Map<String, Object> figures = new LinkedHashMap<>();
+        figures.put("refinement", refinement);
+        ReportPanel panel = new ReportPanel();
+        panel.show(figures);
+        panel.setSize(330, 200); // the window's report column
+        panel.doLayout();
+        int name = panel.getFontMetrics(panel.getFont()).stringWidth("refinement.minAngleInDegrees");
+        int value = panel.getFontMetrics(panel.getFont()).stringWidth("12.3457");
+        assertTrue(panel.getColumnModel().getColumn(0).getWidth() > name, "the name's column is "
+                + panel.getColumnModel().getColumn(0).getWidth() + " px for a name of " + name);
+        assertTrue(panel.getColumnModel().getColumn(1).getWidth() > value, "and the value still fits");
     }
 }
