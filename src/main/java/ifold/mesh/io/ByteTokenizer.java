@@ -28,8 +28,8 @@ final class ByteTokenizer implements Closeable {
     /** Refill size; also the longest token accepted, which keeps garbage input from growing memory. */
     static final int BUFFER_SIZE = 1 << 16;
 
-    // Byte classes: what each byte value means to the tokenizer (and to ParallelOffReader's
-    // counting, which must split lines exactly as the tokenizer does).
+    // Byte classes: what each byte value means to the tokenizer (and to the counting of
+    // ParallelOffReader and ParallelObjReader, which must split lines exactly as it does).
     static final byte PART = 0;
     static final byte SPACE = 1;
     static final byte LF = 2;
@@ -101,9 +101,11 @@ final class ByteTokenizer implements Closeable {
      * A tokenizer over part of a file that starts at the beginning of line {@code firstLine}
      * at file offset {@code offset}: {@code in} gives its bytes (a file of its own, no byte
      * order mark). For reading a file in pieces.
+     *
+     * @param backslashContinuesLine as for {@link #open}: the same as the whole file is read with
      */
-    static ByteTokenizer region(Path file, InputStream in, long offset, int firstLine) {
-        ByteTokenizer tokenizer = new ByteTokenizer(file, in, false);
+    static ByteTokenizer region(Path file, InputStream in, long offset, int firstLine, boolean backslashContinuesLine) {
+        ByteTokenizer tokenizer = new ByteTokenizer(file, in, backslashContinuesLine);
         tokenizer.bufferOffset = offset;
         tokenizer.line = firstLine;
         return tokenizer;

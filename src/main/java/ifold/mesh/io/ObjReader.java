@@ -20,15 +20,33 @@ import java.util.Arrays;
  *
  * <p>Positive indices are checked once the whole file is read, so a face may name a vertex
  * defined after it, as some exporters write them; negative ones are resolved on the spot.
+ *
+ * <p>A big file is read in pieces on every core ({@link ParallelObjReader}), by this same
+ * parser, to the same soup and the same errors.
  */
 public final class ObjReader {
     private final ByteTokenizer tokens;
-    private final PolygonSoup soup = new PolygonSoup();
+    /** The faces read, and when reading a file whole its vertices too. */
+    private final PolygonSoup soup;
     /** The 0-based vertex indices of the face being read. */
     private int[] face = new int[16];
 
-    private ObjReader(ByteTokenizer tokens) {
+    /**
+     * Where a piece of a file read in parallel puts its vertices (x, y, z interleaved, at their
+     * index in the whole file); null when reading a file whole, into {@link #soup}.
+     */
+    private final double[] coordinates;
+    /** The vertices defined so far in the whole file: the next vertex's index, and what a negative index counts back from. */
+    private int vertexCount;
+    /** The index just past the last vertex this reader may define: its piece's share of {@link #coordinates}. */
+    private final int vertexEnd;
+
+    private ObjReader(ByteTokenizer tokens, PolygonSoup soup, double[] coordinates, int firstVertex, int vertexEnd) {
         this.tokens = tokens;
+        this.soup = soup;
+        this.coordinates = coordinates;
+        this.vertexCount = firstVertex;
+        this.vertexEnd = vertexEnd;
     }
 
     /**
@@ -39,12 +57,44 @@ public final class ObjReader {
      * @throws IOException when the file cannot be read
      */
     public static PolygonSoup read(Path file) throws MeshFormatException, IOException {
+        PolygonSoup parallel = ParallelObjReader.read(file);
+        if (parallel != null) {
+            return parallel;
+        }
         try (ByteTokenizer tokens = ByteTokenizer.open(file, true)) {
-            return new ObjReader(tokens).read();
+            PolygonSoup soup = new PolygonSoup();
+            new ObjReader(tokens, soup, null, 0, Integer.MAX_VALUE).readStatements();
+            if (soup.faceCount() == 0) {
+                throw tokens.error(0, "no faces: " + soup.vertexCount() + " vertices and no 'f' statement");
+            }
+            checkIndices(soup, file);
+            return soup;
         }
     }
 
-    private PolygonSoup read() throws MeshFormatException, IOException {
+    /**
+     * Reads the statements of {@code tokens}, a piece of a file that starts at a line break and
+     * holds, by a count of its lines, the vertices {@code firstVertex} to {@code vertexEnd - 1}
+     * (put into {@code coordinates}) and {@code faces} faces of {@code corners} corners in all
+     * (put into the soup returned, sized for them). Positive indices are left unchecked: only
+     * the whole file's vertex count can tell.
+     *
+     * @throws MeshFormatException for anything the whole-file reader would not read the same
+     *     way, counts that disagree included: the caller then reads the file whole
+     */
+    static PolygonSoup readStatements(ByteTokenizer tokens, double[] coordinates, int firstVertex, int vertexEnd,
+            int faces, int corners) throws MeshFormatException, IOException {
+        PolygonSoup soup = new PolygonSoup(0, faces, corners);
+        ObjReader reader = new ObjReader(tokens, soup, coordinates, firstVertex, vertexEnd);
+        reader.readStatements();
+        if (reader.vertexCount != vertexEnd || soup.faceCount() != faces || soup.cornerCount() != corners) {
+            throw tokens.error(0, "the piece holds other statements than counted");
+        }
+        return soup;
+    }
+
+    /** Reads statements up to the end of the file or piece. */
+    private void readStatements() throws MeshFormatException, IOException {
         for (;;) {
             int t = tokens.advance();
             if (t == EOF) {
@@ -68,11 +118,6 @@ public final class ObjReader {
                         + tokens.tokenText() + "'");
             }
         }
-        if (soup.faceCount() == 0) {
-            throw tokens.error(0, "no faces: " + soup.vertexCount() + " vertices and no 'f' statement");
-        }
-        checkIndices();
-        return soup;
     }
 
     private void readVertex() throws MeshFormatException, IOException {
@@ -89,7 +134,17 @@ public final class ObjReader {
             throw tooFewCoordinates(line, 2);
         }
         double z = tokens.finiteDouble("coordinate");
-        soup.addVertex(x, y, z);
+        if (coordinates == null) {
+            soup.addVertex(x, y, z);
+        } else if (vertexCount < vertexEnd) {
+            coordinates[3 * vertexCount] = x;
+            coordinates[3 * vertexCount + 1] = y;
+            coordinates[3 * vertexCount + 2] = z;
+        } else {
+            // Past its share, a piece would write over the next piece's vertices.
+            throw tokens.error(line, "more vertices in the piece than counted");
+        }
+        vertexCount++;
         tokens.skipLine(); // w, or a vertex colour: neither is kept
     }
 
@@ -166,10 +221,10 @@ public final class ObjReader {
             throw tokens.error(tokens.tokenLine(), "vertex reference '" + tokens.tokenText() + "' is too large");
         }
         if (negative) {
-            int v = soup.vertexCount() - (int) index;
+            int v = vertexCount - (int) index;
             if (v < 0) {
                 throw tokens.error(tokens.tokenLine(), "relative vertex index -" + index
-                        + " points before the first vertex: only " + soup.vertexCount() + " vertices so far");
+                        + " points before the first vertex: only " + vertexCount + " vertices so far");
             }
             return v;
         }
@@ -181,15 +236,18 @@ public final class ObjReader {
                 + tokens.tokenText() + "'");
     }
 
-    /** Checks the positive references, which may name vertices defined after their face. */
-    private void checkIndices() throws MeshFormatException {
+    /**
+     * Checks the positive references of {@code soup}, read from {@code file} whole or in
+     * pieces, which may name vertices defined after their face.
+     */
+    static void checkIndices(PolygonSoup soup, Path file) throws MeshFormatException {
         int vertexCount = soup.vertexCount();
         for (int f = 0; f < soup.faceCount(); f++) {
             int size = soup.faceSize(f);
             for (int k = 0; k < size; k++) {
                 int v = soup.faceVertex(f, k);
                 if (v >= vertexCount) {
-                    throw tokens.error(soup.faceLine(f), "vertex index " + (v + 1L) + " out of range: the file has "
+                    throw new MeshFormatException(file, soup.faceLine(f), "vertex index " + (v + 1L) + " out of range: the file has "
                             + vertexCount + " vertices (1 to " + vertexCount + ")");
                 }
             }

@@ -43,7 +43,7 @@ final class ParallelOffReader {
     static final int MIN_THREADS = 3;
 
     /** Pieces per thread: enough to even out pieces that parse at different speeds. */
-    private static final int PIECES_PER_THREAD = 4;
+    static final int PIECES_PER_THREAD = 4;
 
     private ParallelOffReader() {
     }
@@ -54,8 +54,8 @@ final class ParallelOffReader {
      * whole-file reader.
      */
     static PolygonSoup read(Path file) throws IOException {
-        int threads = Workers.threads();
-        if (threads < (System.getProperty("ifold.threads") != null ? 2 : MIN_THREADS) || !Files.isRegularFile(file) || Files.size(file) < Long.getLong("ifold.parallelReadBytes", MIN_BYTES)) {
+        int threads = threadsFor(file);
+        if (threads == 0) {
             return null;
         }
         OffReader.Preamble preamble;
@@ -104,7 +104,7 @@ final class ParallelOffReader {
                 int first = firstRecord[k];
                 int end = firstRecord[k + 1];
                 Callable<PolygonSoup> piece = () -> {
-                    ByteTokenizer tokens = ByteTokenizer.region(file, new PieceStream(channel, from, to), from, lineOfPiece);
+                    ByteTokenizer tokens = ByteTokenizer.region(file, new PieceStream(channel, from, to), from, lineOfPiece, false);
                     try {
                         return OffReader.readRecords(tokens, preamble, coordinates, first, end);
                     } catch (MeshFormatException e) {
@@ -129,10 +129,25 @@ final class ParallelOffReader {
     }
 
     /**
+     * How many threads to read {@code file} with in pieces, or 0 where it is to be read whole:
+     * where it is no regular file, is smaller than {@code ifold.parallelReadBytes} (default
+     * {@link #MIN_BYTES}), or there are fewer threads than {@link #MIN_THREADS} (2 where
+     * {@code ifold.threads} asks for them).
+     */
+    static int threadsFor(Path file) throws IOException {
+        int threads = Workers.threads();
+        if (threads < (System.getProperty("ifold.threads") != null ? 2 : MIN_THREADS) || !Files.isRegularFile(file)
+                || Files.size(file) < Long.getLong("ifold.parallelReadBytes", MIN_BYTES)) {
+            return 0;
+        }
+        return threads;
+    }
+
+    /**
      * Where to cut [from, size) into about {@code pieces} pieces: each cut just after a line
      * break (after the LF of a CRLF, never between its two bytes).
      */
-    private static long[] cuts(FileChannel channel, long from, long size, int pieces) throws IOException {
+    static long[] cuts(FileChannel channel, long from, long size, int pieces) throws IOException {
         long[] cuts = new long[pieces + 1];
         cuts[0] = from;
         int n = 1;
@@ -233,7 +248,7 @@ final class ParallelOffReader {
     }
 
     /** The bytes of [from, to) of a file, read at their positions so that pieces share one channel. */
-    private static final class PieceStream extends InputStream {
+    static final class PieceStream extends InputStream {
         private final FileChannel channel;
         private long position;
         private final long end;
