@@ -138,7 +138,7 @@ final class DemoCommand implements Runnable {
             if (figure != null) {
                 double[] stages = Scenes.figure11Stages(animation, result);
                 try {
-                    FrameExport.panel(scene, animation, stages, 2, 800, 500, 4, figure);
+                    FrameExport.panel(scene, animation, stages, Scenes.FIGURE11_LABELS, 2, 800, 500, 4, figure);
                     outputs.wrote(figure);
                     out.println("wrote " + figure);
                 } catch (RenderUnavailableException e) {

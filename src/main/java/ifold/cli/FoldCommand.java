@@ -32,7 +32,8 @@ import picocli.CommandLine.Model.CommandSpec;
 /** {@code ifold fold SCRIPT}: plays a fold script, in the viewer or as frames, and exports the result. */
 @Command(name = "fold", mixinStandardHelpOptions = true,
         description = {"Plays a fold script (docs/fold-scripts.md): each fold swings from 0 to its angle.",
-            "Without --frames it plays in the viewer (space plays, arrows step through the folds)."})
+            "Without --frames it plays in the viewer (space plays, arrows step through the folds).",
+            "The animation takes ten seconds unless --seconds says otherwise."})
 final class FoldCommand implements Callable<Integer> {
 
     @Spec
@@ -100,15 +101,18 @@ final class FoldCommand implements Callable<Integer> {
         outputs.exportFold(List.of(new FoldFile.Folded(result.sheet(), result.frames())), "ifold fold " + script, figures, out);
         outputs.write(List.of(folded), "iFold fold script " + script + ": " + result.steps().size() + " folds, thickness "
                 + result.sheet().thickness(), figures, out);
-        out.printf(Locale.ROOT, "%s: %d folds, %d layers at most, %d creases, isometry error %.1e%n", script.getFileName(),
-                result.steps().size(), figures.get("maxLayers"), figures.get("creases"), (Double) figures.get("isometryError"));
+        int folds = result.steps().size();
+        int creases = ((Number) figures.get("creases")).intValue();
+        out.printf(Locale.ROOT, "%s: %d %s, %d layers at most, %d %s, isometry error %.1e%n", script.getFileName(), folds,
+                folds == 1 ? "fold" : "folds", figures.get("maxLayers"), creases, creases == 1 ? "crease" : "creases",
+                (Double) figures.get("isometryError"));
         out.flush();
 
         Scene scene = new Scene();
         // The camera frames the paper as it stands, folding up.
         Animation animation = Scenes.script(scene, result, folded);
-        outputs.show(scene, animation, script.getFileName() + ": " + result.steps().size() + " folds", outputs.frameOptions.seconds,
-                false, spec);
+        outputs.show(scene, animation, script.getFileName() + ": " + folds + (folds == 1 ? " fold" : " folds"),
+                outputs.frameOptions.seconds, false, spec);
         out.flush();
         return 0;
     }

@@ -9,6 +9,7 @@ import ifold.render.RenderUnavailableException;
 import ifold.scene.Animation;
 import ifold.scene.Scene;
 import java.io.PrintWriter;
+import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.io.IOException;
@@ -36,7 +37,8 @@ final class FrameOptions {
     @Option(names = "--fps", paramLabel = "N", defaultValue = "30", description = "frames per second of animation (default ${DEFAULT-VALUE})")
     int fps;
 
-    @Option(names = "--seconds", paramLabel = "S", defaultValue = "10", description = "length of the animation in seconds (default ${DEFAULT-VALUE})")
+    @Option(names = "--seconds", paramLabel = "S", defaultValue = "10", description = "length of the animation in seconds "
+            + "(default: as the command's description above says)")
     double seconds;
 
     @Option(names = "--movie", paramLabel = "FILE", description = "render offscreen into a movie instead of opening a window: "
@@ -48,10 +50,14 @@ final class FrameOptions {
 
     int width;
     int height;
-    /** Whether {@link #check()} made the folder, so that a failed export can take it away again. */
+    /** Whether the export made the folder, so that a failed one can take it away again. */
     private boolean createdFolder;
 
-    /** Checks the values and prepares the folder; throws a {@link UserError} naming the option. */
+    /**
+     * Checks the values, and that the folder can be made or written into (it is made only when
+     * the frames are written, so that a run that fails before leaves nothing); throws a
+     * {@link UserError} naming the option.
+     */
     void check() {
         Matcher m = SIZE.matcher(size);
         if (!m.matches()) {
@@ -72,7 +78,7 @@ final class FrameOptions {
             checkMovie();
         }
         if (frames != null) {
-            prepareFolder();
+            checkFolder();
         }
     }
 
@@ -114,7 +120,9 @@ final class FrameOptions {
         try {
             try {
                 if (frames != null) {
-                    sinks.add(new FrameWriter(frames));
+                    makeFolder();
+                    sinks.add(new FrameWriter(frames)); // holds the folder from now on
+                    removeFramesPast(frames, frameCount);
                 }
                 if (movie != null) {
                     sinks.add(isGif() ? new GifWriter(movie, width, height, fps) : new Mp4Writer(movie, width, height, fps));
@@ -167,15 +175,24 @@ final class FrameOptions {
         return Math.max(1, (int) Math.round(fps * seconds));
     }
 
-    private void prepareFolder() {
+    private void checkFolder() {
         if (Files.exists(frames) && !Files.isDirectory(frames)) {
             throw UserError.usage("option --frames: " + frames + " is a file, not a folder");
         }
+        Path existing = frames;
         if (!Files.exists(frames)) {
-            Path parent = frames.toAbsolutePath().getParent();
-            if (parent == null || !Files.isDirectory(parent)) {
-                throw UserError.usage("option --frames: folder " + parent + " does not exist");
+            existing = frames.toAbsolutePath().getParent();
+            if (existing == null || !Files.isDirectory(existing)) {
+                throw UserError.usage("option --frames: folder " + existing + " does not exist");
             }
+        }
+        if (!Files.isWritable(existing)) {
+            throw UserError.usage("option --frames: folder " + existing + " is not writable");
+        }
+    }
+
+    private void makeFolder() {
+        if (!Files.exists(frames)) {
             try {
                 Files.createDirectory(frames);
                 createdFolder = true;
@@ -183,8 +200,23 @@ final class FrameOptions {
                 throw new UserError("option --frames: cannot create " + frames + ": " + e.getMessage());
             }
         }
-        if (!Files.isWritable(frames)) {
-            throw UserError.usage("option --frames: folder " + frames + " is not writable");
+    }
+
+    /**
+     * Frames left from a longer export would join the movie made from the folder: removes those
+     * numbered past this one's (and parts an old version left).
+     */
+    static void removeFramesPast(Path folder, int frames) {
+        try (DirectoryStream<Path> files = Files.newDirectoryStream(folder, "frame_[0-9][0-9][0-9][0-9][0-9].png*")) {
+            for (Path file : files) {
+                String name = file.getFileName().toString();
+                int index = Integer.parseInt(name.substring(6, 11));
+                if (index >= frames || name.endsWith(".part")) {
+                    Files.delete(file);
+                }
+            }
+        } catch (IOException | NumberFormatException e) {
+            throw new UserError("option --frames: cannot tidy " + folder + ": " + e.getMessage());
         }
     }
 }

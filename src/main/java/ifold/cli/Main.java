@@ -20,7 +20,7 @@ public final class Main implements Runnable {
     @Override
     public void run() {
         if (!PaperOutputs.hasDisplay() || !ifold.ui.App.canOpen()) {
-            throw new CommandLine.ParameterException(spec.commandLine(), "missing command: try 'ifold --help'");
+            throw new CommandLine.ParameterException(spec.commandLine(), "missing command");
         }
         try {
             AppCommand.open(null, null);
@@ -58,7 +58,6 @@ public final class Main implements Runnable {
         watch.start();
     }
 
-    /** A command line with iFold's error handling: one line per error, never a stack trace. */
     /** The subcommands, by name, in the order help lists them. */
     private static final Map<String, Class<?>> SUBCOMMANDS = new LinkedHashMap<>();
 
@@ -104,6 +103,7 @@ public final class Main implements Runnable {
         return commandLine(out, err, SUBCOMMANDS.keySet());
     }
 
+    /** A command line with iFold's error handling: one line per error and a hint, never a stack trace. */
     private static CommandLine commandLine(PrintWriter out, PrintWriter err, Collection<String> subcommands) {
         CommandLine commandLine = new CommandLine(new Main());
         for (String name : subcommands) {
@@ -113,7 +113,7 @@ public final class Main implements Runnable {
         commandLine.setErr(err);
         commandLine.setParameterExceptionHandler((ex, args) -> {
             CommandLine cmd = ex.getCommandLine();
-            cmd.getErr().println("ifold: " + ex.getMessage());
+            cmd.getErr().println("ifold: " + usageError(ex));
             cmd.getErr().println("Try '" + cmd.getCommandSpec().qualifiedName() + " --help' for more.");
             cmd.getErr().flush();
             return cmd.getCommandSpec().exitCodeOnInvalidInput();
@@ -130,6 +130,36 @@ public final class Main implements Runnable {
             return 70;
         });
         return commandLine;
+    }
+
+    private static final java.util.regex.Pattern NOT_A_NUMBER =
+            java.util.regex.Pattern.compile("Invalid value for option '([^']+)': '(.*)' is not an? (double|float|int|long)", java.util.regex.Pattern.DOTALL);
+
+    /**
+     * What was wrong with what the user typed, in iFold's words: an option named as
+     * {@code option --NAME: ...}, as every other check names it, and a misspelt option or
+     * command with what it may have meant.
+     */
+    static String usageError(CommandLine.ParameterException ex) {
+        if (ex instanceof CommandLine.UnmatchedArgumentException unmatched) {
+            List<String> suggestions = unmatched.getSuggestions();
+            String meant = suggestions.isEmpty() ? "" : ": did you mean " + String.join(" or ", suggestions) + "?";
+            List<String> arguments = unmatched.getUnmatched();
+            String first = arguments.isEmpty() ? "" : arguments.get(0);
+            if (first.startsWith("-")) {
+                return "unknown option '" + first + "'" + meant;
+            }
+            // Where commands are expected (ifold, ifold demo), a word is a misspelt one.
+            boolean commands = !unmatched.getCommandLine().getSubcommands().isEmpty();
+            return commands ? "unknown command '" + first + "'" + meant : "unexpected argument '" + first + "'";
+        }
+        java.util.regex.Matcher number = NOT_A_NUMBER.matcher(ex.getMessage());
+        if (number.matches()) {
+            boolean whole = number.group(3).equals("int") || number.group(3).equals("long");
+            return "option " + number.group(1) + ": '" + number.group(2) + "' is not " + (whole ? "a whole number" : "a number");
+        }
+        String message = ex.getMessage();
+        return message.isEmpty() ? message : Character.toLowerCase(message.charAt(0)) + message.substring(1);
     }
 
     public static void main(String[] args) {

@@ -10,10 +10,7 @@ import ifold.scene.Animation;
 import ifold.scene.PathView;
 import ifold.scene.Player;
 import ifold.scene.Scene;
-import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.file.DirectoryStream;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
@@ -27,7 +24,8 @@ import picocli.CommandLine.Model.CommandSpec;
 /** {@code ifold view MODEL [--refine] [--path]}: the viewer, in a window or as frames. */
 @Command(name = "view", mixinStandardHelpOptions = true,
         description = {"Shows a model in a window with a virtual trackball, or renders it into frames with --frames.",
-            "With --path, the Hamiltonian path appears triangle by triangle (spanning-tree edges in green)."})
+            "With --path, the Hamiltonian path appears triangle by triangle (spanning-tree edges in green).",
+            "The animation takes ten seconds unless --seconds says otherwise."})
 final class ViewCommand implements Callable<Integer> {
 
     @Spec
@@ -105,26 +103,7 @@ final class ViewCommand implements Callable<Integer> {
             }
             return 0;
         }
-        int frames = frameOptions.frameCount();
-        if (frameOptions.frames != null) {
-            removeStaleFrames(frameOptions.frames, frames);
-        }
-        frameOptions.export(scene, animation, frames, samples, out, err);
+        frameOptions.export(scene, animation, frameOptions.frameCount(), samples, out, err);
         return 0;
-    }
-
-    /** Frames left from a longer export would join the movie: remove those numbered past this one. */
-    static void removeStaleFrames(Path folder, int frames) {
-        try (DirectoryStream<Path> files = Files.newDirectoryStream(folder, "frame_[0-9][0-9][0-9][0-9][0-9].png*")) {
-            for (Path file : files) {
-                String name = file.getFileName().toString();
-                int index = Integer.parseInt(name.substring(6, 11));
-                if (index >= frames || name.endsWith(".part")) {
-                    Files.delete(file);
-                }
-            }
-        } catch (IOException | NumberFormatException e) {
-            throw new UserError("option --frames: cannot tidy " + folder + ": " + e.getMessage());
-        }
     }
 }

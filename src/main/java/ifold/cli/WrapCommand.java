@@ -170,18 +170,26 @@ final class WrapCommand implements Callable<Integer> {
         Animation animation = Scenes.wrap(scene, mesh, result, geometries);
         // Layer on layer of paper makes multisampling dear on a software renderer (4 samples a
         // pixel: 16 frames/s for the cube; none: 60), and the layers' edges are what the eye follows.
-        outputs.show(scene, animation, model.getFileName() + ": " + result.strips().size() + " strip(s)", 120, true, spec, 0);
+        outputs.show(scene, animation, model.getFileName() + ": " + result.strips().size() + (result.strips().size() == 1 ? " strip" : " strips"), 120, true, spec, 0);
     }
 
     static String summary(Path model, HalfedgeMesh mesh, Wrap.Result result, WrapAnalysis analysis) {
         double length = 0;
+        double longest = 0;
         for (Wrap.Strip strip : result.strips()) {
             length += strip.sheet().length();
+            longest = Math.max(longest, strip.sheet().length());
         }
-        return String.format(Locale.ROOT, "%s: %d triangles -> %d on the path, %d strip(s) %.4g x %.4g (L/w %.1f), "
+        int strips = result.strips().size();
+        // One strip reads as its size; several as their width and lengths, not as one strip as long as all.
+        String paper = strips == 1
+                ? String.format(Locale.ROOT, "1 strip %.4g x %.4g (L/w %.1f)", length, result.width(), length / result.width())
+                : String.format(Locale.ROOT, "%d strips %.4g wide, %.4g long in all (the longest %.4g, L/w %.1f)", strips,
+                        result.width(), length, longest, longest / result.width());
+        return String.format(Locale.ROOT, "%s: %d triangles -> %d on the path, %s, "
                 + "%d turn folds, %d gadget folds, %d edge crossings, %d tucks, %d layers at most (a stack of %d), "
                 + "paper efficiency %.3f, coverage %.3f, isometry error %.1e", model, mesh.faceCount(), result.mesh().faceCount(),
-                result.strips().size(), length, result.width(), length / result.width(), result.count(Wrap.Kind.ZIGZAG_TURN),
+                paper, result.count(Wrap.Kind.ZIGZAG_TURN),
                 result.count(Wrap.Kind.TURN_GADGET), result.count(Wrap.Kind.EDGE_CROSSING), result.count(Wrap.Kind.TUCK),
                 analysis.maxLayers(), analysis.stackLevels(), analysis.surfaceArea() / analysis.paperArea(), analysis.coverage(),
                 analysis.isometryError());

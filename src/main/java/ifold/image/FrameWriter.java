@@ -45,9 +45,15 @@ public final class FrameWriter implements FrameSink {
      */
     public FrameWriter(Path folder) throws IOException {
         this.folder = folder;
-        Path lockPath = folder.resolve(".ifold-frames.lock");
-        lockFile = java.nio.channels.FileChannel.open(lockPath, java.nio.file.StandardOpenOption.CREATE,
-                java.nio.file.StandardOpenOption.WRITE);
+        // The lock's file goes with the export, even one stopped by Ctrl-C or SIGTERM.
+        Path lockPath = AtomicFile.createDeletedOnStop(() -> {
+            Path made = folder.resolve(".ifold-frames.lock");
+            if (!Files.exists(made)) {
+                Files.createFile(made);
+            }
+            return made;
+        });
+        lockFile = java.nio.channels.FileChannel.open(lockPath, java.nio.file.StandardOpenOption.WRITE);
         java.nio.channels.FileLock held;
         try {
             held = lockFile.tryLock();
@@ -56,6 +62,7 @@ public final class FrameWriter implements FrameSink {
         }
         if (held == null) {
             lockFile.close();
+            AtomicFile.cancelDeleteOnStop(lockPath); // the other export's
             throw new IOException("another export is writing frames into " + folder + ": wait for it, or choose another folder");
         }
         lock = held;
@@ -163,7 +170,9 @@ public final class FrameWriter implements FrameSink {
         try {
             lock.release();
             lockFile.close();
-            Files.deleteIfExists(folder.resolve(".ifold-frames.lock"));
+            Path lockPath = folder.resolve(".ifold-frames.lock");
+            Files.deleteIfExists(lockPath);
+            AtomicFile.cancelDeleteOnStop(lockPath);
         } catch (IOException e) {
             // The lock goes with the process anyway.
         }

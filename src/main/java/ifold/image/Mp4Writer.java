@@ -47,13 +47,14 @@ public final class Mp4Writer implements FrameSink {
         if (width % 2 != 0 || height % 2 != 0) {
             throw new IllegalArgumentException("an MP4 needs an even width and height, got " + width + "x" + height);
         }
-        file = AtomicFile.begin(movie);
+        file = AtomicFile.beginForProgram(movie);
         List<String> command = new ArrayList<>(List.of("ffmpeg", "-hide_banner", "-loglevel", "error", "-y",
                 "-f", "rawvideo", "-pix_fmt", "rgb24", "-s", width + "x" + height, "-framerate", Integer.toString(fps), "-i", "-",
                 "-c:v", "libx264", "-preset", "medium", "-tune", "animation", "-crf", "25", "-pix_fmt", "yuv420p", "-r", Integer.toString(fps),
                 "-movflags", "+faststart", "-f", "mp4", file.path().toString()));
         try {
             ffmpeg = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.PIPE).start();
+            file.writtenBy(ffmpeg);
         } catch (IOException e) {
             file.close();
             throw new IOException("cannot run ffmpeg (scripts/setup installs it; or write a .gif): " + e.getMessage(), e);

@@ -98,6 +98,12 @@ public final class AtomicFile {
     /** Temporary files being written now: Ctrl-C or SIGTERM mid-write takes them back. */
     private static final java.util.Set<Path> IN_FLIGHT = java.util.concurrent.ConcurrentHashMap.newKeySet();
 
+    /**
+     * Programs writing some of them (ffmpeg): stopped before the files are taken back, or one
+     * would write its file again once it is deleted.
+     */
+    private static final java.util.Map<Path, Process> WRITERS = new java.util.concurrent.ConcurrentHashMap<>();
+
     /** Set once the JVM shuts down: no new file is begun after the unfinished ones are taken back. */
     private static boolean shuttingDown;
 
@@ -109,18 +115,63 @@ public final class AtomicFile {
     }
 
     static {
-        Runtime.getRuntime().addShutdownHook(new Thread(() -> {
-            synchronized (IN_FLIGHT) {
-                shuttingDown = true;
-                for (Path temp : IN_FLIGHT) {
-                    try {
-                        Files.deleteIfExists(temp);
-                    } catch (IOException e) {
-                        // Exiting anyway; the next run that writes there sweeps it.
+        try {
+            Runtime.getRuntime().addShutdownHook(new Thread(() -> {
+                synchronized (IN_FLIGHT) {
+                    shuttingDown = true;
+                    for (Process writer : WRITERS.values()) {
+                        writer.destroyForcibly();
+                    }
+                    for (Process writer : WRITERS.values()) {
+                        try {
+                            writer.waitFor(2, java.util.concurrent.TimeUnit.SECONDS);
+                        } catch (InterruptedException e) {
+                            break; // exiting anyway
+                        }
+                    }
+                    for (Path temp : IN_FLIGHT) {
+                        try {
+                            deleteWithContents(temp);
+                        } catch (IOException e) {
+                            // Exiting anyway; the next run that writes there sweeps it.
+                        }
                     }
                 }
+            }, "discard unfinished files"));
+        } catch (IllegalStateException e) {
+            shuttingDown = true; // first used while the JVM stops: nothing new is begun
+        }
+    }
+
+    /** Makes a file of this run's, such as a lock or a temporary file, and says where it is. */
+    public interface Creation {
+        Path create() throws IOException;
+    }
+
+    /**
+     * Makes a file by {@code creation}, a file of no use once this run stops (a lock, a
+     * temporary file), to be deleted should the JVM stop (Ctrl-C, SIGTERM) before
+     * {@link #cancelDeleteOnStop}: made and registered in one step, so that no stop between the
+     * two can leave it behind.
+     *
+     * @return the file made
+     * @throws IOException if the JVM is stopping already (nothing is made), or as creation throws
+     */
+    public static Path createDeletedOnStop(Creation creation) throws IOException {
+        synchronized (IN_FLIGHT) {
+            if (shuttingDown) {
+                throw new IOException("not written: iFold is stopping");
             }
-        }, "discard unfinished files"));
+            Path made = creation.create();
+            IN_FLIGHT.add(made);
+            return made;
+        }
+    }
+
+    /** {@code file} is to stay, or is gone already: a stop no longer deletes it. */
+    public static void cancelDeleteOnStop(Path file) {
+        IN_FLIGHT.remove(file);
+        WRITERS.remove(file);
     }
 
     /**
@@ -128,38 +179,57 @@ public final class AtomicFile {
      * temporary file beside the target, renamed over it by {@link #commit()}. {@link #close()}
      * without a commit deletes it, and so does the JVM's shutdown (Ctrl-C, SIGTERM) while it is
      * pending: an interrupted export leaves no half-written file.
+     *
+     * <p>Where another program writes the file ({@link #beginForProgram}), it writes it inside
+     * a hidden folder of its own beside the target: a program that outlives iFold cannot then
+     * make the file again once it is taken back, as its folder is gone.
      */
     public static final class Pending implements AutoCloseable {
         private final Path target;
+        /** What a stop takes back: the temporary file, or the folder it is in. */
         private final Path temp;
-        private final Thread cleanup;
+        private final Path path;
         private boolean done;
 
-        private Pending(Path target) throws IOException {
+        private Pending(Path target, boolean forProgram) throws IOException {
             this.target = target;
-            this.temp = createTemporary(target);
-            Path doomed = temp;
-            this.cleanup = new Thread(() -> {
-                try {
-                    Files.deleteIfExists(doomed);
-                } catch (IOException e) {
-                    // Exiting anyway: nothing more to do.
-                }
-            }, "discard " + temp.getFileName());
-            Runtime.getRuntime().addShutdownHook(cleanup);
+            try {
+                this.temp = createDeletedOnStop(() -> forProgram ? createTemporaryFolder(target) : createTemporary(target));
+            } catch (IOException e) {
+                // Name the file the user asked for, not the temporary one beside it.
+                throw new IOException(target + ": " + reason(e), e);
+            }
+            this.path = forProgram ? temp.resolve(target.getFileName()) : temp;
         }
 
         /** The temporary file to write to. */
         public Path path() {
-            return temp;
+            return path;
+        }
+
+        /**
+         * {@code writer}, another program, writes the temporary file: a stop (Ctrl-C, SIGTERM)
+         * kills it before taking the file back; one under way already kills it now.
+         */
+        public void writtenBy(Process writer) {
+            synchronized (IN_FLIGHT) {
+                if (shuttingDown) {
+                    writer.destroyForcibly();
+                    return;
+                }
+                WRITERS.put(temp, writer);
+            }
         }
 
         /** Renames the whole file over the target. */
         public void commit() throws IOException {
             try {
-                Files.move(temp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+                Files.move(path, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
             } catch (AtomicMoveNotSupportedException e) {
-                Files.move(temp, target, StandardCopyOption.REPLACE_EXISTING);
+                Files.move(path, target, StandardCopyOption.REPLACE_EXISTING);
+            }
+            if (!temp.equals(path)) {
+                deleteWithContents(temp);
             }
             finish();
         }
@@ -169,9 +239,9 @@ public final class AtomicFile {
         public void close() {
             if (!done) {
                 try {
-                    Files.deleteIfExists(temp);
+                    deleteWithContents(temp);
                 } catch (IOException e) {
-                    // The shutdown hook tries again.
+                    // A stop still deletes it; else the next run that writes there sweeps it.
                     return;
                 }
                 finish();
@@ -180,12 +250,20 @@ public final class AtomicFile {
 
         private void finish() {
             done = true;
-            try {
-                Runtime.getRuntime().removeShutdownHook(cleanup);
-            } catch (IllegalStateException e) {
-                // Shutting down already: the hook runs, and finds nothing to delete.
+            cancelDeleteOnStop(temp);
+        }
+    }
+
+    /** Deletes a file, or a folder with the files in it. */
+    private static void deleteWithContents(Path file) throws IOException {
+        if (Files.isDirectory(file, java.nio.file.LinkOption.NOFOLLOW_LINKS)) {
+            try (java.nio.file.DirectoryStream<Path> files = Files.newDirectoryStream(file)) {
+                for (Path inside : files) {
+                    Files.deleteIfExists(inside);
+                }
             }
         }
+        Files.deleteIfExists(file);
     }
 
     /** When this process started: temporary files older than that are no run's now. */
@@ -212,7 +290,7 @@ public final class AtomicFile {
                 }
                 try {
                     if (Files.getLastModifiedTime(file).toMillis() < STARTED - 1000) {
-                        Files.deleteIfExists(file);
+                        deleteWithContents(file);
                     }
                 } catch (IOException e) {
                     // Someone else's, or gone already: leave it.
@@ -236,7 +314,12 @@ public final class AtomicFile {
 
     /** Begins a file written in steps; see {@link Pending}. */
     public static Pending begin(Path file) throws IOException {
-        return new Pending(file.toAbsolutePath());
+        return new Pending(file.toAbsolutePath(), false);
+    }
+
+    /** Begins a file that another program (ffmpeg) writes, in a hidden folder of its own; see {@link Pending}. */
+    public static Pending beginForProgram(Path file) throws IOException {
+        return new Pending(file.toAbsolutePath(), true);
     }
 
     /**
@@ -244,6 +327,15 @@ public final class AtomicFile {
      * would make it readable by its owner only, and the rename would carry that over.
      */
     private static Path createTemporary(Path target) throws IOException {
+        return createTemporary(target, false);
+    }
+
+    /** Creates an empty, uniquely named hidden folder beside {@code target}, named as its temporary files are. */
+    private static Path createTemporaryFolder(Path target) throws IOException {
+        return createTemporary(target, true);
+    }
+
+    private static Path createTemporary(Path target, boolean folder) throws IOException {
         Path dir = target.getParent();
         String name = target.getFileName().toString();
         // Keeps the temporary name within the usual 255-byte limit.
@@ -252,7 +344,7 @@ public final class AtomicFile {
         for (int attempt = 0; ; attempt++) {
             Path temp = dir.resolve(base + Long.toHexString(ThreadLocalRandom.current().nextLong()) + ".tmp");
             try {
-                return Files.createFile(temp);
+                return folder ? Files.createDirectory(temp) : Files.createFile(temp);
             } catch (FileAlreadyExistsException e) {
                 if (attempt == 10) {
                     throw e;

@@ -100,12 +100,17 @@ public final class Scenes {
     public static WrapView.Playback zigzag(Scene scene, Triangle shape, Wrap.Result result, List<WrapGeometry> geometries) {
         scene.root().attach(solid(shape));
         scene.root().attach(outline(shape));
-        return paper(scene, result, geometries);
+        return paper(scene, result, geometries, "wrapped: the strip covers the triangle, its excess tucked under");
     }
 
+    /** What the four stages of the seed's Figure 11 show, labelled a to d as a printed figure is. */
+    public static final List<String> FIGURE11_LABELS = List.of("a. the first turn: two 45° folds", "b. every pass laid",
+            "c. the excess tucked under", "d. the underside");
+
     /**
-     * The stages of the seed's Figure 11 re-made from a lone triangle's playback: the first
-     * turn, every pass laid, the excess tucked under, the underside.
+     * The stages of the seed's Figure 11 re-made from a lone triangle's playback, as
+     * {@link #FIGURE11_LABELS} name them: the first turn, every pass laid, the excess tucked
+     * under, the underside.
      */
     public static double[] figure11Stages(WrapView.Playback playback, Wrap.Result result) {
         int laid = result.count(Wrap.Kind.ZIGZAG_TURN) + result.count(Wrap.Kind.OVERLAP);
@@ -115,7 +120,7 @@ public final class Scenes {
 
     /** The turn gadget's strip folded on an empty table. */
     public static WrapView.Playback turn(Scene scene, Wrap.Result result, List<WrapGeometry> geometries) {
-        return paper(scene, result, geometries);
+        return paper(scene, result, geometries, "turned: the strip runs on at the angle asked, top side up");
     }
 
     /** The model, solid, and the strips laid over it along the path; then a turn around it. */
@@ -148,10 +153,10 @@ public final class Scenes {
         return animation;
     }
 
-    private static WrapView.Playback paper(Scene scene, Wrap.Result result, List<WrapGeometry> geometries) {
+    private static WrapView.Playback paper(Scene scene, Wrap.Result result, List<WrapGeometry> geometries, String ending) {
         // White paper on a white background would not be seen where it leaves the triangle.
         scene.setBackground(BACKGROUND);
-        return WrapView.play(scene, result, geometries);
+        return WrapView.play(scene, result, geometries, ending);
     }
 
     /**

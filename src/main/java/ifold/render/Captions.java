@@ -11,36 +11,86 @@ import java.awt.image.BufferedImage;
 /**
  * A caption along the bottom of a frame: the step shown, in white on a dark translucent band,
  * large enough to read at 640×360 (a twenty-fourth of the frame's height, 13 pixels at least).
- * Drawn into the frame's pixels (rows top first, 3 bytes a pixel) after it is rendered.
+ * A caption too long for the band is set a fifth smaller, and if it is still too long, on two
+ * lines in a band one line taller, so that the step reads whole; only beyond two lines is it cut
+ * short. Drawn into the frame's pixels (rows top first, 3 bytes a pixel) after it is rendered.
  */
 final class Captions {
     private final int width;
     private final int height;
     private final int band;
+    /** The band of a caption on two lines: one line taller. */
+    private final int tallBand;
     private final Font font;
+    private final Font smallFont;
     private final BufferedImage strip;
+
+    /** How a caption is set: its lines, their font, and the rows of the band they need. */
+    record Layout(java.util.List<String> lines, Font font, int rows) {
+    }
 
     Captions(int width, int height) {
         this.width = width;
         this.height = height;
         int size = Math.max(13, height / 24);
         this.font = new Font(Font.SANS_SERIF, Font.BOLD, size);
+        this.smallFont = font.deriveFont(Math.max(12f, 0.8f * size));
         this.band = Math.min(height, (int) Math.ceil(size * 1.7));
-        this.strip = new BufferedImage(width, band, BufferedImage.TYPE_INT_RGB);
+        this.tallBand = Math.min(height, band + (int) Math.ceil(smallFont.getSize2D() * 1.25));
+        this.strip = new BufferedImage(width, tallBand, BufferedImage.TYPE_INT_RGB);
     }
 
-    /** The rows the caption covers, from the bottom: what stays background without one. */
+    /** The rows a one-line caption covers, from the bottom: what stays background without one. */
     int band() {
         return band;
+    }
+
+    /** How {@code text} is set in this frame's width. */
+    Layout layout(String text) {
+        Graphics2D g = strip.createGraphics();
+        try {
+            int room = width - band; // half a band's margin either side
+            FontMetrics metrics = g.getFontMetrics(font);
+            if (metrics.stringWidth(text) <= room) {
+                return new Layout(java.util.List.of(text), font, band);
+            }
+            FontMetrics small = g.getFontMetrics(smallFont);
+            if (small.stringWidth(text) <= room) {
+                return new Layout(java.util.List.of(text), smallFont, band);
+            }
+            // Two lines, broken at the last space that lets the first fit.
+            int cut = -1;
+            for (int i = text.indexOf(' '); i > 0; i = text.indexOf(' ', i + 1)) {
+                if (small.stringWidth(text.substring(0, i)) > room) {
+                    break;
+                }
+                cut = i;
+            }
+            String first;
+            String rest;
+            if (cut > 0) {
+                first = text.substring(0, cut);
+                rest = text.substring(cut + 1).strip();
+            } else {
+                first = fit(text, small, room);
+                first = first.substring(0, first.length() - 1); // no ellipsis mid-word: it goes on
+                rest = text.substring(first.length()).strip();
+            }
+            return new Layout(java.util.List.of(first, fit(rest, small, room)), smallFont, tallBand);
+        } finally {
+            g.dispose();
+        }
     }
 
     void draw(byte[] rgb, String text) {
         if (text == null || text.isBlank()) {
             return;
         }
-        int top = height - band;
+        Layout layout = layout(text.strip());
+        int rows = layout.rows();
+        int top = height - rows;
         int[] row = new int[width];
-        for (int y = 0; y < band; y++) {
+        for (int y = 0; y < rows; y++) {
             int base = 3 * (top + y) * width;
             for (int x = 0; x < width; x++) {
                 int b = base + 3 * x;
@@ -53,22 +103,69 @@ final class Captions {
             g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
             g.setComposite(AlphaComposite.getInstance(AlphaComposite.SRC_OVER, 0.62f));
             g.setColor(new Color(0x20, 0x26, 0x2E));
-            g.fillRect(0, 0, width, band);
+            g.fillRect(0, 0, width, rows);
             g.setComposite(AlphaComposite.SrcOver);
-            g.setFont(font);
+            g.setFont(layout.font());
             FontMetrics metrics = g.getFontMetrics();
-            String shown = fit(text, metrics, width - band);
             g.setColor(Color.WHITE);
-            int baseline = (band - metrics.getHeight()) / 2 + metrics.getAscent();
-            g.drawString(shown, band / 2, baseline);
+            int lines = layout.lines().size();
+            int lineHeight = lines == 1 ? metrics.getHeight() : (int) Math.ceil(layout.font().getSize2D() * 1.25);
+            int baseline = (rows - lines * lineHeight) / 2 + (lineHeight - metrics.getHeight()) / 2 + metrics.getAscent();
+            for (String line : layout.lines()) {
+                g.drawString(line, band / 2, baseline);
+                baseline += lineHeight;
+            }
         } finally {
             g.dispose();
         }
-        for (int y = 0; y < band; y++) {
+        for (int y = 0; y < rows; y++) {
             strip.getRGB(0, y, width, 1, row, 0, width);
             int base = 3 * (top + y) * width;
             for (int x = 0; x < width; x++) {
                 int b = base + 3 * x;
+                rgb[b] = (byte) (row[x] >>> 16);
+                rgb[b + 1] = (byte) (row[x] >>> 8);
+                rgb[b + 2] = (byte) row[x];
+            }
+        }
+    }
+
+    /**
+     * Writes {@code text} into the top left corner of a picture (rows top first, 3 bytes a
+     * pixel), dark on a pale translucent box: the label of a figure's stage, as a printed
+     * figure's "(a)", "(b)" are.
+     */
+    static void label(byte[] rgb, int width, int height, String text) {
+        BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
+        int[] row = new int[width];
+        for (int y = 0; y < height; y++) {
+            for (int x = 0; x < width; x++) {
+                int b = 3 * (y * width + x);
+                row[x] = (rgb[b] & 0xff) << 16 | (rgb[b + 1] & 0xff) << 8 | (rgb[b + 2] & 0xff);
+            }
+            image.setRGB(0, y, width, 1, row, 0, width);
+        }
+        Graphics2D g = image.createGraphics();
+        try {
+            g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
+            Font font = new Font(Font.SANS_SERIF, Font.BOLD, Math.max(13, height / 20));
+            FontMetrics metrics = g.getFontMetrics(font);
+            int pad = font.getSize() / 2;
+            String shown = fit(text, metrics, width - 4 * pad);
+            g.setComposite(AlphaComposite.getInstance(AlphaComposite.SRC_OVER, 0.75f));
+            g.setColor(Color.WHITE);
+            g.fillRoundRect(pad, pad, metrics.stringWidth(shown) + 2 * pad, metrics.getHeight() + pad, pad, pad);
+            g.setComposite(AlphaComposite.SrcOver);
+            g.setFont(font);
+            g.setColor(new Color(0x20, 0x26, 0x2E));
+            g.drawString(shown, 2 * pad, pad + pad / 2 + metrics.getAscent());
+        } finally {
+            g.dispose();
+        }
+        for (int y = 0; y < height; y++) {
+            image.getRGB(0, y, width, 1, row, 0, width);
+            for (int x = 0; x < width; x++) {
+                int b = 3 * (y * width + x);
                 rgb[b] = (byte) (row[x] >>> 16);
                 rgb[b + 1] = (byte) (row[x] >>> 8);
                 rgb[b + 2] = (byte) row[x];

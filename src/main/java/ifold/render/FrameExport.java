@@ -95,11 +95,12 @@ public final class FrameExport {
     /**
      * Renders the animation at each of {@code positions} into a tile of {@code width} by
      * {@code height} and writes them as one picture, {@code columns} tiles a row, left to right
-     * and top to bottom, on a white ground with a thin grey line between tiles: a figure of
-     * stages. Written under a temporary name and renamed.
+     * and top to bottom, with a thin grey line between tiles: a figure of stages, each labelled
+     * in its top left corner by its entry of {@code labels} (null for none). Written under a
+     * temporary name and renamed.
      */
-    public static void panel(Scene scene, Animation animation, double[] positions, int columns, int width, int height,
-            int samples, Path file) throws RenderUnavailableException, IOException {
+    public static void panel(Scene scene, Animation animation, double[] positions, List<String> labels, int columns, int width,
+            int height, int samples, Path file) throws RenderUnavailableException, IOException {
         int rows = (positions.length + columns - 1) / columns;
         int gap = 2;
         int panelWidth = columns * width + (columns - 1) * gap;
@@ -111,6 +112,9 @@ public final class FrameExport {
             for (int i = 0; i < positions.length; i++) {
                 animation.apply(positions[i]);
                 byte[] tile = renderer.render(scene);
+                if (labels != null && i < labels.size()) {
+                    Captions.label(tile, width, height, labels.get(i));
+                }
                 int left = (i % columns) * (width + gap);
                 int top = (i / columns) * (height + gap);
                 for (int y = 0; y < height; y++) {

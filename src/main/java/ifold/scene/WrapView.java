@@ -107,14 +107,20 @@ public final class WrapView {
      * {@code current}, rebuilt for each frame (it is a few dozen faces).
      */
     public static Playback animation(Scene scene, Geometry done, Geometry current, Strips strips, Wrap.Result result) {
-        return new Playback(scene, done, current, strips, result);
+        return new Playback(scene, done, current, strips, result, null);
     }
 
     /**
      * Adds the wrap's paper to the scene (what the scene holds already, the model or a
-     * triangle, stays under it), frames the whole, and returns its playback.
+     * triangle, stays under it), frames the whole, and returns its playback, whose last caption
+     * counts the strips and triangles wrapped.
      */
     public static Playback play(Scene scene, Wrap.Result result, List<WrapGeometry> geometries) {
+        return play(scene, result, geometries, null);
+    }
+
+    /** As {@link #play(Scene, Wrap.Result, List)}, with {@code ending} the caption once all is folded (null for the count). */
+    public static Playback play(Scene scene, Wrap.Result result, List<WrapGeometry> geometries, String ending) {
         Strips strips = strips(result, geometries);
         Geometry paper = new Geometry("paper", strips.mesh(), PAPER);
         paper.setHiddenColor(0); // not yet laid: not there
@@ -122,7 +128,7 @@ public final class WrapView {
         Geometry current = new Geometry("folding", strips.mesh(), PAPER_FOLDING);
         scene.root().attach(current);
         scene.frameAll();
-        return animation(scene, paper, current, strips, result);
+        return new Playback(scene, paper, current, strips, result, ending);
     }
 
     /** The wrap played fold by fold, then one turn around the result. */
@@ -146,14 +152,17 @@ public final class WrapView {
         /** What the final turn starts from: the model turned to show its outer side, where it has one. */
         private final Quaterniondc finalFacing;
         private final double finalTurn;
+        /** The caption once all is folded: what the paper does now. */
+        private final String ending;
         private double shown = -1;
 
-        Playback(Scene scene, Geometry done, Geometry current, Strips strips, Wrap.Result result) {
+        Playback(Scene scene, Geometry done, Geometry current, Strips strips, Wrap.Result result, String ending) {
             this.scene = scene;
             this.done = done;
             this.current = current;
             this.strips = strips;
             this.result = result;
+            this.ending = ending;
             this.steps = result.steps();
             IndexedPolygons mesh = result.mesh();
             int[] firstOfStrip = new int[result.strips().size()];
@@ -500,8 +509,9 @@ public final class WrapView {
         @Override
         public String describe(double position) {
             if (position >= REVEAL_STEPS || steps.isEmpty()) {
-                return triangles == 1 ? "wrapped: the strip covers the triangle, its excess tucked under"
-                        : "wrapped: " + result.strips().size() + " strip(s) over " + triangles + " triangles";
+                int strips = result.strips().size();
+                return ending != null ? ending : "wrapped: " + strips + (strips == 1 ? " strip" : " strips") + " over " + triangles
+                        + (triangles == 1 ? " triangle" : " triangles");
             }
             int j = Math.min(steps.size() - 1, (int) Math.floor(along(position)));
             Wrap.Step step = steps.get(j);

@@ -435,10 +435,10 @@ public final class Wrap {
             PathPlan plan = plans.get(c);
             for (int i = 0; i + 1 < plan.m; i++) {
                 if (plan.frames[i].corners()[5] < width * (1 - 1e-12)) {
-                    throw new TooWideException(tooWide(mesh, plan.first + i, i, plan.m, width, plan.frames[i].corners()[5]));
+                    throw new TooWideException(tooWide(mesh, plan.first + i, i, plan.m, width, plan.frames[i].corners()[5], widest));
                 }
             }
-            chooseLastStart(mesh, plan, width);
+            chooseLastStart(mesh, plan, width, widest);
             for (int i = 0; i < plan.m; i++) {
                 frames[plan.first + i] = plan.frames[i];
             }
@@ -483,9 +483,16 @@ public final class Wrap {
         return new Result(mesh, frames, List.copyOf(strips), List.copyOf(steps), width, thickness, widest);
     }
 
-    private static String tooWide(IndexedPolygons mesh, int triangle, int pathIndex, int m, double width, double altitude) {
+    /**
+     * Why {@code width} is refused at a triangle, and the width every triangle takes: the first
+     * triangle found too narrow need not be the narrowest, and a width it takes may still be
+     * refused further on.
+     */
+    private static String tooWide(IndexedPolygons mesh, int triangle, int pathIndex, int m, double width, double altitude,
+            double widest) {
         return String.format(Locale.ROOT, "the strip width %s is too wide for triangle %d of %d on the path (%s): "
-                + "its passes need a width of at most %s", width, pathIndex + 1, m, cornersText(mesh, triangle), altitude);
+                + "its passes need a width of at most %s, and the whole path one of at most %s", width, pathIndex + 1, m,
+                cornersText(mesh, triangle), altitude, widest);
     }
 
     static String cornersText(IndexedPolygons mesh, int triangle) {
@@ -593,10 +600,10 @@ public final class Wrap {
      * The last triangle may be entered by either end of the edge before it: the one the passes
      * of the triangle before lead to, when it takes the width, so that no pass is run twice.
      */
-    private static void chooseLastStart(IndexedPolygons mesh, PathPlan plan, double width) throws WrapException {
+    private static void chooseLastStart(IndexedPolygons mesh, PathPlan plan, double width, double widest) throws WrapException {
         if (plan.m == 1) {
             if (plan.frames[0].corners()[5] < width * (1 - 1e-12)) {
-                throw new TooWideException(tooWide(mesh, plan.first, 0, 1, width, plan.frames[0].corners()[5]));
+                throw new TooWideException(tooWide(mesh, plan.first, 0, 1, width, plan.frames[0].corners()[5], widest));
             }
             return;
         }
@@ -614,7 +621,7 @@ public final class Wrap {
                 return;
             }
         }
-        throw new TooWideException(tooWide(mesh, plan.first + last, last, plan.m, width, plan.frames[last].corners()[5]));
+        throw new TooWideException(tooWide(mesh, plan.first + last, last, plan.m, width, plan.frames[last].corners()[5], widest));
     }
 
     static int passes(double h, double width) {

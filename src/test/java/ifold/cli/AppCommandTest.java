@@ -42,7 +42,7 @@ class AppCommandTest {
     void ifoldAloneWithoutADisplayIsTheUsageErrorOfOld() throws Exception {
         Ended ended = runWithoutDisplay();
         assertEquals(2, ended.code(), ended.output());
-        assertTrue(ended.output().contains("missing command: try 'ifold --help'"), ended.output());
+        assertEquals("ifold: missing command\nTry 'ifold --help' for more.", ended.output().strip(), "the hint once");
     }
 
     @Test

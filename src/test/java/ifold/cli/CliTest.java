@@ -62,6 +62,27 @@ class CliTest {
         assertFalse(run.err().contains("\tat "), "no stack trace");
     }
 
+    /** What the user typed wrong is said in iFold's words, with what was meant, and a hint to the help. */
+    @Test
+    void mistypedCommandsAndOptionsAreNamedWithWhatWasMeant() {
+        String[][] cases = {
+            {"wrap models/cube.off --widht 1", "ifold: unknown option '--widht': did you mean --width?"},
+            {"wrap models/cube.off --width abc", "ifold: option --width: 'abc' is not a number"},
+            {"wrap models/cube.off --max-faces 1.5", "ifold: option --max-faces: '1.5' is not a whole number"},
+            {"demo zigzg", "ifold: unknown command 'zigzg': did you mean zigzag?"},
+            {"wrapp models/cube.off", "ifold: unknown command 'wrapp': did you mean wrap"},
+            {"info models/cube.off models/cube.off", "ifold: unexpected argument 'models/cube.off'"},
+        };
+        for (String[] c : cases) {
+            Run run = run(c[0].split(" "));
+            assertEquals(UserError.USAGE_EXIT_CODE, run.code(), c[0]);
+            String[] lines = run.err().strip().split("\n");
+            assertEquals(2, lines.length, c[0] + ": the error and the hint: " + run.err());
+            assertTrue(lines[0].startsWith(c[1]), c[0] + ": " + lines[0]);
+            assertTrue(lines[1].startsWith("Try 'ifold") && lines[1].endsWith(" --help' for more."), lines[1]);
+        }
+    }
+
     /** main() builds only the subcommands a run needs (picocli's annotation reading is most of start-up). */
     @Test
     void aRunBuildsOnlyTheSubcommandItNeeds() {
@@ -116,7 +137,7 @@ class CliTest {
         Path model = write(soup, "dup.off"); // OFF, counts, 4 vertices, then faces on lines 7 to 11
         Run repaired = run("info", model.toString());
         assertEquals(0, repaired.code());
-        assertTrue(repaired.err().contains("repaired: dropped 1 duplicate faces"), repaired.err());
+        assertTrue(repaired.err().contains("repaired: dropped 1 duplicate face"), repaired.err());
         assertTrue(repaired.out().contains("faces: 4"), repaired.out());
         assertTrue(repaired.out().contains("genus: 0"), repaired.out());
         Path out = dir.resolve("strict.off");
@@ -145,7 +166,7 @@ class CliTest {
                 "missing.off", "no such file");
         Run usage = run("refine", model.toString());
         assertEquals(2, usage.code());
-        assertTrue(usage.err().startsWith("ifold: Missing required option"), usage.err());
+        assertTrue(usage.err().startsWith("ifold: missing required option"), usage.err());
         assertEquals(2, run("refine", model.toString(), "-o", "x.off", "--bogus").code());
         // 'ifold' alone opens the window where there is a display (as here, under Xvfb); without
         // one it is still this usage error: AppCommandTest runs it so.

@@ -129,14 +129,46 @@ class DemoCommandTest {
     }
 
     @Test
+    void theFigureShowsItsFourStagesLabelled() throws Exception {
+        String display = System.getenv("DISPLAY");
+        assumeTrue(display != null && !display.isEmpty(), "no X display (run the tests under xvfb-run)");
+        Path figure = dir.resolve("figure.png");
+        CliTest.Run run = CliTest.run("demo", "zigzag", "--no-view", "--figure", figure.toString());
+        assertEquals(0, run.code(), run.err());
+        java.awt.image.BufferedImage panel = javax.imageio.ImageIO.read(figure.toFile());
+        assertEquals(1602, panel.getWidth(), "two tiles of 800 and a line between");
+        assertEquals(1002, panel.getHeight());
+        for (int tile = 0; tile < 4; tile++) {
+            int left = (tile % 2) * 802;
+            int top = (tile / 2) * 502;
+            int dark = 0;
+            int pale = 0;
+            for (int y = top + 12; y < top + 50; y++) {
+                for (int x = left + 12; x < left + 200; x++) {
+                    int rgb = panel.getRGB(x, y) & 0xFFFFFF;
+                    dark += ((rgb >> 16) & 0xFF) < 0x60 && ((rgb >> 8) & 0xFF) < 0x60 && (rgb & 0xFF) < 0x60 ? 1 : 0;
+                    pale += ((rgb >> 16) & 0xFF) > 0xEC && ((rgb >> 8) & 0xFF) > 0xEC && (rgb & 0xFF) > 0xEC ? 1 : 0;
+                }
+            }
+            assertTrue(dark > 200 && pale > 1000, "stage " + (char) ('a' + tile) + " has its label in its corner: " + dark
+                    + " dark and " + pale + " pale pixels");
+        }
+    }
+
+    @Test
     void framesAreRenderedWithoutAWindow() throws Exception {
         String display = System.getenv("DISPLAY");
         assumeTrue(display != null && !display.isEmpty(), "no X display (run the tests under xvfb-run)");
         Path frames = dir.resolve("frames");
+        Files.createDirectory(frames);
+        Files.writeString(frames.resolve("frame_00030.png"), "stale"); // left by a longer export
+        Files.writeString(frames.resolve("notes.txt"), "mine");
         CliTest.Run run = CliTest.run("demo", "zigzag", "--frames", frames.toString(), "--size", "64x36", "--fps", "1");
         assertEquals(0, run.code(), run.err());
         try (var files = Files.list(frames)) {
-            assertEquals(30, files.count(), "two seconds a step, 13 steps (12 folds and the end) and four for the turn, one frame a second");
+            assertEquals(31, files.count(), "two seconds a step, 13 steps (12 folds and the end) and four for the turn, one frame "
+                    + "a second; the frame past them gone, the user's own file kept");
         }
+        assertTrue(Files.exists(frames.resolve("notes.txt")));
     }
 }

@@ -75,8 +75,40 @@ class LauncherTest {
         try (var files = Files.list(frames)) {
             assertEquals(0, files.filter(p -> p.getFileName().toString().endsWith(".tmp")).count(), "no temporary frames");
         }
+        assertFalse(Files.exists(frames.resolve(".ifold-frames.lock")), "the folder's lock goes with the export");
         try (var files = Files.list(frames)) {
             assertTrue(files.count() < 9000, "it stopped before the end");
+        }
+    }
+
+    @Test
+    void aMovieStoppedAsItBeginsLeavesNoFile() throws Exception {
+        // SIGTERM just after the movie's temporary file is made, before ffmpeg has had a frame:
+        // ffmpeg, left alone, would write its file again after iFold deleted it.
+        assumeTrue(Files.isExecutable(LAUNCHER) && hasXvfb(), "no installed launcher or no Xvfb");
+        assumeTrue(new ProcessBuilder("sh", "-c", "command -v ffmpeg").start().waitFor() == 0, "no ffmpeg");
+        Path out = Files.createDirectory(dir.resolve("out"));
+        ProcessBuilder builder = new ProcessBuilder(LAUNCHER.toString(), "demo", "zigzag", "--movie", out.resolve("m.mp4").toString(),
+                "--size", "320x180").redirectErrorStream(true).redirectOutput(dir.resolve("log").toFile());
+        builder.environment().remove("DISPLAY");
+        builder.environment().remove("IFOLD_IN_XVFB");
+        Process launcher = builder.start();
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+        boolean begun = false;
+        while (!begun && System.nanoTime() < deadline && launcher.isAlive()) {
+            try (var files = Files.list(out)) {
+                begun = files.anyMatch(p -> p.getFileName().toString().endsWith(".tmp"));
+            }
+            Thread.sleep(begun ? 0 : 5);
+        }
+        List<ProcessHandle> started = launcher.descendants().toList();
+        launcher.destroy(); // SIGTERM
+        assertTrue(begun, "the movie was begun: " + Files.readString(dir.resolve("log")));
+        assertTrue(launcher.waitFor(30, TimeUnit.SECONDS), "the launcher stops");
+        assertAllGone(started);
+        Thread.sleep(500); // time for a surviving writer to write
+        try (var files = Files.list(out)) {
+            assertEquals(List.of(), files.map(p -> p.getFileName().toString()).toList(), "no movie, whole or in part");
         }
     }
 

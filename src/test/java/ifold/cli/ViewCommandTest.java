@@ -9,6 +9,7 @@ import ifold.mesh.Solids;
 import ifold.mesh.io.MeshWriters;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -45,6 +46,28 @@ class ViewCommandTest {
         assertRefused(CliTest.run("view", model, "--frames", file.toString()), "is a file");
         assertFalse(Files.exists(dir.resolve("frames")), "no folder made for a refused run");
         assertEquals(2, CliTest.run("view", model, "--fps", "many").code());
+    }
+
+    @Test
+    void aRunThatFailsOnItsInputMakesNoFramesFolder() throws Exception {
+        Path frames = dir.resolve("frames");
+        Path empty = Files.writeString(dir.resolve("empty.off"), "");
+        Path badScript = Files.writeString(dir.resolve("bad.fold"), "paper square 1\nfold sideways\n");
+        List<List<String>> runs = List.of(
+                List.of("view", dir.resolve("nothere.off").toString()),
+                List.of("view", empty.toString()),
+                List.of("view", "--path", empty.toString()),
+                List.of("fold", dir.resolve("nothere.fold").toString()),
+                List.of("fold", badScript.toString()),
+                List.of("wrap", empty.toString()),
+                List.of("demo", "zigzag", "--triangle", "0,0,1,0,2,0"));
+        for (List<String> command : runs) {
+            List<String> args = new java.util.ArrayList<>(command);
+            args.addAll(List.of("--frames", frames.toString()));
+            CliTest.Run run = CliTest.run(args.toArray(String[]::new));
+            assertTrue(run.code() == 1 || run.code() == 2, command + ": " + run.code() + " " + run.err());
+            assertFalse(Files.exists(frames), command + " made the folder it never wrote into");
+        }
     }
 
     @Test

@@ -2,6 +2,7 @@ package ifold.io;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import ifold.image.FrameWriter;
@@ -9,6 +10,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.FileTime;
 import java.time.Instant;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -85,6 +87,29 @@ class AtomicFileTest {
         assertFalse(Files.exists(half));
         try (var files = Files.list(dir)) {
             assertEquals(1, files.count(), "only the whole movie: " + dir);
+        }
+    }
+
+    @Test
+    void aFileAnotherProgramWritesIsWrittenInAFolderOfItsOwn() throws Exception {
+        Path movie = dir.resolve("m.mp4");
+        try (AtomicFile.Pending pending = AtomicFile.beginForProgram(movie)) {
+            assertEquals(dir, pending.path().getParent().getParent(), "in a folder beside the movie");
+            assertTrue(pending.path().getParent().getFileName().toString().startsWith(".m.mp4."), "a hidden one");
+            Files.writeString(pending.path(), "whole");
+            pending.commit();
+        }
+        assertEquals("whole", Files.readString(movie));
+        Path late = dir.resolve("late.mp4");
+        Path written;
+        try (AtomicFile.Pending pending = AtomicFile.beginForProgram(late)) {
+            written = pending.path();
+            Files.writeString(written, "half");
+        }
+        // A writer that outlives the export (ffmpeg, once iFold is stopped) cannot make the file again.
+        assertThrows(java.nio.file.NoSuchFileException.class, () -> Files.writeString(written, "again"));
+        try (var files = Files.list(dir)) {
+            assertEquals(List.of("m.mp4"), files.map(p -> p.getFileName().toString()).toList(), "the whole movie alone");
         }
     }
 }

@@ -58,6 +58,6 @@ class WrapViewTest {
         animation.apply(animation.stepCount());
         assertEquals(Geometry.ALL, done.revealed(), "at the end the whole wrap shows");
         assertEquals(0, current.mesh().triangleCount());
-        assertTrue(animation.describe(animation.stepCount()).startsWith("wrapped: 1 strip(s) over 18 triangles"));
+        assertTrue(animation.describe(animation.stepCount()).startsWith("wrapped: 1 strip over 18 triangles"));
     }
 }

@@ -274,6 +274,12 @@ class WrapTest {
         Wrap.WrapException e = assertThrows(Wrap.WrapException.class,
                 () -> Wrap.wrap(refinement, new Wrap.Options(widest * 1.01, Double.NaN)));
         assertTrue(e.getMessage().matches(".*too wide for triangle \\d+ of 58 on the path \\(\\(.*\\)\\).*"), e.getMessage());
+        // The first triangle refused may take more than others do: the message gives the
+        // width the whole path takes, which then goes.
+        Wrap.WrapException far = assertThrows(Wrap.WrapException.class, () -> Wrap.wrap(refinement, new Wrap.Options(100, Double.NaN)));
+        assertTrue(far.getMessage().endsWith("and the whole path one of at most " + widest), far.getMessage());
+        double told = Double.parseDouble(far.getMessage().replaceAll(".* at most ", ""));
+        assertEquals(told, Wrap.wrap(refinement, new Wrap.Options(told, Double.NaN)).width());
     }
 
     @Test

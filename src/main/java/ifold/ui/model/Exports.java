@@ -10,6 +10,7 @@ import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.io.MeshWriters;
 import ifold.refine.HamiltonianRefinement;
+import ifold.job.Scenes;
 import ifold.render.FrameExport;
 import ifold.render.RenderUnavailableException;
 import java.io.IOException;
@@ -153,7 +154,7 @@ public final class Exports {
         Plan.Shown shown = plan.newScene();
         progress.check();
         try {
-            FrameExport.panel(shown.scene(), shown.animation(), plan.figureStages(), 2, 800, 500, 4, file);
+            FrameExport.panel(shown.scene(), shown.animation(), plan.figureStages(), Scenes.FIGURE11_LABELS, 2, 800, 500, 4, file);
         } catch (RenderUnavailableException e) {
             throw new JobFailure(e.getMessage());
         } catch (IOException e) {

@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import ifold.cli.Main;
 import ifold.job.Json;
 import ifold.job.Scenes;
+import ifold.scene.Animation;
 import ifold.scene.Geometry;
 import ifold.scene.PathView;
 import ifold.scene.RevealAnimation;
@@ -111,6 +112,11 @@ class PlanningTest {
         Plan turn = Planning.plan(Job.Turn.DEMO, Progress.NONE);
         assertEquals(turn.figures().get("folds"), turn.folds().size(), "folds, not the strip's end");
         assertTrue(turn.folds().stream().allMatch(f -> f.kind().equals("turn gadget")), turn.folds().toString());
+        Animation turning = turn.shown().animation();
+        assertEquals("turned: the strip runs on at the angle asked, top side up", turning.describe(turning.stepCount()),
+                "the turn ends on what it did, not on a wrap's words");
+        Animation zigzag = Planning.plan(Job.ZigZag.DEMO, Progress.NONE).shown().animation();
+        assertEquals("wrapped: the strip covers the triangle, its excess tucked under", zigzag.describe(zigzag.stepCount()));
         Plan script = Planning.plan(new Job.Script(Path.of("models", "scripts", "pleat20.fold")), Progress.NONE);
         assertEquals(script.figures().get("folds"), script.folds().size());
         assertEquals(script.folds().size(), script.stepCount(), "a script's animation is a step a fold");
