@@ -83,6 +83,8 @@ public final class FoldFile {
         final List<Double> angles = new ArrayList<>();
         final List<int[]> orders = new ArrayList<>();
         final List<int[]> levels = new ArrayList<>();
+        /** The mountain and valley edges in the order they were folded: sheet by sheet, fold by fold. */
+        final List<Integer> foldingOrder = new ArrayList<>();
         Counts counts;
 
         Pattern(List<Folded> sheets) {
@@ -101,6 +103,7 @@ public final class FoldFile {
             int valleys = 0;
             int flat = 0;
             int border = 0;
+            List<long[]> folds = new ArrayList<>(); // {sheet, fold, edge} of each mountain and valley
             for (int k = 0; k < sheets.size(); k++) {
                 Folded folded = sheets.get(k);
                 Sheet sheet = folded.sheet();
@@ -129,6 +132,7 @@ public final class FoldFile {
                             angles.add(0.0);
                             flat++;
                         } else {
+                            folds.add(new long[] {k, sheet.creaseFold(a, b), edges.size() - 1});
                             assignments.add(angle > 0 ? "V" : "M");
                             angles.add(angle);
                             if (angle > 0) {
@@ -140,6 +144,11 @@ public final class FoldFile {
                     }
                 }
                 findOrders(k);
+            }
+            folds.sort(java.util.Comparator.<long[]>comparingLong(f -> f[0]).thenComparingLong(f -> f[1])
+                    .thenComparingLong(f -> f[2]));
+            for (long[] fold : folds) {
+                foldingOrder.add((int) fold[2]);
             }
             counts = new Counts(vertexCount, faceCount, edges.size(), mountains, valleys, flat, border, orders.size());
         }
@@ -230,6 +239,13 @@ public final class FoldFile {
             json.writeStartArray();
             for (double angle : angles) {
                 json.writeNumber(angle);
+            }
+            json.writeEndArray();
+            // The order iFold folded the creases in, which `ifold fold` folds them back in.
+            json.writeFieldName("edges_ifold:order");
+            json.writeStartArray();
+            for (int edge : foldingOrder) {
+                json.writeNumber(edge);
             }
             json.writeEndArray();
             json.writeFieldName("faces_vertices");
@@ -331,7 +347,11 @@ public final class FoldFile {
         double[] nf = topNormal(folded, f);
         double[] ng = topNormal(folded, g);
         double cos = Math.max(-1, Math.min(1, dot(nf, ng)));
-        double degrees = Math.toDegrees(Math.acos(cos));
+        // atan2 of the cross and dot products, not acos of the dot: near 0 acos turns a rounding
+        // of 1e-16 into 1e-6 degrees, and coplanar faces (a strip crossing between two triangles
+        // of one face of the model) would come out creased.
+        double[] cross = {nf[1] * ng[2] - nf[2] * ng[1], nf[2] * ng[0] - nf[0] * ng[2], nf[0] * ng[1] - nf[1] * ng[0]};
+        double degrees = Math.toDegrees(Math.atan2(Math.sqrt(dot(cross, cross)), dot(nf, ng)));
         if (degrees < 1e-7) {
             return 0;
         }

@@ -61,9 +61,14 @@ public final class Sheet {
     private final List<Isometry2> poseOf = new ArrayList<>();
     /** The face to the left of each directed paper edge a → b, keyed a << 32 | b. */
     private final LongIntMap faceOfEdge = new LongIntMap();
-    /** The creases, keyed by their lower vertex << 32 | the higher. */
+    /**
+     * The creases, keyed by their lower vertex << 32 | the higher: each its kind and the fold
+     * that made it, as kind + {@link #CREASES}.length × fold (see {@link #creaseFold}).
+     */
     private final LongIntMap creases = new LongIntMap();
     private static final Crease[] CREASES = Crease.values();
+    /** The folds that made creases so far: the next one's number. */
+    private int creasingFolds;
     private final Map<Integer, Stack> stacks = new HashMap<>();
 
     private int tailA;
@@ -247,7 +252,7 @@ public final class Sheet {
         int b = sameB ? tailB : addVertex(at[1], width);
         int[] loop = sameA ? new int[] {tailA, b, tailB} : sameB ? new int[] {tailA, a, tailB} : new int[] {tailA, a, b, tailB};
         int face = addFace(loop, tailHost, tailPose, tailPlacement);
-        creases.put(undirected(a, b), kind.ordinal());
+        creases.put(undirected(a, b), kind.ordinal() + CREASES.length * creasingFolds++);
         tailA = a;
         tailB = b;
         tailPose = tailPose.anchoredAt(u(a), 0); // kept about where the tail now begins: exact however long the strip
@@ -467,6 +472,7 @@ public final class Sheet {
 
         /** Marks the paper edges between {@code moving} faces and the rest as creases of {@code kind}, where they are not creases already. */
         public void crease(Set<Integer> moving, Crease kind) {
+            int value = kind.ordinal() + CREASES.length * creasingFolds++;
             for (int f : moving) {
                 int[] loop = loops.get(f);
                 for (int i = 0; i < loop.length; i++) {
@@ -474,7 +480,7 @@ public final class Sheet {
                     int b = loop[(i + 1) % loop.length];
                     int across = faceOfEdge.get(directed(b, a), -1);
                     if (across >= 0 && !moving.contains(across) && creases.get(undirected(a, b), -1) < 0) {
-                        creases.put(undirected(a, b), kind.ordinal());
+                        creases.put(undirected(a, b), value);
                     }
                 }
             }
@@ -998,7 +1004,17 @@ public final class Sheet {
     /** The crease along paper edge (a, b), or null where the paper is flat or the edge is the border. */
     public Crease crease(int a, int b) {
         int crease = creases.get(undirected(a, b), -1);
-        return crease < 0 ? null : CREASES[crease];
+        return crease < 0 ? null : CREASES[crease % CREASES.length];
+    }
+
+    /**
+     * Which fold made the crease along paper edge (a, b), counting the folds that made creases
+     * from 0 (a crease split by a later cut keeps its fold), or -1 where there is none: the
+     * order to fold a crease pattern back in.
+     */
+    public int creaseFold(int a, int b) {
+        int crease = creases.get(undirected(a, b), -1);
+        return crease < 0 ? -1 : crease / CREASES.length;
     }
 
     private int addVertex(double u, double v) {

@@ -268,4 +268,61 @@ class FoldFileTest {
         }
         assertTrue(Files.size(dir.resolve("out.fold")) > 0);
     }
+
+    @Test
+    void aStripCrossingBetweenTrianglesOfOneFaceIsAFlatCrease() throws Exception {
+        // The refinement cuts each face of the tetrahedron into coplanar triangles: the strip
+        // crosses between them unbent, and those creases are F, not a valley of 1e-6 degrees.
+        ifold.mesh.HalfedgeMesh tetrahedron = ifold.mesh.MeshBuilder.build(ifold.mesh.Solids.tetrahedron()).mesh();
+        ifold.refine.HamiltonianRefinement.Result refinement = ifold.refine.HamiltonianRefinement.refine(tetrahedron);
+        Wrap.Result wrap = Wrap.wrap(refinement, new Wrap.Options(Double.NaN, Double.NaN));
+        Map<String, Object> fold = writeAndRead(List.of(new FoldFile.Folded(wrap.strips().get(0).sheet(), wrap.frames())));
+        @SuppressWarnings("unchecked")
+        List<String> assignments = (List<String>) fold.get("edges_assignment");
+        List<Double> angles = new ArrayList<>();
+        for (Object angle : (List<?>) fold.get("edges_foldAngle")) {
+            angles.add(((Number) angle).doubleValue());
+        }
+        int flat = 0;
+        for (int e = 0; e < assignments.size(); e++) {
+            if (assignments.get(e).equals("F")) {
+                flat++;
+            } else if (!assignments.get(e).equals("B")) {
+                assertTrue(Math.abs(angles.get(e)) > 1, "edge " + e + " is " + assignments.get(e) + " by " + angles.get(e) + " degrees");
+            }
+        }
+        assertTrue(flat > 0, "crossings between coplanar triangles: " + flat);
+    }
+
+    @Test
+    @SuppressWarnings("unchecked")
+    void theCreasesAreListedInTheOrderTheyWereFolded() throws Exception {
+        // Folded along x = 5 first, then along y = 5 through both layers: the second fold cuts
+        // the first crease in two, and both halves still come first.
+        FoldScript script = FoldScript.builder().square(10).thickness(0.01)
+                .foldOnPaper(FoldScript.Kind.VALLEY, 180, 5, 0, 5, 10, FoldScript.Side.RIGHT)
+                .foldOnPaper(FoldScript.Kind.VALLEY, 180, 0, 5, 5, 5, FoldScript.Side.LEFT).build();
+        ScriptFolding.Result result = script.play();
+        Map<String, Object> fold = writeAndRead(List.of(new FoldFile.Folded(result.sheet(), result.frames())));
+        List<String> assignments = (List<String>) fold.get("edges_assignment");
+        List<List<Double>> vertices = numbers(fold, "vertices_coords");
+        List<List<Double>> edges = numbers(fold, "edges_vertices");
+        List<Integer> order = new ArrayList<>();
+        for (Object e : (List<?>) fold.get("edges_ifold:order")) {
+            order.add(((Number) e).intValue());
+        }
+        int creases = 0;
+        for (String a : assignments) {
+            creases += a.equals("M") || a.equals("V") ? 1 : 0;
+        }
+        assertEquals(creases, order.size(), "every mountain and valley, once");
+        assertEquals(creases, new java.util.HashSet<>(order).size());
+        List<String> lines = new ArrayList<>();
+        for (int e : order) {
+            List<Double> a = vertices.get(edges.get(e).get(0).intValue());
+            List<Double> b = vertices.get(edges.get(e).get(1).intValue());
+            lines.add(Math.abs(a.get(0) - 5) < 1e-9 && Math.abs(b.get(0) - 5) < 1e-9 ? "x=5" : "y=5");
+        }
+        assertEquals(List.of("x=5", "x=5", "y=5", "y=5"), lines, "the first fold's two halves, then the second's creases");
+    }
 }
