@@ -98,7 +98,7 @@ final class FoldCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         Map<String, Object> figures = Reports.script(result, folded);
         figures.put("timing", timing(nanosPerFold, result.steps()));
-        outputs.exportFold(List.of(new FoldFile.Folded(result.sheet(), result.frames())), "ifold fold " + script, figures, out);
+        outputs.exportFold(List.of(FoldFile.Folded.ofScript(parsed, result, maxFaces)), "ifold fold " + script, figures, out);
         outputs.write(List.of(folded), "iFold fold script " + script + ": " + result.steps().size() + " folds, thickness "
                 + result.sheet().thickness(), figures, out);
         int folds = result.steps().size();

@@ -4,6 +4,9 @@ import com.fasterxml.jackson.core.JsonFactory;
 import com.fasterxml.jackson.core.JsonGenerator;
 import com.fasterxml.jackson.core.StreamWriteFeature;
 import ifold.io.AtomicFile;
+import ifold.script.FoldScript;
+import ifold.script.FoldScriptException;
+import ifold.script.ScriptFolding;
 import ifold.sheet.HostFrame;
 import ifold.sheet.Isometry2;
 import ifold.sheet.Polygons2;
@@ -31,8 +34,9 @@ import java.util.Map;
  * two lies on the other's top side in the stack.
  *
  * <p><b>The folded state</b> ({@code file_frames[0]}, {@code frame_classes: ["foldedForm"]},
- * inheriting the crease pattern's faces and edges): each vertex in space where the paper lies
- * (layers of a stack share their place: FOLD orders them by {@code faceOrders}, [f, g, s] with
+ * inheriting the crease pattern's faces and edges): each vertex in space where the paper lies,
+ * paper of no thickness as FOLD means it ({@link Folded#ofScript}; layers of a stack share their
+ * place: FOLD orders them by {@code faceOrders}, [f, g, s] with
  * s = +1 where face f lies on the side g's normal points to); the paper's thickness in
  * {@code frame_ifold:thickness} and each face's level in its stack in {@code faces_ifold:level},
  * from which its height above its plane is (level + ½) × thickness.
@@ -47,8 +51,55 @@ public final class FoldFile {
     private FoldFile() {
     }
 
-    /** One sheet and the planes (or triangles) its hosts are. */
-    public record Folded(Sheet sheet, HostFrame[] frames) {
+    /**
+     * One sheet and the planes (or triangles) its hosts are; and where the folded state of ideal
+     * paper is another folding of it, that folding's sheet and planes (null where this one's is).
+     */
+    public record Folded(Sheet sheet, HostFrame[] frames, Sheet idealSheet, HostFrame[] idealFrames) {
+        public Folded(Sheet sheet, HostFrame[] frames) {
+            this(sheet, frames, null, null);
+        }
+
+        /**
+         * A fold script's folding, for a FOLD file. FOLD's folded state is of paper with no
+         * thickness; with thickness, a fold other than flat turns the paper about a line lifted
+         * by its layers, onto a plane offset from the one it left, so that no one place for a
+         * crease's vertex keeps both faces' edges their length. The script is folded again on
+         * ideal paper, and its places written, where it folds to the same faces (it may not: a
+         * fold line given in space can lie off the paper once the layers have no thickness).
+         */
+        public static Folded ofScript(FoldScript script, ScriptFolding.Result result, int maxFaces) {
+            Sheet sheet = result.sheet();
+            if (!(script.thickness() > 0)) {
+                return new Folded(sheet, result.frames());
+            }
+            ScriptFolding.Result ideal;
+            try {
+                ideal = script.withThickness(0).play(new long[script.steps().size()], maxFaces);
+            } catch (FoldScriptException e) {
+                return new Folded(sheet, result.frames());
+            }
+            return sameFaces(sheet, ideal.sheet()) ? new Folded(sheet, result.frames(), ideal.sheet(), ideal.frames())
+                    : new Folded(sheet, result.frames());
+        }
+
+        /** Whether two foldings made the same faces of the same vertices, at the same places on the paper. */
+        private static boolean sameFaces(Sheet a, Sheet b) {
+            if (a.vertexCount() != b.vertexCount() || a.faceCount() != b.faceCount()) {
+                return false;
+            }
+            for (int v = 0; v < a.vertexCount(); v++) {
+                if (Math.abs(a.u(v) - b.u(v)) > a.tolerance() || Math.abs(a.v(v) - b.v(v)) > a.tolerance()) {
+                    return false;
+                }
+            }
+            for (int f = 0; f < a.faceCount(); f++) {
+                if (!java.util.Arrays.equals(a.loop(f), b.loop(f))) {
+                    return false;
+                }
+            }
+            return true;
+        }
     }
 
     /** What the crease pattern holds, for the report and tests: counts by assignment. */
@@ -312,8 +363,12 @@ public final class FoldFile {
         }
     }
 
-    /** Each paper vertex in space, on the planes its faces rest on (their mean, where layers of different planes meet). */
-    static List<double[]> foldedVertices(Folded folded) {
+    /**
+     * Each paper vertex in space, on the planes its faces rest on (their mean, where layers of
+     * different planes meet), on ideal paper where the folding has it.
+     */
+    static List<double[]> foldedVertices(Folded given) {
+        Folded folded = given.idealSheet() != null ? new Folded(given.idealSheet(), given.idealFrames()) : given;
         Sheet sheet = folded.sheet();
         double[][] sum = new double[sheet.vertexCount()][3];
         int[] count = new int[sheet.vertexCount()];

@@ -77,6 +77,11 @@ public final class FoldScript {
         return steps;
     }
 
+    /** The same folds on paper of another thickness (0 for ideal paper). */
+    public FoldScript withThickness(double t) {
+        return new FoldScript(width, height, t, steps);
+    }
+
     /** Every fold of the script made in turn on the sheet engine. */
     public ScriptFolding.Result play() throws FoldScriptException {
         return play(new long[steps.size()]);

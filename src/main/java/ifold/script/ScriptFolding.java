@@ -174,8 +174,7 @@ public final class ScriptFolding {
             host = (int) line[2][0];
             from2 = line[0];
             to2 = line[1];
-            backUp = fold.onPaper() ? sheet.pose(topFaceAt(fold.from().x, fold.from().y, host)).mirrors()
-                    : topLayerBackUp(host, from2, to2);
+            backUp = fold.onPaper() ? sheet.pose(namingFace(fold, host)).mirrors() : topLayerBackUp(host, from2, to2);
             if (fold.moving() == FoldScript.Side.LEFT) {
                 double[] swap = from2;
                 from2 = to2;
@@ -374,6 +373,17 @@ public final class ScriptFolding {
 
     private static FoldScriptException notOnPaper(FoldScript.Step fold, double u, double v) {
         return new FoldScriptException(fold.line(), String.format(Locale.ROOT, "paper point (%s, %s) is not on the paper", fmt(u), fmt(v)));
+    }
+
+    /**
+     * The paper a fold given on the paper is named by: the top layer at the line's first point.
+     * A first point on a crease lies on the layers either side of it; the one the line runs into
+     * from there names the fold, so that a line reads the same from either end of a crease.
+     */
+    private int namingFace(FoldScript.Step fold, int host) {
+        double t = 1e-6; // a millionth of the way to the second point: off the crease, still in the face beside it
+        int face = topFaceAt(fold.from().x + t * (fold.to().x - fold.from().x), fold.from().y + t * (fold.to().y - fold.from().y), host);
+        return face >= 0 ? face : topFaceAt(fold.from().x, fold.from().y, host);
     }
 
     /** The face holding paper point (u, v) that lies highest in its stack (on {@code host}, if not -1), or -1. */

@@ -325,4 +325,45 @@ class FoldFileTest {
         }
         assertEquals(List.of("x=5", "x=5", "y=5", "y=5"), lines, "the first fold's two halves, then the second's creases");
     }
+
+    @Test
+    @SuppressWarnings("unchecked")
+    void aScriptsFoldedStateIsOfIdealPaperEvenWhereItsLayersAreThick() throws Exception {
+        // Three halvings stack 8 layers of thickness 0.05; a fold of 90° through them turns the
+        // paper about a line lifted by the stack, onto a plane off the one it left. The folded
+        // state of ideal paper still keeps every edge its length.
+        FoldScript script = FoldScript.builder().rectangle(16, 4).thickness(0.05)
+                .foldOnPaper(FoldScript.Kind.VALLEY, 180, 8, 0, 8, 4, FoldScript.Side.RIGHT)
+                .foldOnPaper(FoldScript.Kind.VALLEY, 180, 4, 0, 4, 4, FoldScript.Side.RIGHT)
+                .foldOnPaper(FoldScript.Kind.VALLEY, 180, 2, 0, 2, 4, FoldScript.Side.RIGHT)
+                .foldOnPaper(FoldScript.Kind.VALLEY, 90, 0, 2, 2, 2, FoldScript.Side.LEFT).build();
+        ScriptFolding.Result result = script.play();
+        FoldFile.Folded thick = new FoldFile.Folded(result.sheet(), result.frames());
+        FoldFile.Folded ideal = FoldFile.Folded.ofScript(script, result, ScriptFolding.DEFAULT_MAX_FACES);
+        assertTrue(ideal.idealSheet() != null, "folded again on ideal paper, to the same faces");
+        assertTrue(worstStretch(writeAndRead(List.of(thick))) > 0.1, "setup: the thick places stretch the creases' edges");
+        Map<String, Object> fold = writeAndRead(List.of(ideal));
+        assertEquals(0, worstStretch(fold), 1e-12, "every edge keeps its length");
+        assertEquals(0.05, fold.get("frame_ifold:thickness"), "the paper's thickness is still the script's");
+        FoldScript thin = script.withThickness(0);
+        assertEquals(null, FoldFile.Folded.ofScript(thin, thin.play(), ScriptFolding.DEFAULT_MAX_FACES).idealSheet(),
+                "ideal paper is folded once");
+    }
+
+    /** The most an edge's length in the folded state differs from its length on the paper. */
+    @SuppressWarnings("unchecked")
+    private static double worstStretch(Map<String, Object> fold) {
+        List<List<Double>> folded = numbers(((List<Map<String, Object>>) fold.get("file_frames")).get(0), "vertices_coords");
+        List<List<Double>> flat = numbers(fold, "vertices_coords");
+        double worst = 0;
+        for (List<Double> edge : numbers(fold, "edges_vertices")) {
+            int a = edge.get(0).intValue();
+            int b = edge.get(1).intValue();
+            double paper = Math.hypot(flat.get(a).get(0) - flat.get(b).get(0), flat.get(a).get(1) - flat.get(b).get(1));
+            double space = Math.sqrt(Math.pow(folded.get(a).get(0) - folded.get(b).get(0), 2)
+                    + Math.pow(folded.get(a).get(1) - folded.get(b).get(1), 2) + Math.pow(folded.get(a).get(2) - folded.get(b).get(2), 2));
+            worst = Math.max(worst, Math.abs(paper - space));
+        }
+        return worst;
+    }
 }

@@ -274,4 +274,20 @@ class ScriptFoldingTest {
             }
         }
     }
+
+    @Test
+    void aLineReadsTheSameFromEitherEndOfACrease() throws FoldScriptException {
+        // After the first fold the right half lies back up on the left. The second line runs
+        // along y = 5 on the left half, written from its outer end or from the crease: the
+        // paper it runs on names the fold either way, so both fold the same.
+        String first = "paper square 10\nfold valley 180 paper 5 0 5 10 right\n";
+        ScriptFolding.Result outward = play(first + "fold valley 180 paper 0 5 5 5 left\n");
+        ScriptFolding.Result inward = play(first + "fold valley 180 paper 5 5 0 5 right\n");
+        assertEquals(java.util.Arrays.toString(outward.sheet().levels()), java.util.Arrays.toString(inward.sheet().levels()));
+        assertTrue(where(outward, 0, 10)[2] > where(outward, 0, 0)[2], "a valley on paper top side up: the top half comes up");
+        for (double[] corner : new double[][] {{0, 0}, {0, 10}, {10, 0}, {10, 10}}) {
+            assertEquals(java.util.Arrays.toString(where(outward, corner[0], corner[1])),
+                    java.util.Arrays.toString(where(inward, corner[0], corner[1])), "corner " + java.util.Arrays.toString(corner));
+        }
+    }
 }

@@ -303,7 +303,7 @@ public final class Planning {
         String header = "iFold fold script " + file + ": " + result.steps().size() + " folds, thickness " + result.sheet().thickness();
         return new Plan(job, file.getFileName() + ": " + result.steps().size() + " folds", shown, List.copyOf(folds), figures, 10,
                 () -> scriptScene(result, folded), out -> WrapExport.writeObj(out, header, List.of(folded)),
-                List.of(new FoldFile.Folded(result.sheet(), result.frames())), "ifold fold " + file, null);
+                List.of(FoldFile.Folded.ofScript(parsed, result, ScriptFolding.DEFAULT_MAX_FACES)), "ifold fold " + file, null);
     }
 
     /** The parts of the reveal the list names: about a tenth of the path's triangles each. */
