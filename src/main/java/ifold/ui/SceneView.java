@@ -315,12 +315,23 @@ final class SceneView extends JComponent {
             g2.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
             FontMetrics metrics = g2.getFontMetrics();
             if (showStatus) {
-                String line = String.format(Locale.ROOT, "%s | %.0f ms a frame | %s | H: help", caption, frameMillis, status);
+                // The key to the help stays in sight at the right; the rest is cut short before it.
+                String help = "H: help";
+                String line = String.format(Locale.ROOT, "%s | %.0f ms a frame | %s", caption, frameMillis, status);
+                int room = getWidth() - 12 - metrics.stringWidth(" | " + help) - 6;
+                if (metrics.stringWidth(line) > room) {
+                    while (line.length() > 1 && metrics.stringWidth(line + "…") > room) {
+                        line = line.substring(0, line.length() - 1);
+                    }
+                    line = line.stripTrailing() + "…";
+                }
                 int band = metrics.getHeight() + 6;
+                int baseline = getHeight() - 6 - metrics.getDescent();
                 g2.setColor(new Color(0, 0, 0, 150));
                 g2.fillRect(0, getHeight() - band, getWidth(), band);
                 g2.setColor(Color.WHITE);
-                g2.drawString(line, 6, getHeight() - 6 - metrics.getDescent());
+                g2.drawString(line + " | ", 6, baseline);
+                g2.drawString(help, getWidth() - 6 - metrics.stringWidth(help), baseline);
             }
             if (showHelp) {
                 int lineHeight = metrics.getHeight();

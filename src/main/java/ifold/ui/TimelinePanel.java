@@ -73,6 +73,7 @@ final class TimelinePanel extends JPanel {
         folds.setSelectionMode(ListSelectionModel.SINGLE_SELECTION);
         javax.swing.ToolTipManager.sharedInstance().registerComponent(folds);
         folds.setPrototypeCellValue("pass 12 of 40: turn, 45° valley fold and more"); // a fixed height: 100,000 folds list at once
+        folds.setCellRenderer(new FoldRenderer());
         play.addActionListener(e -> togglePlaying());
         back.addActionListener(e -> step(-1));
         forward.addActionListener(e -> step(1));
@@ -102,6 +103,57 @@ final class TimelinePanel extends JPanel {
     private String unit = "fold";
 
     /** Takes a new timeline (a new plan), at its position, playing if {@code playing}; its steps are {@code unit}s. */
+    /**
+     * A fold's row, fitted to the list's width so that rows stay told apart: the kind in
+     * brackets goes first, then the middle of the name, keeping its number (and what it is of,
+     * up to the first colon, where that leaves room) and as much of its end, which differs from
+     * row to row, as fits.
+     * The whole name is under the mouse.
+     */
+    static final class FoldRenderer extends javax.swing.DefaultListCellRenderer {
+        private static final long serialVersionUID = 1L;
+
+        @Override
+        public java.awt.Component getListCellRendererComponent(JList<?> list, Object value, int index, boolean selected,
+                boolean focused) {
+            super.getListCellRendererComponent(list, value, index, selected, focused);
+            java.awt.Insets insets = getInsets();
+            int room = list.getWidth() - insets.left - insets.right - 4;
+            if (room > 0 && value != null) {
+                setText(fit(String.valueOf(value), getFontMetrics(getFont()), room));
+            }
+            return this;
+        }
+
+        /** {@code text} shortened to {@code room} pixels as the class says. */
+        static String fit(String text, java.awt.FontMetrics metrics, int room) {
+            if (metrics.stringWidth(text) <= room) {
+                return text;
+            }
+            int kind = text.lastIndexOf("  [");
+            String name = kind > 0 ? text.substring(0, kind) : text;
+            if (metrics.stringWidth(name) <= room) {
+                return name;
+            }
+            // The number always (the folds of one gadget share a name), what it is of where there is room.
+            int number = name.indexOf(". ");
+            int colon = name.indexOf(": ");
+            String head = colon > 0 && metrics.stringWidth(name.substring(0, colon + 2)) < room / 2 ? name.substring(0, colon + 2)
+                    : number > 0 ? name.substring(0, number + 2) : "";
+            String tail = name.substring(head.length());
+            String whole = tail;
+            while (tail.length() > 1 && metrics.stringWidth(head + "…" + tail) > room) {
+                tail = tail.substring(1);
+            }
+            int cut = whole.length() - tail.length();
+            int space = tail.indexOf(' ');
+            if (cut > 0 && whole.charAt(cut - 1) != ' ' && space > 0 && space < tail.length() - 1) {
+                tail = tail.substring(space + 1); // from a word's start, not its middle
+            }
+            return head + "…" + tail.stripLeading();
+        }
+    }
+
     void setTimeline(Timeline next, boolean playing, String unit) {
         timeline = next;
         this.unit = unit;
