@@ -9,7 +9,6 @@ import ifold.render.RenderUnavailableException;
 import ifold.scene.Animation;
 import ifold.scene.Scene;
 import java.io.PrintWriter;
-import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.io.IOException;
@@ -121,8 +120,7 @@ final class FrameOptions {
             try {
                 if (frames != null) {
                     makeFolder();
-                    sinks.add(new FrameWriter(frames)); // holds the folder from now on
-                    removeFramesPast(frames, frameCount);
+                    sinks.add(new FrameWriter(frames));
                 }
                 if (movie != null) {
                     sinks.add(isGif() ? new GifWriter(movie, width, height, fps) : new Mp4Writer(movie, width, height, fps));
@@ -199,24 +197,6 @@ final class FrameOptions {
             } catch (IOException e) {
                 throw new UserError("option --frames: cannot create " + frames + ": " + e.getMessage());
             }
-        }
-    }
-
-    /**
-     * Frames left from a longer export would join the movie made from the folder: removes those
-     * numbered past this one's (and parts an old version left).
-     */
-    static void removeFramesPast(Path folder, int frames) {
-        try (DirectoryStream<Path> files = Files.newDirectoryStream(folder, "frame_[0-9][0-9][0-9][0-9][0-9].png*")) {
-            for (Path file : files) {
-                String name = file.getFileName().toString();
-                int index = Integer.parseInt(name.substring(6, 11));
-                if (index >= frames || name.endsWith(".part")) {
-                    Files.delete(file);
-                }
-            }
-        } catch (IOException | NumberFormatException e) {
-            throw new UserError("option --frames: cannot tidy " + folder + ": " + e.getMessage());
         }
     }
 }

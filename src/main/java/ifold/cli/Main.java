@@ -5,6 +5,8 @@ import java.util.Collection;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
@@ -132,8 +134,8 @@ public final class Main implements Runnable {
         return commandLine;
     }
 
-    private static final java.util.regex.Pattern NOT_A_NUMBER =
-            java.util.regex.Pattern.compile("Invalid value for option '([^']+)': '(.*)' is not an? (double|float|int|long)", java.util.regex.Pattern.DOTALL);
+    private static final Pattern NOT_A_NUMBER =
+            Pattern.compile("Invalid value for option '([^']+)': '(.*)' is not an? (double|float|int|long)", Pattern.DOTALL);
 
     /**
      * What was wrong with what the user typed, in iFold's words: an option named as
@@ -153,10 +155,14 @@ public final class Main implements Runnable {
             boolean commands = !unmatched.getCommandLine().getSubcommands().isEmpty();
             return commands ? "unknown command '" + first + "'" + meant : "unexpected argument '" + first + "'";
         }
-        java.util.regex.Matcher number = NOT_A_NUMBER.matcher(ex.getMessage());
+        Matcher number = NOT_A_NUMBER.matcher(ex.getMessage());
         if (number.matches()) {
             boolean whole = number.group(3).equals("int") || number.group(3).equals("long");
-            return "option " + number.group(1) + ": '" + number.group(2) + "' is not " + (whole ? "a whole number" : "a number");
+            String text = number.group(2);
+            if (whole && text.strip().matches("[+-]?\\d+")) { // a whole number, beyond what the option holds
+                return "option " + number.group(1) + ": '" + text + "' is out of range";
+            }
+            return "option " + number.group(1) + ": '" + text + "' is not " + (whole ? "a whole number" : "a number");
         }
         String message = ex.getMessage();
         return message.isEmpty() ? message : Character.toLowerCase(message.charAt(0)) + message.substring(1);

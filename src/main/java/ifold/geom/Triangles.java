@@ -53,6 +53,15 @@ public final class Triangles {
      * overflow.
      */
     public static boolean isDegenerate(double[] xyz, int a, int b, int c) {
+        // Measured from the corner of lowest index, whichever corner a face's loop starts at
+        // and whichever way round it runs: a sliver at the threshold is judged the same by
+        // the builder, which reads the input's order, and the validator, which walks the mesh.
+        if (b < a && b < c) {
+            return isDegenerate(xyz, b, c, a);
+        }
+        if (c < a && c < b) {
+            return isDegenerate(xyz, c, a, b);
+        }
         // The arithmetic of scaledEdges and crossLength, spelled out in locals: this runs for
         // every triangle of every model loaded, and arrays per call cost a third of a load.
         int pa = 3 * a;

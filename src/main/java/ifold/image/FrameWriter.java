@@ -3,19 +3,27 @@ package ifold.image;
 import ifold.io.AtomicFile;
 import java.io.IOException;
 import java.io.UncheckedIOException;
+import java.nio.channels.FileChannel;
+import java.nio.channels.FileLock;
+import java.nio.channels.OverlappingFileLockException;
+import java.nio.file.DirectoryStream;
+import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Future;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.Semaphore;
 import java.util.concurrent.ThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.ExecutionException;
-import java.util.ArrayList;
-import java.util.List;
-import java.util.Locale;
 
 /**
  * Writes a numbered sequence of frames, {@code frame_00000.png}, {@code frame_00001.png}, ...,
@@ -33,10 +41,10 @@ public final class FrameWriter implements FrameSink {
     private final ConcurrentLinkedQueue<byte[]> spare = new ConcurrentLinkedQueue<>();
 
     /** The export's hold on its folder: two exports into one folder would mix their frames. */
-    private final java.nio.channels.FileChannel lockFile;
-    private final java.nio.channels.FileLock lock;
+    private final FileChannel lockFile;
+    private final FileLock lock;
     /** Frames this export wrote: a failed export takes them back. */
-    private final java.util.Set<Path> written = java.util.concurrent.ConcurrentHashMap.newKeySet();
+    private final Set<Path> written = ConcurrentHashMap.newKeySet();
     private boolean finished;
 
     /**
@@ -48,21 +56,32 @@ public final class FrameWriter implements FrameSink {
         // The lock's file goes with the export, even one stopped by Ctrl-C or SIGTERM.
         Path lockPath = AtomicFile.createDeletedOnStop(() -> {
             Path made = folder.resolve(".ifold-frames.lock");
-            if (!Files.exists(made)) {
+            try {
                 Files.createFile(made);
+            } catch (FileAlreadyExistsException e) {
+                // Another export's, or one a killed run left: the lock below tells.
             }
             return made;
         });
-        lockFile = java.nio.channels.FileChannel.open(lockPath, java.nio.file.StandardOpenOption.WRITE);
-        java.nio.channels.FileLock held;
+        FileLock held;
+        try {
+            lockFile = FileChannel.open(lockPath, StandardOpenOption.WRITE);
+        } catch (IOException e) {
+            AtomicFile.cancelDeleteOnStop(lockPath);
+            throw e;
+        }
         try {
             held = lockFile.tryLock();
-        } catch (java.nio.channels.OverlappingFileLockException e) {
+        } catch (OverlappingFileLockException e) {
             held = null;
+        } catch (IOException e) {
+            lockFile.close();
+            AtomicFile.cancelDeleteOnStop(lockPath);
+            throw e;
         }
         if (held == null) {
             lockFile.close();
-            AtomicFile.cancelDeleteOnStop(lockPath); // the other export's
+            AtomicFile.cancelDeleteOnStop(lockPath); // this export's hold; the other export's stays
             throw new IOException("another export is writing frames into " + folder + ": wait for it, or choose another folder");
         }
         lock = held;
@@ -140,10 +159,21 @@ public final class FrameWriter implements FrameSink {
         }
     }
 
-    /** Waits for every frame to be on disk; rethrows the first failure. */
+    /**
+     * Waits for every frame to be on disk, rethrowing the first failure; then removes the frames
+     * of an earlier, longer export that this one did not write over, so that a movie made from
+     * the folder is this export's alone.
+     */
     @Override
     public void finish() throws IOException {
         checkFailures(true);
+        try (DirectoryStream<Path> files = Files.newDirectoryStream(folder, "frame_[0-9][0-9][0-9][0-9][0-9].png*")) {
+            for (Path file : files) {
+                if (!written.contains(file)) {
+                    Files.deleteIfExists(file);
+                }
+            }
+        }
         finished = true;
     }
 

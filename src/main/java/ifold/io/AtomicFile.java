@@ -4,13 +4,24 @@ import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.channels.Channels;
 import java.nio.channels.FileChannel;
+import java.nio.file.AccessDeniedException;
 import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.DirectoryNotEmptyException;
+import java.nio.file.DirectoryStream;
 import java.nio.file.FileAlreadyExistsException;
+import java.nio.file.FileSystemException;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
+import java.time.Instant;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ThreadLocalRandom;
+import java.util.concurrent.TimeUnit;
+import java.util.regex.Pattern;
 
 /**
  * Writes a file all or nothing: the content goes to a hidden temporary file beside it, which is
@@ -44,7 +55,7 @@ public final class AtomicFile {
                 // Name the file the user asked for, not the temporary one beside it.
                 throw new IOException(target + ": " + reason(e), e);
             }
-            IN_FLIGHT.add(temp);
+            register(temp);
         }
         try {
             try (FileChannel channel = FileChannel.open(temp, StandardOpenOption.WRITE)) {
@@ -68,19 +79,19 @@ public final class AtomicFile {
             discard(temp, e);
             throw e;
         } finally {
-            IN_FLIGHT.remove(temp);
+            cancelDeleteOnStop(temp);
         }
     }
 
     /** Why a write failed, in words, without the temporary file's name. */
     private static String reason(IOException e) {
-        if (e instanceof java.nio.file.AccessDeniedException) {
+        if (e instanceof AccessDeniedException) {
             return "permission denied";
         }
-        if (e instanceof java.nio.file.NoSuchFileException) {
+        if (e instanceof NoSuchFileException) {
             return "no such folder";
         }
-        if (e instanceof java.nio.file.FileSystemException fse && fse.getReason() != null) {
+        if (e instanceof FileSystemException fse && fse.getReason() != null) {
             return fse.getReason();
         }
         String message = e.getMessage();
@@ -95,14 +106,18 @@ public final class AtomicFile {
         }
     }
 
-    /** Temporary files being written now: Ctrl-C or SIGTERM mid-write takes them back. */
-    private static final java.util.Set<Path> IN_FLIGHT = java.util.concurrent.ConcurrentHashMap.newKeySet();
+    /**
+     * Temporary files being written now, and other files of this run's (locks): Ctrl-C or
+     * SIGTERM mid-write takes them back. Each with how many times it is registered: two holds
+     * on one file (a lock, and another export in this JVM refused it) take two releases.
+     */
+    private static final Map<Path, Integer> IN_FLIGHT = new ConcurrentHashMap<>();
 
     /**
      * Programs writing some of them (ffmpeg): stopped before the files are taken back, or one
      * would write its file again once it is deleted.
      */
-    private static final java.util.Map<Path, Process> WRITERS = new java.util.concurrent.ConcurrentHashMap<>();
+    private static final Map<Path, Process> WRITERS = new ConcurrentHashMap<>();
 
     /** Set once the JVM shuts down: no new file is begun after the unfinished ones are taken back. */
     private static boolean shuttingDown;
@@ -124,12 +139,12 @@ public final class AtomicFile {
                     }
                     for (Process writer : WRITERS.values()) {
                         try {
-                            writer.waitFor(2, java.util.concurrent.TimeUnit.SECONDS);
+                            writer.waitFor(2, TimeUnit.SECONDS);
                         } catch (InterruptedException e) {
                             break; // exiting anyway
                         }
                     }
-                    for (Path temp : IN_FLIGHT) {
+                    for (Path temp : IN_FLIGHT.keySet()) {
                         try {
                             deleteWithContents(temp);
                         } catch (IOException e) {
@@ -163,15 +178,26 @@ public final class AtomicFile {
                 throw new IOException("not written: iFold is stopping");
             }
             Path made = creation.create();
-            IN_FLIGHT.add(made);
+            register(made);
             return made;
         }
     }
 
     /** {@code file} is to stay, or is gone already: a stop no longer deletes it. */
     public static void cancelDeleteOnStop(Path file) {
-        IN_FLIGHT.remove(file);
-        WRITERS.remove(file);
+        Integer left = IN_FLIGHT.computeIfPresent(file, (path, holds) -> holds > 1 ? holds - 1 : null);
+        if (left == null) {
+            WRITERS.remove(file);
+        }
+    }
+
+    /** Whether a stop would delete {@code file}: for tests. */
+    static boolean deletedOnStop(Path file) {
+        return IN_FLIGHT.containsKey(file);
+    }
+
+    private static void register(Path file) {
+        IN_FLIGHT.merge(file, 1, Integer::sum);
     }
 
     /**
@@ -229,7 +255,11 @@ public final class AtomicFile {
                 Files.move(path, target, StandardCopyOption.REPLACE_EXISTING);
             }
             if (!temp.equals(path)) {
-                deleteWithContents(temp);
+                try {
+                    deleteWithContents(temp);
+                } catch (IOException e) {
+                    // The movie is whole where it belongs; the next run that writes there sweeps the folder.
+                }
             }
             finish();
         }
@@ -256,18 +286,28 @@ public final class AtomicFile {
 
     /** Deletes a file, or a folder with the files in it. */
     private static void deleteWithContents(Path file) throws IOException {
-        if (Files.isDirectory(file, java.nio.file.LinkOption.NOFOLLOW_LINKS)) {
-            try (java.nio.file.DirectoryStream<Path> files = Files.newDirectoryStream(file)) {
-                for (Path inside : files) {
-                    Files.deleteIfExists(inside);
+        for (int attempt = 0; ; attempt++) {
+            if (Files.isDirectory(file, LinkOption.NOFOLLOW_LINKS)) {
+                try (DirectoryStream<Path> files = Files.newDirectoryStream(file)) {
+                    for (Path inside : files) {
+                        Files.deleteIfExists(inside);
+                    }
+                }
+            }
+            try {
+                Files.deleteIfExists(file);
+                return;
+            } catch (DirectoryNotEmptyException e) {
+                // A writer made a file in it since it was listed: once more.
+                if (attempt == 3) {
+                    throw e;
                 }
             }
         }
-        Files.deleteIfExists(file);
     }
 
     /** When this process started: temporary files older than that are no run's now. */
-    private static final long STARTED = ProcessHandle.current().info().startInstant().map(java.time.Instant::toEpochMilli)
+    private static final long STARTED = ProcessHandle.current().info().startInstant().map(Instant::toEpochMilli)
             .orElse(System.currentTimeMillis());
 
     /**
@@ -277,13 +317,13 @@ public final class AtomicFile {
      */
     public static void sweepStale(Path dir, String name) {
         String base = "." + (name.length() > 200 ? name.substring(0, 200) : name) + ".";
-        sweepStale(dir, glob(base) + "*.tmp", java.util.regex.Pattern.quote(base) + "[0-9a-f]+\\.tmp");
+        sweepStale(dir, glob(base) + "*.tmp", Pattern.quote(base) + "[0-9a-f]+\\.tmp");
     }
 
     /** As {@link #sweepStale(Path, String)}, for every file in {@code dir} matching {@code glob} and {@code regex}. */
     public static void sweepStale(Path dir, String glob, String regex) {
-        java.util.regex.Pattern pattern = java.util.regex.Pattern.compile(regex);
-        try (java.nio.file.DirectoryStream<Path> files = Files.newDirectoryStream(dir, glob)) {
+        Pattern pattern = Pattern.compile(regex);
+        try (DirectoryStream<Path> files = Files.newDirectoryStream(dir, glob)) {
             for (Path file : files) {
                 if (!pattern.matcher(file.getFileName().toString()).matches()) {
                     continue;

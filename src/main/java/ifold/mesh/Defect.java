@@ -1,5 +1,7 @@
 package ifold.mesh;
 
+import java.util.Locale;
+
 /**
  * The kinds of trouble {@link MeshBuilder} finds in real input. Each kind but the first two can
  * be repaired; {@code --strict} refuses any of them instead.
@@ -55,6 +57,6 @@ public enum Defect {
 
     /** What the repair did, given how many times ("split 3 non-manifold edges", "split 1 non-manifold edge"). */
     public String describeRepair(int count) {
-        return count == 1 ? repairOne : String.format(java.util.Locale.ROOT, repairFormat, count);
+        return count == 1 ? repairOne : String.format(Locale.ROOT, repairFormat, count);
     }
 }

@@ -116,16 +116,14 @@ public final class MeshBuilder {
     /** Below this many faces a second thread costs more than it saves. */
     private static final int PARALLEL_FACES = 50_000;
 
-    static long T0; static void tick(String w){ if (System.getProperty("tick")!=null){ long t=System.nanoTime(); System.err.printf("  %s %.1f%n", w, (t-T0)/1e6); T0=t;} }
     private Result run() throws InvalidMeshException {
-        T0=System.nanoTime();
-        checkCoordinates(); tick("coords");
-        cleanFaces(); tick("clean");
+        checkCoordinates();
+        cleanFaces();
         boolean[] drop;
         if (wStart == null) {
             // Triangles: the mates rule out almost every face at once (duplicateCandidates).
-            findMates(); tick("mates");
-            drop = findDuplicateFaces(duplicateCandidates()); tick("dups");
+            findMates();
+            drop = findDuplicateFaces(duplicateCandidates());
         } else {
             // Polygons: duplicates are rare, and looking for them is a pass of random look-ups:
             // do it on a second core while the corners are grouped.
@@ -146,10 +144,8 @@ public final class MeshBuilder {
             cornerFace = wStart == null ? null : cornerFaces();
             findMates();
         }
-        boolean[] fl = orient(); tick("orient");
-        reverseFlippedFaces(fl); tick("reverse");
-        int[] ph = pairHalfedges(); tick("pair");
-        Result r = assemble(ph); tick("assemble"); return r;
+        reverseFlippedFaces(orient());
+        return assemble(pairHalfedges());
     }
 
     private static boolean[] await(FutureTask<boolean[]> task) throws InvalidMeshException {
@@ -518,6 +514,7 @@ public final class MeshBuilder {
         // Per component: turned over as a whole (the minority rule), and closed.
         boolean[] inverted = new boolean[16];
         boolean[] closedComponent = new boolean[16];
+        int[] origin = new int[16]; // a vertex of each: volumes are measured from it
         int components = 0;
         int tail = 0;
         for (int seed = 0; seed < wFaceCount; seed++) {
@@ -581,16 +578,20 @@ public final class MeshBuilder {
             if (components == inverted.length) {
                 inverted = Arrays.copyOf(inverted, 2 * components);
                 closedComponent = Arrays.copyOf(closedComponent, 2 * components);
+                origin = Arrays.copyOf(origin, 2 * components);
             }
             inverted[components] = invert;
             closedComponent[components] = closed;
+            origin[components] = wVerts[faceStart(seed)];
             components++;
         }
         // Closed components enclosing a negative volume are turned outward. The volumes are
-        // summed in face order, one pass over memory for all components together.
-        double[] volume = signedVolumes(component, flip, inverted, closedComponent, components);
+        // summed in face order, one pass over memory for all components together. A volume
+        // next to nothing for its surface's area (a flat closed sheet, a pillow: zero but for
+        // rounding, whose sign the order of summing decides) has no inside to turn out.
+        double[][] volumes = signedVolumes(component, flip, inverted, closedComponent, origin, components);
         for (int k = 0; k < components; k++) {
-            if (closedComponent[k] && volume[k] < 0) {
+            if (closedComponent[k] && volumes[0][k] < -1e-9 * Math.pow(volumes[1][k], 1.5)) {
                 inverted[k] = !inverted[k];
                 repairs.merge(Defect.INWARD_COMPONENT, 1, Integer::sum);
             }
@@ -612,11 +613,13 @@ public final class MeshBuilder {
 
     /**
      * Six times the signed volume enclosed by each closed component, with its faces oriented as
-     * {@code flip}, then {@code inverted} for the whole component, will orient them.
+     * {@code flip}, then {@code inverted} for the whole component, will orient them, measured
+     * from a vertex of its own; and twice its surface's area: {volumes, areas}.
      */
-    private double[] signedVolumes(int[] component, boolean[] flip, boolean[] inverted, boolean[] closed,
+    private double[][] signedVolumes(int[] component, boolean[] flip, boolean[] inverted, boolean[] closed, int[] origin,
             int components) {
         double[] volume = new double[components];
+        double[] area = new double[components];
         for (int f = 0; f < wFaceCount; f++) {
             int k = component[f];
             if (!closed[k]) {
@@ -627,32 +630,28 @@ public final class MeshBuilder {
             int a = wVerts[start];
             double faceVolume = 0;
             for (int c = start + 1; c + 1 < end; c++) {
-                faceVolume += tripleProduct(a, wVerts[c], wVerts[c + 1]);
+                faceVolume += tripleProduct(origin[k], a, wVerts[c], wVerts[c + 1]);
+                area[k] += Triangles.twiceArea(xyz, a, wVerts[c], wVerts[c + 1]);
             }
             volume[k] += flip[f] ^ inverted[k] ? -faceVolume : faceVolume;
         }
-        return volume;
+        return new double[][] {volume, area};
     }
 
-    private static int firstDisagreeing(int[] faces, int size, boolean[] flip, boolean invert) {
-        for (int i = 0; i < size; i++) {
-            if (flip[faces[i]] != invert) {
-                return faces[i];
-            }
-        }
-        return faces[0];
-    }
-
-    private double tripleProduct(int a, int b, int c) {
-        double ax = xyz[3 * a];
-        double ay = xyz[3 * a + 1];
-        double az = xyz[3 * a + 2];
-        double bx = xyz[3 * b];
-        double by = xyz[3 * b + 1];
-        double bz = xyz[3 * b + 2];
-        double cx = xyz[3 * c];
-        double cy = xyz[3 * c + 1];
-        double cz = xyz[3 * c + 2];
+    /** The triple product of corners a, b and c taken from vertex o: six times the tetrahedron's signed volume. */
+    private double tripleProduct(int o, int a, int b, int c) {
+        double ox = xyz[3 * o];
+        double oy = xyz[3 * o + 1];
+        double oz = xyz[3 * o + 2];
+        double ax = xyz[3 * a] - ox;
+        double ay = xyz[3 * a + 1] - oy;
+        double az = xyz[3 * a + 2] - oz;
+        double bx = xyz[3 * b] - ox;
+        double by = xyz[3 * b + 1] - oy;
+        double bz = xyz[3 * b + 2] - oz;
+        double cx = xyz[3 * c] - ox;
+        double cy = xyz[3 * c + 1] - oy;
+        double cz = xyz[3 * c + 2] - oz;
         return ax * (by * cz - bz * cy) + ay * (bz * cx - bx * cz) + az * (bx * cy - by * cx);
     }
 

@@ -200,7 +200,8 @@ public final class MeshValidator {
                 polygon[size++] = mesh.toVertex(h);
                 h = mesh.next(h);
             } while (h != start);
-            // Triangles are judged as the builder judges them (and without its polygon's copies).
+            // Triangles are judged as the builder judges them, by the same test, which does not
+            // depend on the corner a loop starts at (and without a polygon's copies).
             boolean area = size == 3 ? !Triangles.isDegenerate(xyz, polygon[0], polygon[1], polygon[2])
                     : Polygons.hasArea(xyz, polygon, size);
             if (!area) {

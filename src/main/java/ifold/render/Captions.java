@@ -7,6 +7,7 @@ import java.awt.FontMetrics;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
 import java.awt.image.BufferedImage;
+import java.util.List;
 
 /**
  * A caption along the bottom of a frame: the step shown, in white on a dark translucent band,
@@ -26,7 +27,7 @@ final class Captions {
     private final BufferedImage strip;
 
     /** How a caption is set: its lines, their font, and the rows of the band they need. */
-    record Layout(java.util.List<String> lines, Font font, int rows) {
+    record Layout(List<String> lines, Font font, int rows) {
     }
 
     Captions(int width, int height) {
@@ -52,11 +53,11 @@ final class Captions {
             int room = width - band; // half a band's margin either side
             FontMetrics metrics = g.getFontMetrics(font);
             if (metrics.stringWidth(text) <= room) {
-                return new Layout(java.util.List.of(text), font, band);
+                return new Layout(List.of(text), font, band);
             }
             FontMetrics small = g.getFontMetrics(smallFont);
             if (small.stringWidth(text) <= room) {
-                return new Layout(java.util.List.of(text), smallFont, band);
+                return new Layout(List.of(text), smallFont, band);
             }
             // Two lines, broken at the last space that lets the first fit.
             int cut = -1;
@@ -68,7 +69,10 @@ final class Captions {
             }
             String first;
             String rest;
-            if (cut > 0) {
+            // At a space, unless that leaves the second line too long and the first nearly empty
+            // (a long word): then the first line is filled, the word broken.
+            if (cut > 0 && (small.stringWidth(text.substring(cut + 1).strip()) <= room
+                    || small.stringWidth(text.substring(0, cut)) > room / 2)) {
                 first = text.substring(0, cut);
                 rest = text.substring(cut + 1).strip();
             } else {
@@ -76,7 +80,7 @@ final class Captions {
                 first = first.substring(0, first.length() - 1); // no ellipsis mid-word: it goes on
                 rest = text.substring(first.length()).strip();
             }
-            return new Layout(java.util.List.of(first, fit(rest, small, room)), smallFont, tallBand);
+            return new Layout(List.of(first, fit(rest, small, room)), smallFont, tallBand);
         } finally {
             g.dispose();
         }

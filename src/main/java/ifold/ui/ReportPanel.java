@@ -1,5 +1,6 @@
 package ifold.ui;
 
+import java.awt.FontMetrics;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
@@ -47,7 +48,7 @@ final class ReportPanel extends JTable {
 
     /** Measures what the columns hold, for {@link #doLayout}. */
     private void fitColumns() {
-        java.awt.FontMetrics metrics = getFontMetrics(getFont());
+        FontMetrics metrics = getFontMetrics(getFont());
         int names = metrics.stringWidth(rows.getColumnName(0));
         int values = metrics.stringWidth(rows.getColumnName(1));
         for (String[] row : rows.rows) {

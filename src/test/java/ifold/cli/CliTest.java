@@ -69,6 +69,7 @@ class CliTest {
             {"wrap models/cube.off --widht 1", "ifold: unknown option '--widht': did you mean --width?"},
             {"wrap models/cube.off --width abc", "ifold: option --width: 'abc' is not a number"},
             {"wrap models/cube.off --max-faces 1.5", "ifold: option --max-faces: '1.5' is not a whole number"},
+            {"demo zigzag --fps 99999999999", "ifold: option --fps: '99999999999' is out of range"},
             {"demo zigzg", "ifold: unknown command 'zigzg': did you mean zigzag?"},
             {"wrapp models/cube.off", "ifold: unknown command 'wrapp': did you mean wrap"},
             {"info models/cube.off models/cube.off", "ifold: unexpected argument 'models/cube.off'"},

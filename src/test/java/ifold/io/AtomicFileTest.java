@@ -43,9 +43,7 @@ class AtomicFileTest {
     void aFrameExportSweepsHalfWrittenFramesOfAKilledOne() throws Exception {
         Path frame = stale(".frame_00031.png.0a1b2c.tmp");
         Path whole = stale("frame_00031.png");
-        try (FrameWriter writer = new FrameWriter(dir)) {
-            writer.finish();
-        }
+        new FrameWriter(dir).close(); // the sweep is the writer's first act
         assertFalse(Files.exists(frame));
         assertTrue(Files.exists(whole), "whole frames are the export's to replace, not the sweep's");
     }
@@ -110,6 +108,48 @@ class AtomicFileTest {
         assertThrows(java.nio.file.NoSuchFileException.class, () -> Files.writeString(written, "again"));
         try (var files = Files.list(dir)) {
             assertEquals(List.of("m.mp4"), files.map(p -> p.getFileName().toString()).toList(), "the whole movie alone");
+        }
+    }
+
+    @Test
+    void aSecondExportRefusedTheFolderLeavesTheFirstOnesLockToBeTakenBack() throws Exception {
+        Path frames = Files.createDirectory(dir.resolve("held"));
+        Path lock = frames.resolve(".ifold-frames.lock");
+        FrameWriter first = new FrameWriter(frames);
+        try {
+            assertThrows(java.io.IOException.class, () -> new FrameWriter(frames).close(), "the folder is held");
+            assertTrue(AtomicFile.deletedOnStop(lock), "a stop still takes the first export's lock back");
+        } finally {
+            first.close();
+        }
+        assertFalse(AtomicFile.deletedOnStop(lock));
+        assertFalse(Files.exists(lock));
+    }
+
+    @Test
+    void aFinishedExportRemovesTheFramesOfALongerOneAndAFailedOneLeavesThem() throws Exception {
+        Path frames = Files.createDirectory(dir.resolve("frames"));
+        for (int i = 0; i < 40; i++) {
+            Files.writeString(frames.resolve(FrameWriter.frameName(i)), "old");
+        }
+        try (FrameWriter failed = new FrameWriter(frames)) {
+            for (int i = 0; i < 5; i++) {
+                failed.write(i, 4, 4, new byte[48]);
+            }
+            // No finish: it failed, and takes back only the frames it wrote.
+        }
+        for (int i = 5; i < 40; i++) {
+            assertTrue(Files.exists(frames.resolve(FrameWriter.frameName(i))), "the earlier export's frame " + i + " stays");
+        }
+        try (FrameWriter shorter = new FrameWriter(frames)) {
+            for (int i = 0; i < 10; i++) {
+                shorter.write(i, 4, 4, new byte[48]);
+            }
+            shorter.finish();
+        }
+        try (var files = Files.list(frames)) {
+            assertEquals(List.of(), files.map(p -> p.getFileName().toString())
+                    .filter(name -> name.compareTo(FrameWriter.frameName(10)) >= 0).toList(), "only this export's ten frames");
         }
     }
 }

@@ -149,6 +149,38 @@ class MeshBuilderTest {
     }
 
     @Test
+    void aFlatClosedSheetHasNoInsideToTurnOut() throws InvalidMeshException {
+        // Four coplanar points, closed up as a tetrahedron: its volume is zero up to rounding,
+        // and whichever order the faces come in, nothing is turned over.
+        double[] xyz = {1.290374832472678, 1.940921685319108, 0.3411372815378284, 1.408423222078428, 1.1958132451665138,
+            1.070387244795604, -0.8177662809970427, -0.7005408575908934, -0.1721546565569769, -0.9929686923922412,
+            0.12163697899470616, -1.0319505961493693};
+        int[][] faces = {{0, 1, 2}, {0, 2, 3}, {1, 3, 2}, {1, 0, 3}};
+        for (int shift = 0; shift < 4; shift++) {
+            int[][] order = new int[4][];
+            for (int f = 0; f < 4; f++) {
+                order[f] = faces[(f + shift) % 4];
+            }
+            assertEquals(Map.of(), build(Fixtures.soup(xyz, order)).repairs(), "faces from " + shift);
+        }
+    }
+
+    @Test
+    void anInsideOutSolidFarFromTheOriginIsStillTurnedOut() throws InvalidMeshException {
+        // Volumes are measured from a vertex of the solid: a million units away, rounding of
+        // the products about the origin would swamp the tetrahedron's.
+        PolygonSoup tetrahedron = Solids.tetrahedron();
+        PolygonSoup far = new PolygonSoup();
+        for (int v = 0; v < 4; v++) {
+            far.addVertex(tetrahedron.coordinate(v, 0) + 1e6, tetrahedron.coordinate(v, 1) - 3e6, tetrahedron.coordinate(v, 2) + 2e6);
+        }
+        for (int f = 0; f < 4; f++) {
+            far.addTriangle(tetrahedron.faceVertex(f, 2), tetrahedron.faceVertex(f, 1), tetrahedron.faceVertex(f, 0));
+        }
+        assertEquals(Map.of(Defect.INWARD_COMPONENT, 1), build(far).repairs());
+    }
+
+    @Test
     void twoClosedSolidsTouchingAtAVertexGetAVertexEach() throws InvalidMeshException {
         // Two tetrahedra sharing vertex 0: both fans around it are closed, and the second gets
         // a copy of the vertex.

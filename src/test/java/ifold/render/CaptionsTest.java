@@ -54,6 +54,10 @@ class CaptionsTest {
         assertEquals(2, layout.lines().size());
         assertTrue(layout.lines().get(1).endsWith("…"), layout.lines().toString());
         assertFits(captions, layout, 320);
+        String longWord = "a " + "Supercalifragilisticexpialidocious".repeat(2);
+        Captions.Layout broken = captions.layout(longWord);
+        assertEquals(longWord.replace(" ", ""), String.join("", broken.lines()).replace(" ", ""),
+                "a long word is broken across the lines rather than cut: " + broken.lines());
         Captions.Layout word = captions.layout("x".repeat(200));
         assertNotEquals("", word.lines().get(0), "a word longer than a line is broken, not lost");
         assertFits(captions, word, 320);

@@ -118,7 +118,7 @@ final class ParallelOffReader {
                 PolygonSoup soup = Workers.await(piece);
                 if (soup == null) {
                     for (Future<PolygonSoup> rest : parsing) {
-                        rest.cancel(true);
+                        rest.cancel(false); // not interrupted: an interrupt closes the channel the pieces share
                     }
                     return null;
                 }
