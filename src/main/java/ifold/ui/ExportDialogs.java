@@ -194,29 +194,29 @@ final class ExportDialogs {
     // ---- Writing, once asked (the tests start here) ----
 
     void obj(Path file) {
-        plan("OBJ", file, (shown, progress) -> {
-            Exports.obj(shown, file, progress);
-            return "wrote " + file;
-        });
+        file("OBJ", file, Exports::obj);
     }
 
     void fold(Path file) {
-        plan("FOLD", file, (shown, progress) -> {
-            Exports.fold(shown, file, progress);
-            return "wrote " + file;
-        });
+        file("FOLD", file, Exports::fold);
     }
 
     void figure(Path file) {
-        plan("figure", file, (shown, progress) -> {
-            Exports.figure(shown, file, progress);
-            return "wrote " + file;
-        });
+        file("figure", file, Exports::figure);
     }
 
     void report(Path file) {
-        plan("report", file, (shown, progress) -> {
-            Exports.report(shown, file, progress);
+        file("report", file, Exports::report);
+    }
+
+    /** One of the plan's files (OBJ, FOLD, figure, report), as {@link Exports} writes it. */
+    private interface FileExport {
+        void write(Plan shown, Path file, Progress progress) throws Exception;
+    }
+
+    private void file(String what, Path file, FileExport export) {
+        plan(what, file, (shown, progress) -> {
+            export.write(shown, file, progress);
             return "wrote " + file;
         });
     }

@@ -8,9 +8,7 @@ import java.nio.MappedByteBuffer;
 import java.nio.channels.FileChannel;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
-import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.Callable;
 import java.util.concurrent.Future;
 
 /**
@@ -57,12 +55,7 @@ final class ParallelObjReader {
             }
             long[] cuts = ParallelOffReader.cuts(channel, textStart, size, threads * ParallelOffReader.PIECES_PER_THREAD);
             int pieces = cuts.length - 1;
-            List<Future<Count>> counting = new ArrayList<>();
-            for (int k = 0; k < pieces; k++) {
-                long from = cuts[k];
-                long to = cuts[k + 1];
-                counting.add(Workers.pool().submit(() -> count(channel, from, to)));
-            }
+            List<Future<Count>> counting = ParallelOffReader.eachPiece(cuts, (k, from, to) -> count(channel, from, to));
             int[] firstLine = new int[pieces];
             int[] firstVertex = new int[pieces + 1];
             int[] faces = new int[pieces];
@@ -92,36 +85,18 @@ final class ParallelObjReader {
             }
             firstVertex[pieces] = (int) vertexCount;
             double[] coordinates = new double[3 * (int) vertexCount];
-            List<Future<PolygonSoup>> parsing = new ArrayList<>();
-            for (int k = 0; k < pieces; k++) {
-                long from = cuts[k];
-                long to = cuts[k + 1];
-                int lineOfPiece = firstLine[k];
-                int first = firstVertex[k];
-                int end = firstVertex[k + 1];
-                int facesOfPiece = faces[k];
-                int cornersOfPiece = corners[k];
-                Callable<PolygonSoup> piece = () -> {
-                    ByteTokenizer tokens = ByteTokenizer.region(file, new ParallelOffReader.PieceStream(channel, from, to),
-                            from, lineOfPiece, true);
-                    try {
-                        return ObjReader.readStatements(tokens, coordinates, first, end, facesOfPiece, cornersOfPiece);
-                    } catch (MeshFormatException e) {
-                        return null; // read whole, to be refused with the whole-file reader's message
-                    }
-                };
-                parsing.add(Workers.pool().submit(piece));
-            }
-            List<PolygonSoup> faceParts = new ArrayList<>();
-            for (Future<PolygonSoup> piece : parsing) {
-                PolygonSoup soup = Workers.await(piece);
-                if (soup == null) {
-                    for (Future<PolygonSoup> rest : parsing) {
-                        rest.cancel(false); // not interrupted: an interrupt closes the channel the pieces share
-                    }
-                    return null;
+            List<Future<PolygonSoup>> parsing = ParallelOffReader.eachPiece(cuts, (k, from, to) -> {
+                ByteTokenizer tokens = ByteTokenizer.region(file, new ParallelOffReader.PieceStream(channel, from, to), from,
+                        firstLine[k], true);
+                try {
+                    return ObjReader.readStatements(tokens, coordinates, firstVertex[k], firstVertex[k + 1], faces[k], corners[k]);
+                } catch (MeshFormatException e) {
+                    return null; // read whole, to be refused with the whole-file reader's message
                 }
-                faceParts.add(soup);
+            });
+            List<PolygonSoup> faceParts = ParallelOffReader.awaitPieces(parsing);
+            if (faceParts == null) {
+                return null;
             }
             PolygonSoup soup = PolygonSoup.joined(coordinates, (int) vertexCount, faceParts);
             ObjReader.checkIndices(soup, file);

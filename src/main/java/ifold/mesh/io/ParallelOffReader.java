@@ -11,7 +11,6 @@ import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.Callable;
 import java.util.concurrent.Future;
 
 /**
@@ -72,12 +71,7 @@ final class ParallelOffReader {
             long size = channel.size();
             long[] cuts = cuts(channel, preamble.recordsOffset(), size, threads * PIECES_PER_THREAD);
             int pieces = cuts.length - 1;
-            List<Future<Count>> counting = new ArrayList<>();
-            for (int k = 0; k < pieces; k++) {
-                long from = cuts[k];
-                long to = cuts[k + 1];
-                counting.add(Workers.pool().submit(() -> count(channel, from, to)));
-            }
+            List<Future<Count>> counting = eachPiece(cuts, (k, from, to) -> count(channel, from, to));
             int[] firstLine = new int[pieces];
             int[] firstRecord = new int[pieces + 1];
             long line = preamble.recordsLine();
@@ -96,36 +90,54 @@ final class ParallelOffReader {
             }
             firstRecord[pieces] = (int) records;
             double[] coordinates = new double[3 * preamble.vertexCount()];
-            List<Future<PolygonSoup>> parsing = new ArrayList<>();
-            for (int k = 0; k < pieces; k++) {
-                long from = cuts[k];
-                long to = cuts[k + 1];
-                int lineOfPiece = firstLine[k];
-                int first = firstRecord[k];
-                int end = firstRecord[k + 1];
-                Callable<PolygonSoup> piece = () -> {
-                    ByteTokenizer tokens = ByteTokenizer.region(file, new PieceStream(channel, from, to), from, lineOfPiece, false);
-                    try {
-                        return OffReader.readRecords(tokens, preamble, coordinates, first, end);
-                    } catch (MeshFormatException e) {
-                        return null; // read whole, to be refused with the whole-file reader's message
-                    }
-                };
-                parsing.add(Workers.pool().submit(piece));
-            }
-            List<PolygonSoup> faces = new ArrayList<>();
-            for (Future<PolygonSoup> piece : parsing) {
-                PolygonSoup soup = Workers.await(piece);
-                if (soup == null) {
-                    for (Future<PolygonSoup> rest : parsing) {
-                        rest.cancel(false); // not interrupted: an interrupt closes the channel the pieces share
-                    }
-                    return null;
+            List<Future<PolygonSoup>> parsing = eachPiece(cuts, (k, from, to) -> {
+                ByteTokenizer tokens = ByteTokenizer.region(file, new PieceStream(channel, from, to), from, firstLine[k], false);
+                try {
+                    return OffReader.readRecords(tokens, preamble, coordinates, firstRecord[k], firstRecord[k + 1]);
+                } catch (MeshFormatException e) {
+                    return null; // read whole, to be refused with the whole-file reader's message
                 }
-                faces.add(soup);
-            }
-            return PolygonSoup.joined(coordinates, preamble.vertexCount(), faces);
+            });
+            List<PolygonSoup> faces = awaitPieces(parsing);
+            return faces == null ? null : PolygonSoup.joined(coordinates, preamble.vertexCount(), faces);
         }
+    }
+
+    /** What is done with piece k of a file, the bytes [from, to). */
+    interface PieceTask<T> {
+        T run(int k, long from, long to) throws Exception;
+    }
+
+    /** {@code task} on each piece between the cuts, on the workers; their results in order. */
+    static <T> List<Future<T>> eachPiece(long[] cuts, PieceTask<T> task) {
+        List<Future<T>> results = new ArrayList<>();
+        for (int k = 0; k + 1 < cuts.length; k++) {
+            int piece = k;
+            long from = cuts[k];
+            long to = cuts[k + 1];
+            results.add(Workers.pool().submit(() -> task.run(piece, from, to)));
+        }
+        return results;
+    }
+
+    /**
+     * The soups of the pieces, in order, once all are parsed; null as soon as one gave up (the
+     * file is then read whole), the others left to finish: not interrupted, as an interrupt
+     * closes the channel they share.
+     */
+    static List<PolygonSoup> awaitPieces(List<Future<PolygonSoup>> parsing) throws IOException {
+        List<PolygonSoup> soups = new ArrayList<>();
+        for (Future<PolygonSoup> piece : parsing) {
+            PolygonSoup soup = Workers.await(piece);
+            if (soup == null) {
+                for (Future<PolygonSoup> rest : parsing) {
+                    rest.cancel(false);
+                }
+                return null;
+            }
+            soups.add(soup);
+        }
+        return soups;
     }
 
     /**

@@ -1,6 +1,5 @@
 package ifold.mesh.io;
 
-import static ifold.mesh.io.ParallelOffReaderTest.assertSameSoup;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -19,11 +18,8 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Random;
 import java.util.stream.Stream;
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Assumptions;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 
 /**
  * Reading an OBJ file in pieces gives what reading it whole gives, bit for bit, line numbers
@@ -31,55 +27,10 @@ import org.junit.jupiter.api.io.TempDir;
  * continued by a backslash, bad data) it leaves the file to the whole-file reader, so that
  * errors are the same whatever the threads.
  */
-class ParallelObjReaderTest {
-    @TempDir
-    Path dir;
-
-    private String threads;
-    private String bytes;
-
-    @BeforeEach
-    void readEveryFileInPieces() {
-        threads = System.getProperty("ifold.threads");
-        bytes = System.getProperty("ifold.parallelReadBytes");
-        System.setProperty("ifold.parallelReadBytes", "0");
-    }
-
-    @AfterEach
-    void restore() {
-        restore("ifold.threads", threads);
-        restore("ifold.parallelReadBytes", bytes);
-    }
-
-    private static void restore(String key, String value) {
-        if (value == null) {
-            System.clearProperty(key);
-        } else {
-            System.setProperty(key, value);
-        }
-    }
-
-    /** What reading gives: the soup, or the error's message. */
-    private static Object read(Path file, int threadCount) {
-        System.setProperty("ifold.threads", Integer.toString(threadCount));
-        try {
-            return ObjReader.read(file);
-        } catch (MeshFormatException | IOException e) {
-            return e.getMessage();
-        }
-    }
-
-    private static void assertSameAsWhole(Path file) {
-        Object whole = read(file, 1);
-        for (int threadCount : new int[] {2, 3, 5}) {
-            Object pieces = read(file, threadCount);
-            if (whole instanceof String message) {
-                assertEquals(message, pieces, file + " with " + threadCount + " threads");
-            } else {
-                assertTrue(pieces instanceof PolygonSoup, () -> file + " with " + threadCount + " threads: " + pieces);
-                assertSameSoup((PolygonSoup) whole, (PolygonSoup) pieces, file + " with " + threadCount + " threads");
-            }
-        }
+class ParallelObjReaderTest extends ReadInPiecesTest {
+    @Override
+    PolygonSoup readFile(Path file) throws MeshFormatException, IOException {
+        return ObjReader.read(file);
     }
 
     /** Whether {@code file} is read in pieces on 3 threads rather than left to the whole-file reader. */

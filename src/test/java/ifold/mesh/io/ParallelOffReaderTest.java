@@ -1,6 +1,5 @@
 package ifold.mesh.io;
 
-import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -16,85 +15,17 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
 import java.util.stream.Stream;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 
 /**
  * Reading an OFF file in pieces gives what reading it whole gives, bit for bit, line numbers
  * and colours included; and where it cannot (a face over several lines, bad data) it leaves the
  * file to the whole-file reader, so that errors are the same whatever the threads.
  */
-class ParallelOffReaderTest {
-    @TempDir
-    Path dir;
-
-    private String threads;
-    private String bytes;
-
-    @BeforeEach
-    void readEveryFileInPieces() {
-        threads = System.getProperty("ifold.threads");
-        bytes = System.getProperty("ifold.parallelReadBytes");
-        System.setProperty("ifold.parallelReadBytes", "0");
-    }
-
-    @AfterEach
-    void restore() {
-        restore("ifold.threads", threads);
-        restore("ifold.parallelReadBytes", bytes);
-    }
-
-    private static void restore(String key, String value) {
-        if (value == null) {
-            System.clearProperty(key);
-        } else {
-            System.setProperty(key, value);
-        }
-    }
-
-    /** What reading gives: the soup, or the error's message. */
-    private static Object read(Path file, int threadCount) {
-        System.setProperty("ifold.threads", Integer.toString(threadCount));
-        try {
-            return OffReader.read(file);
-        } catch (MeshFormatException | IOException e) {
-            return e.getMessage();
-        }
-    }
-
-    private static void assertSameAsWhole(Path file) {
-        Object whole = read(file, 1);
-        for (int threadCount : new int[] {2, 3, 5}) {
-            Object pieces = read(file, threadCount);
-            if (whole instanceof String message) {
-                assertEquals(message, pieces, file + " with " + threadCount + " threads");
-            } else {
-                assertSameSoup((PolygonSoup) whole, (PolygonSoup) pieces, file + " with " + threadCount + " threads");
-            }
-        }
-    }
-
-    static void assertSameSoup(PolygonSoup expected, PolygonSoup actual, String what) {
-        assertEquals(expected.vertexCount(), actual.vertexCount(), what);
-        for (int v = 0; v < expected.vertexCount(); v++) {
-            for (int axis = 0; axis < 3; axis++) {
-                if (Double.doubleToRawLongBits(expected.coordinate(v, axis)) != Double.doubleToRawLongBits(actual.coordinate(v, axis))) {
-                    assertEquals(expected.coordinate(v, axis), actual.coordinate(v, axis), what + ": vertex " + v);
-                }
-            }
-        }
-        assertEquals(expected.faceCount(), actual.faceCount(), what);
-        assertEquals(expected.hasFaceColors(), actual.hasFaceColors(), what);
-        for (int f = 0; f < expected.faceCount(); f++) {
-            assertEquals(expected.faceSize(f), actual.faceSize(f), what + ": face " + f);
-            for (int k = 0; k < expected.faceSize(f); k++) {
-                assertEquals(expected.faceVertex(f, k), actual.faceVertex(f, k), what + ": face " + f);
-            }
-            assertEquals(expected.faceLine(f), actual.faceLine(f), what + ": line of face " + f);
-            assertEquals(expected.faceColor(f), actual.faceColor(f), what + ": colour of face " + f);
-        }
+class ParallelOffReaderTest extends ReadInPiecesTest {
+    @Override
+    PolygonSoup readFile(Path file) throws MeshFormatException, IOException {
+        return OffReader.read(file);
     }
 
     private Path write(String name, String text) throws IOException {
