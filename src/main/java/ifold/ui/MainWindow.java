@@ -65,6 +65,8 @@ final class MainWindow extends JFrame {
     final ParameterPanel parameters;
     final TimelinePanel timeline;
     final ReportPanel report = new ReportPanel();
+    /** The list of folds, or of a view's steps, under its title. */
+    private final JScrollPane foldList;
     final JProgressBar progress = new JProgressBar();
     final JButton cancel = new JButton("Cancel");
     final JLabel message = new JLabel(" ");
@@ -108,7 +110,7 @@ final class MainWindow extends JFrame {
         left.setMinimumSize(new Dimension(280, 200)); // the split panes share out what is left, never the parameters' room
         JScrollPane figures = new JScrollPane(report);
         figures.setBorder(BorderFactory.createTitledBorder("Report"));
-        JScrollPane foldList = new JScrollPane(timeline.folds);
+        foldList = new JScrollPane(timeline.folds);
         foldList.setBorder(BorderFactory.createTitledBorder("Folds"));
         JSplitPane right = new JSplitPane(JSplitPane.VERTICAL_SPLIT, figures, foldList);
         right.setResizeWeight(0.5);
@@ -464,6 +466,7 @@ final class MainWindow extends JFrame {
         showSurface();
         // A view reveals triangles and folds no paper: its steps are not folds.
         timeline.setTimeline(fresh, !sameKind || (old != null && old.isPlaying()), next.hasPaper() ? "fold" : "step");
+        foldList.setBorder(BorderFactory.createTitledBorder(next.hasPaper() ? "Folds" : "Steps"));
         report.show(next.figures());
         setTitle("iFold - " + next.title());
         say(next.title());

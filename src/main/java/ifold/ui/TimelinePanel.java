@@ -157,6 +157,13 @@ final class TimelinePanel extends JPanel {
     void setTimeline(Timeline next, boolean playing, String unit) {
         timeline = next;
         this.unit = unit;
+        // A view reveals steps, not folds: the buttons say which.
+        String name = Character.toUpperCase(unit.charAt(0)) + unit.substring(1);
+        back.setText("\u25C0 " + name);
+        forward.setText(name + " \u25B6");
+        back.setToolTipText("back one " + unit);
+        forward.setToolTipText("forward one " + unit);
+        slider.setToolTipText("drag through the " + unit + "s");
         timeline.setSpeed(Timeline.SPEEDS[speed.getSelectedIndex()]);
         List<Fold> list = next.folds();
         updating = true;
