@@ -27,13 +27,19 @@ class LauncherTest {
         return new ProcessBuilder("sh", "-c", "command -v Xvfb").start().waitFor() == 0;
     }
 
-    /** Starts a long headless export, and waits for its first frames; returns the launcher and everything it started. */
-    private Process start(Path frames) throws Exception {
-        ProcessBuilder builder = new ProcessBuilder(LAUNCHER.toString(), "demo", "zigzag", "--frames", frames.toString(), "--size",
-                "1280x720", "--fps", "30", "--seconds", "300").redirectErrorStream(true).redirectOutput(dir.resolve("log").toFile());
+    /** The installed launcher run with {@code args} and no display, its output into the log. */
+    private Process launch(String... args) throws Exception {
+        List<String> command = new java.util.ArrayList<>(List.of(LAUNCHER.toString()));
+        command.addAll(List.of(args));
+        ProcessBuilder builder = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(dir.resolve("log").toFile());
         builder.environment().remove("DISPLAY");
         builder.environment().remove("IFOLD_IN_XVFB");
-        Process launcher = builder.start();
+        return builder.start();
+    }
+
+    /** Starts a long headless export, and waits for its first frames; returns the launcher and everything it started. */
+    private Process start(Path frames) throws Exception {
+        Process launcher = launch("demo", "zigzag", "--frames", frames.toString(), "--size", "1280x720", "--fps", "30", "--seconds", "300");
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
         while (System.nanoTime() < deadline) {
             if (Files.isDirectory(frames)) {
@@ -88,11 +94,7 @@ class LauncherTest {
         assumeTrue(Files.isExecutable(LAUNCHER) && hasXvfb(), "no installed launcher or no Xvfb");
         assumeTrue(new ProcessBuilder("sh", "-c", "command -v ffmpeg").start().waitFor() == 0, "no ffmpeg");
         Path out = Files.createDirectory(dir.resolve("out"));
-        ProcessBuilder builder = new ProcessBuilder(LAUNCHER.toString(), "demo", "zigzag", "--movie", out.resolve("m.mp4").toString(),
-                "--size", "320x180").redirectErrorStream(true).redirectOutput(dir.resolve("log").toFile());
-        builder.environment().remove("DISPLAY");
-        builder.environment().remove("IFOLD_IN_XVFB");
-        Process launcher = builder.start();
+        Process launcher = launch("demo", "zigzag", "--movie", out.resolve("m.mp4").toString(), "--size", "320x180");
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
         boolean begun = false;
         while (!begun && System.nanoTime() < deadline && launcher.isAlive()) {
