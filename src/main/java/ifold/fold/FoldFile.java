@@ -14,6 +14,8 @@ import ifold.sheet.Sheet;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Comparator;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -94,7 +96,7 @@ public final class FoldFile {
                 }
             }
             for (int f = 0; f < a.faceCount(); f++) {
-                if (!java.util.Arrays.equals(a.loop(f), b.loop(f))) {
+                if (!Arrays.equals(a.loop(f), b.loop(f))) {
                     return false;
                 }
             }
@@ -196,7 +198,7 @@ public final class FoldFile {
                 }
                 findOrders(k);
             }
-            folds.sort(java.util.Comparator.<long[]>comparingLong(f -> f[0]).thenComparingLong(f -> f[1])
+            folds.sort(Comparator.<long[]>comparingLong(f -> f[0]).thenComparingLong(f -> f[1])
                     .thenComparingLong(f -> f[2]));
             for (long[] fold : folds) {
                 foldingOrder.add((int) fold[2]);

@@ -3,7 +3,10 @@ package ifold.ui;
 import ifold.ui.model.Fold;
 import ifold.ui.model.Timeline;
 import java.awt.BorderLayout;
+import java.awt.Component;
 import java.awt.FlowLayout;
+import java.awt.FontMetrics;
+import java.awt.Insets;
 import java.util.List;
 import javax.swing.AbstractListModel;
 import javax.swing.BorderFactory;
@@ -114,10 +117,10 @@ final class TimelinePanel extends JPanel {
         private static final long serialVersionUID = 1L;
 
         @Override
-        public java.awt.Component getListCellRendererComponent(JList<?> list, Object value, int index, boolean selected,
+        public Component getListCellRendererComponent(JList<?> list, Object value, int index, boolean selected,
                 boolean focused) {
             super.getListCellRendererComponent(list, value, index, selected, focused);
-            java.awt.Insets insets = getInsets();
+            Insets insets = getInsets();
             int room = list.getWidth() - insets.left - insets.right - 4;
             if (room > 0 && value != null) {
                 setText(fit(String.valueOf(value), getFontMetrics(getFont()), room));
@@ -126,7 +129,7 @@ final class TimelinePanel extends JPanel {
         }
 
         /** {@code text} shortened to {@code room} pixels as the class says. */
-        static String fit(String text, java.awt.FontMetrics metrics, int room) {
+        static String fit(String text, FontMetrics metrics, int room) {
             if (metrics.stringWidth(text) <= room) {
                 return text;
             }
