@@ -74,9 +74,12 @@ final class FoldCommand implements Callable<Integer> {
                 parsed = FoldScript.read(script);
             }
             nanosPerFold = new long[parsed.steps().size()];
-            result = parsed.play(nanosPerFold, maxFaces);
             if (pattern != null) {
-                pattern.verify(result);
+                CreasePattern.Folding folding = pattern.fold(nanosPerFold, maxFaces);
+                parsed = folding.script(); // some lines may have been folded the other way
+                result = folding.result();
+            } else {
+                result = parsed.play(nanosPerFold, maxFaces);
             }
         } catch (NoSuchFileException e) {
             throw new UserError(script + ": no such file");

@@ -5,6 +5,7 @@ import com.fasterxml.jackson.core.JsonParseException;
 import com.fasterxml.jackson.core.JsonParser;
 import com.fasterxml.jackson.core.JsonToken;
 import ifold.script.FoldScript;
+import ifold.script.FoldScriptException;
 import ifold.script.ScriptFolding;
 import ifold.sheet.Sheet;
 import java.io.IOException;
@@ -27,8 +28,12 @@ import java.util.Map;
  * @param width its extent along v
  * @param script the folds, as a fold script on a sheet with its corner at (0, 0)
  * @param creases each mountain or valley edge: u1, v1, u2, v2 (moved to the sheet's corner) and +1 (valley) or -1
+ * @param lines the crease lines in the order they are folded, one a fold of the script: u1, v1, u2, v2, +1 (valley)
+ *     or -1, the angle, and +1 where the paper right of the line moves (-1 left)
+ * @param thickness the paper's
  */
-public record CreasePattern(double length, double width, FoldScript script, List<double[]> creases) {
+public record CreasePattern(double length, double width, FoldScript script, List<double[]> creases, List<double[]> lines,
+        double thickness) {
 
     /** A crease pattern that cannot be read, or cannot be folded as iFold folds. */
     public static final class Refused extends Exception {
@@ -131,7 +136,6 @@ public record CreasePattern(double length, double width, FoldScript script, List
         }
         double thickness = fold.get("frame_ifold:thickness") instanceof Number n && n.doubleValue() >= 0 ? n.doubleValue()
                 : 1e-3 * Math.hypot(length, width);
-        FoldScript.Builder builder = FoldScript.builder().rectangle(length, width).thickness(thickness);
         List<double[]> folded = new ArrayList<>();
         for (int k : order) {
             double[] c = creases.get(k);
@@ -147,10 +151,63 @@ public record CreasePattern(double length, double width, FoldScript script, List
             // runs through that corner, from the opposite one.
             double[] corner = onLine(c, 0, 0, tolerance) ? new double[] {length, width} : new double[] {0, 0};
             double cross = (c[2] - c[0]) * (corner[1] - c[1]) - (c[3] - c[1]) * (corner[0] - c[0]);
-            FoldScript.Side moving = cross > 0 ? FoldScript.Side.RIGHT : FoldScript.Side.LEFT;
-            builder.flap(c[4] > 0 ? FoldScript.Kind.VALLEY : FoldScript.Kind.MOUNTAIN, c[5], c[0], c[1], c[2], c[3], moving);
+            folded.set(folded.size() - 1, new double[] {c[0], c[1], c[2], c[3], c[4], c[5], cross > 0 ? 1 : -1});
         }
-        return new CreasePattern(length, width, builder.build(), creases);
+        return new CreasePattern(length, width, script(length, width, thickness, folded, new boolean[folded.size()]), creases,
+                List.copyOf(folded), thickness);
+    }
+
+    /** The lines as flap folds of a script, each valley or mountain as its line says, the other way where {@code turned}. */
+    private static FoldScript script(double length, double width, double thickness, List<double[]> lines, boolean[] turned) {
+        FoldScript.Builder builder = FoldScript.builder().rectangle(length, width).thickness(thickness);
+        for (int k = 0; k < lines.size(); k++) {
+            double[] c = lines.get(k);
+            boolean valley = (c[4] > 0) != turned[k];
+            builder.flap(valley ? FoldScript.Kind.VALLEY : FoldScript.Kind.MOUNTAIN, c[5], c[0], c[1], c[2], c[3],
+                    c[6] > 0 ? FoldScript.Side.RIGHT : FoldScript.Side.LEFT);
+        }
+        return builder.build();
+    }
+
+    /** A crease pattern folded: the script it was folded by, and what it made. */
+    public record Folding(FoldScript script, ScriptFolding.Result result) {
+    }
+
+    /**
+     * Folds the pattern line by line and checks that every crease comes out as the file labels
+     * it. A fold through layers lying different sides up creases one line mountain on one layer
+     * and valley on the other, and a flap fold along it is named by one of them: where a line's
+     * creases come out the other way round, the line is folded the other way, once.
+     *
+     * @throws Refused if the pattern still does not come out as the file labels it
+     */
+    public Folding fold(long[] nanosPerFold, int maxFaces) throws Refused, FoldScriptException {
+        boolean[] turned = new boolean[lines.size()];
+        FoldScript folds = script;
+        while (true) {
+            ScriptFolding.Result result = folds.play(nanosPerFold, maxFaces);
+            int wrong = firstWrongCrease(result);
+            if (wrong < 0) {
+                return new Folding(folds, result);
+            }
+            int line = lineOf(creases.get(wrong));
+            if (line < 0 || turned[line]) {
+                throw refusal(result, wrong);
+            }
+            turned[line] = true;
+            folds = script(length, width, thickness, lines, turned);
+        }
+    }
+
+    /** The line folded that crease {@code c} lies on, or -1. */
+    private int lineOf(double[] c) {
+        double tolerance = 1e-9 * Math.hypot(length, width);
+        for (int k = 0; k < lines.size(); k++) {
+            if (onLine(lines.get(k), c[0], c[1], tolerance) && onLine(lines.get(k), c[2], c[3], tolerance)) {
+                return k;
+            }
+        }
+        return -1;
     }
 
     /**
@@ -158,34 +215,52 @@ public record CreasePattern(double length, double width, FoldScript script, List
      * cannot be folded one crease line at a time in its order.
      */
     public void verify(ScriptFolding.Result result) throws Refused {
-        Sheet sheet = result.sheet();
-        FoldFile.Folded folded = new FoldFile.Folded(sheet, result.frames());
-        int[] levels = sheet.levels();
-        double tolerance = 1e-7 * Math.hypot(length, width);
+        int wrong = firstWrongCrease(result);
+        if (wrong >= 0) {
+            throw refusal(result, wrong);
+        }
+    }
+
+    /** The first crease that does not come out as the pattern labels it, or -1. */
+    private int firstWrongCrease(ScriptFolding.Result result) {
+        int[] levels = result.sheet().levels();
         for (int k = 0; k < creases.size(); k++) {
-            double[] c = creases.get(k);
-            double mu = (c[0] + c[2]) / 2;
-            double mv = (c[1] + c[3]) / 2;
-            double found = Double.NaN;
-            for (int f = 0; f < sheet.faceCount() && Double.isNaN(found); f++) {
-                int[] loop = sheet.loop(f);
-                for (int i = 0; i < loop.length; i++) {
-                    int a = loop[i];
-                    int b = loop[(i + 1) % loop.length];
-                    int g = sheet.faceAcross(a, b);
-                    if (g < 0 || !onSegment(sheet, a, b, mu, mv, tolerance)) {
-                        continue;
-                    }
-                    found = sheet.crease(a, b) == null ? 0 : FoldFile.foldAngle(folded, levels, f, g, a, b);
-                    break;
-                }
-            }
-            if (Double.isNaN(found) || found == 0 || Math.signum(found) != c[4]) {
-                throw new Refused(String.format(Locale.ROOT, "cannot be folded one crease line at a time in this order: the crease"
-                        + " (%.6g, %.6g)-(%.6g, %.6g) comes out %s, the file says %s", c[0], c[1], c[2], c[3],
-                        Double.isNaN(found) || found == 0 ? "flat" : found > 0 ? "a valley" : "a mountain", c[4] > 0 ? "valley" : "mountain"));
+            double found = foundAngle(result, levels, creases.get(k));
+            if (Double.isNaN(found) || found == 0 || Math.signum(found) != creases.get(k)[4]) {
+                return k;
             }
         }
+        return -1;
+    }
+
+    private Refused refusal(ScriptFolding.Result result, int k) {
+        double[] c = creases.get(k);
+        double found = foundAngle(result, result.sheet().levels(), c);
+        return new Refused(String.format(Locale.ROOT, "cannot be folded one crease line at a time in this order: the crease"
+                + " (%.6g, %.6g)-(%.6g, %.6g) comes out %s, the file says %s", c[0], c[1], c[2], c[3],
+                Double.isNaN(found) || found == 0 ? "flat" : found > 0 ? "a valley" : "a mountain", c[4] > 0 ? "valley" : "mountain"));
+    }
+
+    /** The fold angle the folding made where crease {@code c} lies (0 where flat, NaN where no edge runs there). */
+    private double foundAngle(ScriptFolding.Result result, int[] levels, double[] c) {
+        Sheet sheet = result.sheet();
+        FoldFile.Folded folded = new FoldFile.Folded(sheet, result.frames());
+        double tolerance = 1e-7 * Math.hypot(length, width);
+        double mu = (c[0] + c[2]) / 2;
+        double mv = (c[1] + c[3]) / 2;
+        for (int f = 0; f < sheet.faceCount(); f++) {
+            int[] loop = sheet.loop(f);
+            for (int i = 0; i < loop.length; i++) {
+                int a = loop[i];
+                int b = loop[(i + 1) % loop.length];
+                int g = sheet.faceAcross(a, b);
+                if (g < 0 || !onSegment(sheet, a, b, mu, mv, tolerance)) {
+                    continue;
+                }
+                return sheet.crease(a, b) == null ? 0 : FoldFile.foldAngle(folded, levels, f, g, a, b);
+            }
+        }
+        return Double.NaN;
     }
 
     private static boolean onSegment(Sheet sheet, int a, int b, double u, double v, double tolerance) {

@@ -86,6 +86,22 @@ class FoldCommandTest {
                 assertEquals(CliTest.number(a, key), CliTest.number(b, key), 0, name + ": " + key);
             }
         }
+        // Two folds along the diagonals, the second through both layers: its line comes out a
+        // valley on one layer and a mountain on the other, and folds back the way that makes both.
+        Path diagonals = Files.writeString(dir.resolve("diagonals.fold"),
+                "paper square 10\nfold valley 180 paper 0 0 10 10 left\nfold valley 180 paper 10 0 5 5 right\n");
+        Path diagonalsPattern = dir.resolve("diagonals-cp.fold");
+        Path diagonalsReport = dir.resolve("diagonals.json");
+        assertEquals(0, CliTest.run("fold", diagonals.toString(), "--no-view", "--export-fold", diagonalsPattern.toString(),
+                "--report", diagonalsReport.toString()).code());
+        Path diagonalsBack = dir.resolve("diagonals-back.json");
+        CliTest.Run back = CliTest.run("fold", diagonalsPattern.toString(), "--no-view", "--export-fold",
+                dir.resolve("diagonals-again.fold").toString(), "--report", diagonalsBack.toString());
+        assertEquals(0, back.code(), back.err());
+        for (String key : new String[] {"mountains", "valleys", "maxLayers"}) {
+            assertEquals(CliTest.number(Files.readString(diagonalsReport), key), CliTest.number(Files.readString(diagonalsBack), key), 0,
+                    "diagonals: " + key);
+        }
         // A pattern whose creases cannot be folded line by line in the order of its edges (the
         // zig-zag's tucks come between its turns) is refused, saying so.
         Path zigzag = dir.resolve("zigzag.fold");

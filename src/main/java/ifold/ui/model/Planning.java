@@ -275,9 +275,12 @@ public final class Planning {
             }
             progress.check();
             progress.stage("folding " + parsed.steps().size() + " folds");
-            result = parsed.play(new long[parsed.steps().size()], ScriptFolding.DEFAULT_MAX_FACES);
             if (pattern != null) {
-                pattern.verify(result);
+                CreasePattern.Folding folding = pattern.fold(new long[parsed.steps().size()], ScriptFolding.DEFAULT_MAX_FACES);
+                parsed = folding.script(); // some lines may have been folded the other way
+                result = folding.result();
+            } else {
+                result = parsed.play(new long[parsed.steps().size()], ScriptFolding.DEFAULT_MAX_FACES);
             }
         } catch (IOException e) {
             throw new JobFailure(new Problem("script", ModelFile.readError(file, e)));
