@@ -113,7 +113,6 @@ final class DemoCommand implements Runnable {
             try {
                 result = Wrap.wrap(path, new int[] {0, 1}, options);
             } catch (Wrap.WrapException e) {
-                outputs.frameOptions.removeFolderIfUnused();
                 throw new UserError("cannot wrap this triangle: " + e.getMessage());
             }
             List<WrapGeometry> geometries = List.of(WrapGeometry.of(result.strips().get(0).sheet(), result.frames()));
@@ -197,7 +196,6 @@ final class DemoCommand implements Runnable {
             try {
                 gadget = TurnGadget.turn(options);
             } catch (FoldException e) {
-                outputs.frameOptions.removeFolderIfUnused();
                 throw new UserError("cannot make this turn: " + e.getMessage());
             }
             Wrap.Result result = gadget.wrap();

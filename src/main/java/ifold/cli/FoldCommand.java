@@ -88,10 +88,8 @@ final class FoldCommand implements Callable<Integer> {
         } catch (IOException e) {
             throw new UserError(script + ": cannot read: " + e.getMessage());
         } catch (CreasePattern.Refused e) {
-            outputs.frameOptions.removeFolderIfUnused();
             throw new UserError(script + ": " + e.getMessage());
         } catch (FoldScriptException e) {
-            outputs.frameOptions.removeFolderIfUnused();
             if (pattern != null) {
                 throw new UserError(script + ": cannot be folded one crease line at a time in this order: " + e.getMessage());
             }
