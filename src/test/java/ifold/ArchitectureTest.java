@@ -97,6 +97,8 @@ class ArchitectureTest {
                         ok = rule.contains("jackson");
                     } else if (name.startsWith("ch.randelshofer.fastdoubleparser.")) {
                         ok = rule.contains("fastdoubleparser");
+                    } else if (name.startsWith("org.tinfour.")) {
+                        ok = rule.contains("Tinfour");
                     } else if (name.startsWith("com.formdev.flatlaf.")) {
                         ok = rule.contains("FlatLaf");
                     } else if (name.startsWith("java.awt.") || name.startsWith("javax.swing.")) {

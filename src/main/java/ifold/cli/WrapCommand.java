@@ -3,6 +3,7 @@ package ifold.cli;
 import ifold.job.Json;
 import ifold.job.Reports;
 import ifold.job.Scenes;
+import ifold.job.WrapPath;
 import ifold.io.AtomicFile;
 import ifold.fold.FoldFile;
 import ifold.mesh.HalfedgeMesh;
@@ -97,7 +98,8 @@ final class WrapCommand implements Callable<Integer> {
             throw new UserError(model + ": no faces left to wrap");
         }
         long loadedAt = System.nanoTime();
-        HamiltonianRefinement.Result refinement = HamiltonianRefinement.refine(mesh);
+        WrapPath path = WrapPath.of(mesh);
+        HamiltonianRefinement.Result refinement = path.refinement();
         long refinedAt = System.nanoTime();
         Wrap.Result result;
         ProgressBar.WrapBar bar = ProgressBar.wrapping(err, refinement.mesh().faceCount());
@@ -120,7 +122,7 @@ final class WrapCommand implements Callable<Integer> {
         WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
         long analysedAt = System.nanoTime();
 
-        Map<String, Object> figures = Reports.wrap(model.toString(), mesh.faceCount(), loaded.repairs(), refinement, result, analysis);
+        Map<String, Object> figures = Reports.wrap(model.toString(), mesh.faceCount(), loaded.repairs(), path, result, analysis);
         List<Path> written = new ArrayList<>();
         try {
             if (exportObj != null) {
@@ -156,7 +158,7 @@ final class WrapCommand implements Callable<Integer> {
         for (Path file : written) {
             out.println("wrote " + file);
         }
-        out.println(summary(model, mesh, result, analysis));
+        out.println(summary(model, mesh, path, result, analysis));
         out.flush();
         if (outputs.frameOptions.frames != null || !outputs.noView) {
             show(mesh, result, geometries, written);
@@ -173,7 +175,7 @@ final class WrapCommand implements Callable<Integer> {
         outputs.show(scene, animation, model.getFileName() + ": " + result.strips().size() + (result.strips().size() == 1 ? " strip" : " strips"), 120, true, spec, 0);
     }
 
-    static String summary(Path model, HalfedgeMesh mesh, Wrap.Result result, WrapAnalysis analysis) {
+    static String summary(Path model, HalfedgeMesh mesh, WrapPath path, Wrap.Result result, WrapAnalysis analysis) {
         double length = 0;
         double longest = 0;
         for (Wrap.Strip strip : result.strips()) {
@@ -186,9 +188,12 @@ final class WrapCommand implements Callable<Integer> {
                 ? String.format(Locale.ROOT, "1 strip %.4g x %.4g (L/w %.1f)", length, result.width(), length / result.width())
                 : String.format(Locale.ROOT, "%d strips %.4g wide, %.4g long in all (the longest %.4g, L/w %.1f)", strips,
                         result.width(), length, longest, longest / result.width());
-        return String.format(Locale.ROOT, "%s: %d triangles -> %d on the path, %s, "
+        // Faces triangulated again say so: the path's triangles then come from those.
+        String prepared = path.preparation().prepared() == 0 ? "" : String.format(Locale.ROOT, " -> %d prepared (%d of %d planar regions)",
+                path.preparation().trianglesAfter(), path.preparation().prepared(), path.preparation().regions());
+        return String.format(Locale.ROOT, "%s: %d triangles%s -> %d on the path, %s, "
                 + "%d turn folds, %d gadget folds, %d edge crossings, %d tucks, %d layers at most (a stack of %d), "
-                + "paper efficiency %.3f, coverage %.3f, isometry error %.1e", model, mesh.faceCount(), result.mesh().faceCount(),
+                + "paper efficiency %.3f, coverage %.3f, isometry error %.1e", model, mesh.faceCount(), prepared, result.mesh().faceCount(),
                 paper, result.count(Wrap.Kind.ZIGZAG_TURN),
                 result.count(Wrap.Kind.TURN_GADGET), result.count(Wrap.Kind.EDGE_CROSSING), result.count(Wrap.Kind.TUCK),
                 analysis.maxLayers(), analysis.stackLevels(), analysis.surfaceArea() / analysis.paperArea(), analysis.coverage(),

@@ -93,10 +93,12 @@ public final class Reports {
      * @param inputTriangles the triangles of the model as built
      */
     public static Map<String, Object> wrap(String model, int inputTriangles, Map<Defect, Integer> repairs,
-            HamiltonianRefinement.Result refinement, Wrap.Result result, WrapAnalysis analysis) {
+            WrapPath path, Wrap.Result result, WrapAnalysis analysis) {
+        HamiltonianRefinement.Result refinement = path.refinement();
         Map<String, Object> figures = new LinkedHashMap<>();
         figures.put("model", model);
         figures.put("inputTriangles", inputTriangles);
+        figures.put("preparation", path.figures());
         figures.put("refinedTriangles", refinement.mesh().faceCount());
         figures.put("components", refinement.componentCount());
         figures.put("repairs", repairs(repairs));

@@ -29,9 +29,14 @@ public final class Solids {
 
     /** The unit cube [0,1]^3 with square faces. */
     public static PolygonSoup cube() {
+        return box(1, 1, 1);
+    }
+
+    /** A box of six quads, {@code a} × {@code b} × {@code c}, one corner at the origin: {@code box(1, 1, 1)} is the cube. */
+    public static PolygonSoup box(double a, double b, double c) {
         PolygonSoup soup = new PolygonSoup();
         for (int i = 0; i < 8; i++) {
-            soup.addVertex(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+            soup.addVertex((i & 1) * a, ((i >> 1) & 1) * b, ((i >> 2) & 1) * c);
         }
         int[][] quads = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
         for (int[] quad : quads) {

@@ -7,6 +7,7 @@ import ifold.job.Reports;
 import ifold.job.Scenes;
 import ifold.job.Scripts;
 import ifold.job.Triangles;
+import ifold.job.WrapPath;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.PolygonSoup;
@@ -228,8 +229,9 @@ public final class Planning {
         MeshBuilder.Result built = loaded.built();
         HalfedgeMesh mesh = built.mesh();
         progress.check();
-        progress.stage("refining " + mesh.faceCount() + " triangles");
-        HamiltonianRefinement.Result refinement = HamiltonianRefinement.refine(mesh);
+        progress.stage("preparing and refining " + mesh.faceCount() + " triangles");
+        WrapPath path = WrapPath.of(mesh);
+        HamiltonianRefinement.Result refinement = path.refinement();
         progress.check();
         progress.stage("wrapping " + refinement.mesh().faceCount() + " triangles");
         Wrap.Result result;
@@ -249,7 +251,7 @@ public final class Planning {
             geometries.add(WrapGeometry.of(strip.sheet(), result.frames()));
         }
         WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
-        Map<String, Object> figures = Reports.wrap(model.toString(), mesh.faceCount(), built.repairs(), refinement, result, analysis);
+        Map<String, Object> figures = Reports.wrap(model.toString(), mesh.faceCount(), built.repairs(), path, result, analysis);
         progress.check();
         int folds = result.steps().size() - result.count(Wrap.Kind.END);
         return paperPlan(job, model.getFileName() + ": " + result.strips().size() + " strip(s), " + folds + " folds",

@@ -1,0 +1,166 @@
+package ifold.refine;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import ifold.mesh.HalfedgeMesh;
+import ifold.mesh.MeshBuilder;
+import ifold.mesh.PolygonSoup;
+import ifold.mesh.Solids;
+import ifold.mesh.io.MeshReaders;
+import ifold.testing.SameSurface;
+import ifold.testing.SharedMeshes;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The faces of a model triangulated again for wrapping: checked against the model itself, not
+ * the preparation's own bookkeeping: the same surface (every new vertex on a face of the model,
+ * the same area, the same topology, the model's creases kept), and well-shaped triangles.
+ */
+class FacePreparationTest {
+    static HalfedgeMesh box(double a, double b, double c) throws Exception {
+        return build(Solids.box(a, b, c));
+    }
+
+    private static HalfedgeMesh build(PolygonSoup soup) throws Exception {
+        return MeshBuilder.build(soup, MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();
+    }
+
+    @Test
+    void wellShapedFacesAreLeftAsTheyAre() throws Exception {
+        HalfedgeMesh cube = build(Solids.cube());
+        FacePreparation.Result result = FacePreparation.prepare(cube);
+        assertEquals(6, result.regions());
+        assertEquals(0, result.prepared());
+        assertSame(cube, result.mesh());
+        assertEquals(45, result.minAngleBefore(), 1e-9);
+        assertNull(result.kept());
+    }
+
+    @Test
+    void aLongBoxBecomesARowOfWellShapedTriangles() throws Exception {
+        HalfedgeMesh box = box(100, 1, 1);
+        assertTrue(RefinementClaims.minAngleDegrees(box) < 1, "setup: the long faces are cut into 0.57° triangles");
+        FacePreparation.Result result = FacePreparation.prepare(box);
+        assertNull(result.kept());
+        assertEquals(6, result.regions());
+        assertEquals(4, result.prepared(), "the four long faces; the square ends are well shaped already");
+        assertTrue(result.minAngleAfter() >= FacePreparation.TARGET_ANGLE, "smallest angle " + result.minAngleAfter());
+        SameSurface.assertSameSurface(box, result.mesh());
+        // Well shaped and about as wide as the faces are high: a few hundred triangles, not thousands.
+        assertTrue(result.trianglesAfter() > 4 * 100 && result.trianglesAfter() < 4 * 400, "triangles " + result.trianglesAfter());
+    }
+
+    @Test
+    void anOpenThinRectangleKeepsItsOneBoundary() throws Exception {
+        PolygonSoup soup = new PolygonSoup();
+        soup.addVertex(0, 0, 0);
+        soup.addVertex(50, 0, 0);
+        soup.addVertex(50, 1, 0);
+        soup.addVertex(0, 1, 0);
+        soup.addFace(new int[] {0, 1, 2, 3}, 4, 0);
+        HalfedgeMesh sheet = build(soup);
+        FacePreparation.Result result = FacePreparation.prepare(sheet);
+        assertEquals(1, result.prepared());
+        assertTrue(result.minAngleAfter() >= FacePreparation.TARGET_ANGLE, "smallest angle " + result.minAngleAfter());
+        SameSurface.assertSameSurface(sheet, result.mesh());
+        assertEquals(102, boundaryLength(result.mesh()), 1e-9);
+    }
+
+    @Test
+    void aFaceWithAHoleKeepsItsHole() throws Exception {
+        // A 10 × 10 square with a 6 × 6 hole: the builder's triangles of the frame are long and thin.
+        PolygonSoup soup = new PolygonSoup();
+        double[][] corners = {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {2, 2}, {8, 2}, {8, 8}, {2, 8}};
+        for (double[] c : corners) {
+            soup.addVertex(c[0], c[1], 0);
+        }
+        int[][] quads = {{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+        for (int[] quad : quads) {
+            soup.addFace(quad, 4, 0);
+        }
+        HalfedgeMesh frame = build(soup);
+        assertTrue(RefinementClaims.minAngleDegrees(frame) < FacePreparation.TARGET_ANGLE, "setup: a thin triangle");
+        FacePreparation.Result result = FacePreparation.prepare(frame);
+        assertEquals(1, result.regions(), "one plane");
+        assertEquals(1, result.prepared());
+        SameSurface.assertSameSurface(frame, result.mesh());
+        assertEquals(40 + 24, boundaryLength(result.mesh()), 1e-9, "both boundaries, their lengths kept");
+        assertTrue(result.minAngleAfter() >= FacePreparation.TARGET_ANGLE, "smallest angle " + result.minAngleAfter());
+    }
+
+    @Test
+    void aSharpCornerIsLeftForTheWrapToHandle() throws Exception {
+        // A tetrahedron with a 2° spike: no triangulation widens its apex, and refining towards it
+        // would make triangles too small for any strip.
+        PolygonSoup soup = new PolygonSoup();
+        soup.addVertex(0, 0, 0);
+        soup.addVertex(1, 0, 0);
+        soup.addVertex(0.5, 0.8, 0);
+        soup.addVertex(0.5, 0.3, 30);
+        soup.addTriangle(0, 2, 1);
+        soup.addTriangle(0, 1, 3);
+        soup.addTriangle(1, 2, 3);
+        soup.addTriangle(2, 0, 3);
+        HalfedgeMesh spike = build(soup);
+        FacePreparation.Result result = FacePreparation.prepare(spike);
+        assertEquals(0, result.prepared());
+        assertSame(spike, result.mesh());
+    }
+
+    @Test
+    void aFaceTooThinToPrepareKeepsTheModelsTriangles() throws Exception {
+        HalfedgeMesh box = box(1e7, 1, 1);
+        FacePreparation.Result result = FacePreparation.prepare(box);
+        assertSame(box, result.mesh());
+        assertNotNull(result.kept());
+        assertTrue(result.kept().contains("too thin"), result.kept());
+    }
+
+    @Test
+    void theSharedPolyhedraWithThinFacesArePreparedIntoTheSameSurfaces() throws Exception {
+        assumeTrue(SharedMeshes.present(), "../shared/meshes is not here");
+        for (String name : List.of("long_box.off", "square_frame.off", "t_prism.off", "house.off", "hex_prism.off")) {
+            Path file = SharedMeshes.ROOT.resolve("polyhedra").resolve(name);
+            assumeTrue(Files.exists(file), file + " is not here");
+            HalfedgeMesh mesh = build(MeshReaders.read(file));
+            FacePreparation.Result result = FacePreparation.prepare(mesh);
+            assertNull(result.kept(), name);
+            SameSurface.assertSameSurface(mesh, result.mesh());
+            assertTrue(result.minAngleAfter() >= Math.min(FacePreparation.TARGET_ANGLE, result.minAngleBefore()),
+                    name + ": smallest angle " + result.minAngleBefore() + " -> " + result.minAngleAfter());
+        }
+    }
+
+    private static double boundaryLength(HalfedgeMesh mesh) {
+        List<Integer> boundary = new ArrayList<>();
+        for (int h = 0; h < mesh.halfedgeCount(); h++) {
+            if (mesh.isBoundary(h)) {
+                boundary.add(h);
+            }
+        }
+        double length = 0;
+        for (int h : boundary) {
+            length += length(mesh, h);
+        }
+        return length;
+    }
+
+    private static double length(HalfedgeMesh mesh, int h) {
+        int a = mesh.fromVertex(h);
+        int b = mesh.toVertex(h);
+        return Math.sqrt(sq(mesh.x(a) - mesh.x(b)) + sq(mesh.y(a) - mesh.y(b)) + sq(mesh.z(a) - mesh.z(b)));
+    }
+
+    private static double sq(double x) {
+        return x * x;
+    }
+}
