@@ -99,7 +99,7 @@ public final class PaperCollisions {
      * @param modelCrossings pairs of a paper triangle and a model triangle that cross (or overlap in one plane)
      * @param pointsInside paper vertices inside the solid
      * @param deepest the deepest crossing of paper with paper, null when none
-     * @param deepestIntoModel the deepest crossing of paper with the model, null when none
+     * @param deepestIntoModel the deepest crossing of paper with the model (not in its plane), null when none
      * @param crossings the first crossings of paper with paper (coplanar ones too) in order of their faces
      * @param intoModel the first crossings of paper with the model in order of their faces
      * @param inside the first paper vertices inside the solid
@@ -269,7 +269,8 @@ public final class PaperCollisions {
                     // The deepest, and of equal depths the one of the first triangles.
                     if (model) {
                         intoModel++;
-                        if (deepestIntoModel == null || depth > deepestIntoModel.depth() || depth == deepestIntoModel.depth() && key < deepestModelKey) {
+                        boolean deeper = deepestIntoModel == null || depth > deepestIntoModel.depth() || depth == deepestIntoModel.depth() && key < deepestModelKey;
+                        if (!worker.coplanar(f) && deeper) {
                             deepestIntoModel = crossing(worker, f);
                             deepestModelKey = key;
                         }

@@ -272,6 +272,20 @@ class PaperCollisionsTest {
                 + "), 1 paper point inside the solid"), pushed.summary());
     }
 
+    /** Paper lying in the cube's top itself, with no gap: it overlaps the surface in one plane, a collision with the model. */
+    @Test
+    void aSheetLyingInTheSurfaceOverlapsIt() {
+        Result result = PaperCollisions.check("o strip-1\nv 0.2 0.2 1\nv 0.8 0.2 1\nv 0.8 0.8 1\nv 0.2 0.8 1\ng paper\nf 1 2 3 4\n", T, CUBE);
+        assertEquals(0, result.crossingPairs());
+        assertTrue(result.modelCrossings() >= 2, result::summary);
+        for (Crossing c : result.intoModel()) {
+            assertTrue(c.coplanar(), c::toString);
+            assertEquals(0, c.depth());
+        }
+        assertNull(result.deepestIntoModel(), "lying in the surface is no depth");
+        assertEquals(0, result.pointsInside(), "on the surface is not inside");
+    }
+
     /** Faces that share an edge, flat or folded to any angle short of flat onto each other, touch only there. */
     @ParameterizedTest
     @ValueSource(strings = {"0.5 -1 0", "0.5 -0.5 0.7", "0.5 0 1", "0.5 0.9 0.2", "0.5 1 0.01"})
