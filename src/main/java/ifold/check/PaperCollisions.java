@@ -113,8 +113,9 @@ public final class PaperCollisions {
         }
 
         /**
-         * One line for people: "collisions: 4772 pairs (2201 with caps, 0 coplanar), deepest
-         * 4.000 T (faces 3 and 8642), 0 paper-model crossings, 0 paper points inside the solid".
+         * One line for people, the cube's wrap for one: "collisions: 8014 pairs (8014 with caps, 0
+         * coplanar), deepest 4.000 T (faces 3 and 8643), 0 paper-model crossings, 0 paper points
+         * inside the solid" (depths to four digits; the record holds them exactly).
          */
         public String summary() {
             StringBuilder line = new StringBuilder("collisions: ").append(crossingPairs).append(crossingPairs == 1 ? " pair" : " pairs");
