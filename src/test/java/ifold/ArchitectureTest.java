@@ -14,7 +14,7 @@ import org.junit.jupiter.api.Test;
 /** The package layout is the architecture: the geometry core never reaches GL, AWT or the shells. */
 class ArchitectureTest {
     private static final Path SOURCES = Path.of("src", "main", "java", "ifold");
-    private static final List<String> CORE = List.of("mesh", "geom", "refine", "sheet", "wrap", "script", "fold", "scene", "image", "io", "job");
+    private static final List<String> CORE = List.of("mesh", "geom", "refine", "sheet", "wrap", "script", "fold", "scene", "image", "io", "job", "check");
     private static final List<String> FORBIDDEN = List.of("com.jogamp", "java.awt", "javax.swing", "javax.imageio",
             "ifold.render", "ifold.cli", "ifold.view", "ifold.ui", "com.formdev");
 
