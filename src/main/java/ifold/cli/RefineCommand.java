@@ -2,9 +2,11 @@ package ifold.cli;
 
 import ifold.job.Json;
 import ifold.job.Reports;
+import ifold.job.WrapPath;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.io.MeshWriters;
+import ifold.refine.FacePreparation;
 import ifold.refine.HamiltonianRefinement;
 import ifold.refine.RefinementClaims;
 import java.io.IOException;
@@ -39,6 +41,10 @@ final class RefineCommand implements Callable<Integer> {
     @Option(names = "--strict", description = "refuse defective input instead of repairing it")
     boolean strict;
 
+    @Option(names = "--prepare", description = "first triangulate again the faces whose triangles have an angle under "
+            + FacePreparation.TARGET_ANGLE + " degrees, as ifold wrap does: the refinement is then the path the wrap follows")
+    boolean prepare;
+
     @Override
     public Integer call() throws IOException {
         OutputFiles.checkWritableFile(output, "-o", ".off", ".obj");
@@ -50,7 +56,8 @@ final class RefineCommand implements Callable<Integer> {
             throw new UserError(model + ": no faces left to refine");
         }
         long start = System.nanoTime();
-        HamiltonianRefinement.Result result = HamiltonianRefinement.refine(mesh);
+        WrapPath path = prepare ? WrapPath.of(mesh) : null;
+        HamiltonianRefinement.Result result = prepare ? path.refinement() : HamiltonianRefinement.refine(mesh);
         long refined = System.nanoTime();
         try {
             MeshWriters.write(result.mesh(), output);
@@ -67,6 +74,9 @@ final class RefineCommand implements Callable<Integer> {
             report.put("input", model.toString());
             report.put("output", output.toString());
             report.put("inputTriangles", mesh.faceCount());
+            if (prepare) {
+                report.put("preparation", path.figures());
+            }
             report.put("components", result.componentCount());
             report.put("outputTriangles", result.mesh().faceCount());
             report.put("outputVertices", result.mesh().vertexCount());
@@ -81,8 +91,11 @@ final class RefineCommand implements Callable<Integer> {
             report.put("seconds", seconds);
             out.print(Json.write(report));
         } else {
-            out.printf(java.util.Locale.ROOT, "%s: %d triangles in %d component(s) -> %d triangles (5n-2c), min angle %.3f -> %.3f degrees%n",
-                    model, mesh.faceCount(), result.componentCount(), result.mesh().faceCount(), minIn, minOut);
+            String prepared = !prepare ? "" : String.format(java.util.Locale.ROOT, " -> %d prepared (%d of %d planar regions, min angle %.3f)",
+                    path.preparation().trianglesAfter(), path.preparation().prepared(), path.preparation().regions(),
+                    path.preparation().minAngleAfter());
+            out.printf(java.util.Locale.ROOT, "%s: %d triangles in %d component(s)%s -> %d triangles (5n-2c), min angle %.3f -> %.3f degrees%n",
+                    model, mesh.faceCount(), result.componentCount(), prepared, result.mesh().faceCount(), minIn, minOut);
             out.println("wrote " + output + " (faces in path order)");
         }
         out.flush();

@@ -47,7 +47,7 @@ import org.tinfour.standard.IncrementalTin;
  */
 public final class FacePreparation {
     /** The smallest angle the preparation aims for, in degrees (Ruppert's algorithm is proven to about 20.7°). */
-    public static final double TARGET_ANGLE = 20;
+    public static final int TARGET_ANGLE = 20;
 
     /** Normals of coplanar neighbours agree to this (1 - cos of the angle between them). */
     private static final double COPLANAR_COSINE = 1e-12;

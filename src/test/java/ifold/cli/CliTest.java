@@ -132,6 +132,20 @@ class CliTest {
     }
 
     @Test
+    void refinePreparesTheFacesAsTheWrapDoesOnlyWhenAsked() throws Exception {
+        Path model = write(Solids.box(30, 1, 1), "box.off");
+        Run plain = run("refine", model.toString(), "-o", dir.resolve("plain.off").toString());
+        assertEquals(0, plain.code(), plain.err());
+        assertEquals(58, MeshReaders.read(dir.resolve("plain.off")).faceCount(), "the seed's refinement: 5n - 2");
+        Run prepared = run("refine", model.toString(), "-o", dir.resolve("prepared.off").toString(), "--prepare", "--json");
+        assertEquals(0, prepared.code(), prepared.err());
+        int triangles = MeshReaders.read(dir.resolve("prepared.off")).faceCount();
+        assertTrue(prepared.out().contains("\"preparedRegions\": 4"), prepared.out());
+        assertTrue(prepared.out().contains("\"outputTriangles\": " + triangles), prepared.out());
+        assertTrue(triangles > 58 * 5, "the long faces cut into well-shaped triangles: " + triangles);
+    }
+
+    @Test
     void repairsAreReportedOnStderrAndStrictRefuses() throws Exception {
         PolygonSoup soup = Solids.tetrahedron();
         soup.addTriangle(0, 1, 2); // a duplicate face
