@@ -100,13 +100,14 @@ final class FoldCommand implements Callable<Integer> {
         Map<String, Object> figures = Reports.script(result, folded);
         figures.put("timing", timing(nanosPerFold, result.steps()));
         outputs.exportFold(List.of(FoldFile.Folded.ofScript(parsed, result, maxFaces)), "ifold fold " + script, figures, out);
-        outputs.write(List.of(folded), "iFold fold script " + script + ": " + result.steps().size() + " folds, thickness "
+        outputs.write(List.of(folded), result.sheet().thickness(), "iFold fold script " + script + ": " + result.steps().size() + " folds, thickness "
                 + result.sheet().thickness(), figures, out);
         int folds = result.steps().size();
         int creases = ((Number) figures.get("creases")).intValue();
         out.printf(Locale.ROOT, "%s: %d %s, %d layers at most, %d %s, isometry error %.1e%n", script.getFileName(), folds,
                 folds == 1 ? "fold" : "folds", figures.get("maxLayers"), creases, creases == 1 ? "crease" : "creases",
                 (Double) figures.get("isometryError"));
+        outputs.printCollisions(out);
         out.flush();
 
         Scene scene = new Scene();

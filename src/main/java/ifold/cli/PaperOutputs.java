@@ -1,7 +1,10 @@
 package ifold.cli;
 
+import ifold.check.PaperCollisions;
+import ifold.job.Collisions;
 import ifold.job.Json;
 import ifold.io.AtomicFile;
+import ifold.mesh.IndexedPolygons;
 import ifold.fold.FoldFile;
 import ifold.render.RenderUnavailableException;
 import ifold.render.ViewerWindow;
@@ -103,14 +106,18 @@ final class PaperOutputs {
         }
     }
 
-    /** Writes folded paper (a fold script's) as OBJ under {@code header}, and its figures as JSON, as asked. */
-    void write(List<WrapGeometry> folded, String header, Map<String, Object> figures, PrintWriter out) {
+    /**
+     * Writes folded paper (a fold script's, {@code thickness} thick, on planes of no model) as
+     * OBJ under {@code header}, and its figures as JSON with its collisions, as asked.
+     */
+    void write(List<WrapGeometry> folded, double thickness, String header, Map<String, Object> figures, PrintWriter out) {
         try {
             if (exportObj != null) {
                 WrapExport.writeObj(exportObj, header, folded);
                 written.add(exportObj);
                 out.println("wrote " + exportObj);
             }
+            checkCollisions(folded, thickness, null, figures);
             writeReport(figures, out);
         } catch (IOException e) {
             discardWritten();
@@ -126,10 +133,37 @@ final class PaperOutputs {
                 written.add(exportObj);
                 out.println("wrote " + exportObj);
             }
+            checkCollisions(geometries, result.thickness(), result.mesh(), figures);
             writeReport(figures, out);
         } catch (IOException e) {
             discardWritten();
             throw new UserError("cannot write: " + e.getMessage());
+        }
+    }
+
+    /** The collision check's line, once a run that exports paper has made it; null before. */
+    private String collisions;
+
+    /**
+     * Where paper is exported (an OBJ or a report), checks it for collisions with the
+     * independent checker, reading the OBJ written (or its text), and adds {@code collisions}
+     * to the figures; {@code model} is the surface it rests on, or null for none.
+     */
+    void checkCollisions(List<WrapGeometry> strips, double thickness, IndexedPolygons model, Map<String, Object> figures)
+            throws IOException {
+        if (exportObj == null && report == null) {
+            return;
+        }
+        PaperCollisions.Result result = Collisions.addTo(figures, strips, thickness, model, exportObj);
+        if (result != null) {
+            collisions = result.summary();
+        }
+    }
+
+    /** Prints the collision check's line, where one was made. */
+    void printCollisions(PrintWriter out) {
+        if (collisions != null) {
+            out.println(collisions);
         }
     }
 

@@ -138,13 +138,16 @@ final class WrapCommand implements Callable<Integer> {
                 outputs.exportFold(sheets, "ifold wrap " + model, figures, new PrintWriter(java.io.Writer.nullWriter()));
                 written.add(outputs.exportFold);
             }
+            long exportedAt = System.nanoTime();
+            outputs.checkCollisions(geometries, result.thickness(), mesh, figures);
             long writtenAt = System.nanoTime();
             Map<String, Object> seconds = new LinkedHashMap<>();
             seconds.put("load", (loadedAt - started) * 1e-9);
             seconds.put("refine", (refinedAt - loadedAt) * 1e-9);
             seconds.put("wrap", (wrappedAt - refinedAt) * 1e-9);
             seconds.put("analyse", (analysedAt - wrappedAt) * 1e-9);
-            seconds.put("export", (writtenAt - analysedAt) * 1e-9);
+            seconds.put("export", (exportedAt - analysedAt) * 1e-9);
+            seconds.put("collisions", (writtenAt - exportedAt) * 1e-9);
             figures.put("seconds", seconds);
             if (report != null) {
                 String json = Json.write(figures);
@@ -159,6 +162,7 @@ final class WrapCommand implements Callable<Integer> {
             out.println("wrote " + file);
         }
         out.println(summary(model, mesh, path, result, analysis));
+        outputs.printCollisions(out);
         out.flush();
         if (outputs.frameOptions.frames != null || !outputs.noView) {
             show(mesh, result, geometries, written);

@@ -2,6 +2,8 @@ package ifold.wrap;
 
 import ifold.io.AtomicFile;
 import java.io.BufferedWriter;
+import java.io.StringWriter;
+import java.io.UncheckedIOException;
 import java.io.IOException;
 import java.io.OutputStreamWriter;
 import java.io.Writer;
@@ -29,33 +31,48 @@ public final class WrapExport {
     public static void writeObj(Path file, String header, List<WrapGeometry> strips) throws IOException {
         AtomicFile.write(file, stream -> {
             Writer out = new BufferedWriter(new OutputStreamWriter(stream, StandardCharsets.UTF_8), 1 << 16);
-            out.write("# " + header.replace('\n', ' ') + "\n");
-            out.write("# vt holds each vertex's paper coordinates (u, v) on its strip; group cap holds the bent paper at folds\n");
-            int base = 0;
-            for (int k = 0; k < strips.size(); k++) {
-                WrapGeometry strip = strips.get(k);
-                out.write("o strip-" + (k + 1) + "\n");
-                double[] xyz = strip.xyz();
-                double[] uv = strip.uv();
-                StringBuilder line = new StringBuilder(64);
-                for (int v = 0; v < strip.vertexCount(); v++) {
-                    line.setLength(0);
-                    line.append("v ").append(xyz[3 * v]).append(' ').append(xyz[3 * v + 1]).append(' ').append(xyz[3 * v + 2]).append('\n');
-                    out.write(line.toString());
-                }
-                for (int v = 0; v < strip.vertexCount(); v++) {
-                    line.setLength(0);
-                    line.append("vt ").append(uv[2 * v]).append(' ').append(uv[2 * v + 1]).append('\n');
-                    out.write(line.toString());
-                }
-                out.write("g paper\n");
-                writeFaces(out, strip.paperFaces(), base);
-                out.write("g cap\n");
-                writeFaces(out, strip.caps(), base);
-                base += strip.vertexCount();
-            }
-            out.flush();
+            writeObj(out, header, strips);
         }, true);
+    }
+
+    /** The text {@link #writeObj(Path, String, List)} writes, for a check that reads it without a file. */
+    public static String objText(String header, List<WrapGeometry> strips) {
+        StringWriter text = new StringWriter();
+        try {
+            writeObj(text, header, strips);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e); // a StringWriter does not fail
+        }
+        return text.toString();
+    }
+
+    private static void writeObj(Writer out, String header, List<WrapGeometry> strips) throws IOException {
+        out.write("# " + header.replace('\n', ' ') + "\n");
+        out.write("# vt holds each vertex's paper coordinates (u, v) on its strip; group cap holds the bent paper at folds\n");
+        int base = 0;
+        for (int k = 0; k < strips.size(); k++) {
+            WrapGeometry strip = strips.get(k);
+            out.write("o strip-" + (k + 1) + "\n");
+            double[] xyz = strip.xyz();
+            double[] uv = strip.uv();
+            StringBuilder line = new StringBuilder(64);
+            for (int v = 0; v < strip.vertexCount(); v++) {
+                line.setLength(0);
+                line.append("v ").append(xyz[3 * v]).append(' ').append(xyz[3 * v + 1]).append(' ').append(xyz[3 * v + 2]).append('\n');
+                out.write(line.toString());
+            }
+            for (int v = 0; v < strip.vertexCount(); v++) {
+                line.setLength(0);
+                line.append("vt ").append(uv[2 * v]).append(' ').append(uv[2 * v + 1]).append('\n');
+                out.write(line.toString());
+            }
+            out.write("g paper\n");
+            writeFaces(out, strip.paperFaces(), base);
+            out.write("g cap\n");
+            writeFaces(out, strip.caps(), base);
+            base += strip.vertexCount();
+        }
+        out.flush();
     }
 
     private static void writeFaces(Writer out, List<int[]> faces, int base) throws IOException {

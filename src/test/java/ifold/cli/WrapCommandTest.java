@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import ifold.check.PaperCollisions;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
@@ -35,6 +36,19 @@ class WrapCommandTest {
         ObjReadBack back = ObjReadBack.read(obj);
         assertTrue(back.paperFaces() > 0 && back.capFaces() > 0, "paper and caps written");
         assertTrue(Files.readString(obj).contains("\no strip-1\n"), "the strip is an object of its own");
+        // The collisions reported are the checker's on the file written, and its line is printed.
+        PaperCollisions.Result check = PaperCollisions.check(Files.readString(obj), CliTest.number(json, "thickness"),
+                new double[0]);
+        assertEquals(check.crossingPairs(), CliTest.number(json, "pairs"), 0, json);
+        assertEquals(check.deepest() == null ? 0 : check.deepest().depth(), CliTest.number(json, "deepest"), 0, json);
+        assertTrue(run.out().contains("\ncollisions: " + check.crossingPairs() + " pairs"), run.out());
+    }
+
+    @Test
+    void aRunThatExportsNothingChecksNothing() throws Exception {
+        CliTest.Run run = CliTest.run("wrap", "models/tetrahedron.off", "--no-view");
+        assertEquals(0, run.code(), run.err());
+        assertFalse(run.out().contains("collisions"), run.out());
     }
 
     @Test

@@ -3,6 +3,7 @@ package ifold.ui.model;
 import ifold.fold.CreasePattern;
 import ifold.fold.FoldFile;
 import ifold.geom.Triangle;
+import ifold.job.Collisions;
 import ifold.job.Reports;
 import ifold.job.Scenes;
 import ifold.job.Scripts;
@@ -196,6 +197,7 @@ public final class Planning {
         List<WrapGeometry> geometries = List.of(WrapGeometry.of(result.strips().get(0).sheet(), result.frames()));
         WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
         Map<String, Object> figures = Reports.zigzag(job.triangle(), job.start(), job.end(), result, analysis);
+        Collisions.addTo(figures, geometries, result.thickness(), result.mesh());
         progress.check();
         String source = "demo zigzag --triangle " + job.triangle();
         return paperPlan(job, "zig-zag: " + figures.get("folds") + " folds", result, geometries, figures,
@@ -215,6 +217,7 @@ public final class Planning {
         List<WrapGeometry> geometries = List.of(WrapGeometry.of(gadget.sheet(), result.frames()));
         WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
         Map<String, Object> figures = Reports.turn(options, gadget, analysis);
+        Collisions.addTo(figures, geometries, result.thickness(), result.mesh());
         progress.check();
         String source = String.format(Locale.ROOT, "demo turn --angle %s", options.angle());
         return paperPlan(job, String.format(Locale.ROOT, "turn gadget: %.4g degrees", options.angle()), result, geometries, figures, 6,
@@ -252,6 +255,7 @@ public final class Planning {
         }
         WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
         Map<String, Object> figures = Reports.wrap(model.toString(), mesh.faceCount(), built.repairs(), path, result, analysis);
+        Collisions.addTo(figures, geometries, result.thickness(), mesh);
         progress.check();
         int folds = result.steps().size() - result.count(Wrap.Kind.END);
         return paperPlan(job, model.getFileName() + ": " + result.strips().size() + " strip(s), " + folds + " folds",
@@ -297,6 +301,7 @@ public final class Planning {
         progress.check();
         WrapGeometry folded = WrapGeometry.of(result.sheet(), result.frames());
         Map<String, Object> figures = Reports.script(result, folded);
+        Collisions.addTo(figures, List.of(folded), result.sheet().thickness(), null);
         Plan.Shown shown = scriptScene(result, folded);
         List<Fold> folds = new ArrayList<>();
         for (int k = 0; k < result.steps().size(); k++) {

@@ -1,0 +1,99 @@
+package ifold.job;
+
+import ifold.check.PaperCollisions;
+import ifold.mesh.IndexedPolygons;
+import ifold.wrap.WrapExport;
+import ifold.wrap.WrapGeometry;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * The collision check of folded paper, as the report gives it: the independent checker
+ * ({@link PaperCollisions}) reads the paper's OBJ, the file exported where there is one, else
+ * the same text made in memory, never the engine's own faces.
+ */
+public final class Collisions {
+    private Collisions() {
+    }
+
+    /**
+     * Checks {@code strips} of paper {@code thickness} thick, against {@code model}'s triangles
+     * where there is a model (null for a fold script's planes); null for paper of no thickness,
+     * whose crossings have no measure.
+     *
+     * @param exported the OBJ written of these strips, or null to make its text here
+     */
+    public static PaperCollisions.Result check(List<WrapGeometry> strips, double thickness, IndexedPolygons model, Path exported)
+            throws IOException {
+        if (!(thickness > 0)) {
+            return null;
+        }
+        CharSequence text = exported != null ? Files.readString(exported) : WrapExport.objText("collision check", strips);
+        return PaperCollisions.check(text, thickness, model == null ? new double[0] : triangles(model));
+    }
+
+    /**
+     * Checks the strips as {@link #check} does and adds the figures to a report's as
+     * {@code collisions}, where there is a check: what both front ends report.
+     *
+     * @return the check, or null for paper of no thickness
+     */
+    public static PaperCollisions.Result addTo(Map<String, Object> figures, List<WrapGeometry> strips, double thickness,
+            IndexedPolygons model, Path exported) throws IOException {
+        PaperCollisions.Result result = check(strips, thickness, model, exported);
+        if (result != null) {
+            figures.put("collisions", figures(result));
+        }
+        return result;
+    }
+
+    /** As {@link #addTo(Map, List, double, IndexedPolygons, Path)} on the OBJ's text made in memory. */
+    public static PaperCollisions.Result addTo(Map<String, Object> figures, List<WrapGeometry> strips, double thickness,
+            IndexedPolygons model) {
+        try {
+            return addTo(figures, strips, thickness, model, null);
+        } catch (IOException e) {
+            throw new java.io.UncheckedIOException(e); // no file is read
+        }
+    }
+
+    /** The report's figures of a check: pairs crossing (with caps, in one plane), the deepest in T and its faces, the model crossed, points inside. */
+    public static Map<String, Object> figures(PaperCollisions.Result result) {
+        Map<String, Object> figures = new LinkedHashMap<>();
+        figures.put("pairs", result.crossingPairs());
+        figures.put("capPairs", result.capPairs());
+        figures.put("coplanarPairs", result.coplanarPairs());
+        figures.put("deepest", result.deepest() == null ? 0.0 : result.deepest().depth());
+        if (result.deepest() != null) {
+            figures.put("deepestFaces", List.of(result.deepest().faceA(), result.deepest().faceB()));
+        }
+        figures.put("modelCrossings", result.modelCrossings());
+        figures.put("pointsInside", result.pointsInside());
+        return figures;
+    }
+
+    private static double[] triangles(IndexedPolygons model) {
+        int count = 0;
+        for (int f = 0; f < model.faceCount(); f++) {
+            count += model.faceSize(f) - 2;
+        }
+        double[] triangles = new double[9 * count];
+        int t = 0;
+        for (int f = 0; f < model.faceCount(); f++) {
+            for (int k = 1; k + 1 < model.faceSize(f); k++) { // a fan: the model's faces are convex where the wrap has them
+                int[] corners = {model.faceVertex(f, 0), model.faceVertex(f, k), model.faceVertex(f, k + 1)};
+                for (int c = 0; c < 3; c++) {
+                    for (int axis = 0; axis < 3; axis++) {
+                        triangles[9 * t + 3 * c + axis] = model.coordinate(corners[c], axis);
+                    }
+                }
+                t++;
+            }
+        }
+        return triangles;
+    }
+}
