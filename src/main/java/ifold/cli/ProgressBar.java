@@ -4,6 +4,7 @@ import ifold.image.FrameSink;
 import ifold.wrap.Wrap;
 import java.io.PrintWriter;
 import java.util.Locale;
+import java.util.function.LongSupplier;
 
 /**
  * The progress of a frame export on stderr: a bar redrawn in place on a terminal, a line every
@@ -21,34 +22,39 @@ final class ProgressBar implements FrameSink.Progress {
     }
 
     /**
-     * The progress of a long wrap, triangle by triangle, as a bar on a terminal (and nothing in
-     * a log or a pipe, where the wrap's one summary line says it all).
+     * The progress of a long wrap, triangle by triangle, as a bar on a terminal once the wrap has
+     * taken {@link #LONG_WRAP_SECONDS} (and nothing in a log or a pipe, where the wrap's one
+     * summary line says it all).
      */
-    static WrapBar wrapping(PrintWriter out, int triangles) {
-        return wrapping(out, triangles, ON_TERMINAL);
+    static WrapBar wrapping(PrintWriter out) {
+        return wrapping(out, ON_TERMINAL, System::nanoTime);
     }
 
-    /** {@link #wrapping(PrintWriter, int)}, as on a terminal or not. */
-    static WrapBar wrapping(PrintWriter out, int triangles, boolean terminal) {
-        return new WrapBar(out, terminal && triangles >= LONG_WRAP);
+    /** {@link #wrapping(PrintWriter)}, as on a terminal or not, timed by {@code nanoClock}. */
+    static WrapBar wrapping(PrintWriter out, boolean terminal, LongSupplier nanoClock) {
+        return new WrapBar(out, terminal, nanoClock);
     }
 
     /** A wrap's bar: {@link #wipe()} clears it, however the wrap ended, before anything else is printed. */
     static final class WrapBar implements Wrap.Watcher {
         private static final int WIDTH = 30;
         private final PrintWriter out;
-        private final boolean shown;
+        private final boolean terminal;
+        private final LongSupplier clock;
+        private final long start;
         private int lastFilled = -1;
 
-        private WrapBar(PrintWriter out, boolean shown) {
+        private WrapBar(PrintWriter out, boolean terminal, LongSupplier clock) {
             this.out = out;
-            this.shown = shown;
+            this.terminal = terminal;
+            this.clock = clock;
+            this.start = clock.getAsLong();
         }
 
         @Override
         public void wrapped(int done, int total) {
             int filled = (int) ((long) WIDTH * done / Math.max(1, total));
-            if (!shown || filled == lastFilled) {
+            if (!terminal || filled == lastFilled || (lastFilled < 0 && clock.getAsLong() - start < LONG_WRAP_SECONDS * 1_000_000_000L)) {
                 return;
             }
             lastFilled = filled;
@@ -62,15 +68,15 @@ final class ProgressBar implements FrameSink.Progress {
         }
 
         void wipe() {
-            if (shown && lastFilled >= 0) {
+            if (lastFilled >= 0) {
                 out.print("\r" + " ".repeat(WIDTH + 40) + "\r");
                 out.flush();
             }
         }
     }
 
-    /** Triangles on the path from which a wrap takes long enough (a second or more) to show its progress. */
-    static final int LONG_WRAP = 1000;
+    /** Seconds after which a wrap still running shows its progress. */
+    static final int LONG_WRAP_SECONDS = 2;
 
     @Override
     public void framesDone(int done, int total) {

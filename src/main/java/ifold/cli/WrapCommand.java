@@ -37,7 +37,8 @@ import picocli.CommandLine.Model.CommandSpec;
 /** {@code ifold wrap MODEL}: one strip of paper per component, folded over every triangle of the Hamiltonian path. */
 @Command(name = "wrap", mixinStandardHelpOptions = true,
         description = {"Wraps a model in one strip of paper per component, the zig-zag way along the Hamiltonian path of its "
-            + "refinement (Demaine, Demaine and Mitchell): passes across each triangle, a turn gadget and a fold over the "
+            + "refinement (Demaine, Demaine and Mitchell), its faces first prepared into well-shaped triangles (a planar face "
+            + "whose triangles have an angle under 20 degrees is triangulated again): passes across each triangle, a turn gadget and a fold over the "
             + "shared edge to the next, the excess of every triangle tucked under it. An open surface is covered on the side "
             + "its faces face. The animation plays the folds with the camera following the strip, then turns once around "
             + "the model; it takes two minutes unless --seconds says otherwise. In a window where there is a display; as "
@@ -102,7 +103,7 @@ final class WrapCommand implements Callable<Integer> {
         HamiltonianRefinement.Result refinement = path.refinement();
         long refinedAt = System.nanoTime();
         Wrap.Result result;
-        ProgressBar.WrapBar bar = ProgressBar.wrapping(err, refinement.mesh().faceCount());
+        ProgressBar.WrapBar bar = ProgressBar.wrapping(err);
         try {
             result = Wrap.wrap(refinement, options, bar);
         } catch (ParameterException e) {

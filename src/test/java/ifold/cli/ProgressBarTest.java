@@ -13,7 +13,11 @@ class ProgressBarTest {
     @Test
     void aLongWrapOnATerminalShowsABarAndWipesIt() {
         StringWriter text = new StringWriter();
-        ProgressBar.WrapBar bar = ProgressBar.wrapping(new PrintWriter(text), 2000, true);
+        long[] now = {0};
+        ProgressBar.WrapBar bar = ProgressBar.wrapping(new PrintWriter(text), true, () -> now[0]);
+        bar.wrapped(0, 2000);
+        assertEquals("", text.toString(), "nothing in the first seconds");
+        now[0] = (long) (ProgressBar.LONG_WRAP_SECONDS * 1e9);
         for (int done = 1; done <= 2000; done++) {
             bar.wrapped(done, 2000);
         }
@@ -31,8 +35,12 @@ class ProgressBarTest {
     void noBarInALogNorForAShortWrap() {
         for (boolean terminal : new boolean[] {false, true}) {
             StringWriter text = new StringWriter();
-            int triangles = terminal ? ProgressBar.LONG_WRAP - 1 : 100_000;
-            ProgressBar.WrapBar bar = ProgressBar.wrapping(new PrintWriter(text), triangles, terminal);
+            int triangles = 100_000;
+            // On a terminal, a wrap that ends before the seconds are up; in a log, one that takes minutes.
+            long seconds = terminal ? ProgressBar.LONG_WRAP_SECONDS - 1 : 600;
+            long[] now = {0};
+            ProgressBar.WrapBar bar = ProgressBar.wrapping(new PrintWriter(text), terminal, () -> now[0]);
+            now[0] = seconds * 1_000_000_000L;
             bar.wrapped(1, triangles);
             bar.wrapped(triangles, triangles);
             bar.wipe();

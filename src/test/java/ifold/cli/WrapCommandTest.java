@@ -89,11 +89,12 @@ class WrapCommandTest {
         Path obj = dir.resolve("r.obj");
         String[] outputs = {"--no-view", "--report", report.toString(), "--export-obj", obj.toString()};
         assertOptionError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--max-faces", "0"}, outputs)), "--max-faces");
-        // The cube's default wrap takes nearly 300 passes and makes 2,686 faces.
-        CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--max-faces", "100"}, outputs)),
-                "cube.off", "passes", "more than the limit of 100 faces", "--max-faces");
+        // The cube's default wrap takes 331 passes, at least 1,341 faces by the estimate, and makes 2,686.
         CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--max-faces", "1000"}, outputs)),
-                "cube.off", "faces of paper on triangle", "more than the limit of 1000 faces", "--max-faces");
+                "cube.off", "331 passes", "(at least 1341)", "more than the limit of 1000 faces", "no strip the path takes fits: the widest, 0.1913",
+                "--max-faces");
+        CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--max-faces", "2000"}, outputs)),
+                "cube.off", "faces of paper on triangle", "more than the limit of 2000 faces", "--max-faces");
         assertFalse(Files.exists(report), "no report after a failure");
         assertFalse(Files.exists(obj), "no OBJ after a failure");
         assertEquals(0, CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--max-faces", "100000"}, outputs)).code());

@@ -267,8 +267,10 @@ class WrapTest {
         HamiltonianRefinement.Result refinement = HamiltonianRefinement.refine(build(MeshReaders.read(file)));
         Wrap.WrapException e = assertThrows(Wrap.FaceLimitException.class,
                 () -> Wrap.wrap(refinement, new Wrap.Options(Double.NaN, Double.NaN)));
-        assertTrue(e.getMessage().contains("passes, each at least a face of paper, more than the limit of 500000 faces")
-                && e.getMessage().contains("narrowest triangle"), e.getMessage());
+        assertTrue(e.getMessage().contains("faces of paper (at least ")
+                && e.getMessage().contains("more than the limit of 500000 faces") && e.getMessage().contains("narrowest triangle")
+                && e.getMessage().contains("slivers"),
+                e.getMessage());
     }
 
     /** Any path of triangles wraps, not only a refinement's: one triangle, and a square's two halves. */
@@ -346,8 +348,33 @@ class WrapTest {
                 + "limit of " + (faces - 1) + " faces"), during.getMessage());
         Wrap.FaceLimitException before = assertThrows(Wrap.FaceLimitException.class,
                 () -> Wrap.wrap(refinement, options.withMaxFaces(58)));
-        assertTrue(before.getMessage().contains("passes, each at least a face of paper, more than the limit of 58 faces"),
-                before.getMessage());
+        assertTrue(before.getMessage().contains("more than the limit of 58 faces"), before.getMessage());
+    }
+
+    /**
+     * A strip far too narrow for the limit is refused before any fold, in well under a second,
+     * with the floor of faces it would make and the narrowest strip that may fit, which does.
+     */
+    @Test
+    void aWidthThatWouldPassTheLimitIsRefusedAtOnceWithOneThatFits() throws Exception {
+        HamiltonianRefinement.Result refinement = HamiltonianRefinement.refine(build(Solids.cube()));
+        long start = System.nanoTime();
+        Wrap.FaceLimitException e = assertThrows(Wrap.FaceLimitException.class,
+                () -> Wrap.wrap(refinement, new Wrap.Options(1e-4, Double.NaN)));
+        assertTrue(System.nanoTime() - start < 5_000_000_000L, "refused before folding (it folded for minutes)");
+        assertTrue(e.getMessage().contains("make about") && e.getMessage().contains("(at least"), e.getMessage());
+        // With a limit that a wrap reaches in a moment: the width suggested fits it.
+        int limit = 20_000;
+        Wrap.FaceLimitException small = assertThrows(Wrap.FaceLimitException.class,
+                () -> Wrap.wrap(refinement, new Wrap.Options(1e-3, Double.NaN, null, limit)));
+        java.util.regex.Matcher fits = java.util.regex.Pattern.compile("the narrowest strip that fits is about ([0-9.e-]+) wide")
+                .matcher(small.getMessage());
+        assertTrue(fits.find(), small.getMessage());
+        double width = Double.parseDouble(fits.group(1));
+        assertTrue(width > 1e-3 && width < Wrap.widest(refinement), small.getMessage());
+        Wrap.Result result = Wrap.wrap(refinement, new Wrap.Options(width, Double.NaN, null, limit));
+        int faces = result.strips().get(0).sheet().faceCount();
+        assertTrue(faces <= limit && faces > limit / 2, "fits, and not by far: " + faces);
     }
 
     private static ParameterException assertParameter(String parameter, org.junit.jupiter.api.function.Executable make) {
