@@ -96,7 +96,7 @@ final class DemoCommand implements Runnable {
             Wrap.Options options;
             try {
                 options = Wrap.Options.loneTriangle(shape, new Wrap.Ends(startCorner, endCorner, enterCorner),
-                        width == null ? Double.NaN : width, thickness == null ? Double.NaN : thickness);
+                        Defaults.orDefault(width, "width"), Defaults.orDefault(thickness, "thickness"));
             } catch (ParameterException e) {
                 throw UserError.usage(e);
             }
@@ -186,7 +186,7 @@ final class DemoCommand implements Runnable {
         public Integer call() {
             TurnGadget.Options options;
             try {
-                options = new TurnGadget.Options(angle, overhang, width, thickness == null ? Double.NaN : thickness);
+                options = new TurnGadget.Options(angle, overhang, width, Defaults.orDefault(thickness, "thickness"));
             } catch (ParameterException e) {
                 throw UserError.usage(e);
             }

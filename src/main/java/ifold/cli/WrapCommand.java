@@ -72,7 +72,7 @@ final class WrapCommand implements Callable<Integer> {
     public Integer call() {
         Wrap.Options options;
         try { // checked before the model is read: what can be checked without it
-            options = new Wrap.Options(width == null ? Double.NaN : width, thickness == null ? Double.NaN : thickness, null, maxFaces);
+            options = new Wrap.Options(Defaults.orDefault(width, "width"), Defaults.orDefault(thickness, "thickness"), null, maxFaces);
         } catch (ParameterException e) {
             throw UserError.usage(e);
         }
@@ -196,9 +196,10 @@ final class WrapCommand implements Callable<Integer> {
         // Faces triangulated again say so: the path's triangles then come from those.
         String prepared = path.preparation().prepared() == 0 ? "" : String.format(Locale.ROOT, " -> %d prepared (%d of %d planar regions)",
                 path.preparation().trianglesAfter(), path.preparation().prepared(), path.preparation().regions());
-        return String.format(Locale.ROOT, "%s: %d triangles%s -> %d on the path, %s, "
+        return String.format(Locale.ROOT, "%s: %d %s%s -> %d on the path, %s, "
                 + "%d turn folds, %d gadget folds, %d edge crossings, %d tucks, %d layers at most (a stack of %d), "
-                + "paper efficiency %.3f, coverage %.3f, isometry error %.1e", model, mesh.faceCount(), prepared, result.mesh().faceCount(),
+                + "paper efficiency %.3f, coverage %.3f, isometry error %.1e", model, mesh.faceCount(), mesh.faceCount() == 1 ? "triangle" : "triangles",
+                prepared, result.mesh().faceCount(),
                 paper, result.count(Wrap.Kind.ZIGZAG_TURN),
                 result.count(Wrap.Kind.TURN_GADGET), result.count(Wrap.Kind.EDGE_CROSSING), result.count(Wrap.Kind.TUCK),
                 analysis.maxLayers(), analysis.stackLevels(), analysis.surfaceArea() / analysis.paperArea(), analysis.coverage(),

@@ -45,6 +45,13 @@ class WrapCommandTest {
     }
 
     @Test
+    void oneTriangleIsOneTriangle() throws Exception {
+        CliTest.Run run = CliTest.run("wrap", "models/triangle.off", "--no-view");
+        assertEquals(0, run.code(), run.err());
+        assertTrue(run.out().startsWith("models/triangle.off: 1 triangle -> 3 on the path, 1 strip "), run.out());
+    }
+
+    @Test
     void aRunThatExportsNothingChecksNothing() throws Exception {
         CliTest.Run run = CliTest.run("wrap", "models/tetrahedron.off", "--no-view");
         assertEquals(0, run.code(), run.err());
@@ -58,6 +65,11 @@ class WrapCommandTest {
         String[] outputs = {"--no-view", "--report", report.toString(), "--export-obj", obj.toString()};
         assertOptionError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--width", "-1"}, outputs)), "--width");
         assertOptionError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--thickness", "-0.1"}, outputs)), "--thickness");
+        // NaN stands for the default inside: typed, it is refused rather than taken for it.
+        assertOptionError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--width", "NaN"}, outputs)), "--width");
+        assertOptionError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--thickness", "NaN"}, outputs)), "--thickness");
+        assertOptionError(CliTest.run(concat(new String[] {"demo", "zigzag", "--width", "NaN"}, outputs)), "--width");
+        assertOptionError(CliTest.run(concat(new String[] {"demo", "turn", "--angle", "60", "--thickness", "NaN"}, outputs)), "--thickness");
         assertOptionError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--width", "0.1", "--thickness", "0.5"}, outputs)),
                 "--thickness");
         CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--width", "0.3"}, outputs)),
