@@ -175,6 +175,9 @@ final class WrapCommand implements Callable<Integer> {
     private void show(HalfedgeMesh mesh, Wrap.Result result, List<WrapGeometry> geometries, List<Path> written) {
         Scene scene = new Scene();
         Animation animation = Scenes.wrap(scene, mesh, result, geometries);
+        if (!outputs.frameOptions.renders()) { // a window, where C shows them
+            Scenes.collisions(scene, geometries, result.thickness(), mesh);
+        }
         // Layer on layer of paper makes multisampling dear on a software renderer (4 samples a
         // pixel: 16 frames/s for the cube; none: 60), and the layers' edges are what the eye follows.
         outputs.show(scene, animation, model.getFileName() + ": " + result.strips().size() + (result.strips().size() == 1 ? " strip" : " strips"), 120, true, spec, 0);

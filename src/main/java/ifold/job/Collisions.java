@@ -29,11 +29,17 @@ public final class Collisions {
      */
     public static PaperCollisions.Result check(List<WrapGeometry> strips, double thickness, IndexedPolygons model, Path exported)
             throws IOException {
+        return check(strips, thickness, model, exported, PaperCollisions.Options.DEFAULT);
+    }
+
+    /** As {@link #check(List, double, IndexedPolygons, Path)}, listing as many crossings as {@code options} say. */
+    public static PaperCollisions.Result check(List<WrapGeometry> strips, double thickness, IndexedPolygons model, Path exported,
+            PaperCollisions.Options options) throws IOException {
         if (!(thickness > 0)) {
             return null;
         }
         CharSequence text = exported != null ? Files.readString(exported) : WrapExport.objText("collision check", strips);
-        return PaperCollisions.check(text, thickness, model == null ? new double[0] : triangles(model));
+        return PaperCollisions.check(text, thickness, model == null ? new double[0] : triangles(model), options);
     }
 
     /**

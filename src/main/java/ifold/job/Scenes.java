@@ -1,10 +1,13 @@
 package ifold.job;
 
+import ifold.check.PaperCollisions;
 import ifold.geom.Triangle;
 import ifold.mesh.HalfedgeMesh;
+import ifold.mesh.IndexedPolygons;
 import ifold.mesh.Topology;
 import ifold.refine.HamiltonianRefinement;
 import ifold.scene.Animation;
+import ifold.scene.CollisionView;
 import ifold.scene.Geometry;
 import ifold.scene.Material;
 import ifold.scene.PaperView;
@@ -15,8 +18,14 @@ import ifold.scene.Turntable;
 import ifold.scene.WrapView;
 import ifold.script.ScriptFolding;
 import ifold.wrap.Wrap;
+import ifold.wrap.WrapExport;
 import ifold.wrap.WrapGeometry;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.util.ArrayList;
 import java.util.List;
+import java.util.Set;
+import java.util.TreeSet;
 import java.util.Locale;
 import org.joml.Quaterniond;
 
@@ -128,6 +137,46 @@ public final class Scenes {
         Geometry solid = new Geometry(MODEL, SceneMesh.of(mesh), new Material(WrapView.MODEL, 0xFF4A5460, false, false));
         scene.root().attach(solid);
         return WrapView.play(scene, result, geometries);
+    }
+
+    /** The most crossing pairs whose faces the viewer shows: beyond, the first ones in the file's order. */
+    public static final int SHOWN_CROSSINGS = 100_000;
+
+    /**
+     * Adds the faces of paper that cross paper or the model, in red, seen through the paper
+     * above them and hidden until asked for (the viewer's C): where a fold is impossible. The
+     * collision checker reads the paper's OBJ text; its face numbers are the OBJ's.
+     *
+     * @return the geometry, or null for paper of no thickness (not checked)
+     */
+    public static Geometry collisions(Scene scene, List<WrapGeometry> strips, double thickness, IndexedPolygons model) {
+        PaperCollisions.Result result;
+        try {
+            result = Collisions.check(strips, thickness, model, null, new PaperCollisions.Options(SHOWN_CROSSINGS,
+                    PaperCollisions.Options.DEFAULT.threads()));
+        } catch (IOException e) {
+            throw new UncheckedIOException(e); // no file is read
+        }
+        if (result == null) {
+            return null;
+        }
+        Set<Integer> faces = new TreeSet<>();
+        for (PaperCollisions.Crossing crossing : result.crossings()) {
+            faces.add(crossing.faceA());
+            faces.add(crossing.faceB());
+        }
+        for (PaperCollisions.Crossing crossing : result.intoModel()) {
+            faces.add(crossing.faceA()); // faceB is the model's triangle
+        }
+        List<double[]> polygons = new ArrayList<>();
+        for (int face : faces) {
+            polygons.add(WrapExport.faceCorners(strips, face));
+        }
+        Geometry geometry = new Geometry(CollisionView.NAME, CollisionView.mesh(polygons), CollisionView.MATERIAL);
+        geometry.setSeenThrough(true);
+        geometry.setVisible(false);
+        scene.root().attach(geometry);
+        return geometry;
     }
 
     /**

@@ -62,6 +62,8 @@ public final class SceneRenderer {
         Matrix4f projection = new Matrix4f(scene.camera().projectionMatrix((double) width / Math.max(1, height), new Matrix4d()));
         List<Geometry> geometries = new ArrayList<>();
         scene.root().visitGeometry(geometries::add);
+        // What is seen through everything is drawn last, over what is already there.
+        geometries.sort(java.util.Comparator.comparing(Geometry::isSeenThrough));
         for (Geometry geometry : geometries) {
             GpuMesh mesh = uploaded.get(geometry);
             if (mesh == null || mesh.version != geometry.version()) {
@@ -77,10 +79,14 @@ public final class SceneRenderer {
                 drawIndices(gl, geometry, mesh, modelView, projection);
                 continue;
             }
+            if (geometry.isSeenThrough()) {
+                gl.glDisable(GL3.GL_DEPTH_TEST);
+            }
             drawFaces(gl, scene, geometry, mesh, modelView, projection);
             if (geometry.material().showEdges()) {
                 drawEdges(gl, mesh, modelView, projection);
             }
+            gl.glEnable(GL3.GL_DEPTH_TEST);
         }
         // Forget geometry that left the scene.
         uploaded.entrySet().removeIf(entry -> {

@@ -14,6 +14,7 @@ import com.jogamp.opengl.GLEventListener;
 import com.jogamp.opengl.GLException;
 import com.jogamp.opengl.util.Animator;
 import ifold.image.PngEncoder;
+import ifold.scene.CollisionView;
 import ifold.scene.Player;
 import ifold.scene.Scene;
 import ifold.scene.Trackball;
@@ -46,6 +47,7 @@ public final class ViewerWindow {
             "Home        back to the start",
             "R           reset the camera",
             "S           save a screenshot (PNG)",
+            "C           paper crossing paper, in red",
             "H           this help",
             "Q, Esc      quit");
 
@@ -290,6 +292,7 @@ public final class ViewerWindow {
                 case KeyEvent.VK_R -> queue(trackball::reset);
                 case KeyEvent.VK_S -> screenshotWanted = true;
                 case KeyEvent.VK_H -> showHelp = !showHelp;
+                case KeyEvent.VK_C -> queue(() -> CollisionView.toggle(scene.root()));
                 case KeyEvent.VK_Q, KeyEvent.VK_ESCAPE -> new Thread(window::destroy, "close").start();
                 default -> {
                 }

@@ -19,6 +19,7 @@ public final class Geometry extends Spatial {
     private int revealed = ALL;
     private int hiddenColor = 0xFFF3F3F3;
     private boolean closed;
+    private boolean seenThrough;
 
     public Geometry(String name, SceneMesh mesh, Material material) {
         super(name);
@@ -75,6 +76,19 @@ public final class Geometry extends Spatial {
     public void setClosed(boolean closed) {
         markChanged();
         this.closed = closed;
+    }
+
+    /**
+     * Whether the geometry is drawn over everything, as if the paper before it were glass:
+     * paper crossing paper lies between layers, where the layers above would hide it.
+     */
+    public boolean isSeenThrough() {
+        return seenThrough;
+    }
+
+    public void setSeenThrough(boolean seenThrough) {
+        markChanged();
+        this.seenThrough = seenThrough;
     }
 
     /** The colour of triangles not yet revealed. */

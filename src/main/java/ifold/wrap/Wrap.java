@@ -51,7 +51,7 @@ import java.util.Locale;
  */
 public final class Wrap {
     /** The most tucks on one triangle before giving up (the naïve tucks bounce between the edges of a sharp corner). */
-    public static final int MAX_TUCKS = 300;
+    public static final int MAX_TUCKS = 1000;
 
     /**
      * The most faces of paper a wrap makes unless {@link Options#maxFaces} says otherwise: about

@@ -75,6 +75,33 @@ public final class WrapExport {
         out.flush();
     }
 
+    /**
+     * The corners (x, y, z interleaved) of the face the OBJ written of {@code strips} numbers
+     * {@code face}, counting its {@code f} lines from 1: each strip's paper faces, then its caps.
+     *
+     * @throws IllegalArgumentException for a number no face has
+     */
+    public static double[] faceCorners(List<WrapGeometry> strips, int face) {
+        if (face < 1) {
+            throw new IllegalArgumentException("the OBJ has no face " + face + ": they count from 1");
+        }
+        int n = face - 1;
+        for (WrapGeometry strip : strips) {
+            for (List<int[]> group : List.of(strip.paperFaces(), strip.caps())) {
+                if (n < group.size()) {
+                    int[] loop = group.get(n);
+                    double[] corners = new double[3 * loop.length];
+                    for (int k = 0; k < loop.length; k++) {
+                        System.arraycopy(strip.xyz(), 3 * loop[k], corners, 3 * k, 3);
+                    }
+                    return corners;
+                }
+                n -= group.size();
+            }
+        }
+        throw new IllegalArgumentException("the OBJ has no face " + face);
+    }
+
     private static void writeFaces(Writer out, List<int[]> faces, int base) throws IOException {
         StringBuilder line = new StringBuilder(64);
         for (int[] face : faces) {

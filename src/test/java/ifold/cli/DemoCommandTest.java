@@ -59,7 +59,7 @@ class DemoCommandTest {
         CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--width", "1", "--thickness", "0.5", "--no-view", "--report", out), "--thickness");
         CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--no-view", "--export-obj", dir.resolve("x.stl").toString()), "--export-obj");
         CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--no-view", "--report", dir.resolve("no/r.json").toString()), "--report", "does not exist");
-        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--triangle", "0,0,10,0,5,0.05", "--width", "0.0025", "--no-view",
+        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--triangle", "0,0,10,0,5,0.02", "--width", "0.001", "--no-view",
                 "--report", out), "cannot wrap this triangle", "degrees");
         CliTest.assertOneLineError(CliTest.run("demo", "turn", "--angle", "180", "--no-view"), "--angle");
         CliTest.assertOneLineError(CliTest.run("demo", "turn", "--angle", "0.001", "--no-view"), "--angle", "0.01 to 179.9");

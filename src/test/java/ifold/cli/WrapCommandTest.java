@@ -85,13 +85,13 @@ class WrapCommandTest {
 
     @Test
     void aTriangleTheTucksCannotFinishIsNamedAndNothingIsWritten() throws Exception {
-        // A flat needle of a tetrahedron: corners of a fraction of a degree, where the naive tucks
-        // bounce the paper between two edges hundreds of times.
+        // A flat needle of a tetrahedron: corners of a fifth of a degree, where the naive tucks
+        // bounce the paper between two edges more than a thousand times (one of 3.4°, 0.3 high, wraps).
         Path needle = dir.resolve("needle.off");
-        Files.writeString(needle, "OFF\n4 4 0\n0 0 0\n10 0 0\n5 0.3 0\n5 0.1 0.1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n");
+        Files.writeString(needle, "OFF\n4 4 0\n0 0 0\n10 0 0\n5 0.04 0\n5 0.01 0.01\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n");
         Path report = dir.resolve("needle.json");
         CliTest.assertOneLineError(CliTest.run("wrap", needle.toString(), "--no-view", "--report", report.toString()),
-                "needle.off", "of 18 on the path ((", "not hidden after 300 tucks");
+                "needle.off", "of 18 on the path ((", "not hidden after 1000 tucks");
         assertFalse(Files.exists(report), "no report after a failure");
     }
 

@@ -67,6 +67,29 @@ class OffscreenRendererTest {
         }
     }
 
+    /** Paper crossing paper lies between layers: drawn seen through, it shows over the square in front of it; else not. */
+    @Test
+    void whatIsSeenThroughShowsOverWhatLiesInFront() throws Exception {
+        Scene scene = redSquare();
+        // A small green square behind the red one (the camera looks down -z at z = 0).
+        PolygonSoup behind = new PolygonSoup();
+        behind.addVertex(-0.3, -0.3, -0.5);
+        behind.addVertex(0.3, -0.3, -0.5);
+        behind.addVertex(0.3, 0.3, -0.5);
+        behind.addVertex(-0.3, 0.3, -0.5);
+        behind.addFace(new int[] {0, 1, 2, 3}, 4, 0);
+        behind.setFaceColor(0, 0xFF00FF00);
+        Geometry hidden = new Geometry("behind", SceneMesh.of(behind), new Material(0xFFFFFFFF, 0xFFFFFFFF, true, false));
+        scene.root().attach(hidden);
+        try (OffscreenRenderer renderer = new OffscreenRenderer(W, H, 4)) {
+            int covered = pixel(renderer.render(scene), W / 2, H / 2);
+            assertTrue((covered >> 16 & 0xFF) > 150 && (covered >> 8 & 0xFF) < 30, "setup: the red square hides it: " + Integer.toHexString(covered));
+            hidden.setSeenThrough(true);
+            int shown = pixel(renderer.render(scene), W / 2, H / 2);
+            assertTrue((shown >> 8 & 0xFF) > 150 && (shown >> 16 & 0xFF) < 30, "seen through the red: " + Integer.toHexString(shown));
+        }
+    }
+
     @Test
     void theBackOfThePaperHasItsOwnColour() throws Exception {
         Scene scene = redSquare();

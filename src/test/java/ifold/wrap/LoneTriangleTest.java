@@ -116,10 +116,11 @@ class LoneTriangleTest {
         // Base corners of 3.4 degrees: the naive tucks bounce the paper between their edges, 90 times.
         Wrap.Result flat = wrapAndCheck(Triangle.planar(0, 0, 10, 0, 5, 0.3), 0.3 / 20, 0.0005, 2, 0, -1);
         assertTrue(flat.count(Wrap.Kind.TUCK) > 50, "many tucks: " + flat.count(Wrap.Kind.TUCK));
-        // Of 0.6 degrees: more than the tucks allowed.
+        // Of 0.23 degrees: more than the tucks allowed.
         Wrap.WrapException e = assertThrows(Wrap.WrapException.class,
-                () -> wrap(Triangle.planar(0, 0, 10, 0, 5, 0.05), 0.05 / 20, 0.0001, 2, 0, -1));
-        assertTrue(e.getMessage().contains("0.6 degrees") && e.getMessage().contains("triangle 1 of 1"), e.getMessage());
+                () -> wrap(Triangle.planar(0, 0, 10, 0, 5, 0.02), 0.02 / 20, 0.00004, 2, 0, -1));
+        assertTrue(e.getMessage().contains("0.2 degrees") && e.getMessage().contains("triangle 1 of 1")
+                && e.getMessage().contains("after " + Wrap.MAX_TUCKS + " tucks"), e.getMessage());
     }
 
     @Test

@@ -224,17 +224,22 @@ class WrapTest {
     @ValueSource(doubles = {20, 100})
     void aLongBoxWrapsLikeARowOfCubes(double length) throws Exception {
         HalfedgeMesh box = build(Solids.box(length, 1, 1));
-        if (length >= 100) {
-            assertThrows(Wrap.WrapException.class, () -> Wrap.wrap(HamiltonianRefinement.refine(box), new Wrap.Options(Double.NaN, Double.NaN)),
-                    "setup: unprepared, the long faces' thin triangles cannot be tucked");
-        }
         Wrap.Result result = wrapAndCheck(box, new Wrap.Options(Double.NaN, Double.NaN), 3000);
+        int layers = maxLayers(result);
+        assertTrue(layers <= 48, "most layers " + layers);
+        if (length <= 20) {
+            // Unprepared, its thin triangles' tucks bounce: 336 layers at most (the 100-long one's, 1,000 tucks a triangle and more).
+            int unprepared = maxLayers(Wrap.wrap(HamiltonianRefinement.refine(box), new Wrap.Options(Double.NaN, Double.NaN)));
+            assertTrue(unprepared > 5 * layers, "setup: unprepared " + unprepared + " layers against " + layers);
+        }
+    }
+
+    private static int maxLayers(Wrap.Result result) {
         List<WrapGeometry> geometries = new ArrayList<>();
         for (Wrap.Strip strip : result.strips()) {
             geometries.add(WrapGeometry.of(strip.sheet(), result.frames()));
         }
-        int layers = WrapAnalysis.of(result, geometries).maxLayers();
-        assertTrue(layers <= 48, "most layers " + layers);
+        return WrapAnalysis.of(result, geometries).maxLayers();
     }
 
     @ParameterizedTest

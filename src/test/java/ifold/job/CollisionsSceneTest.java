@@ -1,0 +1,81 @@
+package ifold.job;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import ifold.check.PaperCollisions;
+import ifold.mesh.HalfedgeMesh;
+import ifold.mesh.MeshBuilder;
+import ifold.mesh.Solids;
+import ifold.refine.HamiltonianRefinement;
+import ifold.scene.CollisionView;
+import ifold.scene.Geometry;
+import ifold.scene.Scene;
+import ifold.wrap.Wrap;
+import ifold.wrap.WrapExport;
+import ifold.wrap.WrapGeometry;
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+/** The viewer's crossing paper: the checker's faces, found in the paper by the OBJ's numbers, hidden until C. */
+class CollisionsSceneTest {
+    @Test
+    void theCubesCrossingFacesAreShownInRedWhenAskedFor() throws Exception {
+        HalfedgeMesh cube = MeshBuilder.build(Solids.cube(), MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();
+        Wrap.Result result = Wrap.wrap(HamiltonianRefinement.refine(cube), new Wrap.Options(Double.NaN, Double.NaN));
+        List<WrapGeometry> strips = new ArrayList<>();
+        for (Wrap.Strip strip : result.strips()) {
+            strips.add(WrapGeometry.of(strip.sheet(), result.frames()));
+        }
+        PaperCollisions.Result check = Collisions.check(strips, result.thickness(), cube, null);
+        assertTrue(check.crossingPairs() > 0, "setup: the cube's paper crosses itself today");
+        Scene scene = new Scene();
+        Geometry shown = Scenes.collisions(scene, strips, result.thickness(), cube);
+        assertNotNull(shown);
+        assertFalse(shown.isVisible(), "hidden until asked for");
+        assertTrue(shown.isSeenThrough(), "drawn over the layers above it");
+        // Every triangle of the geometry is a corner-for-corner copy of a face of the OBJ the checker read.
+        PaperCollisions.Crossing deepest = check.deepest();
+        double[] face = WrapExport.faceCorners(strips, deepest.faceA());
+        double[] positions = shown.mesh().positions();
+        boolean found = false;
+        for (int v = 0; v + face.length <= positions.length && !found; v += 3) {
+            boolean same = true;
+            for (int k = 0; k < face.length && same; k++) {
+                same = positions[v + k] == face[k];
+            }
+            found = same;
+        }
+        assertTrue(found, "the deepest crossing's face " + deepest.faceA() + " is among those shown");
+        assertTrue(shown.mesh().triangleCount() >= 2, "both faces of a crossing at least");
+        assertTrue(CollisionView.toggle(scene.root()));
+        assertTrue(shown.isVisible(), "C shows it");
+        CollisionView.toggle(scene.root());
+        assertFalse(shown.isVisible(), "and C again hides it");
+        assertFalse(CollisionView.toggle(new Scene().root()), "a scene without collisions has nothing to show");
+    }
+
+    @Test
+    void paperOfNoThicknessIsNotChecked() throws Exception {
+        HalfedgeMesh cube = MeshBuilder.build(Solids.cube(), MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();
+        Wrap.Result result = Wrap.wrap(HamiltonianRefinement.refine(cube), new Wrap.Options(Double.NaN, 0));
+        List<WrapGeometry> strips = List.of(WrapGeometry.of(result.strips().get(0).sheet(), result.frames()));
+        assertEquals(0, result.thickness());
+        assertNull(Scenes.collisions(new Scene(), strips, 0, cube));
+    }
+
+    @Test
+    void aNumberNoFaceHasIsRefused() throws Exception {
+        HalfedgeMesh cube = MeshBuilder.build(Solids.cube(), MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();
+        Wrap.Result result = Wrap.wrap(HamiltonianRefinement.refine(cube), new Wrap.Options(Double.NaN, Double.NaN));
+        List<WrapGeometry> strips = List.of(WrapGeometry.of(result.strips().get(0).sheet(), result.frames()));
+        int faces = strips.get(0).paperFaces().size() + strips.get(0).caps().size();
+        WrapExport.faceCorners(strips, faces);
+        org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class, () -> WrapExport.faceCorners(strips, faces + 1));
+        org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class, () -> WrapExport.faceCorners(strips, 0));
+    }
+}
