@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import ifold.check.PaperCollisions;
@@ -23,14 +24,29 @@ import org.junit.jupiter.api.Test;
 
 /** The viewer's crossing paper: the checker's faces, found in the paper by the OBJ's numbers, hidden until C. */
 class CollisionsSceneTest {
-    @Test
-    void theCubesCrossingFacesAreShownInRedWhenAskedFor() throws Exception {
-        HalfedgeMesh cube = MeshBuilder.build(Solids.cube(), MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();
-        Wrap.Result result = Wrap.wrap(HamiltonianRefinement.refine(cube), new Wrap.Options(Double.NaN, Double.NaN));
+    private final HalfedgeMesh cube;
+
+    CollisionsSceneTest() throws Exception {
+        cube = MeshBuilder.build(Solids.cube(), MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();
+    }
+
+    /** The cube wrapped at the default width, with {@code thickness} (NaN for the default). */
+    private Wrap.Result wrapCube(double thickness) throws Exception {
+        return Wrap.wrap(HamiltonianRefinement.refine(cube), new Wrap.Options(Double.NaN, thickness));
+    }
+
+    private static List<WrapGeometry> strips(Wrap.Result result) {
         List<WrapGeometry> strips = new ArrayList<>();
         for (Wrap.Strip strip : result.strips()) {
             strips.add(WrapGeometry.of(strip.sheet(), result.frames()));
         }
+        return strips;
+    }
+
+    @Test
+    void theCubesCrossingFacesAreShownInRedWhenAskedFor() throws Exception {
+        Wrap.Result result = wrapCube(Double.NaN);
+        List<WrapGeometry> strips = strips(result);
         PaperCollisions.Result check = Collisions.check(strips, result.thickness(), cube, null);
         assertTrue(check.crossingPairs() > 0, "setup: the cube's paper crosses itself today");
         Scene scene = new Scene();
@@ -61,21 +77,17 @@ class CollisionsSceneTest {
 
     @Test
     void paperOfNoThicknessIsNotChecked() throws Exception {
-        HalfedgeMesh cube = MeshBuilder.build(Solids.cube(), MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();
-        Wrap.Result result = Wrap.wrap(HamiltonianRefinement.refine(cube), new Wrap.Options(Double.NaN, 0));
-        List<WrapGeometry> strips = List.of(WrapGeometry.of(result.strips().get(0).sheet(), result.frames()));
+        Wrap.Result result = wrapCube(0);
         assertEquals(0, result.thickness());
-        assertNull(Scenes.collisions(new Scene(), strips, 0, cube));
+        assertNull(Scenes.collisions(new Scene(), strips(result), 0, cube));
     }
 
     @Test
     void aNumberNoFaceHasIsRefused() throws Exception {
-        HalfedgeMesh cube = MeshBuilder.build(Solids.cube(), MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();
-        Wrap.Result result = Wrap.wrap(HamiltonianRefinement.refine(cube), new Wrap.Options(Double.NaN, Double.NaN));
-        List<WrapGeometry> strips = List.of(WrapGeometry.of(result.strips().get(0).sheet(), result.frames()));
+        List<WrapGeometry> strips = strips(wrapCube(Double.NaN));
         int faces = strips.get(0).paperFaces().size() + strips.get(0).caps().size();
         WrapExport.faceCorners(strips, faces);
-        org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class, () -> WrapExport.faceCorners(strips, faces + 1));
-        org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class, () -> WrapExport.faceCorners(strips, 0));
+        assertThrows(IllegalArgumentException.class, () -> WrapExport.faceCorners(strips, faces + 1));
+        assertThrows(IllegalArgumentException.class, () -> WrapExport.faceCorners(strips, 0));
     }
 }
