@@ -157,6 +157,8 @@ final class PaperOutputs {
         PaperCollisions.Result result = Collisions.addTo(figures, strips, thickness, model, exportObj);
         if (result != null) {
             collisions = result.summary();
+        } else if (thickness > 0) {
+            collisions = "collisions: not checked: " + Collisions.notChecked(strips, thickness);
         }
     }
 

@@ -58,6 +58,9 @@ final class RefineCommand implements Callable<Integer> {
         long start = System.nanoTime();
         WrapPath path = prepare ? WrapPath.of(mesh) : null;
         HamiltonianRefinement.Result result = prepare ? path.refinement() : HamiltonianRefinement.refine(mesh);
+        if (prepare) {
+            path.warnIfKept(model.toString(), spec.commandLine().getErr());
+        }
         long refined = System.nanoTime();
         try {
             MeshWriters.write(result.mesh(), output);

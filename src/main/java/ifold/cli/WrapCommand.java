@@ -101,6 +101,7 @@ final class WrapCommand implements Callable<Integer> {
         long loadedAt = System.nanoTime();
         WrapPath path = WrapPath.of(mesh);
         HamiltonianRefinement.Result refinement = path.refinement();
+        path.warnIfKept(model.toString(), err);
         long refinedAt = System.nanoTime();
         Wrap.Result result;
         ProgressBar.WrapBar bar = ProgressBar.wrapping(err);
@@ -109,7 +110,7 @@ final class WrapCommand implements Callable<Integer> {
         } catch (ParameterException e) {
             throw UserError.usage(e);
         } catch (Wrap.FaceLimitException e) {
-            throw new UserError(model + ": cannot wrap: " + e.getMessage() + " (--max-faces raises it)");
+            throw new UserError(model + ": cannot wrap: " + e.getMessage() + " (--max-faces raises the limit)");
         } catch (Wrap.WrapException e) {
             throw new UserError(model + ": cannot wrap: " + e.getMessage());
         } finally {

@@ -21,9 +21,27 @@ public final class Collisions {
     }
 
     /**
+     * The most faces of paper and caps checked: the check costs more than the wrap beyond (a
+     * cube's strip at a 300th of the default width: 400,000 faces, 33 s to wrap, 105 s to check).
+     */
+    public static final int MOST_FACES = 200_000;
+
+    /** Why {@code strips} are not checked, or null where they are: paper of no thickness, or more than {@link #MOST_FACES} faces. */
+    public static String notChecked(List<WrapGeometry> strips, double thickness) {
+        if (!(thickness > 0)) {
+            return "paper of no thickness";
+        }
+        long faces = 0;
+        for (WrapGeometry strip : strips) {
+            faces += strip.paperFaces().size() + strip.caps().size();
+        }
+        return faces > MOST_FACES ? faces + " faces of paper and caps, more than the " + MOST_FACES + " checked" : null;
+    }
+
+    /**
      * Checks {@code strips} of paper {@code thickness} thick, against {@code model}'s triangles
-     * where there is a model (null for a fold script's planes); null for paper of no thickness,
-     * whose crossings have no measure.
+     * where there is a model (null for a fold script's planes); null where {@link #notChecked}
+     * says why not.
      *
      * @param exported the OBJ written of these strips, or null to make its text here
      */
@@ -35,7 +53,7 @@ public final class Collisions {
     /** As {@link #check(List, double, IndexedPolygons, Path)}, listing as many crossings as {@code options} say. */
     public static PaperCollisions.Result check(List<WrapGeometry> strips, double thickness, IndexedPolygons model, Path exported,
             PaperCollisions.Options options) throws IOException {
-        if (!(thickness > 0)) {
+        if (notChecked(strips, thickness) != null) {
             return null;
         }
         CharSequence text = exported != null ? Files.readString(exported) : WrapExport.objText("collision check", strips);
@@ -53,6 +71,8 @@ public final class Collisions {
         PaperCollisions.Result result = check(strips, thickness, model, exported);
         if (result != null) {
             figures.put("collisions", figures(result));
+        } else if (thickness > 0) {
+            figures.put("collisions", Map.of("notChecked", notChecked(strips, thickness)));
         }
         return result;
     }

@@ -21,6 +21,17 @@ public record WrapPath(FacePreparation.Result preparation, HamiltonianRefinement
         return new WrapPath(preparation, HamiltonianRefinement.refine(preparation.mesh()));
     }
 
+    /**
+     * Says on {@code err}, in one line naming {@code model}, why the model's faces were kept as
+     * they are although some needed preparing; says nothing where they were prepared or needed none.
+     */
+    public void warnIfKept(String model, java.io.PrintWriter err) {
+        if (preparation.kept() != null) {
+            err.println("ifold: " + model + ": faces kept as they are, not prepared: " + preparation.kept());
+            err.flush();
+        }
+    }
+
     /** The report's figures of the preparation: regions, triangles, and the smallest angles of the model, the prepared faces and the path, in degrees. */
     public Map<String, Object> figures() {
         Map<String, Object> figures = new LinkedHashMap<>();

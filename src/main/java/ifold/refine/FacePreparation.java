@@ -41,9 +41,11 @@ import org.tinfour.standard.IncrementalTin;
  * neighbour lacks.
  *
  * <p>The prepared mesh is built and validated like a model read from a file; anything that
- * would not come out as the same closed or open surface (a region that is not a polygon with
- * holes, a refinement that did not finish, a repair the builder had to make) keeps the model's
- * own triangles, and the result says why.
+ * would not come out as the same closed or open surface (a repair the builder had to make,
+ * another topology or area), or come out worse (a smallest angle under the model's, fifty times
+ * its triangles), keeps the model's own triangles, and the result says why. A region that is
+ * not a polygon with holes (it touches itself at a corner) is left as it is, like a sharp one;
+ * a refinement stopped at its limit of points keeps what it made.
  */
 public final class FacePreparation {
     /** The smallest angle the preparation aims for, in degrees (Ruppert's algorithm is proven to about 20.7°). */
@@ -52,7 +54,7 @@ public final class FacePreparation {
     /** Normals of coplanar neighbours agree to this (1 - cos of the angle between them). */
     private static final double COPLANAR_COSINE = 1e-12;
 
-    /** A point this far from a region's plane, over the region's size, is off it. */
+    /** A point this far from a region's plane, over the size of the region's first face, is off it. */
     private static final double OFF_PLANE = 1e-9;
 
     /** Boundary pieces are at most this many times the region's thickness long. */
@@ -63,6 +65,9 @@ public final class FacePreparation {
 
     /** The most pieces the edges of a model may be cut into before the triangulation, at least: beyond that the model keeps its triangles. */
     private static final long MOST_PIECES = 100_000;
+
+    /** The prepared triangles may be this many times the model's (and 10,000 more) before the model keeps its own. */
+    private static final int MOST_TIMES_TRIANGLES = 50;
 
     /** The most times the regions may be triangulated, over the regions to prepare: a cascade of splits from region to region stops there. */
     private static final int ROUNDS = 20;
@@ -138,7 +143,12 @@ public final class FacePreparation {
             List<Region> toPrepare = new ArrayList<>();
             for (Region region : regions) {
                 if (region.minAngle < Math.toRadians(TARGET_ANGLE) && !region.sharp) {
-                    toPrepare.add(region);
+                    try {
+                        region.loops();
+                        toPrepare.add(region);
+                    } catch (Unprepared e) {
+                        region.sharp = true; // not a polygon with holes: left as it is, its edges not cut
+                    }
                 }
             }
             if (toPrepare.isEmpty()) {
@@ -151,11 +161,20 @@ public final class FacePreparation {
                 splitBoundaries(toPrepare);
                 triangulateUntilAgreed();
                 HalfedgeMesh prepared = assemble();
+                double after = RefinementClaims.minAngleDegrees(prepared);
+                if (after < before) {
+                    throw new Unprepared(String.format(java.util.Locale.ROOT, "the prepared triangles' smallest angle, %.3g degrees, is "
+                            + "under the model's own %.3g (a feature thinner than its faces)", after, before));
+                }
+                if (prepared.faceCount() > MOST_TIMES_TRIANGLES * mesh.faceCount() + MOST_PIECES / 10) {
+                    throw new Unprepared(String.format(java.util.Locale.ROOT, "the prepared faces would be %d triangles, more than %d "
+                            + "times the model's %d", prepared.faceCount(), MOST_TIMES_TRIANGLES, mesh.faceCount()));
+                }
                 int count = 0;
                 for (Region region : regions) {
                     count += region.prepare ? 1 : 0;
                 }
-                return new Result(prepared, regions.size(), count, mesh.faceCount(), before, RefinementClaims.minAngleDegrees(prepared), null);
+                return new Result(prepared, regions.size(), count, mesh.faceCount(), before, after, null);
             } catch (Unprepared e) {
                 return new Result(mesh, regions.size(), 0, mesh.faceCount(), before, before, e.getMessage());
             }
@@ -502,6 +521,13 @@ public final class FacePreparation {
                 for (int i = 0; i < boundary.size(); i++) {
                     place.put(boundary.get(i), i);
                 }
+                // A region that touches itself at a corner passes that corner twice: no polygon with holes.
+                java.util.Set<Integer> corners = new java.util.HashSet<>();
+                for (int h : boundary) {
+                    if (!corners.add(mesh.fromVertex(h))) {
+                        throw new Unprepared("region " + index + "'s boundary touches itself at a corner");
+                    }
+                }
                 boolean[] used = new boolean[boundary.size()];
                 List<List<Integer>> loops = new ArrayList<>();
                 for (int i = 0; i < boundary.size(); i++) {
@@ -516,10 +542,7 @@ public final class FacePreparation {
                             throw new Unprepared("region " + index + "'s boundary is not a loop");
                         }
                         if (used[at]) {
-                            if (h != boundary.get(i)) {
-                                throw new Unprepared("region " + index + "'s boundary touches itself");
-                            }
-                            break;
+                            break; // back at its start: each corner is passed once
                         }
                         used[at] = true;
                         loop.add(h);
@@ -598,11 +621,10 @@ public final class FacePreparation {
                 if (refine) {
                     RuppertRefiner refiner = new RuppertRefiner(tin, TARGET_ANGLE, AREA_FLOOR);
                     int boundaryPoints = points.size();
+                    // Each step inserts a point; counting steps, not the TIN's vertices, which Tinfour counts by a walk.
                     int limit = 50 * boundaryPoints + 1000;
-                    while (refiner.refineOnce() != null) {
-                        if (tin.getVertices().size() > boundaryPoints + limit) {
-                            break; // enough: the rest of the region's thin triangles stay
-                        }
+                    for (int steps = 0; steps < limit && refiner.refineOnce() != null; steps++) {
+                        // enough at the limit: the rest of the region's thin triangles stay
                     }
                 }
                 List<double[]> inside = new ArrayList<>();

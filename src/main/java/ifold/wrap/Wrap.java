@@ -467,10 +467,9 @@ public final class Wrap {
             throw new FaceLimitException(String.format(Locale.ROOT, "a strip %.4g wide would need %d passes and make about %d faces "
                     + "of paper (at least %d), more than the limit of %d faces: triangle %s alone needs %d passes; %s", width, passes,
                     likelyFaces(passes, triangles), fewestFaces, options.maxFaces(), cornersText(mesh, most), mostPasses,
-                    !Double.isNaN(fits) ? String.format(Locale.ROOT, "the narrowest strip that fits is about %.4g wide (--width)", fits)
+                    !Double.isNaN(fits) ? String.format(Locale.ROOT, "the narrowest strip that fits is about %.4g wide", fits)
                     : String.format(Locale.ROOT, "no strip the path takes fits: the widest, %.4g, which the narrowest triangle (%s) "
-                    + "sets, would make about %d (a model with slivers needs its faces remeshed first)", widest,
-                    cornersText(mesh, narrowest), likelyFaces(passesAt(plans, widest), triangles))));
+                    + "sets, would make about %d", widest, cornersText(mesh, narrowest), likelyFaces(passesAt(plans, widest), triangles))));
         }
         for (int c = 0; c < plans.size(); c++) {
             PathPlan plan = plans.get(c);
