@@ -57,8 +57,8 @@ final class RefineCommand implements Callable<Integer> {
         }
         long start = System.nanoTime();
         WrapPath path = prepare ? WrapPath.of(mesh) : null;
-        HamiltonianRefinement.Result result = prepare ? path.refinement() : HamiltonianRefinement.refine(mesh);
-        if (prepare) {
+        HamiltonianRefinement.Result result = path != null ? path.refinement() : HamiltonianRefinement.refine(mesh);
+        if (path != null) {
             path.warnIfKept(model.toString(), spec.commandLine().getErr());
         }
         long refined = System.nanoTime();
@@ -77,7 +77,7 @@ final class RefineCommand implements Callable<Integer> {
             report.put("input", model.toString());
             report.put("output", output.toString());
             report.put("inputTriangles", mesh.faceCount());
-            if (prepare) {
+            if (path != null) {
                 report.put("preparation", path.figures());
             }
             report.put("components", result.componentCount());
@@ -94,7 +94,7 @@ final class RefineCommand implements Callable<Integer> {
             report.put("seconds", seconds);
             out.print(Json.write(report));
         } else {
-            String prepared = !prepare ? "" : String.format(java.util.Locale.ROOT, " -> %d prepared (%d of %d planar regions, min angle %.3f)",
+            String prepared = path == null ? "" : String.format(java.util.Locale.ROOT, " -> %d prepared (%d of %d planar regions, min angle %.3f)",
                     path.preparation().trianglesAfter(), path.preparation().prepared(), path.preparation().regions(),
                     path.preparation().minAngleAfter());
             out.printf(java.util.Locale.ROOT, "%s: %d triangles in %d component(s)%s -> %d triangles (5n-2c), min angle %.3f -> %.3f degrees%n",

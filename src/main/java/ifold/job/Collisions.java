@@ -5,6 +5,7 @@ import ifold.mesh.IndexedPolygons;
 import ifold.wrap.WrapExport;
 import ifold.wrap.WrapGeometry;
 import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
@@ -64,7 +65,7 @@ public final class Collisions {
      * Checks the strips as {@link #check} does and adds the figures to a report's as
      * {@code collisions}, where there is a check: what both front ends report.
      *
-     * @return the check, or null for paper of no thickness
+     * @return the check, or null where {@link #notChecked} says why not (too many faces are reported as such)
      */
     public static PaperCollisions.Result addTo(Map<String, Object> figures, List<WrapGeometry> strips, double thickness,
             IndexedPolygons model, Path exported) throws IOException {
@@ -83,7 +84,7 @@ public final class Collisions {
         try {
             return addTo(figures, strips, thickness, model, null);
         } catch (IOException e) {
-            throw new java.io.UncheckedIOException(e); // no file is read
+            throw new UncheckedIOException(e); // no file is read
         }
     }
 

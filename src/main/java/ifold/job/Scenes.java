@@ -147,7 +147,7 @@ public final class Scenes {
      * above them and hidden until asked for (the viewer's C): where a fold is impossible. The
      * collision checker reads the paper's OBJ text; its face numbers are the OBJ's.
      *
-     * @return the geometry, or null for paper of no thickness (not checked)
+     * @return the geometry, or null for paper the checker does not check ({@link Collisions#notChecked})
      */
     public static Geometry collisions(Scene scene, List<WrapGeometry> strips, double thickness, IndexedPolygons model) {
         PaperCollisions.Result result;

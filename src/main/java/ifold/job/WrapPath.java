@@ -4,6 +4,7 @@ import ifold.mesh.HalfedgeMesh;
 import ifold.refine.FacePreparation;
 import ifold.refine.HamiltonianRefinement;
 import ifold.refine.RefinementClaims;
+import java.io.PrintWriter;
 import java.util.LinkedHashMap;
 import java.util.Map;
 
@@ -25,7 +26,7 @@ public record WrapPath(FacePreparation.Result preparation, HamiltonianRefinement
      * Says on {@code err}, in one line naming {@code model}, why the model's faces were kept as
      * they are although some needed preparing; says nothing where they were prepared or needed none.
      */
-    public void warnIfKept(String model, java.io.PrintWriter err) {
+    public void warnIfKept(String model, PrintWriter err) {
         if (preparation.kept() != null) {
             err.println("ifold: " + model + ": faces kept as they are, not prepared: " + preparation.kept());
             err.flush();

@@ -1,18 +1,24 @@
 package ifold.refine;
 
+import ifold.geom.Polygons;
 import ifold.geom.Triangles;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.InvalidMeshException;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.MeshValidator;
 import ifold.mesh.PolygonSoup;
+import ifold.mesh.Topology;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Deque;
+import java.util.HashMap;
+import java.util.HashSet;
 import java.util.IdentityHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
+import java.util.Set;
 import org.tinfour.common.IConstraint;
 import org.tinfour.common.IQuadEdge;
 import org.tinfour.common.PolygonConstraint;
@@ -65,6 +71,9 @@ public final class FacePreparation {
 
     /** The most pieces the edges of a model may be cut into before the triangulation, at least: beyond that the model keeps its triangles. */
     private static final long MOST_PIECES = 100_000;
+
+    /** The most pieces one edge is cut into: a split's place on its edge is 24 bits of its key. */
+    private static final int MOST_SPLITS_OF_AN_EDGE = 1 << 23;
 
     /** The prepared triangles may be this many times the model's (and 10,000 more) before the model keeps its own. */
     private static final int MOST_TIMES_TRIANGLES = 50;
@@ -121,15 +130,17 @@ public final class FacePreparation {
             normal = new double[3 * faces];
             regionOf = new int[faces];
             splits = new double[mesh.edgeCount()][];
+            int[] corners = new int[3];
+            double[] n = new double[3];
             for (int f = 0; f < faces; f++) {
                 int h = mesh.faceHalfedge(f);
                 if (mesh.next(mesh.next(mesh.next(h))) != h) {
                     throw new IllegalArgumentException("face preparation needs triangles, but face " + f + " has " + mesh.faceSize(f) + " sides");
                 }
-                int a = mesh.fromVertex(h);
-                int b = mesh.toVertex(h);
-                int c = mesh.toVertex(mesh.next(h));
-                double[] n = cross(xyz, a, b, c);
+                corners[0] = mesh.fromVertex(h);
+                corners[1] = mesh.toVertex(h);
+                corners[2] = mesh.toVertex(mesh.next(h));
+                Polygons.newellNormal(xyz, corners, 3, n);
                 double length = Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
                 for (int k = 0; k < 3; k++) {
                     normal[3 * f + k] = length > 0 ? n[k] / length : 0;
@@ -163,11 +174,11 @@ public final class FacePreparation {
                 HalfedgeMesh prepared = assemble();
                 double after = RefinementClaims.minAngleDegrees(prepared);
                 if (after < before) {
-                    throw new Unprepared(String.format(java.util.Locale.ROOT, "the prepared triangles' smallest angle, %.3g degrees, is "
+                    throw new Unprepared(String.format(Locale.ROOT, "the prepared triangles' smallest angle, %.3g degrees, is "
                             + "under the model's own %.3g (a feature thinner than its faces)", after, before));
                 }
                 if (prepared.faceCount() > MOST_TIMES_TRIANGLES * mesh.faceCount() + MOST_PIECES / 10) {
-                    throw new Unprepared(String.format(java.util.Locale.ROOT, "the prepared faces would be %d triangles, more than %d "
+                    throw new Unprepared(String.format(Locale.ROOT, "the prepared faces would be %d triangles, more than %d "
                             + "times the model's %d", prepared.faceCount(), MOST_TIMES_TRIANGLES, mesh.faceCount()));
                 }
                 int count = 0;
@@ -185,7 +196,6 @@ public final class FacePreparation {
         /** Grows regions over edges between coplanar faces, each within its first face's plane. */
         private void growRegions() {
             Arrays.fill(regionOf, -1);
-            double[] scratch = new double[3];
             Deque<Integer> queue = new ArrayDeque<>();
             for (int seed = 0; seed < mesh.faceCount(); seed++) {
                 if (regionOf[seed] >= 0) {
@@ -202,7 +212,7 @@ public final class FacePreparation {
                     int h = h0;
                     do {
                         int g = mesh.face(HalfedgeMesh.twin(h));
-                        if (g >= 0 && regionOf[g] < 0 && coplanar(region, g, scratch)) {
+                        if (g >= 0 && regionOf[g] < 0 && coplanar(region, g)) {
                             regionOf[g] = region.index;
                             queue.add(g);
                         }
@@ -213,7 +223,7 @@ public final class FacePreparation {
             }
         }
 
-        private boolean coplanar(Region region, int g, double[] scratch) {
+        private boolean coplanar(Region region, int g) {
             double cos = normal[3 * region.seed] * normal[3 * g] + normal[3 * region.seed + 1] * normal[3 * g + 1]
                     + normal[3 * region.seed + 2] * normal[3 * g + 2];
             if (!(cos > 1 - COPLANAR_COSINE)) {
@@ -260,10 +270,14 @@ public final class FacePreparation {
                 double n0 = Math.ceil(length / piece[e] - 1e-9);
                 pieces += (long) Math.min(n0, budget + 1);
                 if (pieces > budget) {
-                    throw new Unprepared(String.format(java.util.Locale.ROOT, "a face is too thin to prepare: its edges would be cut "
+                    throw new Unprepared(String.format(Locale.ROOT, "a face is too thin to prepare: its edges would be cut "
                             + "into more than %d pieces (an edge %.4g long beside a face %.4g thick)", budget, length, piece[e] / PIECE_OVER_THICKNESS));
                 }
                 int n = (int) n0;
+                if (n > MOST_SPLITS_OF_AN_EDGE) {
+                    throw new Unprepared(String.format(Locale.ROOT, "a face is too thin to prepare: an edge %.4g long would be cut "
+                            + "into %d pieces, more than %d", length, n, MOST_SPLITS_OF_AN_EDGE));
+                }
                 if (n > 1) {
                     double[] t = new double[n - 1];
                     for (int k = 1; k < n; k++) {
@@ -383,8 +397,10 @@ public final class FacePreparation {
             if (!MeshValidator.isValid(prepared)) {
                 throw new Unprepared("the prepared mesh is not valid: " + MeshValidator.validate(prepared).get(0));
             }
-            if (prepared.edgeCount() - prepared.faceCount() - prepared.vertexCount() != mesh.edgeCount() - mesh.faceCount() - mesh.vertexCount()
-                    || boundaryHalfedges(prepared) > 0 != boundaryHalfedges(mesh) > 0) {
+            Topology before = Topology.of(mesh);
+            Topology after = Topology.of(prepared);
+            if (after.eulerCharacteristic() != before.eulerCharacteristic() || after.boundaryLoops() != before.boundaryLoops()
+                    || after.components() != before.components()) {
                 throw new Unprepared("the prepared surface has another topology than the model's");
             }
             double areaBefore = area(mesh);
@@ -478,7 +494,7 @@ public final class FacePreparation {
                     minAngle = Math.min(minAngle, Triangles.minAngle(xyz, a, b, c));
                     area += Triangles.twiceArea(xyz, a, b, c) / 2;
                 }
-                Map<Integer, Double> cornerAngle = new java.util.HashMap<>();
+                Map<Integer, Double> cornerAngle = new HashMap<>();
                 for (int f : faces) {
                     int h0 = mesh.faceHalfedge(f);
                     int h = h0;
@@ -517,12 +533,12 @@ public final class FacePreparation {
             /** The boundary halfedges as closed loops, each in order (the outer loop counter-clockwise about the normal, holes clockwise). */
             List<List<Integer>> loops() throws Unprepared {
                 List<Integer> boundary = boundary();
-                Map<Integer, Integer> place = new java.util.HashMap<>();
+                Map<Integer, Integer> place = new HashMap<>();
                 for (int i = 0; i < boundary.size(); i++) {
                     place.put(boundary.get(i), i);
                 }
                 // A region that touches itself at a corner passes that corner twice: no polygon with holes.
-                java.util.Set<Integer> corners = new java.util.HashSet<>();
+                Set<Integer> corners = new HashSet<>();
                 for (int h : boundary) {
                     if (!corners.add(mesh.fromVertex(h))) {
                         throw new Unprepared("region " + index + "'s boundary touches itself at a corner");
@@ -571,7 +587,7 @@ public final class FacePreparation {
                 double[] n = {normal[3 * seed], normal[3 * seed + 1], normal[3 * seed + 2]};
                 List<List<Integer>> loops = loops();
                 // The splits as this run takes them: a split the refinement adds is for the next run.
-                Map<Integer, double[]> taken = new java.util.HashMap<>();
+                Map<Integer, double[]> taken = new HashMap<>();
                 for (List<Integer> loop : loops) {
                     for (int h : loop) {
                         int e = HalfedgeMesh.edge(h);
@@ -601,12 +617,10 @@ public final class FacePreparation {
                         boolean forward = h == HalfedgeMesh.halfedgeOfEdge(e, 0);
                         addPoint(mesh.fromVertex(h), cornerKey(mesh.fromVertex(h)), o, e1, e2, scale, keys, points, polygon, known);
                         double[] t = taken.get(e);
-                        {
-                            for (int k = 0; k < t.length; k++) {
-                                int i = forward ? k : t.length - 1 - k;
-                                double[] p = pointOnEdge(e, t[i]);
-                                addPoint(p, splitKey(e, i), o, e1, e2, scale, keys, points, polygon, known);
-                            }
+                        for (int k = 0; k < t.length; k++) {
+                            int i = forward ? k : t.length - 1 - k;
+                            double[] p = pointOnEdge(e, t[i]);
+                            addPoint(p, splitKey(e, i), o, e1, e2, scale, keys, points, polygon, known);
                         }
                     }
                     PolygonConstraint constraint = new PolygonConstraint(polygon);
@@ -644,8 +658,8 @@ public final class FacePreparation {
                         continue;
                     }
                     Vertex[] corners = {t.getVertexA(), t.getVertexB(), t.getVertexC()};
-                    IConstraint region = t.getContainingRegion();
-                    if (region == null || !region.definesConstrainedRegion()) {
+                    IConstraint containing = t.getContainingRegion();
+                    if (containing == null || !containing.definesConstrainedRegion()) {
                         continue; // in a hole, or outside a region that is not convex
                     }
                     double twice = (corners[1].getX() - corners[0].getX()) * (corners[2].getY() - corners[0].getY())
@@ -783,24 +797,6 @@ public final class FacePreparation {
                 return splitKey(e, Arrays.binarySearch(grown, at));
             }
         }
-    }
-
-    private static double[] cross(double[] xyz, int a, int b, int c) {
-        double ux = xyz[3 * b] - xyz[3 * a];
-        double uy = xyz[3 * b + 1] - xyz[3 * a + 1];
-        double uz = xyz[3 * b + 2] - xyz[3 * a + 2];
-        double vx = xyz[3 * c] - xyz[3 * a];
-        double vy = xyz[3 * c + 1] - xyz[3 * a + 1];
-        double vz = xyz[3 * c + 2] - xyz[3 * a + 2];
-        return new double[] {uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx};
-    }
-
-    private static int boundaryHalfedges(HalfedgeMesh mesh) {
-        int count = 0;
-        for (int h = 0; h < mesh.halfedgeCount(); h++) {
-            count += mesh.isBoundary(h) ? 1 : 0;
-        }
-        return count;
     }
 
     private static double area(HalfedgeMesh mesh) {

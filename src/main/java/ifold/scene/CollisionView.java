@@ -1,5 +1,6 @@
 package ifold.scene;
 
+import java.util.ArrayDeque;
 import java.util.List;
 
 /** Faces of paper that collide, as the viewer shows them: in red, each a fan of triangles. */
@@ -16,7 +17,7 @@ public final class CollisionView {
     /** Shows what is named {@link #NAME} below {@code root} where it is hidden, and hides it where shown; whether there was any. */
     public static boolean toggle(Spatial root) {
         boolean found = false;
-        java.util.ArrayDeque<Spatial> open = new java.util.ArrayDeque<>(List.of(root));
+        ArrayDeque<Spatial> open = new ArrayDeque<>(List.of(root));
         while (!open.isEmpty()) {
             Spatial spatial = open.pop();
             if (NAME.equals(spatial.name())) {
