@@ -1,4 +1,6 @@
+import ifold.check.LayerOrder;
 import ifold.check.PaperCollisions;
+import ifold.fold.FoldFile;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.PolygonSoup;
@@ -61,8 +63,13 @@ public final class Layers {
                 }
             }
             PaperCollisions.Result collisions = PaperCollisions.check(Files.readString(obj), result.thickness(), surface);
-            return String.format(java.util.Locale.ROOT, "%d layers, %d tucks, %.1f s; %s", analysis.maxLayers(),
-                    result.count(Wrap.Kind.TUCK), seconds, collisions.summary());
+            List<FoldFile.Folded> sheets = new ArrayList<>();
+            for (Wrap.Strip strip : result.strips()) {
+                sheets.add(new FoldFile.Folded(strip.sheet(), result.frames()));
+            }
+            LayerOrder.Result order = LayerOrder.check(FoldFile.text("bench/Layers", sheets));
+            return String.format(java.util.Locale.ROOT, "%d layers, %d tucks, %.1f s; %s; %s", analysis.maxLayers(),
+                    result.count(Wrap.Kind.TUCK), seconds, order.valid() ? "layer order valid" : order.summary(), collisions.summary());
         } finally {
             Files.deleteIfExists(obj);
         }

@@ -130,7 +130,7 @@ final class DemoCommand implements Runnable {
                     sheet.length(), sheet.width(), sheet.length() / sheet.width(), passes, overlaps > 0 ? " (last overlapped)" : "",
                     turns + overlaps, tucks, analysis.maxLayers(), analysis.stackLevels(), analysis.surfaceArea() / analysis.paperArea(),
                     analysis.coverage(), WrapAnalysis.outsideArea(result), analysis.isometryError());
-            outputs.printCollisions(out);
+            outputs.printChecks(out);
             out.flush();
 
             Scene scene = new Scene();
@@ -208,7 +208,7 @@ final class DemoCommand implements Runnable {
             outputs.write(result, geometries, String.format(Locale.ROOT, "demo turn --angle %s", angle), figures, out);
             out.printf(Locale.ROOT, "turn: %.6g degrees asked, %.6g measured, top side %s, %d layers at most, strip %.4g x %.4g%n",
                     angle, gadget.measuredAngle(), gadget.endFacesUp() ? "up" : "down", analysis.maxLayers(), gadget.length(), width);
-            outputs.printCollisions(out);
+            outputs.printChecks(out);
             out.flush();
 
             Scene scene = new Scene();

@@ -107,7 +107,7 @@ final class FoldCommand implements Callable<Integer> {
         out.printf(Locale.ROOT, "%s: %d %s, %d layers at most, %d %s, isometry error %.1e%n", script.getFileName(), folds,
                 folds == 1 ? "fold" : "folds", figures.get("maxLayers"), creases, creases == 1 ? "crease" : "creases",
                 (Double) figures.get("isometryError"));
-        outputs.printCollisions(out);
+        outputs.printChecks(out);
         out.flush();
 
         Scene scene = new Scene();

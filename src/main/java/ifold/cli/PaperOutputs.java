@@ -1,7 +1,9 @@
 package ifold.cli;
 
+import ifold.check.LayerOrder;
 import ifold.check.PaperCollisions;
 import ifold.job.Collisions;
+import ifold.job.LayerOrders;
 import ifold.job.Json;
 import ifold.io.AtomicFile;
 import ifold.mesh.IndexedPolygons;
@@ -80,9 +82,34 @@ final class PaperOutputs {
 
     /**
      * Writes the sheets as a FOLD file if asked, and adds what its crease pattern holds to the
-     * figures ({@code creasePattern}: mountains, valleys, flat creases, border edges).
+     * figures ({@code creasePattern}: mountains, valleys, flat creases, border edges); where
+     * paper is exported at all (FOLD, OBJ or a report), checks its layer order with the
+     * independent checker, reading the FOLD file written (or its text), and adds
+     * {@code layerOrder}.
      */
     void exportFold(List<FoldFile.Folded> sheets, String title, Map<String, Object> figures, PrintWriter out) {
+        writeFold(sheets, title, figures, out);
+        if (exportFold == null && exportObj == null && report == null) {
+            return;
+        }
+        long started = System.nanoTime();
+        try {
+            LayerOrder.Result result = LayerOrders.addTo(figures, sheets, title, exportFold);
+            layerOrder = result != null ? result.summary() : "layer order: not checked: " + LayerOrders.notChecked(sheets);
+        } catch (IOException e) {
+            discardWritten();
+            throw new UserError("option --export-fold: cannot read back " + exportFold + ": " + e.getMessage());
+        }
+        layerOrderSeconds = (System.nanoTime() - started) * 1e-9;
+    }
+
+    /** The layer-order check's line, once made; null before. */
+    private String layerOrder;
+
+    /** The seconds the layer-order check took, 0 where none was made. */
+    double layerOrderSeconds;
+
+    private void writeFold(List<FoldFile.Folded> sheets, String title, Map<String, Object> figures, PrintWriter out) {
         if (exportFold == null) {
             return;
         }
@@ -162,8 +189,11 @@ final class PaperOutputs {
         }
     }
 
-    /** Prints the collision check's line, where one was made. */
-    void printCollisions(PrintWriter out) {
+    /** Prints the lines of the checks of the paper (its layer order, its collisions), where they were made. */
+    void printChecks(PrintWriter out) {
+        if (layerOrder != null) {
+            out.println(layerOrder);
+        }
         if (collisions != null) {
             out.println(collisions);
         }

@@ -132,12 +132,12 @@ final class WrapCommand implements Callable<Integer> {
                 written.add(exportObj);
                 outputs.wrote(exportObj);
             }
+            List<FoldFile.Folded> sheets = new ArrayList<>();
+            for (Wrap.Strip strip : result.strips()) {
+                sheets.add(new FoldFile.Folded(strip.sheet(), result.frames()));
+            }
+            outputs.exportFold(sheets, "ifold wrap " + model, figures, new PrintWriter(java.io.Writer.nullWriter()));
             if (outputs.exportFold != null) {
-                List<FoldFile.Folded> sheets = new ArrayList<>();
-                for (Wrap.Strip strip : result.strips()) {
-                    sheets.add(new FoldFile.Folded(strip.sheet(), result.frames()));
-                }
-                outputs.exportFold(sheets, "ifold wrap " + model, figures, new PrintWriter(java.io.Writer.nullWriter()));
                 written.add(outputs.exportFold);
             }
             long exportedAt = System.nanoTime();
@@ -148,7 +148,8 @@ final class WrapCommand implements Callable<Integer> {
             seconds.put("refine", (refinedAt - loadedAt) * 1e-9);
             seconds.put("wrap", (wrappedAt - refinedAt) * 1e-9);
             seconds.put("analyse", (analysedAt - wrappedAt) * 1e-9);
-            seconds.put("export", (exportedAt - analysedAt) * 1e-9);
+            seconds.put("export", (exportedAt - analysedAt) * 1e-9 - outputs.layerOrderSeconds);
+            seconds.put("layerOrder", outputs.layerOrderSeconds);
             seconds.put("collisions", (writtenAt - exportedAt) * 1e-9);
             figures.put("seconds", seconds);
             if (report != null) {
@@ -164,7 +165,7 @@ final class WrapCommand implements Callable<Integer> {
             out.println("wrote " + file);
         }
         out.println(summary(model, mesh, path, result, analysis));
-        outputs.printCollisions(out);
+        outputs.printChecks(out);
         out.flush();
         if (outputs.frameOptions.frames != null || !outputs.noView) {
             show(mesh, result, geometries, written);

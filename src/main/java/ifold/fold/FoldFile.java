@@ -123,6 +123,16 @@ public final class FoldFile {
         return pattern.counts;
     }
 
+    /** The FOLD file's text, as {@link #write} writes it, made in memory (for a check of what would be written). */
+    public static String text(String title, List<Folded> sheets) throws IOException {
+        Pattern pattern = new Pattern(sheets);
+        java.io.ByteArrayOutputStream bytes = new java.io.ByteArrayOutputStream();
+        try (JsonGenerator json = JSON.createGenerator(bytes)) {
+            pattern.writeTo(json, title);
+        }
+        return bytes.toString(java.nio.charset.StandardCharsets.UTF_8);
+    }
+
     /** The crease pattern and folded state, found once and written after. */
     private static final class Pattern {
         final List<Folded> sheets;

@@ -141,7 +141,7 @@ public final class Sheet {
         Sheet sheet = new Sheet(width, thickness, tolerance, host, pose);
         int a = sheet.addVertex(length, 0);
         int b = sheet.addVertex(length, width);
-        sheet.addFace(new int[] {sheet.tailA, a, b, sheet.tailB}, host, pose, Placement.OVER);
+        sheet.addFace(new int[] {sheet.tailA, a, b, sheet.tailB}, host, pose, Placement.OVER, -1);
         sheet.length = length;
         return sheet;
     }
@@ -199,7 +199,8 @@ public final class Sheet {
         }
         int a = addVertex(end, 0);
         int b = addVertex(end, width);
-        int face = addFace(new int[] {tailA, a, b, tailB}, tailHost, tailPose, tailPlacement);
+        int[] loop = {tailA, a, b, tailB};
+        int face = addFace(loop, tailHost, tailPose, tailPlacement, tailHinge(loop));
         length = end;
         tailA = a;
         tailB = b;
@@ -251,7 +252,7 @@ public final class Sheet {
         int a = sameA ? tailA : addVertex(at[0], 0);
         int b = sameB ? tailB : addVertex(at[1], width);
         int[] loop = sameA ? new int[] {tailA, b, tailB} : sameB ? new int[] {tailA, a, tailB} : new int[] {tailA, a, b, tailB};
-        int face = addFace(loop, tailHost, tailPose, tailPlacement);
+        int face = addFace(loop, tailHost, tailPose, tailPlacement, tailHinge(loop));
         creases.put(undirected(a, b), kind.ordinal() + CREASES.length * creasingFolds++);
         tailA = a;
         tailB = b;
@@ -324,7 +325,7 @@ public final class Sheet {
             }
         }
         edit.crease(moving, Crease.TUCK);
-        edit.move(moving, host, Isometry2.reflection(px, py, dx, dy), Placement.UNDER);
+        edit.tuckUnder(moving, Isometry2.reflection(px, py, dx, dy), nx, ny, c);
         Edit.Journal journal = edit.journal();
         int[] moved = moving.stream().mapToInt(Integer::intValue).sorted().toArray();
         return new Tuck(host, moved, px, py, dx, dy, journal.facesBefore(), journal.changed(), journal.loopsBefore(),
@@ -494,6 +495,74 @@ public final class Sheet {
          * {@code placement} it.
          */
         public void move(Set<Integer> faces, int toHost, Isometry2 frameChange, Placement placement) {
+            move(faces, toHost, frameChange, placement, null, null);
+        }
+
+        /**
+         * Tucks {@code faces}, resting on one host, across the fold line (nx, ny)·p = c: as
+         * {@link #move} does with {@link Placement#UNDER}, their own order reversed, so that
+         * their layers nest about the line as they did before (flat folding's taco-taco
+         * condition), but not so that paper going on across the line to another host (a strip
+         * crossing the edge) lies between the flap and the paper it is folded from, its hinges:
+         * the flap would wrap around that strip, which paper cannot (taco-tortilla). The flap
+         * goes as one: under all it overlaps, or, where such strips lie below the lowest of its
+         * hinges (the staying faces it is joined to), just above the highest of them (in the
+         * stack's order by levels). A flap with hinges on either side of such a strip (a pass's
+         * end that turns beyond the line and comes back around it) still wraps it; it happens
+         * at the widest strip on the cube.
+         */
+        public void tuckUnder(Set<Integer> faces, Isometry2 reflection, double nx, double ny, double c) {
+            if (faces.isEmpty()) {
+                return;
+            }
+            int host = hostOf[faces.iterator().next()];
+            Stack stack = stacks.get(host);
+            int[] levels = levels(stack);
+            Map<Integer, Integer> levelOf = new HashMap<>();
+            for (int i = 0; i < stack.count; i++) {
+                levelOf.put(stack.faces[i], levels[i]);
+            }
+            int lowestHinge = Integer.MAX_VALUE;
+            List<Integer> crossingLevels = new ArrayList<>();
+            for (int i = 0; i < stack.count; i++) {
+                int f = stack.faces[i];
+                int[] loop = loops.get(f);
+                Isometry2 pose = poseOf.get(f);
+                boolean moves = faces.contains(f);
+                for (int k = 0; k < loop.length; k++) {
+                    int a = loop[k];
+                    int b = loop[(k + 1) % loop.length];
+                    int across = faceOfEdge.get(directed(b, a), -1);
+                    if (across < 0) {
+                        continue;
+                    }
+                    if (moves && !faces.contains(across) && hostOf[across] == host) {
+                        lowestHinge = Math.min(lowestHinge, levelOf.get(across));
+                    } else if (!moves && hostOf[across] != host && onLine(pose, a, nx, ny, c) && onLine(pose, b, nx, ny, c)) {
+                        crossingLevels.add(levels[i]);
+                    }
+                }
+            }
+            int place = -1;
+            for (int level : crossingLevels) {
+                if (level < lowestHinge) {
+                    place = Math.max(place, level);
+                }
+            }
+            move(faces, host, reflection, Placement.UNDER, place, levelOf);
+        }
+
+        private boolean onLine(Isometry2 pose, int p, double nx, double ny, double c) {
+            return Math.abs(nx * pose.x(u(p), v(p)) + ny * pose.y(u(p), v(p)) - c) <= tolerance;
+        }
+
+        /**
+         * As {@link #move(Set, int, Isometry2, Placement)}; with a {@code tuckPlace} (not null),
+         * a tuck ({@link #tuckUnder}) just above that level of the stack, whose levels before
+         * the move {@code levelBefore} holds.
+         */
+        private void move(Set<Integer> faces, int toHost, Isometry2 frameChange, Placement placement, Integer tuckPlace,
+                Map<Integer, Integer> levelBefore) {
             if (faces.isEmpty()) {
                 return;
             }
@@ -560,6 +629,12 @@ public final class Sheet {
                 changed(f);
             }
             Stack to = stacks.computeIfAbsent(toHost, h -> new Stack());
+            if (tuckPlace != null) {
+                placeTucked(faces, to, carried, tuckPlace, levelBefore);
+                to.levels = null;
+                from.levels = null;
+                return;
+            }
             // Each moved face lands over (or under) the faces it overlaps, unless a moved face it
             // rests on, and that holds all of it, lies between: the order is then implied, and a
             // stack folded again and again would otherwise hold every pair of its layers.
@@ -604,6 +679,27 @@ public final class Sheet {
             }
             to.levels = null;
             from.levels = null;
+        }
+    }
+
+    /**
+     * The order of tucked {@code faces}, as {@link Edit#tuckUnder} places them: just above the
+     * staying paper of level {@code place} and below the rest (under all at -1), in their own
+     * order {@code carried}.
+     */
+    private void placeTucked(Set<Integer> faces, Stack to, LongList carried, int place, Map<Integer, Integer> levelBefore) {
+        for (int i = 0; i < to.count; i++) {
+            int g = to.faces[i];
+            boolean below = levelBefore.get(g) <= place;
+            for (int f : faces) {
+                if (overlap(f, g)) {
+                    to.above.add(below ? ((long) f << 32) | g : ((long) g << 32) | f);
+                }
+            }
+        }
+        to.above.addAll(carried);
+        for (int f : faces) {
+            to.add(f);
         }
     }
 
@@ -716,7 +812,26 @@ public final class Sheet {
 
     // ---------------------------------------------------------------- faces and stacks
 
-    private int addFace(int[] loop, int host, Isometry2 pose, Placement placement) {
+    /**
+     * The face a piece of the tail about to be laid as {@code loop} is folded from: the face
+     * laid last, across the tail's start, where it rests on the tail's host; -1 where there is
+     * none (the strip's first face, or the first on a host after a crossing).
+     */
+    private int tailHinge(int[] loop) {
+        int before = faceOfEdge.get(directed(loop[0], loop[loop.length - 1]), -1);
+        return before >= 0 && hostOf[before] == tailHost ? before : -1;
+    }
+
+    /**
+     * Lays a new face on {@code host}. Folded from {@code hinge} (a face of the same host, or
+     * -1), it goes just over (or under) it, as paper folded about a crease lands on the layer it
+     * is folded from: in the stack's order by levels, with the hinge last of its level (first,
+     * under), it lies above the faces that come before the hinge and below those after. Paper
+     * crossing the crease above the hinge then stays outside the fold, not between its two
+     * layers (flat folding's taco-tortilla condition). Without a hinge it lands over (under)
+     * every face it overlaps.
+     */
+    private int addFace(int[] loop, int host, Isometry2 pose, Placement placement, int hinge) {
         int f = loops.size();
         loops.add(loop);
         poseOf.add(pose);
@@ -724,10 +839,23 @@ public final class Sheet {
         hostOf[f] = host;
         register(f);
         Stack stack = stacks.computeIfAbsent(host, h -> new Stack());
+        int[] levels = hinge >= 0 ? levels(stack) : null;
+        int hingeLevel = -1;
+        if (hinge >= 0) {
+            for (int i = 0; i < stack.count; i++) {
+                if (stack.faces[i] == hinge) {
+                    hingeLevel = levels[i];
+                }
+            }
+        }
         for (int i = 0; i < stack.count; i++) {
             int g = stack.faces[i];
             if (overlap(f, g)) {
-                stack.above.add(placement == Placement.OVER ? ((long) f << 32) | g : ((long) g << 32) | f);
+                boolean over = placement == Placement.OVER;
+                if (hinge >= 0) {
+                    over = placement == Placement.OVER ? levels[i] <= hingeLevel : levels[i] < hingeLevel;
+                }
+                stack.above.add(over ? ((long) f << 32) | g : ((long) g << 32) | f);
             }
         }
         stack.add(f);

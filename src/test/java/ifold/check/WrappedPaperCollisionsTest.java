@@ -107,30 +107,20 @@ class WrappedPaperCollisionsTest {
     }
 
     /**
-     * The cube's wrap: face 3 is flat paper at z = -0.006777 and face 8643 a cap that bends from
-     * 4 T below it to 7 T above; the cap crosses it along a segment 133 T long, 4 T deep.
+     * The cube's wrap: flat paper never crosses flat paper on a convex solid, and since a fold
+     * lands just over (or under) the layer it is folded from, the bends at its flat folds join
+     * neighbouring layers: every crossing left is a cap's, none deeper than 4 T (there were
+     * 8,014 pairs, a cap joining level 1 to level 23 going 4 T through face 3, before).
      */
     @Test
-    void theCubesWrapHasTheCrossingFoundByHand() throws Exception {
+    void theCubesWrapCollidesOnlyAtCaps() throws Exception {
         Result result = wrapAndCheck("cube");
         assertTrue(result.crossingPairs() > 0, result::summary);
-        Crossing deepest = result.deepest();
-        assertEquals(3, deepest.faceA(), result::summary);
-        assertEquals(8643, deepest.faceB(), result::summary);
-        assertEquals(Kind.CAP, deepest.kind());
-        assertEquals(4, deepest.depth(), 1e-6);
-        double[] a = {0.444737, 0.223957, -0.006777};
-        double[] b = {0.542725, 0.183369, -0.006777};
-        boolean forward = Math.abs(deepest.from().x() - a[0]) < Math.abs(deepest.from().x() - b[0]);
-        double[] from = forward ? a : b;
-        double[] to = forward ? b : a;
-        assertEquals(from[0], deepest.from().x(), 1e-6);
-        assertEquals(from[1], deepest.from().y(), 1e-6);
-        assertEquals(from[2], deepest.from().z(), 1e-6);
-        assertEquals(to[0], deepest.to().x(), 1e-6);
-        assertEquals(to[1], deepest.to().y(), 1e-6);
-        assertEquals(to[2], deepest.to().z(), 1e-6);
-        assertEquals(133, deepest.length() / 7.972571507606034E-4, 0.5, "133 T long");
+        assertEquals(result.crossingPairs(), result.capPairs(), result::summary);
+        assertEquals(0, result.coplanarPairs(), result::summary);
+        assertEquals(0, result.modelCrossings() + result.pointsInside(), result::summary);
+        assertTrue(result.crossingPairs() < 8014, result::summary);
+        assertTrue(result.deepest().depth() <= 4 + 1e-9, result::summary);
     }
 
     static Stream<Path> scripts() throws Exception {

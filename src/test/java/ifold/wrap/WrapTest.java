@@ -56,6 +56,13 @@ class WrapTest {
 
     /** Checks a wrap of {@code model} (any triangles it rests on): the five truths on its OBJ, and the report against the file. */
     static void check(Path dir, Wrap.Result result, IndexedPolygons model, int components, int samples) throws Exception {
+        ifold.check.LayerOrder.Result order = check(dir, result, model, components, samples, false);
+        assertTrue(order.valid(), order::summary);
+    }
+
+    /** As {@link #check(Path, Wrap.Result, IndexedPolygons, int, int)}, but returns the layer order, valid or not, rather than assert it. */
+    static ifold.check.LayerOrder.Result check(Path dir, Wrap.Result result, IndexedPolygons model, int components, int samples,
+            boolean anyLayerOrder) throws Exception {
         List<WrapGeometry> geometries = new ArrayList<>();
         for (Wrap.Strip strip : result.strips()) {
             geometries.add(WrapGeometry.of(strip.sheet(), result.frames()));
@@ -94,6 +101,19 @@ class WrapTest {
         assertTrue(truths.farthestFromSurface() <= (analysis.stackLevels() + 1) * result.thickness() + 1e-9);
         // Every path triangle but the last is left over an edge.
         assertEquals(result.mesh().faceCount() - components, result.count(Wrap.Kind.EDGE_CROSSING));
+        // The sixth truth, read from the FOLD file: the layers are in an order flat paper can have.
+        List<ifold.fold.FoldFile.Folded> sheets = new ArrayList<>();
+        for (Wrap.Strip strip : result.strips()) {
+            sheets.add(new ifold.fold.FoldFile.Folded(strip.sheet(), result.frames()));
+        }
+        Path fold = dir.resolve("wrap.fold");
+        ifold.fold.FoldFile.write(fold, "test", sheets);
+        ifold.check.LayerOrder.Result order;
+        try (java.io.Reader reader = Files.newBufferedReader(fold)) {
+            order = ifold.check.LayerOrder.check(reader);
+        }
+        assertTrue(order.layered() > 0 || truths.strips() == 0, "setup: layers were found");
+        return order;
     }
 
     private static HalfedgeMesh build(PolygonSoup soup) throws Exception {
@@ -110,7 +130,14 @@ class WrapTest {
     @Test
     void narrowerStripsAndZeroThickness() throws Exception {
         HalfedgeMesh cube = build(Solids.cube());
-        Wrap.Result widest = wrapAndCheck(cube, new Wrap.Options(Wrap.widest(HamiltonianRefinement.refine(cube)), Double.NaN), 1000);
+        HamiltonianRefinement.Result refinement = HamiltonianRefinement.refine(cube);
+        Wrap.Result widest = Wrap.wrap(refinement, new Wrap.Options(Wrap.widest(refinement), Double.NaN));
+        // At the widest strip a tuck's flap (a pass's end turning beyond an edge and coming
+        // back) has hinges on either side of a strip crossing that edge, and wraps it: 27
+        // places (76 when every flap went under all the paper it overlaps).
+        ifold.check.LayerOrder.Result order = check(dir, widest, cube, 1, 1000, true);
+        assertEquals(order.total(), (int) order.violations().get(ifold.check.LayerOrder.Kind.TACO_TORTILLA), order::summary);
+        assertTrue(order.total() <= 27, order::summary);
         Wrap.Result narrow = wrapAndCheck(cube, new Wrap.Options(widest.width() / 3.7, Double.NaN), 1000);
         assertTrue(narrow.count(Wrap.Kind.ZIGZAG_TURN) > widest.count(Wrap.Kind.ZIGZAG_TURN), "more passes on a narrower strip");
         wrapAndCheck(cube, new Wrap.Options(widest.width() / 2, 0), 1000);

@@ -4,6 +4,7 @@ import ifold.fold.CreasePattern;
 import ifold.fold.FoldFile;
 import ifold.geom.Triangle;
 import ifold.job.Collisions;
+import ifold.job.LayerOrders;
 import ifold.job.Reports;
 import ifold.job.Scenes;
 import ifold.job.Scripts;
@@ -197,6 +198,7 @@ public final class Planning {
         List<WrapGeometry> geometries = List.of(WrapGeometry.of(result.strips().get(0).sheet(), result.frames()));
         WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
         Map<String, Object> figures = Reports.zigzag(job.triangle(), job.start(), job.end(), result, analysis);
+        LayerOrders.addTo(figures, List.of(new FoldFile.Folded(result.strips().get(0).sheet(), result.frames())), "zigzag");
         Collisions.addTo(figures, geometries, result.thickness(), result.mesh());
         progress.check();
         String source = "demo zigzag --triangle " + job.triangle();
@@ -217,6 +219,7 @@ public final class Planning {
         List<WrapGeometry> geometries = List.of(WrapGeometry.of(gadget.sheet(), result.frames()));
         WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
         Map<String, Object> figures = Reports.turn(options, gadget, analysis);
+        LayerOrders.addTo(figures, List.of(new FoldFile.Folded(gadget.sheet(), result.frames())), "turn");
         Collisions.addTo(figures, geometries, result.thickness(), result.mesh());
         progress.check();
         String source = String.format(Locale.ROOT, "demo turn --angle %s", options.angle());
@@ -255,6 +258,11 @@ public final class Planning {
         }
         WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
         Map<String, Object> figures = Reports.wrap(model.toString(), mesh.faceCount(), built.repairs(), path, result, analysis);
+        List<FoldFile.Folded> sheets = new ArrayList<>();
+        for (Wrap.Strip strip : result.strips()) {
+            sheets.add(new FoldFile.Folded(strip.sheet(), result.frames()));
+        }
+        LayerOrders.addTo(figures, sheets, "wrap");
         Collisions.addTo(figures, geometries, result.thickness(), mesh);
         progress.check();
         int folds = result.steps().size() - result.count(Wrap.Kind.END);
@@ -301,6 +309,7 @@ public final class Planning {
         progress.check();
         WrapGeometry folded = WrapGeometry.of(result.sheet(), result.frames());
         Map<String, Object> figures = Reports.script(result, folded);
+        LayerOrders.addTo(figures, List.of(FoldFile.Folded.ofScript(parsed, result, ScriptFolding.DEFAULT_MAX_FACES)), "script");
         Collisions.addTo(figures, List.of(folded), result.sheet().thickness(), null);
         Plan.Shown shown = scriptScene(result, folded);
         List<Fold> folds = new ArrayList<>();
