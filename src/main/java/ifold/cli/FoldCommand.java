@@ -101,7 +101,9 @@ final class FoldCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         Map<String, Object> figures = Reports.script(result, folded);
         figures.put("timing", timing(nanosPerFold, result.steps()));
-        outputs.exportFold(List.of(FoldFile.Folded.ofScript(parsed, result, maxFaces)), "ifold fold " + script, figures, out);
+        // The FOLD file's folded state folds the script again on paper of no thickness: only when it is asked for.
+        outputs.exportFold(outputs.exportFold == null ? List.of() : List.of(FoldFile.Folded.ofScript(parsed, result, maxFaces)),
+                "ifold fold " + script, figures, out);
         outputs.write(List.of(folded), result.sheet().thickness(), "iFold fold script " + script + ": " + result.steps().size() + " folds, thickness "
                 + result.sheet().thickness(), figures, out);
         int folds = result.steps().size();
