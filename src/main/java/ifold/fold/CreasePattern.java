@@ -1,6 +1,5 @@
 package ifold.fold;
 
-import ifold.geom.Tolerance;
 import ifold.script.FoldScript;
 import ifold.script.FoldScriptException;
 import ifold.script.ScriptFolding;
@@ -34,6 +33,16 @@ import java.util.Map;
  */
 public record CreasePattern(double length, double width, FoldScript script, List<double[]> creases, List<double[]> lines,
         int[] lineOfCrease, double thickness) {
+
+    /**
+     * The largest and smallest sheets (their diagonal) folded: within them no product of two
+     * lengths overflows or underflows, as a line test on a sheet 1e154 across would (the range
+     * the zig-zag's triangles are held to).
+     */
+    static final double LARGEST_SHEET = 1e150;
+
+    /** See {@link #LARGEST_SHEET}. */
+    static final double SMALLEST_SHEET = 1e-150;
 
     /** A crease pattern that cannot be read, or cannot be folded as iFold folds. */
     public static final class Refused extends Exception {
@@ -79,18 +88,18 @@ public record CreasePattern(double length, double width, FoldScript script, List
         double length = box[2] - box[0];
         double width = box[3] - box[1];
         double size = Math.hypot(length, width);
-        if (!(size <= Tolerance.LARGEST_SHEET)) {
+        if (!(size <= LARGEST_SHEET)) {
             // Each coordinate may be finite and their differences not: no length on such a sheet can be measured.
             throw new Refused(String.format(Locale.ROOT, "the sheet is too large: its vertices run from x = %s to %s and y = %s to %s;"
                     + " iFold folds sheets from %s to %s across: scale the pattern down", fmt(box[0]), fmt(box[2]), fmt(box[1]),
-                    fmt(box[3]), Tolerance.SMALLEST_SHEET, Tolerance.LARGEST_SHEET));
+                    fmt(box[3]), SMALLEST_SHEET, LARGEST_SHEET));
         }
         if (!(length > 0) || !(width > 0)) {
             throw new Refused("the crease pattern has no area");
         }
-        if (size < Tolerance.SMALLEST_SHEET) {
+        if (size < SMALLEST_SHEET) {
             throw new Refused(String.format(Locale.ROOT, "the sheet is too small: %s across; iFold folds sheets from %s to %s across:"
-                    + " scale the pattern up", fmt(size), Tolerance.SMALLEST_SHEET, Tolerance.LARGEST_SHEET));
+                    + " scale the pattern up", fmt(size), SMALLEST_SHEET, LARGEST_SHEET));
         }
         double tolerance = 1e-9 * Math.hypot(length, width);
         List<double[]> creases = new ArrayList<>();

@@ -28,16 +28,6 @@ public final class Tolerance {
      */
     public static final double ON_PLANE = 1e-9;
 
-    /**
-     * The largest and smallest sheets (their diagonal) the fold engine takes: within them no
-     * product of two lengths overflows or underflows, as a line test or an area of a sheet
-     * 1e154 across would.
-     */
-    public static final double LARGEST_SHEET = 1e150;
-
-    /** See {@link #LARGEST_SHEET}. */
-    public static final double SMALLEST_SHEET = 1e-150;
-
     /** Whether a triangle with doubled area {@code twiceArea} and longest edge squared {@code longestSquared} has no area. */
     public static boolean isDegenerateTriangle(double twiceArea, double longestSquared) {
         return !(twiceArea > DEGENERATE_AREA * longestSquared);
