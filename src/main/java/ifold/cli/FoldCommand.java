@@ -2,9 +2,9 @@ package ifold.cli;
 
 import ifold.fold.CreasePattern;
 import ifold.fold.FoldFile;
+import ifold.fold.FoldJson;
 import ifold.job.Reports;
 import ifold.job.Scenes;
-import ifold.job.Scripts;
 import ifold.scene.Animation;
 import ifold.scene.Scene;
 import ifold.script.FoldScript;
@@ -29,9 +29,11 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 
-/** {@code ifold fold SCRIPT}: plays a fold script, in the viewer or as frames, and exports the result. */
+/** {@code ifold fold SCRIPT}: plays a fold script or a FOLD crease pattern, in the viewer or as frames, and exports the result. */
 @Command(name = "fold", mixinStandardHelpOptions = true,
-        description = {"Plays a fold script (docs/fold-scripts.md): each fold swings from 0 to its angle.",
+        description = {"Plays a fold script (docs/fold-scripts.md) or a FOLD file (JSON, as written by",
+            "--export-fold), whose crease pattern is folded one crease line at a time.",
+            "Each fold swings from 0 to its angle.",
             "Without --frames it plays in the viewer (space plays, arrows step through the folds).",
             "The animation takes ten seconds unless --seconds says otherwise."})
 final class FoldCommand implements Callable<Integer> {
@@ -39,7 +41,7 @@ final class FoldCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "SCRIPT", description = "a fold script")
+    @Parameters(index = "0", paramLabel = "SCRIPT", description = "a fold script, or a FOLD file of a crease pattern on a rectangle")
     Path script;
 
     @Option(names = "--max-faces", paramLabel = "N", defaultValue = "10000",
@@ -66,7 +68,7 @@ final class FoldCommand implements Callable<Integer> {
         LoadedModel.requireRegularFile(script);
         CreasePattern pattern = null;
         try {
-            if (Scripts.isFoldFile(script)) {
+            if (FoldJson.isFoldFile(script)) {
                 // A FOLD crease pattern, folded one crease line at a time.
                 pattern = CreasePattern.read(script);
                 parsed = pattern.script();
@@ -99,7 +101,9 @@ final class FoldCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         Map<String, Object> figures = Reports.script(result, folded);
         figures.put("timing", timing(nanosPerFold, result.steps()));
-        outputs.exportFold(List.of(FoldFile.Folded.ofScript(parsed, result, maxFaces)), "ifold fold " + script, figures, out);
+        // The FOLD file's folded state folds the script again on paper of no thickness: only when it is asked for.
+        outputs.exportFold(outputs.exportFold == null ? List.of() : List.of(FoldFile.Folded.ofScript(parsed, result, maxFaces)),
+                "ifold fold " + script, figures, out);
         outputs.write(List.of(folded), result.sheet().thickness(), "iFold fold script " + script + ": " + result.steps().size() + " folds, thickness "
                 + result.sheet().thickness(), figures, out);
         int folds = result.steps().size();

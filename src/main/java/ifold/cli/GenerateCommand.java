@@ -28,13 +28,13 @@ final class GenerateCommand implements Callable<Integer> {
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT", description = "where to write it (.off or .obj)")
     Path output;
 
-    @Option(names = "--around", defaultValue = "" + BuiltInModels.DEFAULT_AROUND, description = "torus: segments around the ring (default ${DEFAULT-VALUE})")
+    @Option(names = "--around", paramLabel = "N", defaultValue = "" + BuiltInModels.DEFAULT_AROUND, description = "torus: segments around the ring (default ${DEFAULT-VALUE})")
     int around;
 
-    @Option(names = "--across", defaultValue = "" + BuiltInModels.DEFAULT_ACROSS, description = "torus: segments around the tube (default ${DEFAULT-VALUE})")
+    @Option(names = "--across", paramLabel = "N", defaultValue = "" + BuiltInModels.DEFAULT_ACROSS, description = "torus: segments around the tube (default ${DEFAULT-VALUE})")
     int across;
 
-    @Option(names = "--subdivisions", defaultValue = "" + BuiltInModels.DEFAULT_SUBDIVISIONS, description = "icosphere: times each triangle is cut in four (default ${DEFAULT-VALUE}: 1,280 triangles)")
+    @Option(names = "--subdivisions", paramLabel = "N", defaultValue = "" + BuiltInModels.DEFAULT_SUBDIVISIONS, description = "icosphere: times each triangle is cut in four (default ${DEFAULT-VALUE}: 1,280 triangles)")
     int subdivisions;
 
     @Override

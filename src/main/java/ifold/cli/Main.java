@@ -18,14 +18,16 @@ public final class Main implements Runnable {
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
-    /** {@code ifold} alone: the window where there is a display; without one, the usage error of old. */
+    /** {@code ifold} alone: the window where there is a display; without one, a usage error saying how to open it and list the commands. */
     @Override
     public void run() {
         if (!PaperOutputs.hasDisplay() || !ifold.ui.App.canOpen()) {
-            throw new CommandLine.ParameterException(spec.commandLine(), "missing command");
+            // What was typed is not wrong where there is a display: say what it would have done, and how to go on.
+            throw UserError.usage("missing command: 'ifold' alone opens the window, and there is no display here"
+                    + " (where there is one: 'ifold', or 'ifold app FILE'); 'ifold --help' lists the commands");
         }
         try {
-            AppCommand.open(null, null);
+            AppCommand.open(null, null, spec.commandLine().getErr());
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }

@@ -1,9 +1,5 @@
 package ifold.fold;
 
-import com.fasterxml.jackson.core.JsonFactory;
-import com.fasterxml.jackson.core.JsonParseException;
-import com.fasterxml.jackson.core.JsonParser;
-import com.fasterxml.jackson.core.JsonToken;
 import ifold.script.FoldScript;
 import ifold.script.FoldScriptException;
 import ifold.script.ScriptFolding;
@@ -11,7 +7,8 @@ import ifold.sheet.Sheet;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
+import java.util.Arrays;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -30,10 +27,22 @@ import java.util.Map;
  * @param creases each mountain or valley edge: u1, v1, u2, v2 (moved to the sheet's corner) and +1 (valley) or -1
  * @param lines the crease lines in the order they are folded, one a fold of the script: u1, v1, u2, v2, +1 (valley)
  *     or -1, the angle, and +1 where the paper right of the line moves (-1 left)
+ * @param lineOfCrease for each crease, the line it lies on (its index in {@code lines}), or -1 where the file's
+ *     order folds none of that line's creases
  * @param thickness the paper's
  */
 public record CreasePattern(double length, double width, FoldScript script, List<double[]> creases, List<double[]> lines,
-        double thickness) {
+        int[] lineOfCrease, double thickness) {
+
+    /**
+     * The largest and smallest sheets (their diagonal) folded: within them no product of two
+     * lengths overflows or underflows, as a line test on a sheet 1e154 across would (the range
+     * the zig-zag's triangles are held to).
+     */
+    static final double LARGEST_SHEET = 1e150;
+
+    /** See {@link #LARGEST_SHEET}. */
+    static final double SMALLEST_SHEET = 1e-150;
 
     /** A crease pattern that cannot be read, or cannot be folded as iFold folds. */
     public static final class Refused extends Exception {
@@ -45,28 +54,27 @@ public record CreasePattern(double length, double width, FoldScript script, List
     }
 
     /**
-     * Reads {@code file}, a FOLD file whose key frame is a crease pattern. The paper's thickness
-     * is the file's {@code frame_ifold:thickness}, or a thousandth of the sheet's diagonal.
+     * Reads {@code file}, a FOLD file whose key frame is a crease pattern on a rectangle: its
+     * border edges ({@code B}) run all round the rectangle its vertices span, and each mountain
+     * or valley crease lies on a line that the file's creases cover from border to border, since
+     * each line is folded across the whole sheet. The paper's thickness is the file's
+     * {@code frame_ifold:thickness}, or a thousandth of the sheet's diagonal.
+     *
+     * @throws Refused naming the edge or the key, where the file is not such a crease pattern
      */
-    @SuppressWarnings("unchecked")
     public static CreasePattern read(Path file) throws IOException, Refused {
-        Map<String, Object> fold;
-        try (JsonParser parser = new JsonFactory().createParser(file.toFile())) {
-            if (parser.nextToken() != JsonToken.START_OBJECT) {
-                throw new Refused("not a FOLD file: it does not begin with a JSON object");
-            }
-            fold = (Map<String, Object>) value(parser);
-        } catch (JsonParseException e) {
-            throw new Refused(String.format(Locale.ROOT, "line %d: not valid JSON: %s", e.getLocation().getLineNr(),
-                    e.getOriginalMessage()));
-        }
+        Map<String, Object> fold = FoldJson.read(file);
         List<double[]> vertices = points(fold, "vertices_coords");
         List<double[]> edges = points(fold, "edges_vertices");
         Object assignmentsValue = fold.get("edges_assignment");
         if (!(assignmentsValue instanceof List<?> assignments) || assignments.size() != edges.size()) {
             throw new Refused("edges_assignment must give each edge B, M, V or F");
         }
-        List<Object> angles = fold.get("edges_foldAngle") instanceof List<?> list ? (List<Object>) list : null;
+        List<?> angles = fold.get("edges_foldAngle") instanceof List<?> list ? list : null;
+        if (angles != null && angles.size() != edges.size()) {
+            throw new Refused(String.format(Locale.ROOT, "edges_foldAngle must give each edge its angle: it has %d for %d edges",
+                    angles.size(), edges.size()));
+        }
         double[] box = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
         for (double[] v : vertices) {
             if (v.length < 2 || !Double.isFinite(v[0]) || !Double.isFinite(v[1])) {
@@ -79,17 +87,32 @@ public record CreasePattern(double length, double width, FoldScript script, List
         }
         double length = box[2] - box[0];
         double width = box[3] - box[1];
+        double size = Math.hypot(length, width);
+        if (!(size <= LARGEST_SHEET)) {
+            // Each coordinate may be finite and their differences not: no length on such a sheet can be measured.
+            throw new Refused(String.format(Locale.ROOT, "the sheet is too large: its vertices run from x = %s to %s and y = %s to %s;"
+                    + " iFold folds sheets from %s to %s across: scale the pattern down", fmt(box[0]), fmt(box[2]), fmt(box[1]),
+                    fmt(box[3]), SMALLEST_SHEET, LARGEST_SHEET));
+        }
         if (!(length > 0) || !(width > 0)) {
             throw new Refused("the crease pattern has no area");
+        }
+        if (size < SMALLEST_SHEET) {
+            throw new Refused(String.format(Locale.ROOT, "the sheet is too small: %s across; iFold folds sheets from %s to %s across:"
+                    + " scale the pattern up", fmt(size), SMALLEST_SHEET, LARGEST_SHEET));
         }
         double tolerance = 1e-9 * Math.hypot(length, width);
         List<double[]> creases = new ArrayList<>();
         List<Integer> creaseEdges = new ArrayList<>();
+        Border border = new Border(length, width, tolerance);
         for (int e = 0; e < edges.size(); e++) {
             double[] edge = edges.get(e);
+            if (edge.length != 2) {
+                throw new Refused("edge " + e + ": edges_vertices must name two vertices, it names " + edge.length);
+            }
             int a = (int) edge[0];
             int b = (int) edge[1];
-            if (edge.length != 2 || a != edge[0] || b != edge[1] || a < 0 || b < 0 || a >= vertices.size() || b >= vertices.size()) {
+            if (a != edge[0] || b != edge[1] || a < 0 || b < 0 || a >= vertices.size() || b >= vertices.size()) {
                 throw new Refused("edge " + e + ": edges_vertices must name two vertices");
             }
             double[] p = {vertices.get(a)[0] - box[0], vertices.get(a)[1] - box[1]};
@@ -97,13 +120,14 @@ public record CreasePattern(double length, double width, FoldScript script, List
             String assignment = String.valueOf(assignments.get(e)).toUpperCase(Locale.ROOT);
             switch (assignment) {
                 case "B" -> {
-                    boolean onBorder = (Math.abs(p[0] - q[0]) <= tolerance && (Math.abs(p[0]) <= tolerance || Math.abs(p[0] - length) <= tolerance))
-                            || (Math.abs(p[1] - q[1]) <= tolerance && (Math.abs(p[1]) <= tolerance || Math.abs(p[1] - width) <= tolerance));
-                    if (!onBorder) {
+                    if (!border.add(p, q)) {
                         throw new Refused("edge " + e + " is a border edge inside the sheet: iFold folds rectangular sheets");
                     }
                 }
                 case "M", "V" -> {
+                    if (Math.hypot(q[0] - p[0], q[1] - p[1]) <= tolerance) {
+                        throw new Refused("edge " + e + ": a crease of no length");
+                    }
                     double angle = angles != null && angles.get(e) instanceof Number n ? Math.abs(n.doubleValue()) : 180;
                     if (!(angle > 0 && angle <= 180)) {
                         throw new Refused("edge " + e + ": its fold angle must be more than 0 and at most 180 degrees");
@@ -118,13 +142,19 @@ public record CreasePattern(double length, double width, FoldScript script, List
                         + "not unassigned creases");
             }
         }
+        border.check(box);
+        int[] lineOf = CreaseLines.group(creases, tolerance);
+        CreaseLines.checkBorderToBorder(creases, lineOf, creaseEdges, length, width, tolerance, box);
         // The order of folding: the file's, or the edges'.
         List<Integer> order = new ArrayList<>();
         if (fold.get("edges_ifold:order") instanceof List<?> given) {
+            Map<Integer, Integer> creaseOfEdge = new HashMap<>();
+            for (int k = 0; k < creaseEdges.size(); k++) {
+                creaseOfEdge.put(creaseEdges.get(k), k);
+            }
             for (Object o : given) {
-                int e = o instanceof Number n ? n.intValue() : -1;
-                int k = creaseEdges.indexOf(e);
-                if (k < 0) {
+                Integer k = o instanceof Number n && n.doubleValue() == n.intValue() ? creaseOfEdge.get(n.intValue()) : null;
+                if (k == null) {
                     throw new Refused("edges_ifold:order names " + o + ", which is not a mountain or valley edge");
                 }
                 order.add(k);
@@ -136,25 +166,28 @@ public record CreasePattern(double length, double width, FoldScript script, List
         }
         double thickness = fold.get("frame_ifold:thickness") instanceof Number n && n.doubleValue() >= 0 ? n.doubleValue()
                 : 1e-3 * Math.hypot(length, width);
+        // Each line is folded once, as the first of its creases in the order says.
         List<double[]> folded = new ArrayList<>();
+        int[] foldOfLine = new int[creases.size()];
+        Arrays.fill(foldOfLine, -1);
         for (int k : order) {
-            double[] c = creases.get(k);
-            boolean done = false;
-            for (double[] line : folded) {
-                done |= onLine(line, c[0], c[1], tolerance) && onLine(line, c[2], c[3], tolerance);
-            }
-            if (done) {
+            if (foldOfLine[lineOf[k]] >= 0) {
                 continue; // folded with an earlier crease of its line
             }
-            folded.add(c);
+            foldOfLine[lineOf[k]] = folded.size();
+            double[] c = creases.get(k);
             // The paper beyond the line from the sheet's first corner (0, 0) moves; if the line
             // runs through that corner, from the opposite one.
             double[] corner = onLine(c, 0, 0, tolerance) ? new double[] {length, width} : new double[] {0, 0};
             double cross = (c[2] - c[0]) * (corner[1] - c[1]) - (c[3] - c[1]) * (corner[0] - c[0]);
-            folded.set(folded.size() - 1, new double[] {c[0], c[1], c[2], c[3], c[4], c[5], cross > 0 ? 1 : -1});
+            folded.add(new double[] {c[0], c[1], c[2], c[3], c[4], c[5], cross > 0 ? 1 : -1});
+        }
+        int[] foldOfCrease = new int[creases.size()];
+        for (int k = 0; k < creases.size(); k++) {
+            foldOfCrease[k] = foldOfLine[lineOf[k]];
         }
         return new CreasePattern(length, width, script(length, width, thickness, folded, new boolean[folded.size()]), creases,
-                List.copyOf(folded), thickness);
+                List.copyOf(folded), foldOfCrease, thickness);
     }
 
     /** The lines as flap folds of a script, each valley or mountain as its line says, the other way where {@code turned}. */
@@ -190,24 +223,13 @@ public record CreasePattern(double length, double width, FoldScript script, List
             if (wrong < 0) {
                 return new Folding(folds, result);
             }
-            int line = lineOf(creases.get(wrong));
+            int line = lineOfCrease[wrong];
             if (line < 0 || turned[line]) {
                 throw refusal(result, wrong);
             }
             turned[line] = true;
             folds = script(length, width, thickness, lines, turned);
         }
-    }
-
-    /** The line folded that crease {@code c} lies on, or -1. */
-    private int lineOf(double[] c) {
-        double tolerance = 1e-9 * Math.hypot(length, width);
-        for (int k = 0; k < lines.size(); k++) {
-            if (onLine(lines.get(k), c[0], c[1], tolerance) && onLine(lines.get(k), c[2], c[3], tolerance)) {
-                return k;
-            }
-        }
-        return -1;
     }
 
     /**
@@ -223,9 +245,9 @@ public record CreasePattern(double length, double width, FoldScript script, List
 
     /** The first crease that does not come out as the pattern labels it, or -1. */
     private int firstWrongCrease(ScriptFolding.Result result) {
-        int[] levels = result.sheet().levels();
+        Creased creased = new Creased(result, lines.size());
         for (int k = 0; k < creases.size(); k++) {
-            double found = foundAngle(result, levels, creases.get(k));
+            double found = creased.angle(k);
             if (Double.isNaN(found) || found == 0 || Math.signum(found) != creases.get(k)[4]) {
                 return k;
             }
@@ -235,47 +257,91 @@ public record CreasePattern(double length, double width, FoldScript script, List
 
     private Refused refusal(ScriptFolding.Result result, int k) {
         double[] c = creases.get(k);
-        double found = foundAngle(result, result.sheet().levels(), c);
+        double found = new Creased(result, lines.size()).angle(k);
         return new Refused(String.format(Locale.ROOT, "cannot be folded one crease line at a time in this order: the crease"
                 + " (%.6g, %.6g)-(%.6g, %.6g) comes out %s, the file says %s", c[0], c[1], c[2], c[3],
                 Double.isNaN(found) || found == 0 ? "flat" : found > 0 ? "a valley" : "a mountain", c[4] > 0 ? "valley" : "mountain"));
     }
 
-    /** The fold angle the folding made where crease {@code c} lies (0 where flat, NaN where no edge runs there). */
-    private double foundAngle(ScriptFolding.Result result, int[] levels, double[] c) {
-        Sheet sheet = result.sheet();
-        FoldFile.Folded folded = new FoldFile.Folded(sheet, result.frames());
-        double tolerance = 1e-7 * Math.hypot(length, width);
-        double mu = (c[0] + c[2]) / 2;
-        double mv = (c[1] + c[3]) / 2;
-        for (int f = 0; f < sheet.faceCount(); f++) {
-            int[] loop = sheet.loop(f);
-            for (int i = 0; i < loop.length; i++) {
-                int a = loop[i];
-                int b = loop[(i + 1) % loop.length];
-                int g = sheet.faceAcross(a, b);
-                if (g < 0 || !onSegment(sheet, a, b, mu, mv, tolerance)) {
-                    continue;
+    /**
+     * The fold angles a folding made where the pattern's creases lie. Each crease is looked for
+     * first among the sheet edges creased by the fold of its line (the script's folds are its
+     * lines, one each), then, where it is not found there, on every edge of the sheet: a pattern
+     * of n parallel creases folds into n faces, and looking at every edge for every crease
+     * would cost n².
+     */
+    private final class Creased {
+        private final Sheet sheet;
+        private final FoldFile.Folded folded;
+        private final int[] levels;
+        /** For each fold, the edges it creased: face, a, b (the edge a → b of the face, with a face across). */
+        private final List<List<int[]>> byFold = new ArrayList<>();
+        private final double tolerance = 1e-7 * Math.hypot(length, width);
+
+        Creased(ScriptFolding.Result result, int folds) {
+            sheet = result.sheet();
+            folded = new FoldFile.Folded(sheet, result.frames());
+            levels = sheet.levels();
+            for (int j = 0; j < folds; j++) {
+                byFold.add(new ArrayList<>());
+            }
+            for (int f = 0; f < sheet.faceCount(); f++) {
+                int[] loop = sheet.loop(f);
+                for (int i = 0; i < loop.length; i++) {
+                    int a = loop[i];
+                    int b = loop[(i + 1) % loop.length];
+                    int fold = sheet.creaseFold(a, b);
+                    if (fold >= 0 && fold < folds && sheet.faceAcross(a, b) >= 0) {
+                        byFold.get(fold).add(new int[] {f, a, b});
+                    }
                 }
-                return sheet.crease(a, b) == null ? 0 : FoldFile.foldAngle(folded, levels, f, g, a, b);
             }
         }
-        return Double.NaN;
+
+        /** The fold angle where crease k lies (0 where flat, NaN where no edge runs there). */
+        double angle(int k) {
+            double[] c = creases.get(k);
+            double mu = (c[0] + c[2]) / 2;
+            double mv = (c[1] + c[3]) / 2;
+            if (lineOfCrease[k] >= 0) {
+                for (int[] edge : byFold.get(lineOfCrease[k])) {
+                    if (onSegment(sheet, edge[1], edge[2], mu, mv, tolerance)) {
+                        return angle(edge[0], edge[1], edge[2]);
+                    }
+                }
+            }
+            for (int f = 0; f < sheet.faceCount(); f++) {
+                int[] loop = sheet.loop(f);
+                for (int i = 0; i < loop.length; i++) {
+                    int a = loop[i];
+                    int b = loop[(i + 1) % loop.length];
+                    if (sheet.faceAcross(a, b) >= 0 && onSegment(sheet, a, b, mu, mv, tolerance)) {
+                        return angle(f, a, b);
+                    }
+                }
+            }
+            return Double.NaN;
+        }
+
+        private double angle(int f, int a, int b) {
+            return sheet.crease(a, b) == null ? 0 : FoldFile.foldAngle(folded, levels, f, sheet.faceAcross(a, b), a, b);
+        }
     }
 
     private static boolean onSegment(Sheet sheet, int a, int b, double u, double v, double tolerance) {
         double du = sheet.u(b) - sheet.u(a);
         double dv = sheet.v(b) - sheet.v(a);
         double length = Math.hypot(du, dv);
-        double across = (du * (v - sheet.v(a)) - dv * (u - sheet.u(a))) / length;
-        double along = (du * (u - sheet.u(a)) + dv * (v - sheet.v(a))) / (length * length);
+        // By the unit direction: squared lengths overflow on a sheet 1e155 across, and vanish on one 1e-160 across.
+        double ex = du / length;
+        double ey = dv / length;
+        double across = ex * (v - sheet.v(a)) - ey * (u - sheet.u(a));
+        double along = (ex * (u - sheet.u(a)) + ey * (v - sheet.v(a))) / length;
         return Math.abs(across) <= tolerance && along > 0 && along < 1;
     }
 
     private static boolean onLine(double[] line, double u, double v, double tolerance) {
-        double du = line[2] - line[0];
-        double dv = line[3] - line[1];
-        return Math.abs(du * (v - line[1]) - dv * (u - line[0])) / Math.hypot(du, dv) <= tolerance;
+        return CreaseLines.onLine(line, u, v, tolerance);
     }
 
     private static List<double[]> points(Map<String, Object> fold, String key) throws Refused {
@@ -299,37 +365,8 @@ public record CreasePattern(double length, double width, FoldScript script, List
         return points;
     }
 
-    private static Object value(JsonParser parser) throws IOException {
-        JsonToken token = parser.currentToken();
-        switch (token) {
-            case START_OBJECT -> {
-                Map<String, Object> map = new LinkedHashMap<>();
-                while (parser.nextToken() != JsonToken.END_OBJECT) {
-                    String name = parser.currentName();
-                    parser.nextToken();
-                    map.put(name, value(parser));
-                }
-                return map;
-            }
-            case START_ARRAY -> {
-                List<Object> list = new ArrayList<>();
-                while (parser.nextToken() != JsonToken.END_ARRAY) {
-                    list.add(value(parser));
-                }
-                return list;
-            }
-            case VALUE_NUMBER_INT, VALUE_NUMBER_FLOAT -> {
-                return parser.getDoubleValue();
-            }
-            case VALUE_STRING -> {
-                return parser.getText();
-            }
-            case VALUE_TRUE, VALUE_FALSE -> {
-                return parser.getBooleanValue();
-            }
-            default -> {
-                return null;
-            }
-        }
+    /** A coordinate as a message gives it: a whole number without its ".0", else the shortest decimal that reads back. */
+    static String fmt(double value) {
+        return value == Math.rint(value) && Math.abs(value) < 1e15 ? Long.toString((long) value) : Double.toString(value);
     }
 }

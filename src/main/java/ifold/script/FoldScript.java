@@ -171,7 +171,9 @@ public final class FoldScript {
                 throw new FoldScriptException(0, "binary content, expected a text fold script");
             }
         }
-        return parse(new String(bytes, StandardCharsets.UTF_8));
+        String text = new String(bytes, StandardCharsets.UTF_8);
+        // A byte order mark, as editors on Windows write one, is no statement.
+        return parse(text.startsWith("\ufeff") ? text.substring(1) : text);
     }
 
     /** Parses the text format (see the class documentation). */

@@ -649,6 +649,12 @@ public final class Sheet {
                     between.computeIfAbsent(lower, k -> new ArrayList<>()).add(upper);
                 }
             }
+            // A face there already that the moved face overlaps too, lying directly between and
+            // holding all of where the two overlap, implies the order as well: paper folded onto a
+            // pile lands on its top layer, not on each, or a pleat of n folds would hold n²
+            // relations and each fold cost what the pile holds. (The order is kept where the
+            // face between later leaves: see stayingAbove.)
+            Between direct = new Between(to.above, placement);
             List<Integer> touching = new ArrayList<>();
             for (int i = 0; i < to.count; i++) {
                 int g = to.faces[i];
@@ -667,6 +673,10 @@ public final class Sheet {
                             implied = true;
                             break;
                         }
+                    }
+                    for (int k = direct.start(g); k < direct.end(g) && !implied; k++) {
+                        int h = direct.face(k);
+                        implied = overlap(f, h) && holdsOverlap(h, f, g);
                     }
                     if (!implied) {
                         to.above.add(placement == Placement.OVER ? ((long) f << 32) | g : ((long) g << 32) | f);
@@ -897,10 +907,76 @@ public final class Sheet {
         return ++markCount;
     }
 
+    /**
+     * The faces of a stack directly over each (for paper landing over it) or directly under
+     * each (landing under), from its relations, as compressed rows by face.
+     */
+    private final class Between {
+        private final int[] start;
+        private final int[] faces;
+
+        Between(LongList above, Placement placement) {
+            int relations = above.size();
+            start = new int[loops.size() + 1];
+            faces = new int[relations];
+            for (int r = 0; r < relations; r++) {
+                start[from(above.get(r), placement) + 1]++;
+            }
+            for (int f = 0; f < loops.size(); f++) {
+                start[f + 1] += start[f];
+            }
+            int[] fill = Arrays.copyOf(start, loops.size());
+            for (int r = 0; r < relations; r++) {
+                long pair = above.get(r);
+                int f = from(pair, placement);
+                faces[fill[f]++] = placement == Placement.OVER ? (int) (pair >>> 32) : (int) pair;
+            }
+        }
+
+        /** The face a relation is listed under: its lower face for paper landing over, its upper one for paper landing under. */
+        private static int from(long pair, Placement placement) {
+            return placement == Placement.OVER ? (int) pair : (int) (pair >>> 32);
+        }
+
+        int start(int g) {
+            return start[g];
+        }
+
+        int end(int g) {
+            return start[g + 1];
+        }
+
+        int face(int k) {
+            return faces[k];
+        }
+    }
+
+    /** Whether face h, as placed, holds all of where faces f and g overlap. */
+    private boolean holdsOverlap(int h, int f, int g) {
+        double[] common = placedCached(f);
+        double[] other = placedCached(g);
+        int n = other.length / 2;
+        double orientation = Math.signum(Polygons2.twiceArea(other, n));
+        for (int i = 0; i < n && common != null; i++) {
+            int j = (i + 1) % n;
+            double ex = other[2 * j] - other[2 * i];
+            double ey = other[2 * j + 1] - other[2 * i + 1];
+            double length = Math.hypot(ex, ey);
+            // Inside g: orientation × (e × (p - corner i)) >= 0, as n·p <= c with n of unit length.
+            double nx = orientation * ey / length;
+            double ny = -orientation * ex / length;
+            common = Polygons2.clip(common, common.length / 2, nx, ny, nx * other[2 * i] + ny * other[2 * i + 1], tolerance);
+        }
+        return common != null && containsPoints(placedCached(h), common);
+    }
+
     /** Whether face g, as placed, lies wholly inside face h (convex, either way round). */
     private boolean contains(int h, int g) {
-        double[] outer = placedCached(h);
-        double[] inner = placedCached(g);
+        return containsPoints(placedCached(h), placedCached(g));
+    }
+
+    /** Whether the points {@code inner} (x y x y ...) lie inside the convex polygon {@code outer}, either way round. */
+    private boolean containsPoints(double[] outer, double[] inner) {
         int n = outer.length / 2;
         double orientation = Math.signum(Polygons2.twiceArea(outer, n));
         for (int i = 0; i < n; i++) {
@@ -1068,6 +1144,18 @@ public final class Sheet {
             deepest = Math.max(deepest, stack.top + 1);
         }
         return deepest;
+    }
+
+    /**
+     * The order relations the stacks hold, all hosts together: a pile of n layers holds about
+     * n, not n² (see the class comment), and each fold costs what they are.
+     */
+    public int orderRelations() {
+        int relations = 0;
+        for (Stack stack : stacks.values()) {
+            relations += stack.above.size();
+        }
+        return relations;
     }
 
     /** The faces resting on {@code host}. */

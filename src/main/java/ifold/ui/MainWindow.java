@@ -2,6 +2,7 @@ package ifold.ui;
 
 import ifold.job.Scenes;
 import ifold.scene.PathView;
+import ifold.ui.model.Exports;
 import ifold.ui.model.Job;
 import ifold.ui.model.ModelFile;
 import ifold.ui.model.NewModel;
@@ -583,6 +584,11 @@ final class MainWindow extends JFrame {
         chooser.setDialogTitle(title);
         if (filter != null) {
             chooser.setFileFilter(filter);
+            if (save) {
+                // The name of what is shown, with the filter's first extension: typing it each time is a chore.
+                Job job = plan != null ? plan.job() : parameters.job();
+                chooser.setSelectedFile(new File(chooser.getCurrentDirectory(), Exports.suggestedName(job, filter.getExtensions()[0])));
+            }
         } else {
             chooser.setFileSelectionMode(JFileChooser.DIRECTORIES_ONLY);
         }
@@ -643,6 +649,9 @@ final class MainWindow extends JFrame {
             buttons.add(close);
             informationDialog.add(buttons, BorderLayout.SOUTH);
             informationDialog.getRootPane().setDefaultButton(close);
+            // Esc closes it, as it closes every dialog of the window.
+            informationDialog.getRootPane().registerKeyboardAction(e -> informationDialog.setVisible(false),
+                    KeyStroke.getKeyStroke(KeyEvent.VK_ESCAPE, 0), JComponent.WHEN_IN_FOCUSED_WINDOW);
             informationDialog.pack();
             informationDialog.setLocationRelativeTo(this);
         }

@@ -10,8 +10,9 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * {@code ifold} alone and {@code ifold app} where there is no display: the usage error of
- * old, and one line saying the window needs a display; neither waits for a window.
+ * {@code ifold} alone and {@code ifold app} where there is no display: a usage error saying
+ * how to open the window and list the commands, and one line saying the window needs a
+ * display; neither waits for a window.
  */
 class AppCommandTest {
     private static final Path LAUNCHER = Path.of("build", "install", "ifold", "bin", "ifold");
@@ -39,10 +40,11 @@ class AppCommandTest {
     }
 
     @Test
-    void ifoldAloneWithoutADisplayIsTheUsageErrorOfOld() throws Exception {
+    void ifoldAloneWithoutADisplaySaysHowToOpenTheWindowAndListTheCommands() throws Exception {
         Ended ended = runWithoutDisplay();
         assertEquals(2, ended.code(), ended.output());
-        assertEquals("ifold: missing command\nTry 'ifold --help' for more.", ended.output().strip(), "the hint once");
+        assertEquals("ifold: missing command: 'ifold' alone opens the window, and there is no display here (where there is one:"
+                + " 'ifold', or 'ifold app FILE'); 'ifold --help' lists the commands", ended.output().strip(), "one line");
     }
 
     @Test

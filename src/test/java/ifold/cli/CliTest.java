@@ -199,6 +199,17 @@ class CliTest {
         assertOneLineError(run("refine", model.toString(), "-o", locked.resolve("x.off").toString()), "not writable");
     }
 
+    /** Every option's value is named N, not by picocli's placeholder of the field's name. */
+    @Test
+    void generateHelpNamesItsValues() {
+        Run help = run("help", "generate");
+        assertEquals(0, help.code(), help.err());
+        for (String option : new String[] {"--around=N", "--across=N", "--subdivisions=N"}) {
+            assertTrue(help.out().contains(option), option + " in " + help.out());
+        }
+        assertFalse(help.out().contains("<"), "no placeholder: " + help.out());
+    }
+
     @Test
     void generateWritesEveryShape() throws Exception {
         Map<String, Integer> faces = Map.of("tetrahedron", 4, "cube", 6, "octahedron", 8, "icosahedron", 20,

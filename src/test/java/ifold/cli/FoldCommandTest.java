@@ -102,12 +102,93 @@ class FoldCommandTest {
             assertEquals(CliTest.number(Files.readString(diagonalsReport), key), CliTest.number(Files.readString(diagonalsBack), key), 0,
                     "diagonals: " + key);
         }
-        // A pattern whose creases cannot be folded line by line in the order of its edges (the
-        // zig-zag's tucks come between its turns) is refused, saying so.
+        // A pattern that cannot be folded line by line across the sheet (the zig-zag's tucks
+        // crease only the paper they turn under) is refused, naming a crease that stops short.
         Path zigzag = dir.resolve("zigzag.fold");
         assertEquals(0, CliTest.run("demo", "zigzag", "--no-view", "--export-fold", zigzag.toString()).code());
-        CliTest.assertOneLineError(CliTest.run("fold", zigzag.toString(), "--no-view"), "cannot be folded one crease line at a time");
+        CliTest.assertOneLineError(CliTest.run("fold", zigzag.toString(), "--no-view"), "zigzag.fold: edge ", "ends inside the paper");
         Path broken = Files.writeString(dir.resolve("broken.fold"), "{\"vertices_coords\": [[0, 0], [1, 0]],\n \"edges_vertices\": [[0, 1]");
         CliTest.assertOneLineError(CliTest.run("fold", broken.toString(), "--no-view"), "broken.fold", "JSON");
+    }
+
+    /** A square 10 x 10 whose border is four B edges, and what follows them: vertices 0-3 are its corners. */
+    private static final String SQUARE = "\"vertices_coords\": [[0, 0], [10, 0], [10, 10], [0, 10]%s],\n"
+            + " \"edges_vertices\": [[0, 1], [1, 2], [2, 3], [3, 0]%s],\n \"edges_assignment\": [\"B\", \"B\", \"B\", \"B\"%s]%s";
+
+    private Path foldFile(String name, String text) throws Exception {
+        return Files.writeString(dir.resolve(name), text);
+    }
+
+    private static String square(String vertices, String edges, String assignments, String more) {
+        return "{" + String.format(SQUARE, vertices, edges, assignments, more) + "}\n";
+    }
+
+    /**
+     * A FOLD file iFold cannot fold is a data error: one line naming the file and what is wrong,
+     * exit 1, nothing written; never an internal error.
+     */
+    @Test
+    void aFoldFileThatCannotBeFoldedIsRefusedInOneLineNamingTheFile() throws Exception {
+        String[][] cases = {
+            {"edge-of-one.fold", square("", ", [0]", ", \"V\"", ""), "edge 4: edges_vertices must name two vertices"},
+            {"edge-of-none.fold", square("", ", []", ", \"V\"", ""), "edge 4: edges_vertices must name two vertices"},
+            {"no-angles.fold", square("", ", [0, 2]", ", \"V\"", ", \"edges_foldAngle\": []"), "edges_foldAngle must give each edge"},
+            {"huge.fold", "{\"vertices_coords\": [[-1e308, -1e308], [1e308, -1e308], [1e308, 1e308], [-1e308, 1e308]],\n"
+                + " \"edges_vertices\": [[0, 1], [1, 2], [2, 3], [3, 0], [0, 2]],\n"
+                + " \"edges_assignment\": [\"B\", \"B\", \"B\", \"B\", \"V\"]}\n", "the sheet is too large"},
+            {"tiny.fold", square("", ", [0, 2]", ", \"V\"", "").replace("10", "1e-200"), "the sheet is too small"},
+            {"trailing.fold", square("", ", [0, 2]", ", \"V\"", "") + "garbage\n", "line 4: text after the FOLD object"},
+            {"two-objects.fold", square("", ", [0, 2]", ", \"V\"", "") + "{}\n", "line 4: text after the FOLD object"},
+            // A triangle, its hypotenuse flat or not given at all: not the square it spans.
+            {"triangle-f.fold", "{\"vertices_coords\": [[0, 0], [10, 0], [0, 10]], \"edges_vertices\": [[0, 1], [1, 2], [2, 0]],"
+                + " \"edges_assignment\": [\"B\", \"F\", \"B\"]}", "no border edge (B) runs along its side x = 10, from y = 0 to 10"},
+            {"triangle-creases-only.fold", "{\"vertices_coords\": [[0, 0], [10, 0], [0, 10], [5, 0], [5, 5]],"
+                + " \"edges_vertices\": [[3, 4]], \"edges_assignment\": [\"V\"]}", "no border edges (B)"},
+            {"open-side.fold", square("", "", "", "").replace("[3, 0]]", "[3, 0], [1, 3]]").replace("\"B\", \"B\", \"B\", \"B\"",
+                "\"B\", \"F\", \"B\", \"B\", \"V\""), "along its side x = 10, from y = 0 to 10"},
+            // A crease from (3, 3) to (7, 7) would be folded as the whole diagonal.
+            {"inner-crease.fold", square(", [3, 3], [7, 7]", ", [4, 5]", ", \"V\"", ""),
+                "edge 4: the crease (3, 3)-(7, 7) ends inside the paper"},
+            // Half a line creased, from the border to the middle.
+            {"half-line.fold", square(", [5, 0], [5, 5]", ", [4, 5]", ", \"M\"", ""), "edge 4: the crease (5, 0)-(5, 5) ends inside the paper"},
+        };
+        Path obj = dir.resolve("out.obj");
+        for (String[] c : cases) {
+            Path file = foldFile(c[0], c[1]);
+            CliTest.Run run = CliTest.run("fold", file.toString(), "--no-view", "--export-obj", obj.toString());
+            CliTest.assertOneLineError(run, c[0] + ": ", c[2]);
+            assertFalse(Files.exists(obj), c[0] + ": nothing written");
+        }
+        // Pieces of one line that together run from border to border fold as one line.
+        Path pieces = foldFile("pieces.fold", square(", [5, 0], [5, 4], [5, 10]", ", [4, 5], [5, 6]", ", \"V\", \"V\"", ""));
+        CliTest.Run run = CliTest.run("fold", pieces.toString(), "--no-view");
+        assertEquals(0, run.code(), run.err());
+        assertTrue(run.out().contains("1 fold, 2 layers at most"), run.out());
+    }
+
+    /** A FOLD file that begins with a UTF-8 byte order mark is FOLD, and a fold script that does is a fold script. */
+    @Test
+    void aByteOrderMarkIsSkipped() throws Exception {
+        byte[] bom = {(byte) 0xEF, (byte) 0xBB, (byte) 0xBF};
+        Path fold = dir.resolve("bom.fold");
+        Files.write(fold, bom);
+        Files.writeString(fold, square("", ", [0, 2]", ", \"V\"", ""), java.nio.file.StandardOpenOption.APPEND);
+        CliTest.Run run = CliTest.run("fold", fold.toString(), "--no-view");
+        assertEquals(0, run.code(), run.err());
+        assertTrue(run.out().contains("bom.fold: 1 fold, 2 layers at most, 1 crease"), run.out());
+        Path script = dir.resolve("bom-script.fold");
+        Files.write(script, bom);
+        Files.writeString(script, "paper square 10\nfold valley 180 paper 0 5 10 5 right\n", java.nio.file.StandardOpenOption.APPEND);
+        CliTest.Run played = CliTest.run("fold", script.toString(), "--no-view");
+        assertEquals(0, played.code(), played.err());
+        assertTrue(played.out().contains("bom-script.fold: 1 fold"), played.out());
+    }
+
+    @Test
+    void helpSaysFoldTakesFoldFiles() {
+        CliTest.Run help = CliTest.run("help", "fold");
+        assertEquals(0, help.code(), help.err());
+        assertTrue(help.out().contains("Plays a fold script (docs/fold-scripts.md) or a FOLD file"), help.out());
+        assertTrue(help.out().contains("SCRIPT              a fold script, or a FOLD file"), help.out());
     }
 }

@@ -739,6 +739,14 @@ class MainWindowTest {
             }
         }
         assertEquals(null, onEdt(() -> window.information.value("repairs")), "none to make");
+        // Esc closes it, as it closes the window's other dialogs.
+        onEdt(() -> {
+            javax.swing.JRootPane root = window.informationDialog.getRootPane();
+            root.dispatchEvent(new java.awt.event.KeyEvent(root, java.awt.event.KeyEvent.KEY_PRESSED, System.currentTimeMillis(), 0,
+                    java.awt.event.KeyEvent.VK_ESCAPE, java.awt.event.KeyEvent.CHAR_UNDEFINED));
+            return null;
+        });
+        waitFor("Esc to close the model's information", 10, () -> !window.informationDialog.isShowing());
     }
 
     @Test
@@ -747,6 +755,9 @@ class MainWindowTest {
         settled();
         Path file = dir.resolve("refined.obj");
         clickLater(window, "Export refinement");
+        javax.swing.JFileChooser chooser = inDialog(javax.swing.JFileChooser.class);
+        assertEquals("icosahedron-export.off", onEdt(() -> chooser.getSelectedFile().getName()),
+                "the model's name suggested, not its own file's");
         saveAs(file);
         waitFor("the refinement written", 60, () -> Files.isRegularFile(file) && !window.isWorking());
         Path cli = dir.resolve("cli.obj");

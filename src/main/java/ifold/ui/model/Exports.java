@@ -75,6 +75,26 @@ public final class Exports {
         }
     }
 
+    /**
+     * The file name a Save dialog suggests for an export of {@code job}'s result with {@code extension}:
+     * the model's or the script's name (the demos': zigzag, turn) and the extension; where that
+     * is the job's own file's name, with "-export" added, so that saving as suggested never
+     * writes over what was opened.
+     */
+    public static String suggestedName(Job job, String extension) {
+        Path source = job instanceof Job.WrapModel w ? w.model() : job instanceof Job.View v ? v.model()
+                : job instanceof Job.Script s ? s.file() : null;
+        String stem = job instanceof Job.ZigZag ? "zigzag" : job instanceof Job.Turn ? "turn" : source == null ? "ifold" : stem(source);
+        String name = stem + "." + extension;
+        return source != null && name.equals(source.getFileName().toString()) ? stem + "-export." + extension : name;
+    }
+
+    private static String stem(Path file) {
+        String name = file.getFileName().toString();
+        int dot = name.lastIndexOf('.');
+        return dot > 0 ? name.substring(0, dot) : name;
+    }
+
     static boolean isGif(Path movie) {
         return movie.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".gif");
     }

@@ -1,44 +1,91 @@
 package ifold.ui.model;
 
 import ifold.io.AtomicFile;
+import java.io.ByteArrayInputStream;
 import java.io.IOException;
-import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import java.util.Properties;
+import java.util.function.Function;
 
 /**
  * What the window remembers between runs (the last folder, the window's size, the parameters,
  * the recent files), in a small properties file. The file is given, so that tests keep their
  * own and never touch the user's; {@link #defaultFile()} is the user's. A file that cannot be
- * read is as good as none: settings are a convenience, never a reason not to start.
+ * read is as good as none: settings are a convenience, never a reason not to start; what was
+ * wrong with it is {@link #problem()}, for the caller to say once.
  */
 public final class Settings {
     /** The recent files the File menu lists. */
     public static final int RECENT = 8;
 
+    /** More than settings ever hold: a file this large was put there by mistake. */
+    private static final long LARGEST = 1 << 20;
+
     private final Path file;
     private final Properties values = new Properties();
+    private final String problem;
+    /** Whether the file is something other than a regular file (a FIFO, a device), left as it is. */
+    private final boolean notAFile;
 
     public Settings(Path file) {
         this.file = file;
-        try (InputStream in = Files.newInputStream(file)) {
-            values.load(in);
-        } catch (NoSuchFileException e) {
-            // First run: nothing remembered yet.
-        } catch (IOException | IllegalArgumentException e) {
-            values.clear(); // unreadable: start afresh, and write a good one on leaving
+        String wrong = null;
+        // Opening a FIFO waits for a writer, and the window would never open: only a regular file is read.
+        boolean special = Files.exists(file) && !Files.isRegularFile(file);
+        if (special) {
+            wrong = "the settings file " + file + " is not a regular file: the window starts with its defaults and leaves it as it is";
+        } else {
+            try {
+                if (Files.size(file) > LARGEST) {
+                    throw new IOException("larger than " + LARGEST + " bytes");
+                }
+                byte[] bytes = Files.readAllBytes(file);
+                for (byte b : bytes) {
+                    if (b == 0) {
+                        throw new IOException("binary content");
+                    }
+                }
+                values.load(new ByteArrayInputStream(bytes));
+            } catch (NoSuchFileException e) {
+                // First run: nothing remembered yet.
+            } catch (IOException | IllegalArgumentException e) {
+                values.clear(); // start afresh, and write a good one on leaving
+                wrong = "the settings file " + file + " is corrupt (" + e.getMessage() + "): the window starts with its defaults"
+                        + " and writes it anew on closing";
+            }
         }
+        problem = wrong;
+        notAFile = special;
     }
 
-    /** {@code $XDG_CONFIG_HOME/ifold/settings.properties}, or {@code ~/.config/ifold/settings.properties}. */
+    /**
+     * {@code $XDG_CONFIG_HOME/ifold/settings.properties}, or {@code $HOME/.config/ifold/settings.properties},
+     * or under {@code user.home} where HOME is not set (Java takes user.home from the account, not from HOME).
+     */
     public static Path defaultFile() {
-        String config = System.getenv("XDG_CONFIG_HOME");
-        Path base = config != null && !config.isEmpty() ? Path.of(config) : Path.of(System.getProperty("user.home"), ".config");
-        return base.resolve("ifold").resolve("settings.properties");
+        return defaultFile(System::getenv, System.getProperty("user.home"));
+    }
+
+    /** The settings file as {@link #defaultFile()} finds it, in the environment {@code env} with the account's home {@code userHome}. */
+    static Path defaultFile(Function<String, String> env, String userHome) {
+        // The XDG base directory specification: a relative path in these variables is to be ignored.
+        String config = env.apply("XDG_CONFIG_HOME");
+        if (config != null && Path.of(config).isAbsolute()) {
+            return Path.of(config).resolve("ifold").resolve("settings.properties");
+        }
+        String home = env.apply("HOME");
+        Path base = home != null && Path.of(home).isAbsolute() ? Path.of(home) : Path.of(userHome);
+        return base.resolve(".config").resolve("ifold").resolve("settings.properties");
+    }
+
+    /** What was wrong with the file, or empty where it was read (or there was none). */
+    public Optional<String> problem() {
+        return Optional.ofNullable(problem);
     }
 
     public Path file() {
@@ -96,8 +143,11 @@ public final class Settings {
         }
     }
 
-    /** Writes the settings, whole; the folder is made if need be. */
+    /** Writes the settings, whole; the folder is made if need be. A file that is not a regular file is left as it is. */
     public void save() throws IOException {
+        if (notAFile) {
+            return; // said when it was read: renaming over a FIFO would replace it
+        }
         Path parent = file.toAbsolutePath().getParent();
         if (parent != null) {
             Files.createDirectories(parent);
