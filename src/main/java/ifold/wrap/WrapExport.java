@@ -23,7 +23,7 @@ public final class WrapExport {
     }
 
     public static void writeObj(Path file, String model, Wrap.Result result, List<WrapGeometry> strips) throws IOException {
-        writeObj(file, "iFold wrap of " + model.replace('\n', ' ') + ": " + strips.size() + " strip(s), width " + result.width()
+        writeObj(file, "iFold wrap of " + model.replace('\n', ' ') + ": " + strips.size() + (strips.size() == 1 ? " strip" : " strips") + ", width " + result.width()
                 + ", thickness " + result.thickness(), strips);
     }
 

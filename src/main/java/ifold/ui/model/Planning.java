@@ -2,12 +2,12 @@ package ifold.ui.model;
 
 import ifold.fold.CreasePattern;
 import ifold.fold.FoldFile;
+import ifold.fold.FoldJson;
 import ifold.geom.Triangle;
 import ifold.job.Collisions;
 import ifold.job.LayerOrders;
 import ifold.job.Reports;
 import ifold.job.Scenes;
-import ifold.job.Scripts;
 import ifold.job.Triangles;
 import ifold.job.WrapPath;
 import ifold.mesh.HalfedgeMesh;
@@ -266,7 +266,7 @@ public final class Planning {
         Collisions.addTo(figures, geometries, result.thickness(), mesh);
         progress.check();
         int folds = result.steps().size() - result.count(Wrap.Kind.END);
-        return paperPlan(job, model.getFileName() + ": " + result.strips().size() + " strip(s), " + folds + " folds",
+        return paperPlan(job, model.getFileName() + ": " + result.strips().size() + (result.strips().size() == 1 ? " strip, " : " strips, ") + folds + " folds",
                 result, geometries, figures, 120, "ifold wrap " + model, scene -> {
                     WrapView.Playback playback = Scenes.wrap(scene, mesh, result, geometries);
                     Scenes.refinement(scene, refinement);
@@ -281,7 +281,7 @@ public final class Planning {
         CreasePattern pattern = null;
         ScriptFolding.Result result;
         try {
-            if (Scripts.isFoldFile(file)) {
+            if (FoldJson.isFoldFile(file)) {
                 pattern = CreasePattern.read(file);
                 parsed = pattern.script();
             } else {

@@ -124,6 +124,23 @@ class PlanningTest {
         assertEquals(1.0, script.folds().get(1).position(), "and the second once it is made");
     }
 
+    /** A FOLD file that begins with a UTF-8 byte order mark is still a FOLD file, as on the command line. */
+    @Test
+    void aFoldFileWithAByteOrderMarkIsFoldedAsOne() throws Exception {
+        String pattern = "{\"file_spec\": 1.2, \"vertices_coords\": [[0, 0], [2, 0], [2, 1], [0, 1], [1, 0], [1, 1]],"
+                + " \"edges_vertices\": [[0, 4], [4, 1], [1, 2], [2, 5], [5, 3], [3, 0], [4, 5]],"
+                + " \"edges_assignment\": [\"B\", \"B\", \"B\", \"B\", \"B\", \"B\", \"V\"],"
+                + " \"faces_vertices\": [[0, 4, 5, 3], [4, 1, 2, 5]]}";
+        Path plain = dir.resolve("plain.fold");
+        java.nio.file.Files.writeString(plain, pattern);
+        Plan expected = Planning.plan(new Job.Script(plain), Progress.NONE);
+        assertEquals(1, expected.folds().size(), "setup: the pattern folds once");
+        Path marked = dir.resolve("marked.fold");
+        java.nio.file.Files.writeString(marked, "\uFEFF" + pattern);
+        Plan plan = Planning.plan(new Job.Script(marked), Progress.NONE);
+        assertEquals(1, plan.folds().size());
+    }
+
     @Test
     void aModelIsWrappedAndItsFileIsItsField() throws Exception {
         Plan cube = Planning.plan(new Job.WrapModel(Path.of("models", "cube.off"), "", ""), Progress.NONE);
