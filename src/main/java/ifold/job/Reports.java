@@ -56,6 +56,23 @@ public final class Reports {
         return figures;
     }
 
+    /**
+     * Where the layers are most and where they come from: the point in space, the strip and
+     * path triangle (from 1), and the layers there by kind of paper.
+     */
+    public static Map<String, Object> deepest(WrapAnalysis.Deepest deepest) {
+        Map<String, Object> figures = new LinkedHashMap<>();
+        figures.put("point", List.of(deepest.point()[0], deepest.point()[1], deepest.point()[2]));
+        figures.put("strip", deepest.strip() + 1);
+        figures.put("triangle", deepest.triangle() + 1);
+        figures.put("layers", deepest.layers());
+        figures.put("passes", deepest.passes());
+        figures.put("turnGadgets", deepest.turnGadgets());
+        figures.put("edgeCrossings", deepest.edgeCrossings());
+        figures.put("tucks", deepest.tucks());
+        return figures;
+    }
+
     /** The passes of a lone triangle's strip: two turn folds between passes, and the overlap is a pass of its own. */
     public static int passes(Wrap.Result result) {
         return result.count(Wrap.Kind.ZIGZAG_TURN) / 2 + 1 + result.count(Wrap.Kind.OVERLAP);
@@ -127,6 +144,9 @@ public final class Reports {
         figures.put("folds", folds);
         figures.put("maxLayers", analysis.maxLayers());
         figures.put("stackLayers", analysis.stackLevels());
+        if (analysis.deepest() != null) {
+            figures.put("deepestLayers", deepest(analysis.deepest()));
+        }
         figures.put("surfaceArea", analysis.surfaceArea());
         figures.put("paperArea", analysis.paperArea());
         figures.put("paperEfficiency", analysis.surfaceArea() / analysis.paperArea());

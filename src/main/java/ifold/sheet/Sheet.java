@@ -58,6 +58,15 @@ public final class Sheet {
 
     private final List<int[]> loops = new ArrayList<>();
     private int[] hostOf = new int[16];
+    /**
+     * How each face came to be where it is: the kind of the fold of the tail that laid it (its
+     * crease's ordinal + 1; 0 for the strip's first face, or a sheet's), plus {@link #TUCKED}
+     * once a tuck has moved it. A face cut from another inherits it.
+     */
+    private byte[] originOf = new byte[16];
+    private static final int TUCKED = 16;
+    /** The kind of the tail's last crease, which the next face laid from the tail comes after; null before any. */
+    private Crease lastTailCrease;
     private final List<Isometry2> poseOf = new ArrayList<>();
     /** The face to the left of each directed paper edge a → b, keyed a << 32 | b. */
     private final LongIntMap faceOfEdge = new LongIntMap();
@@ -201,6 +210,7 @@ public final class Sheet {
         int b = addVertex(end, width);
         int[] loop = {tailA, a, b, tailB};
         int face = addFace(loop, tailHost, tailPose, tailPlacement, tailHinge(loop));
+        originOf[face] = (byte) (lastTailCrease == null ? 0 : lastTailCrease.ordinal() + 1);
         length = end;
         tailA = a;
         tailB = b;
@@ -253,6 +263,8 @@ public final class Sheet {
         int b = sameB ? tailB : addVertex(at[1], width);
         int[] loop = sameA ? new int[] {tailA, b, tailB} : sameB ? new int[] {tailA, a, tailB} : new int[] {tailA, a, b, tailB};
         int face = addFace(loop, tailHost, tailPose, tailPlacement, tailHinge(loop));
+        originOf[face] = (byte) (lastTailCrease == null ? 0 : lastTailCrease.ordinal() + 1);
+        lastTailCrease = kind;
         creases.put(undirected(a, b), kind.ordinal() + CREASES.length * creasingFolds++);
         tailA = a;
         tailB = b;
@@ -326,6 +338,9 @@ public final class Sheet {
         }
         edit.crease(moving, Crease.TUCK);
         edit.tuckUnder(moving, Isometry2.reflection(px, py, dx, dy), nx, ny, c);
+        for (int f : moving) {
+            originOf[f] |= TUCKED;
+        }
         Edit.Journal journal = edit.journal();
         int[] moved = moving.stream().mapToInt(Integer::intValue).sorted().toArray();
         return new Tuck(host, moved, px, py, dx, dy, journal.facesBefore(), journal.changed(), journal.loopsBefore(),
@@ -770,6 +785,7 @@ public final class Sheet {
         poseOf.add(pose);
         ensureFaceCapacity(g + 1);
         hostOf[g] = hostOf[f];
+        originOf[g] = originOf[f];
         register(g);
         edit.reshaped.add(f);
         edit.reshaped.add(g);
@@ -875,6 +891,7 @@ public final class Sheet {
     private void ensureFaceCapacity(int n) {
         if (n > hostOf.length) {
             hostOf = Arrays.copyOf(hostOf, Math.max(n, 2 * hostOf.length));
+            originOf = Arrays.copyOf(originOf, hostOf.length);
         }
     }
 
@@ -1210,6 +1227,21 @@ public final class Sheet {
 
     public Isometry2 pose(int f) {
         return poseOf.get(f);
+    }
+
+    /**
+     * The kind of the fold of the tail after which face f was laid (the paper it is part of:
+     * a pass after a turn, a gadget's paper, a strip come over an edge), or null for the first
+     * face; kept when the face is cut or tucked.
+     */
+    public Crease laidAfter(int f) {
+        int kind = (originOf[f] & (TUCKED - 1)) - 1;
+        return kind < 0 ? null : CREASES[kind];
+    }
+
+    /** Whether a tuck has moved face f (or the face it was cut from). */
+    public boolean tucked(int f) {
+        return (originOf[f] & TUCKED) != 0;
     }
 
     /** The face on the other side of paper edge a → b of a face, or -1 at the strip's border. */

@@ -27,10 +27,26 @@ import java.util.List;
  * @param creaseLengthInside and their length
  * @param creasesOnEdges creases along the model's edges: count
  * @param creaseLengthOnEdges and their length
+ * @param deepest where the layers are most, and where they come from; null without paper
  */
 public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, double surfaceArea, double paperArea,
         double outsidePaper, double farthest, double isometryError, int creasesInside, double creaseLengthInside,
-        int creasesOnEdges, double creaseLengthOnEdges) {
+        int creasesOnEdges, double creaseLengthOnEdges, Deepest deepest) {
+
+    /**
+     * The layers over the point of the surface where they are most, by where each came from: a
+     * face that a tuck moved is a tuck's (a flap cut off and folded under); any other is the
+     * paper of the fold of the tail it was laid after: a pass (after a zig-zag turn, or the
+     * strip's start), a turn gadget's, or a strip come over an edge (up to its first fold on
+     * the triangle).
+     *
+     * @param strip the strip (from 0)
+     * @param triangle the path triangle (from 0)
+     * @param point the point, in space on the surface
+     */
+    public record Deepest(int strip, int triangle, double[] point, int layers, int passes, int turnGadgets, int edgeCrossings,
+            int tucks) {
+    }
 
     public static WrapAnalysis of(Wrap.Result result, List<WrapGeometry> geometries) {
         // A refinement knows the model's edges (each triangle stands on one); any other path's
@@ -48,7 +64,12 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
         double insideLength = 0;
         int onEdges = 0;
         double onEdgesLength = 0;
-        for (Wrap.Strip strip : result.strips()) {
+        // Where the layers are most: strip, triangle, and a point inside the deepest cell.
+        int deepestStrip = -1;
+        int deepestTriangle = -1;
+        double[] deepestPoint = null;
+        for (int k = 0; k < result.strips().size(); k++) {
+            Wrap.Strip strip = result.strips().get(k);
             Sheet sheet = strip.sheet();
             paper += sheet.length() * sheet.width();
             stackLevels = Math.max(stackLevels, sheet.stackLevels());
@@ -66,6 +87,11 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
                 double[] cells = depths(c, polygons, sheet.tolerance());
                 surface += cells[0];
                 covered += cells[1];
+                if ((int) cells[2] > maxLayers) {
+                    deepestStrip = k;
+                    deepestTriangle = t;
+                    deepestPoint = new double[] {cells[3], cells[4]};
+                }
                 maxLayers = Math.max(maxLayers, (int) cells[2]);
             }
             // Creases: along an edge of the model when they lie on one.
@@ -95,8 +121,54 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
         for (WrapGeometry geometry : geometries) {
             isometry = Math.max(isometry, isometryError(geometry, result.width()));
         }
+        Deepest deepest = deepestStrip < 0 ? null
+                : deepest(result.strips().get(deepestStrip).sheet(), deepestStrip, deepestTriangle, deepestPoint, frames[deepestTriangle]);
         return new WrapAnalysis(maxLayers, stackLevels, surface > 0 ? covered / surface : 0, surface, paper, outside, farthest,
-                isometry, inside, insideLength, onEdges, onEdgesLength);
+                isometry, inside, insideLength, onEdges, onEdgesLength, deepest);
+    }
+
+    /**
+     * Whether (x, y) lies strictly inside a convex counter-clockwise polygon: the centre of a
+     * cell of the arrangement lies strictly inside every face that holds the cell, and outside
+     * every other.
+     */
+    private static boolean strictlyInside(double[] p, double x, double y) {
+        int n = p.length / 2;
+        for (int i = 0; i < n; i++) {
+            int j = (i + 1) % n;
+            if ((p[2 * j] - p[2 * i]) * (y - p[2 * i + 1]) - (p[2 * j + 1] - p[2 * i + 1]) * (x - p[2 * i]) <= 0) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** The faces of a sheet over a point (x, y) of one triangle, counted by where they came from. */
+    private static Deepest deepest(Sheet sheet, int strip, int triangle, double[] xy, HostFrame frame) {
+        int layers = 0;
+        int passes = 0;
+        int gadgets = 0;
+        int crossings = 0;
+        int tucks = 0;
+        for (int f : sheet.facesOn(triangle)) {
+            if (!strictlyInside(counterClockwise(sheet.placed(f)), xy[0], xy[1])) {
+                continue;
+            }
+            layers++;
+            Sheet.Crease after = sheet.laidAfter(f);
+            if (sheet.tucked(f)) {
+                tucks++;
+            } else if (after == Sheet.Crease.GADGET) {
+                gadgets++;
+            } else if (after == Sheet.Crease.CROSSING) {
+                crossings++;
+            } else {
+                passes++;
+            }
+        }
+        double[] point = new double[3];
+        frame.toSpace(xy[0], xy[1], 0, point, 0);
+        return new Deepest(strip, triangle, point, layers, passes, gadgets, crossings, tucks);
     }
 
     /**
@@ -384,10 +456,14 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
             return Math.max(0, Math.min(grid - 1, (int) Math.floor((y - minY) / cellHeight)));
         }
 
+        /** The area, the area covered, the most depth, and the centre of the largest cell of that depth. */
         double[] totals() {
             double area = 0;
             double covered = 0;
             int most = 0;
+            double largest = -1;
+            double cx = Double.NaN;
+            double cy = Double.NaN;
             for (int id = 0; id < polygons.size(); id++) {
                 if (!alive.get(id)) {
                     continue;
@@ -398,9 +474,19 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
                 if (depths.get(id) > 0) {
                     covered += a;
                 }
-                most = Math.max(most, depths.get(id));
+                if (depths.get(id) > most || depths.get(id) == most && a > largest) {
+                    most = depths.get(id);
+                    largest = a;
+                    // The mean of a convex cell's corners lies inside it.
+                    cx = 0;
+                    cy = 0;
+                    for (int i = 0; i < cell.length; i += 2) {
+                        cx += cell[i] / (cell.length / 2);
+                        cy += cell[i + 1] / (cell.length / 2);
+                    }
+                }
             }
-            return new double[] {area, covered, most};
+            return new double[] {area, covered, most, cx, cy};
         }
     }
 

@@ -97,6 +97,11 @@ class WrapTest {
         assertTrue(analysis.isometryError() <= 1e-9, "isometry " + analysis.isometryError());
         assertTrue(analysis.outsidePaper() <= 1e-9 * 100, "paper outside " + analysis.outsidePaper());
         assertTrue(analysis.maxLayers() >= 1 && analysis.maxLayers() <= analysis.stackLevels(), "layers within the stack");
+        // Where the layers are most, every layer there is counted once, by where it came from.
+        WrapAnalysis.Deepest deepest = analysis.deepest();
+        assertEquals(analysis.maxLayers(), deepest.layers(), "the faces over the deepest point");
+        assertEquals(deepest.layers(), deepest.passes() + deepest.turnGadgets() + deepest.edgeCrossings() + deepest.tucks());
+        assertTrue(deepest.triangle() >= 0 && deepest.triangle() < result.mesh().faceCount());
         assertTrue(analysis.creasesOnEdges() > 0, "tucks along the model's edges are counted there");
         assertTrue(truths.farthestFromSurface() <= (analysis.stackLevels() + 1) * result.thickness() + 1e-9);
         // Every path triangle but the last is left over an edge.
