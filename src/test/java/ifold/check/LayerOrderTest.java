@@ -297,6 +297,46 @@ class LayerOrderTest {
         assertTrue(outside.check().valid(), outside.check().toString());
     }
 
+    /** Runs a command with --export-fold and checks the file it wrote, and that its report says what the check says. */
+    private static LayerOrder.Result exported(java.nio.file.Path dir, String... args) throws Exception {
+        java.nio.file.Path fold = dir.resolve("out.fold");
+        java.nio.file.Path report = dir.resolve("out.json");
+        List<String> all = new ArrayList<>(List.of(args));
+        all.addAll(List.of("--no-view", "--export-fold", fold.toString(), "--report", report.toString()));
+        java.io.StringWriter err = new java.io.StringWriter();
+        int code = ifold.cli.Main.commandLine(new java.io.PrintWriter(new java.io.StringWriter()), new java.io.PrintWriter(err))
+                .execute(all.toArray(String[]::new));
+        assertEquals(0, code, err::toString);
+        LayerOrder.Result result;
+        try (java.io.Reader reader = java.nio.file.Files.newBufferedReader(fold)) {
+            result = LayerOrder.check(reader);
+        }
+        String json = java.nio.file.Files.readString(report).replaceAll("\\s", "");
+        assertTrue(json.contains(result.valid() ? "\"layerOrder\":\"valid\"" : "\"violations\":" + result.total()),
+                "the report says what the check of its file says");
+        return result;
+    }
+
+    @org.junit.jupiter.params.ParameterizedTest
+    @org.junit.jupiter.params.provider.ValueSource(strings = {"pleat20.fold", "square-quarters.fold", "strip-turn.fold", "zigzag-turn.fold"})
+    void theFoldScriptsAreInAnOrderPaperCanHave(String script, @org.junit.jupiter.api.io.TempDir java.nio.file.Path dir) throws Exception {
+        LayerOrder.Result result = exported(dir, "fold", "models/scripts/" + script);
+        assertTrue(result.layered() > 0, "setup: layers");
+        assertTrue(result.valid(), result::summary);
+    }
+
+    @Test
+    void theDemosAreInAnOrderPaperCanHave(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir) throws Exception {
+        LayerOrder.Result zigzag = exported(dir, "demo", "zigzag");
+        assertTrue(zigzag.layered() > 10, "setup: the zig-zag's layers");
+        assertTrue(zigzag.valid(), zigzag::summary);
+        for (String angle : new String[] {"30", "90", "150"}) {
+            LayerOrder.Result turn = exported(dir, "demo", "turn", "--angle", angle);
+            assertTrue(turn.layered() > 0, "setup: the turn's layers");
+            assertTrue(turn.valid(), turn::summary);
+        }
+    }
+
     @Test
     void notAFoldedStateIsRefusedInWords() {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> LayerOrder.check("[1, 2]"));
