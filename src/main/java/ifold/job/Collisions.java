@@ -78,6 +78,31 @@ public final class Collisions {
         return result;
     }
 
+    /**
+     * The check of {@code strips} as the viewer shows it, listing the first
+     * {@link Scenes#SHOWN_CROSSINGS} crossing pairs; null where {@link #notChecked} says why not.
+     */
+    public static PaperCollisions.Result forScene(List<WrapGeometry> strips, double thickness, IndexedPolygons model) {
+        try {
+            return check(strips, thickness, model, null, new PaperCollisions.Options(Scenes.SHOWN_CROSSINGS,
+                    PaperCollisions.Options.DEFAULT.threads()));
+        } catch (IOException e) {
+            throw new UncheckedIOException(e); // no file is read
+        }
+    }
+
+    /**
+     * Adds a check made already ({@link #check}, or null where none was) to a report's figures as
+     * {@link #addTo} does.
+     */
+    public static void put(Map<String, Object> figures, PaperCollisions.Result result, List<WrapGeometry> strips, double thickness) {
+        if (result != null) {
+            figures.put("collisions", figures(result));
+        } else if (thickness > 0) {
+            figures.put("collisions", Map.of("notChecked", notChecked(strips, thickness)));
+        }
+    }
+
     /** As {@link #addTo(Map, List, double, IndexedPolygons, Path)} on the OBJ's text made in memory. */
     public static PaperCollisions.Result addTo(Map<String, Object> figures, List<WrapGeometry> strips, double thickness,
             IndexedPolygons model) {

@@ -150,13 +150,15 @@ public final class Scenes {
      * @return the geometry, or null for paper the checker does not check ({@link Collisions#notChecked})
      */
     public static Geometry collisions(Scene scene, List<WrapGeometry> strips, double thickness, IndexedPolygons model) {
-        PaperCollisions.Result result;
-        try {
-            result = Collisions.check(strips, thickness, model, null, new PaperCollisions.Options(SHOWN_CROSSINGS,
-                    PaperCollisions.Options.DEFAULT.threads()));
-        } catch (IOException e) {
-            throw new UncheckedIOException(e); // no file is read
-        }
+        return collisions(scene, strips, Collisions.forScene(strips, thickness, model));
+    }
+
+    /**
+     * As {@link #collisions(Scene, List, double, IndexedPolygons)}, from a check of the strips
+     * already made (listing up to {@link #SHOWN_CROSSINGS}: {@link Collisions#forScene}); null
+     * where there is none.
+     */
+    public static Geometry collisions(Scene scene, List<WrapGeometry> strips, PaperCollisions.Result result) {
         if (result == null) {
             return null;
         }

@@ -1,6 +1,7 @@
 package ifold.ui;
 
 import ifold.job.Scenes;
+import ifold.scene.CollisionView;
 import ifold.scene.PathView;
 import ifold.ui.model.Exports;
 import ifold.ui.model.Job;
@@ -73,6 +74,7 @@ final class MainWindow extends JFrame {
     final JLabel message = new JLabel(" ");
     private final JMenu recent = new JMenu("Open recent");
     private final JCheckBoxMenuItem showModel = new JCheckBoxMenuItem("Model", true);
+    private final JCheckBoxMenuItem showCollisions = new JCheckBoxMenuItem("Collisions", false);
     private final JCheckBoxMenuItem captions = new JCheckBoxMenuItem("Captions", true);
     private final JCheckBoxMenuItem refinement = new JCheckBoxMenuItem("Refinement and Hamiltonian path", false);
     /** What needs a model open: the wrap's card has one. */
@@ -211,6 +213,11 @@ final class MainWindow extends JFrame {
         refinement.setToolTipText("a wrap's model refined, lighter to darker along the path the strip follows, tree edges in green");
         refinement.addActionListener(e -> showSurface());
         show.add(refinement);
+        showCollisions.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_C, ctrl | shift));
+        showCollisions.setToolTipText("a wrap's faces of paper that cross paper or the model, in red, seen through the layers above"
+                + " them: where a fold is impossible");
+        showCollisions.addActionListener(e -> showSurface());
+        show.add(showCollisions);
         captions.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_K, ctrl));
         captions.setToolTipText("the status line in the view, and the caption of exported frames and movies");
         captions.addActionListener(e -> view.setShowStatus(captions.isSelected()));
@@ -280,6 +287,7 @@ final class MainWindow extends JFrame {
     private void showSurface() {
         view.setVisible(Scenes.MODEL, showModel.isSelected() && !refinement.isSelected());
         view.setVisible(Scenes.REFINEMENT, showModel.isSelected() && refinement.isSelected());
+        view.setVisible(CollisionView.NAME, showCollisions.isSelected());
     }
 
     /** Asks the paper's top and bottom colours; "as planned" keeps the plan's own (white, with grey caps; blue-grey below). */

@@ -195,7 +195,7 @@ class MainWindowTest {
         assertEquals(Planning.plan(Job.ZigZag.DEMO, Progress.NONE).folds().size(), (int) onEdt(() -> window.timeline.folds.getModel().getSize()));
         // Every menu the issue asks for, each item with its shortcut.
         for (String item : List.of("Open model", "Open fold script", "Export frames", "Export movie", "Export OBJ", "Export FOLD",
-                "Export report", "Export figure", "Quit", "Model", "Refinement and Hamiltonian path", "Paper colours", "Captions", "Reset camera", "Underside", "Zig-zag a triangle", "Turn gadget",
+                "Export report", "Export figure", "Quit", "Model", "Refinement and Hamiltonian path", "Collisions", "Paper colours", "Captions", "Reset camera", "Underside", "Zig-zag a triangle", "Turn gadget",
                 "Wrap the model", "Play a script", "Keys", "New model", "Model information", "Export refinement")) {
             assertNotNull(onEdt(() -> menuItem(window, item).getAccelerator()), item + " has a shortcut");
         }
@@ -429,6 +429,20 @@ class MainWindowTest {
         BufferedImage path = window.view.picture();
         assertTrue(pixelsOf(path, 0x00A030, 60) > 50 && pixelsOf(plain, 0x00A030, 60) < 10,
                 "the path's tree edges in green, where the plain model has none");
+        // View > Collisions: the faces of paper that cross, in red, seen through the paper.
+        onEdt(() -> {
+            menuItem(window, "Collisions").doClick();
+            return null;
+        });
+        assertTrue(window.view.awaitFrame(30_000));
+        int red = pixelsOf(window.view.picture(), 0xE0262B, 40);
+        onEdt(() -> {
+            menuItem(window, "Collisions").doClick();
+            return null;
+        });
+        assertTrue(window.view.awaitFrame(30_000));
+        int without = pixelsOf(window.view.picture(), 0xE0262B, 40);
+        assertTrue(red > without + 1000, "red where paper collides: " + red + " pixels, " + without + " without");
         onEdt(() -> {
             window.parameters.wrapWidth.setText("0.1");
             return null;

@@ -1,5 +1,6 @@
 package ifold.ui.model;
 
+import ifold.check.PaperCollisions;
 import ifold.fold.CreasePattern;
 import ifold.fold.FoldFile;
 import ifold.fold.FoldJson;
@@ -263,13 +264,17 @@ public final class Planning {
             sheets.add(new FoldFile.Folded(strip.sheet(), result.frames()));
         }
         LayerOrders.addTo(figures, sheets, "wrap");
-        Collisions.addTo(figures, geometries, result.thickness(), mesh);
+        progress.check();
+        // One check for the report and the view's collisions (View > Collisions), as the command line's C shows them.
+        PaperCollisions.Result collisions = Collisions.forScene(geometries, result.thickness(), mesh);
+        Collisions.put(figures, collisions, geometries, result.thickness());
         progress.check();
         int folds = result.steps().size() - result.count(Wrap.Kind.END);
         return paperPlan(job, model.getFileName() + ": " + result.strips().size() + (result.strips().size() == 1 ? " strip, " : " strips, ") + folds + " folds",
                 result, geometries, figures, 120, "ifold wrap " + model, scene -> {
                     WrapView.Playback playback = Scenes.wrap(scene, mesh, result, geometries);
                     Scenes.refinement(scene, refinement);
+                    Scenes.collisions(scene, geometries, collisions);
                     return playback;
                 });
     }
