@@ -234,10 +234,18 @@ public final class FoldFile {
                     boxes[i] = Polygons2.bounds(placed[i]);
                 }
                 double tolerance = sheet.tolerance();
+                // Swept in the order of the boxes' left sides: a pair is tried only while their x spans meet.
+                Integer[] byLeft = new Integer[n];
                 for (int i = 0; i < n; i++) {
-                    for (int j = i + 1; j < n; j++) {
-                        if (boxes[i][0] >= boxes[j][2] - tolerance || boxes[j][0] >= boxes[i][2] - tolerance
-                                || boxes[i][1] >= boxes[j][3] - tolerance || boxes[j][1] >= boxes[i][3] - tolerance) {
+                    byLeft[i] = i;
+                }
+                Arrays.sort(byLeft, Comparator.comparingDouble(i -> boxes[i][0]));
+                for (int a = 0; a < n; a++) {
+                    int i = byLeft[a];
+                    for (int b = a + 1; b < n && boxes[byLeft[b]][0] < boxes[i][2] - tolerance; b++) {
+                        int j = byLeft[b];
+                        if (boxes[i][0] >= boxes[j][2] - tolerance || boxes[i][1] >= boxes[j][3] - tolerance
+                                || boxes[j][1] >= boxes[i][3] - tolerance) {
                             continue;
                         }
                         if (!Polygons2.overlap(placed[i], placed[i].length / 2, placed[j], placed[j].length / 2, tolerance)) {

@@ -1,0 +1,396 @@
+package ifold.refine;
+
+import ifold.geom.Polygons;
+import ifold.geom.Triangles;
+import ifold.mesh.HalfedgeMesh;
+import ifold.mesh.InvalidMeshException;
+import ifold.mesh.MeshBuilder;
+import ifold.mesh.MeshValidator;
+import ifold.mesh.PolygonSoup;
+import ifold.mesh.Topology;
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Deque;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.IdentityHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Set;
+import org.tinfour.common.IConstraint;
+import org.tinfour.common.IQuadEdge;
+import org.tinfour.common.PolygonConstraint;
+import org.tinfour.common.SimpleTriangle;
+import org.tinfour.common.Vertex;
+import org.tinfour.refinement.RuppertRefiner;
+import org.tinfour.standard.IncrementalTin;
+
+/**
+ * One planar region of a model being prepared ({@link FacePreparation}): coplanar faces grown
+ * from a seed, their boundary loops, and their triangulation again by Tinfour's constrained
+ * Delaunay triangulation and Ruppert's refinement, with the points that cut its edges, shared
+ * with the regions across them.
+ */
+final class PlanarRegion {
+    private final FacePreparation.Run run;
+    private final HalfedgeMesh mesh;
+    private final double[] xyz;
+    private final double[] normal;
+    private final int[] regionOf;
+    private final double[][] splits;
+    final int index;
+    final int seed;
+    final List<Integer> faces = new ArrayList<>();
+    /** A corner of the seed face, on the region's plane, and the seed's size, for the coplanarity test. */
+    final double[] origin = new double[3];
+    final double seedSize;
+    double minAngle = Math.PI;
+    /** Twice the area over the perimeter: the width of a long region, the inradius of a round one. */
+    double thickness;
+    /**
+     * Whether a corner of the region is sharper than the target: no triangulation can
+     * widen it, and refining towards it makes triangles too small for any strip. Such a
+     * region keeps its triangles, or is triangulated from its boundary alone where a
+     * neighbour's refinement cut its edges.
+     */
+    boolean sharp;
+    boolean prepare;
+    boolean dirty;
+    /** The triangles made, three corner keys each, and the points inside, x, y, z interleaved. */
+    long[] triangles = new long[0];
+    double[] interior = new double[0];
+
+    PlanarRegion(FacePreparation.Run run, int index, int seed) {
+        this.run = run;
+        this.mesh = run.mesh;
+        this.xyz = run.xyz;
+        this.normal = run.normal;
+        this.regionOf = run.regionOf;
+        this.splits = run.splits;
+        this.index = index;
+        this.seed = seed;
+        int h = mesh.faceHalfedge(seed);
+        int a = mesh.fromVertex(h);
+        for (int k = 0; k < 3; k++) {
+            origin[k] = xyz[3 * a + k];
+        }
+        seedSize = Math.max(Triangles.distance(xyz, a, mesh.toVertex(h)),
+                Math.max(Triangles.distance(xyz, mesh.toVertex(h), mesh.toVertex(mesh.next(h))),
+                        Triangles.distance(xyz, mesh.toVertex(mesh.next(h)), a)));
+    }
+
+    void measure() {
+        double area = 0;
+        for (int f : faces) {
+            int h = mesh.faceHalfedge(f);
+            int a = mesh.fromVertex(h);
+            int b = mesh.toVertex(h);
+            int c = mesh.toVertex(mesh.next(h));
+            minAngle = Math.min(minAngle, Triangles.minAngle(xyz, a, b, c));
+            area += Triangles.twiceArea(xyz, a, b, c) / 2;
+        }
+        Map<Integer, Double> cornerAngle = new HashMap<>();
+        for (int f : faces) {
+            int h0 = mesh.faceHalfedge(f);
+            int h = h0;
+            do {
+                int v = mesh.fromVertex(h);
+                double angle = Triangles.angleAt(xyz, v, mesh.toVertex(h), mesh.fromVertex(mesh.prev(h)));
+                cornerAngle.merge(v, angle, Double::sum);
+                h = mesh.next(h);
+            } while (h != h0);
+        }
+        double perimeter = 0;
+        for (int h : boundary()) {
+            sharp |= cornerAngle.get(mesh.fromVertex(h)) < Math.toRadians(FacePreparation.TARGET_ANGLE);
+            perimeter += Triangles.distance(xyz, mesh.fromVertex(h), mesh.toVertex(h));
+        }
+        thickness = perimeter > 0 ? 2 * area / perimeter : Math.sqrt(area);
+    }
+
+    /** The halfedges of the region's faces whose twin lies outside it (on another region, or no face). */
+    List<Integer> boundary() {
+        List<Integer> boundary = new ArrayList<>();
+        for (int f : faces) {
+            int h0 = mesh.faceHalfedge(f);
+            int h = h0;
+            do {
+                int g = mesh.face(HalfedgeMesh.twin(h));
+                if (g < 0 || regionOf[g] != index) {
+                    boundary.add(h);
+                }
+                h = mesh.next(h);
+            } while (h != h0);
+        }
+        return boundary;
+    }
+
+    /** The boundary halfedges as closed loops, each in order (the outer loop counter-clockwise about the normal, holes clockwise). */
+    List<List<Integer>> loops() throws FacePreparation.Unprepared {
+        List<Integer> boundary = boundary();
+        Map<Integer, Integer> place = new HashMap<>();
+        for (int i = 0; i < boundary.size(); i++) {
+            place.put(boundary.get(i), i);
+        }
+        // A region that touches itself at a corner passes that corner twice: no polygon with holes.
+        Set<Integer> corners = new HashSet<>();
+        for (int h : boundary) {
+            if (!corners.add(mesh.fromVertex(h))) {
+                throw new FacePreparation.Unprepared("region " + index + "'s boundary touches itself at a corner");
+            }
+        }
+        boolean[] used = new boolean[boundary.size()];
+        List<List<Integer>> loops = new ArrayList<>();
+        for (int i = 0; i < boundary.size(); i++) {
+            if (used[i]) {
+                continue;
+            }
+            List<Integer> loop = new ArrayList<>();
+            int h = boundary.get(i);
+            while (true) {
+                Integer at = place.get(h);
+                if (at == null) {
+                    throw new FacePreparation.Unprepared("region " + index + "'s boundary is not a loop");
+                }
+                if (used[at]) {
+                    break; // back at its start: each corner is passed once
+                }
+                used[at] = true;
+                loop.add(h);
+                // The next boundary halfedge: turn about h's end inside the region.
+                int next = mesh.next(h);
+                int guard = 0;
+                while (true) {
+                    int g = mesh.face(HalfedgeMesh.twin(next));
+                    if (g < 0 || regionOf[g] != index) {
+                        break;
+                    }
+                    next = mesh.next(HalfedgeMesh.twin(next));
+                    if (++guard > 1 << 20) {
+                        throw new FacePreparation.Unprepared("region " + index + "'s boundary cannot be followed");
+                    }
+                }
+                h = next;
+            }
+            loops.add(loop);
+        }
+        return loops;
+    }
+
+    /** Triangulates the region from its boundary (with every split of its edges), refined to the target angle if {@code refine}. */
+    void triangulate(boolean refine) throws FacePreparation.Unprepared {
+        double[] n = {normal[3 * seed], normal[3 * seed + 1], normal[3 * seed + 2]};
+        List<List<Integer>> loops = loops();
+        // The splits as this run takes them: a split the refinement adds is for the next run.
+        Map<Integer, double[]> taken = new HashMap<>();
+        for (List<Integer> loop : loops) {
+            for (int h : loop) {
+                int e = HalfedgeMesh.edge(h);
+                taken.put(e, splits[e] == null ? new double[0] : splits[e].clone());
+            }
+        }
+        // The frame: the first boundary edge's direction and the normal's cross with it, scaled to the region.
+        int h0 = loops.get(0).get(0);
+        int a0 = mesh.fromVertex(h0);
+        int b0 = mesh.toVertex(h0);
+        double[] e1 = new double[3];
+        double length = Triangles.distance(xyz, a0, b0);
+        for (int k = 0; k < 3; k++) {
+            e1[k] = (xyz[3 * b0 + k] - xyz[3 * a0 + k]) / length;
+        }
+        double[] e2 = {n[1] * e1[2] - n[2] * e1[1], n[2] * e1[0] - n[0] * e1[2], n[0] * e1[1] - n[1] * e1[0]};
+        double[] o = {xyz[3 * a0], xyz[3 * a0 + 1], xyz[3 * a0 + 2]};
+        double scale = 1 / Math.max(thickness, 1e-300);
+        List<Long> keys = new ArrayList<>();
+        List<double[]> points = new ArrayList<>();
+        List<IConstraint> constraints = new ArrayList<>();
+        Map<Vertex, Integer> known = new IdentityHashMap<>();
+        for (List<Integer> loop : loops) {
+            List<Vertex> polygon = new ArrayList<>();
+            for (int h : loop) {
+                int e = HalfedgeMesh.edge(h);
+                boolean forward = h == HalfedgeMesh.halfedgeOfEdge(e, 0);
+                addPoint(mesh.fromVertex(h), FacePreparation.Run.cornerKey(mesh.fromVertex(h)), o, e1, e2, scale, keys, points, polygon, known);
+                double[] t = taken.get(e);
+                for (int k = 0; k < t.length; k++) {
+                    int i = forward ? k : t.length - 1 - k;
+                    double[] p = run.pointOnEdge(e, t[i]);
+                    addPoint(p, FacePreparation.Run.splitKey(e, i), o, e1, e2, scale, keys, points, polygon, known);
+                }
+            }
+            PolygonConstraint constraint = new PolygonConstraint(polygon);
+            constraint.complete();
+            constraints.add(constraint);
+        }
+        IncrementalTin tin = new IncrementalTin(1);
+        tin.addConstraints(constraints, true);
+        if (!tin.isBootstrapped()) {
+            throw new FacePreparation.Unprepared("region " + index + " has no area to triangulate");
+        }
+        if (refine) {
+            RuppertRefiner refiner = new RuppertRefiner(tin, FacePreparation.TARGET_ANGLE, FacePreparation.AREA_FLOOR);
+            int boundaryPoints = points.size();
+            // Each step inserts a point; counting steps, not the TIN's vertices, which Tinfour counts by a walk.
+            int limit = 50 * boundaryPoints + 1000;
+            for (int steps = 0; steps < limit && refiner.refineOnce() != null; steps++) {
+                // enough at the limit: the rest of the region's thin triangles stay
+            }
+        }
+        List<double[]> inside = new ArrayList<>();
+        Map<Vertex, Long> made = new IdentityHashMap<>();
+        List<Long> triangleKeys = new ArrayList<>();
+        double[][] loop2d = loops2d(loops, points, taken);
+        // Points the refinement put on the boundary end constrained edges: only those are looked for along it.
+        Map<Vertex, Boolean> onBorder = new IdentityHashMap<>();
+        for (IQuadEdge edge : tin.edges()) {
+            if (edge.isConstrained()) {
+                onBorder.put(edge.getA(), true);
+                onBorder.put(edge.getB(), true);
+            }
+        }
+        for (SimpleTriangle t : tin.triangles()) {
+            if (t.isGhost()) {
+                continue;
+            }
+            Vertex[] corners = {t.getVertexA(), t.getVertexB(), t.getVertexC()};
+            IConstraint containing = t.getContainingRegion();
+            if (containing == null || !containing.definesConstrainedRegion()) {
+                continue; // in a hole, or outside a region that is not convex
+            }
+            double twice = (corners[1].getX() - corners[0].getX()) * (corners[2].getY() - corners[0].getY())
+                    - (corners[1].getY() - corners[0].getY()) * (corners[2].getX() - corners[0].getX());
+            if (twice < 0) {
+                Vertex swap = corners[1];
+                corners[1] = corners[2];
+                corners[2] = swap;
+            }
+            for (Vertex corner : corners) {
+                Integer at = known.get(corner);
+                if (at != null) {
+                    triangleKeys.add(keys.get(at));
+                    continue;
+                }
+                Long key = made.get(corner);
+                if (key == null) {
+                    key = newPoint(corner, onBorder.containsKey(corner), loops, loop2d, taken, inside, o, e1, e2, scale);
+                    made.put(corner, key);
+                }
+                triangleKeys.add(key);
+            }
+        }
+        triangles = triangleKeys.stream().mapToLong(Long::longValue).toArray();
+        interior = new double[3 * inside.size()];
+        for (int i = 0; i < inside.size(); i++) {
+            System.arraycopy(inside.get(i), 0, interior, 3 * i, 3);
+        }
+    }
+
+    private void addPoint(int v, long key, double[] o, double[] e1, double[] e2, double scale, List<Long> keys,
+            List<double[]> points, List<Vertex> polygon, Map<Vertex, Integer> known) {
+        addPoint(new double[] {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]}, key, o, e1, e2, scale, keys, points, polygon, known);
+    }
+
+    private void addPoint(double[] p, long key, double[] o, double[] e1, double[] e2, double scale, List<Long> keys,
+            List<double[]> points, List<Vertex> polygon, Map<Vertex, Integer> known) {
+        double x = 0;
+        double y = 0;
+        for (int k = 0; k < 3; k++) {
+            x += (p[k] - o[k]) * e1[k];
+            y += (p[k] - o[k]) * e2[k];
+        }
+        Vertex vertex = new Vertex(x * scale, y * scale, 0, keys.size());
+        known.put(vertex, keys.size());
+        keys.add(key);
+        points.add(new double[] {x * scale, y * scale});
+        polygon.add(vertex);
+    }
+
+    /** Each loop's points in the plane, x and y interleaved. */
+    private double[][] loops2d(List<List<Integer>> loops, List<double[]> points, Map<Integer, double[]> taken) {
+        double[][] result = new double[loops.size()][];
+        int at = 0;
+        for (int l = 0; l < loops.size(); l++) {
+            int count = 0;
+            for (int h : loops.get(l)) {
+                count += 1 + taken.get(HalfedgeMesh.edge(h)).length;
+            }
+            result[l] = new double[2 * count];
+            for (int i = 0; i < count; i++) {
+                result[l][2 * i] = points.get(at + i)[0];
+                result[l][2 * i + 1] = points.get(at + i)[1];
+            }
+            at += count;
+        }
+        return result;
+    }
+
+    /**
+     * A point the refinement made: on the region's boundary, a new split of the edge it
+     * lies on (the region across is marked to be triangulated again); else a point inside.
+     */
+    private long newPoint(Vertex vertex, boolean onBorder, List<List<Integer>> loops, double[][] loop2d, Map<Integer, double[]> taken, List<double[]> inside,
+            double[] o, double[] e1, double[] e2, double scale) throws FacePreparation.Unprepared {
+        double x = vertex.getX();
+        double y = vertex.getY();
+        for (int l = 0; onBorder && l < loops.size(); l++) {
+            double[] ring = loop2d[l];
+            int count = ring.length / 2;
+            int at = 0;
+            for (int h : loops.get(l)) {
+                double[] t = taken.get(HalfedgeMesh.edge(h));
+                int pieces = 1 + t.length;
+                for (int k = 0; k < pieces; k++) {
+                    int i = at + k;
+                    int j = (i + 1) % count;
+                    double ax = ring[2 * i];
+                    double ay = ring[2 * i + 1];
+                    double bx = ring[2 * j];
+                    double by = ring[2 * j + 1];
+                    double dx = bx - ax;
+                    double dy = by - ay;
+                    double len2 = dx * dx + dy * dy;
+                    double s = ((x - ax) * dx + (y - ay) * dy) / len2;
+                    double off = Math.abs((x - ax) * dy - (y - ay) * dx) / Math.sqrt(len2);
+                    if (s > 0 && s < 1 && off <= 1e-9 * Math.sqrt(len2) + 1e-12) {
+                        return addSplit(h, k, t, s);
+                    }
+                }
+                at += pieces;
+            }
+        }
+        double[] p = new double[3];
+        for (int k = 0; k < 3; k++) {
+            p[k] = o[k] + (x * e1[k] + y * e2[k]) / scale;
+        }
+        inside.add(p);
+        return FacePreparation.Run.insideKey(inside.size() - 1);
+    }
+
+    /** A split of the edge of halfedge h, at fraction s of its k-th piece along h between the splits t this run took. */
+    private long addSplit(int h, int k, double[] t, double s) {
+        int e = HalfedgeMesh.edge(h);
+        boolean forward = h == HalfedgeMesh.halfedgeOfEdge(e, 0);
+        int pieces = t.length + 1;
+        // The piece's ends as parameters along the edge's first halfedge.
+        double from;
+        double to;
+        if (forward) {
+            from = k == 0 ? 0 : t[k - 1];
+            to = k == pieces - 1 ? 1 : t[k];
+        } else {
+            from = k == 0 ? 1 : t[t.length - k];
+            to = k == pieces - 1 ? 0 : t[t.length - 1 - k];
+        }
+        double at = from + s * (to - from);
+        double[] now = splits[e] == null ? new double[0] : splits[e];
+        double[] grown = Arrays.copyOf(now, now.length + 1);
+        grown[now.length] = at;
+        Arrays.sort(grown);
+        splits[e] = grown;
+        run.markAcross(e);
+        dirty = true; // its keys of this edge's splits moved: triangulated again with the split as a point of its own
+        return FacePreparation.Run.splitKey(e, Arrays.binarySearch(grown, at));
+    }
+}
