@@ -15,7 +15,8 @@ import java.util.Map;
 
 /**
  * A FOLD crease pattern read to be folded, one crease line at a time: in the order the file
- * gives ({@code edges_ifold:order}, a list of edge indices) or else in the order of its edges.
+ * gives ({@code edges_ifold:foldStep}, each edge's fold; or, in older files, {@code edges_ifold:order},
+ * a list of edge indices) or else in the order of its edges.
  * Each crease line is a flap fold of the paper beyond it (the side away from the sheet's first
  * corner), valley or mountain as the file says, by its fold angle or 180°. Once folded, every
  * crease of the file must come out as the file labels it; a pattern that cannot be folded that
@@ -147,7 +148,26 @@ public record CreasePattern(double length, double width, FoldScript script, List
         CreaseLines.checkBorderToBorder(creases, lineOf, creaseEdges, length, width, tolerance, box);
         // The order of folding: the file's, or the edges'.
         List<Integer> order = new ArrayList<>();
-        if (fold.get("edges_ifold:order") instanceof List<?> given) {
+        if (fold.get("edges_ifold:foldStep") instanceof List<?> steps) {
+            if (steps.size() != edges.size()) {
+                throw new Refused("edges_ifold:foldStep has " + steps.size() + " entries for " + edges.size() + " edges");
+            }
+            List<int[]> stepped = new ArrayList<>(); // {crease, step, edge}
+            for (int k = 0; k < creaseEdges.size(); k++) {
+                int e = creaseEdges.get(k);
+                Object step = steps.get(e);
+                if (!(step instanceof Number n) || n.doubleValue() != n.intValue() || n.intValue() < 1) {
+                    throw new Refused("edge " + e + " is a crease, and edges_ifold:foldStep gives it " + step
+                            + ", not the number of the fold that made it");
+                }
+                stepped.add(new int[] {k, n.intValue(), e});
+            }
+            stepped.sort(java.util.Comparator.<int[]>comparingInt(c -> c[1]).thenComparingInt(c -> c[2]));
+            for (int[] c : stepped) {
+                order.add(c[0]);
+            }
+        } else if (fold.get("edges_ifold:order") instanceof List<?> given) {
+            // Files of iFold before edges_ifold:foldStep: the crease edges listed in folding order.
             Map<Integer, Integer> creaseOfEdge = new HashMap<>();
             for (int k = 0; k < creaseEdges.size(); k++) {
                 creaseOfEdge.put(creaseEdges.get(k), k);

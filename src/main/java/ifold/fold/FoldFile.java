@@ -146,8 +146,11 @@ public final class FoldFile {
         final List<Double> angles = new ArrayList<>();
         final List<int[]> orders = new ArrayList<>();
         final List<int[]> levels = new ArrayList<>();
-        /** The mountain and valley edges in the order they were folded: sheet by sheet, fold by fold. */
-        final List<Integer> foldingOrder = new ArrayList<>();
+        /**
+         * Each edge's fold step, from 1, sheet by sheet, fold by fold: the fold that made the
+         * crease (the creases of one fold share it); null for the border and flat edges.
+         */
+        Integer[] foldStep;
         Counts counts;
 
         Pattern(List<Folded> sheets) {
@@ -210,8 +213,14 @@ public final class FoldFile {
             }
             folds.sort(Comparator.<long[]>comparingLong(f -> f[0]).thenComparingLong(f -> f[1])
                     .thenComparingLong(f -> f[2]));
-            for (long[] fold : folds) {
-                foldingOrder.add((int) fold[2]);
+            foldStep = new Integer[edges.size()];
+            int step = 0;
+            for (int i = 0; i < folds.size(); i++) {
+                long[] fold = folds.get(i);
+                if (i == 0 || fold[0] != folds.get(i - 1)[0] || fold[1] != folds.get(i - 1)[1]) {
+                    step++; // the creases of one fold (a crease later folds cut in pieces) share its step
+                }
+                foldStep[(int) fold[2]] = step;
             }
             counts = new Counts(vertexCount, faceCount, edges.size(), mountains, valleys, flat, border, orders.size());
         }
@@ -312,11 +321,16 @@ public final class FoldFile {
                 json.writeNumber(angle);
             }
             json.writeEndArray();
-            // The order iFold folded the creases in, which `ifold fold` folds them back in.
-            json.writeFieldName("edges_ifold:order");
+            // Per edge, as FOLD's edges_ keys are: the step of the fold that made it, which
+            // `ifold fold` folds the creases back in; null where no fold did.
+            json.writeFieldName("edges_ifold:foldStep");
             json.writeStartArray();
-            for (int edge : foldingOrder) {
-                json.writeNumber(edge);
+            for (Integer step : foldStep) {
+                if (step == null) {
+                    json.writeNull();
+                } else {
+                    json.writeNumber(step);
+                }
             }
             json.writeEndArray();
             json.writeFieldName("faces_vertices");

@@ -41,6 +41,38 @@ class CreasePatternTest {
                 + vertices + "],\n \"edges_vertices\": [" + edges + "],\n \"edges_assignment\": [" + assignments + "]}\n");
     }
 
+    /** Two creases across a 3 x 1 strip at x = 1 and x = 2, with the order key given (or none). */
+    private Path twoCreases(String orderKey) throws Exception {
+        return Files.writeString(dir.resolve("two.fold"), "{\"vertices_coords\": [[0, 0], [1, 0], [2, 0], [3, 0], [3, 1], [2, 1], [1, 1], [0, 1]],"
+                + " \"edges_vertices\": [[0, 1], [1, 2], [2, 3], [3, 4], [4, 5], [5, 6], [6, 7], [7, 0], [2, 5], [1, 6]],"
+                + " \"edges_assignment\": [\"B\", \"B\", \"B\", \"B\", \"B\", \"B\", \"B\", \"B\", \"V\", \"V\"]"
+                + (orderKey.isEmpty() ? "" : ", " + orderKey) + "}");
+    }
+
+    /** The crease at x = 1 is edge 9, at x = 2 edge 8: the lines in the order folded. */
+    private static java.util.List<Double> foldedAt(CreasePattern pattern) {
+        java.util.List<Double> at = new java.util.ArrayList<>();
+        for (double[] line : pattern.lines()) {
+            at.add(Math.rint(line[0]));
+        }
+        return at;
+    }
+
+    @Test
+    void theFoldStepOfEachEdgeOrdersTheFoldsAndOlderFilesStillFold() throws Exception {
+        assertEquals(java.util.List.of(2.0, 1.0), foldedAt(CreasePattern.read(twoCreases(""))), "setup: by default, in the edges' order");
+        String steps = "\"edges_ifold:foldStep\": [null, null, null, null, null, null, null, null, 2, 1]";
+        assertEquals(java.util.List.of(1.0, 2.0), foldedAt(CreasePattern.read(twoCreases(steps))));
+        assertEquals(java.util.List.of(1.0, 2.0), foldedAt(CreasePattern.read(twoCreases("\"edges_ifold:order\": [9, 8]"))),
+                "a file of an earlier iFold");
+        CreasePattern.Refused missing = org.junit.jupiter.api.Assertions.assertThrows(CreasePattern.Refused.class,
+                () -> CreasePattern.read(twoCreases("\"edges_ifold:foldStep\": [null, null, null, null, null, null, null, null, 2, null]")));
+        assertTrue(missing.getMessage().contains("edge 9 is a crease"), missing.getMessage());
+        CreasePattern.Refused shorter = org.junit.jupiter.api.Assertions.assertThrows(CreasePattern.Refused.class,
+                () -> CreasePattern.read(twoCreases("\"edges_ifold:foldStep\": [1, 2]")));
+        assertTrue(shorter.getMessage().contains("2 entries for 10 edges"), shorter.getMessage());
+    }
+
     /**
      * Each fold lands on the pile's top layer: the order of the pile is n relations, not one
      * for every pair of layers (n² / 2: 80,000 here), which every later fold would walk.

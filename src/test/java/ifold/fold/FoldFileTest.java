@@ -297,10 +297,18 @@ class FoldFileTest {
         List<String> assignments = (List<String>) fold.get("edges_assignment");
         List<List<Double>> vertices = numbers(fold, "vertices_coords");
         List<List<Double>> edges = numbers(fold, "edges_vertices");
+        // edges_ifold:foldStep is per edge, as FOLD's edges_ keys are: a step for each crease, null elsewhere.
+        List<?> steps = (List<?>) fold.get("edges_ifold:foldStep");
+        assertEquals(edges.size(), steps.size(), "one entry an edge");
         List<Integer> order = new ArrayList<>();
-        for (Object e : (List<?>) fold.get("edges_ifold:order")) {
-            order.add(((Number) e).intValue());
+        for (int e = 0; e < steps.size(); e++) {
+            boolean crease = assignments.get(e).equals("M") || assignments.get(e).equals("V");
+            assertEquals(crease, steps.get(e) != null, "edge " + e + " (" + assignments.get(e) + ") has a step only if it is a crease");
+            if (crease) {
+                order.add(e);
+            }
         }
+        order.sort(java.util.Comparator.<Integer>comparingDouble(e -> ((Number) steps.get(e)).doubleValue()).thenComparing(e -> e));
         int creases = 0;
         for (String a : assignments) {
             creases += a.equals("M") || a.equals("V") ? 1 : 0;
