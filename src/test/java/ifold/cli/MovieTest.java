@@ -151,4 +151,45 @@ class MovieTest {
             assertEquals(0, files.count(), "nothing written");
         }
     }
+
+    @Test
+    void aGifIsSizedForTheWebUnlessToldOtherwise() throws Exception {
+        assumeDisplay();
+        Path gif = dir.resolve("web.gif");
+        CliTest.Run run = CliTest.run("demo", "zigzag", "--movie", gif.toString(), "--seconds", "1");
+        assertEquals(0, run.code(), run.err());
+        assertTrue(run.out().contains("wrote " + gif + ": 12 frames of 640x360 at 12 frames/s"), run.out());
+        // Either given, it is kept; the other keeps the GIF's default.
+        Path sized = dir.resolve("sized.gif");
+        run = CliTest.run("demo", "zigzag", "--movie", sized.toString(), "--seconds", "1", "--size", "320x180");
+        assertEquals(0, run.code(), run.err());
+        assertTrue(run.out().contains("12 frames of 320x180 at 12 frames/s"), run.out());
+        Path fast = dir.resolve("fast.gif");
+        run = CliTest.run("demo", "zigzag", "--movie", fast.toString(), "--seconds", "1", "--fps", "20");
+        assertEquals(0, run.code(), run.err());
+        assertTrue(run.out().contains("20 frames of 640x360 at 20 frames/s"), run.out());
+    }
+
+    @Test
+    void withoutADisplayTheDemoWritesOneMovieAndSaysWhere() throws Exception {
+        assumeTrue(Mp4Writer.available(), "no ffmpeg here (scripts/setup installs it)");
+        assumeTrue(new ProcessBuilder("sh", "-c", "command -v Xvfb").start().waitFor() == 0, "no Xvfb here");
+        Path launcher = Path.of("build", "install", "ifold", "bin", "ifold").toAbsolutePath();
+        assumeTrue(Files.isExecutable(launcher), "not installed (gradle installDist)");
+        Path log = dir.resolve("log");
+        ProcessBuilder builder = new ProcessBuilder(launcher.toString(), "demo", "zigzag", "--seconds", "1", "--size", "160x90")
+                .directory(dir.toFile()).redirectErrorStream(true).redirectOutput(log.toFile());
+        builder.environment().remove("DISPLAY");
+        builder.environment().remove("IFOLD_IN_XVFB");
+        Process process = builder.start();
+        assertTrue(process.waitFor(120, java.util.concurrent.TimeUnit.SECONDS), "the demo ends");
+        String output = Files.readString(log);
+        assertEquals(0, process.exitValue(), output);
+        Path movie = dir.resolve("zigzag.mp4");
+        assertTrue(Files.size(movie) > 0, output);
+        assertFalse(Files.exists(dir.resolve("zigzag-frames")), "no folder of PNGs");
+        assertTrue(output.contains("no display: rendering the animation into " + movie.toRealPath()), output);
+        assertTrue(output.contains("--frames DIR for PNG frames"), "and how to get frames instead: " + output);
+        assertTrue(output.contains("wrote zigzag.mp4: 30 frames of 160x90"), output);
+    }
 }
