@@ -241,6 +241,9 @@ final class PaperOutputs {
         PrintWriter err = spec.commandLine().getErr();
         boolean secondsGiven = spec.commandLine().getParseResult().hasMatchedOption("--seconds");
         double seconds = secondsGiven ? frameOptions.seconds : defaultSeconds;
+        if (animation instanceof ifold.scene.WrapView.Playback playback) {
+            playback.pace(seconds); // its folds laid out so that every caption can be read in the time it has
+        }
         if (frameOptions.renders()) {
             frameOptions.export(scene, animation, Math.max(1, (int) Math.round(frameOptions.fps * seconds)), samples, out, err);
         } else if (!noView) {
