@@ -38,6 +38,10 @@ public final class WrapView {
      */
     public static final Material PAPER_FOLDING = new Material(PaperView.PAPER, 0xFF8FAACB, true, true);
 
+    /** The legend's lines for the paper: its two sides in the colours it is drawn in. */
+    public static final Scene.Swatch TOP_SIDE = new Scene.Swatch(PaperView.PAPER, "paper, top side");
+    public static final Scene.Swatch UNDERSIDE = new Scene.Swatch(PAPER.back(), "paper, underside");
+
     /** The outline of a face being folded: darker than the paper, quieter than the model's edges. */
     private static final int FACE_EDGE = 0xFF6F7B88;
 
