@@ -231,4 +231,14 @@ class MovieTest {
         }
         assertTrue(written > 3 * 100, "three letters A, B, C: " + written + " pixels");
     }
+
+    @Test
+    void theCubesWrapAsAGifFitsAWebPage() throws Exception {
+        assumeDisplay();
+        Path gif = dir.resolve("cube.gif");
+        CliTest.Run run = CliTest.run("wrap", "models/cube.off", "--movie", gif.toString());
+        assertEquals(0, run.code(), run.err());
+        assertTrue(run.out().contains("1440 frames of 640x360 at 12 frames/s (120.0 s)"), run.out());
+        assertTrue(Files.size(gif) <= 8_000_000, "at most 8 MB: " + Files.size(gif) + " bytes (30.4 MB at 1280x720 and 30 frames/s)");
+    }
 }
