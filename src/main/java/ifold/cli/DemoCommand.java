@@ -48,7 +48,7 @@ final class DemoCommand implements Runnable {
     @Command(name = "zigzag", mixinStandardHelpOptions = true,
             description = {"Wraps a triangle in a strip of paper the zig-zag way (Figure 11 of the seed): the passes and their "
                 + "turns, then the tucks that hide the excess, then the camera turns to show the underside and its layers. "
-                + "In a window where there is a display; as frames in zigzag-frames/ where there is none. "
+                + "In a window where there is a display; as one movie, zigzag.mp4, where there is none (--frames DIR for PNGs). "
                 + "The animation takes two seconds a step unless --seconds says otherwise."})
     static final class ZigZagDemo implements Callable<Integer> {
         @Spec

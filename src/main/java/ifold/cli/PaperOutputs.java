@@ -52,10 +52,12 @@ final class PaperOutputs {
     FrameOptions frameOptions = new FrameOptions();
 
     /**
-     * Checks every output before any work. With {@code framesWithoutDisplay}, where no window
-     * can open and no --frames was given, frames go to {@code name-frames/} (and it says so).
+     * Checks every output before any work. With {@code movieWithoutDisplay}, where no window
+     * can open and neither --frames nor --movie was given, the animation goes into one movie,
+     * {@code name.mp4} ({@code name.gif} without ffmpeg), and it says where and how to get frames
+     * instead: a first run on a server wants something to open, not thousands of PNGs.
      */
-    void check(String name, PrintWriter err, boolean framesWithoutDisplay) {
+    void check(String name, PrintWriter err, boolean movieWithoutDisplay) {
         if (exportObj != null) {
             OutputFiles.checkWritableFile(exportObj, "--export-obj", ".obj");
         }
@@ -65,9 +67,10 @@ final class PaperOutputs {
         if (exportFold != null) {
             OutputFiles.checkWritableFile(exportFold, "--export-fold", ".fold");
         }
-        if (framesWithoutDisplay && !frameOptions.renders() && !noView && !hasDisplay()) {
-            frameOptions.frames = Path.of(name + "-frames");
-            err.println("ifold: no display: rendering frames into " + frameOptions.frames.toAbsolutePath() + "/ instead");
+        if (movieWithoutDisplay && !frameOptions.renders() && !noView && !hasDisplay()) {
+            frameOptions.movie = Path.of(name + (ifold.image.Mp4Writer.available() ? ".mp4" : ".gif"));
+            err.println("ifold: no display: rendering the animation into " + frameOptions.movie.toAbsolutePath()
+                    + " instead (--frames DIR for PNG frames, --movie FILE for another name)");
         }
         frameOptions.check();
     }
@@ -238,6 +241,9 @@ final class PaperOutputs {
         PrintWriter err = spec.commandLine().getErr();
         boolean secondsGiven = spec.commandLine().getParseResult().hasMatchedOption("--seconds");
         double seconds = secondsGiven ? frameOptions.seconds : defaultSeconds;
+        if (animation instanceof ifold.scene.WrapView.Playback playback) {
+            playback.pace(seconds); // its folds laid out so that every caption can be read in the time it has
+        }
         if (frameOptions.renders()) {
             frameOptions.export(scene, animation, Math.max(1, (int) Math.round(frameOptions.fps * seconds)), samples, out, err);
         } else if (!noView) {

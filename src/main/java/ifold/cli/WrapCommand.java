@@ -42,7 +42,7 @@ import picocli.CommandLine.Model.CommandSpec;
             + "shared edge to the next, the excess of every triangle tucked under it. An open surface is covered on the side "
             + "its faces face. The animation plays the folds with the camera following the strip, then turns once around "
             + "the model; it takes two minutes unless --seconds says otherwise. In a window where there is a display; as "
-            + "frames in wrap-frames/ where there is none. The OBJ holds each strip as an object strip-K."})
+            + "one movie, wrap.mp4, where there is none (--frames DIR for PNGs). The OBJ holds each strip as an object strip-K."})
 final class WrapCommand implements Callable<Integer> {
 
     @Spec

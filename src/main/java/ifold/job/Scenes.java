@@ -109,6 +109,13 @@ public final class Scenes {
     public static WrapView.Playback zigzag(Scene scene, Triangle shape, Wrap.Result result, List<WrapGeometry> geometries) {
         scene.root().attach(solid(shape));
         scene.root().attach(outline(shape));
+        scene.setLegend(List.of(WrapView.TOP_SIDE, WrapView.UNDERSIDE, new Scene.Swatch(WrapView.MODEL, "the triangle")));
+        // The captions name edges by their corners ("tuck 2 along edge CA"): the frames name the corners.
+        List<Scene.Label> corners = new ArrayList<>();
+        for (int i = 0; i < 3; i++) {
+            corners.add(new Scene.Label(String.valueOf((char) ('A' + i)), shape.corner(i).x(), shape.corner(i).y(), shape.corner(i).z()));
+        }
+        scene.setLabels(corners);
         return paper(scene, result, geometries, "wrapped: the strip covers the triangle, its excess tucked under");
     }
 
@@ -129,6 +136,7 @@ public final class Scenes {
 
     /** The turn gadget's strip folded on an empty table. */
     public static WrapView.Playback turn(Scene scene, Wrap.Result result, List<WrapGeometry> geometries) {
+        scene.setLegend(List.of(WrapView.TOP_SIDE, WrapView.UNDERSIDE));
         return paper(scene, result, geometries, "turned: the strip runs on at the angle asked, top side up");
     }
 
@@ -136,6 +144,8 @@ public final class Scenes {
     public static WrapView.Playback wrap(Scene scene, HalfedgeMesh mesh, Wrap.Result result, List<WrapGeometry> geometries) {
         Geometry solid = new Geometry(MODEL, SceneMesh.of(mesh), new Material(WrapView.MODEL, 0xFF4A5460, false, false));
         scene.root().attach(solid);
+        // Blue-grey underside over a grey-blue model reads as a hole: the legend says which is which.
+        scene.setLegend(List.of(WrapView.TOP_SIDE, WrapView.UNDERSIDE, new Scene.Swatch(WrapView.MODEL, "the model")));
         return WrapView.play(scene, result, geometries);
     }
 

@@ -43,7 +43,8 @@ public final class FrameExport {
      * Renders {@code frames} frames of the animation into {@code sink}.
      *
      * @param samples samples per pixel for antialiasing (0 for none)
-     * @param captions whether each frame carries a caption naming the step it shows
+     * @param captions whether each frame carries a caption naming the step it shows, the legend of
+     *     the scene's colours and its labels
      * @param progress told of each frame done, or null
      */
     public static Result export(Scene scene, Animation animation, FrameSink sink, int width, int height, int frames,
@@ -52,28 +53,25 @@ public final class FrameExport {
         scene.bindToThread(Thread.currentThread());
         try (OffscreenRenderer renderer = new OffscreenRenderer(width, height, samples)) {
             Captions caption = captions ? new Captions(width, height) : null;
+            Annotations notes = captions ? new Annotations(width, height) : null;
             // A GIF picks its palette from frames spread over the movie, before the first.
             int samplesWanted = Math.min(sink.samplesWanted(), frames);
             for (int k = 0; k < samplesWanted; k++) {
                 double at = samplesWanted == 1 ? 0 : animation.stepCount() * (double) k / (samplesWanted - 1);
                 animation.apply(at);
                 byte[] picture = renderer.render(scene);
-                if (caption != null) {
-                    caption.draw(picture, animation.describe(at));
-                }
+                annotate(picture, scene, caption, notes, animation, at);
                 sink.sample(picture);
             }
             boolean composite = animation instanceof RevealAnimation reveal && isOnlyGeometry(scene, reveal.geometry());
             if (composite) {
-                composite(scene, (RevealAnimation) animation, renderer, sink, frames, caption, progress);
+                composite(scene, (RevealAnimation) animation, renderer, sink, frames, caption, notes, progress);
             } else {
                 for (int i = 0; i < frames; i++) {
                     double at = position(animation, i, frames);
                     animation.apply(at);
                     byte[] picture = renderer.render(scene, sink.buffer(3 * width * height));
-                    if (caption != null) {
-                        caption.draw(picture, animation.describe(at));
-                    }
+                    annotate(picture, scene, caption, notes, animation, at);
                     sink.write(i, width, height, picture);
                     if (progress != null) {
                         progress.framesDone(i + 1, frames);
@@ -84,6 +82,17 @@ public final class FrameExport {
             return new Result(frames, (System.nanoTime() - start) * 1e-9, renderer.describe(), composite);
         } finally {
             scene.bindToThread(null);
+        }
+    }
+
+    /** Writes the caption of the animation at {@code at}, the legend and the labels into a frame, where they are asked for (non-null). */
+    private static void annotate(byte[] picture, Scene scene, Captions caption, Annotations notes, Animation animation, double at) {
+        if (caption != null) {
+            caption.draw(picture, animation.describe(at));
+        }
+        if (notes != null) {
+            notes.drawLegend(picture, scene.legend());
+            notes.drawLabels(picture, scene, scene.labels());
         }
     }
 
@@ -138,7 +147,7 @@ public final class FrameExport {
     }
 
     private static void composite(Scene scene, RevealAnimation reveal, OffscreenRenderer renderer, FrameSink writer,
-            int frames, Captions caption, FrameSink.Progress progress) throws IOException {
+            int frames, Captions caption, Annotations notes, FrameSink.Progress progress) throws IOException {
         Geometry geometry = reveal.geometry();
         geometry.setRevealed(Geometry.ALL);
         byte[] revealed = renderer.render(scene);
@@ -155,9 +164,7 @@ public final class FrameExport {
                 frame[b + 1] = source[b + 1];
                 frame[b + 2] = source[b + 2];
             }
-            if (caption != null) {
-                caption.draw(frame, reveal.describe(position(reveal, i, frames)));
-            }
+            annotate(frame, scene, caption, notes, reveal, position(reveal, i, frames));
             writer.write(i, renderer.width(), renderer.height(), frame);
             if (progress != null) {
                 progress.framesDone(i + 1, frames);

@@ -14,6 +14,8 @@ public final class Scene {
     private final Camera camera = new Camera();
     private final List<Light> lights = new ArrayList<>();
     private int background = 0xFFFFFFFF;
+    private List<Swatch> legend = List.of();
+    private List<Label> labels = List.of();
     private volatile Thread renderThread;
 
     public Scene() {
@@ -46,6 +48,34 @@ public final class Scene {
     public void setBackground(int argb) {
         root.markChanged();
         background = argb;
+    }
+
+    /** A colour of the scene and what it stands for: a line of the legend of frames and movies. */
+    public record Swatch(int color, String meaning) {
+    }
+
+    /** A name written at a point of the world in frames and movies: a corner's letter. */
+    public record Label(String text, double x, double y, double z) {
+    }
+
+    /** What the scene's colours mean (the paper's top side, its underside, the model), shown in a corner of frames and movies. */
+    public List<Swatch> legend() {
+        return legend;
+    }
+
+    public void setLegend(List<Swatch> legend) {
+        root.markChanged();
+        this.legend = List.copyOf(legend);
+    }
+
+    /** The names written at points of the scene (a triangle's corners A, B, C), for frames and movies. */
+    public List<Label> labels() {
+        return labels;
+    }
+
+    public void setLabels(List<Label> labels) {
+        root.markChanged();
+        this.labels = List.copyOf(labels);
     }
 
     /** From now on only {@code thread} may change the scene; null lifts the rule. */

@@ -38,6 +38,10 @@ public final class WrapView {
      */
     public static final Material PAPER_FOLDING = new Material(PaperView.PAPER, 0xFF8FAACB, true, true);
 
+    /** The legend's lines for the paper: its two sides in the colours it is drawn in. */
+    public static final Scene.Swatch TOP_SIDE = new Scene.Swatch(PaperView.PAPER, "paper, top side");
+    public static final Scene.Swatch UNDERSIDE = new Scene.Swatch(PAPER.back(), "paper, underside");
+
     /** The outline of a face being folded: darker than the paper, quieter than the model's edges. */
     private static final int FACE_EDGE = 0xFF6F7B88;
 
@@ -131,7 +135,22 @@ public final class WrapView {
         return new Playback(scene, paper, current, strips, result, ending);
     }
 
-    /** The wrap played fold by fold, then one turn around the result. */
+    /** The least time a caption stays on screen: long enough to read a line of it. */
+    public static final double CAPTION_SECONDS = 1.5;
+
+    /** The length a playback is paced for until {@link Playback#pace} says otherwise: a wrap's two minutes. */
+    public static final double DEFAULT_SECONDS = 120;
+
+    /** The height of the frame the triangle being wrapped fills, once the camera has come close to it. */
+    static final double CLOSE_FILL = 0.5;
+
+    /**
+     * The wrap played fold by fold, then one turn around the result. A movie of a thousand folds
+     * cannot show each for long enough to read its caption: the first triangle is shown fold by
+     * fold, and each later step is a triangle, or a run of them, wrapped the same way, said so in
+     * its caption; every caption stays at least {@link #CAPTION_SECONDS} at the length it is
+     * {@linkplain #pace paced} for.
+     */
     public static final class Playback implements Animation {
         private final Scene scene;
         private final Geometry done;
@@ -155,6 +174,20 @@ public final class WrapView {
         /** The caption once all is folded: what the paper does now. */
         private final String ending;
         private double shown = -1;
+        /** For each step, the position it begins at; the last entry is the end of the folding. */
+        private double[] stepStart;
+        /** For each step, the beat (a caption's time on screen) it is played in. */
+        private int[] beatOfStep;
+        /** Each beat's caption, or null where it is its fold's own. */
+        private String[] beatCaption;
+        /** The positions one beat lasts. */
+        private double beatLength;
+        /** For each path triangle, the positions its folds begin and end at. */
+        private double[] slotStart;
+        private double[] slotEnd;
+        /** For each path triangle, its first step and the step after its last (none: equal). */
+        private int[] firstStep;
+        private int[] endStep;
 
         Playback(Scene scene, Geometry done, Geometry current, Strips strips, Wrap.Result result, String ending) {
             this.scene = scene;
@@ -217,6 +250,154 @@ public final class WrapView {
             modelRadius = bounds.radius();
             // The camera follows a moving average of the triangles, so that it glides rather than jumps.
             window = Math.max(1, triangles / 40);
+            firstStep = new int[triangles];
+            endStep = new int[triangles];
+            for (int j = steps.size() - 1; j >= 0; j--) {
+                firstStep[triangleOf[j]] = j;
+            }
+            for (int j = 0; j < steps.size(); j++) {
+                endStep[triangleOf[j]] = j + 1;
+            }
+            pace(DEFAULT_SECONDS);
+        }
+
+        /**
+         * Lays the folds out for a playback of {@code seconds}, so that each caption stays at least
+         * {@link #CAPTION_SECONDS}: where there is time, the first triangle fold by fold and each
+         * later one a step; where there is not, the later ones in runs ("triangles 12-20 of 58:
+         * each wrapped as triangle 1"), or, on a lone triangle, its folds in runs.
+         */
+        public void pace(double seconds) {
+            if (!(seconds > 0)) {
+                throw new IllegalArgumentException("seconds must be positive, got " + seconds);
+            }
+            int n = steps.size();
+            stepStart = new double[n + 1];
+            beatOfStep = new int[n];
+            slotStart = new double[triangles];
+            slotEnd = new double[triangles];
+            if (n == 0) {
+                beatCaption = new String[0];
+                beatLength = REVEAL_STEPS;
+                return;
+            }
+            double folding = seconds * REVEAL_STEPS / (REVEAL_STEPS + TURN_STEPS);
+            int most = Math.max(1, (int) Math.floor(folding / CAPTION_SECONDS + 1e-9));
+            // Each beat: its triangles (from, to) or, for a beat of folds, -1 and its steps.
+            List<int[]> beats = new ArrayList<>();
+            List<String> captions = new ArrayList<>();
+            List<Integer> withSteps = new ArrayList<>();
+            for (int t = 0; t < triangles; t++) {
+                if (endStep[t] > firstStep[t]) {
+                    withSteps.add(t);
+                }
+            }
+            if (withSteps.size() == 1) {
+                int per = (n + most - 1) / most;
+                for (int j = 0; j < n; j += per) {
+                    int end = Math.min(n, j + per);
+                    beats.add(new int[] {-1, j, end});
+                    captions.add(per == 1 ? null : describeStep(j) + " (folds " + (j + 1) + "\u2013" + end + " of " + n + ")");
+                }
+            } else {
+                int first = withSteps.get(0);
+                int detailed = endStep[first] - firstStep[first];
+                boolean detail = detailed + 1 <= most;
+                List<Integer> grouped = detail ? withSteps.subList(1, withSteps.size()) : withSteps;
+                if (detail) {
+                    for (int j = firstStep[first]; j < endStep[first]; j++) {
+                        beats.add(new int[] {-1, j, j + 1});
+                        captions.add(null);
+                    }
+                }
+                int room = Math.max(1, most - beats.size());
+                List<List<Integer>> runs = runs(grouped, room);
+                for (List<Integer> run : runs) {
+                    beats.add(new int[] {run.get(0), run.get(run.size() - 1)});
+                    captions.add(describeRun(run, detail));
+                }
+            }
+            beatLength = (double) REVEAL_STEPS / beats.size();
+            beatCaption = captions.toArray(new String[0]);
+            for (int b = 0; b < beats.size(); b++) {
+                int[] beat = beats.get(b);
+                double start = b * beatLength;
+                if (beat[0] == -1) {
+                    int count = beat[2] - beat[1];
+                    for (int j = beat[1]; j < beat[2]; j++) {
+                        stepStart[j] = start + beatLength * (j - beat[1]) / count;
+                        beatOfStep[j] = b;
+                    }
+                    continue;
+                }
+                // A run of triangles: each an equal share of the beat, each fold an equal share of its triangle's.
+                List<Integer> inRun = new ArrayList<>();
+                for (int t = beat[0]; t <= beat[1]; t++) {
+                    if (endStep[t] > firstStep[t]) {
+                        inRun.add(t);
+                    }
+                }
+                double share = beatLength / inRun.size();
+                for (int r = 0; r < inRun.size(); r++) {
+                    int t = inRun.get(r);
+                    int count = endStep[t] - firstStep[t];
+                    for (int j = firstStep[t]; j < endStep[t]; j++) {
+                        stepStart[j] = start + share * (r + (double) (j - firstStep[t]) / count);
+                        beatOfStep[j] = b;
+                    }
+                }
+            }
+            stepStart[n] = REVEAL_STEPS;
+            for (int t = 0; t < triangles; t++) {
+                if (endStep[t] > firstStep[t]) {
+                    slotStart[t] = stepStart[firstStep[t]];
+                    slotEnd[t] = stepStart[endStep[t]];
+                }
+            }
+            shown = -1;
+        }
+
+        /** The triangles in runs of equal length, as few as fit in {@code room} beats, a run never crossing from one strip to the next. */
+        private List<List<Integer>> runs(List<Integer> grouped, int room) {
+            for (int per = Math.max(1, (grouped.size() + room - 1) / room);; per++) {
+                List<List<Integer>> runs = new ArrayList<>();
+                List<Integer> run = new ArrayList<>();
+                for (int t : grouped) {
+                    if (!run.isEmpty() && (run.size() == per || steps.get(firstStep[t]).strip() != steps.get(firstStep[run.get(0)]).strip())) {
+                        runs.add(run);
+                        run = new ArrayList<>();
+                    }
+                    run.add(t);
+                }
+                if (!run.isEmpty()) {
+                    runs.add(run);
+                }
+                if (runs.size() <= room || per >= grouped.size()) {
+                    return runs;
+                }
+            }
+        }
+
+        /** A run's caption: "triangles 12-20 of 58: each wrapped as triangle 1". */
+        private String describeRun(List<Integer> run, boolean afterDetail) {
+            Wrap.Step first = steps.get(firstStep[run.get(0)]);
+            Wrap.Step last = steps.get(firstStep[run.get(run.size() - 1)]);
+            String strip = result.strips().size() > 1 ? "strip " + (first.strip() + 1) + ", " : "";
+            String which = run.size() == 1 ? "triangle " + (first.pathIndex() + 1)
+                    : "triangles " + (first.pathIndex() + 1) + "\u2013" + (last.pathIndex() + 1);
+            String how = !afterDetail ? "zig-zag passes, turns and tucks"
+                    : (run.size() == 1 ? "wrapped as triangle 1" : "each wrapped as triangle 1") + (result.strips().size() > 1 ? " of strip 1" : "");
+            return strip + which + " of " + first.pathLength() + ": " + how;
+        }
+
+        private String describeStep(int j) {
+            Wrap.Step step = steps.get(j);
+            return (result.strips().size() > 1 ? "strip " + (step.strip() + 1) + ", " : "") + step.describe();
+        }
+
+        /** The beat shown at a position of the folding. */
+        private int beatAt(double position) {
+            return beatOfStep[(int) Math.floor(along(position))];
         }
 
         @Override
@@ -226,7 +407,7 @@ public final class WrapView {
 
         /** The position at which the first {@code folds} steps of the wrap are made and the next has not begun. */
         public double positionAfter(int folds) {
-            return steps.isEmpty() ? 0 : (double) REVEAL_STEPS * Math.max(0, Math.min(folds, steps.size())) / steps.size();
+            return steps.isEmpty() ? 0 : stepStart[Math.max(0, Math.min(folds, steps.size()))];
         }
 
         /** The position half way round the final turn: the wrapped model seen from behind. */
@@ -236,7 +417,15 @@ public final class WrapView {
 
         /** The step (fold) shown at a position, with how far it has gone. */
         private double along(double position) {
-            return Math.min(steps.size(), position / REVEAL_STEPS * steps.size());
+            int n = steps.size();
+            if (position >= REVEAL_STEPS) {
+                return n;
+            }
+            int j = java.util.Arrays.binarySearch(stepStart, 0, n, position);
+            j = j >= 0 ? j : -j - 2;
+            j = Math.max(0, Math.min(n - 1, j));
+            double length = stepStart[j + 1] - stepStart[j];
+            return j + (length > 0 ? Math.min(1, (position - stepStart[j]) / length) : 0);
         }
 
         @Override
@@ -257,7 +446,12 @@ public final class WrapView {
                 double glide = steps.isEmpty() ? 1 : (position - REVEAL_STEPS) / (GLIDE * TURN_STEPS);
                 if (glide < 1) {
                     Camera last = new Camera();
-                    follow(last, triangles, underAt(steps.size()));
+                    if (triangles > 2) {
+                        last.frame(modelCentre, WIDE * modelRadius);
+                        last.setOrientation(closeOrientation(triangleOf[steps.size() - 1]));
+                    } else {
+                        follow(last, triangles, underAt(steps.size()));
+                    }
                     double b = smooth(Math.max(0, glide));
                     camera.setOrientation(new Quaterniond(last.orientation()).slerp(turn, b));
                     camera.setTarget(new Vector3d(last.target()).lerp(camera.target(), b));
@@ -278,7 +472,93 @@ public final class WrapView {
             done.setRevealed(doneTriangles);
             int firstFace = i > 0 ? strip.facesAfter()[i - 1] : 0;
             current.setMesh(currentMesh(strip, step, j, firstFace, fraction));
-            follow(camera, triangleOf[j] + Math.min(1, (j + fraction - firstStepOf(j)) / Math.max(1, stepsOf(j))), underAt(along));
+            if (triangles > 2) {
+                frameTriangle(camera, position, triangleOf[j]);
+            } else {
+                follow(camera, triangleOf[j] + Math.min(1, (j + fraction - firstStepOf(j)) / Math.max(1, stepsOf(j))), underAt(along));
+            }
+        }
+
+        /** The whole model's view, in model radii: the model with a margin, the caption's band included. */
+        private static final double WIDE = 1.15;
+
+        /**
+         * Frames triangle t while its folds are made: close, the triangle filling
+         * {@link #CLOSE_FILL} of the frame's height (its folds are a few pixels wide when the
+         * whole model is in view), easing out to the whole model at the start and end of its
+         * time, so that each triangle is seen first where it lies on the model and the camera
+         * turns from one to the next at a distance.
+         */
+        private void frameTriangle(Camera camera, double position, int t) {
+            double start = slotStart[t];
+            double end = slotEnd[t];
+            double ease = Math.min(0.25 * (end - start), 0.5 * beatLength);
+            double in = smooth(Math.max(0, Math.min(1, (position - start) / ease)));
+            double out = smooth(Math.max(0, Math.min(1, (end - position) / ease)));
+            double close = Math.min(in, out);
+            Quaterniondc facing = closeOrientation(t);
+            // Between two triangles the camera looks half way between their faces.
+            int other = position - start < end - position ? t - 1 : t + 1;
+            Quaterniond wide = new Quaterniond(facing);
+            if (other >= 0 && other < triangles && endStep[other] > firstStep[other]) {
+                wide = new Quaterniond(facing).slerp(closeOrientation(other), 0.5);
+            }
+            Camera near = new Camera();
+            near.setOrientation(facing);
+            Vector3d centre = new Vector3d(centres[3 * t], centres[3 * t + 1], centres[3 * t + 2]);
+            near.setTarget(centre);
+            near.setDistance(closeDistance(t, facing, near.fovY()));
+            camera.frame(modelCentre, WIDE * modelRadius);
+            double far = camera.distance();
+            camera.setTarget(new Vector3d(modelCentre).lerp(centre, close));
+            // Zoomed at an even pace: the distance changes by equal ratios, not equal lengths.
+            camera.setDistance(far * Math.pow(near.distance() / far, close));
+            camera.setOrientation(wide.slerp(facing, close, new Quaterniond()));
+            camera.setSceneRadius(3 * modelRadius);
+        }
+
+        /** How triangle t is looked at close up: facing the viewer, tilted a little, as the whole model's view is. */
+        private Quaterniondc closeOrientation(int t) {
+            Vector3d normal = new Vector3d(normals[3 * t], normals[3 * t + 1], normals[3 * t + 2]).normalize();
+            return new Quaterniond().rotateX(-0.25).mul(Camera.facing(normal));
+        }
+
+        /**
+         * The distance at which triangle t, seen turned by {@code facing}, is {@link #CLOSE_FILL}
+         * of the frame's height, and at most seven tenths of a 16:9 frame's width.
+         */
+        private double closeDistance(int t, Quaterniondc facing, double fovY) {
+            IndexedPolygons mesh = result.mesh();
+            int face = triangleFace(t);
+            double top = Double.NEGATIVE_INFINITY;
+            double bottom = Double.POSITIVE_INFINITY;
+            double left = Double.POSITIVE_INFINITY;
+            double right = Double.NEGATIVE_INFINITY;
+            for (int c = 0; c < 3; c++) {
+                int v = mesh.faceVertex(face, c);
+                Vector3d p = new Vector3d(mesh.coordinate(v, 0), mesh.coordinate(v, 1), mesh.coordinate(v, 2))
+                        .sub(centres[3 * t], centres[3 * t + 1], centres[3 * t + 2]);
+                facing.transform(p);
+                top = Math.max(top, p.y);
+                bottom = Math.min(bottom, p.y);
+                left = Math.min(left, p.x);
+                right = Math.max(right, p.x);
+            }
+            double tan = Math.tan(fovY / 2);
+            double distance = Math.max((top - bottom) / (2 * CLOSE_FILL * tan), (right - left) / (2 * 0.7 * tan * 16 / 9.0));
+            return Math.max(distance, 1e-9 * modelRadius);
+        }
+
+        /** The refined mesh's face of path triangle t (strips one after another). */
+        private int triangleFace(int t) {
+            int g = t;
+            for (Wrap.Strip strip : result.strips()) {
+                if (g < strip.triangles()) {
+                    return strip.firstTriangle() + g;
+                }
+                g -= strip.triangles();
+            }
+            throw new IllegalArgumentException("no path triangle " + t);
         }
 
         /**
@@ -513,9 +793,14 @@ public final class WrapView {
                 return ending != null ? ending : "wrapped: " + strips + (strips == 1 ? " strip" : " strips") + " over " + triangles
                         + (triangles == 1 ? " triangle" : " triangles");
             }
+            int beat = beatAt(position);
+            if (beatCaption[beat] != null) {
+                return beatCaption[beat];
+            }
             int j = Math.min(steps.size() - 1, (int) Math.floor(along(position)));
-            Wrap.Step step = steps.get(j);
-            return (result.strips().size() > 1 ? "strip " + (step.strip() + 1) + ", " : "") + step.describe();
+            // On a lone triangle the camera turns under for the tucks: what is seen is the underside.
+            double middle = along(beat * beatLength + beatLength / 2);
+            return describeStep(j) + (underAt(middle) > 0.5 ? " (seen from below)" : "");
         }
     }
 

@@ -124,6 +124,11 @@ class MovieTest {
                 BufferedImage first = frame(folder, 0);
                 int background = first.getRGB(0, 0) & 0xFFFFFF;
                 for (int i = 0; i < count; i++) {
+                    // While it folds, the wrap's camera comes close to the triangle being wrapped
+                    // (WrapViewTest); the whole model is seen as it begins and in the final turn.
+                    if (folder == wrap && i > 0 && i < 0.8 * count) {
+                        continue;
+                    }
                     BufferedImage image = frame(folder, i);
                     for (int x = 0; x < 320; x++) {
                         assertEquals(background, image.getRGB(x, 0) & 0xFFFFFF, folder.getFileName() + " frame " + i + ", top, x = " + x);
@@ -150,5 +155,90 @@ class MovieTest {
         try (var files = Files.list(dir)) {
             assertEquals(0, files.count(), "nothing written");
         }
+    }
+
+    @Test
+    void aGifIsSizedForTheWebUnlessToldOtherwise() throws Exception {
+        assumeDisplay();
+        Path gif = dir.resolve("web.gif");
+        CliTest.Run run = CliTest.run("demo", "zigzag", "--movie", gif.toString(), "--seconds", "1");
+        assertEquals(0, run.code(), run.err());
+        assertTrue(run.out().contains("wrote " + gif + ": 12 frames of 640x360 at 12 frames/s"), run.out());
+        // Either given, it is kept; the other keeps the GIF's default.
+        Path sized = dir.resolve("sized.gif");
+        run = CliTest.run("demo", "zigzag", "--movie", sized.toString(), "--seconds", "1", "--size", "320x180");
+        assertEquals(0, run.code(), run.err());
+        assertTrue(run.out().contains("12 frames of 320x180 at 12 frames/s"), run.out());
+        Path fast = dir.resolve("fast.gif");
+        run = CliTest.run("demo", "zigzag", "--movie", fast.toString(), "--seconds", "1", "--fps", "20");
+        assertEquals(0, run.code(), run.err());
+        assertTrue(run.out().contains("20 frames of 640x360 at 20 frames/s"), run.out());
+    }
+
+    @Test
+    void withoutADisplayTheDemoWritesOneMovieAndSaysWhere() throws Exception {
+        assumeTrue(Mp4Writer.available(), "no ffmpeg here (scripts/setup installs it)");
+        assumeTrue(new ProcessBuilder("sh", "-c", "command -v Xvfb").start().waitFor() == 0, "no Xvfb here");
+        Path launcher = Path.of("build", "install", "ifold", "bin", "ifold").toAbsolutePath();
+        assumeTrue(Files.isExecutable(launcher), "not installed (gradle installDist)");
+        Path log = dir.resolve("log");
+        ProcessBuilder builder = new ProcessBuilder(launcher.toString(), "demo", "zigzag", "--seconds", "1", "--size", "160x90")
+                .directory(dir.toFile()).redirectErrorStream(true).redirectOutput(log.toFile());
+        builder.environment().remove("DISPLAY");
+        builder.environment().remove("IFOLD_IN_XVFB");
+        Process process = builder.start();
+        assertTrue(process.waitFor(120, java.util.concurrent.TimeUnit.SECONDS), "the demo ends");
+        String output = Files.readString(log);
+        assertEquals(0, process.exitValue(), output);
+        Path movie = dir.resolve("zigzag.mp4");
+        assertTrue(Files.size(movie) > 0, output);
+        assertFalse(Files.exists(dir.resolve("zigzag-frames")), "no folder of PNGs");
+        assertTrue(output.contains("no display: rendering the animation into " + movie.toRealPath()), output);
+        assertTrue(output.contains("--frames DIR for PNG frames"), "and how to get frames instead: " + output);
+        assertTrue(output.contains("wrote zigzag.mp4: 30 frames of 160x90"), output);
+    }
+
+    @Test
+    void framesCarryALegendOfTheColoursAndTheCornersNamesUnlessToldNot() throws Exception {
+        assumeDisplay();
+        Path with = dir.resolve("legend");
+        Path without = dir.resolve("plain");
+        assertEquals(0, CliTest.run("demo", "zigzag", "--frames", with.toString(), "--size", "640x360", "--fps", "1", "--seconds", "3").code());
+        assertEquals(0, CliTest.run("demo", "zigzag", "--frames", without.toString(), "--size", "640x360", "--fps", "1", "--seconds", "3",
+                "--no-captions").code());
+        int band = ifold.render.FrameExport.captionBand(640, 360);
+        BufferedImage captioned = frame(with, 0);
+        BufferedImage plain = frame(without, 0);
+        // The legend, top right: each colour's swatch as it is drawn, on nothing but background without it.
+        java.util.Set<Integer> legend = new java.util.HashSet<>();
+        for (int y = 0; y < 90; y++) {
+            for (int x = 400; x < 640; x++) {
+                legend.add(captioned.getRGB(x, y) & 0xFFFFFF);
+                assertEquals(BACKGROUND, plain.getRGB(x, y) & 0xFFFFFF, "nothing in the corner without captions, at " + x + ", " + y);
+            }
+        }
+        for (int color : new int[] {ifold.scene.PaperView.PAPER, ifold.scene.WrapView.PAPER.back(), ifold.scene.WrapView.MODEL}) {
+            assertTrue(legend.contains(color & 0xFFFFFF), String.format("the swatch %06x in the legend", color & 0xFFFFFF));
+        }
+        // The corners' letters: pixels written over the picture outside the caption's band and the legend's corner.
+        int written = 0;
+        for (int y = 0; y < 360 - band; y++) {
+            for (int x = 0; x < 640; x++) {
+                if (!(x >= 400 && y < 90) && captioned.getRGB(x, y) != plain.getRGB(x, y)) {
+                    written++;
+                }
+            }
+        }
+        assertTrue(written > 3 * 100, "three letters A, B, C: " + written + " pixels");
+    }
+
+    @Test
+    void theCubesWrapAsAGifFitsAWebPage() throws Exception {
+        assumeDisplay();
+        Path gif = dir.resolve("cube.gif");
+        CliTest.Run run = CliTest.run("wrap", "models/cube.off", "--movie", gif.toString());
+        assertEquals(0, run.code(), run.err());
+        assertTrue(run.out().contains("1440 frames of 640x360 at 12 frames/s (120.0 s)"), run.out());
+        assertTrue(Files.size(gif) <= 8_000_000, "at most 8 MB: " + Files.size(gif) + " bytes (30.4 MB at 1280x720 and 30 frames/s)");
     }
 }

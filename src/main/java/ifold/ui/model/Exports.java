@@ -149,6 +149,9 @@ public final class Exports {
     private static FrameExport.Result render(Plan plan, FrameSink sink, FrameSettings settings, Progress progress)
             throws IOException, JobFailure {
         Plan.Shown shown = plan.newScene();
+        if (shown.animation() instanceof ifold.scene.WrapView.Playback playback) {
+            playback.pace(settings.seconds()); // as the command line's movies: every caption long enough to read
+        }
         progress.check();
         try {
             // Unfinished, the sink is closed without finishing: its output is discarded.

@@ -424,6 +424,7 @@ public final class Planning {
             double seconds, String source, WrapScene scenes) {
         Scene scene = new Scene();
         WrapView.Playback playback = scenes.fill(scene);
+        playback.pace(seconds); // the window plays it in as many seconds: its captions as long as a movie's
         List<Fold> folds = new ArrayList<>(result.steps().size());
         boolean several = result.strips().size() > 1;
         for (int j = 0; j < result.steps().size(); j++) {
@@ -440,7 +441,9 @@ public final class Planning {
         }
         return new Plan(job, title, new Plan.Shown(scene, playback), List.copyOf(folds), figures, seconds, () -> {
             Scene another = new Scene();
-            return new Plan.Shown(another, scenes.fill(another));
+            WrapView.Playback again = scenes.fill(another);
+            again.pace(seconds); // laid out as the window's, so that the figure's stages fall where they did
+            return new Plan.Shown(another, again);
         }, out -> WrapExport.writeObj(out, source, result, geometries), List.copyOf(sheets), source,
                 job instanceof Job.ZigZag ? Scenes.figure11Stages(playback, result) : null);
     }

@@ -1,12 +1,22 @@
 package ifold.ui.model;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import ifold.image.FrameWriter;
+import java.awt.image.BufferedImage;
 import java.nio.file.Path;
+import java.util.Arrays;
+import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
-/** The names Save dialogs suggest: what is shown, with the export's extension, never the opened file's own name. */
+/** The names Save dialogs suggest, and the window's movies paced as the command line's. */
 class ExportsTest {
+    @TempDir
+    Path dir;
+
     @Test
     void saveDialogsSuggestTheModelsNameAndTheExtension() {
         assertEquals("zigzag.mp4", Exports.suggestedName(Job.ZigZag.DEMO, "mp4"));
@@ -17,5 +27,38 @@ class ExportsTest {
                 "saving as suggested does not write over the model");
         assertEquals("pleat20.json", Exports.suggestedName(new Job.Script(Path.of("models/scripts/pleat20.fold")), "json"));
         assertEquals("pleat20-export.fold", Exports.suggestedName(new Job.Script(Path.of("models/scripts/pleat20.fold")), "fold"));
+    }
+
+    @Test
+    void aShortMovieOfAWrapKeepsEachCaptionLongEnoughToRead() throws Exception {
+        String display = System.getenv("DISPLAY");
+        assumeTrue(display != null && !display.isEmpty(), "no X display (run the tests under xvfb-run)");
+        Plan cube = Planning.plan(new Job.WrapModel(Path.of("models", "cube.off"), "", ""), Progress.NONE);
+        Path folder = dir.resolve("frames");
+        int fps = 2;
+        Exports.frames(cube, folder, new Exports.FrameSettings(320, 180, fps, 30, true), Progress.NONE);
+        // The caption's letters are white; nothing under the band's dark tint is: the white pixels
+        // of the band are the caption. Each stays over at least 1.5 s: three frames, two where a
+        // change falls between samples.
+        int frames = 30 * fps;
+        int band = ifold.render.FrameExport.captionBand(320, 180); // always under the tint, one line or two
+        int run = 1;
+        boolean[] previous = null;
+        for (int i = 0; i < frames; i++) {
+            BufferedImage image = ImageIO.read(folder.resolve(FrameWriter.frameName(i)).toFile());
+            boolean[] text = new boolean[320 * band];
+            for (int y = 180 - band; y < 180; y++) {
+                for (int x = 0; x < 320; x++) {
+                    text[(y - 180 + band) * 320 + x] = (image.getRGB(x, y) & 0xFFFFFF) == 0xFFFFFF;
+                }
+            }
+            if (previous != null && !Arrays.equals(previous, text)) {
+                assertTrue(run >= 2, "a caption for " + run + " frame(s) at " + fps + " frames/s, before frame " + i);
+                run = 1;
+            } else if (previous != null) {
+                run++;
+            }
+            previous = text;
+        }
     }
 }

@@ -162,6 +162,27 @@ class PlanningTest {
     }
 
     @Test
+    void theWindowsWrapIsPacedForItsSecondsAsTheCommandLinesMovie() throws Exception {
+        Plan cube = Planning.plan(new Job.WrapModel(Path.of("models", "cube.off"), "", ""), Progress.NONE);
+        for (Animation animation : new Animation[] {cube.shown().animation(), cube.newScene().animation()}) {
+            // Sampled as a movie at 30 frames a second over the plan's seconds: no caption gone in under 1.5 s.
+            int frames = (int) Math.round(30 * cube.seconds());
+            String caption = animation.describe(0);
+            int run = 0;
+            for (int k = 1; k <= frames; k++) {
+                String now = animation.describe(animation.stepCount() * (double) k / frames);
+                if (!now.equals(caption)) {
+                    assertTrue(run + 1 >= 30 * ifold.scene.WrapView.CAPTION_SECONDS - 1, "'" + caption + "' for " + (run + 1) / 30.0 + " s");
+                    caption = now;
+                    run = 0;
+                } else {
+                    run++;
+                }
+            }
+        }
+    }
+
+    @Test
     void theWrapsLimitOnFacesIsItsFieldsProblem() throws Exception {
         Path cube = Path.of("models", "cube.off");
         Problem zero = Planning.check(new Job.WrapModel(cube, "", "", "0")).get(0);

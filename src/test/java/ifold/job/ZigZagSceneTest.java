@@ -1,0 +1,53 @@
+package ifold.job;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import ifold.geom.Triangle;
+import ifold.mesh.PolygonSoup;
+import ifold.scene.Scene;
+import ifold.scene.WrapView;
+import ifold.wrap.Wrap;
+import ifold.wrap.WrapGeometry;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+/** The zig-zag demo's scene says what its captions refer to: the corners by name, the colours, the view from below. */
+class ZigZagSceneTest {
+    @Test
+    void theCornersAreLabelledTheColoursExplainedAndTheTucksSeenFromBelow() throws Exception {
+        Triangle shape = Triangles.parse("0,0,10,0,3.5,8");
+        PolygonSoup soup = new PolygonSoup();
+        for (int i = 0; i < 3; i++) {
+            soup.addVertex(shape.corner(i).x(), shape.corner(i).y(), shape.corner(i).z());
+        }
+        soup.addTriangle(0, 1, 2);
+        Wrap.Result result = Wrap.wrap(soup, new int[] {0, 1},
+                Wrap.Options.loneTriangle(shape, new Wrap.Ends(2, 0, -1), Double.NaN, Double.NaN));
+        Scene scene = new Scene();
+        WrapView.Playback playback = Scenes.zigzag(scene, shape, result,
+                List.of(WrapGeometry.of(result.strips().get(0).sheet(), result.frames())));
+
+        List<Scene.Label> labels = scene.labels();
+        assertEquals(List.of("A", "B", "C"), labels.stream().map(Scene.Label::text).toList());
+        for (int i = 0; i < 3; i++) {
+            assertEquals(shape.corner(i).x(), labels.get(i).x());
+            assertEquals(shape.corner(i).y(), labels.get(i).y());
+        }
+        assertEquals(List.of("paper, top side", "paper, underside", "the triangle"),
+                scene.legend().stream().map(Scene.Swatch::meaning).toList());
+        assertEquals(WrapView.PAPER.back(), scene.legend().get(1).color(), "the underside's swatch is the colour it is drawn in");
+
+        // Each fold's caption, at the middle of its time: the tucks are seen from below, nothing else.
+        int tucks = 0;
+        for (int j = 0; j < result.steps().size(); j++) {
+            String caption = playback.describe((playback.positionAfter(j) + playback.positionAfter(j + 1)) / 2);
+            boolean tuck = result.steps().get(j).kind() == Wrap.Kind.TUCK;
+            tucks += tuck ? 1 : 0;
+            assertEquals(tuck, caption.endsWith("(seen from below)"), caption);
+        }
+        assertTrue(tucks > 0, "check the setup: the triangle has tucks");
+        assertFalse(playback.describe(playback.halfTurn()).contains("below"), "the final turn is not named so");
+    }
+}
