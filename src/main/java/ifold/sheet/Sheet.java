@@ -1048,6 +1048,25 @@ public final class Sheet {
         }
     }
 
+    /**
+     * Forgets the corners and boxes kept of the faces resting on {@code host}, which speed the
+     * folds and tucks on it: once a wrap has left a triangle, nothing lands there again, and
+     * the kept copies were a sixth of the memory the paper takes (they are made again if asked).
+     */
+    public void settle(int host) {
+        Stack stack = stacks.get(host);
+        if (stack == null) {
+            return;
+        }
+        for (int i = 0; i < stack.count; i++) {
+            int f = stack.faces[i];
+            if (f < placements.size()) {
+                placements.set(f, null);
+                boxes.set(f, null);
+            }
+        }
+    }
+
     /** Face f's corners in its host's frame, x0 y0 x1 y1 ... */
     public double[] placed(int f) {
         int[] loop = loops.get(f);

@@ -817,6 +817,7 @@ public final class Wrap {
                 pathIndex = i;
                 wrapTriangle(i);
                 tuckAll(i);
+                sheet.settle(plan.first + i);
                 after[i] = sheet.faceCount();
                 watcher.wrapped(firstDone + i + 1, totalTriangles);
             }
