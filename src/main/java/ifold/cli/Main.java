@@ -1,5 +1,6 @@
 package ifold.cli;
 
+import ifold.io.AtomicFile;
 import java.io.PrintWriter;
 import java.util.Collection;
 import java.util.LinkedHashMap;
@@ -33,33 +34,25 @@ public final class Main implements Runnable {
         }
     }
 
+    /** Set once main has its exit code: a shutdown before that is a signal's (Ctrl-C, SIGTERM, SIGHUP). */
+    private static volatile boolean ended;
+
     /**
-     * Under the launcher's own virtual display, the launcher waits for iFold and stops it on
-     * Ctrl-C or SIGTERM; killed outright (SIGKILL), it cannot. iFold then notices that its parent
-     * is gone and stops too, its shutdown hooks taking back unfinished outputs; the display ends
-     * with its last client.
+     * Ctrl-C, SIGTERM or SIGHUP stop the JVM with 130, 143 or 129 and run the shutdown hooks,
+     * which take back every unfinished file ({@link AtomicFile}): one line then says what was
+     * left. The launcher execs the JVM, so that the signal reaches it as sent.
      */
-    private static void watchLauncher() {
-        if (System.getenv("IFOLD_IN_XVFB") == null) {
-            return;
-        }
-        ProcessHandle parent = ProcessHandle.current().parent().orElse(null);
-        if (parent == null) {
-            return;
-        }
-        Thread watch = new Thread(() -> {
-            while (parent.isAlive()) {
-                try {
-                    Thread.sleep(250);
-                } catch (InterruptedException e) {
-                    return;
-                }
+    private static void sayWhenInterrupted(PrintWriter err) {
+        Runtime.getRuntime().addShutdownHook(new Thread(() -> {
+            if (!ended) {
+                List<java.nio.file.Path> kept = AtomicFile.written();
+                // Whole frames of a sequence stay (each was renamed into place whole): say how many, not each.
+                err.println("ifold: interrupted: " + (kept.isEmpty() ? "nothing written"
+                        : kept.size() <= 3 ? "wrote only " + String.join(", ", kept.stream().map(Object::toString).toList())
+                        : "wrote only " + kept.size() + " files, the last " + kept.get(kept.size() - 1)));
+                err.flush();
             }
-            System.err.println("ifold: the launcher was killed: stopping");
-            System.exit(143);
-        }, "launcher watch");
-        watch.setDaemon(true);
-        watch.start();
+        }, "say interrupted"));
     }
 
     /** The subcommands, by name, in the order help lists them. */
@@ -123,6 +116,10 @@ public final class Main implements Runnable {
             return cmd.getCommandSpec().exitCodeOnInvalidInput();
         });
         commandLine.setExecutionExceptionHandler((ex, cmd, parseResult) -> {
+            if (AtomicFile.stopping()) {
+                // Interrupted: what failed failed because iFold is stopping, and the shutdown says so in one line.
+                return UserError.EXIT_CODE;
+            }
             if (ex instanceof UserError error) {
                 cmd.getErr().println("ifold: " + ex.getMessage());
                 cmd.getErr().flush();
@@ -171,9 +168,11 @@ public final class Main implements Runnable {
     }
 
     public static void main(String[] args) {
-        watchLauncher();
+        System.setErr(new java.io.PrintStream(new JoglNoise(new java.io.BufferedOutputStream(new java.io.FileOutputStream(java.io.FileDescriptor.err))), true,
+                java.nio.charset.Charset.defaultCharset()));
         PrintWriter out = new PrintWriter(System.out, true);
         PrintWriter err = new PrintWriter(System.err, true);
+        sayWhenInterrupted(err);
         int code;
         try {
             code = commandLineFor(out, err, args).execute(args);
@@ -183,6 +182,7 @@ public final class Main implements Runnable {
             code = UserError.EXIT_CODE;
         }
         out.flush();
+        ended = true;
         System.exit(code);
     }
 }

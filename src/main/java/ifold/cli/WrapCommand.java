@@ -1,6 +1,7 @@
 package ifold.cli;
 
 import ifold.job.Json;
+import ifold.job.NearOrigin;
 import ifold.job.Reports;
 import ifold.job.Scenes;
 import ifold.job.WrapPath;
@@ -98,6 +99,12 @@ final class WrapCommand implements Callable<Integer> {
         if (mesh.faceCount() == 0) {
             throw new UserError(model + ": no faces left to wrap");
         }
+        double[] offset = NearOrigin.move(mesh);
+        if (NearOrigin.moved(offset)) {
+            err.println("ifold: " + model + ": wrapped about " + Reports.point(offset) + ", near its centre, where doubles can hold"
+                    + " the paper: the exports' coordinates are about that point");
+            err.flush();
+        }
         long loadedAt = System.nanoTime();
         WrapPath path = WrapPath.of(mesh);
         HamiltonianRefinement.Result refinement = path.refinement();
@@ -123,8 +130,15 @@ final class WrapCommand implements Callable<Integer> {
         }
         WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
         long analysedAt = System.nanoTime();
+        String stretched = Reports.stretched(analysis);
+        if (stretched != null) {
+            throw new UserError(model + ": cannot wrap: " + stretched);
+        }
 
         Map<String, Object> figures = Reports.wrap(model.toString(), mesh.faceCount(), loaded.repairs(), path, result, analysis);
+        if (NearOrigin.moved(offset)) {
+            figures.put("movedBy", List.of(offset[0], offset[1], offset[2]));
+        }
         List<Path> written = new ArrayList<>();
         try {
             if (exportObj != null) {

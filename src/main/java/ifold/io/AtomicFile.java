@@ -71,6 +71,7 @@ public final class AtomicFile {
             } catch (AtomicMoveNotSupportedException e) {
                 Files.move(temp, target, StandardCopyOption.REPLACE_EXISTING);
             }
+            WRITTEN.add(target);
         } catch (IOException e) {
             discard(temp, e);
             // Name the file the user asked for, not the temporary one beside it.
@@ -118,6 +119,16 @@ public final class AtomicFile {
      * would write its file again once it is deleted.
      */
     private static final Map<Path, Process> WRITERS = new ConcurrentHashMap<>();
+
+    /** The files this run has written whole, in order: what an interrupted run leaves. */
+    private static final java.util.List<Path> WRITTEN = java.util.Collections.synchronizedList(new java.util.ArrayList<>());
+
+    /** The files this run has written whole so far (renamed into place), in order. */
+    public static java.util.List<Path> written() {
+        synchronized (WRITTEN) {
+            return java.util.List.copyOf(WRITTEN);
+        }
+    }
 
     /** Set once the JVM shuts down: no new file is begun after the unfinished ones are taken back. */
     private static boolean shuttingDown;
@@ -254,6 +265,7 @@ public final class AtomicFile {
             } catch (AtomicMoveNotSupportedException e) {
                 Files.move(path, target, StandardCopyOption.REPLACE_EXISTING);
             }
+            WRITTEN.add(target);
             if (!temp.equals(path)) {
                 try {
                     deleteWithContents(temp);

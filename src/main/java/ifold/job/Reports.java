@@ -1,5 +1,6 @@
 package ifold.job;
 
+import ifold.geom.Tolerance;
 import ifold.geom.Triangle;
 import ifold.mesh.Defect;
 import ifold.refine.HamiltonianRefinement;
@@ -23,6 +24,26 @@ import java.util.TreeMap;
  */
 public final class Reports {
     private Reports() {
+    }
+
+    /**
+     * Why a wrap is not to be trusted, or null: paper stretched by more than rounding should
+     * leave ({@link Tolerance#RELATIVE_EQUALITY} of a face's size) was made by arithmetic that
+     * could not hold the model, and is no wrap of it, whatever else it got right.
+     */
+    public static String stretched(WrapAnalysis analysis) {
+        double error = analysis.isometryError();
+        if (!(error > Tolerance.RELATIVE_EQUALITY)) {
+            return null;
+        }
+        return String.format(Locale.ROOT, "the paper came out stretched (isometry error %.1e, more than %.0e of a face's size):"
+                + " rounding at the model's coordinates is coarser than its folds; a model with parts far apart can be"
+                + " wrapped part by part", error, Tolerance.RELATIVE_EQUALITY);
+    }
+
+    /** A point in space as the messages write it: shortest round-trip decimals. */
+    public static String point(double[] p) {
+        return "(" + p[0] + ", " + p[1] + ", " + p[2] + ")";
     }
 
     /** The zig-zag demo's figures: the triangle as typed, its ends, the strip, its folds, layers and quality. */

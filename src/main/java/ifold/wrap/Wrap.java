@@ -61,6 +61,17 @@ public final class Wrap {
      */
     public static final int DEFAULT_MAX_FACES = 500_000;
 
+    /**
+     * The sizes of model a wrap computes in doubles, across its bounding box: a triangle's frame
+     * squares a cross product of edges, the fourth power of their length, which underflows to
+     * zero below about 1e-77 and overflows above about 1e77 (every triangle then seems to have
+     * no area); a factor of 1e17 either way is left for the areas and measures that follow.
+     */
+    public static final double SMALLEST_MODEL = 1e-60;
+
+    /** See {@link #SMALLEST_MODEL}. */
+    public static final double LARGEST_MODEL = 1e60;
+
     private Wrap() {
     }
 
@@ -415,6 +426,11 @@ public final class Wrap {
     public static Result wrap(IndexedPolygons path, int[] componentStart, Options options, Watcher watcher) throws WrapException {
         IndexedPolygons mesh = path;
         HostFrame[] frames = new HostFrame[mesh.faceCount()];
+        double across = across(mesh);
+        if (!(across >= SMALLEST_MODEL && across <= LARGEST_MODEL)) {
+            throw new WrapException(String.format(Locale.ROOT, "the model is %.3g across, and a wrap computes models from %.0e to %.0e"
+                    + " across: scale it into that range", across, SMALLEST_MODEL, LARGEST_MODEL));
+        }
         double size = modelSize(mesh);
         double tolerance = 1e-9 * size;
         List<PathPlan> plans = plans(path, componentStart, options.ends());
@@ -510,6 +526,21 @@ public final class Wrap {
             text.append(')');
         }
         return text.toString();
+    }
+
+    /** The largest side of the model's bounding box: unlike its diagonal, never squared, so never overflowing. */
+    private static double across(IndexedPolygons mesh) {
+        double across = 0;
+        for (int axis = 0; axis < 3; axis++) {
+            double min = Double.POSITIVE_INFINITY;
+            double max = Double.NEGATIVE_INFINITY;
+            for (int v = 0; v < mesh.vertexCount(); v++) {
+                min = Math.min(min, mesh.coordinate(v, axis));
+                max = Math.max(max, mesh.coordinate(v, axis));
+            }
+            across = Math.max(across, max - min);
+        }
+        return across;
     }
 
     private static double modelSize(IndexedPolygons mesh) {

@@ -19,8 +19,12 @@ class FullDiskTest {
     private Path disk;
 
     private boolean mount() throws Exception {
+        return mount("1m");
+    }
+
+    private boolean mount(String size) throws Exception {
         disk = Files.createDirectory(dir.resolve("disk"));
-        Process mount = new ProcessBuilder("mount", "-t", "tmpfs", "-o", "size=1m", "tmpfs", disk.toString())
+        Process mount = new ProcessBuilder("mount", "-t", "tmpfs", "-o", "size=" + size, "tmpfs", disk.toString())
                 .redirectErrorStream(true).start();
         mount.getInputStream().readAllBytes();
         return mount.waitFor() == 0;
@@ -52,6 +56,28 @@ class FullDiskTest {
         assertFalse(Files.exists(big));
         try (var files = Files.list(disk)) {
             assertEquals(1, files.count(), "nothing but the frames folder: no temporary file");
+        }
+    }
+
+    @Test
+    void aMovieCutShortByAFullDiskIsRefusedAndLeavesNothing() throws Exception {
+        // 200 KiB: ffmpeg fills it, then exits 0 (ffmpeg 5.1) with a file no player opens.
+        assumeTrue(mount("200k"), "cannot mount a small tmpfs here (not root, or no tmpfs)");
+        String display = System.getenv("DISPLAY");
+        assumeTrue(display != null && !display.isEmpty(), "no X display");
+        assumeTrue(ifold.image.Mp4Writer.available(), "no ffmpeg");
+        Path movie = disk.resolve("m.mp4");
+        CliTest.Run run = CliTest.run("demo", "zigzag", "--movie", movie.toString(), "--size", "640x360", "--no-view");
+        // The progress bar's lines aside (it writes them where stderr is no terminal: issue 22, item 7).
+        java.util.List<String> said = run.err().lines().filter(line -> !line.startsWith("[")).toList();
+        assertEquals(1, run.code(), run.err());
+        assertEquals(1, said.size(), "one line: " + run.err());
+        assertTrue(said.get(0).startsWith("ifold: ") && said.get(0).contains(movie.toString()) && said.get(0).contains("incomplete"),
+                said.get(0));
+        assertFalse(run.err().contains(".tmp"), "names the movie, not its temporary file: " + run.err());
+        assertFalse(run.out().contains("wrote"), run.out());
+        try (var files = Files.list(disk)) {
+            assertEquals(java.util.List.of(), files.toList(), "no movie, whole or in part, and no temporary folder");
         }
     }
 }

@@ -11,11 +11,14 @@ import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 
 /**
- * The installed launcher without a display: it starts its own virtual display, and SIGTERM on
- * it stops iFold and the display and leaves no temporary files; SIGKILL on it, iFold notices
- * and stops by itself.
+ * The installed launcher without a display: it starts a virtual display of its own and becomes
+ * iFold (exec). SIGINT or SIGTERM, on it or on its process group, stops iFold, which takes back
+ * what it had begun, says so in one line, and leaves its display to end; SIGKILL on it, the
+ * display ends too. Launchers run at once each get a display of their own.
  */
 class LauncherTest {
     private static final Path LAUNCHER = Path.of("build", "install", "ifold", "bin", "ifold");
@@ -73,7 +76,7 @@ class LauncherTest {
         Process launcher = start(frames);
         List<ProcessHandle> started = launcher.descendants().toList();
         assertTrue(started.stream().anyMatch(p -> p.info().command().orElse("").contains("Xvfb")), "its own display");
-        assertTrue(started.stream().anyMatch(p -> p.info().command().orElse("").contains("java")), "and iFold");
+        assertTrue(launcher.info().command().orElse("").contains("java"), "the launcher became iFold (exec)");
         launcher.destroy(); // SIGTERM
         assertTrue(launcher.waitFor(30, TimeUnit.SECONDS), "the launcher stops");
         assertEquals(143, launcher.exitValue());
@@ -114,13 +117,117 @@ class LauncherTest {
         }
     }
 
+    /** The lines of the log but the progress bar's. */
+    private List<String> said() throws Exception {
+        return Files.readAllLines(dir.resolve("log")).stream().filter(line -> !line.startsWith("[")).toList();
+    }
+
+    /** Starts a movie of the cube's wrap in a session of its own (its process group is its pid), and waits for ffmpeg to write. */
+    private Process startMovie(Path out) throws Exception {
+        ProcessBuilder builder = new ProcessBuilder("setsid", LAUNCHER.toString(), "wrap", "models/cube.off", "--movie",
+                out.resolve("z.mp4").toString(), "--size", "320x180").redirectErrorStream(true).redirectOutput(dir.resolve("log").toFile());
+        builder.environment().remove("DISPLAY");
+        builder.environment().remove("IFOLD_IN_XVFB");
+        Process launcher = builder.start();
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+        while (System.nanoTime() < deadline && launcher.isAlive()) {
+            try (var files = Files.walk(out)) {
+                if (files.anyMatch(p -> p.getFileName().toString().equals("z.mp4") && p.toFile().length() > 0)) {
+                    return launcher;
+                }
+            }
+            Thread.sleep(100);
+        }
+        launcher.destroyForcibly();
+        throw new AssertionError("ffmpeg wrote nothing in 60 s: " + Files.readString(dir.resolve("log")));
+    }
+
+    private static void signal(String signal, String target) throws Exception {
+        assertEquals(0, new ProcessBuilder("kill", "-" + signal, "--", target).inheritIO().start().waitFor());
+    }
+
+    /**
+     * Ctrl-C as a terminal sends it: to the whole process group, ffmpeg included. Before, Xvfb
+     * died of it first and the X libraries aborted iFold ("FATAL ERROR in native method ...",
+     * a Java trace), leaving the movie's hidden folder and a defunct ffmpeg.
+     */
+    @ParameterizedTest
+    @ValueSource(strings = {"INT", "TERM"})
+    void aSignalToTheProcessGroupStopsEverythingAndSaysSoInOneLine(String signal) throws Exception {
+        assumeTrue(Files.isExecutable(LAUNCHER) && hasXvfb(), "no installed launcher or no Xvfb");
+        assumeTrue(new ProcessBuilder("sh", "-c", "command -v ffmpeg && command -v setsid").start().waitFor() == 0, "no ffmpeg or setsid");
+        Path out = Files.createDirectory(dir.resolve("out"));
+        Process launcher = startMovie(out);
+        List<ProcessHandle> started = launcher.descendants().toList();
+        assertTrue(started.stream().anyMatch(p -> p.info().command().orElse("").contains("ffmpeg")), "ffmpeg runs");
+        signal(signal, "-" + launcher.pid());
+        assertTrue(launcher.waitFor(30, TimeUnit.SECONDS), "iFold stops");
+        assertEquals(signal.equals("INT") ? 130 : 143, launcher.exitValue(), Files.readString(dir.resolve("log")));
+        assertAllGone(started);
+        List<String> said = said();
+        assertEquals("ifold: interrupted: nothing written", said.get(said.size() - 1), "the last line: " + said);
+        assertEquals(2, said.size(), "the summary and that line alone: " + said);
+        try (var files = Files.list(out)) {
+            assertEquals(List.of(), files.map(p -> p.getFileName().toString()).toList(), "no movie, whole or in part");
+        }
+    }
+
+    /**
+     * SIGINT on the launcher alone: before, the JVM ran as a job in the background of the
+     * launcher's shell, which starts such jobs with SIGINT ignored, and ran to the end.
+     */
+    @Test
+    void sigintOnTheLauncherAloneStopsIfold() throws Exception {
+        assumeTrue(Files.isExecutable(LAUNCHER) && hasXvfb(), "no installed launcher or no Xvfb");
+        assumeTrue(new ProcessBuilder("sh", "-c", "command -v ffmpeg && command -v setsid").start().waitFor() == 0, "no ffmpeg or setsid");
+        Path out = Files.createDirectory(dir.resolve("out"));
+        Process launcher = startMovie(out);
+        List<ProcessHandle> started = launcher.descendants().toList();
+        signal("INT", Long.toString(launcher.pid()));
+        assertTrue(launcher.waitFor(15, TimeUnit.SECONDS), "iFold stops, not at the end of its movie");
+        assertEquals(130, launcher.exitValue(), Files.readString(dir.resolve("log")));
+        assertAllGone(started);
+        try (var files = Files.list(out)) {
+            assertEquals(List.of(), files.map(p -> p.getFileName().toString()).toList(), "no movie, whole or in part");
+        }
+    }
+
+    /**
+     * Six launchers at once, each its own display. Before, each looked for a free number and
+     * took :99 while another's Xvfb was still starting there: some lost their display ("Can't
+     * connect to X11 window server using ':99'") or aborted (exit 134), leaving their lock.
+     */
+    @Test
+    void launchersRunAtOnceEachHaveADisplayOfTheirOwn() throws Exception {
+        assumeTrue(Files.isExecutable(LAUNCHER) && hasXvfb(), "no installed launcher or no Xvfb");
+        List<Process> launchers = new java.util.ArrayList<>();
+        for (int k = 0; k < 6; k++) {
+            Path frames = dir.resolve("frames" + k);
+            ProcessBuilder builder = new ProcessBuilder(LAUNCHER.toString(), "view", "models/tetrahedron.off", "--frames", frames.toString(),
+                    "--seconds", "1", "--fps", "5", "--size", "64x48").redirectErrorStream(true).redirectOutput(dir.resolve("log" + k).toFile());
+            builder.environment().remove("DISPLAY");
+            builder.environment().remove("IFOLD_IN_XVFB");
+            launchers.add(builder.start());
+        }
+        for (int k = 0; k < launchers.size(); k++) {
+            assertTrue(launchers.get(k).waitFor(120, TimeUnit.SECONDS), "launcher " + k + " ends");
+            assertEquals(0, launchers.get(k).exitValue(), Files.readString(dir.resolve("log" + k)));
+            try (var files = Files.list(dir.resolve("frames" + k))) {
+                assertEquals(5, files.count(), "five frames and no lock: " + Files.readString(dir.resolve("log" + k)));
+            }
+        }
+    }
+
     @Test
     void sigkillOnTheLauncherStopsIfoldToo() throws Exception {
         assumeTrue(Files.isExecutable(LAUNCHER) && hasXvfb(), "no installed launcher or no Xvfb");
         Path frames = dir.resolve("frames");
         Process launcher = start(frames);
         List<ProcessHandle> started = launcher.descendants().toList();
-        launcher.destroyForcibly(); // SIGKILL: the launcher cannot clean up; iFold must notice
+        // SIGKILL: the launcher is iFold (exec), killed outright; its display, in a session of its
+        // own, ends with its last client, or by its watcher. The whole frames stay, and the next
+        // export into the folder sweeps the temporary ones and the lock.
+        launcher.destroyForcibly();
         launcher.waitFor(10, TimeUnit.SECONDS);
         assertAllGone(started);
     }

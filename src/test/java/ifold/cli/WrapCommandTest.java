@@ -44,6 +44,23 @@ class WrapCommandTest {
         assertTrue(run.out().contains("\ncollisions: " + check.crossingPairs() + " pairs"), run.out());
     }
 
+    /**
+     * One triangle with a corner of 0.001°: it ran past 300 s (issue 22); it is refused before
+     * any fold with the estimate, as a strip too narrow for the limit on faces is (since the
+     * floor under the faces, 590cba0: this test guards it, it did not fail on the code it came with).
+     */
+    @Test
+    void aTriangleWithACornerOfAThousandthOfADegreeIsRefusedAtOnce() throws Exception {
+        double angle = Math.toRadians(0.001);
+        Path model = dir.resolve("sharp.off");
+        Files.writeString(model, "OFF\n3 1 0\n0 0 0\n1 0 0\n" + Math.cos(angle) + " " + Math.sin(angle) + " 0\n3 0 1 2\n");
+        long start = System.nanoTime();
+        CliTest.Run run = CliTest.run("wrap", model.toString(), "--no-view");
+        double seconds = (System.nanoTime() - start) * 1e-9;
+        CliTest.assertOneLineError(run, model + ": cannot wrap: a strip ", " passes and make about ", "more than the limit of 500000 faces");
+        assertTrue(seconds < 20, "at once, not after folding: " + seconds + " s");
+    }
+
     @Test
     void oneTriangleIsOneTriangle() throws Exception {
         CliTest.Run run = CliTest.run("wrap", "models/triangle.off", "--no-view");

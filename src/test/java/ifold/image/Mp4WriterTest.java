@@ -61,4 +61,30 @@ class Mp4WriterTest {
         }
         assertThrows(IllegalArgumentException.class, () -> new Mp4Writer(dir.resolve("odd.mp4"), 63, 48, 12));
     }
+
+    /** Top-level MP4 boxes, each given as type then size (the size written, 0 for none), filled with zeros to their size. */
+    private Path boxes(String name, Object... typeAndSize) throws Exception {
+        java.io.ByteArrayOutputStream bytes = new java.io.ByteArrayOutputStream();
+        for (int i = 0; i < typeAndSize.length; i += 2) {
+            int size = (Integer) typeAndSize[i + 1];
+            java.nio.ByteBuffer box = java.nio.ByteBuffer.allocate(Math.max(size, 8));
+            box.putInt(size).put(((String) typeAndSize[i]).getBytes(StandardCharsets.ISO_8859_1));
+            bytes.write(box.array());
+        }
+        Path file = dir.resolve(name);
+        Files.write(file, bytes.toByteArray());
+        return file;
+    }
+
+    @Test
+    void aMovieIsWholeOnlyWithItsFramesAndIndexAndEveryBoxToItsEnd() throws Exception {
+        assertEquals(null, Mp4Writer.incomplete(boxes("whole.mp4", "ftyp", 32, "moov", 100, "mdat", 400)));
+        // What ffmpeg 5.1 left on a full disk, exiting 0: the frames' box never closed, no index.
+        assertEquals("its 'mdat' box was never closed", Mp4Writer.incomplete(boxes("open.mp4", "ftyp", 32, "free", 8, "mdat", 0)));
+        assertEquals("no index (moov box)", Mp4Writer.incomplete(boxes("noindex.mp4", "ftyp", 32, "mdat", 400)));
+        Path cut = boxes("cut.mp4", "ftyp", 32, "mdat", 400, "moov", 100);
+        Files.write(cut, java.util.Arrays.copyOf(Files.readAllBytes(cut), 480));
+        assertEquals("its 'moov' box is cut short: 48 of its 100 bytes written", Mp4Writer.incomplete(cut));
+        assertEquals("no frames (mdat box)", Mp4Writer.incomplete(boxes("empty.mp4")));
+    }
 }

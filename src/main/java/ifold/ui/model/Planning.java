@@ -7,6 +7,7 @@ import ifold.fold.FoldJson;
 import ifold.geom.Triangle;
 import ifold.job.Collisions;
 import ifold.job.LayerOrders;
+import ifold.job.NearOrigin;
 import ifold.job.Reports;
 import ifold.job.Scenes;
 import ifold.job.Triangles;
@@ -237,6 +238,7 @@ public final class Planning {
         HalfedgeMesh mesh = built.mesh();
         progress.check();
         progress.stage("preparing and refining " + mesh.faceCount() + " triangles");
+        NearOrigin.move(mesh); // as the command line wraps it: about its centre where it lies far out
         WrapPath path = WrapPath.of(mesh);
         HamiltonianRefinement.Result refinement = path.refinement();
         progress.check();
@@ -258,6 +260,10 @@ public final class Planning {
             geometries.add(WrapGeometry.of(strip.sheet(), result.frames()));
         }
         WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
+        String stretched = Reports.stretched(analysis);
+        if (stretched != null) {
+            throw new JobFailure(model + ": cannot wrap: " + stretched);
+        }
         Map<String, Object> figures = Reports.wrap(model.toString(), mesh.faceCount(), built.repairs(), path, result, analysis);
         List<FoldFile.Folded> sheets = new ArrayList<>();
         for (Wrap.Strip strip : result.strips()) {

@@ -1,0 +1,36 @@
+package ifold.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import org.junit.jupiter.api.Test;
+
+/** Standard error without JOGL's X11Util lines, and everything else as written. */
+class JoglNoiseTest {
+    @Test
+    void joglsShutdownLinesGoAndEverythingElsePasses() {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        PrintStream err = new PrintStream(new JoglNoise(bytes), true, StandardCharsets.UTF_8);
+        err.println("ifold: interrupted: nothing written");
+        err.println("X11Util.Display: Shutdown (JVM shutdown: true, open (no close attempt): 1/1)");
+        err.println("X11Util: Open X11 Display Connections: 1");
+        err.println("X11 is not X11Util");
+        err.println("X1");
+        err.println("");
+        assertEquals("ifold: interrupted: nothing written\nX11 is not X11Util\nX1\n\n", bytes.toString(StandardCharsets.UTF_8));
+    }
+
+    @Test
+    void aProgressBarsCarriageReturnsPassAtOnce() {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        PrintStream err = new PrintStream(new JoglNoise(bytes), true, StandardCharsets.UTF_8);
+        err.print("[###   ] 1/2\r");
+        err.flush();
+        assertEquals("[###   ] 1/2\r", bytes.toString(StandardCharsets.UTF_8));
+        err.print("[######] 2/2\r");
+        err.flush();
+        assertEquals("[###   ] 1/2\r[######] 2/2\r", bytes.toString(StandardCharsets.UTF_8));
+    }
+}
