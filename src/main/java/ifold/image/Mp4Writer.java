@@ -167,6 +167,10 @@ public final class Mp4Writer implements FrameSink {
     private IOException failure(String what) {
         String said = messages.toString(StandardCharsets.UTF_8).strip().replace('\n', ' ')
                 .replace(file.path().toString(), movie.toString());
+        if (said.contains("No space left on device")) {
+            // Whether ffmpeg noticed (exit 1) or not (exit 0, the movie cut short), the cause in words.
+            return new IOException("the disk is full: the movie is incomplete (" + freeSpace(file.path()) + ")");
+        }
         return new IOException(what + (said.isEmpty() ? "" : ": " + (said.length() > 300 ? said.substring(0, 300) + "..." : said)));
     }
 
