@@ -69,7 +69,7 @@ class FullDiskTest {
         assumeTrue(ifold.image.Mp4Writer.available(), "no ffmpeg");
         Path movie = disk.resolve("m.mp4");
         CliTest.Run run = CliTest.run("demo", "zigzag", "--movie", movie.toString(), "--size", "640x360", "--no-view");
-        // The progress bar's lines aside (it writes them where stderr is no terminal: issue 22, item 7).
+        // The progress bar's line aside (one at the end, where stderr is no terminal).
         java.util.List<String> said = run.err().lines().filter(line -> !line.startsWith("[")).toList();
         assertEquals(1, run.code(), run.err());
         assertEquals(1, said.size(), "one line: " + run.err());

@@ -47,4 +47,23 @@ class ProgressBarTest {
             assertEquals("", text.toString(), terminal ? "a short wrap" : "a log");
         }
     }
+
+    /** Into a log or a pipe a frame export says one line, at the end (it said one every tenth of the way). */
+    @Test
+    void aFrameExportOffATerminalSaysOneLineAtTheEnd() {
+        java.io.StringWriter text = new java.io.StringWriter();
+        ProgressBar bar = new ProgressBar(new java.io.PrintWriter(text), false);
+        for (int done = 0; done <= 100; done++) {
+            bar.framesDone(done, 100);
+        }
+        java.util.List<String> lines = text.toString().lines().toList();
+        assertEquals(1, lines.size(), text::toString);
+        assertTrue(lines.get(0).contains("100/100 frames"), lines.get(0));
+        java.io.StringWriter shown = new java.io.StringWriter();
+        ProgressBar onTerminal = new ProgressBar(new java.io.PrintWriter(shown), true);
+        for (int done = 0; done <= 100; done++) {
+            onTerminal.framesDone(done, 100);
+        }
+        assertTrue(shown.toString().chars().filter(c -> c == '\r').count() > 50, "on a terminal the bar is redrawn in place");
+    }
 }
