@@ -337,6 +337,12 @@ final class MainWindow extends JFrame {
     void open(Path file) {
         String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
         boolean model = name.endsWith(".off") || name.endsWith(".obj");
+        // A width or thickness typed for one model rarely suits another (a spike's triangles
+        // refuse the cube's 0.1): another model starts from its own defaults, and says so.
+        boolean another = model && !file.equals(parameters.model());
+        if (another && parameters.resetModelParameters()) {
+            say("width and thickness back to this model's defaults");
+        }
         Job job = !model ? new Job.Script(file) : parameters.card().equals("view") ? parameters.view(file) : parameters.wrap(file);
         settings.addRecent(file);
         Path folder = file.toAbsolutePath().getParent();

@@ -274,6 +274,17 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
         return new Job.Turn(angle.getText(), overhang.getText(), turnWidth.getText(), turnThickness.getText());
     }
 
+    /**
+     * Clears the wrap's fields that depend on the model (width, thickness: blank is the model's
+     * own default); returns whether any held a value.
+     */
+    boolean resetModelParameters() {
+        boolean held = !wrapWidth.getText().isBlank() || !wrapThickness.getText().isBlank();
+        wrapWidth.setText("");
+        wrapThickness.setText("");
+        return held;
+    }
+
     /** A wrap of {@code file} with the wrap's fields as they now stand, whichever card is shown. */
     Job.WrapModel wrap(Path file) {
         return new Job.WrapModel(file, wrapWidth.getText(), wrapThickness.getText(), wrapMaxFaces.getText(), wrapStrict.isSelected());

@@ -448,6 +448,15 @@ class MainWindowTest {
             return null;
         });
         waitFor("the narrower wrap", 60, () -> "0.1".equals(window.report.value("width")));
+        // Another model starts from its own width, not the one typed for the cube.
+        onEdt(() -> {
+            window.open(Path.of("models", "tetrahedron.off"));
+            return null;
+        });
+        waitFor("the tetrahedron wrapped", 60, () -> window.plan() != null && window.plan().job() instanceof Job.WrapModel w
+                && w.model().endsWith("tetrahedron.off") && !window.isWorking());
+        assertEquals("", onEdt(() -> window.parameters.wrapWidth.getText()));
+        assertTrue(!"0.1".equals(onEdt(() -> window.report.value("width"))), "the tetrahedron's own width");
     }
 
     @Test
