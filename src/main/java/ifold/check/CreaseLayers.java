@@ -27,7 +27,6 @@ final class CreaseLayers {
         final double[] b;
         double s0;
         double s1;
-        int line;
 
         Edge(int f, int g, boolean taco, double[] a, double[] b) {
             this.f = f;
@@ -57,7 +56,6 @@ final class CreaseLayers {
                 onLine.add(new ArrayList<>());
             }
             double[] t = lines.key(line);
-            edge.line = line;
             double sa = t[0] * edge.a[0] + t[1] * edge.a[1] + t[2] * edge.a[2];
             double sb = t[0] * edge.b[0] + t[1] * edge.b[1] + t[2] * edge.b[2];
             edge.s0 = Math.min(sa, sb);

@@ -21,11 +21,6 @@ final class NearKeys {
         this.quanta = quanta;
     }
 
-    /** The number of groups. */
-    int size() {
-        return keys.size();
-    }
-
     double[] key(int group) {
         return keys.get(group);
     }

@@ -43,8 +43,6 @@ final class PlanarFaces {
     final List<int[]> facesOf = new ArrayList<>();
     /** Orders of faces of one plane, by {@link #pair}: +1 where the lower-numbered face lies above the other. */
     private final LongIntTable relation;
-    /** faceOrders entries between faces of different planes, or of no area, which no rule reads. */
-    final int offPlaneOrders;
     /** Pairs the file orders both ways. */
     final List<int[]> contradictions = new ArrayList<>();
     /** Each plane's grid, made when first asked for. */
@@ -110,13 +108,11 @@ final class PlanarFaces {
         }
         int[] orders = state.orders;
         relation = new LongIntTable(orders.length / 3 + 16);
-        int offPlane = 0;
         for (int i = 0; i < orders.length; i += 3) {
             int f = orders[i];
             int g = orders[i + 1];
             if (f == g || plane[f] < 0 || plane[f] != plane[g]) {
-                offPlane++;
-                continue;
+                continue; // between faces of different planes, or of no area: no rule reads it
             }
             // s = +1: f on the side g's normal points to; up is g's normal where sigma says so.
             boolean fAbove = orders[i + 2] * sigma[g] > 0;
@@ -126,7 +122,6 @@ final class PlanarFaces {
                 contradictions.add(new int[] {Math.min(f, g), Math.max(f, g)});
             }
         }
-        offPlaneOrders = offPlane;
         marks = new int[faces];
     }
 

@@ -874,6 +874,13 @@ public final class Sheet {
                 }
             }
         }
+        // The new face's level is one more than the highest below it; where every face it lies
+        // under stands higher still (it landed over all it overlaps, or just under a hinge with
+        // room below), no other level changes, and the stack's levels are kept rather than found
+        // again at the next fold (a strip folded over and over on one plane would cost the square).
+        int[] known = stack.levels;
+        int level = 0;
+        int lowestAbove = Integer.MAX_VALUE;
         for (int i = 0; i < stack.count; i++) {
             int g = stack.faces[i];
             if (overlap(f, g)) {
@@ -882,9 +889,20 @@ public final class Sheet {
                     over = placement == Placement.OVER ? levels[i] <= hingeLevel : levels[i] < hingeLevel;
                 }
                 stack.above.add(over ? ((long) f << 32) | g : ((long) g << 32) | f);
+                if (known != null && over) {
+                    level = Math.max(level, known[i] + 1);
+                } else if (known != null) {
+                    lowestAbove = Math.min(lowestAbove, known[i]);
+                }
             }
         }
         stack.add(f);
+        if (known != null && level < lowestAbove) {
+            int[] grown = known.length >= stack.faces.length ? known : Arrays.copyOf(known, stack.faces.length);
+            grown[stack.count - 1] = level;
+            stack.levels = grown;
+            stack.top = Math.max(stack.top, level);
+        }
         return f;
     }
 

@@ -199,7 +199,7 @@ class CliTest {
         assertOneLineError(run("refine", model.toString(), "-o", locked.resolve("x.off").toString()), "not writable");
     }
 
-    /** Every option's value is named N, not by picocli's placeholder of the field's name. */
+    /** Every option's value shows as N, not as picocli's placeholder made of the field's name. */
     @Test
     void generateHelpNamesItsValues() {
         Run help = run("help", "generate");

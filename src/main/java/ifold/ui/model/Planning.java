@@ -320,7 +320,9 @@ public final class Planning {
         progress.check();
         WrapGeometry folded = WrapGeometry.of(result.sheet(), result.frames());
         Map<String, Object> figures = Reports.script(result, folded);
-        LayerOrders.addTo(figures, List.of(FoldFile.Folded.ofScript(parsed, result, ScriptFolding.DEFAULT_MAX_FACES)), "script");
+        // Folded once more on ideal paper where thick (ofScript): once, for the check and the export.
+        List<FoldFile.Folded> sheets = List.of(FoldFile.Folded.ofScript(parsed, result, ScriptFolding.DEFAULT_MAX_FACES));
+        LayerOrders.addTo(figures, sheets, "script");
         Collisions.addTo(figures, List.of(folded), result.sheet().thickness(), null);
         Plan.Shown shown = scriptScene(result, folded);
         List<Fold> folds = new ArrayList<>();
@@ -333,7 +335,7 @@ public final class Planning {
         String header = "iFold fold script " + file + ": " + result.steps().size() + " folds, thickness " + result.sheet().thickness();
         return new Plan(job, file.getFileName() + ": " + result.steps().size() + " folds", shown, List.copyOf(folds), figures, 10,
                 () -> scriptScene(result, folded), out -> WrapExport.writeObj(out, header, List.of(folded)),
-                List.of(FoldFile.Folded.ofScript(parsed, result, ScriptFolding.DEFAULT_MAX_FACES)), "ifold fold " + file, null);
+                sheets, "ifold fold " + file, null);
     }
 
     /** The parts of the reveal the list names: about a tenth of the path's triangles each. */
