@@ -24,7 +24,7 @@ import java.util.List;
  */
 public final class Layers {
     public static void main(String[] args) throws Exception {
-        System.out.println("model | triangles (prepared) | before | after");
+        System.out.println("model | triangles (prepared) | on its own triangles | on the prepared ones");
         for (String name : args) {
             PolygonSoup soup = name.startsWith("box:") ? Solids.box(Double.parseDouble(name.substring(4)), 1, 1) : MeshReaders.read(Path.of(name));
             HalfedgeMesh mesh = MeshBuilder.build(soup, MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();

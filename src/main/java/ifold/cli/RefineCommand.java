@@ -56,7 +56,7 @@ final class RefineCommand implements Callable<Integer> {
             throw new UserError(model + ": no faces left to refine");
         }
         long start = System.nanoTime();
-        WrapPath path = prepare ? WrapPath.of(mesh) : null;
+        WrapPath path = prepare ? WrapPath.prepared(mesh) : null;
         HamiltonianRefinement.Result result = path != null ? path.refinement() : HamiltonianRefinement.refine(mesh);
         if (path != null) {
             path.warnIfKept(model.toString(), spec.commandLine().getErr());

@@ -38,9 +38,10 @@ import picocli.CommandLine.Model.CommandSpec;
 /** {@code ifold wrap MODEL}: one strip of paper per component, folded over every triangle of the Hamiltonian path. */
 @Command(name = "wrap", mixinStandardHelpOptions = true,
         description = {"Wraps a model in one strip of paper per component, the zig-zag way along the Hamiltonian path of its "
-            + "refinement (Demaine, Demaine and Mitchell), its faces first prepared into well-shaped triangles (a planar face "
-            + "whose triangles have an angle under 20 degrees is triangulated again): passes across each triangle, a turn gadget and a fold over the "
-            + "shared edge to the next, the excess of every triangle tucked under it. An open surface is covered on the side "
+            + "refinement (Demaine, Demaine and Mitchell): passes across each triangle, a turn gadget and a fold over the "
+            + "shared edge to the next. The paper rests on the model's flat convex pieces (a cube's face is one): it runs flat "
+            + "over the edges inside one, and the excess beyond a piece's edges is tucked under it. Faces whose triangles have an "
+            + "angle under 20 degrees are triangulated again, and followed where that makes less paper. An open surface is covered on the side "
             + "its faces face. The animation plays the folds with the camera following the strip, then turns once around "
             + "the model; it takes two minutes unless --seconds says otherwise. In a window where there is a display; as "
             + "one movie, wrap.mp4, where there is none (--frames DIR for PNGs). The OBJ holds each strip as an object strip-K."})
@@ -60,7 +61,7 @@ final class WrapCommand implements Callable<Integer> {
     Double thickness;
 
     @Option(names = "--max-faces", paramLabel = "N", defaultValue = "" + Wrap.DEFAULT_MAX_FACES,
-            description = "the most faces of paper the wrap may make, about 2.4 kB of memory each (default ${DEFAULT-VALUE})")
+            description = "the most faces of paper the wrap may make, under a kilobyte of memory each (default ${DEFAULT-VALUE})")
     int maxFaces;
 
     @Option(names = "--strict", description = "refuse defective input instead of repairing it")
@@ -213,7 +214,7 @@ final class WrapCommand implements Callable<Integer> {
                 : String.format(Locale.ROOT, "%d strips %.4g wide, %.4g long in all (the longest %.4g, L/w %.1f)", strips,
                         result.width(), length, longest, longest / result.width());
         // Faces triangulated again say so: the path's triangles then come from those.
-        String prepared = path.preparation().prepared() == 0 ? "" : String.format(Locale.ROOT, " -> %d prepared (%d of %d planar regions)",
+        String prepared = !path.prepared() ? "" : String.format(Locale.ROOT, " -> %d prepared (%d of %d planar regions)",
                 path.preparation().trianglesAfter(), path.preparation().prepared(), path.preparation().regions());
         return String.format(Locale.ROOT, "%s: %d %s%s -> %d on the path, %s, "
                 + "%d turn folds, %d gadget folds, %d edge crossings, %d tucks, %d layers at most (a stack of %d), "

@@ -138,6 +138,7 @@ public final class Reports {
         figures.put("inputTriangles", inputTriangles);
         figures.put("preparation", path.figures());
         figures.put("refinedTriangles", refinement.mesh().faceCount());
+        figures.put("hosts", result.frames().length);
         figures.put("components", refinement.componentCount());
         figures.put("repairs", repairs(repairs));
         figures.put("width", result.width());

@@ -220,7 +220,7 @@ public final class WrapView {
             for (Wrap.Strip strip : result.strips()) {
                 for (int i = 0; i < strip.triangles(); i++, g++) {
                     int t = strip.firstTriangle() + i;
-                    double[] n = result.frames()[t].normal();
+                    double[] n = result.frames()[result.hostOf()[t]].normal();
                     for (int axis = 0; axis < 3; axis++) {
                         double sum = 0;
                         for (int c = 0; c < 3; c++) {
@@ -229,8 +229,7 @@ public final class WrapView {
                         centres[3 * g + axis] = sum / 3;
                         normals[3 * g + axis] = n[axis];
                     }
-                    double[] c = result.frames()[t].corners();
-                    areas[g] = Math.abs((c[2] - c[0]) * (c[5] - c[1]) - (c[4] - c[0]) * (c[3] - c[1])) / 2;
+                    areas[g] = area(mesh, t);
                 }
             }
             // An open surface (a lone triangle, a patch) is wrapped on the side its faces face:
@@ -697,7 +696,7 @@ public final class WrapView {
             List<int[]> triangles = new ArrayList<>();
             List<Integer> colors = new ArrayList<>();
             List<Integer> edges = new ArrayList<>();
-            HostFrame frame = result.frames()[step.triangle()];
+            HostFrame frame = shownTuck != null ? result.frames()[shownTuck.host()] : null;
             for (int f = firstFace; f < end; f++) {
                 int[] loop = loops[f - firstFace];
                 Isometry2 pose = poses[f - firstFace];
@@ -776,6 +775,21 @@ public final class WrapView {
                 corners[c] = rotate(from[c], a, axis, angle * fraction);
             }
             addPolygon(corners, PaperView.CAP, points, triangles, colors);
+        }
+
+        /** The area of triangle t of the mesh. */
+        private static double area(IndexedPolygons mesh, int t) {
+            double[] e1 = new double[3];
+            double[] e2 = new double[3];
+            for (int axis = 0; axis < 3; axis++) {
+                double o = mesh.coordinate(mesh.faceVertex(t, 0), axis);
+                e1[axis] = mesh.coordinate(mesh.faceVertex(t, 1), axis) - o;
+                e2[axis] = mesh.coordinate(mesh.faceVertex(t, 2), axis) - o;
+            }
+            double x = e1[1] * e2[2] - e1[2] * e2[1];
+            double y = e1[2] * e2[0] - e1[0] * e2[2];
+            double z = e1[0] * e2[1] - e1[1] * e2[0];
+            return Math.sqrt(x * x + y * y + z * z) / 2;
         }
 
         private int topLevel(Sheet sheet, int[] levels, int host) {

@@ -1,5 +1,6 @@
 package ifold.sheet;
 
+import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashMap;
@@ -61,10 +62,12 @@ public final class Sheet {
     /**
      * How each face came to be where it is: the kind of the fold of the tail that laid it (its
      * crease's ordinal + 1; 0 for the strip's first face, or a sheet's), plus {@link #TUCKED}
-     * once a tuck has moved it. A face cut from another inherits it.
+     * once a tuck has moved it, and {@link #SEALED} once its host is {@link #settle settled}. A
+     * face cut from another inherits it.
      */
     private byte[] originOf = new byte[16];
     private static final int TUCKED = 16;
+    private static final int SEALED = 32;
     /** The kind of the tail's last crease, which the next face laid from the tail comes after; null before any. */
     private Crease lastTailCrease;
     private final List<Isometry2> poseOf = new ArrayList<>();
@@ -85,34 +88,89 @@ public final class Sheet {
     private int tailHost;
     private Isometry2 tailPose;
     private Placement tailPlacement = Placement.OVER;
+    /** Whether the next piece of the tail laid lands over all it overlaps ({@link #liftTail}). */
+    private boolean tailLifted;
     private double length = Double.NaN;
 
+    /** Each face's place in its stack's list of faces. */
+    private int[] slotOf = new int[16];
+    /** From how many faces a stack finds the faces a new one overlaps through a grid rather than by looking at all. */
+    private static final int GRID_FROM = 32;
+
     /** The faces resting on one host and their order. */
-    private static final class Stack {
+    private final class Stack {
         int[] faces = new int[8];
         int count;
         /** Pairs (above << 32 | below) of overlapping faces. */
         LongList above = new LongList();
         int[] levels;
         int top = -1;
+        /** The faces by where they lie, once the stack is big enough; dropped when a face moves or leaves. */
+        FaceGrid grid;
 
         void add(int f) {
             if (count == faces.length) {
                 faces = Arrays.copyOf(faces, 2 * count);
             }
+            slotOf[f] = count;
             faces[count++] = f;
             levels = null;
+            if (grid != null) {
+                placedCached(f);
+                grid.add(f, boxes.get(f));
+            }
         }
 
         void remove(Set<Integer> gone) {
             int n = 0;
             for (int i = 0; i < count; i++) {
                 if (!gone.contains(faces[i])) {
+                    slotOf[faces[i]] = n;
                     faces[n++] = faces[i];
                 }
             }
             count = n;
             levels = null;
+            grid = null;
+        }
+
+        /**
+         * The places in the stack, in order, of the faces that may overlap face f (their boxes
+         * near its box): all of them while the stack is small.
+         */
+        int[] near(int f) {
+            if (count >= GRID_FROM && grid == null) {
+                grid = new FaceGrid(2 * width);
+                for (int i = 0; i < count; i++) {
+                    placedCached(faces[i]);
+                    grid.add(faces[i], boxes.get(faces[i]));
+                }
+            }
+            if (grid != null) {
+                placedCached(f);
+                int seen = nextMark();
+                int[] n = {0};
+                int[][] holder = {new int[16]};
+                boolean listed = grid.near(boxes.get(f), g -> {
+                    if (g != f && mark[g] != seen && slotOf[g] < count && faces[slotOf[g]] == g) {
+                        mark[g] = seen;
+                        if (n[0] == holder[0].length) {
+                            holder[0] = Arrays.copyOf(holder[0], 2 * n[0]);
+                        }
+                        holder[0][n[0]++] = slotOf[g];
+                    }
+                });
+                if (listed) {
+                    int[] slots = Arrays.copyOf(holder[0], n[0]);
+                    Arrays.sort(slots);
+                    return slots;
+                }
+            }
+            int[] all = new int[count];
+            for (int i = 0; i < count; i++) {
+                all[i] = i;
+            }
+            return all;
         }
     }
 
@@ -215,6 +273,17 @@ public final class Sheet {
         tailA = a;
         tailB = b;
         return face;
+    }
+
+    /**
+     * Lays the next piece of the tail over all the paper it overlaps, as the first after a
+     * crossing does, rather than just over the face it is folded from: the strip running on from
+     * one triangle into the next of the same host lies on the paper it leaves, not between the
+     * layers of its last folds.
+     */
+    public void liftTail() {
+        tailLifted = true;
+        tailPlacement = Placement.OVER;
     }
 
     /** The host the tail lies on. */
@@ -458,6 +527,7 @@ public final class Sheet {
          */
         private int[] cut(int[] faces, double nx, double ny, double c, boolean onSheet) {
             List<Integer> beyond = new ArrayList<>();
+            Map<Integer, Map<Integer, Integer>> partsByHost = new HashMap<>();
             for (int f : faces) {
                 double[] range = range(f, nx, ny, c, onSheet);
                 if (range[1] <= tolerance) {
@@ -468,7 +538,32 @@ public final class Sheet {
                     beyond.add(f);
                     continue;
                 }
-                beyond.add(split(f, nx, ny, c, onSheet, splitOfEdge, this));
+                int g = split(f, nx, ny, c, onSheet, splitOfEdge, this);
+                partsByHost.computeIfAbsent(hostOf[f], h -> new HashMap<>()).put(f, g);
+                beyond.add(g);
+            }
+            // Each new part inherits its face's relations, in one pass over each stack's (a cut
+            // across a deep stack splits thousands of faces); those that no longer overlap are
+            // dropped later.
+            for (Map.Entry<Integer, Map<Integer, Integer>> entry : partsByHost.entrySet()) {
+                Stack stack = stacks.get(entry.getKey());
+                Map<Integer, Integer> partOf = entry.getValue();
+                LongList inherited = new LongList();
+                for (int r = 0; r < stack.above.size(); r++) {
+                    long pair = stack.above.get(r);
+                    Integer upper = partOf.get((int) (pair >>> 32));
+                    Integer lower = partOf.get((int) pair);
+                    if (upper != null) {
+                        inherited.add(((long) upper << 32) | (int) pair);
+                    }
+                    if (lower != null) {
+                        inherited.add(((long) (int) (pair >>> 32) << 32) | lower);
+                    }
+                    if (upper != null && lower != null) {
+                        inherited.add(((long) upper << 32) | lower);
+                    }
+                }
+                stack.above.addAll(inherited);
             }
             return beyond.stream().mapToInt(Integer::intValue).toArray();
         }
@@ -520,11 +615,14 @@ public final class Sheet {
          * condition), but not so that paper going on across the line to another host (a strip
          * crossing the edge) lies between the flap and the paper it is folded from, its hinges:
          * the flap would wrap around that strip, which paper cannot (taco-tortilla). The flap
-         * goes as one: under all it overlaps, or, where such strips lie below the lowest of its
-         * hinges (the staying faces it is joined to), just above the highest of them (in the
-         * stack's order by levels). A flap with hinges on either side of such a strip (a pass's
-         * end that turns beyond the line and comes back around it) still wraps it; it happens
-         * at the widest strip on the cube.
+         * goes as one: under all it overlaps but such strips below the lowest of its hinges (the
+         * staying faces it is joined to) and the paper below them (in the stack's order, through
+         * its relations): just above those. Paper that only lies near them stays above the flap,
+         * so that a fold of the strip whose crease lies on the tuck line itself (a turn's bottom
+         * along a host's edge) nests inside the tuck rather than interleaving with it
+         * (taco-taco). A flap with hinges on either side of such a strip (a pass's end that
+         * turns beyond the line and comes back around it) still wraps it; it happens at the
+         * widest strip on the cube.
          */
         public void tuckUnder(Set<Integer> faces, Isometry2 reflection, double nx, double ny, double c) {
             if (faces.isEmpty()) {
@@ -537,8 +635,31 @@ public final class Sheet {
             for (int i = 0; i < stack.count; i++) {
                 levelOf.put(stack.faces[i], levels[i]);
             }
-            int lowestHinge = Integer.MAX_VALUE;
-            List<Integer> crossingLevels = new ArrayList<>();
+            // The flap's pieces: paper beyond the line joined on the sheet, each with its hinges.
+            Map<Integer, Integer> pieceOf = new HashMap<>();
+            int pieces = 0;
+            for (int f : faces) {
+                if (pieceOf.containsKey(f)) {
+                    continue;
+                }
+                ArrayDeque<Integer> open = new ArrayDeque<>(List.of(f));
+                pieceOf.put(f, pieces);
+                while (!open.isEmpty()) {
+                    int[] loop = loops.get(open.poll());
+                    for (int k = 0; k < loop.length; k++) {
+                        int across = faceOfEdge.get(directed(loop[(k + 1) % loop.length], loop[k]), -1);
+                        if (across >= 0 && faces.contains(across) && !pieceOf.containsKey(across)) {
+                            pieceOf.put(across, pieces);
+                            open.add(across);
+                        }
+                    }
+                }
+                pieces++;
+            }
+            int[] lowestHinge = new int[pieces];
+            Arrays.fill(lowestHinge, Integer.MAX_VALUE);
+            Set<Integer> hinges = new HashSet<>();
+            List<Integer> crossing = new ArrayList<>();
             for (int i = 0; i < stack.count; i++) {
                 int f = stack.faces[i];
                 int[] loop = loops.get(f);
@@ -552,19 +673,46 @@ public final class Sheet {
                         continue;
                     }
                     if (moves && !faces.contains(across) && hostOf[across] == host) {
-                        lowestHinge = Math.min(lowestHinge, levelOf.get(across));
+                        int piece = pieceOf.get(f);
+                        lowestHinge[piece] = Math.min(lowestHinge[piece], levelOf.get(across));
+                        hinges.add(across);
                     } else if (!moves && hostOf[across] != host && onLine(pose, a, nx, ny, c) && onLine(pose, b, nx, ny, c)) {
-                        crossingLevels.add(levels[i]);
+                        crossing.add(f);
                     }
                 }
             }
-            int place = -1;
-            for (int level : crossingLevels) {
-                if (level < lowestHinge) {
-                    place = Math.max(place, level);
+            // For each piece, the strips it must stay above, and all paper below them.
+            Map<Integer, List<Integer>> below = new HashMap<>();
+            if (!crossing.isEmpty()) {
+                for (int r = 0; r < stack.above.size(); r++) {
+                    long pair = stack.above.get(r);
+                    below.computeIfAbsent((int) (pair >>> 32), k -> new ArrayList<>()).add((int) pair);
                 }
             }
-            move(faces, host, reflection, Placement.UNDER, place, levelOf);
+            List<Set<Integer>> under = new ArrayList<>();
+            for (int piece = 0; piece < pieces; piece++) {
+                Set<Integer> set = new HashSet<>();
+                ArrayDeque<Integer> open = new ArrayDeque<>();
+                for (int f : crossing) {
+                    if (levelOf.get(f) < lowestHinge[piece] && set.add(f)) {
+                        open.add(f);
+                    }
+                }
+                closeDownwards(set, open, below, faces);
+                under.add(set);
+            }
+            move(faces, host, reflection, Placement.UNDER, new TuckPlace(pieceOf, under, below, hinges, lowestHinge), levelOf);
+        }
+
+        /** Adds to {@code under} every face below those in {@code open}, through the stack's relations {@code below}, but the moving. */
+        private void closeDownwards(Set<Integer> under, ArrayDeque<Integer> open, Map<Integer, List<Integer>> below, Set<Integer> faces) {
+            while (!open.isEmpty()) {
+                for (int g : below.getOrDefault(open.poll(), List.of())) {
+                    if (!faces.contains(g) && under.add(g)) {
+                        open.add(g);
+                    }
+                }
+            }
         }
 
         private boolean onLine(Isometry2 pose, int p, double nx, double ny, double c) {
@@ -576,7 +724,7 @@ public final class Sheet {
          * a tuck ({@link #tuckUnder}) just above that level of the stack, whose levels before
          * the move {@code levelBefore} holds.
          */
-        private void move(Set<Integer> faces, int toHost, Isometry2 frameChange, Placement placement, Integer tuckPlace,
+        private void move(Set<Integer> faces, int toHost, Isometry2 frameChange, Placement placement, TuckPlace tuckPlace,
                 Map<Integer, Integer> levelBefore) {
             if (faces.isEmpty()) {
                 return;
@@ -708,16 +856,54 @@ public final class Sheet {
     }
 
     /**
-     * The order of tucked {@code faces}, as {@link Edit#tuckUnder} places them: just above the
-     * staying paper of level {@code place} and below the rest (under all at -1), in their own
-     * order {@code carried}.
+     * Where a tuck's flap goes, piece by piece (paper beyond the line joined on the sheet, each
+     * {@code pieceOf} it): above the staying faces {@code under} it (strips crossing the tuck
+     * line below the piece's hinges, {@code lowestHinge} the lowest, and the paper below them,
+     * through the stack's relations {@code below}), under the rest; {@code hinges} are the
+     * staying faces the flap is joined to.
      */
-    private void placeTucked(Set<Integer> faces, Stack to, LongList carried, int place, Map<Integer, Integer> levelBefore) {
-        for (int i = 0; i < to.count; i++) {
-            int g = to.faces[i];
-            boolean below = levelBefore.get(g) <= place;
-            for (int f : faces) {
+    private record TuckPlace(Map<Integer, Integer> pieceOf, List<Set<Integer>> under, Map<Integer, List<Integer>> below,
+            Set<Integer> hinges, int[] lowestHinge) {
+    }
+
+    /**
+     * The order of tucked {@code faces}, as {@link Edit#tuckUnder} places them: each piece above
+     * the staying paper {@code place.under()} says and below the rest, in their own order
+     * {@code carried}. A layer of paper a piece goes above goes on above it where it continues on
+     * the host, folded or flat, into paper the piece overlaps (below its hinges): the piece cannot
+     * pass through it, nor lie between the two layers of its fold (taco-tortilla). A piece over
+     * another in the flap's own order goes over all the other goes over, so that the order has
+     * no cycle.
+     */
+    private void placeTucked(Set<Integer> faces, Stack to, LongList carried, TuckPlace place, Map<Integer, Integer> levelBefore) {
+        List<Set<Integer>> under = place.under();
+        Map<Integer, List<Integer>> facesOfPiece = new HashMap<>();
+        for (int f : faces) {
+            facesOfPiece.computeIfAbsent(place.pieceOf().get(f), k -> new ArrayList<>()).add(f);
+        }
+        for (int piece = 0; piece < under.size(); piece++) {
+            closeOverFolds(under.get(piece), facesOfPiece.getOrDefault(piece, List.of()), faces, place, place.lowestHinge()[piece],
+                    levelBefore);
+        }
+        // A piece above another goes above all that one does.
+        boolean grew = under.size() > 1;
+        while (grew) {
+            grew = false;
+            for (int r = 0; r < carried.size(); r++) {
+                long pair = carried.get(r);
+                int upper = place.pieceOf().get((int) (pair >>> 32));
+                int lower = place.pieceOf().get((int) pair);
+                if (upper != lower) {
+                    grew |= under.get(upper).addAll(under.get(lower));
+                }
+            }
+        }
+        for (int f : faces) {
+            Set<Integer> pieceUnder = under.get(place.pieceOf().get(f));
+            for (int i : to.near(f)) {
+                int g = to.faces[i];
                 if (overlap(f, g)) {
+                    boolean below = (originOf[g] & SEALED) != 0 || pieceUnder.contains(g);
                     to.above.add(below ? ((long) f << 32) | g : ((long) g << 32) | f);
                 }
             }
@@ -725,6 +911,47 @@ public final class Sheet {
         to.above.addAll(carried);
         for (int f : faces) {
             to.add(f);
+        }
+    }
+
+    /**
+     * Adds to {@code under} the staying faces that continue a face of it on the host (across an
+     * edge of the sheet) into paper the {@code piece} overlaps, below its lowest hinge, with all
+     * paper below them.
+     */
+    private void closeOverFolds(Set<Integer> under, List<Integer> piece, Set<Integer> faces, TuckPlace place, int lowestHinge,
+            Map<Integer, Integer> levelBefore) {
+        ArrayDeque<Integer> open = new ArrayDeque<>(under);
+        while (!open.isEmpty()) {
+            int g = open.poll();
+            int[] loop = loops.get(g);
+            for (int k = 0; k < loop.length; k++) {
+                int across = faceOfEdge.get(directed(loop[(k + 1) % loop.length], loop[k]), -1);
+                if (across < 0 || hostOf[across] != hostOf[g] || faces.contains(across) || under.contains(across)
+                        || place.hinges().contains(across) || levelBefore.get(across) >= lowestHinge) {
+                    continue;
+                }
+                boolean overlapped = false;
+                for (int f : piece) {
+                    if (overlap(f, across)) {
+                        overlapped = true;
+                        break;
+                    }
+                }
+                if (overlapped) {
+                    under.add(across);
+                    open.add(across);
+                    ArrayDeque<Integer> down = new ArrayDeque<>(List.of(across));
+                    while (!down.isEmpty()) {
+                        for (int h : place.below().getOrDefault(down.poll(), List.of())) {
+                            if (!faces.contains(h) && under.add(h)) {
+                                down.add(h);
+                                open.add(h);
+                            }
+                        }
+                    }
+                }
+            }
         }
     }
 
@@ -790,21 +1017,7 @@ public final class Sheet {
         edit.reshaped.add(f);
         edit.reshaped.add(g);
         edit.parents.add(f < edit.facesBefore ? f : edit.parents.get(f - edit.facesBefore));
-        Stack stack = stacks.get(hostOf[f]);
-        // The new part inherits f's relations; those that no longer overlap are dropped later.
-        LongList inherited = new LongList();
-        for (int r = 0; r < stack.above.size(); r++) {
-            long pair = stack.above.get(r);
-            int upper = (int) (pair >>> 32);
-            int lower = (int) pair;
-            if (upper == f) {
-                inherited.add(((long) g << 32) | lower);
-            } else if (lower == f) {
-                inherited.add(((long) upper << 32) | g);
-            }
-        }
-        stack.above.addAll(inherited);
-        stack.add(g);
+        stacks.get(hostOf[f]).add(g);
         return g;
     }
 
@@ -844,6 +1057,10 @@ public final class Sheet {
      * none (the strip's first face, or the first on a host after a crossing).
      */
     private int tailHinge(int[] loop) {
+        if (tailLifted) {
+            tailLifted = false;
+            return -1;
+        }
         int before = faceOfEdge.get(directed(loop[0], loop[loop.length - 1]), -1);
         return before >= 0 && hostOf[before] == tailHost ? before : -1;
     }
@@ -866,14 +1083,7 @@ public final class Sheet {
         register(f);
         Stack stack = stacks.computeIfAbsent(host, h -> new Stack());
         int[] levels = hinge >= 0 ? levels(stack) : null;
-        int hingeLevel = -1;
-        if (hinge >= 0) {
-            for (int i = 0; i < stack.count; i++) {
-                if (stack.faces[i] == hinge) {
-                    hingeLevel = levels[i];
-                }
-            }
-        }
+        int hingeLevel = hinge >= 0 ? levels[slotOf[hinge]] : -1;
         // The new face's level is one more than the highest below it; where every face it lies
         // under stands higher still (it landed over all it overlaps, or just under a hinge with
         // room below), no other level changes, and the stack's levels are kept rather than found
@@ -881,19 +1091,34 @@ public final class Sheet {
         int[] known = stack.levels;
         int level = 0;
         int lowestAbove = Integer.MAX_VALUE;
-        for (int i = 0; i < stack.count; i++) {
+        List<Integer> touching = new ArrayList<>();
+        Map<Integer, Boolean> overOf = new HashMap<>();
+        Map<Integer, Integer> placeOf = new HashMap<>();
+        for (int i : stack.near(f)) {
             int g = stack.faces[i];
             if (overlap(f, g)) {
                 boolean over = placement == Placement.OVER;
-                if (hinge >= 0) {
+                if ((originOf[g] & SEALED) != 0) {
+                    over = true;
+                } else if (hinge >= 0) {
                     over = placement == Placement.OVER ? levels[i] <= hingeLevel : levels[i] < hingeLevel;
                 }
-                stack.above.add(over ? ((long) f << 32) | g : ((long) g << 32) | f);
-                if (known != null && over) {
-                    level = Math.max(level, known[i] + 1);
-                } else if (known != null) {
-                    lowestAbove = Math.min(lowestAbove, known[i]);
-                }
+                touching.add(g);
+                overOf.put(g, over);
+                placeOf.put(g, i);
+            }
+        }
+        if (hinge >= 0) {
+            outOfFolds(f, hinge, stack, levels, touching, overOf, placeOf);
+        }
+        for (int g : touching) {
+            boolean over = overOf.get(g);
+            int i = placeOf.get(g);
+            stack.above.add(over ? ((long) f << 32) | g : ((long) g << 32) | f);
+            if (known != null && over) {
+                level = Math.max(level, known[i] + 1);
+            } else if (known != null) {
+                lowestAbove = Math.min(lowestAbove, known[i]);
             }
         }
         stack.add(f);
@@ -906,10 +1131,128 @@ public final class Sheet {
         return f;
     }
 
+    /**
+     * Keeps a new face out of the folds it overlaps: the order by levels puts it just over (or
+     * under) its hinge, and above or below each other face by its level, but levels compare
+     * faces of different places of a stack only loosely, and a face g it lands under whose fold
+     * partner d (the face across a crease of g, on this host) it lands over, with g above d,
+     * would lie between the two layers of their fold (taco-tortilla). It goes over g too, and
+     * likewise under a face whose partner above it lies over the new face, unless that would
+     * contradict the order already there (a face it lies under, or over, below g or above it).
+     */
+    private void outOfFolds(int f, int hinge, Stack stack, int[] levels, List<Integer> touching, Map<Integer, Boolean> overOf,
+            Map<Integer, Integer> placeOf) {
+        Map<Integer, List<Integer>> below = null;
+        Map<Integer, List<Integer>> aboveOf = null;
+        double[] placedF = placedCached(f);
+        for (int g : touching) {
+            if (g == hinge) {
+                continue;
+            }
+            boolean over = overOf.get(g);
+            int[] loop = loops.get(g);
+            for (int k = 0; k < loop.length; k++) {
+                int a = loop[k];
+                int b = loop[(k + 1) % loop.length];
+                if (crease(a, b) == null) {
+                    continue;
+                }
+                int d = faceOfEdge.get(directed(b, a), -1);
+                Boolean dOver = d < 0 ? null : overOf.get(d);
+                if (dOver == null || dOver == over) {
+                    continue;
+                }
+                boolean gAbove = levels[placeOf.get(g)] > levels[placeOf.get(d)];
+                // Inside the fold: under the upper layer and over the lower one, across its crease.
+                Isometry2 pose = poseOf.get(g);
+                if (gAbove == over || !crosses(placedF, pose.x(u(a), v(a)), pose.y(u(a), v(a)), pose.x(u(b), v(b)), pose.y(u(b), v(b)))) {
+                    continue;
+                }
+                if (below == null) {
+                    below = new HashMap<>();
+                    aboveOf = new HashMap<>();
+                    for (int r = 0; r < stack.above.size(); r++) {
+                        long pair = stack.above.get(r);
+                        below.computeIfAbsent((int) (pair >>> 32), x -> new ArrayList<>()).add((int) pair);
+                        aboveOf.computeIfAbsent((int) pair, x -> new ArrayList<>()).add((int) (pair >>> 32));
+                    }
+                }
+                // Over g means over all below it: none of those may be a face it lies under.
+                Map<Integer, List<Integer>> onward = over ? aboveOf : below;
+                Set<Integer> reached = new HashSet<>();
+                ArrayDeque<Integer> open = new ArrayDeque<>(List.of(g));
+                boolean contradicts = false;
+                while (!open.isEmpty() && !contradicts) {
+                    int h = open.poll();
+                    Boolean hOver = overOf.get(h);
+                    if (h != g && hOver != null && hOver == over) {
+                        contradicts = true;
+                    }
+                    for (int next : onward.getOrDefault(h, List.of())) {
+                        if (reached.add(next)) {
+                            open.add(next);
+                        }
+                    }
+                }
+                if (!contradicts) {
+                    overOf.put(g, !over);
+                    break;
+                }
+            }
+        }
+    }
+
+    /** Whether convex polygon xy reaches across the segment (a, b): on both sides of its line, over a length of it. */
+    private boolean crosses(double[] xy, double ax, double ay, double bx, double by) {
+        double dx = bx - ax;
+        double dy = by - ay;
+        double length = Math.hypot(dx, dy);
+        if (!(length > tolerance)) {
+            return false;
+        }
+        double nx = dy / length;
+        double ny = -dx / length;
+        double c = nx * ax + ny * ay;
+        int n = xy.length / 2;
+        boolean left = false;
+        boolean right = false;
+        for (int k = 0; k < n; k++) {
+            double side = nx * xy[2 * k] + ny * xy[2 * k + 1] - c;
+            left |= side < -tolerance;
+            right |= side > tolerance;
+        }
+        if (!(left && right)) {
+            return false;
+        }
+        // The part of the segment inside the polygon: t in [t0, t1] along a → b.
+        double t0 = 0;
+        double t1 = 1;
+        double orientation = Math.signum(Polygons2.twiceArea(xy, n));
+        for (int k = 0; k < n && t0 < t1; k++) {
+            int j = (k + 1) % n;
+            double ex = xy[2 * j] - xy[2 * k];
+            double ey = xy[2 * j + 1] - xy[2 * k + 1];
+            // Inside: orientation × (e × (p - corner k)) >= 0, at p = a + t (b - a).
+            double at = orientation * (ex * (ay - xy[2 * k + 1]) - ey * (ax - xy[2 * k]));
+            double slope = orientation * (ex * dy - ey * dx);
+            if (Math.abs(slope) < 1e-300) {
+                if (at < 0) {
+                    return false;
+                }
+            } else if (slope > 0) {
+                t0 = Math.max(t0, -at / slope);
+            } else {
+                t1 = Math.min(t1, -at / slope);
+            }
+        }
+        return (t1 - t0) * length > tolerance;
+    }
+
     private void ensureFaceCapacity(int n) {
         if (n > hostOf.length) {
             hostOf = Arrays.copyOf(hostOf, Math.max(n, 2 * hostOf.length));
             originOf = Arrays.copyOf(originOf, hostOf.length);
+            slotOf = Arrays.copyOf(slotOf, hostOf.length);
         }
     }
 
@@ -1067,17 +1410,22 @@ public final class Sheet {
     }
 
     /**
-     * Forgets the corners and boxes kept of the faces resting on {@code host}, which speed the
-     * folds and tucks on it: once a wrap has left a triangle, nothing lands there again, and
-     * the kept copies were a sixth of the memory the paper takes (they are made again if asked).
+     * Finishes the paper resting on {@code host}, as a wrap does when the strip leaves it: paper
+     * laid there later lies over it, and a later tuck's flap goes between the two, under the
+     * new paper only (the strip coming back to a finished stack cannot slide between the
+     * layers of its folds). Forgets the corners and boxes kept of its faces too, which speed
+     * the folds and tucks on it: they were a sixth of the memory the paper takes (they are made
+     * again if asked).
      */
     public void settle(int host) {
         Stack stack = stacks.get(host);
         if (stack == null) {
             return;
         }
+        stack.grid = null;
         for (int i = 0; i < stack.count; i++) {
             int f = stack.faces[i];
+            originOf[f] |= SEALED;
             if (f < placements.size()) {
                 placements.set(f, null);
                 boxes.set(f, null);

@@ -180,7 +180,7 @@ public final class TurnGadget {
         }
         mesh.addTriangle(0, 1, 2);
         Wrap.Strip strip = new Wrap.Strip(sheet, TABLE, 1, new int[] {sheet.faceCount()});
-        Wrap.Result wrap = new Wrap.Result(mesh, new HostFrame[] {table}, List.of(strip), List.copyOf(steps), width, thickness,
+        Wrap.Result wrap = new Wrap.Result(mesh, new HostFrame[] {table}, new int[] {TABLE}, List.of(strip), List.copyOf(steps), width, thickness,
                 Double.NaN);
         return new Result(wrap, angleDegrees, overhang, length);
     }

@@ -245,14 +245,16 @@ public final class Wrap {
      * The wrapped surface.
      *
      * @param mesh the refined mesh whose triangles hold the paper
-     * @param frames each refined triangle's frame
+     * @param frames each host's frame, with its convex polygon as corners: the hosts are the
+     *     convex coplanar pieces of the mesh the paper rests on ({@link HostPieces})
+     * @param hostOf the host of each triangle of the mesh
      * @param strips one per component
      * @param steps every fold in order
      * @param width the strip width
      * @param thickness the paper thickness
      * @param widest the widest strip the path takes
      */
-    public record Result(IndexedPolygons mesh, HostFrame[] frames, List<Strip> strips, List<Step> steps, double width,
+    public record Result(IndexedPolygons mesh, HostFrame[] frames, int[] hostOf, List<Strip> strips, List<Step> steps, double width,
             double thickness, double widest) {
         public int count(Kind kind) {
             int n = 0;
@@ -331,6 +333,20 @@ public final class Wrap {
      */
     public static double defaultWidth(HamiltonianRefinement.Result refinement) {
         return widest(refinement) / DEFAULT_PASSES;
+    }
+
+    /**
+     * The faces of paper a wrap of the refinement's paths at the default width is likely to
+     * make (as a width that would pass the face limit is told), from the passes its triangles
+     * take, before any fold: to choose between two paths of one model.
+     */
+    public static long likelyFaces(HamiltonianRefinement.Result refinement) {
+        List<PathPlan> plans = plans(refinement.mesh(), refinement.componentStart(), null);
+        double width = narrowest(refinement.mesh(), plans)[0] / DEFAULT_PASSES;
+        if (!(width > 0) || !Double.isFinite(width)) {
+            return Long.MAX_VALUE;
+        }
+        return likelyFaces(passesAt(plans, width), refinement.mesh().faceCount());
     }
 
     /** The passes the narrowest triangle gets at the default width. */
@@ -425,7 +441,7 @@ public final class Wrap {
      */
     public static Result wrap(IndexedPolygons path, int[] componentStart, Options options, Watcher watcher) throws WrapException {
         IndexedPolygons mesh = path;
-        HostFrame[] frames = new HostFrame[mesh.faceCount()];
+        HostFrame[] triangleFrames = new HostFrame[mesh.faceCount()];
         double across = across(mesh);
         if (!(across >= SMALLEST_MODEL && across <= LARGEST_MODEL)) {
             throw new WrapException(String.format(Locale.ROOT, "the model is %.3g across, and a wrap computes models from %.0e to %.0e"
@@ -456,7 +472,7 @@ public final class Wrap {
             }
             chooseLastStart(mesh, plan, width, widest);
             for (int i = 0; i < plan.m; i++) {
-                frames[plan.first + i] = plan.frames[i];
+                triangleFrames[plan.first + i] = plan.frames[i];
             }
         }
         // The passes are known before any fold, and so is a floor under the faces they make:
@@ -487,10 +503,23 @@ public final class Wrap {
                     : String.format(Locale.ROOT, "no strip the path takes fits: the widest, %.4g, which the narrowest triangle (%s) "
                     + "sets, would make about %d", widest, cornersText(mesh, narrowest), likelyFaces(passesAt(plans, widest), triangles))));
         }
+        HostPieces pieces = HostPieces.of(mesh);
+        HostFrame[] frames = hostFrames(mesh, pieces, triangleFrames);
+        Isometry2[] toHost = new Isometry2[mesh.faceCount()];
+        for (PathPlan plan : plans) {
+            for (int i = 0; i < plan.m; i++) {
+                HostFrame host = frames[pieces.hostOf[plan.first + i]];
+                double[] a = position(mesh, plan.baseFrom[i]);
+                double[] b = position(mesh, plan.baseTo[i]);
+                toHost[plan.first + i] = Isometry2.taking(0, 0, plan.frames[i].corners()[2], 0, host.localX(a), host.localY(a),
+                        host.localX(b), host.localY(b));
+            }
+        }
         for (int c = 0; c < plans.size(); c++) {
             PathPlan plan = plans.get(c);
             try {
-                Folding folding = new Folding(mesh, plan, c, width, thickness, tolerance, steps, options.maxFaces());
+                Folding folding = new Folding(mesh, plan, c, width, thickness, tolerance, steps, options.maxFaces(), pieces, frames,
+                        toHost);
                 folding.watch(watcher, plan.first, mesh.faceCount());
                 strips.add(folding.fold());
             } catch (FoldException e) {
@@ -500,7 +529,44 @@ public final class Wrap {
         if (narrowest < 0) { // no triangles: no widest strip either
             widest = Double.NaN;
         }
-        return new Result(mesh, frames, List.copyOf(strips), List.copyOf(steps), width, thickness, widest);
+        return new Result(mesh, frames, pieces.hostOf, List.copyOf(strips), List.copyOf(steps), width, thickness, widest);
+    }
+
+    private static boolean sameCorners(int[] corners, IndexedPolygons mesh, int t) {
+        for (int v : corners) {
+            if (v != mesh.faceVertex(t, 0) && v != mesh.faceVertex(t, 1) && v != mesh.faceVertex(t, 2)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /**
+     * Each host's frame: the frame of the first triangle of the path on it (a host of one
+     * triangle keeps its triangle's frame), with the host's polygon for corners.
+     */
+    private static HostFrame[] hostFrames(IndexedPolygons mesh, HostPieces pieces, HostFrame[] triangleFrames) {
+        HostFrame[] frames = new HostFrame[pieces.hostCount()];
+        for (int t = 0; t < triangleFrames.length; t++) {
+            int h = pieces.hostOf[t];
+            if (frames[h] != null) {
+                continue;
+            }
+            HostFrame f = triangleFrames[t];
+            int[] corners = pieces.corners[h];
+            if (corners.length == 3 && sameCorners(corners, mesh, t)) {
+                frames[h] = f; // a host of one triangle: its frame and corners as the planner has them
+                continue;
+            }
+            double[] xy = new double[2 * corners.length];
+            for (int k = 0; k < corners.length; k++) {
+                double[] p = position(mesh, corners[k]);
+                xy[2 * k] = f.localX(p);
+                xy[2 * k + 1] = f.localY(p);
+            }
+            frames[h] = new HostFrame(f.origin(), f.ex(), f.ey(), f.normal(), xy);
+        }
+        return frames;
     }
 
     /**
@@ -661,17 +727,18 @@ public final class Wrap {
 
     /**
      * The fewest faces of paper {@code passes} passes over {@code triangles} triangles of the
-     * path make: 3 a pass (its two folds each lay a face, and the tucks cut its turn) and 6 a
-     * triangle (its gadget, its crossing, its tucks). A floor: a wrap refused by it could never
-     * fit. Measured over the models, widths and corners: 4.3 to 15 a pass, 12 to 290 a triangle.
+     * path make: 2 a pass, as each turn between two passes of a triangle and each triangle's
+     * turn gadget lays two faces (the tucks and the crossings between hosts cut more). A floor: a
+     * wrap refused by it could never fit. Measured over the models and widths from the widest to
+     * a thirtieth of it: 2.3 to 11 a pass, and beyond 2 a pass, 5 to 320 a triangle.
      */
     static long fewestFaces(long passes, int triangles) {
-        return 3 * passes + 6L * triangles;
+        return 2 * passes;
     }
 
-    /** The faces a wrap of {@code passes} passes over {@code triangles} triangles is likely to make, for a width to suggest: 5 a pass and 25 a triangle, above most measured. */
+    /** The faces a wrap of {@code passes} passes over {@code triangles} triangles is likely to make, for a width to suggest: 3 a pass and 30 a triangle, above most measured. */
     static long likelyFaces(long passes, int triangles) {
-        return 5 * passes + 25L * triangles;
+        return 3 * passes + 30L * triangles;
     }
 
     /**
@@ -761,15 +828,6 @@ public final class Wrap {
         return String.valueOf((char) ('A' + k));
     }
 
-    /** The name of corner {@code c} of path triangle i's frame (0 and 1 its base, 2 its start), by its place in the face. */
-    private static String frameCornerName(PathPlan plan, int i, int c) {
-        int k = 0;
-        while (plan.corners[i][k] != plan.start[i]) {
-            k++;
-        }
-        return cornerName((k + 1 + c) % 3);
-    }
-
     private static int[] sharedEdge(int[] a, int[] b) {
         int[] shared = new int[2];
         int n = 0;
@@ -827,9 +885,18 @@ public final class Wrap {
         /** Triangles of earlier paths, and of all paths: for the watcher. */
         private int firstDone;
         private int totalTriangles;
+        private final HostPieces pieces;
+        private final HostFrame[] hostFrames;
+        /** Per triangle of the mesh: from its frame (the planner's) into its host's (the sheet's). */
+        private final Isometry2[] toHost;
+        /** The triangle being wrapped's frame into its host's. */
+        private Isometry2 intoHost;
 
         Folding(IndexedPolygons mesh, PathPlan plan, int strip, double width, double thickness, double tolerance, List<Step> steps,
-                int maxFaces) {
+                int maxFaces, HostPieces pieces, HostFrame[] hostFrames, Isometry2[] toHost) {
+            this.pieces = pieces;
+            this.hostFrames = hostFrames;
+            this.toHost = toHost;
             this.maxFaces = maxFaces;
             this.mesh = mesh;
             this.plan = plan;
@@ -846,13 +913,22 @@ public final class Wrap {
             int[] after = new int[plan.m];
             for (int i = 0; i < plan.m; i++) {
                 pathIndex = i;
+                intoHost = toHost[plan.first + i];
                 wrapTriangle(i);
-                tuckAll(i);
-                sheet.settle(plan.first + i);
+                // The paper is tucked once the strip leaves the host: until then the tail lies on it.
+                int host = hostOf(i);
+                if (i + 1 == plan.m || hostOf(i + 1) != host) {
+                    tuckAll(i);
+                    sheet.settle(host);
+                }
                 after[i] = sheet.faceCount();
                 watcher.wrapped(firstDone + i + 1, totalTriangles);
             }
             return new Strip(sheet, plan.first, plan.m, after);
+        }
+
+        private int hostOf(int i) {
+            return pieces.hostOf[plan.first + i];
         }
 
         private void wrapTriangle(int i) throws FoldException, WrapException {
@@ -874,7 +950,7 @@ public final class Wrap {
                 double start = d > 0 ? edges.leftmost(bottom[0], bottom[0] + w) - margin : edges.rightmost(bottom[0], bottom[0] + w) + margin;
                 Isometry2 pose = d > 0 ? Isometry2.placement(start, bottom[0], 0, false)
                         : Isometry2.placement(start, bottom[0] + w, Math.PI, false);
-                sheet = new Sheet(w, thickness, tolerance, host, pose);
+                sheet = new Sheet(w, thickness, tolerance, hostOf(i), intoHost.after(pose));
             } else {
                 checkEntry(d, bottom[0]);
             }
@@ -894,7 +970,7 @@ public final class Wrap {
                     end = endOfPass(edges, d, bottom[k - 1]);
                 }
                 detail = "";
-                record(Kind.END, host, sheet.endTail(end, 0, 0, 1));
+                record(Kind.END, host, sheet.endTail(intoHost.x(end, 0), intoHost.y(end, 0), intoHost.dx(0, 1), intoHost.dy(0, 1)));
             } else {
                 leave(i, edges, d);
             }
@@ -907,7 +983,7 @@ public final class Wrap {
 
         /** The tail came in over the edge before: it must lie along the first pass, running in direction d. */
         private void checkEntry(int d, double bottom) {
-            Isometry2 pose = sheet.tailPose();
+            Isometry2 pose = intoHost.inverse().after(sheet.tailPose());
             double along = pose.dx(1, 0);
             double across = pose.dy(1, 0);
             double edgeY = pose.y(sheet.tailStart(false), 0);
@@ -975,10 +1051,18 @@ public final class Wrap {
             detail = "turn to run along the next triangle's first pass";
             tailFold(Kind.TURN_GADGET, host, meetX, w / 2, lx, ly, Placement.OVER, Crease.GADGET);
             detail = "";
-            tailCross(Kind.EDGE_CROSSING, host, 0, 0, 1, 0, plan.first + i + 1, development);
+            int nextHost = hostOf(i + 1);
+            if (nextHost == hostOf(i)) {
+                // The next triangle lies in this one's plane, on the same host: the strip runs on
+                // flat, over the paper it leaves, as it would over the edge.
+                sheet.liftTail();
+                return;
+            }
+            Isometry2 next = toHost[plan.first + i + 1];
+            tailCross(Kind.EDGE_CROSSING, host, 0, 0, 1, 0, nextHost, next.after(development).after(intoHost.inverse()));
             // The crease over the edge must lie on the edge itself: paper beyond its ends would be
             // joined to paper on both triangles' excess, which no tuck could then fold away.
-            Isometry2 pose = sheet.tailPose();
+            Isometry2 pose = next.inverse().after(sheet.tailPose());
             double edgeLength = here.corners()[2];
             for (boolean side : new boolean[] {false, true}) {
                 double u = sheet.tailStart(side);
@@ -992,14 +1076,18 @@ public final class Wrap {
             }
         }
 
-        /** Tucks the paper resting on triangle i beyond its edges under it, the edge with paper farthest beyond first. */
+        /**
+         * Tucks the paper resting on triangle i's host beyond the host's edges under it, the edge
+         * with paper farthest beyond it first.
+         */
         private void tuckAll(int i) throws FoldException, WrapException {
-            int host = plan.first + i;
-            double[] c = plan.frames[i].corners();
+            int host = hostOf(i);
+            double[] c = hostFrames[host].corners();
+            int n = c.length / 2;
             for (int tucks = 0; ; tucks++) {
                 int edge = -1;
                 double farthest = sheet.tolerance();
-                for (int e = 0; e < 3; e++) {
+                for (int e = 0; e < n; e++) {
                     double beyond = farthestBeyond(host, c, e);
                     if (beyond > farthest) {
                         farthest = beyond;
@@ -1012,26 +1100,40 @@ public final class Wrap {
                 if (tucks == MAX_TUCKS) {
                     throw new WrapException(String.format(Locale.ROOT, "triangle %d of %d on the path (%s): the excess is not"
                             + " hidden after %d tucks: the naive tuck-under bounces paper between the edges of a corner as"
-                            + " sharp as %.1f degrees; a narrower strip may help", i + 1, plan.m, cornersText(mesh, host), MAX_TUCKS,
-                            smallestAngle(c)));
+                            + " sharp as %.1f degrees; a narrower strip may help", i + 1, plan.m, cornersText(mesh, plan.first + i),
+                            MAX_TUCKS, smallestAngle(c)));
                 }
                 int from = edge;
-                int to = (edge + 1) % 3;
+                int to = (edge + 1) % n;
                 Sheet.Tuck tuck = sheet.tuck(host, c[2 * from], c[2 * from + 1], c[2 * to] - c[2 * from], c[2 * to + 1] - c[2 * from + 1]);
-                // A lone triangle's corners are the ones the user named A, B and C.
-                String edgeName = plan.m == 1 ? "along edge " + frameCornerName(plan, i, from) + frameCornerName(plan, i, to) : "along an edge";
-                steps.add(new Step(Kind.TUCK, strip, host, pathIndex, plan.m, -1, tuck, sheet.faceCount(), null,
-                        "tuck " + (tucks + 1) + ": excess folded under " + edgeName));
+                steps.add(new Step(Kind.TUCK, strip, plan.first + i, pathIndex, plan.m, -1, tuck, sheet.faceCount(), null,
+                        "tuck " + (tucks + 1) + ": excess folded under " + edgeName(i, host, from, to)));
                 checkFaces();
             }
         }
 
-        /** The triangle's smallest angle in degrees, from its corners in its frame. */
+        /** A lone triangle's edge by the corners the user named A, B and C; any other "an edge". */
+        private String edgeName(int i, int host, int from, int to) {
+            if (plan.m != 1) {
+                return "along an edge";
+            }
+            int[] corners = pieces.corners[host];
+            String a = null;
+            String b = null;
+            for (int k = 0; k < 3; k++) {
+                a = plan.corners[i][k] == corners[from] ? cornerName(k) : a;
+                b = plan.corners[i][k] == corners[to] ? cornerName(k) : b;
+            }
+            return a != null && b != null ? "along edge " + a + b : "along an edge";
+        }
+
+        /** A convex polygon's smallest angle in degrees, from its corners in its frame. */
         private static double smallestAngle(double[] c) {
             double smallest = 180;
-            for (int k = 0; k < 3; k++) {
-                int a = (k + 1) % 3;
-                int b = (k + 2) % 3;
+            int n = c.length / 2;
+            for (int k = 0; k < n; k++) {
+                int a = (k + 1) % n;
+                int b = (k + n - 1) % n;
                 double ux = c[2 * a] - c[2 * k];
                 double uy = c[2 * a + 1] - c[2 * k + 1];
                 double vx = c[2 * b] - c[2 * k];
@@ -1044,7 +1146,7 @@ public final class Wrap {
         /** How far the paper on the host reaches beyond edge e of the triangle (corners counter-clockwise: outside is to the right). */
         private double farthestBeyond(int host, double[] c, int e) {
             int from = e;
-            int to = (e + 1) % 3;
+            int to = (e + 1) % (c.length / 2);
             double dx = c[2 * to] - c[2 * from];
             double dy = c[2 * to + 1] - c[2 * from + 1];
             double length = Math.hypot(dx, dy);
@@ -1065,7 +1167,7 @@ public final class Wrap {
                 throws FoldException, WrapException {
             int hostBefore = sheet.tailHost();
             Isometry2 before = sheet.tailPose();
-            int face = sheet.foldTail(px, py, dx, dy, next, crease);
+            int face = sheet.foldTail(intoHost.x(px, py), intoHost.y(px, py), intoHost.dx(dx, dy), intoHost.dy(dx, dy), next, crease);
             recordTail(kind, host, face, hostBefore, before, next == Placement.OVER);
         }
 
@@ -1074,7 +1176,7 @@ public final class Wrap {
                 throws FoldException, WrapException {
             int hostBefore = sheet.tailHost();
             Isometry2 before = sheet.tailPose();
-            int face = sheet.crossTail(px, py, dx, dy, nextHost, development);
+            int face = sheet.crossTail(intoHost.x(px, py), intoHost.y(px, py), intoHost.dx(dx, dy), intoHost.dy(dx, dy), nextHost, development);
             recordTail(kind, host, face, hostBefore, before, true);
         }
 

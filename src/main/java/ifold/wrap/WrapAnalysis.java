@@ -1,12 +1,12 @@
 package ifold.wrap;
 
-import ifold.mesh.HalfedgeMesh;
-import ifold.refine.RefinedMesh;
+import ifold.mesh.IndexedPolygons;
 import ifold.sheet.HostFrame;
 import ifold.sheet.Polygons2;
 import ifold.sheet.Sheet;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 
 /**
  * The measures of a wrap, taken from the folded sheets: layers counted exactly (the arrangement
@@ -49,9 +49,6 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
     }
 
     public static WrapAnalysis of(Wrap.Result result, List<WrapGeometry> geometries) {
-        // A refinement knows the model's edges (each triangle stands on one); any other path's
-        // triangles are the model's own.
-        RefinedMesh refined = result.mesh() instanceof RefinedMesh r ? r : null;
         HostFrame[] frames = result.frames();
         int maxLayers = 0;
         int stackLevels = 0;
@@ -74,25 +71,54 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
             paper += sheet.length() * sheet.width();
             stackLevels = Math.max(stackLevels, sheet.stackLevels());
             int[] levels = sheet.levels();
-            for (int t = strip.firstTriangle(); t < strip.firstTriangle() + strip.triangles(); t++) {
-                double[] c = frames[t].corners();
-                int[] faces = sheet.facesOn(t);
-                List<double[]> polygons = new ArrayList<>();
+            // Host by host (the strip's faces rest on hosts), triangle by triangle of each: a
+            // host's arrangement of faces, passes of many triangles crossing, would cost far more.
+            Map<Integer, List<Integer>> trianglesOn = new java.util.LinkedHashMap<>();
+            for (int triangle = strip.firstTriangle(); triangle < strip.firstTriangle() + strip.triangles(); triangle++) {
+                trianglesOn.computeIfAbsent(result.hostOf()[triangle], h -> new ArrayList<>()).add(triangle);
+            }
+            for (Map.Entry<Integer, List<Integer>> entry : trianglesOn.entrySet()) {
+                int host = entry.getKey();
+                HostFrame frame = frames[host];
+                double[] c = frame.corners();
+                int[] faces = sheet.facesOn(host);
+                List<double[]> placed = new ArrayList<>();
+                List<double[]> boxes = new ArrayList<>();
                 for (int f : faces) {
                     double[] xy = sheet.placed(f);
-                    polygons.add(xy);
+                    placed.add(xy);
+                    boxes.add(Polygons2.bounds(xy));
                     outside = Math.max(outside, beyond(c, xy));
                     farthest = Math.max(farthest, (levels[f] + 1) * sheet.thickness());
                 }
-                double[] cells = depths(c, polygons, sheet.tolerance());
-                surface += cells[0];
-                covered += cells[1];
-                if ((int) cells[2] > maxLayers) {
-                    deepestStrip = k;
-                    deepestTriangle = t;
-                    deepestPoint = new double[] {cells[3], cells[4]};
+                for (int triangle : entry.getValue()) {
+                    double[] corners = cornersIn(result.mesh(), triangle, frame);
+                    double[] box = Polygons2.bounds(corners);
+                    // Turned so that the triangle's passes run along x, as they run along its
+                    // exit edge: their boxes are then thin, and each meets only the cells near it.
+                    // Each face clipped to the triangle first: only its part there makes cells.
+                    double[] along = passDirection(result.mesh(), strip, triangle, frame);
+                    List<double[]> polygons = new ArrayList<>();
+                    for (int i = 0; i < placed.size(); i++) {
+                        double[] b = boxes.get(i);
+                        if (b[0] < box[2] && box[0] < b[2] && b[1] < box[3] && box[1] < b[3]) {
+                            double[] part = clipToTriangle(counterClockwise(placed.get(i)), corners, sheet.tolerance());
+                            if (part != null) {
+                                polygons.add(turned(part, along));
+                            }
+                        }
+                    }
+                    double[] cells = depths(counterClockwise(turned(corners, along)), polygons, sheet.tolerance());
+                    surface += cells[0];
+                    covered += cells[1];
+                    if ((int) cells[2] > maxLayers) {
+                        deepestStrip = k;
+                        deepestTriangle = triangle;
+                        // Back into the host's frame.
+                        deepestPoint = new double[] {along[0] * cells[3] - along[1] * cells[4], along[1] * cells[3] + along[0] * cells[4]};
+                    }
+                    maxLayers = Math.max(maxLayers, (int) cells[2]);
                 }
-                maxLayers = Math.max(maxLayers, (int) cells[2]);
             }
             // Creases: along an edge of the model when they lie on one.
             for (int f = 0; f < sheet.faceCount(); f++) {
@@ -107,7 +133,7 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
                         continue;
                     }
                     double length = Math.hypot(sheet.u(b) - sheet.u(a), sheet.v(b) - sheet.v(a));
-                    if (onModelEdge(sheet, f, a, b, refined, frames)) {
+                    if (onModelEdge(sheet, f, a, b, frames)) {
                         onEdges++;
                         onEdgesLength += length;
                     } else {
@@ -122,7 +148,8 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
             isometry = Math.max(isometry, isometryError(geometry, result.width()));
         }
         Deepest deepest = deepestStrip < 0 ? null
-                : deepest(result.strips().get(deepestStrip).sheet(), deepestStrip, deepestTriangle, deepestPoint, frames[deepestTriangle]);
+                : deepest(result.strips().get(deepestStrip).sheet(), deepestStrip, deepestTriangle, deepestPoint,
+                        result.hostOf()[deepestTriangle], frames[result.hostOf()[deepestTriangle]]);
         return new WrapAnalysis(maxLayers, stackLevels, surface > 0 ? covered / surface : 0, surface, paper, outside, farthest,
                 isometry, inside, insideLength, onEdges, onEdgesLength, deepest);
     }
@@ -143,14 +170,76 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
         return true;
     }
 
+    /**
+     * The unit direction, in the host's frame, of the edge path triangle t leaves by (shared with
+     * the next triangle of its strip; for the last, with the one before): its passes run along it.
+     */
+    private static double[] passDirection(IndexedPolygons mesh, Wrap.Strip strip, int t, HostFrame frame) {
+        int other = t + 1 < strip.firstTriangle() + strip.triangles() ? t + 1 : t - 1;
+        int[] shared = new int[2];
+        int n = 0;
+        for (int a = 0; a < 3 && other >= strip.firstTriangle(); a++) {
+            for (int b = 0; b < 3; b++) {
+                if (mesh.faceVertex(t, a) == mesh.faceVertex(other, b) && n < 2) {
+                    shared[n++] = mesh.faceVertex(t, a);
+                }
+            }
+        }
+        if (n < 2) {
+            shared = new int[] {mesh.faceVertex(t, 0), mesh.faceVertex(t, 1)};
+        }
+        double[] p = {mesh.coordinate(shared[0], 0), mesh.coordinate(shared[0], 1), mesh.coordinate(shared[0], 2)};
+        double[] q = {mesh.coordinate(shared[1], 0), mesh.coordinate(shared[1], 1), mesh.coordinate(shared[1], 2)};
+        double dx = frame.localX(q) - frame.localX(p);
+        double dy = frame.localY(q) - frame.localY(p);
+        double length = Math.hypot(dx, dy);
+        return length > 0 ? new double[] {dx / length, dy / length} : new double[] {1, 0};
+    }
+
+    /** The part of convex polygon xy inside triangle c (both counter-clockwise), or null. */
+    private static double[] clipToTriangle(double[] xy, double[] c, double tolerance) {
+        double[] inside = xy;
+        for (int e = 0; e < 3 && inside != null; e++) {
+            double ax = c[2 * e];
+            double ay = c[2 * e + 1];
+            double dx = c[2 * ((e + 1) % 3)] - ax;
+            double dy = c[2 * ((e + 1) % 3) + 1] - ay;
+            // Inside is left of each edge: dy·x - dx·y <= dy·ax - dx·ay.
+            inside = Polygons2.clip(inside, inside.length / 2, dy, -dx, dy * ax - dx * ay, 0);
+        }
+        return inside;
+    }
+
+    /** A polygon turned by the rotation that takes {@code along} to the x axis. */
+    private static double[] turned(double[] xy, double[] along) {
+        double[] out = new double[xy.length];
+        for (int k = 0; k < xy.length; k += 2) {
+            out[k] = along[0] * xy[k] + along[1] * xy[k + 1];
+            out[k + 1] = -along[1] * xy[k] + along[0] * xy[k + 1];
+        }
+        return out;
+    }
+
+    /** Triangle t of the mesh in a host's frame, x0 y0 x1 y1 x2 y2, counter-clockwise. */
+    private static double[] cornersIn(IndexedPolygons mesh, int t, HostFrame frame) {
+        double[] xy = new double[6];
+        for (int k = 0; k < 3; k++) {
+            int v = mesh.faceVertex(t, k);
+            double[] p = {mesh.coordinate(v, 0), mesh.coordinate(v, 1), mesh.coordinate(v, 2)};
+            xy[2 * k] = frame.localX(p);
+            xy[2 * k + 1] = frame.localY(p);
+        }
+        return counterClockwise(xy);
+    }
+
     /** The faces of a sheet over a point (x, y) of one triangle, counted by where they came from. */
-    private static Deepest deepest(Sheet sheet, int strip, int triangle, double[] xy, HostFrame frame) {
+    private static Deepest deepest(Sheet sheet, int strip, int triangle, double[] xy, int host, HostFrame frame) {
         int layers = 0;
         int passes = 0;
         int gadgets = 0;
         int crossings = 0;
         int tucks = 0;
-        for (int f : sheet.facesOn(triangle)) {
+        for (int f : sheet.facesOn(host)) {
             if (!strictlyInside(counterClockwise(sheet.placed(f)), xy[0], xy[1])) {
                 continue;
             }
@@ -219,11 +308,12 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
                 double[] xy = sheet.placed(f);
                 double whole = Math.abs(Polygons2.twiceArea(xy, xy.length / 2)) / 2;
                 double[] inside = xy;
-                for (int e = 0; e < 3 && inside != null; e++) {
+                int n = c.length / 2;
+                for (int e = 0; e < n && inside != null; e++) {
                     double ax = c[2 * e];
                     double ay = c[2 * e + 1];
-                    double dx = c[2 * ((e + 1) % 3)] - ax;
-                    double dy = c[2 * ((e + 1) % 3) + 1] - ay;
+                    double dx = c[2 * ((e + 1) % n)] - ax;
+                    double dy = c[2 * ((e + 1) % n) + 1] - ay;
                     // Inside is left of each edge: dy·x - dx·y <= dy·ax - dx·ay.
                     inside = Polygons2.clip(inside, inside.length / 2, dy, -dx, dy * ax - dx * ay, 0);
                 }
@@ -235,22 +325,14 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
     }
 
     /**
-     * Whether crease (a, b) of face f lies along an edge of the model: on a refinement, the
-     * original edge its triangle stands on (its other sides are spokes inside the face); on any
-     * other path, a side of its triangle.
+     * Whether crease (a, b) of face f lies along an edge of the model: a side of its host, the
+     * convex piece of the model's plane it rests on (the refinement's spokes lie inside).
      */
-    private static boolean onModelEdge(Sheet sheet, int f, int a, int b, RefinedMesh refined, HostFrame[] frames) {
-        HostFrame frame = frames[sheet.host(f)];
-        if (refined != null) {
-            HalfedgeMesh original = refined.original();
-            int h = refined.parentHalfedge(sheet.host(f));
-            double[] from = point(original, original.fromVertex(h));
-            double[] to = point(original, original.toVertex(h));
-            return onLine(sheet, f, a, b, frame.localX(from), frame.localY(from), frame.localX(to), frame.localY(to));
-        }
-        double[] c = frame.corners();
-        for (int e = 0; e < 3; e++) {
-            int next = (e + 1) % 3;
+    private static boolean onModelEdge(Sheet sheet, int f, int a, int b, HostFrame[] frames) {
+        double[] c = frames[sheet.host(f)].corners();
+        int n = c.length / 2;
+        for (int e = 0; e < n; e++) {
+            int next = (e + 1) % n;
             if (onLine(sheet, f, a, b, c[2 * e], c[2 * e + 1], c[2 * next], c[2 * next + 1])) {
                 return true;
             }
@@ -274,18 +356,15 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
         return true;
     }
 
-    private static double[] point(HalfedgeMesh mesh, int v) {
-        return new double[] {mesh.x(v), mesh.y(v), mesh.z(v)};
-    }
-
     /** How far the polygon reaches beyond the triangle (corners counter-clockwise), 0 if not at all. */
     private static double beyond(double[] c, double[] xy) {
         double worst = 0;
-        for (int e = 0; e < 3; e++) {
+        int n = c.length / 2;
+        for (int e = 0; e < n; e++) {
             double ax = c[2 * e];
             double ay = c[2 * e + 1];
-            double dx = c[2 * ((e + 1) % 3)] - ax;
-            double dy = c[2 * ((e + 1) % 3) + 1] - ay;
+            double dx = c[2 * ((e + 1) % n)] - ax;
+            double dy = c[2 * ((e + 1) % n) + 1] - ay;
             double length = Math.hypot(dx, dy);
             for (int k = 0; k < xy.length; k += 2) {
                 worst = Math.max(worst, ((xy[k] - ax) * dy - (xy[k + 1] - ay) * dx) / length);

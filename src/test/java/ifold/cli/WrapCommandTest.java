@@ -25,7 +25,10 @@ class WrapCommandTest {
         assertEquals(12, CliTest.number(json, "inputTriangles"), 0);
         assertEquals(58, CliTest.number(json, "refinedTriangles"), 0, "5n - 2");
         assertEquals(1.0, CliTest.number(json, "coverage"), 1e-12);
-        assertEquals(57, CliTest.number(json, "edgeCrossings"), 0, "one fold over an edge between each two triangles of the path");
+        // Folded over the cube's edges only, from face to face (all six, so 5 at least); over the
+        // edges between two triangles of a face, the strip runs on flat.
+        double crossings = CliTest.number(json, "edgeCrossings");
+        assertTrue(crossings >= 5 && crossings < 57, "folds over an edge between faces: " + crossings);
         assertTrue(CliTest.number(json, "isometryError") <= 1e-9, json);
         assertTrue(CliTest.number(json, "maxLayers") <= CliTest.number(json, "stackLayers"), json);
         double length = CliTest.number(json, "length");
@@ -45,20 +48,21 @@ class WrapCommandTest {
     }
 
     /**
-     * One triangle with a corner of 0.001°: it ran past 300 s (issue 22); it is refused before
-     * any fold with the estimate, as a strip too narrow for the limit on faces is (since the
-     * floor under the faces, 590cba0: this test guards it, it did not fail on the code it came with).
+     * One triangle with a corner of 0.001°: it ran past 300 s (issue 22). Its 243,096 passes
+     * make at least 486,192 faces, under the limit, so it is folded, in time linear in its
+     * faces (a stack finds the faces a new one overlaps through a grid), and stopped where it
+     * passes the limit.
      */
     @Test
-    void aTriangleWithACornerOfAThousandthOfADegreeIsRefusedAtOnce() throws Exception {
+    void aTriangleWithACornerOfAThousandthOfADegreeIsRefusedInSeconds() throws Exception {
         double angle = Math.toRadians(0.001);
         Path model = dir.resolve("sharp.off");
         Files.writeString(model, "OFF\n3 1 0\n0 0 0\n1 0 0\n" + Math.cos(angle) + " " + Math.sin(angle) + " 0\n3 0 1 2\n");
         long start = System.nanoTime();
         CliTest.Run run = CliTest.run("wrap", model.toString(), "--no-view");
         double seconds = (System.nanoTime() - start) * 1e-9;
-        CliTest.assertOneLineError(run, model + ": cannot wrap: a strip ", " passes and make about ", "more than the limit of 500000 faces");
-        assertTrue(seconds < 20, "at once, not after folding: " + seconds + " s");
+        CliTest.assertOneLineError(run, model + ": cannot wrap: the strip has ", "more than the limit of 500000 faces");
+        assertTrue(seconds < 30, "in seconds, not minutes: " + seconds + " s");
     }
 
     @Test
@@ -118,12 +122,12 @@ class WrapCommandTest {
         Path obj = dir.resolve("r.obj");
         String[] outputs = {"--no-view", "--report", report.toString(), "--export-obj", obj.toString()};
         assertOptionError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--max-faces", "0"}, outputs)), "--max-faces");
-        // The cube's default wrap takes 331 passes, at least 1,341 faces by the estimate, and makes 2,686.
-        CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--max-faces", "1000"}, outputs)),
-                "cube.off", "331 passes", "(at least 1341)", "more than the limit of 1000 faces", "no strip the path takes fits: the widest, 0.1913",
+        // The cube's default wrap takes 331 passes, at least 662 faces by the estimate, and makes 1,160.
+        CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--max-faces", "600"}, outputs)),
+                "cube.off", "331 passes", "(at least 662)", "more than the limit of 600 faces", "no strip the path takes fits: the widest, 0.1913",
                 "--max-faces");
-        CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--max-faces", "2000"}, outputs)),
-                "cube.off", "faces of paper on triangle", "more than the limit of 2000 faces", "--max-faces");
+        CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--max-faces", "1000"}, outputs)),
+                "cube.off", "faces of paper on triangle", "more than the limit of 1000 faces", "--max-faces");
         assertFalse(Files.exists(report), "no report after a failure");
         assertFalse(Files.exists(obj), "no OBJ after a failure");
         assertEquals(0, CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--max-faces", "100000"}, outputs)).code());

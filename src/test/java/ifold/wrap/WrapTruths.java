@@ -25,8 +25,10 @@ import java.util.SplittableRandom;
  * <li>{@link #NOT_TORN}: faces that are neighbours on the sheet are neighbours in space (or
  * joined by a cap across at most a few thicknesses);</li>
  * <li>{@link #COVERED}: random points of the model lie under paper;</li>
- * <li>{@link #ON_SURFACE}: every paper face lies flat on one model triangle, outside the solid and
- * at most (maxStack + 1) thicknesses above it; every cap vertex is near the surface.</li>
+ * <li>{@link #ON_SURFACE}: every paper face lies flat on the model, outside the solid and at most
+ * (maxStack + 1) thicknesses above it: on one model triangle, or over triangles of one plane that
+ * cover all of it (the strip lies flat across the edges between coplanar triangles); every cap
+ * vertex is near the surface.</li>
  * </ol>
  * Tolerances scale with the model (its bounding-box diagonal, "size"), with the sheet, or with the
  * face, as each truth says. An instance is not thread-safe: {@link #check} records its summary.
@@ -917,7 +919,14 @@ public final class WrapTruths {
                 }
             }
             if (!rests) {
-                report.add(ON_SURFACE, face(f) + " rests on no model triangle: "
+                double highest = restsOnPlane(f, model, candidates, eps, top);
+                if (!Double.isNaN(highest)) {
+                    rests = true;
+                    farthest = Double.isNaN(farthest) ? highest : Math.max(farthest, highest);
+                }
+            }
+            if (!rests) {
+                report.add(ON_SURFACE, face(f) + " rests on no model triangle, nor on triangles of one plane: "
                         + (parallels == 0 ? "none within reach is parallel to it"
                                 : parallels + " parallel within reach, the nearest, triangle " + (bestTriangle + 1) + ", "
                                         + restingWhy(f, model, bestTriangle, eps, top)));
@@ -974,6 +983,127 @@ public final class WrapTruths {
             }
         }
         return miss;
+    }
+
+    /**
+     * Whether paper face f lies over triangles of one plane that cover it: each corner within
+     * [-eps, top + eps] of their plane, and the parts of f over each (its projection clipped to
+     * the triangle) adding up to f's area, to eps times its perimeter. The highest corner's
+     * height if so, else NaN.
+     */
+    private double restsOnPlane(int f, Model model, Ints candidates, double eps, double top) {
+        double[] n = null;
+        int plane = -1;
+        for (int k = 0; k < candidates.size() && plane < 0; k++) {
+            int t = candidates.get(k);
+            if (!parallel(geometryNormal(f), model.normal(t))) {
+                continue;
+            }
+            boolean within = true;
+            for (int c = faceStart[f]; c < faceStart[f + 1] && within; c++) {
+                double height = model.height(t, xyz, 3 * cornerV[c]);
+                within = height >= -eps && height <= top + eps;
+            }
+            if (within) {
+                plane = t;
+                n = model.normal(t);
+            }
+        }
+        if (plane < 0) {
+            return Double.NaN;
+        }
+        // A frame in the plane: e1 along the first triangle's first edge, e2 = n × e1.
+        double[] e1 = {model.corners[9 * plane + 3] - model.corners[9 * plane], model.corners[9 * plane + 4] - model.corners[9 * plane + 1],
+            model.corners[9 * plane + 5] - model.corners[9 * plane + 2]};
+        double length = Math.sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
+        e1 = new double[] {e1[0] / length, e1[1] / length, e1[2] / length};
+        double[] e2 = {n[1] * e1[2] - n[2] * e1[1], n[2] * e1[0] - n[0] * e1[2], n[0] * e1[1] - n[1] * e1[0]};
+        int corners = faceStart[f + 1] - faceStart[f];
+        double[] face = new double[2 * corners];
+        double perimeter = 0;
+        double highest = Double.NEGATIVE_INFINITY;
+        for (int c = 0; c < corners; c++) {
+            int v = cornerV[faceStart[f] + c];
+            face[2 * c] = xyz[3 * v] * e1[0] + xyz[3 * v + 1] * e1[1] + xyz[3 * v + 2] * e1[2];
+            face[2 * c + 1] = xyz[3 * v] * e2[0] + xyz[3 * v + 1] * e2[1] + xyz[3 * v + 2] * e2[2];
+            perimeter += distance(xyz, 3 * v, xyz, 3 * cornerV[faceStart[f] + (c + 1) % corners]);
+            highest = Math.max(highest, model.height(plane, xyz, 3 * v));
+        }
+        double whole = Math.abs(twiceArea(face)) / 2;
+        double covered = 0;
+        for (int k = 0; k < candidates.size(); k++) {
+            int t = candidates.get(k);
+            if (!parallel(n, model.normal(t)) || Math.abs(model.height(plane, model.corners, 9 * t)) > eps) {
+                continue;
+            }
+            double[] triangle = new double[6];
+            for (int c = 0; c < 3; c++) {
+                int i = 9 * t + 3 * c;
+                triangle[2 * c] = model.corners[i] * e1[0] + model.corners[i + 1] * e1[1] + model.corners[i + 2] * e1[2];
+                triangle[2 * c + 1] = model.corners[i] * e2[0] + model.corners[i + 1] * e2[1] + model.corners[i + 2] * e2[2];
+            }
+            double[] part = face;
+            double sign = Math.signum(twiceArea(triangle));
+            for (int c = 0; c < 3 && part != null; c++) {
+                double ax = triangle[2 * c];
+                double ay = triangle[2 * c + 1];
+                double bx = triangle[2 * ((c + 1) % 3)];
+                double by = triangle[2 * ((c + 1) % 3) + 1];
+                part = clipLeft(part, ax, ay, bx, by, sign);
+            }
+            if (part != null) {
+                covered += Math.abs(twiceArea(part)) / 2;
+            }
+        }
+        return whole - covered <= eps * perimeter ? highest : Double.NaN;
+    }
+
+    private double[] geometryNormal(int f) {
+        double[] n = new double[3];
+        int corners = faceStart[f + 1] - faceStart[f];
+        for (int c = 0; c < corners; c++) {
+            int a = 3 * cornerV[faceStart[f] + c];
+            int b = 3 * cornerV[faceStart[f] + (c + 1) % corners];
+            n[0] += (xyz[a + 1] - xyz[b + 1]) * (xyz[a + 2] + xyz[b + 2]);
+            n[1] += (xyz[a + 2] - xyz[b + 2]) * (xyz[a] + xyz[b]);
+            n[2] += (xyz[a] - xyz[b]) * (xyz[a + 1] + xyz[b + 1]);
+        }
+        double length = Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        return new double[] {n[0] / length, n[1] / length, n[2] / length};
+    }
+
+    private static double twiceArea(double[] xy) {
+        double twice = 0;
+        int n = xy.length / 2;
+        for (int i = 0; i < n; i++) {
+            int j = (i + 1) % n;
+            twice += xy[2 * i] * xy[2 * j + 1] - xy[2 * j] * xy[2 * i + 1];
+        }
+        return twice;
+    }
+
+    /** The part of polygon xy on the inner side of the line a → b (its left for sign +1, its right for -1); null if none. */
+    private static double[] clipLeft(double[] xy, double ax, double ay, double bx, double by, double sign) {
+        int n = xy.length / 2;
+        double[] out = new double[4 * n + 4];
+        int m = 0;
+        for (int i = 0; i < n; i++) {
+            int j = (i + 1) % n;
+            double di = sign * ((bx - ax) * (xy[2 * i + 1] - ay) - (by - ay) * (xy[2 * i] - ax));
+            double dj = sign * ((bx - ax) * (xy[2 * j + 1] - ay) - (by - ay) * (xy[2 * j] - ax));
+            if (di >= 0) {
+                out[2 * m] = xy[2 * i];
+                out[2 * m + 1] = xy[2 * i + 1];
+                m++;
+            }
+            if ((di > 0 && dj < 0) || (di < 0 && dj > 0)) {
+                double t = di / (di - dj);
+                out[2 * m] = xy[2 * i] + t * (xy[2 * j] - xy[2 * i]);
+                out[2 * m + 1] = xy[2 * i + 1] + t * (xy[2 * j + 1] - xy[2 * i + 1]);
+                m++;
+            }
+        }
+        return m >= 3 ? Arrays.copyOf(out, 2 * m) : null;
     }
 
     /** restingMiss in words: the first corner that keeps f off t. */
