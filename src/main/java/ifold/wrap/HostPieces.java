@@ -364,22 +364,23 @@ final class HostPieces {
         private boolean convex(int[] l, double[] n) {
             int count = l.length;
             for (int k = 0; k < count; k++) {
-                int a = l[(k + count - 1) % count];
-                int b = l[k];
-                int c = l[(k + 1) % count];
-                double[] u = new double[3];
-                double[] w = new double[3];
-                for (int axis = 0; axis < 3; axis++) {
-                    u[axis] = points.coordinate(b, axis) - points.coordinate(a, axis);
-                    w[axis] = points.coordinate(c, axis) - points.coordinate(b, axis);
-                }
-                double turn = n[0] * (u[1] * w[2] - u[2] * w[1]) + n[1] * (u[2] * w[0] - u[0] * w[2]) + n[2] * (u[0] * w[1] - u[1] * w[0]);
-                double scale = Math.sqrt((u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]));
-                if (turn < -1e-12 * scale) {
+                if (turn(l[(k + count - 1) % count], l[k], l[(k + 1) % count], n) < -1e-12) {
                     return false;
                 }
             }
             return true;
+        }
+
+        /** How far the path a → b → c turns left at b, seen along n: the sine of the turn. */
+        private double turn(int a, int b, int c, double[] n) {
+            double[] u = new double[3];
+            double[] w = new double[3];
+            for (int axis = 0; axis < 3; axis++) {
+                u[axis] = points.coordinate(b, axis) - points.coordinate(a, axis);
+                w[axis] = points.coordinate(c, axis) - points.coordinate(b, axis);
+            }
+            double cross = n[0] * (u[1] * w[2] - u[2] * w[1]) + n[1] * (u[2] * w[0] - u[0] * w[2]) + n[2] * (u[0] * w[1] - u[1] * w[0]);
+            return cross / Math.sqrt((u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]));
         }
 
         private double[] normal(int[] l) {
@@ -404,26 +405,13 @@ final class HostPieces {
 
         /** A piece's corners: its loop less the vertices in line with their neighbours (a refinement's midpoints, a cut edge's points). */
         int[] corners(int piece) {
-            return cornersOf(loop[piece], normal[piece]);
-        }
-
-        int[] cornersOf(int[] l, double[] n) {
+            int[] l = loop[piece];
+            double[] n = normal[piece];
             List<Integer> kept = new ArrayList<>();
             int count = l.length;
             for (int k = 0; k < count; k++) {
-                int a = l[(k + count - 1) % count];
-                int b = l[k];
-                int c = l[(k + 1) % count];
-                double[] u = new double[3];
-                double[] w = new double[3];
-                for (int axis = 0; axis < 3; axis++) {
-                    u[axis] = points.coordinate(b, axis) - points.coordinate(a, axis);
-                    w[axis] = points.coordinate(c, axis) - points.coordinate(b, axis);
-                }
-                double turn = n[0] * (u[1] * w[2] - u[2] * w[1]) + n[1] * (u[2] * w[0] - u[0] * w[2]) + n[2] * (u[0] * w[1] - u[1] * w[0]);
-                double scale = Math.sqrt((u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]));
-                if (turn > 1e-12 * scale) {
-                    kept.add(b);
+                if (turn(l[(k + count - 1) % count], l[k], l[(k + 1) % count], n) > 1e-12) {
+                    kept.add(l[k]);
                 }
             }
             return kept.stream().mapToInt(Integer::intValue).toArray();

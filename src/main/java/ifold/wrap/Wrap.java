@@ -346,7 +346,7 @@ public final class Wrap {
         if (!(width > 0) || !Double.isFinite(width)) {
             return Long.MAX_VALUE;
         }
-        return likelyFaces(passesAt(plans, width), refinement.mesh().faceCount());
+        return faces(plans, width, alone(HostPieces.of(refinement.mesh())), true);
     }
 
     /** The passes the narrowest triangle gets at the default width. */
@@ -481,9 +481,7 @@ public final class Wrap {
         long passes = 0;
         int most = -1;
         int mostPasses = 0;
-        int triangles = 0;
         for (PathPlan plan : plans) {
-            triangles += plan.m;
             for (int i = 0; i < plan.m; i++) {
                 int k = passes(plan.frames[i].corners()[5], width);
                 passes += k;
@@ -493,17 +491,18 @@ public final class Wrap {
                 }
             }
         }
-        long fewestFaces = fewestFaces(passes, triangles);
+        HostPieces pieces = HostPieces.of(mesh);
+        boolean[] alone = alone(pieces);
+        long fewestFaces = faces(plans, width, alone, false);
         if (fewestFaces > options.maxFaces()) {
-            double fits = narrowestFitting(plans, triangles, width, widest, options.maxFaces());
+            double fits = narrowestFitting(plans, alone, width, widest, options.maxFaces());
             throw new FaceLimitException(String.format(Locale.ROOT, "a strip %.4g wide would need %d passes and make about %d faces "
                     + "of paper (at least %d), more than the limit of %d faces: triangle %s alone needs %d passes; %s", width, passes,
-                    likelyFaces(passes, triangles), fewestFaces, options.maxFaces(), cornersText(mesh, most), mostPasses,
+                    faces(plans, width, alone, true), fewestFaces, options.maxFaces(), cornersText(mesh, most), mostPasses,
                     !Double.isNaN(fits) ? String.format(Locale.ROOT, "the narrowest strip that fits is about %.4g wide", fits)
                     : String.format(Locale.ROOT, "no strip the path takes fits: the widest, %.4g, which the narrowest triangle (%s) "
-                    + "sets, would make about %d", widest, cornersText(mesh, narrowest), likelyFaces(passesAt(plans, widest), triangles))));
+                    + "sets, would make about %d", widest, cornersText(mesh, narrowest), faces(plans, widest, alone, true))));
         }
-        HostPieces pieces = HostPieces.of(mesh);
         HostFrame[] frames = hostFrames(mesh, pieces, triangleFrames);
         Isometry2[] toHost = new Isometry2[mesh.faceCount()];
         for (PathPlan plan : plans) {
@@ -725,51 +724,63 @@ public final class Wrap {
         throw new TooWideException(tooWide(mesh, plan.first + last, last, plan.m, width, plan.frames[last].corners()[5], widest));
     }
 
-    /**
-     * The fewest faces of paper {@code passes} passes over {@code triangles} triangles of the
-     * path make: 2 a pass, as each turn between two passes of a triangle and each triangle's
-     * turn gadget lays two faces (the tucks and the crossings between hosts cut more). A floor: a
-     * wrap refused by it could never fit. Measured over the models and widths from the widest to
-     * a thirtieth of it: 2.3 to 11 a pass, and beyond 2 a pass, 5 to 320 a triangle.
-     */
-    static long fewestFaces(long passes, int triangles) {
-        return 2 * passes;
+    /** Whether each triangle of the mesh is alone on its host (a curved surface's are). */
+    private static boolean[] alone(HostPieces pieces) {
+        int[] count = new int[pieces.hostCount()];
+        for (int h : pieces.hostOf) {
+            count[h]++;
+        }
+        boolean[] alone = new boolean[pieces.hostOf.length];
+        for (int t = 0; t < alone.length; t++) {
+            alone[t] = count[pieces.hostOf[t]] == 1;
+        }
+        return alone;
     }
 
-    /** The faces a wrap of {@code passes} passes over {@code triangles} triangles is likely to make, for a width to suggest: 3 a pass and 30 a triangle, above most measured. */
-    static long likelyFaces(long passes, int triangles) {
-        return 3 * passes + 30L * triangles;
+    /**
+     * The faces of paper the paths make at {@code width}, from the passes each triangle takes:
+     * the fewest, or ({@code likely}) about as many as they are likely to make, for a width to
+     * suggest. A triangle sharing its host with others lays at least 2 faces a pass (each turn
+     * between two passes and its turn gadget lay two; likely 3 a pass and 30 a triangle); one
+     * alone on its host at least 3 a pass and 6 besides (its crossing and its tucks cut more;
+     * likely 5 and 25). A floor: a wrap refused by it could never fit. Measured over the models
+     * and widths from the widest to a thirtieth of it: 2.3 to 11 a pass, and beyond 2 a pass, 5
+     * to 320 a triangle on shared hosts; 4.3 to 15 a pass, 12 to 290 a triangle alone.
+     */
+    private static long faces(List<PathPlan> plans, double width, boolean[] alone, boolean likely) {
+        long faces = 0;
+        for (PathPlan plan : plans) {
+            for (int i = 0; i < plan.m; i++) {
+                long k = passes(plan.frames[i].corners()[5], width);
+                if (alone[plan.first + i]) {
+                    faces += likely ? 5 * k + 25 : 3 * k + 6;
+                } else {
+                    faces += likely ? 3 * k + 30 : 2 * k;
+                }
+            }
+        }
+        return faces;
     }
 
     /**
      * The narrowest strip, between {@code width} and {@code widest}, likely to stay within
      * {@code limit} faces, to the nearest 0.1 %; NaN when even the widest is not.
      */
-    private static double narrowestFitting(List<PathPlan> plans, int triangles, double width, double widest, int limit) {
-        if (!(widest > width) || likelyFaces(passesAt(plans, widest), triangles) > limit) {
+    private static double narrowestFitting(List<PathPlan> plans, boolean[] alone, double width, double widest, int limit) {
+        if (!(widest > width) || faces(plans, widest, alone, true) > limit) {
             return Double.NaN;
         }
         double low = width;
         double high = widest;
         while (high > low * 1.001) {
             double middle = Math.sqrt(low * high);
-            if (likelyFaces(passesAt(plans, middle), triangles) > limit) {
+            if (faces(plans, middle, alone, true) > limit) {
                 low = middle;
             } else {
                 high = middle;
             }
         }
         return high;
-    }
-
-    private static long passesAt(List<PathPlan> plans, double width) {
-        long passes = 0;
-        for (PathPlan plan : plans) {
-            for (int i = 0; i < plan.m; i++) {
-                passes += passes(plan.frames[i].corners()[5], width);
-            }
-        }
-        return passes;
     }
 
     static int passes(double h, double width) {
