@@ -31,7 +31,7 @@ import java.util.Set;
  * or of the sheet) and moves some of them to a host, over or under the paper there, with their
  * neighbours on the sheet given the new vertices; it journals what it changed. A <b>tuck</b> is
  * one: it folds the paper resting on one host beyond a line under the rest of that host's
- * paper, so it costs what lies on its triangle.
+ * paper, so it costs what lies on its host.
  *
  * <p><b>Stacks.</b> Each host keeps which of its overlapping faces lies above which: a face laid
  * over (a valley fold, seen from the strip's outer side) lies above every face of the host it

@@ -17,8 +17,10 @@ import java.util.Locale;
 /**
  * Wraps a surface in one strip of paper per component, along the Hamiltonian path of its
  * refinement (Demaine, Demaine and Mitchell; the seed, section 2.5): the zig-zag method on every
- * triangle, a turn gadget and a fold over the shared edge to the next, and the excess of every
- * triangle tucked under that triangle.
+ * triangle, a turn gadget and a fold over the shared edge to the next, and the excess tucked
+ * under. The paper rests on hosts, the flat convex pieces of the surface ({@link HostPieces}):
+ * the strip runs flat over the edges inside one and folds over the edges between two, and what
+ * reaches past a host's edges is tucked under it once the strip leaves it.
  *
  * <p><b>Corners.</b> Each triangle t_i of a path is entered at the corner s_i opposite the edge
  * E_i it shares with t_{i+1}, so its passes run parallel to E_i and its last pass lies along E_i.

@@ -296,8 +296,8 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
     }
 
     /**
-     * The area of paper whose shadow on its triangle falls outside it: each face less its part
-     * inside the triangle. After the tucks, nothing (up to rounding).
+     * The area of paper whose shadow on its host falls outside it: each face less its part
+     * inside the host's polygon. After the tucks, nothing (up to rounding).
      */
     public static double outsideArea(Wrap.Result result) {
         double outside = 0;

@@ -7,15 +7,15 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * A wrapped strip in space: every face of its sheet placed on its triangle at its level, with
+ * A wrapped strip in space: every face of its sheet placed on its host at its level, with
  * vertices shared where neighbouring faces meet, and caps where they meet at different heights
  * (the paper bent around a fold, or over an edge of the surface).
  *
- * <p>A face at level k lies at height (k + 1/2)·T above its triangle: its mid-surface, so the
+ * <p>A face at level k lies at height (k + 1/2)·T above its host: its mid-surface, so the
  * paper's lower side touches the surface, or the face below. A cap at a flat fold on one
- * triangle is two 45° facets: from the crease on one layer out to a row half the gap beyond
+ * host is two 45° facets: from the crease on one layer out to a row half the gap beyond
  * it, halfway up, and back to the crease on the other layer. A cap over an edge of the surface
- * is one quad from the crease on one triangle's layer to the crease on the other's.
+ * is one quad from the crease on one host's layer to the crease on the other's.
  *
  * @param xyz x, y, z of each vertex
  * @param uv the paper coordinates of each vertex
