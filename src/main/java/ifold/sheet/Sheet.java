@@ -554,10 +554,10 @@ public final class Sheet {
                     Integer upper = partOf.get((int) (pair >>> 32));
                     Integer lower = partOf.get((int) pair);
                     if (upper != null) {
-                        inherited.add(((long) upper << 32) | (int) pair);
+                        inherited.add(((long) upper << 32) | (pair & 0xffffffffL));
                     }
                     if (lower != null) {
-                        inherited.add(((long) (int) (pair >>> 32) << 32) | lower);
+                        inherited.add((pair & ~0xffffffffL) | lower);
                     }
                     if (upper != null && lower != null) {
                         inherited.add(((long) upper << 32) | lower);
@@ -682,13 +682,7 @@ public final class Sheet {
                 }
             }
             // For each piece, the strips it must stay above, and all paper below them.
-            Map<Integer, List<Integer>> below = new HashMap<>();
-            if (!crossing.isEmpty()) {
-                for (int r = 0; r < stack.above.size(); r++) {
-                    long pair = stack.above.get(r);
-                    below.computeIfAbsent((int) (pair >>> 32), k -> new ArrayList<>()).add((int) pair);
-                }
-            }
+            Map<Integer, List<Integer>> below = crossing.isEmpty() ? new HashMap<>() : related(stack, true);
             List<Set<Integer>> under = new ArrayList<>();
             for (int piece = 0; piece < pieces; piece++) {
                 Set<Integer> set = new HashSet<>();
@@ -698,22 +692,12 @@ public final class Sheet {
                         open.add(f);
                     }
                 }
-                closeDownwards(set, open, below, faces);
+                closeDownwards(set, open, below, faces, null);
                 under.add(set);
             }
             move(faces, host, reflection, Placement.UNDER, new TuckPlace(pieceOf, under, below, hinges, lowestHinge), levelOf);
         }
 
-        /** Adds to {@code under} every face below those in {@code open}, through the stack's relations {@code below}, but the moving. */
-        private void closeDownwards(Set<Integer> under, ArrayDeque<Integer> open, Map<Integer, List<Integer>> below, Set<Integer> faces) {
-            while (!open.isEmpty()) {
-                for (int g : below.getOrDefault(open.poll(), List.of())) {
-                    if (!faces.contains(g) && under.add(g)) {
-                        open.add(g);
-                    }
-                }
-            }
-        }
 
         private boolean onLine(Isometry2 pose, int p, double nx, double ny, double c) {
             return Math.abs(nx * pose.x(u(p), v(p)) + ny * pose.y(u(p), v(p)) - c) <= tolerance;
@@ -721,8 +705,8 @@ public final class Sheet {
 
         /**
          * As {@link #move(Set, int, Isometry2, Placement)}; with a {@code tuckPlace} (not null),
-         * a tuck ({@link #tuckUnder}) just above that level of the stack, whose levels before
-         * the move {@code levelBefore} holds.
+         * a tuck ({@link #tuckUnder}), placed as {@link #placeTucked} says, with the stack's
+         * levels before the move {@code levelBefore}.
          */
         private void move(Set<Integer> faces, int toHost, Isometry2 frameChange, Placement placement, TuckPlace tuckPlace,
                 Map<Integer, Integer> levelBefore) {
@@ -915,6 +899,39 @@ public final class Sheet {
     }
 
     /**
+     * Adds to {@code under} every face below those in {@code open}, through a stack's relations
+     * {@code below}, but the {@code moving}; each face added goes to {@code added} too, if given.
+     */
+    private static void closeDownwards(Set<Integer> under, ArrayDeque<Integer> open, Map<Integer, List<Integer>> below,
+            Set<Integer> moving, ArrayDeque<Integer> added) {
+        while (!open.isEmpty()) {
+            for (int g : below.getOrDefault(open.poll(), List.of())) {
+                if (!moving.contains(g) && under.add(g)) {
+                    open.add(g);
+                    if (added != null) {
+                        added.add(g);
+                    }
+                }
+            }
+        }
+    }
+
+    /**
+     * A stack's relations by face: the faces directly below each ({@code byUpper}), or directly
+     * above each.
+     */
+    private static Map<Integer, List<Integer>> related(Stack stack, boolean byUpper) {
+        Map<Integer, List<Integer>> related = new HashMap<>();
+        for (int r = 0; r < stack.above.size(); r++) {
+            long pair = stack.above.get(r);
+            int upper = (int) (pair >>> 32);
+            int lower = (int) pair;
+            related.computeIfAbsent(byUpper ? upper : lower, k -> new ArrayList<>()).add(byUpper ? lower : upper);
+        }
+        return related;
+    }
+
+    /**
      * Adds to {@code under} the staying faces that continue a face of it on the host (across an
      * edge of the sheet) into paper the {@code piece} overlaps, below its lowest hinge, with all
      * paper below them.
@@ -941,15 +958,7 @@ public final class Sheet {
                 if (overlapped) {
                     under.add(across);
                     open.add(across);
-                    ArrayDeque<Integer> down = new ArrayDeque<>(List.of(across));
-                    while (!down.isEmpty()) {
-                        for (int h : place.below().getOrDefault(down.poll(), List.of())) {
-                            if (!faces.contains(h) && under.add(h)) {
-                                down.add(h);
-                                open.add(h);
-                            }
-                        }
-                    }
+                    closeDownwards(under, new ArrayDeque<>(List.of(across)), place.below(), faces, open);
                 }
             }
         }
@@ -1093,7 +1102,6 @@ public final class Sheet {
         int lowestAbove = Integer.MAX_VALUE;
         List<Integer> touching = new ArrayList<>();
         Map<Integer, Boolean> overOf = new HashMap<>();
-        Map<Integer, Integer> placeOf = new HashMap<>();
         for (int i : stack.near(f)) {
             int g = stack.faces[i];
             if (overlap(f, g)) {
@@ -1105,15 +1113,14 @@ public final class Sheet {
                 }
                 touching.add(g);
                 overOf.put(g, over);
-                placeOf.put(g, i);
             }
         }
         if (hinge >= 0) {
-            outOfFolds(f, hinge, stack, levels, touching, overOf, placeOf);
+            outOfFolds(f, hinge, stack, levels, touching, overOf);
         }
         for (int g : touching) {
             boolean over = overOf.get(g);
-            int i = placeOf.get(g);
+            int i = slotOf[g];
             stack.above.add(over ? ((long) f << 32) | g : ((long) g << 32) | f);
             if (known != null && over) {
                 level = Math.max(level, known[i] + 1);
@@ -1140,8 +1147,7 @@ public final class Sheet {
      * likewise under a face whose partner above it lies over the new face, unless that would
      * contradict the order already there (a face it lies under, or over, below g or above it).
      */
-    private void outOfFolds(int f, int hinge, Stack stack, int[] levels, List<Integer> touching, Map<Integer, Boolean> overOf,
-            Map<Integer, Integer> placeOf) {
+    private void outOfFolds(int f, int hinge, Stack stack, int[] levels, List<Integer> touching, Map<Integer, Boolean> overOf) {
         Map<Integer, List<Integer>> below = null;
         Map<Integer, List<Integer>> aboveOf = null;
         double[] placedF = placedCached(f);
@@ -1162,20 +1168,15 @@ public final class Sheet {
                 if (dOver == null || dOver == over) {
                     continue;
                 }
-                boolean gAbove = levels[placeOf.get(g)] > levels[placeOf.get(d)];
+                boolean gAbove = levels[slotOf[g]] > levels[slotOf[d]];
                 // Inside the fold: under the upper layer and over the lower one, across its crease.
                 Isometry2 pose = poseOf.get(g);
                 if (gAbove == over || !crosses(placedF, pose.x(u(a), v(a)), pose.y(u(a), v(a)), pose.x(u(b), v(b)), pose.y(u(b), v(b)))) {
                     continue;
                 }
                 if (below == null) {
-                    below = new HashMap<>();
-                    aboveOf = new HashMap<>();
-                    for (int r = 0; r < stack.above.size(); r++) {
-                        long pair = stack.above.get(r);
-                        below.computeIfAbsent((int) (pair >>> 32), x -> new ArrayList<>()).add((int) pair);
-                        aboveOf.computeIfAbsent((int) pair, x -> new ArrayList<>()).add((int) (pair >>> 32));
-                    }
+                    below = related(stack, true);
+                    aboveOf = related(stack, false);
                 }
                 // Over g means over all below it: none of those may be a face it lies under.
                 Map<Integer, List<Integer>> onward = over ? aboveOf : below;

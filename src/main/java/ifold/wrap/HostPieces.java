@@ -127,13 +127,12 @@ final class HostPieces {
             int n = path.faceCount();
             int[][] loop = new int[n][];
             int[] cellOf = new int[n];
-            Map<Long, Integer> firstSide = new HashMap<>();
-            Cells cells;
             for (int t = 0; t < n; t++) {
                 loop[t] = new int[] {path.faceVertex(t, 0), path.faceVertex(t, 1), path.faceVertex(t, 2)};
                 cellOf[t] = t;
             }
-            cells = new Cells(path, loop, cellOf);
+            Cells cells = new Cells(path, loop, cellOf);
+            Map<Long, Integer> firstSide = new HashMap<>();
             for (int t = 0; t < n; t++) {
                 for (int k = 0; k < 3; k++) {
                     int a = loop[t][k];

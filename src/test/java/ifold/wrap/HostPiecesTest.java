@@ -45,20 +45,7 @@ class HostPiecesTest {
     /** An L-shaped prism: each L face (a non-convex hexagon) is cut into two convex pieces, the quads are one each. */
     @Test
     void anLShapedFaceIsCutIntoConvexPieces() throws Exception {
-        double[][] l = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
-        PolygonSoup soup = new PolygonSoup();
-        for (double z : new double[] {0, 0.7}) {
-            for (double[] p : l) {
-                soup.addVertex(p[0], p[1], z);
-            }
-        }
-        soup.addFace(new int[] {5, 4, 3, 2, 1, 0}, 6, 0);
-        soup.addFace(new int[] {6, 7, 8, 9, 10, 11}, 6, 0);
-        for (int i = 0; i < 6; i++) {
-            int j = (i + 1) % 6;
-            soup.addFace(new int[] {i, j, 6 + j, 6 + i}, 4, 0);
-        }
-        HalfedgeMesh mesh = MeshBuilder.build(soup, MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();
+        HalfedgeMesh mesh = MeshBuilder.build(WrapTest.lPrism(), MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();
         IndexedPolygons path = HamiltonianRefinement.refine(mesh).mesh();
         HostPieces pieces = HostPieces.of(path);
         assertEquals(6 + 2 * 2, pieces.hostCount(), "six quads, two pieces each L");

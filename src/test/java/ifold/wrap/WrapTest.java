@@ -187,6 +187,13 @@ class WrapTest {
     /** An L-shaped prism: two non-convex hexagons (ear-clipped) and six quads, one reflex edge along its height. */
     @Test
     void wrapsAnLShapedPrism() throws Exception {
+        HalfedgeMesh mesh = build(lPrism());
+        assertEquals(20, mesh.faceCount(), "setup: 2 hexagons of 4 triangles and 6 quads of 2");
+        wrapAndCheck(mesh, new Wrap.Options(Double.NaN, Double.NaN), 2000);
+    }
+
+    /** A prism 0.7 high on an L of three unit squares: two non-convex hexagons and six quads. */
+    static PolygonSoup lPrism() {
         double[][] l = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
         PolygonSoup soup = new PolygonSoup();
         for (double z : new double[] {0, 0.7}) {
@@ -200,9 +207,7 @@ class WrapTest {
             int j = (i + 1) % 6;
             soup.addFace(new int[] {i, j, 6 + j, 6 + i}, 4, 0);
         }
-        HalfedgeMesh mesh = build(soup);
-        assertEquals(20, mesh.faceCount(), "setup: 2 hexagons of 4 triangles and 6 quads of 2");
-        wrapAndCheck(mesh, new Wrap.Options(Double.NaN, Double.NaN), 2000);
+        return soup;
     }
 
     /** A star: an octahedron with a pyramid on each face, 24 triangles, twelve reflex edges between the pyramids. */
