@@ -253,13 +253,13 @@ final class CreaseLayers {
         }
     }
 
-    /** The faces of a plane whose boxes meet the segment's box, each once. */
+    /** The faces of a plane that share a cell of its grid with the segment, each once. */
     private static int[] candidates(PlanarFaces faces, int plane, double ax, double ay, double bx, double by) {
         PlanarFaces.Grid grid = faces.grid(plane);
         int[][] found = {new int[8]};
         int[] count = {0};
         int mark = faces.nextMark();
-        grid.forBox(Math.min(ax, bx), Math.min(ay, by), Math.max(ax, bx), Math.max(ay, by), key -> {
+        grid.forPolygon(new double[] {ax, ay, bx, by}, key -> {
             int[] list = grid.cells.get(key);
             if (list == null) {
                 return;

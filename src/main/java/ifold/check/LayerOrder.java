@@ -153,34 +153,44 @@ public final class LayerOrder {
         int[] upper = new int[16];
         int edges = 0;
         long pairs = 0;
-        double[] box = faces.box;
-        for (Map.Entry<Long, int[]> cell : grid.cells.entrySet()) {
-            int[] list = cell.getValue();
-            long key = cell.getKey();
-            for (int i = 1; i <= list[0]; i++) {
-                int f = list[i];
-                for (int j = i + 1; j <= list[0]; j++) {
-                    int g = list[j];
-                    // Each pair once: in the cell holding the corner where their boxes' overlap starts.
-                    if (grid.key(grid.ix(Math.max(box[4 * f], box[4 * g])), grid.iy(Math.max(box[4 * f + 1], box[4 * g + 1])))
-                            != key || !faces.overlap(f, g)) {
-                        continue;
+        // Each face against the later faces of the cells it meets, each of them once.
+        int[][] found = {new int[16]};
+        int[] count = new int[1];
+        for (int f : members) {
+            int mark = faces.nextMark();
+            count[0] = 0;
+            grid.forPolygon(faces.polygon[f], key -> {
+                int[] list = grid.cells.get(key);
+                for (int i = list[0]; i >= 1 && list[i] > f; i--) {
+                    int g = list[i];
+                    if (faces.marks[g] != mark) {
+                        faces.marks[g] = mark;
+                        if (count[0] == found[0].length) {
+                            found[0] = Arrays.copyOf(found[0], 2 * count[0]);
+                        }
+                        found[0][count[0]++] = g;
                     }
-                    pairs++;
-                    int order = faces.above(f, g);
-                    if (order == 0) {
-                        findings.add(Kind.UNORDERED, new int[] {f, g}, "faces " + f + " and " + g
-                                + " overlap in one plane, and the file does not say which lies above");
-                        continue;
-                    }
-                    if (edges == lower.length) {
-                        lower = Arrays.copyOf(lower, 2 * edges);
-                        upper = Arrays.copyOf(upper, 2 * edges);
-                    }
-                    lower[edges] = order > 0 ? g : f;
-                    upper[edges] = order > 0 ? f : g;
-                    edges++;
                 }
+            });
+            for (int k = 0; k < count[0]; k++) {
+                int g = found[0][k];
+                if (!faces.overlap(f, g)) {
+                    continue;
+                }
+                pairs++;
+                int order = faces.above(f, g);
+                if (order == 0) {
+                    findings.add(Kind.UNORDERED, new int[] {f, g}, "faces " + f + " and " + g
+                            + " overlap in one plane, and the file does not say which lies above");
+                    continue;
+                }
+                if (edges == lower.length) {
+                    lower = Arrays.copyOf(lower, 2 * edges);
+                    upper = Arrays.copyOf(upper, 2 * edges);
+                }
+                lower[edges] = order > 0 ? g : f;
+                upper[edges] = order > 0 ? f : g;
+                edges++;
             }
         }
         cycles(faces, members, lower, upper, edges, findings);
@@ -193,10 +203,7 @@ public final class LayerOrder {
      */
     private static void cycles(PlanarFaces faces, int[] members, int[] lower, int[] upper, int edges, Findings findings) {
         int n = members.length;
-        int[] index = new int[faces.state.faceCount];
-        for (int i = 0; i < n; i++) {
-            index[members[i]] = i;
-        }
+        int[] index = faces.placeInPlane;
         int[] start = new int[n + 1];
         int[] below = new int[n];
         for (int e = 0; e < edges; e++) {

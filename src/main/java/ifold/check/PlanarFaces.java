@@ -29,6 +29,8 @@ final class PlanarFaces {
     final double eps;
     /** Each face's plane, or -1 for a face of no area. */
     final int[] plane;
+    /** Each face's place in its plane's {@link #facesOf}. */
+    final int[] placeInPlane;
     /** +1 where a face's normal points to its plane's up side, -1 where it points down. */
     final byte[] sigma;
     /** Each face's corners in its plane's frame, counter-clockwise seen from up: x0 y0 x1 y1 ... */
@@ -57,6 +59,7 @@ final class PlanarFaces {
         this.eps = TOUCH * size;
         int faces = state.faceCount;
         plane = new int[faces];
+        placeInPlane = new int[faces];
         sigma = new byte[faces];
         polygon = new double[faces][];
         box = new double[4 * faces];
@@ -102,8 +105,10 @@ final class PlanarFaces {
         for (int p = 0; p < members.size(); p++) {
             facesOf.add(members.get(p).stream().mapToInt(Integer::intValue).toArray());
             double[] frame = frames.get(p);
+            int place = 0;
             for (int f : facesOf.get(p)) {
                 project(f, frame);
+                placeInPlane[f] = place++;
             }
         }
         int[] orders = state.orders;
@@ -260,11 +265,22 @@ final class PlanarFaces {
         return false;
     }
 
-    /** A uniform grid of one plane's faces by their boxes, a couple of median face sizes a cell. */
+    /**
+     * A uniform grid of one plane's faces, each entered in the cells its polygon meets (row by
+     * row, not its box: a long pass at 45° lies in a few cells of a row, not in every cell of its
+     * box). The cell is twice the median face's narrow width, grown while the entries would be
+     * more than {@link #ENTRIES_PER_FACE} a face: the layers over a point then share a cell with
+     * few faces beside them, where a cell of the faces' length held a whole host's passes and its
+     * pairs grew with the square of the faces (a cube at width 0.001: 16 s for 49,000 faces).
+     */
     final class Grid {
+        /** Entries a face may have on average before the cell grows: a bound on memory and time. */
+        private static final int ENTRIES_PER_FACE = 24;
+
         final double x0;
         final double y0;
         final double cell;
+        /** Each occupied cell's faces: a count, then the faces in ascending order. */
         final Map<Long, int[]> cells = new HashMap<>();
 
         Grid(int[] faces) {
@@ -272,35 +288,41 @@ final class PlanarFaces {
             double minY = Double.POSITIVE_INFINITY;
             double maxX = Double.NEGATIVE_INFINITY;
             double maxY = Double.NEGATIVE_INFINITY;
-            double[] extents = new double[faces.length];
+            double[] narrow = new double[faces.length];
+            double area = 0;
+            double perimeter = 0;
             for (int i = 0; i < faces.length; i++) {
                 int f = faces[i];
                 minX = Math.min(minX, box[4 * f]);
                 minY = Math.min(minY, box[4 * f + 1]);
                 maxX = Math.max(maxX, box[4 * f + 2]);
                 maxY = Math.max(maxY, box[4 * f + 3]);
-                extents[i] = Math.max(box[4 * f + 2] - box[4 * f], box[4 * f + 3] - box[4 * f + 1]);
+                double[] shape = areaAndPerimeter(polygon[f]);
+                area += shape[0];
+                perimeter += shape[1];
+                narrow[i] = shape[1] > 0 ? 2 * shape[0] / shape[1] : 0;
             }
-            Arrays.sort(extents);
-            double median = faces.length == 0 ? 1 : extents[faces.length / 2];
+            Arrays.sort(narrow);
+            double median = faces.length == 0 ? 1 : narrow[faces.length / 2];
             double span = Math.max(maxX - minX, maxY - minY);
-            // At most about four cells a face, however small the median.
-            double least = span / Math.sqrt(4.0 * faces.length + 1);
-            cell = Math.max(Math.max(2 * median, least), Double.MIN_NORMAL);
+            double c = Math.max(Math.max(4 * median, span / (1 << 20)), Double.MIN_NORMAL);
+            // The cells a face meets: about its area, a share of its outline, and one.
+            while (area / (c * c) + perimeter / c + faces.length > ENTRIES_PER_FACE * (double) faces.length && c < span) {
+                c *= 1.5;
+            }
+            cell = c;
             x0 = minX;
             y0 = minY;
-            Map<Long, int[]> counts = new HashMap<>();
             for (int f : faces) {
-                forCells(f, key -> {
-                    int[] list = counts.computeIfAbsent(key, k -> new int[] {0, 0, 0, 0, 0});
+                forPolygon(polygon[f], key -> {
+                    int[] list = cells.computeIfAbsent(key, k -> new int[] {0, 0, 0, 0, 0});
                     if (list[0] + 1 == list.length) {
                         list = Arrays.copyOf(list, 2 * list.length);
-                        counts.put(key, list);
+                        cells.put(key, list);
                     }
                     list[++list[0]] = f;
                 });
             }
-            cells.putAll(counts);
         }
 
         long key(int ix, int iy) {
@@ -315,17 +337,68 @@ final class PlanarFaces {
             return (int) Math.floor((y - y0) / cell);
         }
 
-        void forCells(int f, java.util.function.LongConsumer action) {
-            forBox(box[4 * f], box[4 * f + 1], box[4 * f + 2], box[4 * f + 3], action);
-        }
-
-        void forBox(double minX, double minY, double maxX, double maxY, java.util.function.LongConsumer action) {
-            for (int ix = ix(minX); ix <= ix(maxX); ix++) {
-                for (int iy = iy(minY); iy <= iy(maxY); iy++) {
-                    action.accept(key(ix, iy));
+        /**
+         * The cells a polygon (x0 y0 x1 y1 …; two points make a segment) meets, but for
+         * {@link #eps}: in each row of cells, those between the least and most x of its edges
+         * within the row — the row's part of a convex polygon.
+         */
+        void forPolygon(double[] points, java.util.function.LongConsumer action) {
+            int n = points.length / 2;
+            double low = Double.POSITIVE_INFINITY;
+            double high = Double.NEGATIVE_INFINITY;
+            for (int i = 0; i < n; i++) {
+                low = Math.min(low, points[2 * i + 1]);
+                high = Math.max(high, points[2 * i + 1]);
+            }
+            int first = iy(low - eps);
+            int last = iy(high + eps);
+            for (int row = first; row <= last; row++) {
+                double bottom = row == first ? Double.NEGATIVE_INFINITY : y0 + row * cell - eps;
+                double top = row == last ? Double.POSITIVE_INFINITY : y0 + (row + 1) * cell + eps;
+                double least = Double.POSITIVE_INFINITY;
+                double most = Double.NEGATIVE_INFINITY;
+                for (int i = 0; i < n; i++) {
+                    int j = (i + 1) % n;
+                    double ax = points[2 * i];
+                    double ay = points[2 * i + 1];
+                    double bx = points[2 * j];
+                    double by = points[2 * j + 1];
+                    if (Math.max(ay, by) < bottom || Math.min(ay, by) > top) {
+                        continue;
+                    }
+                    // The edge's part within the row: its x at the row's lines where it crosses them.
+                    double fromX = ax;
+                    double toX = bx;
+                    if (ay != by) {
+                        double t0 = Math.max(0, Math.min(1, (bottom - ay) / (by - ay)));
+                        double t1 = Math.max(0, Math.min(1, (top - ay) / (by - ay)));
+                        fromX = ax + (bx - ax) * t0;
+                        toX = ax + (bx - ax) * t1;
+                    }
+                    least = Math.min(least, Math.min(fromX, toX));
+                    most = Math.max(most, Math.max(fromX, toX));
+                }
+                if (least > most) {
+                    continue;
+                }
+                for (int column = ix(least - eps); column <= ix(most + eps); column++) {
+                    action.accept(key(column, row));
                 }
             }
         }
+    }
+
+    /** A polygon's area and perimeter (x0 y0 x1 y1 …, counter-clockwise). */
+    private static double[] areaAndPerimeter(double[] points) {
+        int n = points.length / 2;
+        double twice = 0;
+        double perimeter = 0;
+        for (int i = 0; i < n; i++) {
+            int j = (i + 1) % n;
+            twice += points[2 * i] * points[2 * j + 1] - points[2 * j] * points[2 * i + 1];
+            perimeter += Math.hypot(points[2 * j] - points[2 * i], points[2 * j + 1] - points[2 * i + 1]);
+        }
+        return new double[] {Math.abs(twice) / 2, perimeter};
     }
 
     private static double diagonal(FoldedState state) {

@@ -234,27 +234,47 @@ public final class FoldFile {
             for (int f = 0; f < sheet.faceCount(); f++) {
                 byHost.computeIfAbsent(sheet.host(f), h -> new ArrayList<>()).add(f);
             }
+            double tolerance = sheet.tolerance();
+            int[] mark = new int[sheet.faceCount()];
+            int[] seen = {0};
             for (List<Integer> faces : byHost.values()) {
                 int n = faces.size();
                 double[][] placed = new double[n][];
                 double[][] boxes = new double[n][];
+                // By the cells of two widths their polygons meet: a pair is tried only where they
+                // share one, which on a host of many long passes is a few neighbours of each face.
+                ifold.sheet.FaceGrid grid = new ifold.sheet.FaceGrid(2 * sheet.width());
                 for (int i = 0; i < n; i++) {
                     placed[i] = sheet.placed(faces.get(i));
                     boxes[i] = Polygons2.bounds(placed[i]);
+                    grid.add(i, placed[i]);
                 }
-                double tolerance = sheet.tolerance();
-                // Swept in the order of the boxes' left sides: a pair is tried only while their x spans meet.
-                Integer[] byLeft = new Integer[n];
+                int[] candidates = new int[16];
                 for (int i = 0; i < n; i++) {
-                    byLeft[i] = i;
-                }
-                Arrays.sort(byLeft, Comparator.comparingDouble(i -> boxes[i][0]));
-                for (int a = 0; a < n; a++) {
-                    int i = byLeft[a];
-                    for (int b = a + 1; b < n && boxes[byLeft[b]][0] < boxes[i][2] - tolerance; b++) {
-                        int j = byLeft[b];
-                        if (boxes[i][0] >= boxes[j][2] - tolerance || boxes[i][1] >= boxes[j][3] - tolerance
-                                || boxes[j][1] >= boxes[i][3] - tolerance) {
+                    int stamp = ++seen[0];
+                    int[] count = {0};
+                    int[][] found = {candidates};
+                    int from = i;
+                    ifold.sheet.FaceGrid.Visitor take = j -> {
+                        if (j > from && mark[j] != stamp) {
+                            mark[j] = stamp;
+                            if (count[0] == found[0].length) {
+                                found[0] = Arrays.copyOf(found[0], 2 * count[0]);
+                            }
+                            found[0][count[0]++] = j;
+                        }
+                    };
+                    if (!grid.near(placed[i], take)) {
+                        for (int j = i + 1; j < n; j++) {
+                            take.visit(j);
+                        }
+                    }
+                    candidates = found[0];
+                    Arrays.sort(candidates, 0, count[0]);
+                    for (int c = 0; c < count[0]; c++) {
+                        int j = candidates[c];
+                        if (boxes[i][0] >= boxes[j][2] - tolerance || boxes[j][0] >= boxes[i][2] - tolerance
+                                || boxes[i][1] >= boxes[j][3] - tolerance || boxes[j][1] >= boxes[i][3] - tolerance) {
                             continue;
                         }
                         if (!Polygons2.overlap(placed[i], placed[i].length / 2, placed[j], placed[j].length / 2, tolerance)) {

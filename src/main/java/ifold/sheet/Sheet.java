@@ -116,8 +116,7 @@ public final class Sheet {
             faces[count++] = f;
             levels = null;
             if (grid != null) {
-                placedCached(f);
-                grid.add(f, boxes.get(f));
+                grid.add(f, placedCached(f));
             }
         }
 
@@ -136,22 +135,21 @@ public final class Sheet {
 
         /**
          * The places in the stack, in order, of the faces that may overlap face f (their boxes
-         * near its box): all of them while the stack is small.
+         * near its polygon): all of them while the stack is small.
          */
         int[] near(int f) {
             if (count >= GRID_FROM && grid == null) {
                 grid = new FaceGrid(2 * width);
                 for (int i = 0; i < count; i++) {
-                    placedCached(faces[i]);
-                    grid.add(faces[i], boxes.get(faces[i]));
+                    grid.add(faces[i], placedCached(faces[i]));
                 }
             }
             if (grid != null) {
-                placedCached(f);
+                double[] polygon = placedCached(f);
                 int seen = nextMark();
                 int[] n = {0};
                 int[][] holder = {new int[16]};
-                boolean listed = grid.near(boxes.get(f), g -> {
+                boolean listed = grid.near(polygon, g -> {
                     if (g != f && mark[g] != seen && slotOf[g] < count && faces[slotOf[g]] == g) {
                         mark[g] = seen;
                         if (n[0] == holder[0].length) {
