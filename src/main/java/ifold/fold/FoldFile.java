@@ -241,12 +241,14 @@ public final class FoldFile {
                 int n = faces.size();
                 double[][] placed = new double[n][];
                 double[][] boxes = new double[n][];
-                // By the cells of two widths their polygons meet: a pair is tried only where they
-                // share one, which on a host of many long passes is a few neighbours of each face.
-                ifold.sheet.FaceGrid grid = new ifold.sheet.FaceGrid(2 * sheet.width());
+                // By the grid cells their polygons meet: a pair is tried only where they share
+                // one, which on a host of many long passes is a few neighbours of each face.
                 for (int i = 0; i < n; i++) {
                     placed[i] = sheet.placed(faces.get(i));
                     boxes[i] = Polygons2.bounds(placed[i]);
+                }
+                ifold.sheet.FaceGrid grid = new ifold.sheet.FaceGrid(ifold.sheet.FaceGrid.cellFor(placed, n, 2 * sheet.width()));
+                for (int i = 0; i < n; i++) {
                     grid.add(i, placed[i]);
                 }
                 int[] candidates = new int[16];

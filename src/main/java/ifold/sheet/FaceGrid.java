@@ -34,6 +34,54 @@ public final class FaceGrid {
         this.cell = cell;
     }
 
+    /** Entries a face may have on average before {@link #cellFor} grows the cell: a bound on memory and time. */
+    private static final int ENTRIES_PER_FACE = 24;
+
+    /**
+     * A cell size for the first {@code n} polygons: four times their median narrow width (twice
+     * the area over the perimeter: a strip's width for a long pass), grown while the faces would
+     * meet more than {@link #ENTRIES_PER_FACE} cells each on average, and at least {@code least}.
+     * Cells of a fixed two widths made a pass of length L meet L / w cells: at a width of 1/2000
+     * of the model, a thousand hash probes a face.
+     */
+    public static double cellFor(double[][] polygons, int n, double least) {
+        double[] narrow = new double[n];
+        double area = 0;
+        double perimeter = 0;
+        double minX = Double.POSITIVE_INFINITY;
+        double minY = Double.POSITIVE_INFINITY;
+        double maxX = Double.NEGATIVE_INFINITY;
+        double maxY = Double.NEGATIVE_INFINITY;
+        for (int i = 0; i < n; i++) {
+            double[] p = polygons[i];
+            int m = p.length / 2;
+            double a = Math.abs(Polygons2.twiceArea(p, m)) / 2;
+            double around = 0;
+            for (int k = 0; k < m; k++) {
+                int j = (k + 1) % m;
+                around += Math.hypot(p[2 * j] - p[2 * k], p[2 * j + 1] - p[2 * k + 1]);
+                minX = Math.min(minX, p[2 * k]);
+                maxX = Math.max(maxX, p[2 * k]);
+                minY = Math.min(minY, p[2 * k + 1]);
+                maxY = Math.max(maxY, p[2 * k + 1]);
+            }
+            area += a;
+            perimeter += around;
+            narrow[i] = around > 0 ? 2 * a / around : 0;
+        }
+        if (n == 0) {
+            return least;
+        }
+        Arrays.sort(narrow);
+        double span = Math.max(maxX - minX, maxY - minY);
+        double c = Math.max(Math.max(least, 4 * narrow[n / 2]), Math.max(span / (1 << 20), Double.MIN_NORMAL));
+        // The cells a face meets: about its area, a share of its outline, and one.
+        while (area / (c * c) + perimeter / c + n > ENTRIES_PER_FACE * (double) n && c < span) {
+            c *= 1.5;
+        }
+        return c;
+    }
+
     /** Lists face f under the cells its polygon (x0 y0 x1 y1 …, convex) meets. */
     public void add(int f, double[] polygon) {
         if (cellCount(polygon) > MOST_CELLS) {

@@ -139,9 +139,13 @@ public final class Sheet {
          */
         int[] near(int f) {
             if (count >= GRID_FROM && grid == null) {
-                grid = new FaceGrid(2 * width);
+                double[][] polygons = new double[count][];
                 for (int i = 0; i < count; i++) {
-                    grid.add(faces[i], placedCached(faces[i]));
+                    polygons[i] = placedCached(faces[i]);
+                }
+                grid = new FaceGrid(FaceGrid.cellFor(polygons, count, 2 * width));
+                for (int i = 0; i < count; i++) {
+                    grid.add(faces[i], polygons[i]);
                 }
             }
             if (grid != null) {

@@ -1,6 +1,7 @@
 package ifold.wrap;
 
 import ifold.mesh.IndexedPolygons;
+import ifold.sheet.FaceGrid;
 import ifold.sheet.HostFrame;
 import ifold.sheet.Polygons2;
 import ifold.sheet.Sheet;
@@ -82,15 +83,27 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
                 HostFrame frame = frames[host];
                 double[] c = frame.corners();
                 int[] faces = sheet.facesOn(host);
-                List<double[]> placed = new ArrayList<>();
-                List<double[]> boxes = new ArrayList<>();
-                for (int f : faces) {
-                    double[] xy = sheet.placed(f);
-                    placed.add(xy);
-                    boxes.add(Polygons2.bounds(xy));
+                double[][] placed = new double[faces.length][];
+                double[][] boxes = new double[faces.length][];
+                // A host of many triangles holds their faces all: each triangle looks only at
+                // those of the grid's cells it meets.
+                for (int i = 0; i < faces.length; i++) {
+                    double[] xy = sheet.placed(faces[i]);
+                    placed[i] = xy;
+                    boxes[i] = Polygons2.bounds(xy);
                     outside = Math.max(outside, beyond(c, xy));
-                    farthest = Math.max(farthest, (levels[f] + 1) * sheet.thickness());
+                    farthest = Math.max(farthest, (levels[faces[i]] + 1) * sheet.thickness());
                 }
+                FaceGrid grid = null;
+                if (entry.getValue().size() > 1) {
+                    grid = new FaceGrid(FaceGrid.cellFor(placed, faces.length, 2 * sheet.width()));
+                    for (int i = 0; i < faces.length; i++) {
+                        grid.add(i, placed[i]);
+                    }
+                }
+                int[] seen = new int[faces.length];
+                int[] visit = {0};
+                int[] near = new int[faces.length];
                 for (int triangle : entry.getValue()) {
                     double[] corners = cornersIn(result.mesh(), triangle, frame);
                     double[] box = Polygons2.bounds(corners);
@@ -98,14 +111,28 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
                     // exit edge: their boxes are then thin, and each meets only the cells near it.
                     // Each face clipped to the triangle first: only its part there makes cells.
                     double[] along = passDirection(result.mesh(), strip, triangle, frame);
+                    int[] nearCount = {0};
+                    FaceGrid.Visitor take = i -> {
+                        double[] b = boxes[i];
+                        if (seen[i] != visit[0] && b[0] < box[2] && box[0] < b[2] && b[1] < box[3] && box[1] < b[3]) {
+                            seen[i] = visit[0];
+                            near[nearCount[0]++] = i;
+                        }
+                    };
+                    visit[0]++;
+                    if (grid == null || !grid.near(corners, take)) {
+                        for (int i = 0; i < faces.length; i++) {
+                            take.visit(i);
+                        }
+                    }
+                    // In the faces' order, whichever way they were found: the cells, and so the
+                    // deepest point reported, do not depend on the grid.
+                    java.util.Arrays.sort(near, 0, nearCount[0]);
                     List<double[]> polygons = new ArrayList<>();
-                    for (int i = 0; i < placed.size(); i++) {
-                        double[] b = boxes.get(i);
-                        if (b[0] < box[2] && box[0] < b[2] && b[1] < box[3] && box[1] < b[3]) {
-                            double[] part = clipToTriangle(counterClockwise(placed.get(i)), corners, sheet.tolerance());
-                            if (part != null) {
-                                polygons.add(turned(part, along));
-                            }
+                    for (int j = 0; j < nearCount[0]; j++) {
+                        double[] part = clipToTriangle(counterClockwise(placed[near[j]]), corners, sheet.tolerance());
+                        if (part != null) {
+                            polygons.add(turned(part, along));
                         }
                     }
                     double[] cells = depths(counterClockwise(turned(corners, along)), polygons, sheet.tolerance());
@@ -381,15 +408,20 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
      * lays thousands of faces on one triangle, mostly side by side.
      */
     static double[] depths(double[] triangle, List<double[]> polygons, double tolerance) {
-        Cells cells = new Cells(triangle, Math.max(1, (int) Math.sqrt(polygons.size())), tolerance);
+        // Buckets of about four faces each: finer, the grid's own lines cut the faces into more
+        // cells than it saves in looking (the 1,280-triangle icosphere: 2.3 million cells at
+        // this size, 2.9 million at one face a bucket, 4.5 at a quarter).
+        Cells cells = new Cells(triangle, Math.max(1, (int) (0.5 * Math.sqrt(polygons.size()))), tolerance);
         for (double[] polygon : polygons) {
             double[] p = counterClockwise(polygon);
-            double[] box = Polygons2.bounds(p);
-            for (int cell : cells.near(box)) {
+            int found = cells.near(Polygons2.bounds(p));
+            for (int k = 0; k < found; k++) {
+                int cell = cells.found(k);
                 double[] rest = cells.polygon(cell);
                 int d = cells.depth(cell);
                 int bucket = cells.bucket(cell);
-                cells.remove(cell);
+                boolean cut = false;
+                boolean outside = false;
                 int n = p.length / 2;
                 for (int e = 0; e < n && rest != null; e++) {
                     double ax = p[2 * e];
@@ -404,13 +436,39 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
                     double nx = -(by - ay) / length;
                     double ny = (bx - ax) / length;
                     double c = nx * ax + ny * ay;
+                    // Most cells lie wholly on one side of most edges: those are not clipped.
+                    double least = Double.POSITIVE_INFINITY;
+                    double most = Double.NEGATIVE_INFINITY;
+                    for (int i = 0; i < rest.length; i += 2) {
+                        double side = nx * rest[i] + ny * rest[i + 1] - c;
+                        least = Math.min(least, side);
+                        most = Math.max(most, side);
+                    }
+                    if (least >= -tolerance && most > tolerance) {
+                        continue; // inside this edge
+                    }
+                    if (most <= tolerance && least < -tolerance) {
+                        if (cut) {
+                            cells.add(rest, d, bucket); // the rest outside the face, whole
+                        } else {
+                            outside = true; // the cell outside the face, whole
+                        }
+                        rest = null;
+                        break;
+                    }
+                    if (!cut) {
+                        cells.remove(cell);
+                        cut = true;
+                    }
                     double[] out = Polygons2.clip(rest, rest.length / 2, nx, ny, c, tolerance);
                     if (out != null) {
                         cells.add(out, d, bucket);
                     }
                     rest = Polygons2.clip(rest, rest.length / 2, -nx, -ny, -c, tolerance);
                 }
-                if (rest != null) {
+                if (!cut && !outside) {
+                    cells.deepen(cell); // inside the face, whole
+                } else if (cut && rest != null) {
                     cells.add(rest, d + 1, bucket);
                 }
             }
@@ -422,22 +480,28 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
      * The convex cells of an arrangement, with their depth, each in one bucket of a grid over
      * the triangle: the triangle is first cut along the grid, and a cell's parts stay in its
      * bucket, so that no cell is ever big and a face meets only the cells of the buckets it covers.
+     * Kept in plain arrays: a wrap makes millions of cells, and boxed lists of them cost more
+     * than the clipping.
      */
     private static final class Cells {
-        private final List<double[]> polygons = new ArrayList<>();
-        private final List<double[]> boxes = new ArrayList<>();
-        private final List<Integer> depths = new ArrayList<>();
-        private final List<Integer> bucketOf = new ArrayList<>();
-        private final List<Boolean> alive = new ArrayList<>();
-        private final List<List<Integer>> buckets = new ArrayList<>();
+        private double[][] polygons = new double[64][];
+        /** Per cell: min x, min y, max x, max y. */
+        private double[] boxes = new double[4 * 64];
+        /** Per cell: its depth, or -1 once it is cut up. */
+        private int[] depths = new int[64];
+        private int[] bucketOf = new int[64];
+        private int count;
+        /** Per bucket: its cell count, then the cells (the dead ones too, skipped by near()). */
+        private final int[][] buckets;
         private final double minX;
         private final double minY;
         private final double cellWidth;
         private final double cellHeight;
         private final int grid;
         private final double tolerance;
-        private int[] seen = new int[16];
+        private int[] seen = new int[64];
         private int visit;
+        private int[] found = new int[16];
 
         Cells(double[] triangle, int grid, double tolerance) {
             double[] box = Polygons2.bounds(triangle);
@@ -447,9 +511,10 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
             this.cellWidth = Math.max(box[2] - box[0], tolerance) / grid;
             this.cellHeight = Math.max(box[3] - box[1], tolerance) / grid;
             this.tolerance = tolerance;
+            this.buckets = new int[grid * grid][];
             for (int by = 0; by < grid; by++) {
                 for (int bx = 0; bx < grid; bx++) {
-                    buckets.add(new ArrayList<>());
+                    buckets[by * grid + bx] = new int[5];
                     double[] piece = triangle.clone();
                     double x0 = minX + bx * cellWidth;
                     double y0 = minY + by * cellHeight;
@@ -477,54 +542,92 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
         }
 
         void add(double[] polygon, int depth, int bucket) {
-            int id = polygons.size();
-            polygons.add(polygon);
-            boxes.add(Polygons2.bounds(polygon));
-            depths.add(depth);
-            bucketOf.add(bucket);
-            alive.add(true);
-            buckets.get(bucket).add(id);
+            if (count == depths.length) {
+                int more = 2 * count;
+                polygons = java.util.Arrays.copyOf(polygons, more);
+                boxes = java.util.Arrays.copyOf(boxes, 4 * more);
+                depths = java.util.Arrays.copyOf(depths, more);
+                bucketOf = java.util.Arrays.copyOf(bucketOf, more);
+                seen = java.util.Arrays.copyOf(seen, more);
+            }
+            int id = count++;
+            polygons[id] = polygon;
+            double x0 = Double.POSITIVE_INFINITY;
+            double y0 = Double.POSITIVE_INFINITY;
+            double x1 = Double.NEGATIVE_INFINITY;
+            double y1 = Double.NEGATIVE_INFINITY;
+            for (int k = 0; k < polygon.length; k += 2) {
+                x0 = Math.min(x0, polygon[k]);
+                x1 = Math.max(x1, polygon[k]);
+                y0 = Math.min(y0, polygon[k + 1]);
+                y1 = Math.max(y1, polygon[k + 1]);
+            }
+            boxes[4 * id] = x0;
+            boxes[4 * id + 1] = y0;
+            boxes[4 * id + 2] = x1;
+            boxes[4 * id + 3] = y1;
+            depths[id] = depth;
+            bucketOf[id] = bucket;
+            int[] cells = buckets[bucket];
+            if (cells[0] + 1 == cells.length) {
+                cells = java.util.Arrays.copyOf(cells, 2 * cells.length);
+                buckets[bucket] = cells;
+            }
+            cells[++cells[0]] = id;
         }
 
         int bucket(int id) {
-            return bucketOf.get(id);
+            return bucketOf[id];
         }
 
-        /** The living cells whose box overlaps {@code box} by more than the tolerance. */
-        List<Integer> near(double[] box) {
+        /**
+         * Finds the living cells whose box overlaps {@code box} by more than the tolerance and
+         * returns how many: {@link #found} gives them, until the next call.
+         */
+        int near(double[] box) {
             visit++;
-            if (seen.length < polygons.size()) {
-                seen = java.util.Arrays.copyOf(seen, 2 * polygons.size());
-            }
-            List<Integer> found = new ArrayList<>();
+            int n = 0;
             for (int bx = column(box[0]); bx <= column(box[2]); bx++) {
                 for (int by = row(box[1]); by <= row(box[3]); by++) {
-                    for (int id : buckets.get(by * grid + bx)) {
-                        if (seen[id] == visit || !alive.get(id)) {
+                    int[] cells = buckets[by * grid + bx];
+                    for (int k = 1; k <= cells[0]; k++) {
+                        int id = cells[k];
+                        if (seen[id] == visit || depths[id] < 0) {
                             continue;
                         }
                         seen[id] = visit;
-                        double[] cell = boxes.get(id);
-                        if (cell[0] < box[2] - tolerance && box[0] < cell[2] - tolerance && cell[1] < box[3] - tolerance
-                                && box[1] < cell[3] - tolerance) {
-                            found.add(id);
+                        if (boxes[4 * id] < box[2] - tolerance && box[0] < boxes[4 * id + 2] - tolerance
+                                && boxes[4 * id + 1] < box[3] - tolerance && box[1] < boxes[4 * id + 3] - tolerance) {
+                            if (n == found.length) {
+                                found = java.util.Arrays.copyOf(found, 2 * n);
+                            }
+                            found[n++] = id;
                         }
                     }
                 }
             }
-            return found;
+            return n;
+        }
+
+        int found(int k) {
+            return found[k];
         }
 
         double[] polygon(int id) {
-            return polygons.get(id);
+            return polygons[id];
         }
 
         int depth(int id) {
-            return depths.get(id);
+            return depths[id];
+        }
+
+        void deepen(int id) {
+            depths[id]++;
         }
 
         void remove(int id) {
-            alive.set(id, false); // its buckets forget it lazily: near() skips the dead
+            depths[id] = -1; // its bucket forgets it lazily: near() skips the dead
+            polygons[id] = null;
         }
 
         private int column(double x) {
@@ -543,18 +646,18 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
             double largest = -1;
             double cx = Double.NaN;
             double cy = Double.NaN;
-            for (int id = 0; id < polygons.size(); id++) {
-                if (!alive.get(id)) {
+            for (int id = 0; id < count; id++) {
+                if (depths[id] < 0) {
                     continue;
                 }
-                double[] cell = polygons.get(id);
+                double[] cell = polygons[id];
                 double a = Math.abs(Polygons2.twiceArea(cell, cell.length / 2)) / 2;
                 area += a;
-                if (depths.get(id) > 0) {
+                if (depths[id] > 0) {
                     covered += a;
                 }
-                if (depths.get(id) > most || depths.get(id) == most && a > largest) {
-                    most = depths.get(id);
+                if (depths[id] > most || depths[id] == most && a > largest) {
+                    most = depths[id];
                     largest = a;
                     // The mean of a convex cell's corners lies inside it.
                     cx = 0;
