@@ -61,7 +61,7 @@ final class WrapCommand implements Callable<Integer> {
     Double thickness;
 
     @Option(names = "--max-faces", paramLabel = "N", defaultValue = "" + Wrap.DEFAULT_MAX_FACES,
-            description = "the most faces of paper the wrap may make, under a kilobyte of memory each (default ${DEFAULT-VALUE})")
+            description = "the most faces of paper the wrap may make, about " + Wrap.BYTES_PER_FACE + " bytes of memory each (default ${DEFAULT-VALUE}: a gibibyte's worth)")
     int maxFaces;
 
     @Option(names = "--strict", description = "refuse defective input instead of repairing it")

@@ -4,6 +4,7 @@ import ifold.job.Scenes;
 import ifold.scene.PathView;
 import ifold.ui.model.Job;
 import ifold.ui.model.Problem;
+import ifold.wrap.Wrap;
 import java.awt.CardLayout;
 import java.awt.Color;
 import java.awt.Component;
@@ -119,7 +120,8 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
         wrap.wide(chooseModelButton);
         wrap.row("width", "Width", wrapWidth, "blank: a third of the widest possible");
         wrap.row("thickness", "Thickness", wrapThickness, "blank: the width / 80");
-        wrap.row("maxFaces", "Max faces", wrapMaxFaces, "blank: 500,000 (about 2.4 kB each)");
+        wrap.row("maxFaces", "Max faces", wrapMaxFaces, String.format(java.util.Locale.ROOT, "blank: %,d, a gibibyte's worth (about %,d bytes each)", Wrap.DEFAULT_MAX_FACES,
+                Wrap.BYTES_PER_FACE));
         wrap.row("strict", "Strict", wrapStrict, "instead of repairing it (--strict); for the information and refinement too");
         wrapStrict.addActionListener(e -> edited());
         deck.add(top(wrap.panel), "wrap");

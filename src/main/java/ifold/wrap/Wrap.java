@@ -11,7 +11,9 @@ import ifold.sheet.Sheet;
 import ifold.sheet.Sheet.Crease;
 import ifold.sheet.Sheet.Placement;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Locale;
 
 /**
@@ -56,12 +58,21 @@ public final class Wrap {
     public static final int MAX_TUCKS = 1000;
 
     /**
-     * The most faces of paper a wrap makes unless {@link Options#maxFaces} says otherwise: about
-     * 1.2 GB of memory (a 1,280-triangle icosphere takes 280,000). Each pass is at least one
-     * face, so a wrap that needs more passes is refused before any fold, and one whose faces
-     * cross the limit while folding is stopped there.
+     * What a face of paper costs a whole run of {@code ifold wrap} in resident memory, the sheet,
+     * its steps, its geometry in space and its analysis together, measured: the 5,120-triangle
+     * icosphere's 637,860 faces peak at 1.06 GiB, of which about 90 MiB are the start-up's (the
+     * icosahedron's 1,731 faces peak at 98 MiB); bench/wrap.
      */
-    public static final int DEFAULT_MAX_FACES = 500_000;
+    public static final int BYTES_PER_FACE = 1_600;
+
+    /**
+     * The most faces of paper a wrap makes unless {@link Options#maxFaces} says otherwise: what
+     * a gibibyte of memory holds at {@link #BYTES_PER_FACE} (671,088; a 1,280-triangle icosphere
+     * takes 157,000, the 5,120-triangle one 638,000). A wrap whose floor under its faces passes
+     * the limit is refused before any fold, and one whose faces cross the limit while folding is
+     * stopped there.
+     */
+    public static final int DEFAULT_MAX_FACES = (int) ((1L << 30) / BYTES_PER_FACE);
 
     /**
      * The sizes of model a wrap computes in doubles, across its bounding box: a triangle's frame
@@ -892,6 +903,7 @@ public final class Wrap {
         private int pathIndex;
         /** The caption's detail for the folds being made, and the pass they belong to. */
         private String detail = "";
+        private final Map<String, String> details = new HashMap<>();
         private String passNote = "";
         private final int maxFaces;
         private Watcher watcher = Watcher.NONE;
@@ -1120,7 +1132,7 @@ public final class Wrap {
                 int to = (edge + 1) % n;
                 Sheet.Tuck tuck = sheet.tuck(host, c[2 * from], c[2 * from + 1], c[2 * to] - c[2 * from], c[2 * to + 1] - c[2 * from + 1]);
                 steps.add(new Step(Kind.TUCK, strip, plan.first + i, pathIndex, plan.m, -1, tuck, sheet.faceCount(), null,
-                        "tuck " + (tucks + 1) + ": excess folded under " + edgeName(i, host, from, to)));
+                        shared("tuck " + (tucks + 1) + ": excess folded under " + edgeName(i, host, from, to))));
                 checkFaces();
             }
         }
@@ -1216,12 +1228,21 @@ public final class Wrap {
             checkFaces();
             TailMove move = new TailMove(hostBefore, before, sheet.tailHost(), sheet.tailPose(), sheet.tailStart(false),
                     sheet.tailStart(true), over);
-            steps.add(new Step(kind, strip, host, pathIndex, plan.m, face, null, sheet.faceCount(), move, detail));
+            steps.add(new Step(kind, strip, host, pathIndex, plan.m, face, null, sheet.faceCount(), move, shared(detail)));
         }
 
         private void record(Kind kind, int host, int face) throws FaceLimitException {
             checkFaces();
-            steps.add(new Step(kind, strip, host, pathIndex, plan.m, face, null, sheet.faceCount(), null, detail));
+            steps.add(new Step(kind, strip, host, pathIndex, plan.m, face, null, sheet.faceCount(), null, shared(detail)));
+        }
+
+        /**
+         * One copy of each caption detail: a wrap records hundreds of thousands of steps, and
+         * their details are a few dozen texts ("pass 2 of 5: turn, 45° valley fold"), each made
+         * anew by its fold; the copies were a twentieth of the memory the paper takes.
+         */
+        private String shared(String text) {
+            return text == null ? null : details.computeIfAbsent(text, t -> t);
         }
     }
 }

@@ -61,7 +61,7 @@ class WrapCommandTest {
         long start = System.nanoTime();
         CliTest.Run run = CliTest.run("wrap", model.toString(), "--no-view");
         double seconds = (System.nanoTime() - start) * 1e-9;
-        CliTest.assertOneLineError(run, model + ": cannot wrap: the strip has ", "more than the limit of 500000 faces");
+        CliTest.assertOneLineError(run, model + ": cannot wrap: the strip has ", "more than the limit of " + ifold.wrap.Wrap.DEFAULT_MAX_FACES + " faces");
         assertTrue(seconds < 30, "in seconds, not minutes: " + seconds + " s");
     }
 

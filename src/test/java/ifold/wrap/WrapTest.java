@@ -310,7 +310,7 @@ class WrapTest {
         Wrap.WrapException e = assertThrows(Wrap.FaceLimitException.class,
                 () -> Wrap.wrap(refinement, new Wrap.Options(Double.NaN, Double.NaN)));
         assertTrue(e.getMessage().contains("faces of paper (at least ")
-                && e.getMessage().contains("more than the limit of 500000 faces") && e.getMessage().contains("no strip the path takes fits")
+                && e.getMessage().contains("more than the limit of " + Wrap.DEFAULT_MAX_FACES + " faces") && e.getMessage().contains("no strip the path takes fits")
                 && e.getMessage().contains("narrowest triangle"),
                 e.getMessage());
     }
