@@ -414,6 +414,12 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
         Cells cells = new Cells(triangle, Math.max(1, (int) (0.5 * Math.sqrt(polygons.size()))), tolerance);
         for (double[] polygon : polygons) {
             double[] p = counterClockwise(polygon);
+            if (thinnerThan(p, tolerance)) {
+                // No part of it is more than the tolerance across: it covers nothing. (Its edges,
+                // all shorter than the tolerance, would cut no cell, and every cell its box met
+                // was counted under it: a face of 1e-13 put a 21st layer on the cube at width 1e-3.)
+                continue;
+            }
             int found = cells.near(Polygons2.bounds(p));
             for (int k = 0; k < found; k++) {
                 int cell = cells.found(k);
@@ -474,6 +480,17 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
             }
         }
         return cells.totals();
+    }
+
+    /** Whether a convex polygon is nowhere wider than {@code tolerance}: twice its area at most the tolerance times its perimeter. */
+    private static boolean thinnerThan(double[] p, double tolerance) {
+        int n = p.length / 2;
+        double perimeter = 0;
+        for (int i = 0; i < n; i++) {
+            int j = (i + 1) % n;
+            perimeter += Math.hypot(p[2 * j] - p[2 * i], p[2 * j + 1] - p[2 * i + 1]);
+        }
+        return !(Math.abs(Polygons2.twiceArea(p, n)) > tolerance * perimeter);
     }
 
     /**
