@@ -88,6 +88,9 @@ final class MainWindow extends JFrame {
     private transient Plan plan;
     /** The File menu's exports, which ask what and where and hand the writing back here. */
     final transient ExportDialogs exports;
+    /** A fold script or FOLD file being opened, until its plan ends; and the job shown before it, if any. */
+    private Path opening;
+    private Job beforeOpening;
     /** Told of every message shown, for tests: a failure must be seen, not just logged. */
     transient Consumer<String> messages = text -> { };
 
@@ -344,12 +347,20 @@ final class MainWindow extends JFrame {
             say("width and thickness back to this model's defaults");
         }
         Job job = !model ? new Job.Script(file) : parameters.card().equals("view") ? parameters.view(file) : parameters.wrap(file);
-        settings.addRecent(file);
         Path folder = file.toAbsolutePath().getParent();
         if (folder != null) {
             settings.put("folder", folder.toString());
         }
-        refreshRecent();
+        if (model) {
+            // A model stays open when its wrap is refused (another width may do): it is recent at once.
+            opening = null;
+            settings.addRecent(file);
+            refreshRecent();
+        } else {
+            // A script or FOLD file is recent, and replaces what is shown, only once it plays.
+            opening = file;
+            beforeOpening = plan == null ? null : plan.job();
+        }
         parameters.show(job);
     }
 
@@ -454,15 +465,36 @@ final class MainWindow extends JFrame {
         planner.submit(progress -> Planning.plan(job, progress), new StatusLine<Plan>() {
             @Override
             void finished(Plan next) {
+                if (isOpening(job)) {
+                    settings.addRecent(opening);
+                    refreshRecent();
+                    opening = null;
+                }
                 show(next);
             }
 
             @Override
             void refused(Problem problem) {
+                if (isOpening(job)) {
+                    // A failed open changes nothing but the error shown: the panel goes back to
+                    // the job the view, the report and the folds still show.
+                    Path failed = opening;
+                    opening = null;
+                    if (beforeOpening != null) {
+                        parameters.restore(beforeOpening);
+                    }
+                    say("cannot open " + failed.getFileName() + ": " + problem.message());
+                    return;
+                }
                 parameters.mark(List.of(problem));
                 say(problem.message());
             }
         });
+    }
+
+    /** Whether {@code job} plays the script or FOLD file being opened. */
+    private boolean isOpening(Job job) {
+        return opening != null && job instanceof Job.Script s && opening.equals(s.file());
     }
 
     /** Shows a new plan: at the same point of its animation as the one before if it is the same kind of job, else from the start, playing. */

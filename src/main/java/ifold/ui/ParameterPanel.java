@@ -316,6 +316,12 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
 
     /** Shows the card of {@code job}'s kind, its fields set from it, and tells of the change at once. */
     void show(Job job) {
+        restore(job);
+        changed.accept(job());
+    }
+
+    /** Sets the fields and the card to {@code job} without planning it: the job already shown, back after a failed open. */
+    void restore(Job job) {
         quiet = true;
         try {
             if (job instanceof Job.ZigZag z) {
@@ -349,7 +355,6 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
         cards.show((JPanel) getComponent(0), card);
         settle.stop();
         mark(List.of());
-        changed.accept(job());
     }
 
     /** The model the wrap and the view both work on, named on both cards. */

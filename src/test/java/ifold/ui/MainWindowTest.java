@@ -468,6 +468,44 @@ class MainWindowTest {
         assertTrue(!"0.1".equals(onEdt(() -> window.report.value("width"))), "the tetrahedron's own width");
     }
 
+    /**
+     * A FOLD file that fails to open changes nothing but the error shown: before, the panel named
+     * the new file with its error while the view, the report and the folds showed the last job,
+     * and the file went into the recent files. One that opens then plays and is recent.
+     */
+    @Test
+    void aFoldFileThatFailsToOpenChangesNothingButTheErrorShown() throws Exception {
+        Settings settings = settings();
+        window = App.open(null, settings);
+        settled();
+        Object before = onEdt(() -> window.plan());
+        String card = onEdt(() -> window.parameters.card());
+        String title = onEdt(() -> window.getTitle());
+        Path bad = dir.resolve("bad.fold");
+        Files.writeString(bad, "{\"file_spec\": 1.1, \"vertices_coords\": [[0, 0], [1, 0], [1, 1]], \"edges_vertices\": [[0]],"
+                + " \"faces_vertices\": [[0, 1, 2]]}");
+        List<String> said = new CopyOnWriteArrayList<>();
+        onEdt(() -> {
+            window.messages = said::add;
+            window.open(bad);
+            return null;
+        });
+        waitFor("the open refused", 60, () -> !window.isWorking() && said.stream().anyMatch(m -> m.startsWith("cannot open bad.fold: ")));
+        assertTrue(before == onEdt(() -> window.plan()), "the plan shown is the one before");
+        assertEquals(card, onEdt(() -> window.parameters.card()));
+        assertEquals(title, onEdt(() -> window.getTitle()));
+        assertFalse(settings.recent().contains(bad), "a file that failed is not recent: " + settings.recent());
+        Path good = dir.resolve("good.fold");
+        Files.writeString(good, "paper square 10\nfold valley 180 points 5 0 0 5 1 0 right\n");
+        onEdt(() -> {
+            window.open(good);
+            return null;
+        });
+        waitFor("the script played", 60, () -> !window.isWorking() && window.plan() != null && window.plan().job() instanceof Job.Script);
+        assertEquals("script", onEdt(() -> window.parameters.card()));
+        assertTrue(settings.recent().contains(good), "recent once it plays: " + settings.recent());
+    }
+
     @Test
     void aMovieIsExportedAndACancelledOneLeavesNothing() throws Exception {
         window = App.open(null, settings());
