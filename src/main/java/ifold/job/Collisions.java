@@ -22,10 +22,12 @@ public final class Collisions {
     }
 
     /**
-     * The most faces of paper and caps checked: the check costs more than the wrap beyond (a
-     * cube's strip at a 300th of the default width: 400,000 faces, 33 s to wrap, 105 s to check).
+     * The most faces of paper and caps checked: the 1,280-triangle icosphere's 515,000 take 2.5 s;
+     * beyond, the OBJ text made for the check and its arrays (about 1.9 kB a face) would cost
+     * more memory than the wrap. (Long thin passes check slower: the cube at width 2e-4, 718,000
+     * faces and caps, 23 s.)
      */
-    public static final int MOST_FACES = 200_000;
+    public static final int MOST_FACES = 600_000;
 
     /** Why {@code strips} are not checked, or null where they are: paper of no thickness, or more than {@link #MOST_FACES} faces. */
     public static String notChecked(List<WrapGeometry> strips, double thickness) {
