@@ -488,6 +488,37 @@ final class MainWindow extends JFrame {
                 }
                 parameters.mark(List.of(problem));
                 say(problem.message());
+                if (job instanceof Job.WrapModel wrap && !shows(wrap.model())) {
+                    showModelAlone(wrap, problem.message());
+                }
+            }
+        });
+    }
+
+    /** Whether the plan shown is of {@code model}: its wrap, or its view. */
+    private boolean shows(Path model) {
+        Job shown = plan == null ? null : plan.job();
+        return shown instanceof Job.WrapModel w && w.model().equals(model) || shown instanceof Job.View v && v.model().equals(model);
+    }
+
+    /**
+     * A model whose wrap was refused is drawn anyway, as the view draws it, the wrap's card and
+     * its marked field kept for another try: before, the view stayed empty or on the model before.
+     */
+    private void showModelAlone(Job.WrapModel wrap, String refusal) {
+        Job.View view = new Job.View(wrap.model(), Scenes.Show.MODEL, PathView.Colors.DARKNESS, wrap.strict());
+        workStarted("drawing the model");
+        planner.submit(progress -> Planning.plan(view, progress), new StatusLine<Plan>() {
+            @Override
+            void finished(Plan next) {
+                show(next);
+                setTitle("iFold - " + wrap.model().getFileName() + " (not wrapped)");
+                say(refusal);
+            }
+
+            @Override
+            void refused(Problem problem) {
+                say(refusal); // a model that cannot be read was refused for that already
             }
         });
     }

@@ -506,6 +506,28 @@ class MainWindowTest {
         assertTrue(settings.recent().contains(good), "recent once it plays: " + settings.recent());
     }
 
+    /**
+     * A model whose wrap is refused is drawn anyway, with the refusal at its field: before, the
+     * view stayed on what it showed before (or grey), and the model was never drawn.
+     */
+    @Test
+    void aModelWhoseWrapIsRefusedIsDrawnAnyway() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        onEdt(() -> {
+            window.parameters.show(new Job.WrapModel(Path.of("models", "cube.off"), "0.5", ""));
+            return null;
+        });
+        waitFor("the cube drawn", 60, () -> !window.isWorking() && window.plan() != null && window.plan().job() instanceof Job.View v
+                && v.model().endsWith("cube.off"));
+        assertTrue(window.view.awaitFrame(30_000), "the view drew the cube");
+        assertEquals("wrap", onEdt(() -> window.parameters.card()), "the wrap's card stays, for another width");
+        assertTrue(onEdt(() -> window.parameters.isMarked("width")), "the refused width is marked");
+        assertTrue(onEdt(() -> window.message.getText()).contains("too wide"), onEdt(() -> window.message.getText()));
+        assertTrue(onEdt(() -> window.getTitle()).contains("cube.off (not wrapped)"), onEdt(() -> window.getTitle()));
+        assertEquals("6", onEdt(() -> window.report.value("faces")), "the model's report, as the view gives it: its six squares");
+    }
+
     @Test
     void aMovieIsExportedAndACancelledOneLeavesNothing() throws Exception {
         window = App.open(null, settings());
