@@ -5,11 +5,12 @@ import java.util.Arrays;
 /**
  * Faces by the cells of a square grid that their polygons meet: the faces a new face may
  * overlap, without looking at every face of a stack. A strip lays its faces side by side, a
- * width or so wide, so with cells of two widths a face meets a few cells per width of its
- * length, and the faces near a new one are the handful over those cells: laying n faces on
- * one host costs about n, where comparing each with all cost n². A face is entered in the
+ * width or so wide, so with cells of a few widths ({@link #cellFor}) a face meets a few
+ * dozen cells, and the faces near a new one are the handful over those cells: laying n faces
+ * on one host costs about n, where comparing each with all cost n². A face is entered in the
  * cells of its polygon row by row, not of its box: a pass 500 widths long at 45° meets about
- * a thousand cells, where its box touched 60,000 (and was looked at for every new face).
+ * a thousand cells of two widths, where its box touched 60,000 (and was looked at for every
+ * new face).
  *
  * <p>A face stays listed where it was added: one that shrinks (a cut) is found as before and
  * told apart by the exact test; one that moves or leaves (a tuck) makes the stack drop its grid
