@@ -9,9 +9,10 @@ import javax.swing.table.AbstractTableModel;
 
 /**
  * The figures of the current result as the {@code --report} JSON holds them, one row a value:
- * a nested figure by its path ("folds.tucks", "strips.1.length"), a number to six significant
- * digits so that it reads at a glance in its cell, and under the mouse as the shortest decimal
- * that reads back as it (what the JSON writes).
+ * a nested figure named in words ("Strip 1: length / width" for {@code strips.1.lengthOverWidth}),
+ * a number to six significant digits so that it reads at a glance in its cell, and under the
+ * mouse the figure's path in the report and the shortest decimal that reads back as the value
+ * (what the JSON writes).
  */
 final class ReportPanel extends JTable {
     private static final long serialVersionUID = 1L;
@@ -30,7 +31,11 @@ final class ReportPanel extends JTable {
     @Override
     public String getToolTipText(java.awt.event.MouseEvent e) {
         int row = rowAtPoint(e.getPoint());
-        return row < 0 ? null : rows.rows.get(row)[0] + " = " + rows.rows.get(row)[2];
+        if (row < 0) {
+            return null;
+        }
+        String[] shown = rows.rows.get(row);
+        return shown[3] + " = " + shown[2] + "  (" + shown[0] + " in the report)";
     }
 
     void show(Map<String, Object> figures) {
@@ -52,7 +57,7 @@ final class ReportPanel extends JTable {
         int names = metrics.stringWidth(rows.getColumnName(0));
         int values = metrics.stringWidth(rows.getColumnName(1));
         for (String[] row : rows.rows) {
-            names = Math.max(names, metrics.stringWidth(row[0]));
+            names = Math.max(names, metrics.stringWidth(row[3]));
             values = Math.max(values, metrics.stringWidth(row[1]));
         }
         int padding = 2 * getIntercellSpacing().width + 12;
@@ -98,10 +103,48 @@ final class ReportPanel extends JTable {
             }
         } else if (value instanceof Double d) {
             String exact = d == Math.rint(d) && Math.abs(d) < 1e15 ? Long.toString(d.longValue()) : d.toString();
-            out.add(new String[] {prefix, readable(d, exact), exact});
+            out.add(new String[] {prefix, readable(d, exact), exact, words(prefix)});
         } else {
-            out.add(new String[] {prefix, String.valueOf(value), String.valueOf(value)});
+            out.add(new String[] {prefix, String.valueOf(value), String.valueOf(value), words(prefix)});
         }
+    }
+
+    /**
+     * A figure's path in the report, in words: each name's camel case split into words, a
+     * number after a name (a list's item) joined to it, singular ("strips.1" → "strip 1"), the
+     * parts joined by colons: "strips.1.lengthOverWidth" → "Strip 1: length / width",
+     * "folds.zigzagTurns" → "Folds: zig-zag turns", "minAngleInDegrees" → "Min angle (°)".
+     */
+    static String words(String path) {
+        List<String> parts = new ArrayList<>();
+        for (String name : path.split("\\.")) {
+            if (!name.isEmpty() && name.chars().allMatch(Character::isDigit) && !parts.isEmpty()) {
+                String before = parts.remove(parts.size() - 1);
+                parts.add((before.endsWith("s") && !before.endsWith("ss") ? before.substring(0, before.length() - 1) : before) + " " + name);
+            } else {
+                parts.add(spaced(name));
+            }
+        }
+        String text = String.join(": ", parts);
+        return text.isEmpty() ? text : Character.toUpperCase(text.charAt(0)) + text.substring(1);
+    }
+
+    /** "lengthOverWidth" → "length / width", "zigzagTurns" → "zig-zag turns", "inDegrees" → "(°)". */
+    private static String spaced(String name) {
+        StringBuilder words = new StringBuilder();
+        for (int i = 0; i < name.length(); i++) {
+            char c = name.charAt(i);
+            boolean capital = Character.isUpperCase(c);
+            // A capital starts a word, unless it continues a run of capitals (an acronym: "OBJ").
+            if (capital && i > 0 && !(Character.isUpperCase(name.charAt(i - 1))
+                    && (i + 1 == name.length() || Character.isUpperCase(name.charAt(i + 1))))) {
+                words.append(' ');
+            }
+            boolean acronym = capital && (i + 1 < name.length() && Character.isUpperCase(name.charAt(i + 1))
+                    || i > 0 && Character.isUpperCase(name.charAt(i - 1)));
+            words.append(acronym ? c : Character.toLowerCase(c));
+        }
+        return words.toString().replace(" over ", " / ").replace(" in degrees", " (°)").replace("zigzag", "zig-zag");
     }
 
     /** Six significant digits, plainly written between 1e-4 and 1e7, in powers of ten beyond. */
@@ -140,7 +183,7 @@ final class ReportPanel extends JTable {
 
         @Override
         public Object getValueAt(int row, int column) {
-            return rows.get(row)[column];
+            return column == 0 ? rows.get(row)[3] : rows.get(row)[1];
         }
     }
 }

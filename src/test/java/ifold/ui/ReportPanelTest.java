@@ -37,10 +37,31 @@ class ReportPanelTest {
         panel.show(figures);
         panel.setSize(330, 200); // the window's report column
         panel.doLayout();
-        int name = panel.getFontMetrics(panel.getFont()).stringWidth("refinement.minAngleInDegrees");
+        int name = panel.getFontMetrics(panel.getFont()).stringWidth("Refinement: min angle (°)");
         int value = panel.getFontMetrics(panel.getFont()).stringWidth("12.3457");
         assertTrue(panel.getColumnModel().getColumn(0).getWidth() > name, "the name's column is "
                 + panel.getColumnModel().getColumn(0).getWidth() + " px for a name of " + name);
         assertTrue(panel.getColumnModel().getColumn(1).getWidth() > value, "and the value still fits");
+    }
+
+    /** The figures read in words; the report's own name is under the mouse. */
+    @Test
+    void figuresAreNamedInWords() {
+        assertEquals("Strip 1: length / width", ReportPanel.words("strips.1.lengthOverWidth"));
+        assertEquals("Folds: zig-zag turns", ReportPanel.words("folds.zigzagTurns"));
+        assertEquals("Refinement: min angle (°)", ReportPanel.words("refinement.minAngleInDegrees"));
+        assertEquals("Face size 4", ReportPanel.words("faceSizes.4"));
+        assertEquals("Input triangles", ReportPanel.words("inputTriangles"));
+        assertEquals("Seconds: layer order", ReportPanel.words("seconds.layerOrder"));
+        assertEquals("Collisions: pairs", ReportPanel.words("collisions.pairs"));
+        Map<String, Object> strip = new LinkedHashMap<>();
+        strip.put("lengthOverWidth", 126.2);
+        Map<String, Object> figures = new LinkedHashMap<>();
+        figures.put("strips", java.util.List.of(strip));
+        ReportPanel panel = new ReportPanel();
+        panel.show(figures);
+        assertEquals("Strip 1: length / width", panel.getValueAt(0, 0));
+        assertEquals("126.2", panel.getValueAt(0, 1));
+        assertEquals("126.2", panel.value("strips.1.lengthOverWidth"), "tests and tools still find a figure by its path");
     }
 }
