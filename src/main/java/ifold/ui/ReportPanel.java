@@ -113,7 +113,7 @@ final class ReportPanel extends JTable {
      * A figure's path in the report, in words: each name's camel case split into words, a
      * number after a name (a list's item) joined to it, singular ("strips.1" → "strip 1"), the
      * parts joined by colons: "strips.1.lengthOverWidth" → "Strip 1: length / width",
-     * "folds.zigzagTurns" → "Folds: zig-zag turns", "minAngleInDegrees" → "Min angle (°)".
+     * "folds.zigzagTurns" → "Folds: zig-zag turns", "minAngleOutDegrees" → "Min angle out (°)".
      */
     static String words(String path) {
         List<String> parts = new ArrayList<>();
@@ -129,7 +129,11 @@ final class ReportPanel extends JTable {
         return text.isEmpty() ? text : Character.toUpperCase(text.charAt(0)) + text.substring(1);
     }
 
-    /** "lengthOverWidth" → "length / width", "zigzagTurns" → "zig-zag turns", "inDegrees" → "(°)". */
+    /**
+     * "lengthOverWidth" → "length / width", "zigzagTurns" → "zig-zag turns", "degrees" → "(°)":
+     * the refinement's "minAngleInDegrees" and "minAngleOutDegrees" (of its input and output)
+     * read "min angle in (°)" and "min angle out (°)".
+     */
     private static String spaced(String name) {
         StringBuilder words = new StringBuilder();
         for (int i = 0; i < name.length(); i++) {
@@ -144,7 +148,8 @@ final class ReportPanel extends JTable {
                     || i > 0 && Character.isUpperCase(name.charAt(i - 1)));
             words.append(acronym ? c : Character.toLowerCase(c));
         }
-        return words.toString().replace(" over ", " / ").replace(" in degrees", " (°)").replace("zigzag", "zig-zag");
+        String text = words.toString().replace(" over ", " / ").replace("zigzag", "zig-zag");
+        return text.endsWith(" degrees") ? text.substring(0, text.length() - " degrees".length()) + " (°)" : text;
     }
 
     /** Six significant digits, plainly written between 1e-4 and 1e7, in powers of ten beyond. */

@@ -37,7 +37,7 @@ class ReportPanelTest {
         panel.show(figures);
         panel.setSize(330, 200); // the window's report column
         panel.doLayout();
-        int name = panel.getFontMetrics(panel.getFont()).stringWidth("Refinement: min angle (°)");
+        int name = panel.getFontMetrics(panel.getFont()).stringWidth("Refinement: min angle in (°)");
         int value = panel.getFontMetrics(panel.getFont()).stringWidth("12.3457");
         assertTrue(panel.getColumnModel().getColumn(0).getWidth() > name, "the name's column is "
                 + panel.getColumnModel().getColumn(0).getWidth() + " px for a name of " + name);
@@ -49,7 +49,8 @@ class ReportPanelTest {
     void figuresAreNamedInWords() {
         assertEquals("Strip 1: length / width", ReportPanel.words("strips.1.lengthOverWidth"));
         assertEquals("Folds: zig-zag turns", ReportPanel.words("folds.zigzagTurns"));
-        assertEquals("Refinement: min angle (°)", ReportPanel.words("refinement.minAngleInDegrees"));
+        assertEquals("Refinement: min angle in (°)", ReportPanel.words("refinement.minAngleInDegrees"));
+        assertEquals("Min angle out (°)", ReportPanel.words("minAngleOutDegrees"));
         assertEquals("Face size 4", ReportPanel.words("faceSizes.4"));
         assertEquals("Input triangles", ReportPanel.words("inputTriangles"));
         assertEquals("Seconds: layer order", ReportPanel.words("seconds.layerOrder"));
