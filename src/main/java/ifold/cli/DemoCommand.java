@@ -112,6 +112,8 @@ final class DemoCommand implements Runnable {
             Wrap.Result result;
             try {
                 result = Wrap.wrap(path, new int[] {0, 1}, options);
+            } catch (ParameterException e) {
+                throw UserError.usage(e); // a thickness too thin for the triangle's size
             } catch (Wrap.WrapException e) {
                 throw new UserError("cannot wrap this triangle: " + e.getMessage());
             }

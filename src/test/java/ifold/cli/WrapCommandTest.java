@@ -95,6 +95,7 @@ class WrapCommandTest {
                 "--thickness");
         // Layers a billionth of the model apart cannot be told apart; no thickness at all can.
         assertOptionError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--thickness", "1e-300"}, outputs)), "--thickness");
+        assertOptionError(CliTest.run(concat(new String[] {"demo", "zigzag", "--thickness", "1e-300"}, outputs)), "--thickness");
         CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--width", "0.3"}, outputs)),
                 "too wide for triangle", "of 58 on the path");
         CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", dir.resolve("missing.off").toString()}, outputs)),
