@@ -140,7 +140,13 @@ final class MainWindow extends JFrame {
         message.setToolTipText("what iFold is doing, or why it could not");
         status.add(message, BorderLayout.CENTER);
         JPanel work = new JPanel(new FlowLayout(FlowLayout.RIGHT, 6, 0));
-        progress.setPreferredSize(new Dimension(180, progress.getPreferredSize().height));
+        // As high as it is with its text ("1234 / 6398"), which it shows once the work counts:
+        // measured without, the bar was a few pixels high and cut the text in half.
+        progress.setStringPainted(true);
+        progress.setString("0 / 0");
+        int high = progress.getPreferredSize().height;
+        progress.setStringPainted(false);
+        progress.setPreferredSize(new Dimension(180, high));
         progress.setVisible(false);
         cancel.setVisible(false);
         cancel.addActionListener(e -> cancelWork());

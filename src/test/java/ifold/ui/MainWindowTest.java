@@ -506,6 +506,17 @@ class MainWindowTest {
         assertTrue(settings.recent().contains(good), "recent once it plays: " + settings.recent());
     }
 
+    /** The progress bar is as high as its text ("1234 / 6398"): it was a few pixels high, the text cut in half. */
+    @Test
+    void theProgressBarHoldsItsText() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        int text = onEdt(() -> window.progress.getFontMetrics(window.progress.getFont()).getAscent()
+                + window.progress.getFontMetrics(window.progress.getFont()).getDescent());
+        int bar = onEdt(() -> window.progress.getPreferredSize().height);
+        assertTrue(bar >= text, "the bar is " + bar + " px high for text " + text + " px high");
+    }
+
     /**
      * A model whose wrap is refused is drawn anyway, with the refusal at its field: before, the
      * view stayed on what it showed before (or grey), and the model was never drawn.
