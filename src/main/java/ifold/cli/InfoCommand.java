@@ -19,7 +19,7 @@ final class InfoCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "MODEL", description = "an .off or .obj model")
+    @Parameters(index = "0", paramLabel = "MODEL", description = "an .off, .obj or .stl model")
     java.nio.file.Path model;
 
     @Option(names = "--json", description = "print as JSON")

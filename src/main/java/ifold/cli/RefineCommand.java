@@ -29,7 +29,7 @@ final class RefineCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "MODEL", description = "an .off or .obj model")
+    @Parameters(index = "0", paramLabel = "MODEL", description = "an .off, .obj or .stl model")
     Path model;
 
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT", description = "where to write the refined mesh (.off or .obj)")

@@ -50,7 +50,7 @@ final class WrapCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "MODEL", description = "an .off or .obj model")
+    @Parameters(index = "0", paramLabel = "MODEL", description = "an .off, .obj or .stl model")
     Path model;
 
     @Option(names = "--width", paramLabel = "W",

@@ -344,8 +344,7 @@ final class MainWindow extends JFrame {
      * script or FOLD file to play (as {@code ifold app FILE}).
      */
     void open(Path file) {
-        String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
-        boolean model = name.endsWith(".off") || name.endsWith(".obj");
+        boolean model = ModelFile.isModelName(file);
         // A width or thickness typed for one model rarely suits another (a spike's triangles
         // refuse the cube's 0.1): another model starts from its own defaults, and says so.
         boolean another = model && !file.equals(parameters.model());
@@ -400,8 +399,7 @@ final class MainWindow extends JFrame {
 
     private Job lastModel() {
         for (Path file : settings.recent()) {
-            String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
-            if ((name.endsWith(".off") || name.endsWith(".obj")) && Files.isRegularFile(file)) {
+            if (ModelFile.isModelName(file) && Files.isRegularFile(file)) {
                 return parameters.wrap(file);
             }
         }
@@ -410,8 +408,7 @@ final class MainWindow extends JFrame {
 
     private void playScript() {
         for (Path file : settings.recent()) {
-            String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
-            if (!name.endsWith(".off") && !name.endsWith(".obj") && Files.isRegularFile(file)) {
+            if (!ModelFile.isModelName(file) && Files.isRegularFile(file)) {
                 parameters.show(new Job.Script(file));
                 return;
             }
@@ -420,7 +417,7 @@ final class MainWindow extends JFrame {
     }
 
     private void chooseModel() {
-        Path file = choose("Open a model", false, new FileNameExtensionFilter("Models (OFF, OBJ)", "off", "obj"));
+        Path file = choose("Open a model", false, new FileNameExtensionFilter("Models (OFF, OBJ, STL)", "off", "obj", "stl"));
         if (file != null) {
             open(file);
         }

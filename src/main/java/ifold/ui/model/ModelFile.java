@@ -56,10 +56,9 @@ public record ModelFile(int inputVertices, int inputFaces, MeshBuilder.Result bu
         return ModelInfo.of(file.toString(), loaded.inputVertices(), loaded.inputFaces(), loaded.built());
     }
 
-    /** Whether {@code file} is named as a model: .off or .obj, in any case. */
+    /** Whether {@code file} is named as a model: .off, .obj or .stl, in any case. */
     public static boolean isModelName(Path file) {
-        String name = file.getFileName() == null ? "" : file.getFileName().toString().toLowerCase(Locale.ROOT);
-        return name.endsWith(".off") || name.endsWith(".obj");
+        return ifold.mesh.io.MeshReaders.isModel(file);
     }
 
     static String readError(Path file, IOException e) {

@@ -351,7 +351,7 @@ class WritersTest {
 
         Path ply = Files.writeString(dir.resolve("a.ply"), "ply\n");
         MeshFormatException m = assertThrows(MeshFormatException.class, () -> MeshReaders.read(ply));
-        assertEquals(ply + ": unsupported file type: expected a name ending in .off or .obj", m.getMessage());
+        assertEquals(ply + ": unsupported file type: expected a name ending in .off, .obj or .stl", m.getMessage());
         assertEquals(0, m.line());
         Path noExtension = Files.writeString(dir.resolve("off"), "OFF\n");
         assertThrows(MeshFormatException.class, () -> MeshReaders.read(noExtension));
