@@ -4,6 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import ifold.mesh.HalfedgeMesh;
+import ifold.mesh.MeshBuilder;
 import ifold.mesh.PolygonSoup;
 import java.io.ByteArrayOutputStream;
 import java.nio.ByteBuffer;
@@ -18,6 +20,8 @@ import java.util.Locale;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 
 /** STL, binary and ASCII, against the OFF of the same model and against broken files. */
 class StlReaderTest {
@@ -110,6 +114,31 @@ class StlReaderTest {
             }
         }
         assertEquals(positions(b), positions(a.soup()));
+    }
+
+    /**
+     * Files another program wrote (trimesh 5.2.0, from the project's own models: binary with a
+     * header of zero bytes, ASCII with its own spacing): the same mesh as the OFF, built the
+     * same way, its corners at the OFF's positions in single precision.
+     */
+    @ParameterizedTest
+    @CsvSource({"torus.stl, torus.off", "figure3.stl, figure3.off", "tetrahedron-ascii.stl, tetrahedron.off"})
+    void filesWrittenByTrimeshReadAsTheirOff(String stl, String off) throws Exception {
+        PolygonSoup fromStl = StlReader.read(Path.of("src", "test", "resources", "stl", stl));
+        PolygonSoup fromOff = OffReader.read(Path.of("models", off));
+        HalfedgeMesh a = MeshBuilder.build(fromStl, MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();
+        HalfedgeMesh b = MeshBuilder.build(fromOff, MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();
+        assertEquals(b.vertexCount(), a.vertexCount());
+        assertEquals(b.faceCount(), a.faceCount());
+        Set<String> offPositions = new HashSet<>();
+        for (int v = 0; v < fromOff.vertexCount(); v++) {
+            offPositions.add((float) fromOff.coordinate(v, 0) + " " + (float) fromOff.coordinate(v, 1) + " " + (float) fromOff.coordinate(v, 2));
+        }
+        Set<String> stlPositions = new HashSet<>();
+        for (int v = 0; v < fromStl.vertexCount(); v++) {
+            stlPositions.add((float) fromStl.coordinate(v, 0) + " " + (float) fromStl.coordinate(v, 1) + " " + (float) fromStl.coordinate(v, 2));
+        }
+        assertEquals(offPositions, stlPositions);
     }
 
     @Test
