@@ -134,7 +134,7 @@ final class ExportDialogs {
         if (file == null) {
             return;
         }
-        if (!ModelFile.isModelName(file)) {
+        if (!ModelFile.isWritableModelName(file)) {
             file = file.resolveSibling(file.getFileName() + ".off");
         }
         refinement(file);

@@ -755,7 +755,7 @@ final class MainWindow extends JFrame {
             return;
         }
         Path file = target.toPath();
-        if (!ModelFile.isModelName(file)) {
+        if (!ModelFile.isWritableModelName(file)) {
             file = file.resolveSibling(file.getFileName() + ".off");
         }
         newModel(chosen, file);

@@ -33,6 +33,12 @@ public final class MeshWriters {
         }
     }
 
+    /** Whether {@link #write} writes a file of this name: .off or .obj, in any case (STL is read, not yet written). */
+    public static boolean writes(Path file) {
+        String name = MeshReaders.lowerCaseName(file);
+        return name.endsWith(".off") || name.endsWith(".obj");
+    }
+
     /** Writes "x y z\n" for vertex {@code v}. */
     static void writeVertex(IndexedPolygons mesh, int v, AsciiOutput out) throws IOException {
         for (int axis = 0; axis < 3; axis++) {

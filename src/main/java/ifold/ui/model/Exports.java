@@ -230,7 +230,7 @@ public final class Exports {
      * @param strict refuse defective input instead of repairing it, as {@code --strict}
      */
     public static Refined refinement(Path model, boolean strict, Path file, Progress progress) throws JobFailure {
-        if (!ModelFile.isModelName(file)) {
+        if (!ModelFile.isWritableModelName(file)) {
             throw new JobFailure(new Problem("file", "a refinement is written as .off or .obj, got " + file.getFileName()));
         }
         ModelFile loaded = ModelFile.load(model, new MeshBuilder.Options(strict, true), progress);

@@ -56,9 +56,14 @@ public record ModelFile(int inputVertices, int inputFaces, MeshBuilder.Result bu
         return ModelInfo.of(file.toString(), loaded.inputVertices(), loaded.inputFaces(), loaded.built());
     }
 
-    /** Whether {@code file} is named as a model: .off, .obj or .stl, in any case. */
+    /** Whether {@code file} is named as a model iFold reads: .off, .obj or .stl, in any case. */
     public static boolean isModelName(Path file) {
         return ifold.mesh.io.MeshReaders.isModel(file);
+    }
+
+    /** Whether {@code file} is named as a model iFold writes: .off or .obj, in any case. */
+    public static boolean isWritableModelName(Path file) {
+        return ifold.mesh.io.MeshWriters.writes(file);
     }
 
     static String readError(Path file, IOException e) {

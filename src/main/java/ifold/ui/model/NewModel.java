@@ -64,7 +64,7 @@ public record NewModel(BuiltInModels.Shape shape, String around, String across, 
         if (!problems.isEmpty()) {
             throw new JobFailure(problems.get(0));
         }
-        if (!ModelFile.isModelName(file)) {
+        if (!ModelFile.isWritableModelName(file)) {
             throw new JobFailure(new Problem("file", "a model is written as .off or .obj, got " + file.getFileName()));
         }
         progress.stage("making the " + shape);
