@@ -235,8 +235,6 @@ public final class FoldFile {
                 byHost.computeIfAbsent(sheet.host(f), h -> new ArrayList<>()).add(f);
             }
             double tolerance = sheet.tolerance();
-            int[] mark = new int[sheet.faceCount()];
-            int[] seen = {0};
             for (List<Integer> faces : byHost.values()) {
                 int n = faces.size();
                 double[][] placed = new double[n][];
@@ -251,30 +249,13 @@ public final class FoldFile {
                 for (int i = 0; i < n; i++) {
                     grid.add(i, placed[i]);
                 }
-                int[] candidates = new int[16];
                 for (int i = 0; i < n; i++) {
-                    int stamp = ++seen[0];
-                    int[] count = {0};
-                    int[][] found = {candidates};
-                    int from = i;
-                    ifold.sheet.FaceGrid.Visitor take = j -> {
-                        if (j > from && mark[j] != stamp) {
-                            mark[j] = stamp;
-                            if (count[0] == found[0].length) {
-                                found[0] = Arrays.copyOf(found[0], 2 * count[0]);
-                            }
-                            found[0][count[0]++] = j;
+                    int[] near = grid.near(placed[i]); // null: a face too big for the grid, tried with all
+                    for (int c = 0; c < (near == null ? n : near.length); c++) {
+                        int j = near == null ? c : near[c];
+                        if (j <= i) {
+                            continue; // each pair once
                         }
-                    };
-                    if (!grid.near(placed[i], take)) {
-                        for (int j = i + 1; j < n; j++) {
-                            take.visit(j);
-                        }
-                    }
-                    candidates = found[0];
-                    Arrays.sort(candidates, 0, count[0]);
-                    for (int c = 0; c < count[0]; c++) {
-                        int j = candidates[c];
                         if (boxes[i][0] >= boxes[j][2] - tolerance || boxes[j][0] >= boxes[i][2] - tolerance
                                 || boxes[i][1] >= boxes[j][3] - tolerance || boxes[j][1] >= boxes[i][3] - tolerance) {
                             continue;

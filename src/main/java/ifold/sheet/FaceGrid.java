@@ -26,6 +26,10 @@ public final class FaceGrid {
     private int bucketCount;
     private int[] large = new int[4];
     private int largeCount;
+    /** For {@link #near}: the faces found so far, and the last call each face was found by. */
+    private int[] found = new int[16];
+    private int[] seen = new int[16];
+    private int visit;
 
     /** A grid of square cells {@code cell} across. */
     public FaceGrid(double cell) {
@@ -55,17 +59,13 @@ public final class FaceGrid {
         double maxY = Double.NEGATIVE_INFINITY;
         for (int i = 0; i < n; i++) {
             double[] p = polygons[i];
-            int m = p.length / 2;
-            double a = Math.abs(Polygons2.twiceArea(p, m)) / 2;
-            double around = 0;
-            for (int k = 0; k < m; k++) {
-                int j = (k + 1) % m;
-                around += Math.hypot(p[2 * j] - p[2 * k], p[2 * j + 1] - p[2 * k + 1]);
-                minX = Math.min(minX, p[2 * k]);
-                maxX = Math.max(maxX, p[2 * k]);
-                minY = Math.min(minY, p[2 * k + 1]);
-                maxY = Math.max(maxY, p[2 * k + 1]);
-            }
+            double[] box = Polygons2.bounds(p);
+            minX = Math.min(minX, box[0]);
+            minY = Math.min(minY, box[1]);
+            maxX = Math.max(maxX, box[2]);
+            maxY = Math.max(maxY, box[3]);
+            double a = Math.abs(Polygons2.twiceArea(p, p.length / 2)) / 2;
+            double around = Polygons2.perimeter(p, p.length / 2);
             area += a;
             perimeter += around;
             narrow[i] = around > 0 ? 2 * a / around : 0;
@@ -112,33 +112,45 @@ public final class FaceGrid {
         });
     }
 
-    /** What {@link #near} finds. */
-    public interface Visitor {
-        void visit(int f);
-    }
-
     /**
-     * Calls {@code visitor} with the faces listed under the cells {@code polygon} meets and the
-     * large ones; a face may come more than once (the caller marks those it has seen). A polygon
-     * meeting more cells than {@link #MOST_CELLS} returns false without a call: look at all.
+     * The faces listed under the cells {@code polygon} meets and the large ones, each once, in
+     * ascending order; null where the polygon meets more cells than {@link #MOST_CELLS}: look at
+     * all.
      */
-    public boolean near(double[] polygon, Visitor visitor) {
+    public int[] near(double[] polygon) {
         if (cellCount(polygon) > MOST_CELLS) {
-            return false;
+            return null;
         }
+        int stamp = ++visit;
+        int[] n = {0};
         for (int i = 0; i < largeCount; i++) {
-            visitor.visit(large[i]);
+            take(large[i], stamp, n);
         }
         forCells(polygon, (x, y) -> {
             int b = bucketOf.get(key(x, y), -1);
             if (b >= 0) {
                 int[] bucket = buckets[b];
                 for (int k = 1; k <= bucket[0]; k++) {
-                    visitor.visit(bucket[k]);
+                    take(bucket[k], stamp, n);
                 }
             }
         });
-        return true;
+        int[] faces = Arrays.copyOf(found, n[0]);
+        Arrays.sort(faces);
+        return faces;
+    }
+
+    private void take(int f, int stamp, int[] n) {
+        if (f >= seen.length) {
+            seen = Arrays.copyOf(seen, Math.max(2 * seen.length, f + 1));
+        }
+        if (seen[f] != stamp) {
+            seen[f] = stamp;
+            if (n[0] == found.length) {
+                found = Arrays.copyOf(found, 2 * n[0]);
+            }
+            found[n[0]++] = f;
+        }
     }
 
     private interface CellVisitor {

@@ -88,6 +88,16 @@ public final class Polygons2 {
         return Arrays.copyOf(out, 2 * m);
     }
 
+    /** The length around a polygon of {@code n} corners. */
+    public static double perimeter(double[] xy, int n) {
+        double around = 0;
+        for (int i = 0; i < n; i++) {
+            int j = (i + 1) % n;
+            around += Math.hypot(xy[2 * j] - xy[2 * i], xy[2 * j + 1] - xy[2 * i + 1]);
+        }
+        return around;
+    }
+
     /** The bounding box of a polygon: min x, min y, max x, max y. */
     public static double[] bounds(double[] xy) {
         double[] box = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};

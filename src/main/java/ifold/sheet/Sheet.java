@@ -134,8 +134,8 @@ public final class Sheet {
         }
 
         /**
-         * The places in the stack, in order, of the faces that may overlap face f (their boxes
-         * near its polygon): all of them while the stack is small.
+         * The places in the stack, in order, of the faces that may overlap face f (listed in the
+         * grid cells its polygon meets): all of them while the stack is small.
          */
         int[] near(int f) {
             if (count >= GRID_FROM && grid == null) {
@@ -148,25 +148,19 @@ public final class Sheet {
                     grid.add(faces[i], polygons[i]);
                 }
             }
-            if (grid != null) {
-                double[] polygon = placedCached(f);
-                int seen = nextMark();
-                int[] n = {0};
-                int[][] holder = {new int[16]};
-                boolean listed = grid.near(polygon, g -> {
-                    if (g != f && mark[g] != seen && slotOf[g] < count && faces[slotOf[g]] == g) {
-                        mark[g] = seen;
-                        if (n[0] == holder[0].length) {
-                            holder[0] = Arrays.copyOf(holder[0], 2 * n[0]);
-                        }
-                        holder[0][n[0]++] = slotOf[g];
+            int[] listed = grid == null ? null : grid.near(placedCached(f));
+            if (listed != null) {
+                // Faces that left the stack stay listed: only those still in it, by their place.
+                int[] slots = new int[listed.length];
+                int n = 0;
+                for (int g : listed) {
+                    if (g != f && slotOf[g] < count && faces[slotOf[g]] == g) {
+                        slots[n++] = slotOf[g];
                     }
-                });
-                if (listed) {
-                    int[] slots = Arrays.copyOf(holder[0], n[0]);
-                    Arrays.sort(slots);
-                    return slots;
                 }
+                slots = Arrays.copyOf(slots, n);
+                Arrays.sort(slots);
+                return slots;
             }
             int[] all = new int[count];
             for (int i = 0; i < count; i++) {

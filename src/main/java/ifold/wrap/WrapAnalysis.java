@@ -101,36 +101,24 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
                         grid.add(i, placed[i]);
                     }
                 }
-                int[] seen = new int[faces.length];
-                int[] visit = {0};
-                int[] near = new int[faces.length];
                 for (int triangle : entry.getValue()) {
                     double[] corners = cornersIn(result.mesh(), triangle, frame);
                     double[] box = Polygons2.bounds(corners);
                     // Turned so that the triangle's passes run along x, as they run along its
                     // exit edge: their boxes are then thin, and each meets only the cells near it.
                     // Each face clipped to the triangle first: only its part there makes cells.
+                    // The faces in their order, whichever way they were found: the cells, and so
+                    // the deepest point reported, do not depend on the grid.
                     double[] along = passDirection(result.mesh(), strip, triangle, frame);
-                    int[] nearCount = {0};
-                    FaceGrid.Visitor take = i -> {
-                        double[] b = boxes[i];
-                        if (seen[i] != visit[0] && b[0] < box[2] && box[0] < b[2] && b[1] < box[3] && box[1] < b[3]) {
-                            seen[i] = visit[0];
-                            near[nearCount[0]++] = i;
-                        }
-                    };
-                    visit[0]++;
-                    if (grid == null || !grid.near(corners, take)) {
-                        for (int i = 0; i < faces.length; i++) {
-                            take.visit(i);
-                        }
-                    }
-                    // In the faces' order, whichever way they were found: the cells, and so the
-                    // deepest point reported, do not depend on the grid.
-                    java.util.Arrays.sort(near, 0, nearCount[0]);
+                    int[] near = grid == null ? null : grid.near(corners); // null: look at all
                     List<double[]> polygons = new ArrayList<>();
-                    for (int j = 0; j < nearCount[0]; j++) {
-                        double[] part = clipToTriangle(counterClockwise(placed[near[j]]), corners, sheet.tolerance());
+                    for (int m = 0; m < (near == null ? faces.length : near.length); m++) {
+                        int i = near == null ? m : near[m];
+                        double[] b = boxes[i];
+                        if (!(b[0] < box[2] && box[0] < b[2] && b[1] < box[3] && box[1] < b[3])) {
+                            continue;
+                        }
+                        double[] part = clipToTriangle(counterClockwise(placed[i]), corners, sheet.tolerance());
                         if (part != null) {
                             polygons.add(turned(part, along));
                         }
@@ -485,12 +473,7 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
     /** Whether a convex polygon is nowhere wider than {@code tolerance}: twice its area at most the tolerance times its perimeter. */
     private static boolean thinnerThan(double[] p, double tolerance) {
         int n = p.length / 2;
-        double perimeter = 0;
-        for (int i = 0; i < n; i++) {
-            int j = (i + 1) % n;
-            perimeter += Math.hypot(p[2 * j] - p[2 * i], p[2 * j + 1] - p[2 * i + 1]);
-        }
-        return !(Math.abs(Polygons2.twiceArea(p, n)) > tolerance * perimeter);
+        return !(Math.abs(Polygons2.twiceArea(p, n)) > tolerance * Polygons2.perimeter(p, n));
     }
 
     /**
