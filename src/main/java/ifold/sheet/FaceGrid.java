@@ -26,10 +26,8 @@ public final class FaceGrid {
     private int bucketCount;
     private int[] large = new int[4];
     private int largeCount;
-    /** For {@link #near}: the faces found so far, and the last call each face was found by. */
+    /** For {@link #near}: the faces found so far. */
     private int[] found = new int[16];
-    private int[] seen = new int[16];
-    private int visit;
 
     /** A grid of square cells {@code cell} across. */
     public FaceGrid(double cell) {
@@ -121,36 +119,36 @@ public final class FaceGrid {
         if (cellCount(polygon) > MOST_CELLS) {
             return null;
         }
-        int stamp = ++visit;
         int[] n = {0};
         for (int i = 0; i < largeCount; i++) {
-            take(large[i], stamp, n);
+            take(large[i], n);
         }
         forCells(polygon, (x, y) -> {
             int b = bucketOf.get(key(x, y), -1);
             if (b >= 0) {
                 int[] bucket = buckets[b];
                 for (int k = 1; k <= bucket[0]; k++) {
-                    take(bucket[k], stamp, n);
+                    take(bucket[k], n);
                 }
             }
         });
-        int[] faces = Arrays.copyOf(found, n[0]);
-        Arrays.sort(faces);
-        return faces;
+        // A face listed in several of the cells comes once: sorted, then the repeats dropped (an
+        // array of marks by face would be as long as the sheet's faces, for each stack's grid).
+        Arrays.sort(found, 0, n[0]);
+        int distinct = 0;
+        for (int i = 0; i < n[0]; i++) {
+            if (distinct == 0 || found[i] != found[distinct - 1]) {
+                found[distinct++] = found[i];
+            }
+        }
+        return Arrays.copyOf(found, distinct);
     }
 
-    private void take(int f, int stamp, int[] n) {
-        if (f >= seen.length) {
-            seen = Arrays.copyOf(seen, Math.max(2 * seen.length, f + 1));
+    private void take(int f, int[] n) {
+        if (n[0] == found.length) {
+            found = Arrays.copyOf(found, 2 * n[0]);
         }
-        if (seen[f] != stamp) {
-            seen[f] = stamp;
-            if (n[0] == found.length) {
-                found = Arrays.copyOf(found, 2 * n[0]);
-            }
-            found[n[0]++] = f;
-        }
+        found[n[0]++] = f;
     }
 
     private interface CellVisitor {
