@@ -3,6 +3,7 @@ import ifold.mesh.MeshBuilder;
 import ifold.mesh.PolygonSoup;
 import ifold.refine.FacePreparation;
 import ifold.refine.HamiltonianRefinement;
+import ifold.wrap.LayerFloor;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapAnalysis;
 import ifold.wrap.WrapGeometry;
@@ -16,8 +17,8 @@ import java.util.List;
  */
 public final class Corners {
     public static void main(String[] args) throws Exception {
-        System.out.println("| apex angle | tucks | most tucks on a triangle | layers at most | faces | seconds |");
-        System.out.println("|---|---|---|---|---|---|");
+        System.out.println("| apex angle | tucks | most tucks on a path triangle | layers at most | floor for any strip | faces | seconds |");
+        System.out.println("|---|---|---|---|---|---|---|");
         for (String arg : args) {
             double degrees = Double.parseDouble(arg);
             HalfedgeMesh spike = MeshBuilder.build(spike(degrees), MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();
@@ -40,8 +41,9 @@ public final class Corners {
                 for (int t : tucks) {
                     most = Math.max(most, t);
                 }
-                row = String.format(java.util.Locale.ROOT, "| %s° | %d | %d | %d | %d | %.1f |", arg, result.count(Wrap.Kind.TUCK), most,
-                        WrapAnalysis.of(result, geometries).maxLayers(), result.strips().get(0).sheet().faceCount(),
+                row = String.format(java.util.Locale.ROOT, "| %s° | %d | %d | %d | %d | %d | %.1f |", arg, result.count(Wrap.Kind.TUCK), most,
+                        WrapAnalysis.of(result, geometries).maxLayers(), LayerFloor.of(spike).layers(),
+                        result.strips().get(0).sheet().faceCount(),
                         (System.nanoTime() - start) * 1e-9);
             } catch (Wrap.WrapException e) {
                 row = String.format(java.util.Locale.ROOT, "| %s° | refused after %.1f s: %s |", arg, (System.nanoTime() - start) * 1e-9,

@@ -22,7 +22,7 @@ final class AppCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", arity = "0..1", paramLabel = "FILE", description = "an .off, .obj or .stl model, a fold script or a .fold file")
+    @Parameters(index = "0", arity = "0..1", paramLabel = "FILE", description = "an .off, .obj, .ply or .stl model, a fold script or a .fold file")
     Path file;
 
     @Option(names = "--settings", paramLabel = "FILE", hidden = true,

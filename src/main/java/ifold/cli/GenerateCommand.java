@@ -25,8 +25,11 @@ final class GenerateCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "SHAPE", description = "one of: ${COMPLETION-CANDIDATES}")
     BuiltInModels.Shape shape;
 
-    @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT", description = "where to write it (.off or .obj)")
+    @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT", description = "where to write it (.off, .obj, .ply or .stl)")
     Path output;
+
+    @Option(names = "--ascii", description = "write PLY and STL as text (they are binary by default; OFF and OBJ are text)")
+    boolean ascii;
 
     @Option(names = "--around", paramLabel = "N", defaultValue = "" + BuiltInModels.DEFAULT_AROUND, description = "torus: segments around the ring (default ${DEFAULT-VALUE})")
     int around;
@@ -39,7 +42,7 @@ final class GenerateCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        OutputFiles.checkWritableFile(output, "-o", ".off", ".obj");
+        OutputFiles.checkWritableFile(output, "-o", ".off", ".obj", ".ply", ".stl");
         PolygonSoup soup;
         try {
             soup = BuiltInModels.make(shape, around, across, subdivisions);
@@ -50,7 +53,7 @@ final class GenerateCommand implements Callable<Integer> {
             throw new CommandLine.ParameterException(spec.commandLine(), "option --" + e.parameter() + ": " + e.getMessage());
         }
         try {
-            MeshWriters.write(soup, output);
+            MeshWriters.write(soup, output, ascii);
         } catch (IOException e) {
             throw new UserError(output + ": cannot write: " + e.getMessage());
         }

@@ -19,7 +19,7 @@ final class InfoCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "MODEL", description = "an .off, .obj or .stl model")
+    @Parameters(index = "0", paramLabel = "MODEL", description = "an .off, .obj, .ply or .stl model")
     java.nio.file.Path model;
 
     @Option(names = "--json", description = "print as JSON")
@@ -33,7 +33,7 @@ final class InfoCommand implements Callable<Integer> {
         LoadedModel loaded = LoadedModel.load(model, new MeshBuilder.Options(strict, false));
         loaded.requireFaces(model, "nothing to describe");
         loaded.reportRepairs(model, spec.commandLine().getErr());
-        Map<String, Object> report = ModelInfo.of(model.toString(), loaded.inputVertices(), loaded.inputFaces(), loaded.built());
+        Map<String, Object> report = ModelInfo.of(model.toString(), loaded.read(), loaded.inputVertices(), loaded.inputFaces(), loaded.built());
         var out = spec.commandLine().getOut();
         if (json) {
             out.print(Json.write(report));

@@ -43,6 +43,11 @@ final class LoadedModel {
         return loaded.inputFaces();
     }
 
+    /** The format read, in words, and the corners welded (STL; -1 for others). */
+    ifold.mesh.io.MeshReaders.Read read() {
+        return loaded.read();
+    }
+
     MeshBuilder.Result built() {
         return loaded.built();
     }

@@ -38,6 +38,10 @@ final class PaperOutputs {
     @Option(names = "--export-obj", paramLabel = "FILE", description = "write the folded paper as OBJ: vt = paper coordinates, caps in group 'cap'")
     Path exportObj;
 
+    @Option(names = "--export-mesh", paramLabel = "FILE", description = "write the folded paper, caps included, as one mesh for"
+            + " printing and other tools: .ply or .stl (binary), .off or .obj by its name")
+    Path exportMesh;
+
     @Option(names = "--export-fold", paramLabel = "FILE.fold", description = "write the crease pattern and the folded state as a "
             + "FOLD file (docs/fold-format.md): Origami Simulator, Rabbit Ear and ORIPA read it")
     Path exportFold;
@@ -60,6 +64,9 @@ final class PaperOutputs {
     void check(String name, PrintWriter err, boolean movieWithoutDisplay) {
         if (exportObj != null) {
             OutputFiles.checkWritableFile(exportObj, "--export-obj", ".obj");
+        }
+        if (exportMesh != null) {
+            OutputFiles.checkWritableFile(exportMesh, "--export-mesh", ".ply", ".stl", ".off", ".obj");
         }
         if (report != null) {
             OutputFiles.checkWritableFile(report, "--report", ".json");
@@ -86,13 +93,13 @@ final class PaperOutputs {
     /**
      * Writes the sheets as a FOLD file if asked, and adds what its crease pattern holds to the
      * figures ({@code creasePattern}: mountains, valleys, flat creases, border edges); where
-     * paper is exported at all (FOLD, OBJ or a report), checks its layer order with the
+     * paper is exported at all (FOLD, OBJ, a mesh or a report), checks its layer order with the
      * independent checker, reading the FOLD file written (or its text), and adds
      * {@code layerOrder}.
      */
     void exportFold(List<FoldFile.Folded> sheets, String title, Map<String, Object> figures, PrintWriter out) {
         writeFold(sheets, title, figures, out);
-        if (exportFold == null && exportObj == null && report == null) {
+        if (exportFold == null && exportObj == null && exportMesh == null && report == null) {
             return;
         }
         long started = System.nanoTime();
@@ -147,6 +154,7 @@ final class PaperOutputs {
                 written.add(exportObj);
                 out.println("wrote " + exportObj);
             }
+            writeMesh(folded, out);
             checkCollisions(folded, thickness, null, figures);
             writeReport(figures, out);
         } catch (IOException e) {
@@ -163,6 +171,7 @@ final class PaperOutputs {
                 written.add(exportObj);
                 out.println("wrote " + exportObj);
             }
+            writeMesh(geometries, out);
             checkCollisions(geometries, result.thickness(), result.mesh(), figures);
             writeReport(figures, out);
         } catch (IOException e) {
@@ -171,17 +180,27 @@ final class PaperOutputs {
         }
     }
 
+    /** Writes the folded paper as one mesh ({@code --export-mesh}), where asked. */
+    private void writeMesh(List<WrapGeometry> folded, PrintWriter out) throws IOException {
+        if (exportMesh == null) {
+            return;
+        }
+        ifold.mesh.io.MeshWriters.write(WrapExport.paperMesh(folded), exportMesh);
+        written.add(exportMesh);
+        out.println("wrote " + exportMesh);
+    }
+
     /** The collision check's line, once a run that exports paper has made it; null before. */
     private String collisions;
 
     /**
-     * Where paper is exported (an OBJ or a report), checks it for collisions with the
+     * Where paper is exported (an OBJ, a mesh or a report), checks it for collisions with the
      * independent checker, reading the OBJ written (or its text), and adds {@code collisions}
      * to the figures; {@code model} is the surface it rests on, or null for none.
      */
     void checkCollisions(List<WrapGeometry> strips, double thickness, IndexedPolygons model, Map<String, Object> figures)
             throws IOException {
-        if (exportObj == null && report == null) {
+        if (exportObj == null && exportMesh == null && report == null) {
             return;
         }
         PaperCollisions.Result result = Collisions.addTo(figures, strips, thickness, model, exportObj);

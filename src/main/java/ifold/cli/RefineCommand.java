@@ -29,11 +29,14 @@ final class RefineCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "MODEL", description = "an .off, .obj or .stl model")
+    @Parameters(index = "0", paramLabel = "MODEL", description = "an .off, .obj, .ply or .stl model")
     Path model;
 
-    @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT", description = "where to write the refined mesh (.off or .obj)")
+    @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT", description = "where to write the refined mesh (.off, .obj, .ply or .stl)")
     Path output;
+
+    @Option(names = "--ascii", description = "write PLY and STL as text (they are binary by default; OFF and OBJ are text)")
+    boolean ascii;
 
     @Option(names = "--json", description = "print counts, angles, repairs and timings as JSON")
     boolean json;
@@ -47,7 +50,7 @@ final class RefineCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException {
-        OutputFiles.checkWritableFile(output, "-o", ".off", ".obj");
+        OutputFiles.checkWritableFile(output, "-o", ".off", ".obj", ".ply", ".stl");
         LoadedModel loaded = LoadedModel.load(model, new MeshBuilder.Options(strict, true));
         loaded.requireFaces(model, "nothing to refine");
         loaded.reportRepairs(model, spec.commandLine().getErr());
@@ -63,7 +66,7 @@ final class RefineCommand implements Callable<Integer> {
         }
         long refined = System.nanoTime();
         try {
-            MeshWriters.write(result.mesh(), output);
+            MeshWriters.write(result.mesh(), output, ascii);
         } catch (IOException e) {
             throw new UserError("cannot write " + e.getMessage());
         }

@@ -31,7 +31,7 @@ final class ViewCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "MODEL", description = "an .off, .obj or .stl model")
+    @Parameters(index = "0", paramLabel = "MODEL", description = "an .off, .obj, .ply or .stl model")
     Path model;
 
     @Option(names = "--refine", description = "show the Hamiltonian refinement of the model")

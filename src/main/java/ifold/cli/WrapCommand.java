@@ -9,9 +9,11 @@ import ifold.io.AtomicFile;
 import ifold.fold.FoldFile;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
+import ifold.mesh.io.MeshWriters;
 import ifold.refine.HamiltonianRefinement;
 import ifold.scene.Animation;
 import ifold.scene.Scene;
+import ifold.wrap.LayerFloor;
 import ifold.wrap.ParameterException;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapAnalysis;
@@ -50,7 +52,7 @@ final class WrapCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "MODEL", description = "an .off, .obj or .stl model")
+    @Parameters(index = "0", paramLabel = "MODEL", description = "an .off, .obj, .ply or .stl model")
     Path model;
 
     @Option(names = "--width", paramLabel = "W",
@@ -147,6 +149,11 @@ final class WrapCommand implements Callable<Integer> {
                 written.add(exportObj);
                 outputs.wrote(exportObj);
             }
+            if (outputs.exportMesh != null) {
+                MeshWriters.write(WrapExport.paperMesh(geometries), outputs.exportMesh);
+                written.add(outputs.exportMesh);
+                outputs.wrote(outputs.exportMesh);
+            }
             List<FoldFile.Folded> sheets = new ArrayList<>();
             for (Wrap.Strip strip : result.strips()) {
                 sheets.add(new FoldFile.Folded(strip.sheet(), result.frames()));
@@ -216,13 +223,17 @@ final class WrapCommand implements Callable<Integer> {
         // Faces triangulated again say so: the path's triangles then come from those.
         String prepared = !path.prepared() ? "" : String.format(Locale.ROOT, " -> %d prepared (%d of %d planar regions)",
                 path.preparation().trianglesAfter(), path.preparation().prepared(), path.preparation().regions());
+        // A floor of one says nothing; a sharper vertex's floor tells which layers no strip avoids.
+        LayerFloor floor = LayerFloor.of(result.mesh());
+        String atLeast = floor.layers() < 2 ? "" : String.format(Locale.ROOT, "; at least %d for any strip, at a vertex of %.3g degrees",
+                floor.layers(), Math.toDegrees(floor.angleSum()));
         return String.format(Locale.ROOT, "%s: %d %s%s -> %d on the path, %s, "
-                + "%d turn folds, %d gadget folds, %d edge crossings, %d tucks, %d layers at most (a stack of %d), "
+                + "%d turn folds, %d gadget folds, %d edge crossings, %d tucks, %d layers at most (a stack of %d%s), "
                 + "paper efficiency %.3f, coverage %.3f, isometry error %.1e", model, mesh.faceCount(), mesh.faceCount() == 1 ? "triangle" : "triangles",
                 prepared, result.mesh().faceCount(),
                 paper, result.count(Wrap.Kind.ZIGZAG_TURN),
                 result.count(Wrap.Kind.TURN_GADGET), result.count(Wrap.Kind.EDGE_CROSSING), result.count(Wrap.Kind.TUCK),
-                analysis.maxLayers(), analysis.stackLevels(), analysis.surfaceArea() / analysis.paperArea(), analysis.coverage(),
+                analysis.maxLayers(), analysis.stackLevels(), atLeast, analysis.surfaceArea() / analysis.paperArea(), analysis.coverage(),
                 analysis.isometryError());
     }
 }

@@ -30,9 +30,11 @@ public final class ModelFiles {
      *
      * @param inputVertices vertices in the file
      * @param inputFaces faces in the file
+     * @param read the format read (its soup is dropped: null)
      * @param built the halfedge mesh and its repairs
      */
-    public record Loaded(int inputVertices, int inputFaces, MeshBuilder.Result built, double parseSeconds, double buildSeconds) {
+    public record Loaded(int inputVertices, int inputFaces, MeshReaders.Read read, MeshBuilder.Result built, double parseSeconds,
+            double buildSeconds) {
         public Map<Defect, Integer> repairs() {
             return built.repairs();
         }
@@ -103,15 +105,20 @@ public final class ModelFiles {
 
     /** Reads {@code file} into a soup. */
     public static PolygonSoup read(Path file) throws LoadFailure {
+        return readDescribed(file).soup();
+    }
+
+    /** Reads {@code file} into a soup, with the format read. */
+    public static MeshReaders.Read readDescribed(Path file) throws LoadFailure {
         if (Files.isDirectory(file)) {
-            throw new LoadFailure(file + ": is a folder, expected an .off or .obj file", false);
+            throw new LoadFailure(file + ": is a folder, expected a model file", false);
         }
         String refusal = notAFile(file);
         if (refusal != null) {
             throw new LoadFailure(refusal, false);
         }
         try {
-            return MeshReaders.read(file);
+            return MeshReaders.readDescribed(file);
         } catch (MeshFormatException e) {
             throw new LoadFailure(e.getMessage(), false);
         } catch (IOException e) {
@@ -132,12 +139,14 @@ public final class ModelFiles {
     /** Reads and builds {@code file}. */
     public static Loaded load(Path file, MeshBuilder.Options options) throws LoadFailure {
         long start = System.nanoTime();
-        PolygonSoup soup = read(file);
+        MeshReaders.Read read = readDescribed(file);
+        PolygonSoup soup = read.soup();
         long parsed = System.nanoTime();
         MeshBuilder.Result built = build(file, soup, options);
         long builtAt = System.nanoTime();
         // The soup is not kept: for big models it is a third of the memory the refinement needs.
-        return new Loaded(soup.vertexCount(), soup.faceCount(), built, (parsed - start) * 1e-9, (builtAt - parsed) * 1e-9);
+        return new Loaded(soup.vertexCount(), soup.faceCount(), new MeshReaders.Read(null, read.format(), read.weldedCorners()), built,
+                (parsed - start) * 1e-9, (builtAt - parsed) * 1e-9);
     }
 
     /** What went wrong reading {@code file}, in one line. */

@@ -5,6 +5,7 @@ import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.MeshValidator;
 import ifold.mesh.Topology;
+import ifold.mesh.io.MeshReaders;
 import java.util.LinkedHashMap;
 import java.util.Locale;
 import java.util.Map;
@@ -25,11 +26,12 @@ public final class ModelInfo {
      * and is valid as built, and the repairs made by kind.
      *
      * @param file the model's name as the user gave it
+     * @param read the format read, and for STL the corners welded
      * @param inputVertices vertices in the file
      * @param inputFaces faces in the file
      * @param built the mesh built from the file, with its repairs
      */
-    public static Map<String, Object> of(String file, int inputVertices, int inputFaces, MeshBuilder.Result built) {
+    public static Map<String, Object> of(String file, MeshReaders.Read read, int inputVertices, int inputFaces, MeshBuilder.Result built) {
         HalfedgeMesh mesh = built.mesh();
         Topology topology = Topology.of(mesh);
         boolean valid = MeshValidator.validate(mesh).isEmpty();
@@ -38,6 +40,10 @@ public final class ModelInfo {
         boolean manifold = !repairs.containsKey(Defect.NON_MANIFOLD_EDGE) && !repairs.containsKey(Defect.NON_MANIFOLD_VERTEX);
         Map<String, Object> report = new LinkedHashMap<>();
         report.put("file", file);
+        report.put("format", read.format());
+        if (read.weldedCorners() >= 0) {
+            report.put("weldedCorners", read.weldedCorners());
+        }
         report.put("inputVertices", inputVertices);
         report.put("inputFaces", inputFaces);
         report.put("vertices", topology.vertices());

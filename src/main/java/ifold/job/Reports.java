@@ -6,6 +6,7 @@ import ifold.mesh.Defect;
 import ifold.refine.HamiltonianRefinement;
 import ifold.script.ScriptFolding;
 import ifold.sheet.Sheet;
+import ifold.wrap.LayerFloor;
 import ifold.wrap.TurnGadget;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapAnalysis;
@@ -94,6 +95,18 @@ public final class Reports {
         return figures;
     }
 
+    /**
+     * The fewest layers any strip must have (LayerFloor): the floor, and the vertex it comes
+     * from with the sum of its angles in degrees.
+     */
+    public static Map<String, Object> floor(LayerFloor floor) {
+        Map<String, Object> figures = new LinkedHashMap<>();
+        figures.put("layers", floor.layers());
+        figures.put("point", List.of(floor.point()[0], floor.point()[1], floor.point()[2]));
+        figures.put("angleSumDegrees", Math.toDegrees(floor.angleSum()));
+        return figures;
+    }
+
     /** The passes of a lone triangle's strip: two turn folds between passes, and the overlap is a pass of its own. */
     public static int passes(Wrap.Result result) {
         return result.count(Wrap.Kind.ZIGZAG_TURN) / 2 + 1 + result.count(Wrap.Kind.OVERLAP);
@@ -166,6 +179,7 @@ public final class Reports {
         figures.put("folds", folds);
         figures.put("maxLayers", analysis.maxLayers());
         figures.put("stackLayers", analysis.stackLevels());
+        figures.put("layersAtLeast", floor(LayerFloor.of(result.mesh())));
         if (analysis.deepest() != null) {
             figures.put("deepestLayers", deepest(analysis.deepest()));
         }

@@ -125,12 +125,12 @@ final class ExportDialogs {
         }
     }
 
-    /** Export refinement: the open model's, as {@code ifold refine} writes it; OFF unless the name says OBJ. */
+    /** Export refinement: the open model's, as {@code ifold refine} writes it; OFF unless the name says OBJ, PLY or STL (binary). */
     void refinementAsk() {
         if (host.openModel() == null) {
             return;
         }
-        Path file = host.choose("Export refinement", true, new FileNameExtensionFilter("Meshes (OFF, OBJ)", "off", "obj"));
+        Path file = host.choose("Export refinement", true, new FileNameExtensionFilter("Meshes (OFF, OBJ, PLY, STL)", "off", "obj", "ply", "stl"));
         if (file == null) {
             return;
         }

@@ -417,7 +417,7 @@ final class MainWindow extends JFrame {
     }
 
     private void chooseModel() {
-        Path file = choose("Open a model", false, new FileNameExtensionFilter("Models (OFF, OBJ, STL)", "off", "obj", "stl"));
+        Path file = choose("Open a model", false, new FileNameExtensionFilter("Models (OFF, OBJ, PLY, STL)", "off", "obj", "ply", "stl"));
         if (file != null) {
             open(file);
         }
@@ -748,7 +748,7 @@ final class MainWindow extends JFrame {
         }
         JFileChooser chooser = new JFileChooser(settings.get("folder", System.getProperty("user.dir")));
         chooser.setDialogTitle("Save the new model");
-        chooser.setFileFilter(new FileNameExtensionFilter("Meshes (OFF, OBJ)", "off", "obj"));
+        chooser.setFileFilter(new FileNameExtensionFilter("Meshes (OFF, OBJ, PLY, STL)", "off", "obj", "ply", "stl"));
         chooser.setSelectedFile(new File(chooser.getCurrentDirectory(), chosen.fileName()));
         File target = chooser.showSaveDialog(this) == JFileChooser.APPROVE_OPTION ? chooser.getSelectedFile() : null;
         if (target == null) {

@@ -1,6 +1,7 @@
 package ifold.wrap;
 
 import ifold.io.AtomicFile;
+import ifold.mesh.PolygonSoup;
 import java.io.BufferedWriter;
 import java.io.StringWriter;
 import java.io.UncheckedIOException;
@@ -73,6 +74,39 @@ public final class WrapExport {
             base += strip.vertexCount();
         }
         out.flush();
+    }
+
+    /**
+     * The folded paper as one mesh, for formats without paper coordinates or groups (PLY, STL,
+     * for printing and other tools): each strip's vertices, its paper faces, then its caps, in
+     * the order the OBJ numbers them.
+     */
+    public static PolygonSoup paperMesh(List<WrapGeometry> strips) {
+        int vertices = 0;
+        int faces = 0;
+        for (WrapGeometry strip : strips) {
+            vertices += strip.vertexCount();
+            faces += strip.paperFaces().size() + strip.caps().size();
+        }
+        PolygonSoup mesh = new PolygonSoup(vertices, faces, 4 * faces);
+        int base = 0;
+        for (WrapGeometry strip : strips) {
+            double[] xyz = strip.xyz();
+            for (int v = 0; v < strip.vertexCount(); v++) {
+                mesh.addVertex(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]);
+            }
+            for (List<int[]> group : List.of(strip.paperFaces(), strip.caps())) {
+                for (int[] loop : group) {
+                    int[] shifted = new int[loop.length];
+                    for (int k = 0; k < loop.length; k++) {
+                        shifted[k] = base + loop[k];
+                    }
+                    mesh.addFace(shifted, shifted.length, 0);
+                }
+            }
+            base += strip.vertexCount();
+        }
+        return mesh;
     }
 
     /**

@@ -172,10 +172,33 @@ class CliTest {
         }
     }
 
+    /** refine writes PLY and STL, binary unless --ascii; info names the format read and, for STL, the corners welded. */
+    @Test
+    void refineWritesPlyAndStlThatInfoReads() throws Exception {
+        Path model = write(Solids.cube(), "cube.off");
+        String[][] cases = {{"c.ply", "", "binary little-endian PLY"}, {"a.ply", "--ascii", "ASCII PLY"}, {"c.stl", "", "binary STL"},
+            {"a.stl", "--ascii", "ASCII STL"}};
+        Run reference = run("info", "--json", model.toString());
+        for (String[] c : cases) {
+            Path out = dir.resolve(c[0]);
+            Run refine = c[1].isEmpty() ? run("refine", model.toString(), "-o", out.toString())
+                    : run("refine", model.toString(), "-o", out.toString(), c[1]);
+            assertEquals(0, refine.code(), refine.err());
+            PolygonSoup refined = MeshReaders.read(out);
+            assertEquals(MeshReaders.read(dir.resolve("c.ply")).faceCount(), refined.faceCount(), c[0]);
+            Run info = run("info", "--json", out.toString());
+            assertEquals(0, info.code(), info.err());
+            assertTrue(info.out().contains("\"format\": \"" + c[2] + "\""), info.out());
+            assertEquals(c[0].endsWith(".stl"), info.out().contains("\"weldedCorners\""), info.out());
+            assertTrue(info.out().contains("\"genus\": 0") && info.out().contains("\"boundaryLoops\": 0"), info.out());
+        }
+        assertTrue(reference.out().contains("\"format\": \"OFF\""), reference.out());
+    }
+
     @Test
     void badOptionsGetOneLineAndNoOutput() throws Exception {
         Path model = write(Solids.cube(), "cube.off");
-        assertOneLineError(run("refine", model.toString(), "-o", dir.resolve("x.stl").toString()), "-o", ".off or .obj");
+        assertOneLineError(run("refine", model.toString(), "-o", dir.resolve("x.3mf").toString()), "-o", ".off or .obj or .ply or .stl");
         assertOneLineError(run("refine", model.toString(), "-o", dir.resolve("nope/x.off").toString()), "-o", "does not exist");
         assertOneLineError(run("refine", dir.resolve("missing.off").toString(), "-o", dir.resolve("x.off").toString()),
                 "missing.off", "no such file");
@@ -270,6 +293,11 @@ class CliTest {
             {"wrap", pipe.toString(), "--no-view"}, {"view", pipe.toString(), "--frames", dir.resolve("f").toString()},
             {"fold", pipe.toString(), "--no-view"}}) {
             assertOneLineError(run(args), "not a regular file");
+        }
+        for (String name : new String[] {"model.ply", "model.stl"}) {
+            Path other = dir.resolve(name);
+            org.junit.jupiter.api.Assumptions.assumeTrue(new ProcessBuilder("mkfifo", other.toString()).start().waitFor() == 0);
+            assertOneLineError(run("info", other.toString()), "not a regular file");
         }
         assertTrue((System.nanoTime() - start) * 1e-9 < 60, "none waited for a writer");
         assertOneLineError(run("fold", dir.toString(), "--no-view"), "is a folder");

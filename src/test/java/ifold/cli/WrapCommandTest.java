@@ -48,6 +48,41 @@ class WrapCommandTest {
     }
 
     /**
+     * --export-mesh writes the same paper and caps as the OBJ, as one mesh: as binary PLY the
+     * same vertices and faces; as STL the same triangles, fanned, with the layers' corners
+     * welded where they coincide.
+     */
+    @Test
+    void exportsThePaperAsPlyAndStlForPrinting() throws Exception {
+        Path obj = dir.resolve("t.obj");
+        Path ply = dir.resolve("t.ply");
+        Path stl = dir.resolve("t.stl");
+        CliTest.Run run = CliTest.run("wrap", "models/tetrahedron.off", "--no-view", "--export-obj", obj.toString(), "--export-mesh",
+                ply.toString());
+        assertEquals(0, run.code(), run.err());
+        assertTrue(run.out().contains("wrote " + ply), run.out());
+        assertTrue(run.out().contains("\ncollisions: "), "the paper exported is checked: " + run.out());
+        assertEquals(0, CliTest.run("wrap", "models/tetrahedron.off", "--no-view", "--export-mesh", stl.toString()).code());
+        ifold.mesh.PolygonSoup fromObj = ifold.mesh.io.ObjReader.read(obj);
+        ifold.mesh.PolygonSoup fromPly = ifold.mesh.io.PlyReader.read(ply);
+        assertEquals(fromObj.vertexCount(), fromPly.vertexCount());
+        assertEquals(fromObj.faceCount(), fromPly.faceCount());
+        int triangles = 0;
+        for (int f = 0; f < fromObj.faceCount(); f++) {
+            assertEquals(fromObj.faceSize(f), fromPly.faceSize(f));
+            for (int k = 0; k < fromObj.faceSize(f); k++) {
+                for (int axis = 0; axis < 3; axis++) {
+                    assertEquals(fromObj.coordinate(fromObj.faceVertex(f, k), axis), fromPly.coordinate(fromPly.faceVertex(f, k), axis), 0);
+                }
+            }
+            triangles += fromObj.faceSize(f) - 2;
+        }
+        assertEquals(triangles, ifold.mesh.io.StlReader.read(stl).faceCount());
+        CliTest.assertOneLineError(CliTest.run("wrap", "models/tetrahedron.off", "--no-view", "--export-mesh", dir.resolve("t.3mf").toString()),
+                "--export-mesh", ".ply or .stl");
+    }
+
+    /**
      * One triangle with a corner of 0.001°: it ran past 300 s (issue 22). Its 243,096 passes
      * make at least 486,192 faces, under the limit, so it is folded, in time linear in its
      * faces (a stack finds the faces a new one overlaps through a grid), and stopped where it

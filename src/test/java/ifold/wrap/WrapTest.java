@@ -90,6 +90,9 @@ class WrapTest {
         assertTrue(analysis.isometryError() <= 1e-9, "isometry " + analysis.isometryError());
         assertTrue(analysis.outsidePaper() <= 1e-9 * 100, "paper outside " + analysis.outsidePaper());
         assertTrue(analysis.maxLayers() >= 1 && analysis.maxLayers() <= analysis.stackLevels(), "layers within the stack");
+        // No strip can have fewer layers than the floor of the model's sharpest vertex: a count under it is a miscount.
+        LayerFloor floor = LayerFloor.of(model);
+        assertTrue(analysis.maxLayers() >= floor.layers(), () -> analysis.maxLayers() + " layers, under the floor " + floor);
         // Where the layers are most, every layer there is counted once, by where it came from.
         WrapAnalysis.Deepest deepest = analysis.deepest();
         assertEquals(analysis.maxLayers(), deepest.layers(), "the faces over the deepest point");

@@ -10,9 +10,7 @@ import java.nio.ByteOrder;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.HashMap;
 import java.util.Locale;
-import java.util.Map;
 
 /**
  * Reads STL, binary or ASCII, into a polygon soup. The two are told apart by content, not by
@@ -80,7 +78,9 @@ public final class StlReader {
 
     private static Result binary(Path file, int count) throws MeshFormatException, IOException {
         Welder welder = new Welder();
+        welder.expect(count);
         byte[] block = new byte[TRIANGLE * 4096];
+        int[] corners = new int[3];
         try (InputStream in = Files.newInputStream(file)) {
             in.skipNBytes(HEADER + 4);
             int done = 0;
@@ -92,7 +92,6 @@ public final class StlReader {
                 ByteBuffer buffer = ByteBuffer.wrap(block, 0, n * TRIANGLE).order(ByteOrder.LITTLE_ENDIAN);
                 for (int t = 0; t < n; t++) {
                     int at = t * TRIANGLE + 12; // past the normal, which the corners' order gives again
-                    int[] corners = new int[3];
                     for (int k = 0; k < 3; k++) {
                         float x = buffer.getFloat(at + 12 * k);
                         float y = buffer.getFloat(at + 12 * k + 4);
@@ -180,26 +179,75 @@ public final class StlReader {
         return new Result(welder.soup, false, triangles, welder.welded);
     }
 
-    /** Corners by their exact position, each position one vertex. */
+    /**
+     * Corners by their exact position, each position one vertex: an open-addressing table of
+     * the positions' float bits, in plain arrays (a map of boxed positions took twice as long as
+     * reading the whole OFF of the same model).
+     */
     private static final class Welder {
-        final PolygonSoup soup = new PolygonSoup();
-        final Map<Position, Integer> vertexAt = new HashMap<>();
+        PolygonSoup soup = new PolygonSoup();
         long welded;
+        /** The vertices' positions as float bits, three a vertex. */
+        private int[] bits = new int[3 * 1024];
+        /** Slots of vertex + 1; 0 is empty. */
+        private int[] slots = new int[2048];
+        private int vertices;
+
+        /** Sized for a closed mesh of {@code triangles}, about half as many vertices, at most half full. */
+        void expect(int triangles) {
+            int capacity = Integer.highestOneBit(Math.max(1024, Math.min(triangles, 1 << 29)) - 1) << 1;
+            if (capacity > slots.length) {
+                slots = new int[capacity];
+                bits = new int[3 * (capacity / 2)];
+            }
+            soup = new PolygonSoup(capacity / 2, triangles, 3 * triangles);
+        }
 
         int vertex(float x, float y, float z) {
             // -0 and 0 are one position.
-            Position key = new Position(Float.floatToIntBits(x + 0f), Float.floatToIntBits(y + 0f), Float.floatToIntBits(z + 0f));
-            Integer known = vertexAt.get(key);
-            if (known != null) {
-                welded++;
-                return known;
+            int bx = Float.floatToIntBits(x + 0f);
+            int by = Float.floatToIntBits(y + 0f);
+            int bz = Float.floatToIntBits(z + 0f);
+            int mask = slots.length - 1;
+            int slot = hash(bx, by, bz) & mask;
+            while (slots[slot] != 0) {
+                int v = slots[slot] - 1;
+                if (bits[3 * v] == bx && bits[3 * v + 1] == by && bits[3 * v + 2] == bz) {
+                    welded++;
+                    return v;
+                }
+                slot = (slot + 1) & mask;
             }
             int v = soup.addVertex(x, y, z);
-            vertexAt.put(key, v);
+            if (3 * v + 3 > bits.length) {
+                bits = java.util.Arrays.copyOf(bits, 2 * bits.length);
+            }
+            bits[3 * v] = bx;
+            bits[3 * v + 1] = by;
+            bits[3 * v + 2] = bz;
+            slots[slot] = v + 1;
+            if (++vertices > slots.length / 2) {
+                grow();
+            }
             return v;
         }
-    }
 
-    private record Position(int x, int y, int z) {
+        private void grow() {
+            int[] bigger = new int[2 * slots.length];
+            int mask = bigger.length - 1;
+            for (int v = 0; v < vertices; v++) {
+                int slot = hash(bits[3 * v], bits[3 * v + 1], bits[3 * v + 2]) & mask;
+                while (bigger[slot] != 0) {
+                    slot = (slot + 1) & mask;
+                }
+                bigger[slot] = v + 1;
+            }
+            slots = bigger;
+        }
+
+        private static int hash(int x, int y, int z) {
+            int h = x * 0x9E3779B1 + y * 0x85EBCA77 + z * 0xC2B2AE3D;
+            return h ^ (h >>> 15);
+        }
     }
 }

@@ -223,7 +223,7 @@ public final class Exports {
     }
 
     /**
-     * Writes the Hamiltonian refinement of {@code model} to {@code file} (.off or .obj), its
+     * Writes the Hamiltonian refinement of {@code model} to {@code file} (.off, .obj, .ply or .stl; PLY and STL binary), its
      * triangles in path order, byte for byte as {@code ifold refine MODEL -o FILE} writes it.
      * Cancel is looked at while the file is written too: the writer then discards it.
      *
@@ -231,7 +231,7 @@ public final class Exports {
      */
     public static Refined refinement(Path model, boolean strict, Path file, Progress progress) throws JobFailure {
         if (!ModelFile.isWritableModelName(file)) {
-            throw new JobFailure(new Problem("file", "a refinement is written as .off or .obj, got " + file.getFileName()));
+            throw new JobFailure(new Problem("file", "a refinement is written as .off, .obj, .ply or .stl, got " + file.getFileName()));
         }
         ModelFile loaded = ModelFile.load(model, new MeshBuilder.Options(strict, true), progress);
         loaded.requireFaces(model, "refine");

@@ -18,7 +18,7 @@ import java.util.Map;
  * @param inputFaces faces in the file
  * @param built the halfedge mesh and its repairs
  */
-public record ModelFile(int inputVertices, int inputFaces, MeshBuilder.Result built) {
+public record ModelFile(int inputVertices, int inputFaces, ifold.mesh.io.MeshReaders.Read read, MeshBuilder.Result built) {
 
     /**
      * Reads and builds {@code file}; in strict mode a defect the builder could repair is refused.
@@ -28,9 +28,11 @@ public record ModelFile(int inputVertices, int inputFaces, MeshBuilder.Result bu
     public static ModelFile load(Path file, MeshBuilder.Options options, Progress progress) throws JobFailure {
         progress.stage("reading " + file.getFileName());
         try {
-            PolygonSoup soup = ModelFiles.read(file);
+            ifold.mesh.io.MeshReaders.Read read = ModelFiles.readDescribed(file);
+            PolygonSoup soup = read.soup();
             progress.check();
-            return new ModelFile(soup.vertexCount(), soup.faceCount(), ModelFiles.build(file, soup, options));
+            return new ModelFile(soup.vertexCount(), soup.faceCount(), new ifold.mesh.io.MeshReaders.Read(null, read.format(),
+                    read.weldedCorners()), ModelFiles.build(file, soup, options));
         } catch (ModelFiles.LoadFailure e) {
             throw new JobFailure(new Problem("model", e.getMessage() + (e.repairable() ? " (clear Strict to repair it)" : "")));
         }
@@ -53,15 +55,15 @@ public record ModelFile(int inputVertices, int inputFaces, MeshBuilder.Result bu
         loaded.requireFaces(file, "describe");
         progress.check();
         progress.stage("measuring " + file.getFileName());
-        return ModelInfo.of(file.toString(), loaded.inputVertices(), loaded.inputFaces(), loaded.built());
+        return ModelInfo.of(file.toString(), loaded.read(), loaded.inputVertices(), loaded.inputFaces(), loaded.built());
     }
 
-    /** Whether {@code file} is named as a model iFold reads: .off, .obj or .stl, in any case. */
+    /** Whether {@code file} is named as a model iFold reads: .off, .obj, .ply or .stl, in any case. */
     public static boolean isModelName(Path file) {
         return ifold.mesh.io.MeshReaders.isModel(file);
     }
 
-    /** Whether {@code file} is named as a model iFold writes: .off or .obj, in any case. */
+    /** Whether {@code file} is named as a model iFold writes: .off, .obj, .ply or .stl, in any case. */
     public static boolean isWritableModelName(Path file) {
         return ifold.mesh.io.MeshWriters.writes(file);
     }

@@ -54,7 +54,7 @@ public record NewModel(BuiltInModels.Shape shape, String around, String across, 
     }
 
     /**
-     * Makes the model and writes it to {@code file} (.off or .obj), whole or not at all, as
+     * Makes the model and writes it to {@code file} (.off, .obj, .ply or .stl), whole or not at all, as
      * {@code ifold generate -o FILE} does; Cancel is looked at while it is written.
      *
      * @throws JobFailure with the first problem of {@link #check()}, or why the file cannot be written
@@ -65,7 +65,7 @@ public record NewModel(BuiltInModels.Shape shape, String around, String across, 
             throw new JobFailure(problems.get(0));
         }
         if (!ModelFile.isWritableModelName(file)) {
-            throw new JobFailure(new Problem("file", "a model is written as .off or .obj, got " + file.getFileName()));
+            throw new JobFailure(new Problem("file", "a model is written as .off, .obj, .ply or .stl, got " + file.getFileName()));
         }
         progress.stage("making the " + shape);
         Counts counts = counts(problems);

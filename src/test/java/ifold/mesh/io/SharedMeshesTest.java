@@ -39,6 +39,56 @@ class SharedMeshesTest {
                 .collect(Collectors.joining(",", "[", "]"));
     }
 
+    /**
+     * Every valid shared model written as PLY (binary and ASCII) reads back the same, vertex
+     * for vertex, face for face, colours too; as STL it reads back the same triangles (in single
+     * precision, the corners welded).
+     */
+    @ParameterizedTest(name = "{0}")
+    @CsvSource({"cgal_elephant-with-holes.off", "cgal_elephant.off", "cgal_mesh_with_colors.off", "cgal_mpi.off",
+        "cgal_tetrahedron.off", "common3d_spot.obj", "igl_fertility.off", "trimesh_capsule.obj", "trimesh_rabbit.obj"})
+    void everyValidModelComesBackFromPlyAndStl(String name, @org.junit.jupiter.api.io.TempDir Path dir) throws Exception {
+        PolygonSoup soup = MeshReaders.read(model("valid", name));
+        for (boolean ascii : new boolean[] {false, true}) {
+            Path ply = dir.resolve(ascii ? "a.ply" : "b.ply");
+            MeshWriters.write(soup, ply, ascii);
+            PolygonSoup back = MeshReaders.read(ply);
+            assertEquals(soup.vertexCount(), back.vertexCount());
+            assertEquals(soup.faceCount(), back.faceCount());
+            for (int v = 0; v < soup.vertexCount(); v++) {
+                for (int axis = 0; axis < 3; axis++) {
+                    assertEquals(soup.coordinate(v, axis), back.coordinate(v, axis), 0, name + " vertex " + v);
+                }
+            }
+            for (int f = 0; f < soup.faceCount(); f++) {
+                assertEquals(soup.faceSize(f), back.faceSize(f));
+                for (int k = 0; k < soup.faceSize(f); k++) {
+                    assertEquals(soup.faceVertex(f, k), back.faceVertex(f, k));
+                }
+                if (soup.hasFaceColors()) {
+                    assertEquals(soup.faceColor(f) & 0xFFFFFF, back.faceColor(f) & 0xFFFFFF);
+                }
+            }
+            assertEquals(soup.hasFaceColors(), back.hasFaceColors());
+            Path stl = dir.resolve(ascii ? "a.stl" : "b.stl");
+            MeshWriters.write(soup, stl, ascii);
+            PolygonSoup triangles = MeshReaders.read(stl);
+            int t = 0;
+            for (int f = 0; f < soup.faceCount(); f++) {
+                for (int k = 1; k + 1 < soup.faceSize(f); k++, t++) {
+                    int[] corners = {soup.faceVertex(f, 0), soup.faceVertex(f, k), soup.faceVertex(f, k + 1)};
+                    for (int c = 0; c < 3; c++) {
+                        for (int axis = 0; axis < 3; axis++) {
+                            assertEquals((float) soup.coordinate(corners[c], axis), triangles.coordinate(triangles.faceVertex(t, c), axis), 0,
+                                    name + " triangle " + t);
+                        }
+                    }
+                }
+            }
+            assertEquals(t, triangles.faceCount());
+        }
+    }
+
     @ParameterizedTest(name = "{0}")
     @CsvSource(delimiter = ';', value = {
         "cgal_elephant-with-holes.off; 2798; 4463; [3:4463]",

@@ -98,14 +98,67 @@ class WritersTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"m.off", "m.obj", "M.OFF", "M.Obj"})
+    @ValueSource(strings = {"m.off", "m.obj", "M.OFF", "M.Obj", "m.ply", "M.PLY", "ascii.ply"})
     void roundTripsExactly(String name) throws Exception {
-        boolean off = name.toLowerCase().endsWith(".off");
+        // OFF and PLY keep face colours; OBJ has no place for them.
+        boolean keepsColors = !name.toLowerCase().endsWith(".obj");
         for (boolean colors : new boolean[] {false, true}) {
             PolygonSoup mesh = mesh(300, colors, 11);
             Path file = dir.resolve(name);
-            MeshWriters.write(mesh, file);
-            assertSameMesh(mesh, MeshReaders.read(file), colors && off);
+            MeshWriters.write(mesh, file, name.startsWith("ascii"));
+            assertSameMesh(mesh, MeshReaders.read(file), colors && keepsColors);
+        }
+    }
+
+    /**
+     * STL holds each triangle's corners in single precision, with its unit normal: the cube's
+     * corners come back welded into its 8 vertices, each face's corners in their order, and the
+     * normals point out by the right-hand rule; its quads are fanned into 12 triangles.
+     */
+    @ParameterizedTest
+    @ValueSource(booleans = {false, true})
+    void writesStlThatReadsBackWelded(boolean ascii) throws Exception {
+        PolygonSoup cube = OffReader.read(Path.of("models", "cube.off"));
+        Path file = dir.resolve("cube.stl");
+        MeshWriters.write(cube, file, ascii);
+        StlReader.Result read = StlReader.readWithCounts(file);
+        assertEquals(!ascii, read.binary());
+        PolygonSoup soup = read.soup();
+        assertEquals(8, soup.vertexCount());
+        assertEquals(36 - 8, read.welded());
+        int t = 0;
+        for (int f = 0; f < cube.faceCount(); f++) {
+            for (int k = 1; k + 1 < cube.faceSize(f); k++, t++) {
+                int[] corners = {cube.faceVertex(f, 0), cube.faceVertex(f, k), cube.faceVertex(f, k + 1)};
+                for (int c = 0; c < 3; c++) {
+                    for (int axis = 0; axis < 3; axis++) {
+                        assertEquals(cube.coordinate(corners[c], axis), soup.coordinate(soup.faceVertex(t, c), axis), 0);
+                    }
+                }
+            }
+        }
+        assertEquals(12, soup.faceCount());
+        if (!ascii) {
+            byte[] raw = Files.readAllBytes(file);
+            java.nio.ByteBuffer bytes = java.nio.ByteBuffer.wrap(raw).order(java.nio.ByteOrder.LITTLE_ENDIAN);
+            assertFalse(new String(raw, 0, 5, java.nio.charset.StandardCharsets.US_ASCII).equals("solid"),
+                    "a binary header that no reader takes for text");
+            for (int i = 0; i < 12; i++) {
+                int at = 84 + 50 * i;
+                double[] p = new double[9];
+                for (int k = 0; k < 9; k++) {
+                    p[k] = bytes.getFloat(at + 12 + 4 * k);
+                }
+                // The normal points from the cube's centre out through the triangle.
+                double cx = (p[0] + p[3] + p[6]) / 3 - 0.5;
+                double cy = (p[1] + p[4] + p[7]) / 3 - 0.5;
+                double cz = (p[2] + p[5] + p[8]) / 3 - 0.5;
+                double nx = bytes.getFloat(at);
+                double ny = bytes.getFloat(at + 4);
+                double nz = bytes.getFloat(at + 8);
+                assertEquals(1, Math.sqrt(nx * nx + ny * ny + nz * nz), 1e-6);
+                assertTrue(nx * cx + ny * cy + nz * cz > 0.1, "outward normal of triangle " + i);
+            }
         }
     }
 
@@ -292,7 +345,7 @@ class WritersTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"s.off", "s.obj"})
+    @ValueSource(strings = {"s.off", "s.obj", "s.ply"})
     void aFailureMidWriteLeavesTheOldFile(String name) throws Exception {
         Path file = Files.writeString(dir.resolve(name), "previous");
         PolygonSoup mesh = mesh(60_000, false, 3);
@@ -324,6 +377,11 @@ class WritersTest {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> MeshWriters.write(nan, dir.resolve("nan.off")));
         assertEquals("vertex 4 has a non-finite coordinate NaN", e.getMessage());
+        e = assertThrows(IllegalArgumentException.class, () -> MeshWriters.write(nan, dir.resolve("nan.ply")));
+        assertEquals("vertex 4 has a non-finite coordinate NaN", e.getMessage());
+        nan.addTriangle(0, 1, 4);
+        e = assertThrows(IllegalArgumentException.class, () -> MeshWriters.write(nan, dir.resolve("nan.stl")));
+        assertEquals("vertex 4 has a non-finite coordinate NaN", e.getMessage());
 
         PolygonSoup edge = coloredSquare();
         edge.addFace(new int[] {0, 1}, 2, 0);
@@ -344,14 +402,20 @@ class WritersTest {
         MeshWriters.write(coloredSquare(), dir.resolve("a.oBj"));
         assertTrue(Files.readString(dir.resolve("a.oBj")).startsWith("# iFold"));
 
-        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
-                () -> MeshWriters.write(coloredSquare(), dir.resolve("a.stl")));
-        assertTrue(e.getMessage().contains("expected a name ending in .off or .obj"), e.getMessage());
-        assertFalse(Files.exists(dir.resolve("a.stl")));
+        MeshWriters.write(coloredSquare(), dir.resolve("a.Ply"));
+        assertTrue(Files.readString(dir.resolve("a.Ply"), java.nio.charset.StandardCharsets.ISO_8859_1)
+                .startsWith("ply\nformat binary_little_endian 1.0\n"));
+        MeshWriters.write(coloredSquare(), dir.resolve("a.STL"), true);
+        assertTrue(Files.readString(dir.resolve("a.STL")).startsWith("solid ifold\n"));
 
-        Path ply = Files.writeString(dir.resolve("a.ply"), "ply\n");
-        MeshFormatException m = assertThrows(MeshFormatException.class, () -> MeshReaders.read(ply));
-        assertEquals(ply + ": unsupported file type: expected a name ending in .off, .obj or .stl", m.getMessage());
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> MeshWriters.write(coloredSquare(), dir.resolve("a.3mf")));
+        assertTrue(e.getMessage().contains("expected a name ending in .off, .obj, .ply or .stl"), e.getMessage());
+        assertFalse(Files.exists(dir.resolve("a.3mf")));
+
+        Path gltf = Files.writeString(dir.resolve("a.gltf"), "{}\n");
+        MeshFormatException m = assertThrows(MeshFormatException.class, () -> MeshReaders.read(gltf));
+        assertEquals(gltf + ": unsupported file type: expected a name ending in .off, .obj, .ply or .stl", m.getMessage());
         assertEquals(0, m.line());
         Path noExtension = Files.writeString(dir.resolve("off"), "OFF\n");
         assertThrows(MeshFormatException.class, () -> MeshReaders.read(noExtension));

@@ -126,7 +126,7 @@ class ModelFileTest {
         Path file = dir.resolve("cancelled.off");
         assertThrows(CancellationException.class, () -> Exports.refinement(model, false, file, cancelledWhileWriting));
         assertTrue(writing[0], "setup: cancelled once the writing began");
-        JobFailure wrongName = assertThrows(JobFailure.class, () -> Exports.refinement(model, false, dir.resolve("torus.stl"), Progress.NONE));
+        JobFailure wrongName = assertThrows(JobFailure.class, () -> Exports.refinement(model, false, dir.resolve("torus.3mf"), Progress.NONE));
         assertEquals("file", wrongName.problem().field());
         JobFailure noFolder = assertThrows(JobFailure.class,
                 () -> Exports.refinement(model, false, dir.resolve("none").resolve("t.off"), Progress.NONE));
