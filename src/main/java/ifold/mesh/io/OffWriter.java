@@ -39,7 +39,8 @@ public final class OffWriter {
         out.writeLines(faceCount, (block, f) -> writeFace(mesh, f, colors, block));
     }
 
-    private static void writeFace(IndexedPolygons mesh, int f, boolean colors, AsciiOutput out) throws IOException {
+    /** "n i0 .. i(n-1) [r g b]\n": OFF's face line, and an ASCII PLY face with uchar colours alike. */
+    static void writeFace(IndexedPolygons mesh, int f, boolean colors, AsciiOutput out) throws IOException {
         int size = MeshWriters.checkedFaceSize(mesh, f);
         out.writeLong(size);
         for (int k = 0; k < size; k++) {

@@ -47,7 +47,7 @@ public final class PlyWriter {
             AsciiOutput.writeAtomically(file, out -> {
                 out.writeAscii(header.toString());
                 out.writeLines(mesh.vertexCount(), (block, v) -> MeshWriters.writeVertex(mesh, v, block));
-                out.writeLines(faceCount, (block, f) -> writeAsciiFace(mesh, f, colors, block));
+                out.writeLines(faceCount, (block, f) -> OffWriter.writeFace(mesh, f, colors, block));
             });
             return;
         }
@@ -78,22 +78,5 @@ public final class PlyWriter {
             }
             out.flush();
         }, true);
-    }
-
-    private static void writeAsciiFace(IndexedPolygons mesh, int f, boolean colors, AsciiOutput out) throws IOException {
-        int size = mesh.faceSize(f);
-        out.writeLong(size);
-        for (int k = 0; k < size; k++) {
-            out.writeByte(' ');
-            out.writeLong(MeshWriters.checkedFaceVertex(mesh, f, k));
-        }
-        if (colors) {
-            int argb = mesh.faceColor(f);
-            for (int shift = 16; shift >= 0; shift -= 8) {
-                out.writeByte(' ');
-                out.writeLong(argb >>> shift & 0xFF);
-            }
-        }
-        out.writeByte('\n');
     }
 }
