@@ -80,6 +80,8 @@ class WrapCommandTest {
         assertEquals(triangles, ifold.mesh.io.StlReader.read(stl).faceCount());
         CliTest.assertOneLineError(CliTest.run("wrap", "models/tetrahedron.off", "--no-view", "--export-mesh", dir.resolve("t.3mf").toString()),
                 "--export-mesh", ".ply or .stl");
+        CliTest.assertOneLineError(CliTest.run("wrap", "models/tetrahedron.off", "--no-view", "--export-mesh",
+                dir.resolve("none").resolve("t.ply").toString()), "--export-mesh", "does not exist");
     }
 
     /**
