@@ -121,6 +121,25 @@ public final class PolygonSoup implements IndexedPolygons {
             faceVertices = Arrays.copyOf(faceVertices, Math.max(2 * faceVertices.length, start + size));
         }
         System.arraycopy(vertices, 0, faceVertices, start, size);
+        endFace(start + size, sourceLine);
+        return faceCount++;
+    }
+
+    /** Adds the triangle a, b, c with no source line; makes no garbage (STL adds one a facet). */
+    public int addTriangle(int a, int b, int c) {
+        int start = faceStart[faceCount];
+        if (start + 3 > faceVertices.length) {
+            faceVertices = Arrays.copyOf(faceVertices, Math.max(2 * faceVertices.length, start + 3));
+        }
+        faceVertices[start] = a;
+        faceVertices[start + 1] = b;
+        faceVertices[start + 2] = c;
+        endFace(start + 3, 0);
+        return faceCount++;
+    }
+
+    /** Closes face {@link #faceCount} at corner {@code end}, growing the per-face arrays as needed. */
+    private void endFace(int end, int sourceLine) {
         if (faceCount + 2 > faceStart.length) {
             faceStart = Arrays.copyOf(faceStart, 2 * faceStart.length);
             faceLine = Arrays.copyOf(faceLine, faceStart.length);
@@ -131,12 +150,7 @@ public final class PolygonSoup implements IndexedPolygons {
             }
         }
         faceLine[faceCount] = sourceLine;
-        faceStart[faceCount + 1] = start + size;
-        return faceCount++;
-    }
-
-    public int addTriangle(int a, int b, int c) {
-        return addFace(new int[] {a, b, c}, 3, 0);
+        faceStart[faceCount + 1] = end;
     }
 
     /** Sets the colour of face {@code f} (packed 0xAARRGGBB); faces never coloured are grey. */

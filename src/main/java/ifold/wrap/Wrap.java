@@ -54,8 +54,21 @@ import java.util.Locale;
  * never the strip that crosses E_{i-1} or E_i, which rests on other triangles.
  */
 public final class Wrap {
-    /** The most tucks on one triangle before giving up (the naïve tucks bounce between the edges of a sharp corner). */
+    /**
+     * The fewest tucks on one triangle before giving up; a host with a corner sharper than
+     * 0.72° gets more ({@link #maxTucks}).
+     */
     public static final int MAX_TUCKS = 1000;
+
+    /**
+     * The most tucks on one triangle of a host whose smallest corner is {@code degrees}: the
+     * naïve tucks bounce a flap between the edges of a corner of θ degrees about 180/θ times
+     * (601 on a triangle of the 0.3° corner in docs/wrap.md), so four times that, and never
+     * fewer than {@link #MAX_TUCKS}. Past it the tucks are running away, not converging.
+     */
+    public static int maxTucks(double degrees) {
+        return (int) Math.min(Integer.MAX_VALUE / 2, Math.max(MAX_TUCKS, Math.ceil(4 * 180 / degrees)));
+    }
 
     /**
      * What a face of paper costs a whole run of {@code ifold wrap} in resident memory, the sheet,
@@ -1133,6 +1146,7 @@ public final class Wrap {
             int host = hostOf(i);
             double[] c = hostFrames[host].corners();
             int n = c.length / 2;
+            int limit = maxTucks(smallestAngle(c));
             for (int tucks = 0; ; tucks++) {
                 int edge = -1;
                 double farthest = sheet.tolerance();
@@ -1146,11 +1160,11 @@ public final class Wrap {
                 if (edge < 0) {
                     return;
                 }
-                if (tucks == MAX_TUCKS) {
+                if (tucks == limit) {
                     throw new WrapException(String.format(Locale.ROOT, "triangle %d of %d on the path (%s): the excess is not"
                             + " hidden after %d tucks: the naive tuck-under bounces paper between the edges of a corner as"
-                            + " sharp as %.1f degrees; a narrower strip may help", i + 1, plan.m, cornersText(mesh, plan.first + i),
-                            MAX_TUCKS, smallestAngle(c)));
+                            + " sharp as %.2g degrees; a narrower strip may help", i + 1, plan.m, cornersText(mesh, plan.first + i),
+                            limit, smallestAngle(c)));
                 }
                 int from = edge;
                 int to = (edge + 1) % n;
