@@ -3,6 +3,7 @@ package ifold.sheet;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.Collection;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
@@ -90,6 +91,8 @@ public final class Sheet {
     private Placement tailPlacement = Placement.OVER;
     /** Whether the next piece of the tail laid lands over all it overlaps ({@link #liftTail}). */
     private boolean tailLifted;
+    /** The face the tail ran on from when it was lifted, on its host, for the next face laid; else -1. */
+    private int liftedFrom = -1;
     private double length = Double.NaN;
 
     /** Each face's place in its stack's list of faces. */
@@ -664,6 +667,7 @@ public final class Sheet {
             int[] lowestHinge = new int[pieces];
             Arrays.fill(lowestHinge, Integer.MAX_VALUE);
             Set<Integer> hinges = new HashSet<>();
+            Map<Integer, Set<Integer>> hingesOf = new HashMap<>();
             List<Integer> crossing = new ArrayList<>();
             for (int i = 0; i < stack.count; i++) {
                 int f = stack.faces[i];
@@ -681,19 +685,40 @@ public final class Sheet {
                         int piece = pieceOf.get(f);
                         lowestHinge[piece] = Math.min(lowestHinge[piece], levelOf.get(across));
                         hinges.add(across);
+                        hingesOf.computeIfAbsent(piece, p -> new HashSet<>()).add(across);
                     } else if (!moves && hostOf[across] != host && onLine(pose, a, nx, ny, c) && onLine(pose, b, nx, ny, c)) {
                         crossing.add(f);
                     }
                 }
             }
-            // For each piece, the strips it must stay above, and all paper below them.
+            // A strip below the lowest hinge by level, or below any hinge by the stack's order (a
+            // piece whose hinges lie both at the strip's level, beside it, and above it).
             Map<Integer, List<Integer>> below = crossing.isEmpty() ? new HashMap<>() : related(stack, true);
+            Map<Integer, Set<Integer>> overStrip = new HashMap<>();
+            if (!crossing.isEmpty()) {
+                Map<Integer, List<Integer>> above = related(stack, false);
+                for (int strip : crossing) {
+                    Set<Integer> reached = new HashSet<>();
+                    ArrayDeque<Integer> open = new ArrayDeque<>(List.of(strip));
+                    while (!open.isEmpty()) {
+                        for (int g : above.getOrDefault(open.poll(), List.of())) {
+                            if (!faces.contains(g) && reached.add(g)) {
+                                open.add(g);
+                            }
+                        }
+                    }
+                    overStrip.put(strip, reached);
+                }
+            }
             List<Set<Integer>> under = new ArrayList<>();
             for (int piece = 0; piece < pieces; piece++) {
                 Set<Integer> set = new HashSet<>();
                 ArrayDeque<Integer> open = new ArrayDeque<>();
+                Set<Integer> ownHinges = hingesOf.getOrDefault(piece, Set.of());
                 for (int f : crossing) {
-                    if (levelOf.get(f) < lowestHinge[piece] && set.add(f)) {
+                    boolean belowHinge = levelOf.get(f) < lowestHinge[piece]
+                            || ownHinges.stream().anyMatch(overStrip.get(f)::contains);
+                    if (belowHinge && set.add(f)) {
                         open.add(f);
                     }
                 }
@@ -1106,8 +1131,11 @@ public final class Sheet {
     private int tailHinge(int[] loop) {
         if (tailLifted) {
             tailLifted = false;
+            int before = faceOfEdge.get(directed(loop[0], loop[loop.length - 1]), -1);
+            liftedFrom = before >= 0 && hostOf[before] == tailHost ? before : -1;
             return -1;
         }
+        liftedFrom = -1;
         int before = faceOfEdge.get(directed(loop[0], loop[loop.length - 1]), -1);
         return before >= 0 && hostOf[before] == tailHost ? before : -1;
     }
@@ -1155,7 +1183,10 @@ public final class Sheet {
         }
         if (hinge >= 0) {
             outOfFolds(f, hinge, stack, levels, touching, overOf);
+        } else if (liftedFrom >= 0 && overOf.containsKey(liftedFrom)) {
+            outOfLiftedFold(f, liftedFrom, stack, touching, overOf);
         }
+        liftedFrom = -1;
         for (int g : touching) {
             boolean over = overOf.get(g);
             int i = slotOf[g];
@@ -1179,22 +1210,24 @@ public final class Sheet {
     /**
      * Keeps a new face out of the folds it overlaps: the order by levels puts it just over (or
      * under) its hinge, and above or below each other face by its level, but levels compare
-     * faces of different places of a stack only loosely, and a face g it lands under whose fold
-     * partner d (the face across a crease of g, on this host) it lands over, with g above d,
-     * would lie between the two layers of their fold (taco-tortilla). It goes over g too, and
-     * likewise under a face whose partner above it lies over the new face, unless that would
-     * contradict the order already there (a face it lies under, or over, below g or above it).
+     * faces of different places of a stack only loosely, and a face it lands under whose fold
+     * partner (the face across a crease, on this host) it lands over would lie between the two
+     * layers of their fold, reaching across the crease (taco-tortilla). So the faces it overlaps
+     * that are joined by creases it reaches across go together, a chain of them as one: the new
+     * face goes over all of such a group or under all of it, the side most of it already has
+     * (the hinge's, where the hinge is one of them), unless that would contradict the order
+     * already there (a face it lies under below one it would go over, or the other way), and
+     * then the other side. Turned one by one, a gadget's chain of three layers, two creases,
+     * was only turned from one fold into the other.
      */
     private void outOfFolds(int f, int hinge, Stack stack, int[] levels, List<Integer> touching, Map<Integer, Boolean> overOf) {
-        Map<Integer, List<Integer>> below = null;
-        Map<Integer, List<Integer>> aboveOf = null;
         double[] placedF = placedCached(f);
+        Map<Integer, Integer> acrossParent = new HashMap<>();
+        Set<Integer> joinedAcross = new HashSet<>();
+        List<int[]> pockets = new ArrayList<>();
         for (int g : touching) {
-            if (g == hinge) {
-                continue;
-            }
-            boolean over = overOf.get(g);
             int[] loop = loops.get(g);
+            Isometry2 pose = poseOf.get(g);
             for (int k = 0; k < loop.length; k++) {
                 int a = loop[k];
                 int b = loop[(k + 1) % loop.length];
@@ -1202,43 +1235,287 @@ public final class Sheet {
                     continue;
                 }
                 int d = faceOfEdge.get(directed(b, a), -1);
-                Boolean dOver = d < 0 ? null : overOf.get(d);
-                if (dOver == null || dOver == over) {
-                    continue;
+                if (d < g || !overOf.containsKey(d)) {
+                    continue; // each crease once, from its face of the smaller number
                 }
-                boolean gAbove = levels[slotOf[g]] > levels[slotOf[d]];
-                // Inside the fold: under the upper layer and over the lower one, across its crease.
-                Isometry2 pose = poseOf.get(g);
-                if (gAbove == over || !crosses(placedF, pose.x(u(a), v(a)), pose.y(u(a), v(a)), pose.x(u(b), v(b)), pose.y(u(b), v(b)))) {
-                    continue;
-                }
-                if (below == null) {
-                    below = related(stack, true);
-                    aboveOf = related(stack, false);
-                }
-                // Over g means over all below it: none of those may be a face it lies under.
-                Map<Integer, List<Integer>> onward = over ? aboveOf : below;
-                Set<Integer> reached = new HashSet<>();
-                ArrayDeque<Integer> open = new ArrayDeque<>(List.of(g));
-                boolean contradicts = false;
-                while (!open.isEmpty() && !contradicts) {
-                    int h = open.poll();
-                    Boolean hOver = overOf.get(h);
-                    if (h != g && hOver != null && hOver == over) {
-                        contradicts = true;
-                    }
-                    for (int next : onward.getOrDefault(h, List.of())) {
-                        if (reached.add(next)) {
-                            open.add(next);
-                        }
-                    }
-                }
-                if (!contradicts) {
-                    overOf.put(g, !over);
-                    break;
+                if (crosses(placedF, pose.x(u(a), v(a)), pose.y(u(a), v(a)), pose.x(u(b), v(b)), pose.y(u(b), v(b)))) {
+                    join(acrossParent, g, d);
+                    joinedAcross.add(g);
+                    joinedAcross.add(d);
+                } else if (overOf.get(g) != overOf.get(d) && g != hinge && d != hinge) {
+                    pockets.add(new int[] {g, d});
                 }
             }
         }
+        List<Map<Integer, List<Integer>>> relations = new ArrayList<>(2); // below, above: found once needed
+        Map<Integer, Boolean> forced = pockets.isEmpty() ? null
+                : outOfPockets(f, hinge, stack, levels, touching, pockets, overOf, relations);
+        if (joinedAcross.isEmpty()) {
+            return;
+        }
+        for (List<Integer> group : groups(acrossParent, joinedAcross)) {
+            if (uniform(group, hinge, stack, overOf, relations)) {
+                continue;
+            }
+            forced = forced != null ? forced : forcedSides(f, hinge, touching, overOf, relations);
+            int over = 0;
+            for (int g : group) {
+                over += overOf.get(g) ? 1 : 0;
+            }
+            carryAlong(group, 2 * over >= group.size(), overOf, forced, relations);
+        }
+    }
+
+    /**
+     * The sides a new face must take, whatever its tentative sides by level: over its hinge and
+     * all below it (under, and all above, for a face laid under its hinge), and, for paper that
+     * reaches across its own crease with the hinge, the side of the hinge that paper is on (it
+     * lies over both, or under both).
+     */
+    private Map<Integer, Boolean> forcedSides(int f, int hinge, List<Integer> touching, Map<Integer, Boolean> overOf,
+            List<Map<Integer, List<Integer>>> relations) {
+        boolean overHinge = overOf.get(hinge);
+        Set<Integer> belowHinge = reachedFrom(hinge, relations.get(0));
+        Set<Integer> aboveHinge = reachedFrom(hinge, relations.get(1));
+        Map<Integer, Boolean> forced = new HashMap<>();
+        forced.put(hinge, overHinge);
+        for (int g : overHinge ? belowHinge : aboveHinge) {
+            forced.put(g, overHinge);
+        }
+        int[] loop = loops.get(f);
+        int a = loop[loop.length - 1];
+        int b = loop[0];
+        Isometry2 pose = poseOf.get(f);
+        for (int g : touching) {
+            if (g != hinge && (belowHinge.contains(g) || aboveHinge.contains(g))
+                    && crosses(placedCached(g), pose.x(u(a), v(a)), pose.y(u(a), v(a)), pose.x(u(b), v(b)), pose.y(u(b), v(b)))) {
+                forced.put(g, belowHinge.contains(g));
+            }
+        }
+        return forced;
+    }
+
+    /**
+     * Where a group of fold layers cannot be put on one side of a new face without changing its
+     * tentative side to other paper: the group goes to one side after all, and the paper the
+     * order then puts there (below the group for over, above for under) goes with it, where none
+     * of that paper's side is {@code forced} the other way; the side most of the group has, else
+     * the other. A turn laid over a neighbour's turn, both folded over paper of their own, met
+     * this on a random star-shaped solid.
+     */
+    private static void carryAlong(List<Integer> group, boolean first, Map<Integer, Boolean> overOf, Map<Integer, Boolean> forced,
+            List<Map<Integer, List<Integer>>> relations) {
+        for (boolean side : new boolean[] {first, !first}) {
+            Set<Integer> reached = new HashSet<>(group);
+            ArrayDeque<Integer> open = new ArrayDeque<>(group);
+            boolean possible = true;
+            while (!open.isEmpty() && possible) {
+                int g = open.poll();
+                Boolean must = forced.get(g);
+                possible = must == null || must == side;
+                for (int next : relations.get(side ? 0 : 1).getOrDefault(g, List.of())) {
+                    if (reached.add(next)) {
+                        open.add(next);
+                    }
+                }
+            }
+            if (possible) {
+                for (int g : reached) {
+                    if (overOf.containsKey(g)) {
+                        overOf.put(g, side);
+                    }
+                }
+                return;
+            }
+        }
+    }
+
+    /**
+     * Keeps a new face out of the pockets of folds it lands in without reaching their creases
+     * where its order with one layer of the fold is free: a layer neither above its hinge nor
+     * below it in the stack's order, placed only by its level. Paper folded on from the new face
+     * (its next turn) reaches across the pocket's crease, and would then be caught between the
+     * new face's fold and the pocket's (a turn landing in the pocket of a neighbour's turn, and
+     * the next fold over it). The free layer goes to the other's side, where the order allows.
+     */
+    private Map<Integer, Boolean> outOfPockets(int f, int hinge, Stack stack, int[] levels, List<Integer> touching, List<int[]> pockets,
+            Map<Integer, Boolean> overOf, List<Map<Integer, List<Integer>>> relations) {
+        Map<Integer, Boolean> forced = null;
+        if (relations.isEmpty()) {
+            relations.add(related(stack, true));
+            relations.add(related(stack, false));
+        }
+        Set<Integer> bound = reachedFrom(hinge, relations.get(0));
+        bound.addAll(reachedFrom(hinge, relations.get(1)));
+        int hingeLevel = levels[slotOf[hinge]];
+        for (int[] pocket : pockets) {
+            int g = pocket[0];
+            int d = pocket[1];
+            boolean gBound = bound.contains(g);
+            boolean dBound = bound.contains(d);
+            if ((gBound && dBound) || overOf.get(g) == overOf.get(d)) {
+                continue;
+            }
+            // Both free: the layer nearer the hinge's level keeps its side, and the other follows.
+            boolean gKeeps = gBound || (!dBound
+                    && Math.abs(levels[slotOf[g]] - hingeLevel) <= Math.abs(levels[slotOf[d]] - hingeLevel));
+            int free = gKeeps ? d : g;
+            boolean side = overOf.get(gKeeps ? g : d);
+            if (!contradicts(List.of(free), side, overOf, relations.get(side ? 0 : 1))) {
+                overOf.put(free, side);
+            } else if (!gBound && !dBound && !contradicts(List.of(gKeeps ? g : d), !side, overOf, relations.get(side ? 1 : 0))) {
+                overOf.put(gKeeps ? g : d, !side);
+            } else {
+                forced = forced != null ? forced : forcedSides(f, hinge, touching, overOf, relations);
+                carryAlong(List.of(g, d), side, overOf, forced, relations);
+            }
+        }
+        return forced;
+    }
+
+    /** Joins g and d in a forest of parents. */
+    private static void join(Map<Integer, Integer> parent, int g, int d) {
+        int rg = root(parent, g);
+        int rd = root(parent, d);
+        if (rg != rd) {
+            parent.put(rg, rd);
+        }
+    }
+
+    /** The faces {@code joined} in a forest of parents, tree by tree. */
+    private static Collection<List<Integer>> groups(Map<Integer, Integer> parent, Set<Integer> joined) {
+        Map<Integer, List<Integer>> groupOf = new HashMap<>();
+        for (int g : joined) {
+            groupOf.computeIfAbsent(root(parent, g), r -> new ArrayList<>()).add(g);
+        }
+        return groupOf.values();
+    }
+
+    /**
+     * Puts a new face over all of {@code group} or under all of it, where the order allows: the
+     * side most of it has (the hinge's, where the hinge is one of them), else the other, so long
+     * as no tentative side of other paper must change; whether it could. {@code relations}
+     * holds the stack's relations downwards and upwards once found.
+     */
+    private boolean uniform(List<Integer> group, int hinge, Stack stack, Map<Integer, Boolean> overOf,
+            List<Map<Integer, List<Integer>>> relations) {
+        int over = 0;
+        for (int g : group) {
+            over += overOf.get(g) ? 1 : 0;
+        }
+        if (over == 0 || over == group.size()) {
+            return true;
+        }
+        if (relations.isEmpty()) {
+            relations.add(related(stack, true));
+            relations.add(related(stack, false));
+        }
+        boolean first = group.contains(hinge) ? overOf.get(hinge) : 2 * over >= group.size();
+        for (boolean side : group.contains(hinge) ? new boolean[] {first} : new boolean[] {first, !first}) {
+            if (!contradicts(group, side, overOf, relations.get(side ? 0 : 1))) {
+                for (int g : group) {
+                    overOf.put(g, side);
+                }
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * Keeps paper out of the flat fold between a face laid on after a lifted tail (over all it
+     * overlaps, {@link #liftTail}) and the face {@code from} it runs on from, its hinge on the
+     * sheet: paper over {@code from} that reaches across their crease would lie between the two
+     * layers (taco-tortilla: a gadget's last turn, the strip running on into the next triangle
+     * of the host, and an earlier pass over the gadget). The new face goes under such paper, and
+     * under all the paper it overlaps above it, unless that contradicts the order already there.
+     */
+    private void outOfLiftedFold(int f, int from, Stack stack, List<Integer> touching, Map<Integer, Boolean> overOf) {
+        int[] loop = loops.get(f);
+        int a = loop[loop.length - 1];
+        int b = loop[0];
+        Isometry2 pose = poseOf.get(f);
+        double ax = pose.x(u(a), v(a));
+        double ay = pose.y(u(a), v(a));
+        double bx = pose.x(u(b), v(b));
+        double by = pose.y(u(b), v(b));
+        Map<Integer, List<Integer>> aboveOf = null;
+        Set<Integer> overFrom = null;
+        for (int g : touching) {
+            if (g == from || !overOf.get(g) || (originOf[g] & SEALED) != 0 || !crosses(placedCached(g), ax, ay, bx, by)) {
+                continue;
+            }
+            if (aboveOf == null) {
+                aboveOf = related(stack, false);
+                overFrom = reachedFrom(from, aboveOf);
+            }
+            if (!overFrom.contains(g)) {
+                continue;
+            }
+            List<Integer> group = new ArrayList<>();
+            for (int h : reachedFrom(g, aboveOf)) {
+                if (overOf.containsKey(h)) {
+                    group.add(h);
+                }
+            }
+            group.add(g);
+            if (!contradicts(group, false, overOf, aboveOf)) {
+                for (int h : group) {
+                    overOf.put(h, false);
+                }
+            }
+        }
+    }
+
+    /** The faces reached from g (g not among them, unless on a cycle) through relations {@code onward}. */
+    private static Set<Integer> reachedFrom(int g, Map<Integer, List<Integer>> onward) {
+        Set<Integer> reached = new HashSet<>();
+        ArrayDeque<Integer> open = new ArrayDeque<>(List.of(g));
+        while (!open.isEmpty()) {
+            for (int next : onward.getOrDefault(open.poll(), List.of())) {
+                if (reached.add(next)) {
+                    open.add(next);
+                }
+            }
+        }
+        return reached;
+    }
+
+    /** The root of g in a forest of parents (g itself where it has none). */
+    private static int root(Map<Integer, Integer> parent, int g) {
+        int r = g;
+        while (parent.containsKey(r)) {
+            r = parent.get(r);
+        }
+        return r;
+    }
+
+    /**
+     * Whether a new face going over ({@code side}) or under every face of {@code group} would
+     * contradict the order: over a face means over all below it ({@code onward}: the stack's
+     * relations downwards), none of which may be one it lies under; under, likewise upwards.
+     */
+    private static boolean contradicts(List<Integer> group, boolean side, Map<Integer, Boolean> overOf,
+            Map<Integer, List<Integer>> onward) {
+        Set<Integer> reached = new HashSet<>(group);
+        ArrayDeque<Integer> open = new ArrayDeque<>();
+        for (int g : group) {
+            if (overOf.get(g) != side) {
+                open.add(g);
+            }
+        }
+        while (!open.isEmpty()) {
+            for (int next : onward.getOrDefault(open.poll(), List.of())) {
+                if (reached.add(next)) {
+                    Boolean nextOver = overOf.get(next);
+                    if (nextOver != null && nextOver != side) {
+                        return true;
+                    }
+                    open.add(next);
+                }
+            }
+        }
+        return false;
     }
 
     /** Whether convex polygon xy reaches across the segment (a, b): on both sides of its line, over a length of it. */

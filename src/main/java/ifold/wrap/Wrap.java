@@ -996,7 +996,10 @@ public final class Wrap {
                 bottom[j] = h - (j + 1) * w;
             }
             if (!last) {
-                bottom[k - 1] = 0; // the last pass along the exit edge; the turn before it may shift less than w
+                int shortTurn = shortTurn(edges, k, firstDirection(plan, i, w), hostFrames[hostOf(i)].corners());
+                for (int j = shortTurn + 1; j < k; j++) {
+                    bottom[j] = (k - 1 - j) * w;
+                }
             }
             int d = firstDirection(plan, i, w);
             int host = plan.first + i;
@@ -1028,6 +1031,48 @@ public final class Wrap {
             } else {
                 leave(i, edges, d);
             }
+        }
+
+        /**
+         * Which turn of a triangle's k passes, the first running in direction d, shifts by less
+         * than a width (the first pass runs along the apex, the last along the exit edge, the
+         * rest a width apart): the one after pass j. Its gadget of four folds reaches two widths
+         * beyond the slanted edge; where that lies on the host (a coplanar neighbour) it stays
+         * flat there, where it lies beyond the host's edge it is tucked under, and at a corner of
+         * the host tucked twice: the cube's faces had 17 of their 24 layers from gadgets of four
+         * triangles fanning at one corner, each turning at the last pass, by the base's corner.
+         * So: the turn nearest the middle whose gadget lies on the host; else the middle one.
+         */
+        private int shortTurn(SlantedEdges edges, int k, int d, double[] host) {
+            int middle = (k - 2) / 2;
+            int best = -1;
+            for (int j = 0; j + 1 < k; j++) {
+                int side = (j % 2 == 0) ? d : -d;
+                double top = Math.min(edges.h(), edges.h() - j * w);
+                double low = Math.max(0, (k - 2 - j) * w);
+                boolean onHost = true;
+                for (double y : new double[] {low, top}) {
+                    double x = side > 0 ? edges.right(y) : edges.left(y);
+                    double beyond = x + side * (margin + 2 * w);
+                    onHost &= insideConvex(host, intoHost.x(beyond, y), intoHost.y(beyond, y));
+                }
+                if (onHost && (best < 0 || Math.abs(j - middle) < Math.abs(best - middle))) {
+                    best = j;
+                }
+            }
+            return best < 0 ? middle : best;
+        }
+
+        /** Whether (x, y) lies inside the counter-clockwise convex polygon {@code c} (x, y pairs). */
+        private static boolean insideConvex(double[] c, double x, double y) {
+            int n = c.length / 2;
+            for (int a = 0; a < n; a++) {
+                int b = (a + 1) % n;
+                if ((c[2 * b] - c[2 * a]) * (y - c[2 * a + 1]) - (c[2 * b + 1] - c[2 * a + 1]) * (x - c[2 * a]) < 0) {
+                    return false;
+                }
+            }
+            return true;
         }
 
         /** Where a pass in the band [y, y + w] running in direction d ends: just beyond the slanted edge ahead. */
