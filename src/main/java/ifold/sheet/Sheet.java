@@ -1247,22 +1247,34 @@ public final class Sheet {
                 }
             }
         }
-        List<Map<Integer, List<Integer>>> relations = new ArrayList<>(2); // below, above: found once needed
-        Map<Integer, Boolean> forced = pockets.isEmpty() ? null
-                : outOfPockets(f, hinge, stack, levels, touching, pockets, overOf, relations);
-        if (joinedAcross.isEmpty()) {
+        if (joinedAcross.isEmpty() && pockets.isEmpty()) {
             return;
         }
+        List<Map<Integer, List<Integer>>> relations = new ArrayList<>(2); // below, above: found once needed
+        Map<Integer, Boolean> forced = null;
+        Map<Integer, List<Integer>> unitOf = new HashMap<>(); // each face of a group: the group
         for (List<Integer> group : groups(acrossParent, joinedAcross)) {
-            if (uniform(group, hinge, stack, overOf, relations)) {
-                continue;
+            for (int g : group) {
+                unitOf.put(g, group);
             }
-            forced = forced != null ? forced : forcedSides(f, hinge, touching, overOf, relations);
             int over = 0;
             for (int g : group) {
                 over += overOf.get(g) ? 1 : 0;
             }
-            carryAlong(group, 2 * over >= group.size(), overOf, forced, relations);
+            if (over == 0 || over == group.size()) {
+                continue;
+            }
+            if (relations.isEmpty()) {
+                relations.add(related(stack, true));
+                relations.add(related(stack, false));
+            }
+            forced = forced != null ? forced : forcedSides(f, hinge, touching, overOf, relations);
+            if (!uniform(group, hinge, overOf, relations, forced)) {
+                carryAlong(group, 2 * over >= group.size(), overOf, forced, relations);
+            }
+        }
+        if (!pockets.isEmpty()) {
+            outOfPockets(f, hinge, stack, levels, touching, pockets, unitOf, overOf, relations, forced);
         }
     }
 
@@ -1338,9 +1350,10 @@ public final class Sheet {
      * new face's fold and the pocket's (a turn landing in the pocket of a neighbour's turn, and
      * the next fold over it). The free layer goes to the other's side, where the order allows.
      */
-    private Map<Integer, Boolean> outOfPockets(int f, int hinge, Stack stack, int[] levels, List<Integer> touching, List<int[]> pockets,
-            Map<Integer, Boolean> overOf, List<Map<Integer, List<Integer>>> relations) {
-        Map<Integer, Boolean> forced = null;
+    private void outOfPockets(int f, int hinge, Stack stack, int[] levels, List<Integer> touching, List<int[]> pockets,
+            Map<Integer, List<Integer>> unitOf, Map<Integer, Boolean> overOf, List<Map<Integer, List<Integer>>> relations,
+            Map<Integer, Boolean> forcedSoFar) {
+        Map<Integer, Boolean> forced = forcedSoFar;
         if (relations.isEmpty()) {
             relations.add(related(stack, true));
             relations.add(related(stack, false));
@@ -1356,21 +1369,31 @@ public final class Sheet {
             if ((gBound && dBound) || overOf.get(g) == overOf.get(d)) {
                 continue;
             }
-            // Both free: the layer nearer the hinge's level keeps its side, and the other follows.
+            // Both free: the layer nearer the hinge's level keeps its side, and the other follows,
+            // with the layers it goes with (those joined by creases the new face reaches across).
             boolean gKeeps = gBound || (!dBound
                     && Math.abs(levels[slotOf[g]] - hingeLevel) <= Math.abs(levels[slotOf[d]] - hingeLevel));
-            int free = gKeeps ? d : g;
+            List<Integer> keeper = unitOf.getOrDefault(gKeeps ? g : d, List.of(gKeeps ? g : d));
+            List<Integer> follower = unitOf.getOrDefault(gKeeps ? d : g, List.of(gKeeps ? d : g));
+            if (keeper == follower) {
+                continue; // one group, made uniform already: the new face is not between them
+            }
             boolean side = overOf.get(gKeeps ? g : d);
-            if (!contradicts(List.of(free), side, overOf, relations.get(side ? 0 : 1))) {
-                overOf.put(free, side);
-            } else if (!gBound && !dBound && !contradicts(List.of(gKeeps ? g : d), !side, overOf, relations.get(side ? 1 : 0))) {
-                overOf.put(gKeeps ? g : d, !side);
+            if (!contradicts(follower, side, overOf, relations.get(side ? 0 : 1))) {
+                for (int h : follower) {
+                    overOf.put(h, side);
+                }
+            } else if (!gBound && !dBound && !contradicts(keeper, !side, overOf, relations.get(side ? 1 : 0))) {
+                for (int h : keeper) {
+                    overOf.put(h, !side);
+                }
             } else {
                 forced = forced != null ? forced : forcedSides(f, hinge, touching, overOf, relations);
-                carryAlong(List.of(g, d), side, overOf, forced, relations);
+                List<Integer> both = new ArrayList<>(keeper);
+                both.addAll(follower);
+                carryAlong(both, side, overOf, forced, relations);
             }
         }
-        return forced;
     }
 
     /** Joins g and d in a forest of parents. */
@@ -1394,25 +1417,24 @@ public final class Sheet {
     /**
      * Puts a new face over all of {@code group} or under all of it, where the order allows: the
      * side most of it has (the hinge's, where the hinge is one of them), else the other, so long
-     * as no tentative side of other paper must change; whether it could. {@code relations}
-     * holds the stack's relations downwards and upwards once found.
+     * as no tentative side of other paper must change, nor a side {@code forced} on one of the
+     * group; whether it could. {@code relations} holds the stack's relations, downwards and
+     * upwards.
      */
-    private boolean uniform(List<Integer> group, int hinge, Stack stack, Map<Integer, Boolean> overOf,
-            List<Map<Integer, List<Integer>>> relations) {
+    private static boolean uniform(List<Integer> group, int hinge, Map<Integer, Boolean> overOf,
+            List<Map<Integer, List<Integer>>> relations, Map<Integer, Boolean> forced) {
         int over = 0;
         for (int g : group) {
             over += overOf.get(g) ? 1 : 0;
         }
-        if (over == 0 || over == group.size()) {
-            return true;
-        }
-        if (relations.isEmpty()) {
-            relations.add(related(stack, true));
-            relations.add(related(stack, false));
-        }
         boolean first = group.contains(hinge) ? overOf.get(hinge) : 2 * over >= group.size();
         for (boolean side : group.contains(hinge) ? new boolean[] {first} : new boolean[] {first, !first}) {
-            if (!contradicts(group, side, overOf, relations.get(side ? 0 : 1))) {
+            boolean allowed = true;
+            for (int g : group) {
+                Boolean must = forced.get(g);
+                allowed &= must == null || must == side;
+            }
+            if (allowed && !contradicts(group, side, overOf, relations.get(side ? 0 : 1))) {
                 for (int g : group) {
                     overOf.put(g, side);
                 }
