@@ -59,7 +59,7 @@ public final class Reports {
         figures.put("end", Triangle.name(end));
         figures.put("stripLength", sheet.length());
         figures.put("stripWidth", sheet.width());
-        figures.put("aspectRatio", sheet.length() / sheet.width());
+        figures.put("lengthOverWidth", sheet.length() / sheet.width()); // the wrap's strips say it so too
         figures.put("folds", turns + overlaps + tucks);
         figures.put("zigzagFolds", turns + overlaps);
         figures.put("tucks", tucks);
@@ -187,6 +187,7 @@ public final class Reports {
         figures.put("paperArea", analysis.paperArea());
         figures.put("paperEfficiency", analysis.surfaceArea() / analysis.paperArea());
         figures.put("coverage", analysis.coverage());
+        figures.put("paperOutsideArea", WrapAnalysis.outsideArea(result)); // as the zig-zag's report
         figures.put("paperOutside", analysis.outsidePaper());
         figures.put("farthestFromSurface", analysis.farthest());
         figures.put("isometryError", analysis.isometryError());

@@ -26,6 +26,9 @@ class DemoCommandTest {
         assertEquals(5, CliTest.number(json, "passes"), 0, "⌈8 / 1.6⌉");
         assertEquals(1.6, CliTest.number(json, "stripWidth"), 1e-12, "a fifth of the altitude from C");
         assertTrue(CliTest.number(json, "paperOutsideArea") < 1e-9, json);
+        // One vocabulary with the wrap's report: its strips' L/w is lengthOverWidth.
+        assertEquals(CliTest.number(json, "stripLength") / 1.6, CliTest.number(json, "lengthOverWidth"), 1e-9);
+        assertFalse(json.contains("aspectRatio"), json);
         assertEquals(40 / (CliTest.number(json, "stripLength") * 1.6), CliTest.number(json, "paperEfficiency"), 1e-5);
         assertTrue(run.out().contains("coverage 1.000"), run.out());
         ObjReadBack back = ObjReadBack.read(obj);

@@ -31,6 +31,8 @@ class WrapCommandTest {
         assertTrue(crossings >= 5 && crossings < 57, "folds over an edge between faces: " + crossings);
         assertTrue(CliTest.number(json, "isometryError") <= 1e-9, json);
         assertTrue(CliTest.number(json, "maxLayers") <= CliTest.number(json, "stackLayers"), json);
+        // The zig-zag's words: the paper's area outside its hosts, nothing after the tucks.
+        assertTrue(CliTest.number(json, "paperOutsideArea") < 1e-9, json);
         double length = CliTest.number(json, "length");
         double width = CliTest.number(json, "width");
         assertEquals(6 / (length * width), CliTest.number(json, "paperEfficiency"), 1e-9, "the cube's area over L·w");
