@@ -51,6 +51,7 @@ public final class App {
         try {
             SwingUtilities.invokeAndWait(() -> {
                 lookAndFeel();
+                windowClass();
                 MainWindow frame = new MainWindow(settings);
                 frame.restoreOtherParameters();
                 frame.setVisible(true);
@@ -78,6 +79,30 @@ public final class App {
             } catch (ReflectiveOperationException | UnsupportedLookAndFeelException e) {
                 // The default look it is: every component still works.
             }
+        }
+    }
+
+    /** The class the window manager and the task bar know the window by (X11's WM_CLASS). */
+    static final String WINDOW_CLASS = "iFold";
+
+    /**
+     * Names the window's class iFold: X11's toolkit takes it from the main class's name
+     * ("ifold-cli-Main") unless told otherwise, in a field it reads as each window opens. The
+     * field is the JDK's own, opened to iFold by the launcher
+     * ({@code --add-opens java.desktop/sun.awt.X11}); elsewhere (another toolkit, a JVM started
+     * without the flag) the name stays as it was and nothing else changes.
+     */
+    private static void windowClass() {
+        java.awt.Toolkit toolkit = java.awt.Toolkit.getDefaultToolkit();
+        if (!toolkit.getClass().getName().equals("sun.awt.X11.XToolkit")) {
+            return;
+        }
+        try {
+            java.lang.reflect.Field name = toolkit.getClass().getDeclaredField("awtAppClassName");
+            name.setAccessible(true);
+            name.set(toolkit, WINDOW_CLASS);
+        } catch (ReflectiveOperationException | RuntimeException e) {
+            // Not opened to iFold: the window keeps the toolkit's name for its class.
         }
     }
 

@@ -201,6 +201,20 @@ class MainWindowTest {
         }
     }
 
+    /** The window manager and the task bar know the window as iFold, not as the main class (ifold-cli-Main). */
+    @Test
+    void theWindowsClassIsIFold() throws Exception {
+        assumeTrue(Files.isExecutable(Path.of("/usr/bin/xprop")), "xprop (x11-utils) reads the window's class");
+        window = App.open(null, settings());
+        settled();
+        String title = onEdt(() -> window.getTitle());
+        Process xprop = new ProcessBuilder("/usr/bin/xprop", "-name", title, "WM_CLASS").redirectErrorStream(true).start();
+        String said = new String(xprop.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+        assertEquals(0, xprop.waitFor(), said);
+        assertTrue(said.contains("\"" + App.WINDOW_CLASS + "\""), said);
+        assertFalse(said.contains("ifold-cli-Main") || said.contains("ifold-ui"), said);
+    }
+
     @Test
     void aBadWidthIsMarkedWithTheCoresMessageAndAGoodOneReplans() throws Exception {
         window = App.open(null, settings());
