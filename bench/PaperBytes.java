@@ -1,0 +1,39 @@
+import ifold.job.ModelFiles;
+import ifold.job.WrapPath;
+import ifold.mesh.HalfedgeMesh;
+import ifold.mesh.MeshBuilder;
+import ifold.refine.HamiltonianRefinement;
+import ifold.wrap.Wrap;
+import java.nio.file.Path;
+
+/**
+ * What the paper costs in memory: for each model, the heap the wrap's result holds (its
+ * sheets, their faces, the journal of steps; measured after collections, the refinement loaded
+ * before), over the faces of paper. The wrap at the default width, in this one JVM; models of
+ * a few thousand faces or more (below that, what class loading leaves behind is most of it).
+ */
+public final class PaperBytes {
+    public static void main(String[] args) throws Exception {
+        for (String name : args) {
+            HalfedgeMesh mesh = ModelFiles.load(Path.of(name), MeshBuilder.Options.REPAIR_TRIANGULATE).built().mesh();
+            HamiltonianRefinement.Result refinement = WrapPath.of(mesh).refinement();
+            long before = used();
+            Wrap.Result result = Wrap.wrap(refinement, new Wrap.Options(Double.NaN, Double.NaN));
+            long after = used();
+            long faces = 0;
+            for (Wrap.Strip strip : result.strips()) {
+                faces += strip.sheet().faceCount();
+            }
+            System.out.printf(java.util.Locale.ROOT, "%s: %,d faces, the wrap holds %.1f MB, %.0f bytes a face (%,d steps)%n", name,
+                    faces, (after - before) / 1e6, (double) (after - before) / faces, result.steps().size());
+        }
+    }
+
+    private static long used() {
+        for (int i = 0; i < 3; i++) {
+            System.gc();
+        }
+        Runtime runtime = Runtime.getRuntime();
+        return runtime.totalMemory() - runtime.freeMemory();
+    }
+}
