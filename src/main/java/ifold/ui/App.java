@@ -73,7 +73,9 @@ public final class App {
         if (UIManager.getLookAndFeel() instanceof FlatLightLaf) {
             return;
         }
-        if (!FlatLightLaf.setup()) {
+        if (FlatLightLaf.setup()) {
+            UIManager.put("MenuItemUI", ShortcutMenuItemUI.class.getName());
+        } else {
             try {
                 UIManager.setLookAndFeel(UIManager.getSystemLookAndFeelClassName());
             } catch (ReflectiveOperationException | UnsupportedLookAndFeelException e) {

@@ -199,6 +199,8 @@ class MainWindowTest {
                 "Wrap the model", "Play a script", "Keys", "New model", "Model information", "Export refinement")) {
             assertNotNull(onEdt(() -> menuItem(window, item).getAccelerator()), item + " has a shortcut");
         }
+        // Shortcuts of punctuation keys read as the key: "Ctrl+[", not "Ctrl+Open Bracket".
+        assertTrue(onEdt(() -> menuItem(window, "Previous fold").getUI()) instanceof ShortcutMenuItemUI);
     }
 
     /** The window manager and the task bar know the window as iFold, not as the main class (ifold-cli-Main). */
