@@ -203,6 +203,26 @@ class MainWindowTest {
         assertTrue(onEdt(() -> menuItem(window, "Previous fold").getUI()) instanceof ShortcutMenuItemUI);
     }
 
+    /** Alt+F opens the File menu as soon as the window is up, without a click in it first (Xvfb has no window manager to focus it). */
+    @Test
+    void altFOpensTheFileMenuWithoutAClickFirst() throws Exception {
+        window = App.open(null, settings());
+        settled();
+        java.awt.Robot robot = new java.awt.Robot();
+        robot.setAutoDelay(30);
+        // The pointer away from the window: without a window manager X gives keys to the window
+        // under the pointer, unless one has taken the focus.
+        java.awt.Dimension screen = java.awt.Toolkit.getDefaultToolkit().getScreenSize();
+        robot.mouseMove(screen.width - 1, screen.height - 1);
+        robot.keyPress(java.awt.event.KeyEvent.VK_ALT);
+        robot.keyPress(java.awt.event.KeyEvent.VK_F);
+        robot.keyRelease(java.awt.event.KeyEvent.VK_F);
+        robot.keyRelease(java.awt.event.KeyEvent.VK_ALT);
+        waitFor("the File menu open", 10, () -> window.getJMenuBar().getMenu(0).isPopupMenuVisible());
+        robot.keyPress(java.awt.event.KeyEvent.VK_ESCAPE);
+        robot.keyRelease(java.awt.event.KeyEvent.VK_ESCAPE);
+    }
+
     /** The window manager and the task bar know the window as iFold, not as the main class (ifold-cli-Main). */
     @Test
     void theWindowsClassIsIFold() throws Exception {
