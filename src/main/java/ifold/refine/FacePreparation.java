@@ -331,7 +331,10 @@ public final class FacePreparation {
                         try {
                             region.triangulate(false);
                         } catch (RuntimeException e) {
-                            throw new Unprepared("region " + region.index + " (face " + region.seed + ") could not be triangulated: " + e);
+                            // The refiner's own words name its internals ("Cannot invoke
+                            // Vertex.getX() because v is null"), which tell a user nothing.
+                            throw new Unprepared("region " + region.index + " (face " + region.seed + ") could not be"
+                                    + " triangulated, even from its boundary alone");
                         }
                     }
                     changed = true;

@@ -1217,8 +1217,10 @@ public final class Sheet {
      * face goes over all of such a group or under all of it, the side most of it already has
      * (the hinge's, where the hinge is one of them), unless that would contradict the order
      * already there (a face it lies under below one it would go over, or the other way), and
-     * then the other side. Turned one by one, a gadget's chain of three layers, two creases,
-     * was only turned from one fold into the other.
+     * then the other side; where neither fits, the chain carries the paper the order puts with it
+     * ({@link #carryAlong}). Turned one by one, a gadget's chain of three layers, two creases,
+     * was only turned from one fold into the other. Then the new face leaves the pockets of folds
+     * it does not reach across where it can ({@link #outOfPockets}).
      */
     private void outOfFolds(int f, int hinge, Stack stack, int[] levels, List<Integer> touching, Map<Integer, Boolean> overOf) {
         double[] placedF = placedCached(f);
