@@ -1048,7 +1048,7 @@ public final class Wrap {
             int best = -1;
             for (int j = 0; j + 1 < k; j++) {
                 int side = (j % 2 == 0) ? d : -d;
-                double top = Math.min(edges.h(), edges.h() - j * w);
+                double top = edges.h() - j * w;
                 double low = Math.max(0, (k - 2 - j) * w);
                 boolean onHost = true;
                 for (double y : new double[] {low, top}) {
@@ -1275,11 +1275,11 @@ public final class Wrap {
         /**
          * Where the paper has the point (x, y) of the triangle's frame that a turn's two creases
          * share: the tail's start on the side nearest it, mapped by the tail's pose, where that
-         * lies within a millionth of the width of it; else (x, y). The mountain crease goes
+         * lies within a quarter width of it; else (x, y). The mountain crease goes
          * through the paper's own corner rather than the designed one: the two differ by rounding
          * in the poses, the engine snaps the crease's end to the corner, and each turn's fold about
-         * a line that missed its crease by that much moved the paper on by it; over the 3,355
-         * passes of a 10 × 10 × 0.01 plate's triangle the paper fell two tolerances behind its
+         * a line that missed its crease by that much moved the paper on by it; over thousands of
+         * passes (a 10 × 10 × 0.03 plate's triangles) the paper fell past a tolerance behind its
          * design, and the turn was refused as crossing the crease before it.
          */
         private double[] tailCorner(double x, double y) {
