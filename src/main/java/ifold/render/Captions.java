@@ -86,29 +86,49 @@ final class Captions {
         }
     }
 
+    /** The caption drawn last, and its white text's coverage of each pixel of its band (0–255): most frames repeat it. */
+    private String maskText;
+    private int[] mask;
+    private int maskRows;
+
+    private static final float BAND_ALPHA = 0.62f;
+    private static final int BAND = 0x20262E;
+
     void draw(byte[] rgb, String text) {
         if (text == null || text.isBlank()) {
             return;
         }
-        Layout layout = layout(text.strip());
-        int rows = layout.rows();
+        if (!text.equals(maskText)) {
+            drawMask(text);
+        }
+        // The band over the picture, then the text over the band: what Java2D's composites do,
+        // by the pixel, without setting the text again.
+        int rows = maskRows;
         int top = height - rows;
-        int[] row = new int[width];
+        int keep = Math.round((1 - BAND_ALPHA) * 256);
+        int[] band = {Math.round(BAND_ALPHA * (BAND >> 16 & 0xFF)), Math.round(BAND_ALPHA * (BAND >> 8 & 0xFF)), Math.round(BAND_ALPHA * (BAND & 0xFF))};
         for (int y = 0; y < rows; y++) {
             int base = 3 * (top + y) * width;
             for (int x = 0; x < width; x++) {
-                int b = base + 3 * x;
-                row[x] = (rgb[b] & 0xff) << 16 | (rgb[b + 1] & 0xff) << 8 | (rgb[b + 2] & 0xff);
+                int cover = mask[y * width + x];
+                for (int k = 0; k < 3; k++) {
+                    int b = base + 3 * x + k;
+                    int under = ((rgb[b] & 0xFF) * keep >> 8) + band[k];
+                    rgb[b] = (byte) ((under * (255 - cover) + 255 * cover + 127) / 255);
+                }
             }
-            strip.setRGB(0, y, width, 1, row, 0, width);
         }
+    }
+
+    /** Sets {@code text} in white on black, to read its coverage of each pixel. */
+    private void drawMask(String text) {
+        Layout layout = layout(text.strip());
+        int rows = layout.rows();
         Graphics2D g = strip.createGraphics();
         try {
+            g.setColor(Color.BLACK);
+            g.fillRect(0, 0, width, strip.getHeight());
             g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
-            g.setComposite(AlphaComposite.getInstance(AlphaComposite.SRC_OVER, 0.62f));
-            g.setColor(new Color(0x20, 0x26, 0x2E));
-            g.fillRect(0, 0, width, rows);
-            g.setComposite(AlphaComposite.SrcOver);
             g.setFont(layout.font());
             FontMetrics metrics = g.getFontMetrics();
             g.setColor(Color.WHITE);
@@ -122,16 +142,14 @@ final class Captions {
         } finally {
             g.dispose();
         }
-        for (int y = 0; y < rows; y++) {
-            strip.getRGB(0, y, width, 1, row, 0, width);
-            int base = 3 * (top + y) * width;
-            for (int x = 0; x < width; x++) {
-                int b = base + 3 * x;
-                rgb[b] = (byte) (row[x] >>> 16);
-                rgb[b + 1] = (byte) (row[x] >>> 8);
-                rgb[b + 2] = (byte) row[x];
-            }
+        int[] coverage = new int[rows * width];
+        strip.getRGB(0, 0, width, rows, coverage, 0, width);
+        for (int i = 0; i < coverage.length; i++) {
+            coverage[i] &= 0xFF; // white on black: any channel is the coverage
         }
+        mask = coverage;
+        maskRows = rows;
+        maskText = text;
     }
 
     /**
@@ -178,6 +196,7 @@ final class Captions {
     }
 
     /** The text, cut short with an ellipsis where it would run past {@code room} pixels. */
+
     private static String fit(String text, FontMetrics metrics, int room) {
         if (metrics.stringWidth(text) <= room) {
             return text;

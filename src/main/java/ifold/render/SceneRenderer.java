@@ -62,8 +62,9 @@ public final class SceneRenderer {
         Matrix4f projection = new Matrix4f(scene.camera().projectionMatrix((double) width / Math.max(1, height), new Matrix4d()));
         List<Geometry> geometries = new ArrayList<>();
         scene.root().visitGeometry(geometries::add);
-        // What is seen through everything is drawn last, over what is already there.
-        geometries.sort(java.util.Comparator.comparing(Geometry::isSeenThrough));
+        // What lies under others is drawn after them, what is seen through everything last, over
+        // what is already there.
+        geometries.sort(java.util.Comparator.comparing(Geometry::isSeenThrough).thenComparing(Geometry::isUnder));
         for (Geometry geometry : geometries) {
             GpuMesh mesh = uploaded.get(geometry);
             if (mesh == null || mesh.version != geometry.version()) {
@@ -76,13 +77,13 @@ public final class SceneRenderer {
             }
             Matrix4f modelView = new Matrix4f(new Matrix4d(view).mul(geometry.worldTransform()));
             if (indices) {
-                drawIndices(gl, geometry, mesh, modelView, projection);
+                drawIndices(gl, geometry, mesh, modelView, projection, height);
                 continue;
             }
             if (geometry.isSeenThrough()) {
                 gl.glDisable(GL3.GL_DEPTH_TEST);
             }
-            drawFaces(gl, scene, geometry, mesh, modelView, projection);
+            drawFaces(gl, scene, geometry, mesh, modelView, projection, height);
             if (geometry.material().showEdges()) {
                 drawEdges(gl, mesh, modelView, projection);
             }
@@ -100,7 +101,7 @@ public final class SceneRenderer {
         gl.glUseProgram(0);
     }
 
-    private void drawFaces(GL3 gl, Scene scene, Geometry geometry, GpuMesh mesh, Matrix4f modelView, Matrix4f projection) {
+    private void drawFaces(GL3 gl, Scene scene, Geometry geometry, GpuMesh mesh, Matrix4f modelView, Matrix4f projection, int height) {
         Material material = geometry.material();
         gl.glUseProgram(faceProgram.id);
         gl.glUniformMatrix4fv(faceProgram.uniform(gl, "modelView"), 1, false, modelView.get(matrix), 0);
@@ -122,7 +123,9 @@ public final class SceneRenderer {
         setColor(gl, faceProgram.uniform(gl, "backColor"), material.back());
         setColor(gl, faceProgram.uniform(gl, "hiddenColor"), geometry.hiddenColor());
         gl.glUniform1i(faceProgram.uniform(gl, "useFaceColors"), material.useFaceColors() ? 1 : 0);
-        gl.glUniform1i(faceProgram.uniform(gl, "revealed"), geometry.revealed());
+        // A clear hidden colour: the triangles not yet revealed are not there, and are not drawn.
+        boolean hiddenNotThere = (geometry.hiddenColor() >>> 24) == 0;
+        gl.glUniform1i(faceProgram.uniform(gl, "revealed"), hiddenNotThere ? Integer.MAX_VALUE : geometry.revealed());
         gl.glUniform1i(faceProgram.uniform(gl, "triangleColors"), 0);
         gl.glEnable(GL3.GL_POLYGON_OFFSET_FILL);
         gl.glPolygonOffset(1f, 1f);
@@ -130,13 +133,13 @@ public final class SceneRenderer {
             gl.glEnable(GL3.GL_CULL_FACE);
             gl.glCullFace(GL3.GL_BACK);
         }
-        // A clear hidden colour: the triangles not yet revealed are not there, and are not drawn.
-        mesh.drawFaces(gl, (geometry.hiddenColor() >>> 24) == 0 ? geometry.revealed() : Integer.MAX_VALUE);
+        mesh.drawFaces(gl, hiddenNotThere ? geometry.revealed() : Integer.MAX_VALUE, new Matrix4f(projection).mul(modelView),
+                0.5 * height * projection.m11(), faceProgram.uniform(gl, "primitiveBase"), hiddenNotThere);
         gl.glDisable(GL3.GL_CULL_FACE); // paper is seen from both sides
         gl.glDisable(GL3.GL_POLYGON_OFFSET_FILL);
     }
 
-    private void drawIndices(GL3 gl, Geometry geometry, GpuMesh mesh, Matrix4f modelView, Matrix4f projection) {
+    private void drawIndices(GL3 gl, Geometry geometry, GpuMesh mesh, Matrix4f modelView, Matrix4f projection, int height) {
         gl.glUseProgram(indexProgram.id);
         gl.glUniformMatrix4fv(indexProgram.uniform(gl, "modelView"), 1, false, modelView.get(matrix), 0);
         gl.glUniformMatrix4fv(indexProgram.uniform(gl, "projection"), 1, false, projection.get(matrix), 0);
@@ -145,7 +148,8 @@ public final class SceneRenderer {
             gl.glCullFace(GL3.GL_BACK);
         }
         gl.glDisable(GL3.GL_MULTISAMPLE);
-        mesh.drawFaces(gl);
+        mesh.drawFaces(gl, Integer.MAX_VALUE, new Matrix4f(projection).mul(modelView), 0.5 * height * projection.m11(),
+                indexProgram.uniform(gl, "primitiveBase"), false);
         gl.glEnable(GL3.GL_MULTISAMPLE);
         gl.glDisable(GL3.GL_CULL_FACE);
     }

@@ -37,23 +37,26 @@ final class Shaders {
             uniform vec4 hiddenColor;
             uniform bool useFaceColors;
             uniform int revealed;
+            uniform int primitiveBase;
             out vec4 fragColor;
             void main() {
+                int triangle = gl_PrimitiveID + primitiveBase; // drawn in runs of chunks
                 vec3 n = normalize(cross(dFdx(viewPosition), dFdy(viewPosition)));
                 if (dot(n, viewPosition) > 0.0) {
                     n = -n;
                 }
                 vec4 base;
-                if (gl_PrimitiveID >= revealed) {
-                    if (hiddenColor.a == 0.0) {
-                        discard; // a clear hidden colour: triangles not yet revealed are not there
-                    }
+                // Where the hidden colour is clear, the triangles not yet revealed are not drawn
+                // at all (and revealed is then past them all). No discard: a shader that may
+                // discard keeps a software renderer from testing depth before shading, and a
+                // wrap is layer over layer.
+                if (triangle >= revealed) {
                     // Unlit: one flat tone, so that no shading makes a triangle not yet revealed
                     // look like one of the revealed, which are shaded.
                     fragColor = hiddenColor;
                     return;
                 } else if (gl_FrontFacing) {
-                    base = useFaceColors ? texelFetch(triangleColors, gl_PrimitiveID) : frontColor;
+                    base = useFaceColors ? texelFetch(triangleColors, triangle) : frontColor;
                 } else {
                     base = backColor;
                 }
@@ -87,9 +90,10 @@ final class Shaders {
     /** Writes the index of the triangle plus one into red, green and blue: 0 is the background. */
     static final String INDEX_FRAGMENT = """
             #version 330 core
+            uniform int primitiveBase;
             out vec4 fragColor;
             void main() {
-                int id = gl_PrimitiveID + 1;
+                int id = gl_PrimitiveID + primitiveBase + 1;
                 fragColor = vec4(float((id >> 16) & 255), float((id >> 8) & 255), float(id & 255), 255.0) / 255.0;
             }
             """;

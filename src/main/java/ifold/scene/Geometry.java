@@ -20,6 +20,7 @@ public final class Geometry extends Spatial {
     private int hiddenColor = 0xFFF3F3F3;
     private boolean closed;
     private boolean seenThrough;
+    private boolean under;
 
     public Geometry(String name, SceneMesh mesh, Material material) {
         super(name);
@@ -89,6 +90,20 @@ public final class Geometry extends Spatial {
     public void setSeenThrough(boolean seenThrough) {
         markChanged();
         this.seenThrough = seenThrough;
+    }
+
+    /**
+     * Whether the geometry lies under others (the model under its paper): it is drawn after
+     * them, so that where they cover it a software renderer skips its pixels before shading
+     * them, rather than shading them twice.
+     */
+    public boolean isUnder() {
+        return under;
+    }
+
+    public void setUnder(boolean under) {
+        markChanged();
+        this.under = under;
     }
 
     /** The colour of triangles not yet revealed. */

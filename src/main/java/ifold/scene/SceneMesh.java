@@ -3,6 +3,7 @@ package ifold.scene;
 import ifold.geom.PolygonTriangulator;
 import ifold.mesh.IndexedPolygons;
 import java.util.Arrays;
+import java.util.BitSet;
 
 /**
  * Triangles and edges ready to draw: positions (still {@code double}; the renderer converts to
@@ -22,8 +23,33 @@ public final class SceneMesh {
     /** 0xAARRGGBB per edge. */
     private final int[] edgeColors;
     private final Bounds bounds = new Bounds();
+    /** How the mesh may be drawn with less; null: it may not. */
+    private final Layers layers;
+
+    /**
+     * What lets a mesh of many layers (paper folded over a model, a million faces) be drawn with
+     * less, its triangles shown in the order they come: from when each lies under others, which
+     * only close a narrow gap, and, for far away, the patches: pieces of surface their
+     * triangles cover, each a few triangles in the colour those average.
+     *
+     * @param hiddenFrom for each triangle, how many of the mesh's triangles drawn cover it
+     *     ({@link Integer#MAX_VALUE}: never)
+     * @param seams the triangles that only close a narrow gap between layers (a fold's caps)
+     * @param patchOf each triangle's patch
+     * @param patchSettled for each patch, how many of the mesh's triangles must be drawn for its
+     *     triangles' exposure to hold (one past its last)
+     * @param patches the patches' triangles, patch by patch (no edges)
+     * @param patchStart patch p is triangles {@code patchStart[p]} to {@code patchStart[p + 1]} of {@code patches}
+     */
+    public record Layers(int[] hiddenFrom, BitSet seams, int[] patchOf, int[] patchSettled, SceneMesh patches, int[] patchStart) {
+    }
 
     public SceneMesh(double[] positions, int[] triangles, int[] triangleColors, int[] edges, int[] edgeColors) {
+        this(positions, triangles, triangleColors, edges, edgeColors, null);
+    }
+
+    /** A mesh of many layers, which {@code layers} (null: none) lets the renderer draw with less. */
+    public SceneMesh(double[] positions, int[] triangles, int[] triangleColors, int[] edges, int[] edgeColors, Layers layers) {
         if (triangles.length % 3 != 0 || triangleColors.length != triangles.length / 3
                 || edges.length % 2 != 0 || edgeColors.length != edges.length / 2 || positions.length % 3 != 0) {
             throw new IllegalArgumentException("inconsistent mesh arrays");
@@ -33,6 +59,16 @@ public final class SceneMesh {
         this.triangleColors = triangleColors;
         this.edges = edges;
         this.edgeColors = edgeColors;
+        if (layers != null) {
+            int patchCount = layers.patchSettled().length;
+            if (layers.hiddenFrom().length != triangleColors.length || layers.seams().length() > triangleColors.length
+                    || layers.patchOf().length != triangleColors.length
+                    || layers.patchStart().length != patchCount + 1 || layers.patchStart()[patchCount] != layers.patches().triangleCount()
+                    || java.util.Arrays.stream(layers.patchOf()).anyMatch(p -> p < 0 || p >= patchCount)) {
+                throw new IllegalArgumentException("inconsistent layers");
+            }
+        }
+        this.layers = layers;
         for (int i = 0; i < positions.length; i += 3) {
             bounds.add(positions[i], positions[i + 1], positions[i + 2]);
         }
@@ -136,6 +172,11 @@ public final class SceneMesh {
 
     public int[] edgeColors() {
         return edgeColors;
+    }
+
+    /** How the mesh may be drawn with less; null where it may not. */
+    public Layers layers() {
+        return layers;
     }
 
     /** The bounds in the mesh's own coordinates. */

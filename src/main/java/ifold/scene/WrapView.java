@@ -4,9 +4,11 @@ import ifold.mesh.IndexedPolygons;
 import ifold.sheet.HostFrame;
 import ifold.sheet.Isometry2;
 import ifold.sheet.Sheet;
+import ifold.wrap.CoveredPaper;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapGeometry;
 import java.util.ArrayList;
+import java.util.BitSet;
 import java.util.List;
 import org.joml.Quaterniond;
 import org.joml.Quaterniondc;
@@ -57,6 +59,10 @@ public final class WrapView {
         double[] positions = new double[3 * total];
         List<int[]> triangles = new ArrayList<>();
         List<Integer> colors = new ArrayList<>();
+        IntList hiddenFrom = new IntList();
+        BitSet seams = new BitSet();
+        IntList patchOf = new IntList();
+        HostPatches patches = new HostPatches(result);
         int[][] after = new int[geometries.size()][];
         int base = 0;
         for (int k = 0; k < geometries.size(); k++) {
@@ -71,15 +77,36 @@ public final class WrapView {
             for (int c = 0; c < g.caps().size(); c++) {
                 capsAfter.get(g.capAfter()[c]).add(c);
             }
+            // What lies under other paper is not drawn once that paper is there.
+            CoveredPaper.Covered covered = CoveredPaper.of(g, result.frames(), strip.sheet().thickness());
+            int[] levels = strip.sheet().levels();
             int[] trianglesAtFace = new int[g.paperFaces().size() + 1];
             for (int f = 0; f < g.paperFaces().size(); f++) {
                 trianglesAtFace[f] = triangles.size();
+                int from = triangles.size();
+                int host = g.paperHosts()[f];
                 fan(g.paperFaces().get(f), base, PaperView.PAPER, triangles, colors);
+                hiddenFrom.add(covered.faceCover()[f], triangles.size() - from); // the face that covers it, for now
+                if (!covered.face(f)) {
+                    patches.add(host, covered.undersideOut().get(f) ? PAPER.back() : PAPER.front(), covered.areas()[f]);
+                }
+                patches.layer(host, (levels[f] + 0.5) * strip.sheet().thickness(), triangles.size());
+                patchOf.add(host, triangles.size() - from);
                 for (int c : capsAfter.get(f)) {
+                    from = triangles.size();
                     fan(g.caps().get(c), base, PaperView.CAP, triangles, colors);
+                    seams.set(from, triangles.size());
+                    hiddenFrom.add(covered.capCover()[c], triangles.size() - from);
+                    patchOf.add(host, triangles.size() - from);
+                    patches.layer(host, Double.NEGATIVE_INFINITY, triangles.size());
                 }
             }
             trianglesAtFace[g.paperFaces().size()] = triangles.size();
+            // Covered once the face that covers it is drawn whole.
+            for (int t = trianglesAtFace[0]; t < triangles.size(); t++) {
+                int cover = hiddenFrom.get(t);
+                hiddenFrom.set(t, cover < 0 ? Integer.MAX_VALUE : trianglesAtFace[cover + 1]);
+            }
             after[k] = new int[strip.triangles()];
             for (int i = 0; i < strip.triangles(); i++) {
                 after[k][i] = trianglesAtFace[strip.facesAfter()[i]];
@@ -91,7 +118,131 @@ public final class WrapView {
             System.arraycopy(triangles.get(t), 0, flat, 3 * t, 3);
         }
         int[] colorArray = colors.stream().mapToInt(Integer::intValue).toArray();
-        return new Strips(new SceneMesh(positions, flat, colorArray, new int[0], new int[0]), after);
+        SceneMesh.Layers layers = patches.layers(hiddenFrom.toArray(), seams, patchOf.toArray());
+        return new Strips(new SceneMesh(positions, flat, colorArray, new int[0], new int[0], layers), after);
+    }
+
+    /**
+     * What the paper on each host looks like from far away: the host's triangles of the model,
+     * raised to the paper's top layer, in the colours of the paper exposed there averaged by
+     * area (its top side and its underside). A host is settled once its last face and cap are
+     * there: what covers what on it holds from then on.
+     */
+    private static final class HostPatches {
+        private final Wrap.Result result;
+        private final double[] red;
+        private final double[] green;
+        private final double[] blue;
+        private final double[] area;
+        private final double[] top;
+        private final int[] settled;
+
+        HostPatches(Wrap.Result result) {
+            this.result = result;
+            int hosts = result.frames().length;
+            red = new double[hosts];
+            green = new double[hosts];
+            blue = new double[hosts];
+            area = new double[hosts];
+            top = new double[hosts];
+            java.util.Arrays.fill(top, Double.NEGATIVE_INFINITY);
+            settled = new int[hosts];
+        }
+
+        void add(int host, int argb, double faceArea) {
+            red[host] += faceArea * (argb >> 16 & 0xFF);
+            green[host] += faceArea * (argb >> 8 & 0xFF);
+            blue[host] += faceArea * (argb & 0xFF);
+            area[host] += faceArea;
+        }
+
+        /** Paper at {@code height} on {@code host}, its triangles ending at {@code end}. */
+        void layer(int host, double height, int end) {
+            top[host] = Math.max(top[host], height);
+            settled[host] = Math.max(settled[host], end);
+        }
+
+        SceneMesh.Layers layers(int[] hiddenFrom, BitSet seams, int[] patchOf) {
+            IndexedPolygons mesh = result.mesh();
+            int hosts = settled.length;
+            int[] start = new int[hosts + 1];
+            for (int t = 0; t < mesh.faceCount(); t++) {
+                start[result.hostOf()[t] + 1] += area[result.hostOf()[t]] > 0 ? 1 : 0;
+            }
+            for (int h = 0; h < hosts; h++) {
+                start[h + 1] += start[h];
+            }
+            int count = start[hosts];
+            // Neighbour patches share their corners, raised along the mean of their hosts'
+            // normals to the highest of their tops: raised each along its own, they would part at
+            // every convex edge, the model showing through.
+            double[] raise = new double[mesh.vertexCount()];
+            double[] normals = new double[3 * mesh.vertexCount()];
+            for (int t = 0; t < mesh.faceCount(); t++) {
+                int h = result.hostOf()[t];
+                if (!(area[h] > 0)) {
+                    continue;
+                }
+                for (int corner = 0; corner < 3; corner++) {
+                    int v = mesh.faceVertex(t, corner);
+                    raise[v] = Math.max(raise[v], top[h]);
+                    for (int axis = 0; axis < 3; axis++) {
+                        normals[3 * v + axis] += result.frames()[h].normal()[axis];
+                    }
+                }
+            }
+            double[] xyz = new double[9 * count];
+            int[] triangles = new int[3 * count];
+            int[] colors = new int[count];
+            int[] fill = java.util.Arrays.copyOf(start, hosts);
+            for (int t = 0; t < mesh.faceCount(); t++) {
+                int h = result.hostOf()[t];
+                if (!(area[h] > 0)) {
+                    continue; // no paper seen there
+                }
+                int k = fill[h]++;
+                for (int corner = 0; corner < 3; corner++) {
+                    int v = mesh.faceVertex(t, corner);
+                    double length = Math.sqrt(normals[3 * v] * normals[3 * v] + normals[3 * v + 1] * normals[3 * v + 1]
+                            + normals[3 * v + 2] * normals[3 * v + 2]);
+                    for (int axis = 0; axis < 3; axis++) {
+                        xyz[9 * k + 3 * corner + axis] = mesh.coordinate(v, axis) + raise[v] * normals[3 * v + axis] / length;
+                    }
+                    triangles[3 * k + corner] = 3 * k + corner;
+                }
+                colors[k] = 0xFF000000 | (int) Math.round(red[h] / area[h]) << 16 | (int) Math.round(green[h] / area[h]) << 8
+                        | (int) Math.round(blue[h] / area[h]);
+            }
+            SceneMesh patches = new SceneMesh(xyz, triangles, colors, new int[0], new int[0]);
+            return new SceneMesh.Layers(hiddenFrom, seams, patchOf, settled.clone(), patches, start);
+        }
+    }
+
+    /** A growing list of ints. */
+    private static final class IntList {
+        private int[] values = new int[1024];
+        private int size;
+
+        /** {@code times} copies of {@code value}. */
+        void add(int value, int times) {
+            if (size + times > values.length) {
+                values = java.util.Arrays.copyOf(values, Math.max(2 * values.length, size + times));
+            }
+            java.util.Arrays.fill(values, size, size + times, value);
+            size += times;
+        }
+
+        int get(int i) {
+            return values[i];
+        }
+
+        void set(int i, int value) {
+            values[i] = value;
+        }
+
+        int[] toArray() {
+            return java.util.Arrays.copyOf(values, size);
+        }
     }
 
     private static void fan(int[] face, int base, int color, List<int[]> triangles, List<Integer> colors) {
@@ -126,6 +277,7 @@ public final class WrapView {
     /** As {@link #play(Scene, Wrap.Result, List)}, with {@code ending} the caption once all is folded (null for the count). */
     public static Playback play(Scene scene, Wrap.Result result, List<WrapGeometry> geometries, String ending) {
         Strips strips = strips(result, geometries);
+        scene.root().visitGeometry(under -> under.setUnder(true)); // the model, or the triangle, under the paper
         Geometry paper = new Geometry("paper", strips.mesh(), PAPER);
         paper.setHiddenColor(0); // not yet laid: not there
         scene.root().attach(paper);

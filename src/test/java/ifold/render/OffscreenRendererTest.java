@@ -127,4 +127,150 @@ class OffscreenRendererTest {
             assertNotEquals(0, renderer.describe().length());
         }
     }
+
+    /**
+     * A wrap drawn with less (only what is exposed, seams under a pixel left out, patches for
+     * faces under a pixel) looks as it does drawn whole: near, mid-way through the folds and
+     * from far away.
+     */
+    @Test
+    void aWrapDrawnWithLessLooksAsItDoesDrawnWhole() throws Exception {
+        var mesh = MeshBuilder.build(ifold.mesh.io.MeshReaders.read(java.nio.file.Path.of("models/cube.off")),
+                MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();
+        ifold.wrap.Wrap.Result result = ifold.wrap.Wrap.wrap(HamiltonianRefinement.refine(mesh),
+                new ifold.wrap.Wrap.Options(Double.NaN, Double.NaN));
+        java.util.List<ifold.wrap.WrapGeometry> geometries = new java.util.ArrayList<>();
+        for (ifold.wrap.Wrap.Strip strip : result.strips()) {
+            geometries.add(ifold.wrap.WrapGeometry.of(strip.sheet(), result.frames()));
+        }
+        Scene scene = new Scene();
+        scene.root().attach(new Geometry("model", SceneMesh.of(mesh), Material.PAPER));
+        ifold.scene.Animation animation = ifold.scene.WrapView.play(scene, result, geometries);
+        Geometry[] paper = new Geometry[1];
+        scene.root().visitGeometry(g -> paper[0] = g.name().equals("paper") ? g : paper[0]);
+        SceneMesh layered = paper[0].mesh();
+        assertTrue(layered.layers() != null && java.util.Arrays.stream(layered.layers().hiddenFrom()).filter(n -> n < Integer.MAX_VALUE).count() > 100,
+                "setup: some of the cube's paper lies under other paper");
+        SceneMesh whole = new SceneMesh(layered.positions(), layered.triangles(), layered.triangleColors(), layered.edges(),
+                layered.edgeColors());
+        int w = 320;
+        int h = 240;
+        try (OffscreenRenderer renderer = new OffscreenRenderer(w, h, 0)) {
+            for (double at : new double[] {0.3, 0.6, 1.0}) {
+                animation.apply(at * animation.stepCount());
+                paper[0].setMesh(layered);
+                byte[] less = renderer.render(scene);
+                paper[0].setMesh(whole);
+                byte[] all = renderer.render(scene);
+                int differ = 0;
+                for (int i = 0; i < w * h; i++) {
+                    int most = 0;
+                    for (int k = 0; k < 3; k++) {
+                        most = Math.max(most, Math.abs((less[3 * i + k] & 0xFF) - (all[3 * i + k] & 0xFF)));
+                    }
+                    differ += most > 24 ? 1 : 0;
+                }
+                assertTrue(differ < w * h / 200, "at " + at + " of the animation, " + differ + " of " + w * h + " pixels differ");
+            }
+            // From far away the faces are under a pixel: patches in the paper's average colour.
+            scene.camera().setDistance(scene.camera().distance() * 30);
+            paper[0].setMesh(layered);
+            double[] far = meanOfModel(renderer.render(scene), scene.background());
+            paper[0].setMesh(whole);
+            double[] farWhole = meanOfModel(renderer.render(scene), scene.background());
+            assertTrue(far[3] > 20 && Math.abs(far[3] - farWhole[3]) <= 0.2 * farWhole[3], "the same pixels covered: " + far[3] + " and " + farWhole[3]);
+            for (int k = 0; k < 3; k++) {
+                assertEquals(farWhole[k], far[k], 24, "channel " + k + " of the mean colour, far away");
+            }
+        }
+    }
+
+    /** The mean red, green and blue of the pixels that are not the background, and how many they are. */
+    private static double[] meanOfModel(byte[] rgb, int background) {
+        double[] sum = new double[4];
+        for (int i = 0; i < rgb.length / 3; i++) {
+            int color = (rgb[3 * i] & 0xFF) << 16 | (rgb[3 * i + 1] & 0xFF) << 8 | (rgb[3 * i + 2] & 0xFF);
+            if (color == (background & 0xFFFFFF)) {
+                continue;
+            }
+            for (int k = 0; k < 3; k++) {
+                sum[k] += rgb[3 * i + k] & 0xFF;
+            }
+            sum[3]++;
+        }
+        for (int k = 0; k < 3; k++) {
+            sum[k] /= Math.max(1, sum[3]);
+        }
+        return sum;
+    }
+
+    /**
+     * A mesh of many chunks, some out of view: the triangle seen at a pixel is still the one
+     * there (its index read back), and the revealed ones are those before the count.
+     */
+    @Test
+    void chunksOutOfViewLeaveEachTriangleItsIndexAndItsTurn() throws Exception {
+        int n = 64; // 64 x 64 squares, 8,192 triangles, row by row
+        PolygonSoup grid = new PolygonSoup();
+        for (int y = 0; y <= n; y++) {
+            for (int x = 0; x <= n; x++) {
+                grid.addVertex(x, y, 0);
+            }
+        }
+        for (int y = 0; y < n; y++) {
+            for (int x = 0; x < n; x++) {
+                int a = y * (n + 1) + x;
+                grid.addFace(new int[] {a, a + 1, a + n + 2, a + n + 1}, 4, 0);
+                grid.setFaceColor(y * n + x, 0xFFFF0000);
+            }
+        }
+        SceneMesh mesh = SceneMesh.of(grid);
+        assertEquals(2 * n * n, mesh.triangleCount());
+        Geometry geometry = new Geometry("grid", mesh, new Material(0xFFFFFFFF, 0xFF0000FF, true, false));
+        Scene scene = new Scene();
+        scene.setBackground(0xFF000000);
+        scene.root().attach(geometry);
+        scene.frameAll();
+        int w = 160;
+        int h = 120;
+        try (OffscreenRenderer renderer = new OffscreenRenderer(w, h, 0)) {
+            for (double zoom : new double[] {1, 0.15}) {
+                // Close to square (40, 50): most chunks out of view.
+                scene.camera().setTarget(new org.joml.Vector3d(zoom == 1 ? n / 2.0 : 40.5, zoom == 1 ? n / 2.0 : 50.5, 0));
+                scene.camera().setDistance(zoom * 1.1 * n);
+                int[] ids = renderer.renderIndices(scene);
+                int checked = 0;
+                for (int py = 0; py < h; py += 7) {
+                    for (int px = 0; px < w; px += 7) {
+                        int id = ids[py * w + px] - 1;
+                        if (id < 0) {
+                            continue;
+                        }
+                        // Where is the square of that triangle on screen? Its centre, projected, lies near the pixel.
+                        int square = id / 2;
+                        org.joml.Vector4d centre = new org.joml.Vector4d(square % n + 0.5, square / n + 0.5, 0, 1);
+                        org.joml.Matrix4d clip = scene.camera().projectionMatrix((double) w / h, new org.joml.Matrix4d())
+                                .mul(scene.camera().viewMatrix(new org.joml.Matrix4d()));
+                        clip.transform(centre);
+                        double sx = (centre.x / centre.w + 1) / 2 * w;
+                        double sy = (1 - centre.y / centre.w) / 2 * h;
+                        double square_px = zoom == 1 ? (double) h / (1.1 * n) * 1.0 : (double) h / (0.15 * 1.1 * n);
+                        assertTrue(Math.abs(sx - px) < 2 * square_px + 2 && Math.abs(sy - py) < 2 * square_px + 2,
+                                "pixel (" + px + ", " + py + ") reads triangle " + id + ", whose square is at (" + sx + ", " + sy + ")");
+                        checked++;
+                    }
+                }
+                assertTrue(checked > 100, "setup: the grid fills the view: " + checked);
+            }
+            // Revealed: the first 4,096 triangles, rows 0 to 31, in their colour; the rest hidden grey.
+            scene.frameAll();
+            geometry.setHiddenColor(0xFF808080);
+            geometry.setRevealed(n * n);
+            byte[] rgb = renderer.render(scene);
+            int low = pixel(rgb, w / 2, h / 2 + h / 5); // row y < 32: the lower half of the grid, at the bottom of the picture
+            int high = pixel(rgb, w / 2, h / 2 - h / 5);
+            assertTrue((low >> 16 & 0xFF) > 150 && (low >> 8 & 0xFF) < 60, "revealed: red, " + Integer.toHexString(low));
+            assertEquals(0x808080, high, "not yet revealed: the hidden grey");
+        }
+    }
 }
