@@ -1,5 +1,6 @@
 package ifold.wrap;
 
+import ifold.io.Workers;
 import ifold.mesh.IndexedPolygons;
 import ifold.sheet.FaceGrid;
 import ifold.sheet.HostFrame;
@@ -8,6 +9,9 @@ import ifold.sheet.Sheet;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.CancellationException;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.Future;
 
 /**
  * The measures of a wrap, taken from the folded sheets: layers counted exactly (the arrangement
@@ -78,61 +82,30 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
             for (int triangle = strip.firstTriangle(); triangle < strip.firstTriangle() + strip.triangles(); triangle++) {
                 trianglesOn.computeIfAbsent(result.hostOf()[triangle], h -> new ArrayList<>()).add(triangle);
             }
+            // Hosts one by one on the workers' threads (their arrangements are independent), the
+            // figures then taken in order: the same as one by one on one thread.
+            List<Future<HostCells>> pending = new ArrayList<>();
             for (Map.Entry<Integer, List<Integer>> entry : trianglesOn.entrySet()) {
                 int host = entry.getKey();
-                HostFrame frame = frames[host];
-                double[] c = frame.corners();
-                int[] faces = sheet.facesOn(host);
-                double[][] placed = new double[faces.length][];
-                double[][] boxes = new double[faces.length][];
-                // A host of many triangles holds their faces all: each triangle looks only at
-                // those of the grid's cells it meets.
-                for (int i = 0; i < faces.length; i++) {
-                    double[] xy = sheet.placed(faces[i]);
-                    placed[i] = xy;
-                    boxes[i] = Polygons2.bounds(xy);
-                    outside = Math.max(outside, beyond(c, xy));
-                    farthest = Math.max(farthest, (levels[faces[i]] + 1) * sheet.thickness());
-                }
-                FaceGrid grid = null;
-                if (entry.getValue().size() > 1) {
-                    grid = new FaceGrid(FaceGrid.cellFor(placed, faces.length, 2 * sheet.width()));
-                    for (int i = 0; i < faces.length; i++) {
-                        grid.add(i, placed[i]);
-                    }
-                }
-                for (int triangle : entry.getValue()) {
-                    double[] corners = cornersIn(result.mesh(), triangle, frame);
-                    double[] box = Polygons2.bounds(corners);
-                    // Turned so that the triangle's passes run along x, as they run along its
-                    // exit edge: their boxes are then thin, and each meets only the cells near it.
-                    // Each face clipped to the triangle first: only its part there makes cells.
-                    // The faces in their order, whichever way they were found: the cells, and so
-                    // the deepest point reported, do not depend on the grid.
-                    double[] along = passDirection(result.mesh(), strip, triangle, frame);
-                    int[] near = grid == null ? null : grid.near(corners); // null: look at all
-                    List<double[]> polygons = new ArrayList<>();
-                    for (int m = 0; m < (near == null ? faces.length : near.length); m++) {
-                        int i = near == null ? m : near[m];
-                        double[] b = boxes[i];
-                        if (!(b[0] < box[2] && box[0] < b[2] && b[1] < box[3] && box[1] < b[3])) {
-                            continue;
-                        }
-                        double[] part = clipToTriangle(counterClockwise(placed[i]), corners, sheet.tolerance());
-                        if (part != null) {
-                            polygons.add(turned(part, along));
-                        }
-                    }
-                    double[] cells = depths(counterClockwise(turned(corners, along)), polygons, sheet.tolerance());
-                    surface += cells[0];
-                    covered += cells[1];
-                    if ((int) cells[2] > maxLayers) {
+                List<Integer> triangles = entry.getValue();
+                pending.add(Workers.pool().submit(() -> hostCells(result, strip, levels, host, triangles)));
+            }
+            int p = 0;
+            for (Map.Entry<Integer, List<Integer>> entry : trianglesOn.entrySet()) {
+                HostCells cells = await(pending.get(p++));
+                outside = Math.max(outside, cells.outside());
+                farthest = Math.max(farthest, cells.farthest());
+                List<Integer> triangles = entry.getValue();
+                for (int i = 0; i < triangles.size(); i++) {
+                    double[] figures = cells.triangles()[i];
+                    surface += figures[0];
+                    covered += figures[1];
+                    if ((int) figures[2] > maxLayers) {
                         deepestStrip = k;
-                        deepestTriangle = triangle;
-                        // Back into the host's frame.
-                        deepestPoint = new double[] {along[0] * cells[3] - along[1] * cells[4], along[1] * cells[3] + along[0] * cells[4]};
+                        deepestTriangle = triangles.get(i);
+                        deepestPoint = new double[] {figures[3], figures[4]};
                     }
-                    maxLayers = Math.max(maxLayers, (int) cells[2]);
+                    maxLayers = Math.max(maxLayers, (int) figures[2]);
                 }
             }
             // Creases: along an edge of the model when they lie on one.
@@ -167,6 +140,90 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
                         result.hostOf()[deepestTriangle], frames[result.hostOf()[deepestTriangle]]);
         return new WrapAnalysis(maxLayers, stackLevels, surface > 0 ? covered / surface : 0, surface, paper, outside, farthest,
                 isometry, inside, insideLength, onEdges, onEdgesLength, deepest);
+    }
+
+    /**
+     * One host's figures: how far its paper goes beyond it and above it, and for each of its
+     * {@code triangles} {area, area covered, most layers, x and y of a point there in the host's
+     * frame}.
+     */
+    private record HostCells(double outside, double farthest, double[][] triangles) {
+    }
+
+    private static HostCells hostCells(Wrap.Result result, Wrap.Strip strip, int[] levels, int host, List<Integer> triangles) {
+        Sheet sheet = strip.sheet();
+        HostFrame frame = result.frames()[host];
+        double[] c = frame.corners();
+        int[] faces = sheet.facesOn(host);
+        double[][] placed = new double[faces.length][];
+        double[][] boxes = new double[faces.length][];
+        double outside = 0;
+        double farthest = 0;
+        // A host of many triangles holds their faces all: each triangle looks only at
+        // those of the grid's cells it meets.
+        for (int i = 0; i < faces.length; i++) {
+            double[] xy = sheet.placed(faces[i]);
+            placed[i] = xy;
+            boxes[i] = Polygons2.bounds(xy);
+            outside = Math.max(outside, beyond(c, xy));
+            farthest = Math.max(farthest, (levels[faces[i]] + 1) * sheet.thickness());
+        }
+        FaceGrid grid = null;
+        if (triangles.size() > 1) {
+            grid = new FaceGrid(FaceGrid.cellFor(placed, faces.length, 2 * sheet.width()));
+            for (int i = 0; i < faces.length; i++) {
+                grid.add(i, placed[i]);
+            }
+        }
+        double[][] figures = new double[triangles.size()][];
+        for (int t = 0; t < triangles.size(); t++) {
+            int triangle = triangles.get(t);
+            double[] corners = cornersIn(result.mesh(), triangle, frame);
+            double[] box = Polygons2.bounds(corners);
+            // Turned so that the triangle's passes run along x, as they run along its
+            // exit edge: their boxes are then thin, and each meets only the cells near it.
+            // Each face clipped to the triangle first: only its part there makes cells.
+            // The faces in their order, whichever way they were found: the cells, and so
+            // the deepest point reported, do not depend on the grid.
+            double[] along = passDirection(result.mesh(), strip, triangle, frame);
+            int[] near = grid == null ? null : grid.near(corners); // null: look at all
+            List<double[]> polygons = new ArrayList<>();
+            for (int m = 0; m < (near == null ? faces.length : near.length); m++) {
+                int i = near == null ? m : near[m];
+                double[] b = boxes[i];
+                if (!(b[0] < box[2] && box[0] < b[2] && b[1] < box[3] && box[1] < b[3])) {
+                    continue;
+                }
+                double[] part = clipToTriangle(counterClockwise(placed[i]), corners, sheet.tolerance());
+                if (part != null) {
+                    polygons.add(turned(part, along));
+                }
+            }
+            double[] cells = depths(counterClockwise(turned(corners, along)), polygons, sheet.tolerance());
+            // The point back in the host's frame.
+            figures[t] = new double[] {cells[0], cells[1], cells[2], along[0] * cells[3] - along[1] * cells[4],
+                    along[1] * cells[3] + along[0] * cells[4]};
+        }
+        return new HostCells(outside, farthest, figures);
+    }
+
+    /** What a worker's task returned, or what it threw, thrown again as itself. */
+    private static <T> T await(Future<T> future) {
+        try {
+            return future.get();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new CancellationException("interrupted");
+        } catch (ExecutionException e) {
+            Throwable cause = e.getCause();
+            if (cause instanceof RuntimeException runtime) {
+                throw runtime;
+            }
+            if (cause instanceof Error error) {
+                throw error;
+            }
+            throw new IllegalStateException(cause);
+        }
     }
 
     /**
