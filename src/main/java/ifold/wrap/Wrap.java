@@ -1317,7 +1317,6 @@ public final class Wrap {
             recordTail(kind, host, face, hostBefore, before, true);
         }
 
-        /** Stops the wrap at the fold that takes the paper past the limit, before memory runs out. */
         /** Tells {@code watcher} of this path's triangles as the {@code first}-th and on of {@code total}. */
         void watch(Watcher watcher, int first, int total) {
             this.watcher = watcher;
@@ -1325,14 +1324,29 @@ public final class Wrap {
             this.totalTriangles = total;
         }
 
+        /**
+         * Stops the wrap at the fold that takes the paper past the limit, before memory runs out,
+         * saying what limit the whole path would likely need: the faces so far, over the share
+         * of the path's passes and triangles folded (weighed as {@link Wrap#faces} weighs them).
+         */
         private void checkFaces() throws FaceLimitException {
             if (watcher.stopped()) {
                 throw new java.util.concurrent.CancellationException("the wrap was stopped");
             }
             if (sheet.faceCount() > maxFaces) {
+                double done = 0;
+                double all = 0;
+                for (int i = 0; i < plan.m; i++) {
+                    double weight = 3.0 * passes(plan.frames[i].corners()[5], sheet.width()) + 30;
+                    all += weight;
+                    done += i <= pathIndex ? weight : 0;
+                }
+                long whole = (long) Math.ceil(sheet.faceCount() * all / done);
+                long enough = (long) Math.ceil(whole * 1.1 / 1000) * 1000; // a tenth to spare, in thousands
                 throw new FaceLimitException(String.format(Locale.ROOT, "the strip has %d faces of paper on triangle %d of %d on the "
-                        + "path (%s), more than the limit of %d faces", sheet.faceCount(), pathIndex + 1, plan.m,
-                        cornersText(mesh, plan.first + pathIndex), maxFaces));
+                        + "path (%s), more than the limit of %d faces; at this rate the whole path makes about %d, and a limit "
+                        + "of %d (about %d MiB) would likely let it finish", sheet.faceCount(), pathIndex + 1, plan.m,
+                        cornersText(mesh, plan.first + pathIndex), maxFaces, whole, enough, enough * BYTES_PER_FACE >> 20));
             }
         }
 
