@@ -7,11 +7,11 @@ import java.util.BitSet;
 import java.util.List;
 
 /**
- * The faces and caps of a wrapped strip that higher paper on their own host covers whole: once
- * the wrap is done they cannot be seen from outside, so a picture of the finished wrap need not
- * draw them. A wrap of a million faces stacks several layers over most points, and drawing only
- * what is exposed is what lets a software renderer turn it at a frame rate (the viewer's level
- * of detail).
+ * The faces and caps of a wrapped strip that higher paper on their own host covers whole, and
+ * from which face laid on: from then on they cannot be seen from outside, so a picture of the
+ * wrap at that moment or later need not draw them. A wrap of a million faces stacks several
+ * layers over most points, and drawing only what is exposed is part of what lets a software
+ * renderer play it at a frame rate ({@code render.GpuMesh}).
  *
  * <p>Read from the geometry in space alone: each face is projected onto its host's plane, and
  * its height above the plane is its layer. A face is covered when the faces of its host lying
