@@ -3,6 +3,7 @@ package ifold.io;
 import java.io.IOException;
 import java.io.InterruptedIOException;
 import java.io.UncheckedIOException;
+import java.util.concurrent.CancellationException;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -52,17 +53,33 @@ public final class Workers {
      */
     public static <T> T await(Future<T> future) throws IOException {
         try {
+            return result(future);
+        } catch (UncheckedIOException io) {
+            throw io.getCause();
+        } catch (CancellationException e) {
+            if (Thread.currentThread().isInterrupted()) {
+                throw new InterruptedIOException("interrupted"); // the waiting thread's interrupt
+            }
+            throw e;
+        }
+    }
+
+    /**
+     * The result of {@code future} whose task throws no checked exception (a computation, as
+     * the wrap's analysis of each host), with what it threw thrown again as itself; an
+     * IOException as an UncheckedIOException, an interrupt of the waiting thread as a
+     * CancellationException (the interrupt kept).
+     */
+    public static <T> T result(Future<T> future) {
+        try {
             return future.get();
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
-            throw new InterruptedIOException("interrupted");
+            throw new CancellationException("interrupted");
         } catch (ExecutionException e) {
             Throwable cause = e.getCause();
             if (cause instanceof IOException io) {
-                throw io;
-            }
-            if (cause instanceof UncheckedIOException io) {
-                throw io.getCause();
+                throw new UncheckedIOException(io);
             }
             if (cause instanceof RuntimeException runtime) {
                 throw runtime;

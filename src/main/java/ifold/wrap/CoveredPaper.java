@@ -1,6 +1,7 @@
 package ifold.wrap;
 
 import ifold.sheet.HostFrame;
+import ifold.sheet.Polygons2;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.BitSet;
@@ -120,7 +121,7 @@ public final class CoveredPaper {
                 if (footprint == null) {
                     continue; // on edge, seen from the plane: a cap over the host's edge, or none
                 }
-                caps[c] = cover(footprint, top + margin, Projected.boxOf(footprint), grid, paper, stamp, round);
+                caps[c] = cover(footprint, top + margin, Polygons2.bounds(footprint), grid, paper, stamp, round);
             }
         }
         return covered;
@@ -333,18 +334,11 @@ public final class CoveredPaper {
                 areas[f] = Math.abs(twice) / 2;
                 if (twice < 0) { // the paper's underside out: its loop runs clockwise on the plane
                     undersideOut.set(f);
-                    for (int i = 0, j = loop.length - 1; i < j; i++, j--) {
-                        double x = xy[2 * i];
-                        double y = xy[2 * i + 1];
-                        xy[2 * i] = xy[2 * j];
-                        xy[2 * i + 1] = xy[2 * j + 1];
-                        xy[2 * j] = x;
-                        xy[2 * j + 1] = y;
-                    }
+                    xy = WrapAnalysis.counterClockwise(xy);
                 }
                 polygons[f] = xy;
                 heights[f] = height / loop.length;
-                System.arraycopy(boxOf(xy), 0, boxes, 4 * f, 4);
+                System.arraycopy(Polygons2.bounds(xy), 0, boxes, 4 * f, 4);
             }
         }
 
@@ -362,17 +356,6 @@ public final class CoveredPaper {
 
         boolean boxesMeet(int f, double[] box) {
             return boxes[4 * f] < box[2] && box[0] < boxes[4 * f + 2] && boxes[4 * f + 1] < box[3] && box[1] < boxes[4 * f + 3];
-        }
-
-        static double[] boxOf(double[] xy) {
-            double[] box = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
-            for (int k = 0; k < xy.length; k += 2) {
-                box[0] = Math.min(box[0], xy[k]);
-                box[1] = Math.min(box[1], xy[k + 1]);
-                box[2] = Math.max(box[2], xy[k]);
-                box[3] = Math.max(box[3], xy[k + 1]);
-            }
-            return box;
         }
     }
 

@@ -9,8 +9,6 @@ import ifold.sheet.Sheet;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.CancellationException;
-import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Future;
 
 /**
@@ -92,7 +90,7 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
             }
             int p = 0;
             for (Map.Entry<Integer, List<Integer>> entry : trianglesOn.entrySet()) {
-                HostCells cells = await(pending.get(p++));
+                HostCells cells = Workers.result(pending.get(p++));
                 outside = Math.max(outside, cells.outside());
                 farthest = Math.max(farthest, cells.farthest());
                 List<Integer> triangles = entry.getValue();
@@ -207,24 +205,6 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
         return new HostCells(outside, farthest, figures);
     }
 
-    /** What a worker's task returned, or what it threw, thrown again as itself. */
-    private static <T> T await(Future<T> future) {
-        try {
-            return future.get();
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            throw new CancellationException("interrupted");
-        } catch (ExecutionException e) {
-            Throwable cause = e.getCause();
-            if (cause instanceof RuntimeException runtime) {
-                throw runtime;
-            }
-            if (cause instanceof Error error) {
-                throw error;
-            }
-            throw new IllegalStateException(cause);
-        }
-    }
 
     /**
      * Whether (x, y) lies strictly inside a convex counter-clockwise polygon: the centre of a
@@ -729,7 +709,7 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
         }
     }
 
-    private static double[] counterClockwise(double[] polygon) {
+    static double[] counterClockwise(double[] polygon) {
         int n = polygon.length / 2;
         if (Polygons2.twiceArea(polygon, n) >= 0) {
             return polygon;
