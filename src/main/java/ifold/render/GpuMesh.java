@@ -300,10 +300,11 @@ final class GpuMesh {
                         box[3 + axis] = Math.max(box[3 + axis], x);
                     }
                 }
+                double[] shape = shape(xyz, triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]);
                 if (seams != null && seams.get(t)) {
-                    widest = Math.max(widest, width(xyz, triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]));
+                    widest = Math.max(widest, shape[1] > 0 ? shape[0] / shape[1] : 0);
                 } else {
-                    area += area(xyz, triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]);
+                    area += shape[0] / 2;
                     others++;
                 }
             }
@@ -313,34 +314,22 @@ final class GpuMesh {
         }
     }
 
-    private static double area(double[] xyz, int a, int b, int c) {
-        double[] u = new double[3];
-        double[] v = new double[3];
+    /** Twice the area of triangle (a, b, c) of {@code xyz}, and its longest side. */
+    private static double[] shape(double[] xyz, int a, int b, int c) {
+        double[] side = new double[9]; // b - a, c - a, c - b
         for (int axis = 0; axis < 3; axis++) {
-            u[axis] = xyz[3 * b + axis] - xyz[3 * a + axis];
-            v[axis] = xyz[3 * c + axis] - xyz[3 * a + axis];
+            side[axis] = xyz[3 * b + axis] - xyz[3 * a + axis];
+            side[3 + axis] = xyz[3 * c + axis] - xyz[3 * a + axis];
+            side[6 + axis] = xyz[3 * c + axis] - xyz[3 * b + axis];
         }
-        double x = u[1] * v[2] - u[2] * v[1];
-        double y = u[2] * v[0] - u[0] * v[2];
-        double z = u[0] * v[1] - u[1] * v[0];
-        return Math.sqrt(x * x + y * y + z * z) / 2;
-    }
-
-    private static double width(double[] xyz, int a, int b, int c) {
-        double[] ab = new double[3];
-        double[] ac = new double[3];
-        double[] bc = new double[3];
-        for (int axis = 0; axis < 3; axis++) {
-            ab[axis] = xyz[3 * b + axis] - xyz[3 * a + axis];
-            ac[axis] = xyz[3 * c + axis] - xyz[3 * a + axis];
-            bc[axis] = xyz[3 * c + axis] - xyz[3 * b + axis];
+        double x = side[1] * side[5] - side[2] * side[4];
+        double y = side[2] * side[3] - side[0] * side[5];
+        double z = side[0] * side[4] - side[1] * side[3];
+        double longest = 0;
+        for (int k = 0; k < 9; k += 3) {
+            longest = Math.max(longest, Math.sqrt(side[k] * side[k] + side[k + 1] * side[k + 1] + side[k + 2] * side[k + 2]));
         }
-        double cx = ab[1] * ac[2] - ab[2] * ac[1];
-        double cy = ab[2] * ac[0] - ab[0] * ac[2];
-        double cz = ab[0] * ac[1] - ab[1] * ac[0];
-        double longest = Math.max(Math.sqrt(ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2]),
-                Math.max(Math.sqrt(ac[0] * ac[0] + ac[1] * ac[1] + ac[2] * ac[2]), Math.sqrt(bc[0] * bc[0] + bc[1] * bc[1] + bc[2] * bc[2])));
-        return longest > 0 ? Math.sqrt(cx * cx + cy * cy + cz * cz) / longest : 0;
+        return new double[] {Math.sqrt(x * x + y * y + z * z), longest};
     }
 
     /**
@@ -381,14 +370,9 @@ final class GpuMesh {
         return left != 0 ? -1 : nearest;
     }
 
-    /** Draws the triangles with their colours bound to texture unit 0, their indices from 0 (no base uniform). */
-    void drawFaces(GL3 gl) {
-        drawFaces(gl, triangleCount, null, 0, -1, false);
-    }
-
     /**
      * Draws the first {@code count} triangles (at most all of them), leaving out the chunks out
-     * of the view of {@code clip} (projection × model-view; null: none) and the seams of those
+     * of the view of {@code clip} (projection × model-view) and the seams of those
      * where they would be narrower than {@link #SEAM_PIXELS} ({@code pixelScale}: pixels a unit
      * at clip w = 1, half the viewport's height times the projection's y scale). Where
      * {@code layered} and the mesh has layers, a chunk drawn whole draws only the triangles not
@@ -407,7 +391,7 @@ final class GpuMesh {
         BitSet patchesDrawn = layered ? new BitSet() : null;
         for (int step = 0; step < chunks; step++) {
             int c = all.lastFirst ? chunks - 1 - step : step; // in the order of the buffers, for runs to join
-            float nearest = clip == null ? 0 : nearestInView(c, clip);
+            float nearest = nearestInView(c, clip);
             if (nearest < 0) {
                 continue;
             }

@@ -191,7 +191,14 @@ public final class WrapView {
                     }
                 }
             }
-            double[] xyz = new double[9 * count];
+            double[] xyz = new double[3 * mesh.vertexCount()];
+            for (int v = 0; v < mesh.vertexCount(); v++) {
+                double length = Math.sqrt(normals[3 * v] * normals[3 * v] + normals[3 * v + 1] * normals[3 * v + 1]
+                        + normals[3 * v + 2] * normals[3 * v + 2]);
+                for (int axis = 0; axis < 3; axis++) {
+                    xyz[3 * v + axis] = mesh.coordinate(v, axis) + (length > 0 ? raise[v] * normals[3 * v + axis] / length : 0);
+                }
+            }
             int[] triangles = new int[3 * count];
             int[] colors = new int[count];
             int[] fill = java.util.Arrays.copyOf(start, hosts);
@@ -202,19 +209,13 @@ public final class WrapView {
                 }
                 int k = fill[h]++;
                 for (int corner = 0; corner < 3; corner++) {
-                    int v = mesh.faceVertex(t, corner);
-                    double length = Math.sqrt(normals[3 * v] * normals[3 * v] + normals[3 * v + 1] * normals[3 * v + 1]
-                            + normals[3 * v + 2] * normals[3 * v + 2]);
-                    for (int axis = 0; axis < 3; axis++) {
-                        xyz[9 * k + 3 * corner + axis] = mesh.coordinate(v, axis) + raise[v] * normals[3 * v + axis] / length;
-                    }
-                    triangles[3 * k + corner] = 3 * k + corner;
+                    triangles[3 * k + corner] = mesh.faceVertex(t, corner);
                 }
                 colors[k] = 0xFF000000 | (int) Math.round(red[h] / area[h]) << 16 | (int) Math.round(green[h] / area[h]) << 8
                         | (int) Math.round(blue[h] / area[h]);
             }
             SceneMesh patches = new SceneMesh(xyz, triangles, colors, new int[0], new int[0]);
-            return new SceneMesh.Layers(hiddenFrom, seams, patchOf, settled.clone(), patches, start);
+            return new SceneMesh.Layers(hiddenFrom, seams, patchOf, settled, patches, start);
         }
     }
 

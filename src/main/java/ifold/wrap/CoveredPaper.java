@@ -189,51 +189,22 @@ public final class CoveredPaper {
                 double ay = cut[2 * k + 1];
                 double bx = cut[2 * ((k + 1) % m)];
                 double by = cut[2 * ((k + 1) % m) + 1];
-                // Left of a → b is inside the cut; right of it, outside.
-                double[] outside = clip(rest, ax, ay, bx, by, false);
+                // Left of a → b is inside the cut (n · p <= n · a, n = (b - a) turned clockwise);
+                // right of it, outside.
+                double nx = by - ay;
+                double ny = ax - bx;
+                double c = nx * ax + ny * ay;
+                double[] outside = Polygons2.clip(rest, rest.length / 2, -nx, -ny, -c, 0);
                 if (outside != null && twiceArea(outside) > 2 * none) {
                     left.add(outside);
                 }
-                rest = clip(rest, ax, ay, bx, by, true);
+                rest = Polygons2.clip(rest, rest.length / 2, nx, ny, c, 0);
             }
             if (left.size() > MOST_PIECES) {
                 return null;
             }
         }
         return left;
-    }
-
-    /** The part of convex {@code xy} left of the line a → b ({@code left}) or right of it; null where none. */
-    private static double[] clip(double[] xy, double ax, double ay, double bx, double by, boolean left) {
-        int n = xy.length / 2;
-        double[] out = new double[2 * (n + 1)];
-        int m = 0;
-        double dx = bx - ax;
-        double dy = by - ay;
-        double sign = left ? 1 : -1;
-        for (int i = 0; i < n; i++) {
-            int j = (i + 1) % n;
-            double si = sign * (dx * (xy[2 * i + 1] - ay) - dy * (xy[2 * i] - ax));
-            double sj = sign * (dx * (xy[2 * j + 1] - ay) - dy * (xy[2 * j] - ax));
-            if (si >= 0) {
-                if (m == n + 1) {
-                    out = Arrays.copyOf(out, out.length + 4);
-                }
-                out[2 * m] = xy[2 * i];
-                out[2 * m + 1] = xy[2 * i + 1];
-                m++;
-            }
-            if ((si > 0 && sj < 0) || (si < 0 && sj > 0)) {
-                double t = si / (si - sj);
-                if (2 * m + 1 >= out.length) {
-                    out = Arrays.copyOf(out, out.length + 4);
-                }
-                out[2 * m] = xy[2 * i] + t * (xy[2 * j] - xy[2 * i]);
-                out[2 * m + 1] = xy[2 * i + 1] + t * (xy[2 * j + 1] - xy[2 * i + 1]);
-                m++;
-            }
-        }
-        return m < 3 ? null : Arrays.copyOf(out, 2 * m);
     }
 
     /** Whether (x, y) lies inside convex counter-clockwise {@code xy} or on its border (two faces meeting there both hold it). */
@@ -250,13 +221,7 @@ public final class CoveredPaper {
     }
 
     static double twiceArea(double[] xy) {
-        int n = xy.length / 2;
-        double sum = 0;
-        for (int i = 0; i < n; i++) {
-            int j = (i + 1) % n;
-            sum += xy[2 * i] * xy[2 * j + 1] - xy[2 * j] * xy[2 * i + 1];
-        }
-        return sum;
+        return Polygons2.twiceArea(xy, xy.length / 2);
     }
 
     /**

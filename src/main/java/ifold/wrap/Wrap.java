@@ -788,14 +788,16 @@ public final class Wrap {
         for (PathPlan plan : plans) {
             for (int i = 0; i < plan.m; i++) {
                 long k = passes(plan.frames[i].corners()[5], width);
-                if (alone[plan.first + i]) {
-                    faces += likely ? 5 * k + 25 : 3 * k + 6;
-                } else {
-                    faces += likely ? 3 * k + 30 : 2 * k;
-                }
+                boolean lone = alone[plan.first + i];
+                faces += likely ? likelyFaces(k, lone) : lone ? 3 * k + 6 : 2 * k;
             }
         }
         return faces;
+    }
+
+    /** The faces a triangle of {@code k} passes likely makes, alone on its host or not (see {@link #faces}). */
+    private static long likelyFaces(long k, boolean alone) {
+        return alone ? 5 * k + 25 : 3 * k + 30;
     }
 
     /**
@@ -1327,7 +1329,7 @@ public final class Wrap {
         /**
          * Stops the wrap at the fold that takes the paper past the limit, before memory runs out,
          * saying what limit the whole path would likely need: the faces so far, over the share
-         * of the path's passes and triangles folded (weighed as {@link Wrap#faces} weighs them).
+         * of the path's passes and triangles folded (weighed as on a shared host, {@link #likelyFaces}).
          */
         private void checkFaces() throws FaceLimitException {
             if (watcher.stopped()) {
@@ -1337,7 +1339,7 @@ public final class Wrap {
                 double done = 0;
                 double all = 0;
                 for (int i = 0; i < plan.m; i++) {
-                    double weight = 3.0 * passes(plan.frames[i].corners()[5], sheet.width()) + 30;
+                    double weight = likelyFaces(passes(plan.frames[i].corners()[5], sheet.width()), false);
                     all += weight;
                     done += i <= pathIndex ? weight : 0;
                 }
