@@ -1,4 +1,7 @@
 import ifold.check.LayerOrder;
+import ifold.check.PaperCollisions;
+import ifold.job.Collisions;
+import ifold.wrap.WrapGeometry;
 import ifold.fold.FoldFile;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
@@ -15,7 +18,8 @@ import java.util.SplittableRandom;
  * FOLD file (ifold.check.LayerOrder): star-shaped icosahedra whose corners move in and out,
  * boxes of random sides turned at random (their faces quads the builder cuts), octahedra
  * stretched along the axes. Prints each solid whose order is broken or that is refused, then
- * the count. Seeds 1 to N; the kind k of seed s draws from SplittableRandom(31 s + k), as
+ * the count; and the paper's collisions (ifold.check.PaperCollisions on the OBJ's text): each
+ * solid whose paper crosses itself or the model, and how many of each kind do. Seeds 1 to N; the kind k of seed s draws from SplittableRandom(31 s + k), as
  * WrapTest's wrapsTurnedBoxes does for boxes.
  */
 public final class RandomSolids {
@@ -25,6 +29,7 @@ public final class RandomSolids {
         int n = args.length > 0 ? Integer.parseInt(args[0]) : 40;
         int broken = 0;
         int refused = 0;
+        int[] colliding = new int[KINDS.length];
         for (int seed = 1; seed <= n; seed++) {
             for (int kind = 0; kind < KINDS.length; kind++) {
                 SplittableRandom random = new SplittableRandom(31L * seed + kind);
@@ -42,6 +47,15 @@ public final class RandomSolids {
                         broken++;
                         System.out.println(what + ": " + order.summary());
                     }
+                    List<WrapGeometry> geometries = new ArrayList<>();
+                    for (Wrap.Strip strip : result.strips()) {
+                        geometries.add(WrapGeometry.of(strip.sheet(), result.frames()));
+                    }
+                    PaperCollisions.Result collisions = Collisions.check(geometries, result.thickness(), mesh, null);
+                    if (collisions != null && !collisions.isClean()) {
+                        colliding[kind]++;
+                        System.out.println(what + ": " + collisions.summary());
+                    }
                 } catch (Wrap.WrapException e) {
                     refused++;
                     System.out.println(what + ": refused: " + e.getMessage());
@@ -49,6 +63,9 @@ public final class RandomSolids {
             }
         }
         System.out.printf("%d solids: %d with a broken layer order, %d refused%n", KINDS.length * n, broken, refused);
+        for (int kind = 0; kind < KINDS.length; kind++) {
+            System.out.printf("%s: %d of %d collide%n", KINDS[kind], colliding[kind], n);
+        }
     }
 
     static PolygonSoup star(SplittableRandom random) {

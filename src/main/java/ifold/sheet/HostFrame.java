@@ -10,8 +10,65 @@ package ifold.sheet;
  * @param ey the frame's y axis
  * @param normal the outward normal
  * @param corners the triangle's corners in the frame, x0 y0 x1 y1 x2 y2, counter-clockwise
+ * @param room for each edge of the corners' polygon (from corner k to corner k + 1), how far the
+ *     bend of a flat fold along it may stand out beyond it before it meets paper on the host
+ *     across, as a slope: the distance beyond the edge over the height above this host (1 where
+ *     nothing across limits it); null where nothing limits any edge (a table, a plane in space)
  */
-public record HostFrame(double[] origin, double[] ex, double[] ey, double[] normal, double[] corners) {
+public record HostFrame(double[] origin, double[] ex, double[] ey, double[] normal, double[] corners, double[] room) {
+
+    /** The most a bend leans out beyond a crease: at 45 degrees, as far out as it rises. */
+    public static final double OPEN = 1;
+
+    /** A frame whose edges limit no bend. */
+    public HostFrame(double[] origin, double[] ex, double[] ey, double[] normal, double[] corners) {
+        this(origin, ex, ey, normal, corners, null);
+    }
+
+    /** This frame with {@code room} beyond its edges (see the record's description). */
+    public HostFrame withRoom(double[] room) {
+        if (room.length != corners.length / 2) {
+            throw new IllegalArgumentException("room for " + room.length + " edges, the polygon has " + corners.length / 2);
+        }
+        return new HostFrame(origin, ex, ey, normal, corners, room);
+    }
+
+    /**
+     * The room beyond the crease from (ax, ay) to (bx, by) in this frame: the least of the edges
+     * it lies along (its ends within {@code tolerance} of the edge's line, sharing more than
+     * {@code tolerance} of it), or {@link #OPEN} for a crease along no edge.
+     */
+    public double roomBeyond(double ax, double ay, double bx, double by, double tolerance) {
+        double least = OPEN;
+        if (room == null) {
+            return least;
+        }
+        int n = corners.length / 2;
+        for (int k = 0; k < n; k++) {
+            double px = corners[2 * k];
+            double py = corners[2 * k + 1];
+            double qx = corners[2 * ((k + 1) % n)];
+            double qy = corners[2 * ((k + 1) % n) + 1];
+            double dx = qx - px;
+            double dy = qy - py;
+            double length = Math.hypot(dx, dy);
+            if (!(length > 0) || room[k] >= least) {
+                continue;
+            }
+            double offA = Math.abs((ax - px) * dy - (ay - py) * dx) / length;
+            double offB = Math.abs((bx - px) * dy - (by - py) * dx) / length;
+            if (offA > tolerance || offB > tolerance) {
+                continue;
+            }
+            double ta = ((ax - px) * dx + (ay - py) * dy) / length;
+            double tb = ((bx - px) * dx + (by - py) * dy) / length;
+            double shared = Math.min(length, Math.max(ta, tb)) - Math.max(0, Math.min(ta, tb));
+            if (shared > tolerance) {
+                least = room[k];
+            }
+        }
+        return least;
+    }
 
     /**
      * The frame of triangle (a, b, c), counter-clockwise seen from outside, with its origin at
@@ -33,6 +90,43 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
         corners[4] = frame.localX(c);
         corners[5] = frame.localY(c);
         return frame;
+    }
+
+    /**
+     * How far, at most {@code out}, a bend may stand out from the point (x, y) of its crease in
+     * the unit direction (nx, ny), leaning out at {@code slope} (distance out per height) from
+     * {@code height} above this host, and stay within the room beyond every edge of the host:
+     * its farthest point no farther beyond an edge's line than its height times that edge's room.
+     * A crease inside the host at a small angle to an edge would otherwise lean out over it.
+     */
+    public double lean(double x, double y, double nx, double ny, double height, double slope, double out) {
+        if (room == null) {
+            return out;
+        }
+        double most = out;
+        int n = corners.length / 2;
+        for (int k = 0; k < n; k++) {
+            if (room[k] >= OPEN) {
+                continue;
+            }
+            double px = corners[2 * k];
+            double py = corners[2 * k + 1];
+            double dx = corners[2 * ((k + 1) % n)] - px;
+            double dy = corners[2 * ((k + 1) % n) + 1] - py;
+            double length = Math.hypot(dx, dy);
+            if (!(length > 0)) {
+                continue;
+            }
+            // The edge's outward normal: the corners run counter-clockwise.
+            double mx = dy / length;
+            double my = -dx / length;
+            double beyond = (x - px) * mx + (y - py) * my;
+            double towards = nx * mx + ny * my - room[k] / slope;
+            if (towards > 0) {
+                most = Math.min(most, Math.max(0, (height * room[k] - beyond) / towards));
+            }
+        }
+        return most;
     }
 
     /** Frame coordinate x of the 3D point p (its projection on the plane). */

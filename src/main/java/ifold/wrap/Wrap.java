@@ -537,7 +537,7 @@ public final class Wrap {
                     : String.format(Locale.ROOT, "no strip the path takes fits: the widest, %.4g, which the narrowest triangle (%s) "
                     + "sets, would make about %d", widest, cornersText(mesh, narrowest), faces(plans, widest, alone, true))));
         }
-        HostFrame[] frames = hostFrames(mesh, pieces, triangleFrames);
+        HostFrame[] frames = BendRoom.of(mesh, pieces.hostOf, hostFrames(mesh, pieces, triangleFrames), tolerance);
         Isometry2[] toHost = new Isometry2[mesh.faceCount()];
         for (PathPlan plan : plans) {
             for (int i = 0; i < plan.m; i++) {

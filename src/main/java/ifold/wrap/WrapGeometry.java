@@ -12,10 +12,18 @@ import java.util.List;
  * (the paper bent around a fold, or over an edge of the surface).
  *
  * <p>A face at level k lies at height (k + 1/2)·T above its host: its mid-surface, so the
- * paper's lower side touches the surface, or the face below. A cap at a flat fold on one
- * host is two 45° facets: from the crease on one layer out to a row half the gap beyond
- * it, halfway up, and back to the crease on the other layer. A cap over an edge of the surface
- * is one quad from the crease on one host's layer to the crease on the other's.
+ * paper's lower side touches the surface, or the face below. A cap over an edge of the surface
+ * is one quad from the crease on one host's layer to the crease on the other's. A cap at a flat
+ * fold on one host is its bend, the paper wrapping the layers between its two, as a book's
+ * cover wraps its pages: where it wraps no other fold about its crease line, one wall standing
+ * on the crease, so that paper between its layers that reaches the crease from beyond only
+ * touches it (a valid layer order keeps such paper from going across). A bend that wraps folds
+ * nested about the same line steps out beyond them, a thickness a rank ({@link NestedBends}):
+ * from its upper layer it leans out at 45 degrees, from its lower at the slope of the room
+ * beyond the host's edge ({@link HostFrame#room}; 45 degrees where nothing limits it), and a
+ * wall joins the two; less far where the room beyond a nearby edge is short ({@link
+ * HostFrame#lean}), and those it wraps then less far still. Its rows stop on the line of a bend
+ * they would run through where two creases meet at a corner.
  *
  * @param xyz x, y, z of each vertex
  * @param uv the paper coordinates of each vertex
@@ -35,6 +43,12 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
         Builder builder = new Builder(sheet, frames);
         return builder.build();
     }
+
+    /**
+     * Flat folds whose creases lie within this many thicknesses of one line share it: their
+     * bends would stand within touching distance of each other there ({@link NestedBends}).
+     */
+    static final double NEST_TOLERANCE = 0.01;
 
     private static final class Builder {
         private final Sheet sheet;
@@ -83,6 +97,10 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
             }
             List<int[]> caps = new ArrayList<>();
             List<Integer> capAfter = new ArrayList<>();
+            // Flat folds wait until every one is known: how far each bend stands out depends on
+            // the folds nested about its crease line (NestedBends).
+            List<NestedBends.Bend> bends = new ArrayList<>();
+            List<int[]> bendCorners = new ArrayList<>();
             for (int f = 0; f < faces; f++) {
                 int[] loop = sheet.loop(f);
                 for (int i = 0; i < loop.length; i++) {
@@ -104,13 +122,53 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
                         capAfter.add(g);
                         continue;
                     }
-                    int ma = middle(f, g, a, b, a);
-                    int mb = middle(f, g, a, b, b);
-                    caps.add(new int[] {fa, fb, mb, ma});
-                    caps.add(new int[] {ma, mb, gb, ga});
-                    capAfter.add(g);
-                    capAfter.add(g);
+                    bends.add(bend(f, g, a, b));
+                    bendCorners.add(new int[] {f, g, a, b, fa, fb, ga, gb});
                 }
+            }
+            int[] ranks = NestedBends.ranks(bends, sheet.thickness() * NEST_TOLERANCE);
+            double[] outs = new double[bends.size()];
+            double[] slopes = new double[bends.size()];
+            for (int k = 0; k < bends.size(); k++) {
+                NestedBends.Bend bend = bends.get(k);
+                // Each rank steps out by a thickness, less where the room beyond the host's edge
+                // is narrow: the lower side then leans out at the room's slope s, and a bend of
+                // rank r (its layers at least 2r + 1 apart) keeps a wall between its two sides:
+                // r·step·(1/s + 1) <= 2r·T.
+                HostFrame frame = frames[bend.host()];
+                slopes[k] = frame.roomBeyond(bend.ax(), bend.ay(), bend.bx(), bend.by(), sheet.tolerance());
+                double out = ranks[k] * sheet.thickness() * Math.min(1, 2 * slopes[k] / (1 + slopes[k]));
+                double low = (bend.low() + 0.5) * sheet.thickness();
+                out = frame.lean(bend.ax(), bend.ay(), bend.nx(), bend.ny(), low, slopes[k], out);
+                outs[k] = frame.lean(bend.bx(), bend.by(), bend.nx(), bend.ny(), low, slopes[k], out);
+            }
+            NestedBends.keepNested(bends, ranks, outs, sheet.thickness() * NEST_TOLERANCE);
+            double[] past = NestedBends.mitres(bends, outs, sheet.thickness() * NEST_TOLERANCE);
+            for (int k = 0; k < bends.size(); k++) {
+                int[] c = bendCorners.get(k);
+                int f = c[0];
+                int g = c[1];
+                NestedBends.Bend bend = bends.get(k);
+                double out = outs[k];
+                if (out == 0) {
+                    caps.add(new int[] {c[4], c[5], c[7], c[6]});
+                    capAfter.add(g);
+                    continue;
+                }
+                // Out beyond the crease from each layer, and straight across between.
+                boolean fLower = height(f) < height(g);
+                double lower = Math.min(height(f), height(g)) + out / slopes[k];
+                double upper = Math.max(height(f), height(g)) - out;
+                int fma = row(f, bend, c[2], out, -past[2 * k], fLower ? lower : upper);
+                int fmb = row(f, bend, c[3], out, past[2 * k + 1], fLower ? lower : upper);
+                int gma = row(f, bend, c[2], out, -past[2 * k], fLower ? upper : lower);
+                int gmb = row(f, bend, c[3], out, past[2 * k + 1], fLower ? upper : lower);
+                caps.add(new int[] {c[4], c[5], fmb, fma});
+                caps.add(new int[] {fma, fmb, gmb, gma});
+                caps.add(new int[] {gma, gmb, c[7], c[6]});
+                capAfter.add(g);
+                capAfter.add(g);
+                capAfter.add(g);
             }
             return new WrapGeometry(java.util.Arrays.copyOf(xyz, 3 * vertices), java.util.Arrays.copyOf(uv, 2 * vertices), paper,
                     hosts, caps, capAfter.stream().mapToInt(Integer::intValue).toArray());
@@ -169,31 +227,40 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
         }
 
         /**
-         * The cap's middle row at paper vertex p on crease (a, b) between faces f and g on one
-         * triangle: halfway between the two layers, and out beyond the crease by half the gap,
-         * on the side away from both faces (a flat fold lays them on the same side).
+         * The flat fold between faces f and g on one host about the crease (a, b), in the host's
+         * plane: the bend stands out on the side away from both faces (a flat fold lays them on
+         * the same side).
          */
-        private int middle(int f, int g, int a, int b, int p) {
+        private NestedBends.Bend bend(int f, int g, int a, int b) {
             Isometry2 pose = sheet.pose(f);
-            HostFrame frame = frames[sheet.host(f)];
             double ax = pose.x(sheet.u(a), sheet.v(a));
             double ay = pose.y(sheet.u(a), sheet.v(a));
             double bx = pose.x(sheet.u(b), sheet.v(b));
             double by = pose.y(sheet.u(b), sheet.v(b));
             double length = Math.hypot(bx - ax, by - ay);
             // Face f runs counter-clockwise on the sheet; placed mirrored it runs clockwise, and
-            // its inside is to the right of a → b instead of the left.
-            double nx = -(by - ay) / length;
-            double ny = (bx - ax) / length;
+            // its inside is to the right of a -> b instead of the left.
+            double nx = (by - ay) / length;
+            double ny = -(bx - ax) / length;
             if (pose.mirrors()) {
                 nx = -nx;
                 ny = -ny;
             }
-            double gap = Math.abs(height(f) - height(g));
-            double px = pose.x(sheet.u(p), sheet.v(p)) - nx * gap / 2;
-            double py = pose.y(sheet.u(p), sheet.v(p)) - ny * gap / 2;
+            return new NestedBends.Bend(sheet.host(f), ax, ay, bx, by, nx, ny, Math.min(levels[f], levels[g]),
+                    Math.max(levels[f], levels[g]));
+        }
+
+        /**
+         * A row of a bend's cap at paper vertex p of its crease: {@code out} beyond the crease,
+         * moved {@code along} it (from its end a towards b), at {@code height}.
+         */
+        private int row(int f, NestedBends.Bend bend, int p, double out, double along, double height) {
+            Isometry2 pose = sheet.pose(f);
+            double length = Math.hypot(bend.bx() - bend.ax(), bend.by() - bend.ay());
+            double px = pose.x(sheet.u(p), sheet.v(p)) + bend.nx() * out + (bend.bx() - bend.ax()) / length * along;
+            double py = pose.y(sheet.u(p), sheet.v(p)) + bend.ny() * out + (bend.by() - bend.ay()) / length * along;
             double[] point = new double[3];
-            frame.toSpace(px, py, (height(f) + height(g)) / 2, point, 0);
+            frames[sheet.host(f)].toSpace(px, py, height, point, 0);
             int v = add(point, sheet.u(p), sheet.v(p));
             if (v >= copyHost.length) {
                 copyHost = java.util.Arrays.copyOf(copyHost, 2 * v + 2);

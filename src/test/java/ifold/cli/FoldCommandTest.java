@@ -23,7 +23,7 @@ class FoldCommandTest {
         assertEquals(0, run.code(), run.err());
         ObjReadBack back = ObjReadBack.read(obj);
         assertEquals(21, back.paperFaces(), "21 pieces of strip");
-        assertEquals(40, back.capFaces(), "two facets for each of 20 folds");
+        assertEquals(20, back.capFaces(), "one wall for each of 20 folds: a pleat wraps no fold about its crease");
         assertTrue(back.worstIsometry() <= 1e-9, "isometric as written: " + back.worstIsometry());
         String json = Files.readString(report);
         assertTrue(json.contains("\"maxLayers\": 21"), json);

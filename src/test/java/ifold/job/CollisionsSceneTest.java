@@ -43,14 +43,21 @@ class CollisionsSceneTest {
         return strips;
     }
 
+    /** Two unit squares through each other, as an X: paper crossing itself, made by hand. */
+    private static List<WrapGeometry> anX() {
+        double[] xyz = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 0, -0.5, 0.5, 1, -0.5, 0.5, 1, 0.5, 0.5, 0, 0.5};
+        return List.of(new WrapGeometry(xyz, new double[16], List.of(new int[] {0, 1, 2, 3}, new int[] {4, 5, 6, 7}),
+                new int[] {0, 1}, List.of(), new int[0]));
+    }
+
     @Test
-    void theCubesCrossingFacesAreShownInRedWhenAskedFor() throws Exception {
-        Wrap.Result result = wrapCube(Double.NaN);
-        List<WrapGeometry> strips = strips(result);
-        PaperCollisions.Result check = Collisions.check(strips, result.thickness(), cube, null);
-        assertTrue(check.crossingPairs() > 0, "setup: the cube's paper crosses itself today");
+    void crossingFacesAreShownInRedWhenAskedFor() throws Exception {
+        List<WrapGeometry> strips = anX();
+        double thickness = 0.01;
+        PaperCollisions.Result check = Collisions.check(strips, thickness, null, null);
+        assertTrue(check.crossingPairs() > 0, "setup: the X crosses itself");
         Scene scene = new Scene();
-        Geometry shown = Scenes.collisions(scene, strips, result.thickness(), cube);
+        Geometry shown = Scenes.collisions(scene, strips, thickness, null);
         assertNotNull(shown);
         assertFalse(shown.isVisible(), "hidden until asked for");
         assertTrue(shown.isSeenThrough(), "drawn over the layers above it");
@@ -73,6 +80,15 @@ class CollisionsSceneTest {
         CollisionView.toggle(scene.root());
         assertFalse(shown.isVisible(), "and C again hides it");
         assertFalse(CollisionView.toggle(new Scene().root()), "a scene without collisions has nothing to show");
+    }
+
+    @Test
+    void theCubesWrapHasNothingToShow() throws Exception {
+        Wrap.Result result = wrapCube(Double.NaN);
+        List<WrapGeometry> strips = strips(result);
+        assertTrue(Collisions.check(strips, result.thickness(), cube, null).isClean(), "the cube's paper crosses nothing");
+        Geometry shown = Scenes.collisions(new Scene(), strips, result.thickness(), cube);
+        assertEquals(0, shown.mesh().triangleCount(), "no face to show");
     }
 
     @Test

@@ -1,0 +1,121 @@
+package ifold.wrap;
+
+import ifold.mesh.IndexedPolygons;
+import ifold.sheet.HostFrame;
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.Map;
+
+/**
+ * How far the bends of flat folds along each edge of a host may stand out beyond it: the room
+ * that a thick fold's bend has before it meets the paper of the host across.
+ *
+ * <p>Over a convex edge whose neighbour turns away by φ, the paper of both hosts stacks up
+ * towards the wedge of empty space above the edge, and the plane that halves that wedge (the
+ * mitre) keeps the two sides apart: a bend at height z above its host stays on its own side
+ * while it stands out no more than z·tan(φ/2). Flat paper of the host across lies beyond the
+ * mitre already (it stands out of its own plane, not ours). A neighbour in the same plane (a
+ * non-convex face cut into convex hosts) leaves no room at all; over a concave edge the
+ * neighbour's surface rises towards the paper, and this limit does not apply (mitred concave
+ * edges are a matter of the flat paper itself): the bend keeps its 45 degrees there, as it does
+ * where no host lies across (the border of an open surface).
+ */
+final class BendRoom {
+    private BendRoom() {
+    }
+
+    /**
+     * Each host's frame with the room beyond its polygon's edges: for every edge of the mesh
+     * between triangles of two hosts, the edge of each host's polygon it lies along gets at
+     * most the slope tan(φ/2) of a convex turn φ (0 for coplanar hosts).
+     *
+     * @param mesh the triangles the hosts are made of
+     * @param hostOf the host of each triangle
+     * @param frames each host's frame, with its convex polygon as corners
+     * @param tolerance how far off a polygon's edge a mesh edge may lie and still be on it
+     */
+    static HostFrame[] of(IndexedPolygons mesh, int[] hostOf, HostFrame[] frames, double tolerance) {
+        double[][] room = new double[frames.length][];
+        for (int h = 0; h < frames.length; h++) {
+            room[h] = new double[frames[h].corners().length / 2];
+            Arrays.fill(room[h], HostFrame.OPEN);
+        }
+        Map<Long, Integer> firstSide = new HashMap<>();
+        for (int t = 0; t < mesh.faceCount(); t++) {
+            int n = mesh.faceSize(t);
+            for (int k = 0; k < n; k++) {
+                int u = mesh.faceVertex(t, k);
+                int v = mesh.faceVertex(t, (k + 1) % n);
+                long key = ((long) Math.min(u, v) << 32) | Math.max(u, v);
+                Integer other = firstSide.remove(key);
+                if (other == null) {
+                    firstSide.put(key, t);
+                } else if (hostOf[other] != hostOf[t]) {
+                    limit(mesh, u, v, other, t, hostOf, frames, room, tolerance);
+                    limit(mesh, u, v, t, other, hostOf, frames, room, tolerance);
+                }
+            }
+        }
+        HostFrame[] limited = new HostFrame[frames.length];
+        for (int h = 0; h < frames.length; h++) {
+            limited[h] = frames[h].withRoom(room[h]);
+        }
+        return limited;
+    }
+
+    /** Limits the room of the edge of {@code near}'s host that mesh edge (u, v) lies along, by the turn to {@code far}'s host. */
+    private static void limit(IndexedPolygons mesh, int u, int v, int near, int far, int[] hostOf, HostFrame[] frames,
+            double[][] room, double tolerance) {
+        HostFrame frame = frames[hostOf[near]];
+        double slope = slope(frame, frames[hostOf[far]], mesh, far, tolerance);
+        if (slope >= HostFrame.OPEN) {
+            return;
+        }
+        double[] a = position(mesh, u);
+        double[] b = position(mesh, v);
+        double ax = frame.localX(a);
+        double ay = frame.localY(a);
+        double bx = frame.localX(b);
+        double by = frame.localY(b);
+        double[] corners = frame.corners();
+        int n = corners.length / 2;
+        double[] edges = room[hostOf[near]];
+        for (int k = 0; k < n; k++) {
+            double px = corners[2 * k];
+            double py = corners[2 * k + 1];
+            double dx = corners[2 * ((k + 1) % n)] - px;
+            double dy = corners[2 * ((k + 1) % n) + 1] - py;
+            double length = Math.hypot(dx, dy);
+            if (length > 0 && Math.abs((ax - px) * dy - (ay - py) * dx) / length <= tolerance
+                    && Math.abs((bx - px) * dy - (by - py) * dx) / length <= tolerance) {
+                edges[k] = Math.min(edges[k], slope);
+            }
+        }
+    }
+
+    /**
+     * The room beyond an edge of {@code near} whose other side is triangle {@code far} of the
+     * host framed by {@code across}: tan(φ/2) where the surface turns away by φ, 0 in the same
+     * plane, {@link HostFrame#OPEN} where it turns up towards the paper (a concave edge).
+     */
+    private static double slope(HostFrame near, HostFrame across, IndexedPolygons mesh, int far, double tolerance) {
+        double lowest = 0;
+        for (int k = 0; k < mesh.faceSize(far); k++) {
+            lowest = Math.min(lowest, near.height(position(mesh, mesh.faceVertex(far, k))));
+            if (near.height(position(mesh, mesh.faceVertex(far, k))) > tolerance) {
+                return HostFrame.OPEN; // concave: the neighbour rises above this host's plane
+            }
+        }
+        if (lowest >= -tolerance) {
+            return 0; // the same plane
+        }
+        double[] n = near.normal();
+        double[] m = across.normal();
+        double cos = Math.max(-1, Math.min(1, n[0] * m[0] + n[1] * m[1] + n[2] * m[2]));
+        return Math.min(HostFrame.OPEN, Math.sqrt((1 - cos) / (1 + cos)));
+    }
+
+    private static double[] position(IndexedPolygons mesh, int v) {
+        return new double[] {mesh.coordinate(v, 0), mesh.coordinate(v, 1), mesh.coordinate(v, 2)};
+    }
+}

@@ -1,0 +1,89 @@
+package ifold.wrap;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import ifold.mesh.PolygonSoup;
+import ifold.sheet.HostFrame;
+import org.junit.jupiter.api.Test;
+
+/** The room beyond a host's edges: tan(φ/2) over a convex turn φ, none beside a coplanar host, 45 degrees elsewhere. */
+class BendRoomTest {
+    /**
+     * Two triangles sharing the edge (0,0,0)-(1,0,0): one in the plane z = 0 (y < 0), the other
+     * turned about the edge by {@code turn} radians: down (convex) for a positive turn.
+     */
+    private static HostFrame[] hinge(double turn) {
+        PolygonSoup mesh = new PolygonSoup();
+        mesh.addVertex(0, 0, 0);
+        mesh.addVertex(1, 0, 0);
+        mesh.addVertex(0.5, -1, 0);
+        mesh.addVertex(0.5, Math.cos(turn), -Math.sin(turn));
+        mesh.addFace(new int[] {0, 2, 1}, 3, 0);
+        mesh.addFace(new int[] {0, 1, 3}, 3, 0);
+        HostFrame[] frames = new HostFrame[2];
+        for (int t = 0; t < 2; t++) {
+            double[][] p = new double[3][];
+            for (int k = 0; k < 3; k++) {
+                int v = mesh.faceVertex(t, k);
+                p[k] = new double[] {mesh.coordinate(v, 0), mesh.coordinate(v, 1), mesh.coordinate(v, 2)};
+            }
+            frames[t] = HostFrame.onEdge(p[0], p[1], p[2]);
+        }
+        return BendRoom.of(mesh, new int[] {0, 1}, frames, 1e-9);
+    }
+
+    /** The room host {@code h} has along the shared edge, and along its other edges. */
+    private static double[] room(HostFrame[] frames, int h) {
+        HostFrame f = frames[h];
+        double[] zero = {0, 0, 0};
+        double[] one = {1, 0, 0};
+        double shared = f.roomBeyond(f.localX(zero), f.localY(zero), f.localX(one), f.localY(one), 1e-9);
+        double least = HostFrame.OPEN;
+        double[] c = f.corners();
+        for (int k = 0; k < 3; k++) {
+            double ax = c[2 * k];
+            double ay = c[2 * k + 1];
+            double bx = c[2 * ((k + 1) % 3)];
+            double by = c[2 * ((k + 1) % 3) + 1];
+            double r = f.roomBeyond(ax, ay, bx, by, 1e-9);
+            if (Math.abs(ay - f.localY(zero)) + Math.abs(by - f.localY(one)) > 1e-9 && r != shared) {
+                least = Math.min(least, r);
+            }
+        }
+        return new double[] {shared, least};
+    }
+
+    @Test
+    void aConvexTurnLeavesTheHalfAngle() {
+        for (double degrees : new double[] {20, 41.81, 90}) {
+            HostFrame[] frames = hinge(Math.toRadians(degrees));
+            for (int h = 0; h < 2; h++) {
+                double[] room = room(frames, h);
+                assertEquals(Math.min(1, Math.tan(Math.toRadians(degrees) / 2)), room[0], 1e-12, degrees + " degrees, host " + h);
+                assertEquals(HostFrame.OPEN, room[1], "the other edges border nothing");
+            }
+        }
+        // Sharper than a right angle, the bend keeps its 45 degrees.
+        assertEquals(HostFrame.OPEN, room(hinge(Math.toRadians(120)), 0)[0]);
+    }
+
+    @Test
+    void aHostInTheSamePlaneLeavesNone() {
+        assertEquals(0, room(hinge(0), 0)[0]);
+    }
+
+    @Test
+    void aConcaveEdgeIsNotLimitedHere() {
+        assertEquals(HostFrame.OPEN, room(hinge(Math.toRadians(-60)), 0)[0]);
+    }
+
+    @Test
+    void aCreaseAlongPartOfAnEdgeGetsItsRoomAndOneInsideTheHostNone() {
+        HostFrame f = hinge(Math.toRadians(60))[0];
+        double[] a = {0.25, 0, 0};
+        double[] b = {0.5, 0, 0};
+        assertEquals(Math.tan(Math.toRadians(30)), f.roomBeyond(f.localX(a), f.localY(a), f.localX(b), f.localY(b), 1e-9), 1e-12);
+        double[] c = {0.25, -0.1, 0};
+        assertEquals(HostFrame.OPEN, f.roomBeyond(f.localX(a), f.localY(a), f.localX(c), f.localY(c), 1e-9));
+    }
+}
