@@ -44,103 +44,149 @@ final class NestedBends {
      */
     private static final double MITRED_SINE = 0.1;
 
-    private NestedBends() {
+    private final List<Bend> bends;
+    private final double tolerance;
+    /** The bends of each line (one line and one side of it, on one host). */
+    private final List<List<Integer>> lines = new ArrayList<>();
+    /** Each bend's line, an index into {@link #lines}. */
+    private final int[] lineOf;
+    /** Where along its line each bend runs, from the line's first bend's end a. */
+    private final double[] from;
+    private final double[] to;
+    private final int[] ranks;
+
+    private NestedBends(List<Bend> bends, double tolerance) {
+        this.bends = bends;
+        this.tolerance = tolerance;
+        this.lineOf = new int[bends.size()];
+        this.from = new double[bends.size()];
+        this.to = new double[bends.size()];
+        this.ranks = new int[bends.size()];
     }
 
     /**
-     * The rank of each bend: 0 where it wraps no fold of its line, else one more than the highest
-     * rank it wraps. Bends are on one line where their ends lie within {@code tolerance} of each
-     * other's line, and they overlap where they share more than {@code tolerance} of it.
+     * The bends grouped by line and ranked. Bends are on one line where their ends lie within
+     * {@code tolerance} of each other's line (the creases of one fold line, computed to
+     * rounding), and they overlap where they share more than {@code tolerance} of it.
      */
-    static int[] ranks(List<Bend> bends, double tolerance) {
-        int[] ranks = new int[bends.size()];
-        if (bends.isEmpty() || !(tolerance > 0)) {
-            return ranks;
+    static NestedBends of(List<Bend> bends, double tolerance) {
+        NestedBends nested = new NestedBends(bends, tolerance);
+        if (!(tolerance > 0)) {
+            for (int k = 0; k < bends.size(); k++) {
+                nested.lineOf[k] = k; // each alone
+                nested.lines.add(List.of(k));
+            }
+            return nested;
         }
-        Map<Integer, List<Integer>> byHost = new HashMap<>();
-        for (int k = 0; k < bends.size(); k++) {
-            byHost.computeIfAbsent(bends.get(k).host(), h -> new ArrayList<>()).add(k);
+        Integer[] byHost = new Integer[bends.size()];
+        for (int k = 0; k < byHost.length; k++) {
+            byHost[k] = k;
         }
-        for (List<Integer> onHost : byHost.values()) {
+        Arrays.sort(byHost, (i, j) -> Integer.compare(bends.get(i).host(), bends.get(j).host()));
+        for (int from = 0; from < byHost.length;) {
+            int to = from;
+            while (to < byHost.length && bends.get(byHost[to]).host() == bends.get(byHost[from]).host()) {
+                to++;
+            }
+            List<Integer> onHost = Arrays.asList(byHost).subList(from, to);
+            from = to;
             for (List<Integer> line : lines(bends, onHost, tolerance)) {
-                rank(bends, line, tolerance, ranks);
+                for (int k : line) {
+                    nested.lineOf[k] = nested.lines.size();
+                }
+                nested.lines.add(line);
+                nested.span(line);
+                nested.rank(line);
             }
         }
-        return ranks;
+        return nested;
     }
 
+    /** Each bend's rank: 0 where it wraps no fold of its line, else one more than the highest rank it wraps. */
+    int[] ranks() {
+        return ranks.clone();
+    }
+
+    /** The width, in radians, of the buckets of direction that {@link #lines} sorts creases into. */
+    private static final double DIRECTION_BUCKET = 1e-4;
+
     /**
-     * The bends of one host grouped by line and side. A line is keyed by the foot of the
-     * perpendicular to it from a point well away from every bend: lines nearly the same have
-     * feet nearly the same, found in a grid of cells {@code tolerance} across.
+     * The bends of one host grouped by line and side. A line's direction is its longest crease's,
+     * good to rounding (a short crease's is not: the ends of a crease a thousandth of the host
+     * long, each good to 1e-12, turn it by 1e-9); so the longest come first, each line is filed
+     * under its direction, in buckets {@link #DIRECTION_BUCKET} wide, by its offset across that
+     * direction, and a crease joins the line its ends lie within {@code tolerance} of, looked
+     * for among the lines of its bucket and the two beside it whose offsets are near its own.
      */
     private static List<List<Integer>> lines(List<Bend> bends, List<Integer> onHost, double tolerance) {
-        double minX = Double.POSITIVE_INFINITY;
-        double minY = Double.POSITIVE_INFINITY;
-        double maxX = Double.NEGATIVE_INFINITY;
-        double maxY = Double.NEGATIVE_INFINITY;
-        for (int k : onHost) {
+        Integer[] byLength = onHost.toArray(new Integer[0]);
+        Arrays.sort(byLength, (i, j) -> Double.compare(length(bends.get(j)), length(bends.get(i))));
+        double span = 0;
+        double originX = bends.get(byLength[0]).ax();
+        double originY = bends.get(byLength[0]).ay();
+        for (int k : byLength) {
             Bend bend = bends.get(k);
-            minX = Math.min(minX, Math.min(bend.ax(), bend.bx()));
-            minY = Math.min(minY, Math.min(bend.ay(), bend.by()));
-            maxX = Math.max(maxX, Math.max(bend.ax(), bend.bx()));
-            maxY = Math.max(maxY, Math.max(bend.ay(), bend.by()));
+            span = Math.max(span, Math.max(Math.hypot(bend.ax() - originX, bend.ay() - originY), Math.hypot(bend.bx() - originX,
+                    bend.by() - originY)));
         }
-        double span = Math.max(maxX - minX, maxY - minY) + tolerance;
-        // Far from every bend and on no line through two of them in any likely direction, so a
-        // line's foot moves with its direction as much as with its offset.
-        double ox = minX - 10 * span;
-        double oy = minY - 7.3 * span;
-        Map<Long, List<Integer>> cells = new HashMap<>();
-        int[] group = new int[onHost.size()];
+        int bucketCount = (int) Math.ceil(Math.PI / DIRECTION_BUCKET);
+        // Offsets measured along a bucket's own normal, for lines up to a bucket apart in
+        // direction: within span·(two buckets) of each other where the lines are the same.
+        double window = 2 * DIRECTION_BUCKET * span + 2 * tolerance;
+        Map<Integer, java.util.TreeMap<Double, List<Integer>>> buckets = new HashMap<>();
         List<List<Integer>> groups = new ArrayList<>();
-        double[] foot = new double[2];
-        for (int i = 0; i < onHost.size(); i++) {
-            Bend bend = bends.get(onHost.get(i));
-            foot(bend, ox, oy, foot);
-            long cx = (long) Math.floor((foot[0] - ox) / tolerance);
-            long cy = (long) Math.floor((foot[1] - oy) / tolerance);
-            group[i] = -1;
-            for (long dx = -1; dx <= 1 && group[i] < 0; dx++) {
-                for (long dy = -1; dy <= 1 && group[i] < 0; dy++) {
-                    List<Integer> cell = cells.get(key(cx + dx, cy + dy));
-                    if (cell == null) {
-                        continue;
-                    }
-                    for (int j : cell) {
-                        Bend other = bends.get(onHost.get(j));
-                        if (sameLine(bend, other, tolerance) && bend.nx() * other.nx() + bend.ny() * other.ny() > 0) {
-                            group[i] = group[j];
+        for (int k : byLength) {
+            Bend bend = bends.get(k);
+            double direction = Math.atan2(bend.by() - bend.ay(), bend.bx() - bend.ax());
+            direction = direction < 0 ? direction + Math.PI : direction;
+            int bucket = Math.min(bucketCount - 1, (int) (direction / DIRECTION_BUCKET));
+            double midX = (bend.ax() + bend.bx()) / 2 - originX;
+            double midY = (bend.ay() + bend.by()) / 2 - originY;
+            int found = -1;
+            for (int db = -1; db <= 1 && found < 0; db++) {
+                int b = Math.floorMod(bucket + db, bucketCount);
+                java.util.TreeMap<Double, List<Integer>> lines = buckets.get(b);
+                if (lines == null) {
+                    continue;
+                }
+                double offset = offset(b, midX, midY);
+                for (List<Integer> near : lines.subMap(offset - window, true, offset + window, true).values()) {
+                    for (int g : near) {
+                        Bend line = bends.get(groups.get(g).get(0));
+                        if (bend.nx() * line.nx() + bend.ny() * line.ny() > 0 && distanceToLine(bend.ax(), bend.ay(), line) <= tolerance
+                                && distanceToLine(bend.bx(), bend.by(), line) <= tolerance) {
+                            found = g;
                             break;
                         }
                     }
+                    if (found >= 0) {
+                        break;
+                    }
                 }
             }
-            if (group[i] < 0) {
-                group[i] = groups.size();
+            if (found < 0) {
+                found = groups.size();
                 groups.add(new ArrayList<>());
+                buckets.computeIfAbsent(bucket, b -> new java.util.TreeMap<>())
+                        .computeIfAbsent(offset(bucket, midX, midY), o -> new ArrayList<>()).add(found);
             }
-            groups.get(group[i]).add(onHost.get(i));
-            cells.computeIfAbsent(key(cx, cy), c -> new ArrayList<>()).add(i);
+            groups.get(found).add(k);
         }
         return groups;
     }
 
+    /** The offset of point (x, y) across the middle direction of bucket b. */
+    private static double offset(int bucket, double x, double y) {
+        double direction = (bucket + 0.5) * DIRECTION_BUCKET;
+        return -x * Math.sin(direction) + y * Math.cos(direction);
+    }
+
+    private static double length(Bend bend) {
+        return Math.hypot(bend.bx() - bend.ax(), bend.by() - bend.ay());
+    }
+
     private static long key(long cx, long cy) {
         return cx * 0x9E3779B97F4A7C15L ^ cy;
-    }
-
-    private static void foot(Bend bend, double ox, double oy, double[] out) {
-        double dx = bend.bx() - bend.ax();
-        double dy = bend.by() - bend.ay();
-        double t = ((ox - bend.ax()) * dx + (oy - bend.ay()) * dy) / (dx * dx + dy * dy);
-        out[0] = bend.ax() + t * dx;
-        out[1] = bend.ay() + t * dy;
-    }
-
-    private static boolean sameLine(Bend a, Bend b, double tolerance) {
-        return distanceToLine(b.ax(), b.ay(), a) <= tolerance && distanceToLine(b.bx(), b.by(), a) <= tolerance
-                && distanceToLine(a.ax(), a.ay(), b) <= tolerance && distanceToLine(a.bx(), a.by(), b) <= tolerance;
     }
 
     private static double distanceToLine(double x, double y, Bend line) {
@@ -149,106 +195,51 @@ final class NestedBends {
         return Math.abs((x - line.ax()) * dy - (y - line.ay()) * dx) / Math.hypot(dx, dy);
     }
 
+    /** Where along the line each of its bends runs, from the first one's end a. */
+    private void span(List<Integer> line) {
+        Bend first = bends.get(line.get(0));
+        double dx = first.bx() - first.ax();
+        double dy = first.by() - first.ay();
+        double length = Math.hypot(dx, dy);
+        dx /= length;
+        dy /= length;
+        for (int k : line) {
+            Bend bend = bends.get(k);
+            double ta = (bend.ax() - first.ax()) * dx + (bend.ay() - first.ay()) * dy;
+            double tb = (bend.bx() - first.ax()) * dx + (bend.by() - first.ay()) * dy;
+            from[k] = Math.min(ta, tb);
+            to[k] = Math.max(ta, tb);
+        }
+    }
+
     /**
      * Ranks the bends of one line, the narrowest first: a bend wraps another that overlaps it
      * along the line and whose layers lie strictly between its own.
      */
-    private static void rank(List<Bend> bends, List<Integer> line, double tolerance, int[] ranks) {
+    private void rank(List<Integer> line) {
         if (line.size() < 2) {
             return;
         }
-        int n = line.size();
-        double[][] span = spans(bends, line);
-        double[] from = span[0];
-        double[] to = span[1];
-        Integer[] order = new Integer[n];
-        for (int i = 0; i < n; i++) {
-            order[i] = i;
-        }
-        Arrays.sort(order, (i, j) -> Integer.compare(gap(bends.get(line.get(i))), gap(bends.get(line.get(j)))));
-        for (int oi = 0; oi < n; oi++) {
-            int i = order[oi];
-            Bend outer = bends.get(line.get(i));
+        Integer[] order = line.toArray(new Integer[0]);
+        Arrays.sort(order, (i, j) -> Integer.compare(gap(bends.get(i)), gap(bends.get(j))));
+        for (int oi = 0; oi < order.length; oi++) {
+            int outer = order[oi];
             int rank = 0;
             for (int oj = 0; oj < oi; oj++) {
-                int j = order[oj];
-                Bend inner = bends.get(line.get(j));
-                if (wraps(outer, inner, from[i], to[i], from[j], to[j], tolerance)) {
-                    rank = Math.max(rank, ranks[line.get(j)] + 1);
+                int inner = order[oj];
+                if (wraps(outer, inner)) {
+                    rank = Math.max(rank, ranks[inner] + 1);
                 }
             }
-            ranks[line.get(i)] = rank;
+            ranks[outer] = rank;
         }
     }
 
-    /**
-     * Where the rows of bends that stand out end, along their creases: where a bend on another
-     * line of the same host ends at the same point, with layers overlapping this one's, and the
-     * row stepped out whole would run past that one's (its line moved out by its {@code out})
-     * and through its wall, the row stops short on that line, mitred as the edges of a picture
-     * frame are. Entry 2k is how far bend k's row runs on past its end (ax, ay), along the
-     * crease and away from its other end (negative: it stops short of it), 2k + 1 the same at
-     * (bx, by). Corners nearly in line, whose mitre lies far off, and creases too short to
-     * stop half their length short, are left square.
-     */
-    static double[] mitres(List<Bend> bends, double[] out, double tolerance) {
-        double[] past = new double[2 * bends.size()];
-        if (!(tolerance > 0)) {
-            return past;
-        }
-        Map<Long, List<Integer>> cells = new HashMap<>();
-        for (int e = 0; e < 2 * bends.size(); e++) {
-            cells.computeIfAbsent(cell(bends.get(e / 2), e % 2, tolerance), c -> new ArrayList<>()).add(e);
-        }
-        for (int e = 0; e < 2 * bends.size(); e++) {
-            Bend bend = bends.get(e / 2);
-            if (!(out[e / 2] > 0)) {
-                continue;
-            }
-            double x = e % 2 == 0 ? bend.ax() : bend.bx();
-            double y = e % 2 == 0 ? bend.ay() : bend.by();
-            // The crease's direction away from its other end.
-            double length = Math.hypot(bend.bx() - bend.ax(), bend.by() - bend.ay());
-            double dx = (bend.bx() - bend.ax()) / length * (e % 2 == 0 ? -1 : 1);
-            double dy = (bend.by() - bend.ay()) / length * (e % 2 == 0 ? -1 : 1);
-            long cx = (long) Math.floor(x / tolerance);
-            long cy = (long) Math.floor(y / tolerance);
-            for (long i = -1; i <= 1; i++) {
-                for (long j = -1; j <= 1; j++) {
-                    for (int f : cells.getOrDefault(key(cx + i, cy + j), List.of())) {
-                        Bend other = bends.get(f / 2);
-                        double ox = f % 2 == 0 ? other.ax() : other.bx();
-                        double oy = f % 2 == 0 ? other.ay() : other.by();
-                        if (f / 2 == e / 2 || other.host() != bend.host() || Math.hypot(ox - x, oy - y) > tolerance
-                                || sameLine(bend, other, tolerance) || other.low() >= bend.high() || bend.low() >= other.high()) {
-                            continue;
-                        }
-                        // The row's end x + out·n + t·d lies on the other's row: (p - o)·m = outOther.
-                        double across = dx * other.nx() + dy * other.ny();
-                        double t = (out[f / 2] - out[e / 2] * (bend.nx() * other.nx() + bend.ny() * other.ny())
-                                - ((x - ox) * other.nx() + (y - oy) * other.ny())) / across;
-                        if (Math.abs(across) > MITRED_SINE && t < 0 && -t <= 4 * (out[e / 2] + out[f / 2])
-                                && -t < length / 2) {
-                            past[e] = Math.min(past[e], t);
-                        }
-                    }
-                }
-            }
-        }
-        return past;
-    }
-
-    private static long cell(Bend bend, int end, double tolerance) {
-        double x = end == 0 ? bend.ax() : bend.bx();
-        double y = end == 0 ? bend.ay() : bend.by();
-        return key((long) Math.floor(x / tolerance), (long) Math.floor(y / tolerance));
-    }
-
-    /** Whether {@code outer} wraps {@code inner} on their line: its layers strictly between, overlapping along it. */
-    private static boolean wraps(Bend outer, Bend inner, double outerFrom, double outerTo, double innerFrom, double innerTo,
-            double tolerance) {
-        return outer.low() < inner.low() && inner.high() < outer.high()
-                && Math.min(outerTo, innerTo) - Math.max(outerFrom, innerFrom) > tolerance;
+    /** Whether bend {@code outer} wraps bend {@code inner} of its line: its layers strictly between, overlapping along it. */
+    private boolean wraps(int outer, int inner) {
+        Bend o = bends.get(outer);
+        Bend i = bends.get(inner);
+        return o.low() < i.low() && i.high() < o.high() && Math.min(to[outer], to[inner]) - Math.max(from[outer], from[inner]) > tolerance;
     }
 
     /**
@@ -258,59 +249,257 @@ final class NestedBends {
      * the outer stands on its crease, so do those it wraps (their walls then meet in one plane,
      * which the collision check reports, rather than the inner folds running outside the outer).
      */
-    static void keepNested(List<Bend> bends, int[] ranks, double[] out, double tolerance) {
-        if (bends.isEmpty() || !(tolerance > 0)) {
-            return;
-        }
-        Map<Integer, List<Integer>> byHost = new HashMap<>();
-        for (int k = 0; k < bends.size(); k++) {
-            byHost.computeIfAbsent(bends.get(k).host(), h -> new ArrayList<>()).add(k);
-        }
-        for (List<Integer> onHost : byHost.values()) {
-            for (List<Integer> line : lines(bends, onHost, tolerance)) {
-                if (line.size() < 2) {
+    void keepNested(double[] out) {
+        for (List<Integer> line : lines) {
+            if (line.size() < 2) {
+                continue;
+            }
+            // The outermost first, so that a limit passes inwards through every level of nesting.
+            Integer[] order = line.toArray(new Integer[0]);
+            Arrays.sort(order, (i, j) -> Integer.compare(gap(bends.get(j)), gap(bends.get(i))));
+            for (int oi = 0; oi < order.length; oi++) {
+                int outer = order[oi];
+                if (ranks[outer] == 0) {
                     continue;
                 }
-                double[][] span = spans(bends, line);
-                Integer[] order = new Integer[line.size()];
-                for (int i = 0; i < order.length; i++) {
-                    order[i] = i;
-                }
-                // The outermost first, so that a limit passes inwards through every level of nesting.
-                Arrays.sort(order, (i, j) -> Integer.compare(gap(bends.get(line.get(j))), gap(bends.get(line.get(i)))));
-                for (int oi = 0; oi < order.length; oi++) {
-                    int i = order[oi];
-                    int outer = line.get(i);
-                    for (int oj = oi + 1; oj < order.length; oj++) {
-                        int j = order[oj];
-                        int inner = line.get(j);
-                        if (ranks[outer] > 0 && wraps(bends.get(outer), bends.get(inner), span[0][i], span[1][i], span[0][j], span[1][j],
-                                tolerance)) {
-                            out[inner] = Math.min(out[inner], out[outer] * ranks[inner] / ranks[outer]);
-                        }
+                for (int oj = oi + 1; oj < order.length; oj++) {
+                    int inner = order[oj];
+                    if (wraps(outer, inner)) {
+                        out[inner] = Math.min(out[inner], out[outer] * ranks[inner] / ranks[outer]);
                     }
                 }
             }
         }
     }
 
-    /** Where along their line (from the first's end a, along it) each bend of {@code line} runs: from[i] = span[0][i], to[i] = span[1][i]. */
-    private static double[][] spans(List<Bend> bends, List<Integer> line) {
-        Bend first = bends.get(line.get(0));
-        double dx = first.bx() - first.ax();
-        double dy = first.by() - first.ay();
-        double length = Math.hypot(dx, dy);
-        dx /= length;
-        dy /= length;
-        double[][] span = new double[2][line.size()];
-        for (int i = 0; i < line.size(); i++) {
-            Bend bend = bends.get(line.get(i));
-            double ta = (bend.ax() - first.ax()) * dx + (bend.ay() - first.ay()) * dy;
-            double tb = (bend.bx() - first.ax()) * dx + (bend.by() - first.ay()) * dy;
-            span[0][i] = Math.min(ta, tb);
-            span[1][i] = Math.max(ta, tb);
+    /**
+     * Where the rows of bends that stand out ({@code out} above 0) end, along their creases:
+     * where a bend on another line of the same host ends at the same point, with layers
+     * overlapping this one's, and its crease leaves that point into the band this bend's row
+     * stands out over (between the crease and the direction it stands out in), the row stepped
+     * out whole would run through that bend's wall: it stops short on that one's line (moved out
+     * by its {@code out}), mitred as the edges of a picture frame are, on the first such crease
+     * from its own. Entry 2k is how far bend k's row runs on past its end (ax, ay), along the
+     * crease and away from its other end (negative: it stops short of it), 2k + 1 the same at
+     * (bx, by). Corners nearly in line, whose mitre lies far off, and creases too short to stop
+     * half their length short, are left square.
+     */
+    double[] mitres(double[] out) {
+        double[] past = new double[2 * bends.size()];
+        if (!(tolerance > 0)) {
+            return past;
         }
-        return span;
+        // The ends in cells a tolerance across, each cell's in order of the direction in which
+        // its crease leaves it: thousands of creases can end at one corner, and only those
+        // leaving it into a row's band, the first from the row's own crease, matter.
+        int endCount = 2 * bends.size();
+        Map<Long, Integer> cellIds = new HashMap<>();
+        int[] cellOf = new int[endCount];
+        for (int e = 0; e < endCount; e++) {
+            cellOf[e] = cellIds.computeIfAbsent(cell(e), c -> cellIds.size());
+        }
+        // Each cell's ends, cell after cell (start[c] to start[c + 1]), each cell's by direction.
+        int[] start = new int[cellIds.size() + 1];
+        for (int e = 0; e < endCount; e++) {
+            start[cellOf[e] + 1]++;
+        }
+        for (int c = 0; c < cellIds.size(); c++) {
+            start[c + 1] += start[c];
+        }
+        int[] ends = new int[endCount];
+        int[] fill = Arrays.copyOf(start, cellIds.size());
+        for (int e = 0; e < endCount; e++) {
+            ends[fill[cellOf[e]]++] = e;
+        }
+        double[] angle = new double[endCount];
+        for (int c = 0; c < cellIds.size(); c++) {
+            sortByDirection(ends, angle, start[c], start[c + 1]);
+        }
+        // Runs: a cell's ends of one line, next to each other in that order. For one row and one
+        // run the stop moves with how far the run's bends stand out alone, so the least (or most)
+        // of those among the run's bends whose layers meet the row's is the one to stop on; a
+        // corner where a tuck folded a hundred layers along one edge is one run.
+        int[] runStart = new int[endCount + 1];
+        double[] runAngle = new double[endCount];
+        int[] runLow = new int[endCount];
+        int[] runHigh = new int[endCount];
+        int[] cellRuns = new int[cellIds.size() + 1];
+        int runs = 0;
+        for (int c = 0; c < cellIds.size(); c++) {
+            cellRuns[c] = runs;
+            for (int i = start[c]; i < start[c + 1];) {
+                int j = i;
+                runLow[runs] = Integer.MAX_VALUE;
+                runHigh[runs] = Integer.MIN_VALUE;
+                while (j < start[c + 1] && lineOf[ends[j] / 2] == lineOf[ends[i] / 2]) {
+                    runLow[runs] = Math.min(runLow[runs], bends.get(ends[j] / 2).low());
+                    runHigh[runs] = Math.max(runHigh[runs], bends.get(ends[j] / 2).high());
+                    j++;
+                }
+                runStart[runs] = i;
+                runAngle[runs] = angle[i];
+                runs++;
+                i = j;
+            }
+        }
+        cellRuns[cellIds.size()] = runs;
+        runStart[runs] = endCount;
+        double least = Math.asin(MITRED_SINE);
+        boolean[] wall = new boolean[1];
+        for (int e = 0; e < 2 * bends.size(); e++) {
+            if (!(out[e / 2] > 0)) {
+                continue;
+            }
+            Bend bend = bends.get(e / 2);
+            double own = leaving(e);
+            // Which way from the crease the bend stands out: counter-clockwise (+1) or clockwise.
+            double intoX = Math.cos(own);
+            double intoY = Math.sin(own);
+            int side = intoX * bend.ny() - intoY * bend.nx() > 0 ? 1 : -1;
+            // The ends at e's point: in its cell, and in the cells beside it where e lies within
+            // a tenth of a cell of their side (the ends of creases that meet agree to rounding).
+            double gx = x(e) / tolerance;
+            double gy = y(e) / tolerance;
+            long cx = (long) Math.floor(gx);
+            long cy = (long) Math.floor(gy);
+            for (long i = gx - cx < 0.1 ? -1 : 0; i <= (cx + 1 - gx < 0.1 ? 1 : 0); i++) {
+                for (long j = gy - cy < 0.1 ? -1 : 0; j <= (cy + 1 - gy < 0.1 ? 1 : 0); j++) {
+                    Integer c = cellIds.get(cell(bend.host(), cx + i, cy + j));
+                    if (c == null) {
+                        continue;
+                    }
+                    int from = cellRuns[c];
+                    int n = cellRuns[c + 1] - from;
+                    // From just past the crease's own direction, turning towards the side it stands out on.
+                    int k = Arrays.binarySearch(runAngle, from, from + n, wrap(own + side * least));
+                    k = (k >= 0 ? k : -k - 1) - from;
+                    if (side < 0) {
+                        k--;
+                    }
+                    for (int step = 0; step < n; step++, k += side) {
+                        int run = from + Math.floorMod(k, n);
+                        double turn = side * wrap(runAngle[run] - own);
+                        if (turn < least || turn > Math.PI / 2) {
+                            break; // out of the band (or round past it, back to the crease)
+                        }
+                        if (lineOf[ends[runStart[run]] / 2] == lineOf[e / 2] || runLow[run] >= bend.high() || bend.low() >= runHigh[run]) {
+                            continue;
+                        }
+                        past[e] = Math.min(past[e], stop(e, ends, runStart[run], runStart[run + 1], out, wall));
+                        if (wall[0]) {
+                            // A wall on its crease: those turned farther from the row's crease
+                            // cross the row nearer its end, and stop it less.
+                            break;
+                        }
+                    }
+                }
+            }
+        }
+        return past;
+    }
+
+    /**
+     * How far end e's row runs on past its end to stop on the rows of the run ends[from..to) (one
+     * line's): on the least out of those whose layers meet e's, or the most where the stop
+     * moves the other way with it; 0 where no mitre is taken. {@code wall[0]} says whether one
+     * of them stands on its crease.
+     */
+    private double stop(int e, int[] ends, int from, int to, double[] out, boolean[] wall) {
+        Bend bend = bends.get(e / 2);
+        Bend line = bends.get(ends[from] / 2);
+        double length = Math.hypot(bend.bx() - bend.ax(), bend.by() - bend.ay());
+        double dx = (bend.bx() - bend.ax()) / length * (e % 2 == 0 ? -1 : 1);
+        double dy = (bend.by() - bend.ay()) / length * (e % 2 == 0 ? -1 : 1);
+        boolean least = dx * line.nx() + dy * line.ny() > 0;
+        int best = -1;
+        wall[0] = false;
+        for (int i = from; i < to; i++) {
+            int f = ends[i];
+            Bend other = bends.get(f / 2);
+            if (Math.hypot(x(f) - x(e), y(f) - y(e)) <= tolerance && other.low() < bend.high() && bend.low() < other.high()) {
+                wall[0] |= out[f / 2] == 0;
+                if (best < 0 || (least ? out[f / 2] < out[best / 2] : out[f / 2] > out[best / 2])) {
+                    best = f;
+                }
+            }
+        }
+        return best < 0 ? 0 : mitre(e, best, out);
+    }
+
+    /**
+     * How far end e's row runs on past its end to stop on the row of the bend whose end f lies
+     * at the same point, where the mitre is taken; 0 where it is not.
+     */
+    private double mitre(int e, int f, double[] out) {
+        Bend bend = bends.get(e / 2);
+        Bend other = bends.get(f / 2);
+        double length = Math.hypot(bend.bx() - bend.ax(), bend.by() - bend.ay());
+        // The crease's direction away from its other end.
+        double dx = (bend.bx() - bend.ax()) / length * (e % 2 == 0 ? -1 : 1);
+        double dy = (bend.by() - bend.ay()) / length * (e % 2 == 0 ? -1 : 1);
+        // The row's end, x + out·n + t·d, on the other's row: (p - o)·m = out'.
+        double across = dx * other.nx() + dy * other.ny();
+        double t = (out[f / 2] - out[e / 2] * (bend.nx() * other.nx() + bend.ny() * other.ny())
+                - ((x(e) - x(f)) * other.nx() + (y(e) - y(f)) * other.ny())) / across;
+        boolean taken = Math.abs(across) > MITRED_SINE && t < 0 && -t <= 4 * (out[e / 2] + out[f / 2]) && -t < length / 2;
+        return taken ? t : 0;
+    }
+
+    /**
+     * Sorts ends[from..to) by the direction their creases leave them, into angle[from..to) as
+     * well: by the direction to 1.5e-9 radians, each packed with its place in a long.
+     */
+    private void sortByDirection(int[] ends, double[] angle, int from, int to) {
+        long[] keyed = new long[to - from];
+        for (int i = from; i < to; i++) {
+            long turn = (long) ((leaving(ends[i]) + Math.PI) / (2 * Math.PI) * (1L << 32));
+            keyed[i - from] = Math.min(turn, (1L << 32) - 1) << 31 | (i - from);
+        }
+        Arrays.sort(keyed);
+        int[] sorted = new int[to - from];
+        for (int i = 0; i < keyed.length; i++) {
+            sorted[i] = ends[from + (int) (keyed[i] & ((1L << 31) - 1))];
+        }
+        System.arraycopy(sorted, 0, ends, from, sorted.length);
+        for (int i = from; i < to; i++) {
+            angle[i] = leaving(ends[i]);
+        }
+    }
+
+    /** The direction, in radians, in which end e's crease leaves it: towards the bend's other end. */
+    private double leaving(int e) {
+        Bend bend = bends.get(e / 2);
+        double sign = e % 2 == 0 ? 1 : -1;
+        return Math.atan2(sign * (bend.by() - bend.ay()), sign * (bend.bx() - bend.ax()));
+    }
+
+    /** An angle brought into [-pi, pi). */
+    private static double wrap(double angle) {
+        return angle - 2 * Math.PI * Math.floor((angle + Math.PI) / (2 * Math.PI));
+    }
+
+    /** Where end e lies: bend e / 2's end a for even e, b for odd. */
+    private double x(int e) {
+        Bend bend = bends.get(e / 2);
+        return e % 2 == 0 ? bend.ax() : bend.bx();
+    }
+
+    private double y(int e) {
+        Bend bend = bends.get(e / 2);
+        return e % 2 == 0 ? bend.ay() : bend.by();
+    }
+
+    /**
+     * The cell of end e in a grid of cells a tolerance across, one grid a host: every host's
+     * frame has its origin at one of its corners, where thousands of ends of other hosts lie
+     * at the same coordinates.
+     */
+    private long cell(int e) {
+        return cell(bends.get(e / 2).host(), (long) Math.floor(x(e) / tolerance), (long) Math.floor(y(e) / tolerance));
+    }
+
+    private static long cell(int host, long cx, long cy) {
+        return key(cx, cy) * 31 + host;
     }
 
     private static int gap(Bend bend) {

@@ -126,7 +126,8 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     bendCorners.add(new int[] {f, g, a, b, fa, fb, ga, gb});
                 }
             }
-            int[] ranks = NestedBends.ranks(bends, sheet.thickness() * NEST_TOLERANCE);
+            NestedBends nested = NestedBends.of(bends, sheet.thickness() * NEST_TOLERANCE);
+            int[] ranks = nested.ranks();
             double[] outs = new double[bends.size()];
             double[] slopes = new double[bends.size()];
             for (int k = 0; k < bends.size(); k++) {
@@ -142,8 +143,8 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 out = frame.lean(bend.ax(), bend.ay(), bend.nx(), bend.ny(), low, slopes[k], out);
                 outs[k] = frame.lean(bend.bx(), bend.by(), bend.nx(), bend.ny(), low, slopes[k], out);
             }
-            NestedBends.keepNested(bends, ranks, outs, sheet.thickness() * NEST_TOLERANCE);
-            double[] past = NestedBends.mitres(bends, outs, sheet.thickness() * NEST_TOLERANCE);
+            nested.keepNested(outs);
+            double[] past = nested.mitres(outs);
             for (int k = 0; k < bends.size(); k++) {
                 int[] c = bendCorners.get(k);
                 int f = c[0];

@@ -20,7 +20,7 @@ class NestedBendsTest {
     void foldsWrappedOneInsideTheNextAreRankedFromTheInside() {
         // A tuck of three layers folded under along one line: levels 0-5, 1-4, 2-3.
         List<Bend> tuck = List.of(alongX(0, 1, 0, 0, 5), alongX(0.2, 0.9, 0, 1, 4), alongX(0, 1, 0, 2, 3));
-        assertArrayEquals(new int[] {2, 1, 0}, NestedBends.ranks(tuck, TOLERANCE));
+        assertArrayEquals(new int[] {2, 1, 0}, NestedBends.of(tuck, TOLERANCE).ranks());
     }
 
     @Test
@@ -30,58 +30,65 @@ class NestedBendsTest {
                 alongX(1.5, 2, 0, 1, 4), // on the line, not overlapping along it
                 new Bend(0, 0, 0, 1, 0, 0, 1, 1, 4), // on the line, standing out the other way
                 new Bend(1, 0, 0, 1, 0, 0, -1, 1, 4)); // another host
-        assertArrayEquals(new int[] {0, 0, 0, 0, 0}, NestedBends.ranks(bends, TOLERANCE));
+        assertArrayEquals(new int[] {0, 0, 0, 0, 0}, NestedBends.of(bends, TOLERANCE).ranks());
         // Within the tolerance of the line, running the other way: the same line (the creases of
         // one fold line, computed to rounding).
         List<Bend> near = List.of(alongX(0, 1, 0, 0, 5), new Bend(0, 1, TOLERANCE / 2, 0.5, TOLERANCE / 2, 0, -1, 1, 4));
-        assertArrayEquals(new int[] {1, 0}, NestedBends.ranks(near, TOLERANCE));
+        assertArrayEquals(new int[] {1, 0}, NestedBends.of(near, TOLERANCE).ranks());
     }
 
     @Test
     void foldsWhoseLayersInterleaveOrShareOneAreNotNested() {
         List<Bend> bends = List.of(alongX(0, 1, 0, 0, 3), alongX(0, 1, 0, 1, 4), alongX(0, 1, 0, 0, 2));
-        assertArrayEquals(new int[] {0, 0, 0}, NestedBends.ranks(bends, TOLERANCE));
+        assertArrayEquals(new int[] {0, 0, 0}, NestedBends.of(bends, TOLERANCE).ranks());
     }
 
     @Test
     void foldsWrappedByOneThatStandsOutLessStandOutLessStill() {
         List<Bend> tuck = List.of(alongX(0, 1, 0, 0, 5), alongX(0, 1, 0, 1, 4), alongX(0, 1, 0, 2, 3), alongX(3, 4, 0, 1, 4));
-        int[] ranks = NestedBends.ranks(tuck, TOLERANCE);
+        NestedBends nested = NestedBends.of(tuck, TOLERANCE);
+        int[] ranks = nested.ranks();
         assertArrayEquals(new int[] {2, 1, 0, 0}, ranks);
         // The outer one was held to half its two thicknesses; the last is on the line but apart.
         double[] out = {1, 1, 0, 0.5};
-        NestedBends.keepNested(tuck, ranks, out, TOLERANCE);
+        nested.keepNested(out);
         assertArrayEquals(new double[] {1, 0.5, 0, 0.5}, out);
         double[] held = {0, 1, 0, 0.5};
-        NestedBends.keepNested(tuck, ranks, held, TOLERANCE);
+        nested.keepNested(held);
         assertArrayEquals(new double[] {0, 0, 0, 0.5}, held, "the outer on its crease: the inner too");
     }
 
     @Test
-    void aRowThatWouldRunThroughTheWallOfAFoldAtAnObtuseCornerStopsOnIt() {
-        // A pentagon's corner: crease A along the x axis, crease B at 108 degrees to it, both
-        // standing out of the pentagon; A stands out 0.1, B not at all.
-        double angle = Math.toRadians(108);
-        Bend a = alongX(0, 1, 0, 0, 5);
-        Bend b = new Bend(0, 0, 0, Math.cos(angle), Math.sin(angle), -Math.sin(angle), Math.cos(angle), 1, 9);
-        double[] past = NestedBends.mitres(List.of(a, b), new double[] {0.1, 0}, TOLERANCE);
-        // A's row, 0.1 out, ends on B's line at (x, -0.1): x·nB.x - 0.1·nB.y = 0, x = 0.0325.
-        double x = 0.1 * b.ny() / b.nx();
-        assertEquals(0.0325, x, 1e-4, "setup");
-        assertEquals(-x, past[0], 1e-12, "A's row stops short of the corner");
-        assertEquals(0, past[1], "A's far end is free");
-        assertEquals(0, past[2], "B stands on its crease");
+    void aRowThatWouldRunThroughTheWallOfAFoldAtACornerStopsOnIt() {
+        // A pentagon's corner, as on the dodecahedron: crease A runs down the y axis to the corner
+        // and stands out 0.1 towards +x; the wall W leaves the corner at 54 degrees, into the band
+        // A's row stands out over, its layers meeting A's.
+        double angle = Math.toRadians(54);
+        Bend a = new Bend(0, 0, 1, 0, 0, 1, 0, 0, 5);
+        Bend w = new Bend(0, 0, 0, Math.cos(angle), Math.sin(angle), Math.sin(angle), -Math.cos(angle), 1, 9);
+        double[] past = NestedBends.of(List.of(a, w), TOLERANCE).mitres(new double[] {0.1, 0});
+        // A's row, at x = 0.1, meets W's line at y = 0.1·tan(54°): it stops that far short of the corner.
+        assertEquals(-0.1 * Math.tan(angle), past[1], 1e-12);
+        assertEquals(0, past[0], "A's other end is free");
+        assertEquals(0, past[2] + past[3], "W stands on its crease");
+        // W's layers above all of A's: the rows pass each other.
+        Bend above = new Bend(0, 0, 0, Math.cos(angle), Math.sin(angle), Math.sin(angle), -Math.cos(angle), 6, 9);
+        assertArrayEquals(new double[4], NestedBends.of(List.of(a, above), TOLERANCE).mitres(new double[] {0.1, 0}));
+        // The same corner on another host: nothing to meet.
+        Bend elsewhere = new Bend(1, 0, 0, Math.cos(angle), Math.sin(angle), Math.sin(angle), -Math.cos(angle), 1, 9);
+        assertArrayEquals(new double[4], NestedBends.of(List.of(a, elsewhere), TOLERANCE).mitres(new double[] {0.1, 0}));
     }
 
     @Test
-    void rowsAtARightAngledCornerOrOfLayersApartRunOnSquare() {
+    void rowsWhoseBandNoCreaseEntersRunOnSquare() {
         // A square's corner: the rows stand out of each other's way.
         Bend a = alongX(0, 1, 0, 0, 5);
         Bend b = new Bend(0, 0, 0, 0, 1, -1, 0, 1, 4);
-        assertArrayEquals(new double[4], NestedBends.mitres(List.of(a, b), new double[] {0.1, 0.1}, TOLERANCE));
-        // At 108 degrees, but B's layers lie above all of A's: the rows pass each other.
+        assertArrayEquals(new double[4], NestedBends.of(List.of(a, b), TOLERANCE).mitres(new double[] {0.1, 0.1}));
+        // A crease leaving A's end at 108 degrees, away from the band below A: A's row runs past
+        // that crease's line, but not through its wall.
         double angle = Math.toRadians(108);
-        Bend above = new Bend(0, 0, 0, Math.cos(angle), Math.sin(angle), -Math.sin(angle), Math.cos(angle), 6, 9);
-        assertArrayEquals(new double[4], NestedBends.mitres(List.of(a, above), new double[] {0.1, 0}, TOLERANCE));
+        Bend away = new Bend(0, 0, 0, Math.cos(angle), Math.sin(angle), -Math.sin(angle), Math.cos(angle), 1, 9);
+        assertArrayEquals(new double[4], NestedBends.of(List.of(a, away), TOLERANCE).mitres(new double[] {0.1, 0}));
     }
 }
