@@ -45,21 +45,14 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
         }
         int n = corners.length / 2;
         for (int k = 0; k < n; k++) {
+            if (room[k] >= least || !along(k, ax, ay, bx, by, tolerance)) {
+                continue;
+            }
             double px = corners[2 * k];
             double py = corners[2 * k + 1];
-            double qx = corners[2 * ((k + 1) % n)];
-            double qy = corners[2 * ((k + 1) % n) + 1];
-            double dx = qx - px;
-            double dy = qy - py;
+            double dx = corners[2 * ((k + 1) % n)] - px;
+            double dy = corners[2 * ((k + 1) % n) + 1] - py;
             double length = Math.hypot(dx, dy);
-            if (!(length > 0) || room[k] >= least) {
-                continue;
-            }
-            double offA = Math.abs((ax - px) * dy - (ay - py) * dx) / length;
-            double offB = Math.abs((bx - px) * dy - (by - py) * dx) / length;
-            if (offA > tolerance || offB > tolerance) {
-                continue;
-            }
             double ta = ((ax - px) * dx + (ay - py) * dy) / length;
             double tb = ((bx - px) * dx + (by - py) * dy) / length;
             double shared = Math.min(length, Math.max(ta, tb)) - Math.max(0, Math.min(ta, tb));
@@ -68,6 +61,22 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
             }
         }
         return least;
+    }
+
+    /**
+     * Whether the segment from (ax, ay) to (bx, by) in this frame lies along the line of edge k
+     * of the corners' polygon (from corner k to corner k + 1): both its ends within
+     * {@code tolerance} of that line.
+     */
+    public boolean along(int k, double ax, double ay, double bx, double by, double tolerance) {
+        int n = corners.length / 2;
+        double px = corners[2 * k];
+        double py = corners[2 * k + 1];
+        double dx = corners[2 * ((k + 1) % n)] - px;
+        double dy = corners[2 * ((k + 1) % n) + 1] - py;
+        double length = Math.hypot(dx, dy);
+        return length > 0 && Math.abs((ax - px) * dy - (ay - py) * dx) / length <= tolerance
+                && Math.abs((bx - px) * dy - (by - py) * dx) / length <= tolerance;
     }
 
     /**

@@ -5,10 +5,11 @@ import java.util.Arrays;
 /**
  * A hash map from non-negative {@code long} keys to {@code int} values, open addressing with
  * linear probing: the sheet keys its edges by two vertex indices in one long, and a wrap makes
- * millions of them, which boxed keys and values would make several times bigger and slower.
+ * millions of them, which boxed keys and values would make several times bigger and slower
+ * (the wrap's geometry keys the ends of its folds' creases by their cells too).
  * Removal shifts the following entries back, so probes never meet tombstones.
  */
-final class LongIntMap {
+public final class LongIntMap {
     private static final long EMPTY = -1;
     private long[] keys;
     private int[] values;
@@ -16,7 +17,7 @@ final class LongIntMap {
     /** 64 - log2(capacity): the top bits of the hash pick the slot. */
     private int shift;
 
-    LongIntMap() {
+    public LongIntMap() {
         keys = new long[64];
         values = new int[64];
         shift = 64 - 6;
@@ -24,7 +25,7 @@ final class LongIntMap {
     }
 
     /** The value of {@code key}, or {@code missing} if it has none. */
-    int get(long key, int missing) {
+    public int get(long key, int missing) {
         int mask = keys.length - 1;
         for (int i = slot(key, mask); ; i = (i + 1) & mask) {
             long k = keys[i];
@@ -37,7 +38,7 @@ final class LongIntMap {
         }
     }
 
-    void put(long key, int value) {
+    public void put(long key, int value) {
         if (key < 0) {
             throw new IllegalArgumentException("keys are non-negative, got " + key);
         }

@@ -77,17 +77,9 @@ final class BendRoom {
         double ay = frame.localY(a);
         double bx = frame.localX(b);
         double by = frame.localY(b);
-        double[] corners = frame.corners();
-        int n = corners.length / 2;
         double[] edges = room[hostOf[near]];
-        for (int k = 0; k < n; k++) {
-            double px = corners[2 * k];
-            double py = corners[2 * k + 1];
-            double dx = corners[2 * ((k + 1) % n)] - px;
-            double dy = corners[2 * ((k + 1) % n) + 1] - py;
-            double length = Math.hypot(dx, dy);
-            if (length > 0 && Math.abs((ax - px) * dy - (ay - py) * dx) / length <= tolerance
-                    && Math.abs((bx - px) * dy - (by - py) * dx) / length <= tolerance) {
+        for (int k = 0; k < edges.length; k++) {
+            if (frame.along(k, ax, ay, bx, by, tolerance)) {
                 edges[k] = Math.min(edges[k], slope);
             }
         }
@@ -101,10 +93,11 @@ final class BendRoom {
     private static double slope(HostFrame near, HostFrame across, IndexedPolygons mesh, int far, double tolerance) {
         double lowest = 0;
         for (int k = 0; k < mesh.faceSize(far); k++) {
-            lowest = Math.min(lowest, near.height(position(mesh, mesh.faceVertex(far, k))));
-            if (near.height(position(mesh, mesh.faceVertex(far, k))) > tolerance) {
+            double height = near.height(position(mesh, mesh.faceVertex(far, k)));
+            if (height > tolerance) {
                 return HostFrame.OPEN; // concave: the neighbour rises above this host's plane
             }
+            lowest = Math.min(lowest, height);
         }
         if (lowest >= -tolerance) {
             return 0; // the same plane

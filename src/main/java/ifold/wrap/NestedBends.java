@@ -1,5 +1,6 @@
 package ifold.wrap;
 
+import ifold.sheet.LongIntMap;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashMap;
@@ -293,26 +294,31 @@ final class NestedBends {
         // its crease leaves it: thousands of creases can end at one corner, and only those
         // leaving it into a row's band, the first from the row's own crease, matter.
         int endCount = 2 * bends.size();
-        Map<Long, Integer> cellIds = new HashMap<>();
+        LongIntMap cellIds = new LongIntMap();
+        int cellCount = 0;
         int[] cellOf = new int[endCount];
         for (int e = 0; e < endCount; e++) {
-            cellOf[e] = cellIds.computeIfAbsent(cell(e), c -> cellIds.size());
+            cellOf[e] = cellIds.get(cell(e), -1);
+            if (cellOf[e] < 0) {
+                cellOf[e] = cellCount++;
+                cellIds.put(cell(e), cellOf[e]);
+            }
         }
         // Each cell's ends, cell after cell (start[c] to start[c + 1]), each cell's by direction.
-        int[] start = new int[cellIds.size() + 1];
+        int[] start = new int[cellCount + 1];
         for (int e = 0; e < endCount; e++) {
             start[cellOf[e] + 1]++;
         }
-        for (int c = 0; c < cellIds.size(); c++) {
+        for (int c = 0; c < cellCount; c++) {
             start[c + 1] += start[c];
         }
         int[] ends = new int[endCount];
-        int[] fill = Arrays.copyOf(start, cellIds.size());
+        int[] fill = Arrays.copyOf(start, cellCount);
         for (int e = 0; e < endCount; e++) {
             ends[fill[cellOf[e]]++] = e;
         }
         double[] angle = new double[endCount];
-        for (int c = 0; c < cellIds.size(); c++) {
+        for (int c = 0; c < cellCount; c++) {
             sortByDirection(ends, angle, start[c], start[c + 1]);
         }
         // Runs: a cell's ends of one line, next to each other in that order. For one row and one
@@ -323,9 +329,9 @@ final class NestedBends {
         double[] runAngle = new double[endCount];
         int[] runLow = new int[endCount];
         int[] runHigh = new int[endCount];
-        int[] cellRuns = new int[cellIds.size() + 1];
+        int[] cellRuns = new int[cellCount + 1];
         int runs = 0;
-        for (int c = 0; c < cellIds.size(); c++) {
+        for (int c = 0; c < cellCount; c++) {
             cellRuns[c] = runs;
             for (int i = start[c]; i < start[c + 1];) {
                 int j = i;
@@ -342,7 +348,7 @@ final class NestedBends {
                 i = j;
             }
         }
-        cellRuns[cellIds.size()] = runs;
+        cellRuns[cellCount] = runs;
         runStart[runs] = endCount;
         double least = Math.asin(MITRED_SINE);
         boolean[] wall = new boolean[1];
@@ -364,8 +370,8 @@ final class NestedBends {
             long cy = (long) Math.floor(gy);
             for (long i = gx - cx < 0.1 ? -1 : 0; i <= (cx + 1 - gx < 0.1 ? 1 : 0); i++) {
                 for (long j = gy - cy < 0.1 ? -1 : 0; j <= (cy + 1 - gy < 0.1 ? 1 : 0); j++) {
-                    Integer c = cellIds.get(cell(bend.host(), cx + i, cy + j));
-                    if (c == null) {
+                    int c = cellIds.get(cell(bend.host(), cx + i, cy + j), -1);
+                    if (c < 0) {
                         continue;
                     }
                     int from = cellRuns[c];
@@ -499,7 +505,7 @@ final class NestedBends {
     }
 
     private static long cell(int host, long cx, long cy) {
-        return key(cx, cy) * 31 + host;
+        return (key(cx, cy) * 31 + host) & Long.MAX_VALUE; // a LongIntMap's keys are not negative
     }
 
     private static int gap(Bend bend) {
