@@ -113,16 +113,19 @@ public final class PaperCollisions {
         }
 
         /**
-         * One line for people, the cube's wrap for one: "collisions: 8014 pairs (8014 with caps, 0
-         * coplanar), deepest 4.000 T (faces 3 and 8643), 0 paper-model crossings, 0 paper points
-         * inside the solid" (depths to four digits; the record holds them exactly).
+         * One line for people, the cube's wrap as it was for one: "collisions: 8014 crossing pairs
+         * (8014 with caps), deepest 4.000 T (faces 3 and 8643), 0 pairs overlapping in one plane,
+         * 0 paper-model crossings, 0 paper points inside the solid" (depths to four digits; the
+         * record holds them exactly).
          */
         public String summary() {
-            StringBuilder line = new StringBuilder("collisions: ").append(crossingPairs).append(crossingPairs == 1 ? " pair" : " pairs");
-            line.append(" (").append(capPairs).append(" with caps, ").append(coplanarPairs).append(" coplanar)");
+            // Pairs that cross and pairs that overlap in one plane are counted apart, and said apart.
+            StringBuilder line = new StringBuilder("collisions: ").append(crossingPairs)
+                    .append(crossingPairs == 1 ? " crossing pair" : " crossing pairs").append(" (").append(capPairs).append(" with caps)");
             if (deepest != null) {
                 line.append(String.format(Locale.ROOT, ", deepest %.4g T (faces %d and %d)", deepest.depth(), deepest.faceA(), deepest.faceB()));
             }
+            line.append(", ").append(coplanarPairs).append(coplanarPairs == 1 ? " pair" : " pairs").append(" overlapping in one plane");
             line.append(", ").append(modelCrossings).append(modelCrossings == 1 ? " paper-model crossing" : " paper-model crossings");
             if (deepestIntoModel != null) {
                 line.append(String.format(Locale.ROOT, " (deepest %.4g T, face %d into model triangle %d)",

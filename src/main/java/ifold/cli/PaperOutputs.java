@@ -35,7 +35,7 @@ import picocli.CommandLine.Option;
  * options). Every output is checked before any work, and written whole or not at all.
  */
 final class PaperOutputs {
-    @Option(names = "--export-obj", paramLabel = "FILE", description = "write the folded paper as OBJ: vt = paper coordinates, caps in group 'cap'")
+    @Option(names = "--export-obj", paramLabel = "FILE", description = "write the folded paper as OBJ: vt = paper coordinates, caps in group 'cap'; the paper written is checked for layers out of order and for collisions, a line each after the summary")
     Path exportObj;
 
     @Option(names = "--export-mesh", paramLabel = "FILE", description = "write the folded paper, caps included, as one mesh for"
@@ -46,7 +46,7 @@ final class PaperOutputs {
             + "FOLD file (docs/fold-format.md): Origami Simulator, Rabbit Ear and ORIPA read it")
     Path exportFold;
 
-    @Option(names = "--report", paramLabel = "FILE", description = "write the figures of the result as JSON")
+    @Option(names = "--report", paramLabel = "FILE", description = "write the figures of the result as JSON, the layer order and collisions of the paper among them (checked as for --export-obj)")
     Path report;
 
     @Option(names = "--no-view", description = "do not open the viewer, nor render frames unless --frames asks")

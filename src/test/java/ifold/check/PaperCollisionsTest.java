@@ -75,7 +75,7 @@ class PaperCollisionsTest {
         assertEquals(2, result.faces(), "setup: two quads");
         assertEquals(4, result.triangles(), "setup: fanned into two triangles each");
         assertClean(result);
-        assertEquals("collisions: 0 pairs (0 with caps, 0 coplanar), 0 paper-model crossings, 0 paper points inside the solid", result.summary());
+        assertEquals("collisions: 0 crossing pairs (0 with caps), 0 pairs overlapping in one plane, 0 paper-model crossings, 0 paper points inside the solid", result.summary());
     }
 
     /**
@@ -108,7 +108,7 @@ class PaperCollisionsTest {
         assertEquals(2, c.faceB());
         assertEquals(5, c.depth(), 1e-9);
         assertSegment(new double[] {-1.0 / 15, 0, 0}, new double[] {1.0 / 15, 0, 0}, c, 1e-12);
-        assertEquals(String.format(Locale.ROOT, "collisions: 1 pair (0 with caps, 0 coplanar), deepest %.4g T (faces 1 and 2), "
+        assertEquals(String.format(Locale.ROOT, "collisions: 1 crossing pair (0 with caps), deepest %.4g T (faces 1 and 2), 0 pairs overlapping in one plane, "
                 + "0 paper-model crossings, 0 paper points inside the solid", 5.0), result.summary());
         assertEquals(result.crossings(), java.util.List.of(c), "the list holds the one crossing");
         // Far from the origin the same, to rounding of the coordinates' size.
@@ -348,7 +348,7 @@ class PaperCollisionsTest {
         assertTrue(c.coplanar());
         assertEquals(0, c.depth());
         assertSegment(new double[] {0.8, 0.2, 0}, new double[] {0.2, 0.8, 0}, c, 1e-12);
-        assertTrue(result.summary().startsWith("collisions: 0 pairs (0 with caps, 1 coplanar)"), result.summary());
+        assertTrue(result.summary().startsWith("collisions: 0 crossing pairs (0 with caps), 1 pair overlapping in one plane"), result.summary());
         // Side by side in the plane, sharing an edge (repeated vertices) or just apart: no overlap.
         assertClean(check("o strip-1\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\ng paper\nf 1 2 3\nf 4 5 6\n"));
         assertClean(check("o strip-1\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 0.000001 0\nv 0 1.000001 0\nv 1 1 0\ng paper\nf 1 2 3\nf 4 5 6\n"));

@@ -46,7 +46,7 @@ class WrapCommandTest {
                 new double[0]);
         assertEquals(check.crossingPairs(), CliTest.number(json, "pairs"), 0, json);
         assertEquals(check.deepest() == null ? 0 : check.deepest().depth(), CliTest.number(json, "deepest"), 0, json);
-        assertTrue(run.out().contains("\ncollisions: " + check.crossingPairs() + " pairs"), run.out());
+        assertTrue(run.out().contains("\ncollisions: " + check.crossingPairs() + " crossing pair"), run.out());
     }
 
     /**
