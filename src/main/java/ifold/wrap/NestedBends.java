@@ -120,15 +120,23 @@ final class NestedBends {
      * for among the lines of its bucket and the two beside it whose offsets are near its own.
      */
     private static List<List<Integer>> lines(List<Bend> bends, List<Integer> onHost, double tolerance) {
-        Integer[] byLength = onHost.toArray(new Integer[0]);
-        Arrays.sort(byLength, (i, j) -> Double.compare(length(bends.get(j)), length(bends.get(i))));
+        // Longest first: by length, packed with the place in onHost in a long (lengths are not negative).
+        long[] keyed = new long[onHost.size()];
+        for (int i = 0; i < keyed.length; i++) {
+            keyed[i] = ((long) Float.floatToIntBits((float) length(bends.get(onHost.get(i)))) << 32) | i;
+        }
+        Arrays.sort(keyed);
+        Integer[] byLength = new Integer[keyed.length];
+        for (int i = 0; i < keyed.length; i++) {
+            byLength[keyed.length - 1 - i] = onHost.get((int) (keyed[i] & 0xFFFFFFFFL));
+        }
         double span = 0;
         double originX = bends.get(byLength[0]).ax();
         double originY = bends.get(byLength[0]).ay();
         for (int k : byLength) {
             Bend bend = bends.get(k);
-            span = Math.max(span, Math.max(Math.hypot(bend.ax() - originX, bend.ay() - originY), Math.hypot(bend.bx() - originX,
-                    bend.by() - originY)));
+            span = Math.max(span, Math.max(length(bend.ax() - originX, bend.ay() - originY),
+                    length(bend.bx() - originX, bend.by() - originY)));
         }
         int bucketCount = (int) Math.ceil(Math.PI / DIRECTION_BUCKET);
         // Offsets measured along a bucket's own normal, for lines up to a bucket apart in
@@ -183,7 +191,7 @@ final class NestedBends {
     }
 
     private static double length(Bend bend) {
-        return Math.hypot(bend.bx() - bend.ax(), bend.by() - bend.ay());
+        return length(bend.bx() - bend.ax(), bend.by() - bend.ay());
     }
 
     private static long key(long cx, long cy) {
@@ -193,7 +201,7 @@ final class NestedBends {
     private static double distanceToLine(double x, double y, Bend line) {
         double dx = line.bx() - line.ax();
         double dy = line.by() - line.ay();
-        return Math.abs((x - line.ax()) * dy - (y - line.ay()) * dx) / Math.hypot(dx, dy);
+        return Math.abs((x - line.ax()) * dy - (y - line.ay()) * dx) / length(dx, dy);
     }
 
     /** Where along the line each of its bends runs, from the first one's end a. */
@@ -201,7 +209,7 @@ final class NestedBends {
         Bend first = bends.get(line.get(0));
         double dx = first.bx() - first.ax();
         double dy = first.by() - first.ay();
-        double length = Math.hypot(dx, dy);
+        double length = length(dx, dy);
         dx /= length;
         dy /= length;
         for (int k : line) {
@@ -294,30 +302,43 @@ final class NestedBends {
         // its crease leaves it: thousands of creases can end at one corner, and only those
         // leaving it into a row's band, the first from the row's own crease, matter.
         int endCount = 2 * bends.size();
+        // Only the cells that rows standing out look in are kept, and the ends that lie in them.
         LongIntMap cellIds = new LongIntMap();
         int cellCount = 0;
+        long[] near = new long[9];
+        for (int e = 0; e < endCount; e++) {
+            if (out[e / 2] > 0) {
+                for (int k = near(e, near) - 1; k >= 0; k--) {
+                    if (cellIds.get(near[k], -1) < 0) {
+                        cellIds.put(near[k], cellCount++);
+                    }
+                }
+            }
+        }
         int[] cellOf = new int[endCount];
+        int kept = 0;
         for (int e = 0; e < endCount; e++) {
             cellOf[e] = cellIds.get(cell(e), -1);
-            if (cellOf[e] < 0) {
-                cellOf[e] = cellCount++;
-                cellIds.put(cell(e), cellOf[e]);
-            }
+            kept += cellOf[e] >= 0 ? 1 : 0;
         }
         // Each cell's ends, cell after cell (start[c] to start[c + 1]), each cell's by direction.
         int[] start = new int[cellCount + 1];
         for (int e = 0; e < endCount; e++) {
-            start[cellOf[e] + 1]++;
+            if (cellOf[e] >= 0) {
+                start[cellOf[e] + 1]++;
+            }
         }
         for (int c = 0; c < cellCount; c++) {
             start[c + 1] += start[c];
         }
-        int[] ends = new int[endCount];
+        int[] ends = new int[kept];
         int[] fill = Arrays.copyOf(start, cellCount);
         for (int e = 0; e < endCount; e++) {
-            ends[fill[cellOf[e]]++] = e;
+            if (cellOf[e] >= 0) {
+                ends[fill[cellOf[e]]++] = e;
+            }
         }
-        double[] angle = new double[endCount];
+        double[] angle = new double[kept];
         for (int c = 0; c < cellCount; c++) {
             sortByDirection(ends, angle, start[c], start[c + 1]);
         }
@@ -325,10 +346,10 @@ final class NestedBends {
         // run the stop moves with how far the run's bends stand out alone, so the least (or most)
         // of those among the run's bends whose layers meet the row's is the one to stop on; a
         // corner where a tuck folded a hundred layers along one edge is one run.
-        int[] runStart = new int[endCount + 1];
-        double[] runAngle = new double[endCount];
-        int[] runLow = new int[endCount];
-        int[] runHigh = new int[endCount];
+        int[] runStart = new int[kept + 1];
+        double[] runAngle = new double[kept];
+        int[] runLow = new int[kept];
+        int[] runHigh = new int[kept];
         int[] cellRuns = new int[cellCount + 1];
         int runs = 0;
         for (int c = 0; c < cellCount; c++) {
@@ -349,7 +370,7 @@ final class NestedBends {
             }
         }
         cellRuns[cellCount] = runs;
-        runStart[runs] = endCount;
+        runStart[runs] = kept;
         double least = Math.asin(MITRED_SINE);
         boolean[] wall = new boolean[1];
         for (int e = 0; e < 2 * bends.size(); e++) {
@@ -362,41 +383,33 @@ final class NestedBends {
             double intoX = Math.cos(own);
             double intoY = Math.sin(own);
             int side = intoX * bend.ny() - intoY * bend.nx() > 0 ? 1 : -1;
-            // The ends at e's point: in its cell, and in the cells beside it where e lies within
-            // a tenth of a cell of their side (the ends of creases that meet agree to rounding).
-            double gx = x(e) / tolerance;
-            double gy = y(e) / tolerance;
-            long cx = (long) Math.floor(gx);
-            long cy = (long) Math.floor(gy);
-            for (long i = gx - cx < 0.1 ? -1 : 0; i <= (cx + 1 - gx < 0.1 ? 1 : 0); i++) {
-                for (long j = gy - cy < 0.1 ? -1 : 0; j <= (cy + 1 - gy < 0.1 ? 1 : 0); j++) {
-                    int c = cellIds.get(cell(bend.host(), cx + i, cy + j), -1);
-                    if (c < 0) {
+            for (int at = near(e, near) - 1; at >= 0; at--) {
+                int c = cellIds.get(near[at], -1);
+                if (c < 0) {
+                    continue;
+                }
+                int from = cellRuns[c];
+                int n = cellRuns[c + 1] - from;
+                // From just past the crease's own direction, turning towards the side it stands out on.
+                int k = Arrays.binarySearch(runAngle, from, from + n, wrap(own + side * least));
+                k = (k >= 0 ? k : -k - 1) - from;
+                if (side < 0) {
+                    k--;
+                }
+                for (int step = 0; step < n; step++, k += side) {
+                    int run = from + Math.floorMod(k, n);
+                    double turn = side * wrap(runAngle[run] - own);
+                    if (turn < least || turn > Math.PI / 2) {
+                        break; // out of the band (or round past it, back to the crease)
+                    }
+                    if (lineOf[ends[runStart[run]] / 2] == lineOf[e / 2] || runLow[run] >= bend.high() || bend.low() >= runHigh[run]) {
                         continue;
                     }
-                    int from = cellRuns[c];
-                    int n = cellRuns[c + 1] - from;
-                    // From just past the crease's own direction, turning towards the side it stands out on.
-                    int k = Arrays.binarySearch(runAngle, from, from + n, wrap(own + side * least));
-                    k = (k >= 0 ? k : -k - 1) - from;
-                    if (side < 0) {
-                        k--;
-                    }
-                    for (int step = 0; step < n; step++, k += side) {
-                        int run = from + Math.floorMod(k, n);
-                        double turn = side * wrap(runAngle[run] - own);
-                        if (turn < least || turn > Math.PI / 2) {
-                            break; // out of the band (or round past it, back to the crease)
-                        }
-                        if (lineOf[ends[runStart[run]] / 2] == lineOf[e / 2] || runLow[run] >= bend.high() || bend.low() >= runHigh[run]) {
-                            continue;
-                        }
-                        past[e] = Math.min(past[e], stop(e, ends, runStart[run], runStart[run + 1], out, wall));
-                        if (wall[0]) {
-                            // A wall on its crease: those turned farther from the row's crease
-                            // cross the row nearer its end, and stop it less.
-                            break;
-                        }
+                    past[e] = Math.min(past[e], stop(e, ends, runStart[run], runStart[run + 1], out, wall));
+                    if (wall[0]) {
+                        // A wall on its crease: those turned farther from the row's crease
+                        // cross the row nearer its end, and stop it less.
+                        break;
                     }
                 }
             }
@@ -413,7 +426,7 @@ final class NestedBends {
     private double stop(int e, int[] ends, int from, int to, double[] out, boolean[] wall) {
         Bend bend = bends.get(e / 2);
         Bend line = bends.get(ends[from] / 2);
-        double length = Math.hypot(bend.bx() - bend.ax(), bend.by() - bend.ay());
+        double length = length(bend.bx() - bend.ax(), bend.by() - bend.ay());
         double dx = (bend.bx() - bend.ax()) / length * (e % 2 == 0 ? -1 : 1);
         double dy = (bend.by() - bend.ay()) / length * (e % 2 == 0 ? -1 : 1);
         boolean least = dx * line.nx() + dy * line.ny() > 0;
@@ -422,7 +435,7 @@ final class NestedBends {
         for (int i = from; i < to; i++) {
             int f = ends[i];
             Bend other = bends.get(f / 2);
-            if (Math.hypot(x(f) - x(e), y(f) - y(e)) <= tolerance && other.low() < bend.high() && bend.low() < other.high()) {
+            if (length(x(f) - x(e), y(f) - y(e)) <= tolerance && other.low() < bend.high() && bend.low() < other.high()) {
                 wall[0] |= out[f / 2] == 0;
                 if (best < 0 || (least ? out[f / 2] < out[best / 2] : out[f / 2] > out[best / 2])) {
                     best = f;
@@ -439,7 +452,7 @@ final class NestedBends {
     private double mitre(int e, int f, double[] out) {
         Bend bend = bends.get(e / 2);
         Bend other = bends.get(f / 2);
-        double length = Math.hypot(bend.bx() - bend.ax(), bend.by() - bend.ay());
+        double length = length(bend.bx() - bend.ax(), bend.by() - bend.ay());
         // The crease's direction away from its other end.
         double dx = (bend.bx() - bend.ax()) / length * (e % 2 == 0 ? -1 : 1);
         double dy = (bend.by() - bend.ay()) / length * (e % 2 == 0 ? -1 : 1);
@@ -484,6 +497,26 @@ final class NestedBends {
         return angle - 2 * Math.PI * Math.floor((angle + Math.PI) / (2 * Math.PI));
     }
 
+    /**
+     * The cells that hold the ends at end e's point, into {@code cells}; returns how many: its
+     * own, and those beside it where e lies within a tenth of a cell of their side (the ends of
+     * creases that meet agree to rounding).
+     */
+    private int near(int e, long[] cells) {
+        double gx = x(e) / tolerance;
+        double gy = y(e) / tolerance;
+        long cx = (long) Math.floor(gx);
+        long cy = (long) Math.floor(gy);
+        int host = bends.get(e / 2).host();
+        int n = 0;
+        for (long i = gx - cx < 0.1 ? -1 : 0; i <= (cx + 1 - gx < 0.1 ? 1 : 0); i++) {
+            for (long j = gy - cy < 0.1 ? -1 : 0; j <= (cy + 1 - gy < 0.1 ? 1 : 0); j++) {
+                cells[n++] = cell(host, cx + i, cy + j);
+            }
+        }
+        return n;
+    }
+
     /** Where end e lies: bend e / 2's end a for even e, b for odd. */
     private double x(int e) {
         Bend bend = bends.get(e / 2);
@@ -510,5 +543,10 @@ final class NestedBends {
 
     private static int gap(Bend bend) {
         return bend.high() - bend.low();
+    }
+
+    /** The length of (dx, dy): Math.hypot guards against overflow at a cost its many calls here felt; these are lengths within one host. */
+    private static double length(double dx, double dy) {
+        return Math.sqrt(dx * dx + dy * dy);
     }
 }

@@ -238,7 +238,7 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
             double ay = pose.y(sheet.u(a), sheet.v(a));
             double bx = pose.x(sheet.u(b), sheet.v(b));
             double by = pose.y(sheet.u(b), sheet.v(b));
-            double length = Math.hypot(bx - ax, by - ay);
+            double length = length(bx - ax, by - ay);
             // Face f runs counter-clockwise on the sheet; placed mirrored it runs clockwise, and
             // its inside is to the right of a -> b instead of the left.
             double nx = (by - ay) / length;
@@ -257,7 +257,7 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
          */
         private int row(int f, NestedBends.Bend bend, int p, double out, double along, double height) {
             Isometry2 pose = sheet.pose(f);
-            double length = Math.hypot(bend.bx() - bend.ax(), bend.by() - bend.ay());
+            double length = length(bend.bx() - bend.ax(), bend.by() - bend.ay());
             double px = pose.x(sheet.u(p), sheet.v(p)) + bend.nx() * out + (bend.bx() - bend.ax()) / length * along;
             double py = pose.y(sheet.u(p), sheet.v(p)) + bend.ny() * out + (bend.by() - bend.ay()) / length * along;
             double[] point = new double[3];
@@ -269,6 +269,11 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
             }
             copyHost[v] = -1;
             return v;
+        }
+
+        /** The length of (dx, dy): Math.hypot guards against overflow at a cost its many calls here felt; these are lengths within one host. */
+        private static double length(double dx, double dy) {
+            return Math.sqrt(dx * dx + dy * dy);
         }
 
         private boolean closer(int copy, double[] point, double distance) {
