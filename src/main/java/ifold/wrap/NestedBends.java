@@ -21,6 +21,11 @@ import java.util.Map;
  * on its line: 0 for one that wraps none. Folds on one line with layers that neither nest nor
  * keep apart would cross at any thickness (a layer order of paper without thickness forbids
  * them); they keep rank 0.
+ *
+ * <p>Found once for a strip's flat folds ({@link #of}), the lines also serve where bends cannot
+ * stand out as far as their ranks ask ({@link #keepNested}: those they wrap stand out less
+ * still) and where two creases meet at a corner ({@link #mitres}: a row stops on the other's
+ * wall rather than run through it).
  */
 final class NestedBends {
     /**
