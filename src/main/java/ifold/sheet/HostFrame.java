@@ -52,7 +52,7 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
             double py = corners[2 * k + 1];
             double dx = corners[2 * ((k + 1) % n)] - px;
             double dy = corners[2 * ((k + 1) % n) + 1] - py;
-            double length = length(dx, dy);
+            double length = Polygons2.length(dx, dy);
             double ta = ((ax - px) * dx + (ay - py) * dy) / length;
             double tb = ((bx - px) * dx + (by - py) * dy) / length;
             double shared = Math.min(length, Math.max(ta, tb)) - Math.max(0, Math.min(ta, tb));
@@ -74,7 +74,7 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
         double py = corners[2 * k + 1];
         double dx = corners[2 * ((k + 1) % n)] - px;
         double dy = corners[2 * ((k + 1) % n) + 1] - py;
-        double length = length(dx, dy);
+        double length = Polygons2.length(dx, dy);
         return length > 0 && Math.abs((ax - px) * dy - (ay - py) * dx) / length <= tolerance
                 && Math.abs((bx - px) * dy - (by - py) * dx) / length <= tolerance;
     }
@@ -122,7 +122,7 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
             double py = corners[2 * k + 1];
             double dx = corners[2 * ((k + 1) % n)] - px;
             double dy = corners[2 * ((k + 1) % n) + 1] - py;
-            double length = length(dx, dy);
+            double length = Polygons2.length(dx, dy);
             if (!(length > 0)) {
                 continue;
             }
@@ -182,8 +182,4 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
         return new double[] {a[0] / length, a[1] / length, a[2] / length};
     }
 
-    /** The length of (dx, dy): Math.hypot guards against overflow at a cost its many calls here felt; these are lengths within one host. */
-    private static double length(double dx, double dy) {
-        return Math.sqrt(dx * dx + dy * dy);
-    }
 }

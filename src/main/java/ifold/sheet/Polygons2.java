@@ -88,6 +88,14 @@ public final class Polygons2 {
         return Arrays.copyOf(out, 2 * m);
     }
 
+    /**
+     * The length of the vector (dx, dy): lengths within one host or sheet, where Math.hypot's
+     * guard against overflow buys nothing and costs (a wrap's geometry measures millions).
+     */
+    public static double length(double dx, double dy) {
+        return Math.sqrt(dx * dx + dy * dy);
+    }
+
     /** The length around a polygon of {@code n} corners. */
     public static double perimeter(double[] xy, int n) {
         double around = 0;

@@ -1,6 +1,7 @@
 package ifold.wrap;
 
 import ifold.sheet.LongIntMap;
+import ifold.sheet.Polygons2;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashMap;
@@ -140,8 +141,8 @@ final class NestedBends {
         double originY = bends.get(byLength[0]).ay();
         for (int k : byLength) {
             Bend bend = bends.get(k);
-            span = Math.max(span, Math.max(length(bend.ax() - originX, bend.ay() - originY),
-                    length(bend.bx() - originX, bend.by() - originY)));
+            span = Math.max(span, Math.max(Polygons2.length(bend.ax() - originX, bend.ay() - originY),
+                    Polygons2.length(bend.bx() - originX, bend.by() - originY)));
         }
         int bucketCount = (int) Math.ceil(Math.PI / DIRECTION_BUCKET);
         // Offsets measured along a bucket's own normal, for lines up to a bucket apart in
@@ -196,7 +197,7 @@ final class NestedBends {
     }
 
     private static double length(Bend bend) {
-        return length(bend.bx() - bend.ax(), bend.by() - bend.ay());
+        return Polygons2.length(bend.bx() - bend.ax(), bend.by() - bend.ay());
     }
 
     private static long key(long cx, long cy) {
@@ -206,7 +207,7 @@ final class NestedBends {
     private static double distanceToLine(double x, double y, Bend line) {
         double dx = line.bx() - line.ax();
         double dy = line.by() - line.ay();
-        return Math.abs((x - line.ax()) * dy - (y - line.ay()) * dx) / length(dx, dy);
+        return Math.abs((x - line.ax()) * dy - (y - line.ay()) * dx) / Polygons2.length(dx, dy);
     }
 
     /** Where along the line each of its bends runs, from the first one's end a. */
@@ -214,7 +215,7 @@ final class NestedBends {
         Bend first = bends.get(line.get(0));
         double dx = first.bx() - first.ax();
         double dy = first.by() - first.ay();
-        double length = length(dx, dy);
+        double length = Polygons2.length(dx, dy);
         dx /= length;
         dy /= length;
         for (int k : line) {
@@ -292,8 +293,9 @@ final class NestedBends {
      * overlapping this one's, and its crease leaves that point into the band this bend's row
      * stands out over (between the crease and the direction it stands out in), the row stepped
      * out whole would run through that bend's wall: it stops short on that one's line (moved out
-     * by its {@code out}), mitred as the edges of a picture frame are, on the first such crease
-     * from its own. Entry 2k is how far bend k's row runs on past its end (ax, ay), along the
+     * by its {@code out}), mitred as the edges of a picture frame are: the farthest short of the
+     * creases met, turning from its own, up to the first that stands on its crease (those beyond
+     * cross the row nearer its end). Entry 2k is how far bend k's row runs on past its end (ax, ay), along the
      * crease and away from its other end (negative: it stops short of it), 2k + 1 the same at
      * (bx, by). Corners nearly in line, whose mitre lies far off, and creases too short to stop
      * half their length short, are left square.
@@ -431,7 +433,7 @@ final class NestedBends {
     private double stop(int e, int[] ends, int from, int to, double[] out, boolean[] wall) {
         Bend bend = bends.get(e / 2);
         Bend line = bends.get(ends[from] / 2);
-        double length = length(bend.bx() - bend.ax(), bend.by() - bend.ay());
+        double length = Polygons2.length(bend.bx() - bend.ax(), bend.by() - bend.ay());
         double dx = (bend.bx() - bend.ax()) / length * (e % 2 == 0 ? -1 : 1);
         double dy = (bend.by() - bend.ay()) / length * (e % 2 == 0 ? -1 : 1);
         boolean least = dx * line.nx() + dy * line.ny() > 0;
@@ -440,7 +442,7 @@ final class NestedBends {
         for (int i = from; i < to; i++) {
             int f = ends[i];
             Bend other = bends.get(f / 2);
-            if (length(x(f) - x(e), y(f) - y(e)) <= tolerance && other.low() < bend.high() && bend.low() < other.high()) {
+            if (Polygons2.length(x(f) - x(e), y(f) - y(e)) <= tolerance && other.low() < bend.high() && bend.low() < other.high()) {
                 wall[0] |= out[f / 2] == 0;
                 if (best < 0 || (least ? out[f / 2] < out[best / 2] : out[f / 2] > out[best / 2])) {
                     best = f;
@@ -457,7 +459,7 @@ final class NestedBends {
     private double mitre(int e, int f, double[] out) {
         Bend bend = bends.get(e / 2);
         Bend other = bends.get(f / 2);
-        double length = length(bend.bx() - bend.ax(), bend.by() - bend.ay());
+        double length = Polygons2.length(bend.bx() - bend.ax(), bend.by() - bend.ay());
         // The crease's direction away from its other end.
         double dx = (bend.bx() - bend.ax()) / length * (e % 2 == 0 ? -1 : 1);
         double dy = (bend.by() - bend.ay()) / length * (e % 2 == 0 ? -1 : 1);
@@ -550,8 +552,4 @@ final class NestedBends {
         return bend.high() - bend.low();
     }
 
-    /** The length of (dx, dy): Math.hypot guards against overflow at a cost its many calls here felt; these are lengths within one host. */
-    private static double length(double dx, double dy) {
-        return Math.sqrt(dx * dx + dy * dy);
-    }
 }

@@ -2,6 +2,7 @@ package ifold.wrap;
 
 import ifold.sheet.HostFrame;
 import ifold.sheet.Isometry2;
+import ifold.sheet.Polygons2;
 import ifold.sheet.Sheet;
 import java.util.ArrayList;
 import java.util.List;
@@ -136,6 +137,9 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 // is narrow: the lower side then leans out at the room's slope s, and a bend of
                 // rank r (its layers at least 2r + 1 apart) keeps a wall between its two sides:
                 // r·step·(1/s + 1) <= 2r·T.
+                if (ranks[k] == 0) {
+                    continue; // on its crease whatever the room
+                }
                 HostFrame frame = frames[bend.host()];
                 slopes[k] = frame.roomBeyond(bend.ax(), bend.ay(), bend.bx(), bend.by(), sheet.tolerance());
                 double out = ranks[k] * sheet.thickness() * Math.min(1, 2 * slopes[k] / (1 + slopes[k]));
@@ -238,7 +242,7 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
             double ay = pose.y(sheet.u(a), sheet.v(a));
             double bx = pose.x(sheet.u(b), sheet.v(b));
             double by = pose.y(sheet.u(b), sheet.v(b));
-            double length = length(bx - ax, by - ay);
+            double length = Polygons2.length(bx - ax, by - ay);
             // Face f runs counter-clockwise on the sheet; placed mirrored it runs clockwise, and
             // its inside is to the right of a -> b instead of the left.
             double nx = (by - ay) / length;
@@ -257,7 +261,7 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
          */
         private int row(int f, NestedBends.Bend bend, int p, double out, double along, double height) {
             Isometry2 pose = sheet.pose(f);
-            double length = length(bend.bx() - bend.ax(), bend.by() - bend.ay());
+            double length = Polygons2.length(bend.bx() - bend.ax(), bend.by() - bend.ay());
             double px = pose.x(sheet.u(p), sheet.v(p)) + bend.nx() * out + (bend.bx() - bend.ax()) / length * along;
             double py = pose.y(sheet.u(p), sheet.v(p)) + bend.ny() * out + (bend.by() - bend.ay()) / length * along;
             double[] point = new double[3];
@@ -271,10 +275,6 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
             return v;
         }
 
-        /** The length of (dx, dy): Math.hypot guards against overflow at a cost its many calls here felt; these are lengths within one host. */
-        private static double length(double dx, double dy) {
-            return Math.sqrt(dx * dx + dy * dy);
-        }
 
         private boolean closer(int copy, double[] point, double distance) {
             double dx = xyz[3 * copy] - point[0];
