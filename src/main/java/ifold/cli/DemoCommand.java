@@ -16,6 +16,7 @@ import ifold.sheet.Sheet;
 import ifold.wrap.ParameterException;
 import ifold.wrap.TurnGadget;
 import ifold.wrap.Wrap;
+import ifold.wrap.PlacedWrap;
 import ifold.wrap.WrapAnalysis;
 import ifold.wrap.WrapGeometry;
 import java.io.IOException;
@@ -117,8 +118,9 @@ final class DemoCommand implements Runnable {
             } catch (Wrap.WrapException e) {
                 throw new UserError("cannot wrap this triangle: " + e.getMessage());
             }
-            List<WrapGeometry> geometries = List.of(WrapGeometry.of(result.strips().get(0).sheet(), result.frames()));
-            WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
+            PlacedWrap placed = PlacedWrap.of(result);
+            List<WrapGeometry> geometries = placed.geometries();
+            WrapAnalysis analysis = placed.analysis();
             Sheet sheet = result.strips().get(0).sheet();
             int turns = result.count(Wrap.Kind.ZIGZAG_TURN);
             int overlaps = result.count(Wrap.Kind.OVERLAP);
@@ -202,8 +204,9 @@ final class DemoCommand implements Runnable {
                 throw new UserError("cannot make this turn: " + e.getMessage());
             }
             Wrap.Result result = gadget.wrap();
-            List<WrapGeometry> geometries = List.of(WrapGeometry.of(gadget.sheet(), result.frames()));
-            WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
+            PlacedWrap placed = PlacedWrap.of(result);
+            List<WrapGeometry> geometries = placed.geometries();
+            WrapAnalysis analysis = placed.analysis();
             Map<String, Object> figures = Reports.turn(options, gadget, analysis);
             outputs.exportFold(List.of(new FoldFile.Folded(gadget.sheet(), result.frames())),
                     String.format(Locale.ROOT, "demo turn --angle %s", angle), figures, out);

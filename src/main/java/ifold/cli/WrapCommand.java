@@ -16,6 +16,7 @@ import ifold.scene.Scene;
 import ifold.wrap.LayerFloor;
 import ifold.wrap.ParameterException;
 import ifold.wrap.Wrap;
+import ifold.wrap.PlacedWrap;
 import ifold.wrap.WrapAnalysis;
 import ifold.wrap.WrapExport;
 import ifold.wrap.WrapGeometry;
@@ -127,11 +128,9 @@ final class WrapCommand implements Callable<Integer> {
             bar.wipe(); // before the summary or the error
         }
         long wrappedAt = System.nanoTime();
-        List<WrapGeometry> geometries = new ArrayList<>();
-        for (Wrap.Strip strip : result.strips()) {
-            geometries.add(WrapGeometry.of(strip.sheet(), result.frames()));
-        }
-        WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
+        PlacedWrap placed = PlacedWrap.of(result);
+        List<WrapGeometry> geometries = placed.geometries();
+        WrapAnalysis analysis = placed.analysis();
         long analysedAt = System.nanoTime();
         String stretched = Reports.stretched(analysis);
         if (stretched != null) {

@@ -108,8 +108,15 @@ public final class Sheet {
         LongList above = new LongList();
         int[] levels;
         int top = -1;
-        /** The faces by where they lie, once the stack is big enough; dropped when a face moves or leaves. */
+        /**
+         * The faces by where they lie, once the stack is big enough. A face that moves or leaves
+         * stays listed where it was ({@link #near} passes over it, and the faces it finds are
+         * only candidates): the grid is made again once those are as many as the faces, not at
+         * each tuck, which cost a big host's every face each time.
+         */
         FaceGrid grid;
+        /** The faces listed in the grid since it was made, those gone or moved since included. */
+        int gridListed;
 
         void add(int f) {
             if (count == faces.length) {
@@ -120,6 +127,7 @@ public final class Sheet {
             levels = null;
             if (grid != null) {
                 grid.add(f, placedCached(f));
+                gridListed++;
             }
         }
 
@@ -133,7 +141,6 @@ public final class Sheet {
             }
             count = n;
             levels = null;
-            grid = null;
         }
 
         /**
@@ -141,6 +148,9 @@ public final class Sheet {
          * grid cells its polygon meets): all of them while the stack is small.
          */
         int[] near(int f) {
+            if (grid != null && gridListed > 2 * count + GRID_FROM) {
+                grid = null; // more listed faces gone or moved than there are faces
+            }
             if (count >= GRID_FROM && grid == null) {
                 double[][] polygons = new double[count][];
                 for (int i = 0; i < count; i++) {
@@ -150,6 +160,7 @@ public final class Sheet {
                 for (int i = 0; i < count; i++) {
                     grid.add(faces[i], polygons[i]);
                 }
+                gridListed = count;
             }
             int[] listed = grid == null ? null : grid.near(placedCached(f));
             if (listed != null) {

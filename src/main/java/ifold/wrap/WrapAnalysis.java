@@ -51,29 +51,22 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
             int tucks) {
     }
 
+    /** The measures of {@code result}, whose strips' paper is placed in space as {@code geometries}. */
     public static WrapAnalysis of(Wrap.Result result, List<WrapGeometry> geometries) {
-        HostFrame[] frames = result.frames();
-        int maxLayers = 0;
-        int stackLevels = 0;
-        double covered = 0;
-        double surface = 0;
-        double paper = 0;
-        double outside = 0;
-        double farthest = 0;
-        int inside = 0;
-        double insideLength = 0;
-        int onEdges = 0;
-        double onEdgesLength = 0;
-        // Where the layers are most: strip, triangle, and a point inside the deepest cell.
-        int deepestStrip = -1;
-        int deepestTriangle = -1;
-        double[] deepestPoint = null;
-        for (int k = 0; k < result.strips().size(); k++) {
-            Wrap.Strip strip = result.strips().get(k);
-            Sheet sheet = strip.sheet();
-            paper += sheet.length() * sheet.width();
-            stackLevels = Math.max(stackLevels, sheet.stackLevels());
-            int[] levels = sheet.levels();
+        return start(result).finish(geometries);
+    }
+
+    /**
+     * The measures of a wrap begun: each host's arrangement of faces on the workers' threads,
+     * while the caller places the paper in space ({@link PlacedWrap}), which needs none of them.
+     */
+    static Started start(Wrap.Result result) {
+        List<List<Future<HostCells>>> pending = new ArrayList<>();
+        List<Map<Integer, List<Integer>>> hostsOfStrips = new ArrayList<>();
+        for (Wrap.Strip strip : result.strips()) {
+            // Every stack's levels found here, on this thread, before any worker reads them:
+            // the sheet keeps them once found, and placing the paper reads them too.
+            int[] levels = strip.sheet().levels();
             // Host by host (the strip's faces rest on hosts), triangle by triangle of each: a
             // host's arrangement of faces, passes of many triangles crossing, would cost far more.
             Map<Integer, List<Integer>> trianglesOn = new java.util.LinkedHashMap<>();
@@ -82,62 +75,116 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
             }
             // Hosts one by one on the workers' threads (their arrangements are independent), the
             // figures then taken in order: the same as one by one on one thread.
-            List<Future<HostCells>> pending = new ArrayList<>();
+            List<Future<HostCells>> hosts = new ArrayList<>();
             for (Map.Entry<Integer, List<Integer>> entry : trianglesOn.entrySet()) {
                 int host = entry.getKey();
                 List<Integer> triangles = entry.getValue();
-                pending.add(Workers.pool().submit(() -> hostCells(result, strip, levels, host, triangles)));
+                hosts.add(Workers.pool().submit(() -> hostCells(result, strip, levels, host, triangles)));
             }
-            int p = 0;
-            for (Map.Entry<Integer, List<Integer>> entry : trianglesOn.entrySet()) {
-                HostCells cells = Workers.result(pending.get(p++));
-                outside = Math.max(outside, cells.outside());
-                farthest = Math.max(farthest, cells.farthest());
-                List<Integer> triangles = entry.getValue();
-                for (int i = 0; i < triangles.size(); i++) {
-                    double[] figures = cells.triangles()[i];
-                    surface += figures[0];
-                    covered += figures[1];
-                    if ((int) figures[2] > maxLayers) {
-                        deepestStrip = k;
-                        deepestTriangle = triangles.get(i);
-                        deepestPoint = new double[] {figures[3], figures[4]};
-                    }
-                    maxLayers = Math.max(maxLayers, (int) figures[2]);
-                }
-            }
-            // Creases: along an edge of the model when they lie on one.
-            for (int f = 0; f < sheet.faceCount(); f++) {
-                int[] loop = sheet.loop(f);
-                for (int i = 0; i < loop.length; i++) {
-                    int a = loop[i];
-                    int b = loop[(i + 1) % loop.length];
-                    if (a > b && sheet.faceAcross(a, b) >= 0) {
-                        continue; // each crease once, from the face holding its lower-to-higher side
-                    }
-                    if (sheet.crease(a, b) == null) {
-                        continue;
-                    }
-                    double length = Math.hypot(sheet.u(b) - sheet.u(a), sheet.v(b) - sheet.v(a));
-                    if (onModelEdge(sheet, f, a, b, frames)) {
-                        onEdges++;
-                        onEdgesLength += length;
-                    } else {
-                        inside++;
-                        insideLength += length;
-                    }
+            pending.add(hosts);
+            hostsOfStrips.add(trianglesOn);
+        }
+        return new Started(result, pending, hostsOfStrips);
+    }
+
+    /** A wrap's measures being taken: {@link #finish} waits for them. */
+    static final class Started {
+        private final Wrap.Result result;
+        private final List<List<Future<HostCells>>> pending;
+        private final List<Map<Integer, List<Integer>>> hostsOfStrips;
+
+        private Started(Wrap.Result result, List<List<Future<HostCells>>> pending, List<Map<Integer, List<Integer>>> hostsOfStrips) {
+            this.result = result;
+            this.pending = pending;
+            this.hostsOfStrips = hostsOfStrips;
+        }
+
+        /** Stops the hosts' arrangements not yet begun (the caller failed or was stopped). */
+        void cancel() {
+            for (List<Future<HostCells>> hosts : pending) {
+                for (Future<HostCells> host : hosts) {
+                    host.cancel(false);
                 }
             }
         }
-        double isometry = 0;
-        for (WrapGeometry geometry : geometries) {
-            isometry = Math.max(isometry, isometryError(geometry, result.width()));
+
+        /** The measures, once every host's are taken, with the isometry of the paper as {@code geometries} place it. */
+        WrapAnalysis finish(List<WrapGeometry> geometries) {
+            HostFrame[] frames = result.frames();
+            int maxLayers = 0;
+            int stackLevels = 0;
+            double covered = 0;
+            double surface = 0;
+            double paper = 0;
+            double outside = 0;
+            double farthest = 0;
+            int inside = 0;
+            double insideLength = 0;
+            int onEdges = 0;
+            double onEdgesLength = 0;
+            // Where the layers are most: strip, triangle, and a point inside the deepest cell.
+            int deepestStrip = -1;
+            int deepestTriangle = -1;
+            double[] deepestPoint = null;
+            try {
+                for (int k = 0; k < result.strips().size(); k++) {
+                    Sheet sheet = result.strips().get(k).sheet();
+                    paper += sheet.length() * sheet.width();
+                    stackLevels = Math.max(stackLevels, sheet.stackLevels());
+                    int p = 0;
+                    for (Map.Entry<Integer, List<Integer>> entry : hostsOfStrips.get(k).entrySet()) {
+                        HostCells cells = Workers.result(pending.get(k).get(p++));
+                        outside = Math.max(outside, cells.outside());
+                        farthest = Math.max(farthest, cells.farthest());
+                        List<Integer> triangles = entry.getValue();
+                        for (int i = 0; i < triangles.size(); i++) {
+                            double[] figures = cells.triangles()[i];
+                            surface += figures[0];
+                            covered += figures[1];
+                            if ((int) figures[2] > maxLayers) {
+                                deepestStrip = k;
+                                deepestTriangle = triangles.get(i);
+                                deepestPoint = new double[] {figures[3], figures[4]};
+                            }
+                            maxLayers = Math.max(maxLayers, (int) figures[2]);
+                        }
+                    }
+                    // Creases: along an edge of the model when they lie on one.
+                    for (int f = 0; f < sheet.faceCount(); f++) {
+                        int[] loop = sheet.loop(f);
+                        for (int i = 0; i < loop.length; i++) {
+                            int a = loop[i];
+                            int b = loop[(i + 1) % loop.length];
+                            if (a > b && sheet.faceAcross(a, b) >= 0) {
+                                continue; // each crease once, from the face holding its lower-to-higher side
+                            }
+                            if (sheet.crease(a, b) == null) {
+                                continue;
+                            }
+                            double length = Math.hypot(sheet.u(b) - sheet.u(a), sheet.v(b) - sheet.v(a));
+                            if (onModelEdge(sheet, f, a, b, frames)) {
+                                onEdges++;
+                                onEdgesLength += length;
+                            } else {
+                                inside++;
+                                insideLength += length;
+                            }
+                        }
+                    }
+                }
+            } finally {
+                cancel(); // none left running where one failed
+            }
+            double isometry = 0;
+            for (WrapGeometry geometry : geometries) {
+                isometry = Math.max(isometry, isometryError(geometry, result.width()));
+            }
+            Deepest deepest = deepestStrip < 0 ? null
+                    : deepest(result.strips().get(deepestStrip).sheet(), deepestStrip, deepestTriangle, deepestPoint,
+                            result.hostOf()[deepestTriangle], frames[result.hostOf()[deepestTriangle]]);
+            return new WrapAnalysis(maxLayers, stackLevels, surface > 0 ? covered / surface : 0, surface, paper, outside, farthest,
+                    isometry, inside, insideLength, onEdges, onEdgesLength, deepest);
         }
-        Deepest deepest = deepestStrip < 0 ? null
-                : deepest(result.strips().get(deepestStrip).sheet(), deepestStrip, deepestTriangle, deepestPoint,
-                        result.hostOf()[deepestTriangle], frames[result.hostOf()[deepestTriangle]]);
-        return new WrapAnalysis(maxLayers, stackLevels, surface > 0 ? covered / surface : 0, surface, paper, outside, farthest,
-                isometry, inside, insideLength, onEdges, onEdgesLength, deepest);
     }
 
     /**
@@ -435,8 +482,24 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
     static double[] depths(double[] triangle, List<double[]> polygons, double tolerance) {
         // Buckets of about four faces each: finer, the grid's own lines cut the faces into more
         // cells than it saves in looking (the 1,280-triangle icosphere: 2.3 million cells at
-        // this size, 2.9 million at one face a bucket, 4.5 at a quarter).
-        Cells cells = new Cells(triangle, Math.max(1, (int) (0.5 * Math.sqrt(polygons.size()))), tolerance);
+        // this size, 2.9 million at one face a bucket, 4.5 at a quarter). Shaped as the faces
+        // are, on the whole: the passes run along x, and on a big triangle they are long and
+        // thin, so that square buckets each held a piece of dozens of passes, which every pass
+        // then looked through (a 10 x 10 face crossed by 12,000 passes: a minute).
+        int buckets = Math.max(1, polygons.size() / 4);
+        double[] box = Polygons2.bounds(triangle);
+        double wide = 0;
+        double tall = 0;
+        for (double[] polygon : polygons) {
+            double[] b = Polygons2.bounds(polygon);
+            wide += b[2] - b[0];
+            tall += b[3] - b[1];
+        }
+        // Across the triangle's box, as many buckets as faces side by side there, x to y.
+        double across = wide > 0 && tall > 0 ? ((box[2] - box[0]) / wide) / ((box[3] - box[1]) / tall) : 1;
+        int columns = (int) Math.max(1, Math.min(buckets, Math.round(Math.sqrt(buckets * across))));
+        int rows = Math.max(1, buckets / columns);
+        Cells cells = new Cells(triangle, columns, rows, tolerance);
         for (double[] polygon : polygons) {
             double[] p = counterClockwise(polygon);
             if (thinnerThan(p, tolerance)) {
@@ -472,8 +535,13 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
                     double most = Double.NEGATIVE_INFINITY;
                     for (int i = 0; i < rest.length; i += 2) {
                         double side = nx * rest[i] + ny * rest[i + 1] - c;
-                        least = Math.min(least, side);
-                        most = Math.max(most, side);
+                        // Comparisons, not Math.min and max: their care for NaN and -0 costs in this loop.
+                        if (side < least) {
+                            least = side;
+                        }
+                        if (side > most) {
+                            most = side;
+                        }
                     }
                     if (least >= -tolerance && most > tolerance) {
                         continue; // inside this edge
@@ -534,38 +602,40 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
         private final double minY;
         private final double cellWidth;
         private final double cellHeight;
-        private final int grid;
+        private final int columns;
+        private final int rows;
         private final double tolerance;
         private int[] seen = new int[64];
         private int visit;
         private int[] found = new int[16];
 
-        Cells(double[] triangle, int grid, double tolerance) {
+        Cells(double[] triangle, int columns, int rows, double tolerance) {
             double[] box = Polygons2.bounds(triangle);
-            this.grid = grid;
+            this.columns = columns;
+            this.rows = rows;
             this.minX = box[0];
             this.minY = box[1];
-            this.cellWidth = Math.max(box[2] - box[0], tolerance) / grid;
-            this.cellHeight = Math.max(box[3] - box[1], tolerance) / grid;
+            this.cellWidth = Math.max(box[2] - box[0], tolerance) / columns;
+            this.cellHeight = Math.max(box[3] - box[1], tolerance) / rows;
             this.tolerance = tolerance;
-            this.buckets = new int[grid * grid][];
-            for (int by = 0; by < grid; by++) {
-                for (int bx = 0; bx < grid; bx++) {
-                    buckets[by * grid + bx] = new int[5];
+            this.buckets = new int[columns * rows][];
+            for (int by = 0; by < rows; by++) {
+                for (int bx = 0; bx < columns; bx++) {
+                    buckets[by * columns + bx] = new int[5];
                     double[] piece = triangle.clone();
                     double x0 = minX + bx * cellWidth;
                     double y0 = minY + by * cellHeight;
                     // The grid's outer lines lie beyond the triangle, so that rounding loses none of it.
                     double left = bx == 0 ? Double.NEGATIVE_INFINITY : x0;
-                    double right = bx == grid - 1 ? Double.POSITIVE_INFINITY : x0 + cellWidth;
+                    double right = bx == columns - 1 ? Double.POSITIVE_INFINITY : x0 + cellWidth;
                     double bottom = by == 0 ? Double.NEGATIVE_INFINITY : y0;
-                    double top = by == grid - 1 ? Double.POSITIVE_INFINITY : y0 + cellHeight;
+                    double top = by == rows - 1 ? Double.POSITIVE_INFINITY : y0 + cellHeight;
                     piece = clipTo(piece, -1, 0, -left);
                     piece = clipTo(piece, 1, 0, right);
                     piece = clipTo(piece, 0, -1, -bottom);
                     piece = clipTo(piece, 0, 1, top);
                     if (piece != null) {
-                        add(piece, 0, by * grid + bx);
+                        add(piece, 0, by * columns + bx);
                     }
                 }
             }
@@ -626,10 +696,15 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
             int n = 0;
             for (int bx = column(box[0]); bx <= column(box[2]); bx++) {
                 for (int by = row(box[1]); by <= row(box[3]); by++) {
-                    int[] cells = buckets[by * grid + bx];
+                    int[] cells = buckets[by * columns + bx];
+                    int kept = 0; // the dead dropped from the bucket as it is read: a cell cut up leaves it for good
                     for (int k = 1; k <= cells[0]; k++) {
                         int id = cells[k];
-                        if (seen[id] == visit || depths[id] < 0) {
+                        if (depths[id] < 0) {
+                            continue;
+                        }
+                        cells[++kept] = id;
+                        if (seen[id] == visit) {
                             continue;
                         }
                         seen[id] = visit;
@@ -641,6 +716,7 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
                             found[n++] = id;
                         }
                     }
+                    cells[0] = kept;
                 }
             }
             return n;
@@ -663,16 +739,16 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
         }
 
         void remove(int id) {
-            depths[id] = -1; // its bucket forgets it lazily: near() skips the dead
+            depths[id] = -1; // its bucket forgets it lazily: near() drops the dead
             polygons[id] = null;
         }
 
         private int column(double x) {
-            return Math.max(0, Math.min(grid - 1, (int) Math.floor((x - minX) / cellWidth)));
+            return Math.max(0, Math.min(columns - 1, (int) Math.floor((x - minX) / cellWidth)));
         }
 
         private int row(double y) {
-            return Math.max(0, Math.min(grid - 1, (int) Math.floor((y - minY) / cellHeight)));
+            return Math.max(0, Math.min(rows - 1, (int) Math.floor((y - minY) / cellHeight)));
         }
 
         /** The area, the area covered, the most depth, and the centre of the largest cell of that depth. */

@@ -28,6 +28,7 @@ import ifold.sheet.FoldException;
 import ifold.wrap.ParameterException;
 import ifold.wrap.TurnGadget;
 import ifold.wrap.Wrap;
+import ifold.wrap.PlacedWrap;
 import ifold.wrap.WrapAnalysis;
 import ifold.wrap.WrapExport;
 import ifold.wrap.WrapGeometry;
@@ -197,8 +198,9 @@ public final class Planning {
         }
         progress.check();
         progress.stage("analysing");
-        List<WrapGeometry> geometries = List.of(WrapGeometry.of(result.strips().get(0).sheet(), result.frames()));
-        WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
+        PlacedWrap placed = PlacedWrap.of(result);
+        List<WrapGeometry> geometries = placed.geometries();
+        WrapAnalysis analysis = placed.analysis();
         Map<String, Object> figures = Reports.zigzag(job.triangle(), job.start(), job.end(), result, analysis);
         LayerOrders.addTo(figures, List.of(new FoldFile.Folded(result.strips().get(0).sheet(), result.frames())), "zigzag");
         Collisions.addTo(figures, geometries, result.thickness(), result.mesh());
@@ -218,8 +220,9 @@ public final class Planning {
             throw new JobFailure("cannot make this turn: " + e.getMessage());
         }
         Wrap.Result result = gadget.wrap();
-        List<WrapGeometry> geometries = List.of(WrapGeometry.of(gadget.sheet(), result.frames()));
-        WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
+        PlacedWrap placed = PlacedWrap.of(result);
+        List<WrapGeometry> geometries = placed.geometries();
+        WrapAnalysis analysis = placed.analysis();
         Map<String, Object> figures = Reports.turn(options, gadget, analysis);
         LayerOrders.addTo(figures, List.of(new FoldFile.Folded(gadget.sheet(), result.frames())), "turn");
         Collisions.addTo(figures, geometries, result.thickness(), result.mesh());
@@ -255,11 +258,9 @@ public final class Planning {
         }
         progress.check();
         progress.stage("analysing");
-        List<WrapGeometry> geometries = new ArrayList<>();
-        for (Wrap.Strip strip : result.strips()) {
-            geometries.add(WrapGeometry.of(strip.sheet(), result.frames()));
-        }
-        WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
+        PlacedWrap placed = PlacedWrap.of(result);
+        List<WrapGeometry> geometries = placed.geometries();
+        WrapAnalysis analysis = placed.analysis();
         String stretched = Reports.stretched(analysis);
         if (stretched != null) {
             throw new JobFailure(model + ": cannot wrap: " + stretched);
