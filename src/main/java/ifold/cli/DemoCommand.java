@@ -127,14 +127,14 @@ final class DemoCommand implements Runnable {
             int tucks = result.count(Wrap.Kind.TUCK);
             int passes = Reports.passes(result);
             Map<String, Object> figures = Reports.zigzag(triangle, startCorner, endCorner, result, analysis);
-            outputs.exportFold(List.of(new FoldFile.Folded(sheet, result.frames())), "demo zigzag --triangle " + triangle, figures, out);
-            outputs.write(result, geometries, "demo zigzag --triangle " + triangle, figures, out);
+            outputs.exportFold(List.of(new FoldFile.Folded(sheet, result.frames())), "demo zigzag --triangle " + triangle, figures);
+            outputs.write(result, geometries, "demo zigzag --triangle " + triangle, figures);
             out.printf(Locale.ROOT, "zigzag: strip %.4g x %.4g (L/w %.1f), %d passes%s, %d turn folds, %d tucks, %d layers at most (a stack of %d), "
                     + "paper efficiency %.3f, coverage %.3f, paper outside %.2g, isometry error %.1e%n",
                     sheet.length(), sheet.width(), sheet.length() / sheet.width(), passes, overlaps > 0 ? " (last overlapped)" : "",
                     turns + overlaps, tucks, analysis.maxLayers(), analysis.stackLevels(), analysis.surfaceArea() / analysis.paperArea(),
                     analysis.coverage(), WrapAnalysis.outsideArea(result), analysis.isometryError());
-            outputs.printChecks(out);
+            outputs.printChecksAndFiles(out);
             out.flush();
 
             Scene scene = new Scene();
@@ -144,7 +144,7 @@ final class DemoCommand implements Runnable {
                 try {
                     FrameExport.panel(scene, animation, stages, Scenes.FIGURE11_LABELS, 2, 800, 500, 4, figure);
                     outputs.wrote(figure);
-                    out.println("wrote " + figure);
+                    outputs.printFiles(out);
                 } catch (RenderUnavailableException e) {
                     outputs.discardWritten();
                     throw new UserError(e.getMessage());
@@ -209,11 +209,11 @@ final class DemoCommand implements Runnable {
             WrapAnalysis analysis = placed.analysis();
             Map<String, Object> figures = Reports.turn(options, gadget, analysis);
             outputs.exportFold(List.of(new FoldFile.Folded(gadget.sheet(), result.frames())),
-                    String.format(Locale.ROOT, "demo turn --angle %s", angle), figures, out);
-            outputs.write(result, geometries, String.format(Locale.ROOT, "demo turn --angle %s", angle), figures, out);
+                    String.format(Locale.ROOT, "demo turn --angle %s", angle), figures);
+            outputs.write(result, geometries, String.format(Locale.ROOT, "demo turn --angle %s", angle), figures);
             out.printf(Locale.ROOT, "turn: %.6g degrees asked, %.6g measured, top side %s, %d layers at most, strip %.4g x %.4g%n",
                     angle, gadget.measuredAngle(), gadget.endFacesUp() ? "up" : "down", analysis.maxLayers(), gadget.length(), width);
-            outputs.printChecks(out);
+            outputs.printChecksAndFiles(out);
             out.flush();
 
             Scene scene = new Scene();

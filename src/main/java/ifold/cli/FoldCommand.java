@@ -31,11 +31,12 @@ import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code ifold fold SCRIPT}: plays a fold script or a FOLD crease pattern, in the viewer or as frames, and exports the result. */
 @Command(name = "fold", mixinStandardHelpOptions = true,
-        description = {"Plays a fold script (docs/fold-scripts.md) or a FOLD file (JSON, as written by",
-            "--export-fold), whose crease pattern is folded one crease line at a time.",
-            "Each fold swings from 0 to its angle.",
-            "Without --frames it plays in the viewer (space plays, arrows step through the folds).",
-            "The animation takes ten seconds unless --seconds says otherwise."})
+        // One paragraph: the list of commands shows a description's first element alone.
+        description = {"Plays a fold script (docs/fold-scripts.md) or a FOLD file (JSON, as written by "
+            + "--export-fold), whose crease pattern is folded one crease line at a time. "
+            + "Each fold swings from 0 to its angle. "
+            + "Without --frames it plays in the viewer (space plays, arrows step through the folds). "
+            + "The animation takes ten seconds unless --seconds says otherwise."})
 final class FoldCommand implements Callable<Integer> {
 
     @Spec
@@ -101,17 +102,19 @@ final class FoldCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         Map<String, Object> figures = Reports.script(result, folded);
         figures.put("timing", timing(nanosPerFold, result.steps()));
-        // The FOLD file's folded state folds the script again on paper of no thickness: only when it is asked for.
-        outputs.exportFold(outputs.exportFold == null ? List.of() : List.of(FoldFile.Folded.ofScript(parsed, result, maxFaces)),
-                "ifold fold " + script, figures, out);
+        // The FOLD file's folded state folds the script again on paper of no thickness: only where a
+        // FOLD file is written or the layer order checked (from the same FOLD text, made in memory).
+        outputs.exportFold(outputs.checksLayerOrder() ? List.of(FoldFile.Folded.ofScript(parsed, result, maxFaces)) : List.of(),
+                "ifold fold " + script, figures);
         outputs.write(List.of(folded), result.sheet().thickness(), "iFold fold script " + script + ": " + result.steps().size() + " folds, thickness "
-                + result.sheet().thickness(), figures, out);
+                + result.sheet().thickness(), figures);
         int folds = result.steps().size();
         int creases = ((Number) figures.get("creases")).intValue();
-        out.printf(Locale.ROOT, "%s: %d %s, %d layers at most, %d %s, isometry error %.1e%n", script.getFileName(), folds,
-                folds == 1 ? "fold" : "folds", figures.get("maxLayers"), creases, creases == 1 ? "crease" : "creases",
+        int layers = ((Number) figures.get("maxLayers")).intValue();
+        out.printf(Locale.ROOT, "%s: %d %s, %d %s at most, %d %s, isometry error %.1e%n", script.getFileName(), folds,
+                folds == 1 ? "fold" : "folds", layers, layers == 1 ? "layer" : "layers", creases, creases == 1 ? "crease" : "creases",
                 (Double) figures.get("isometryError"));
-        outputs.printChecks(out);
+        outputs.printChecksAndFiles(out);
         out.flush();
 
         Scene scene = new Scene();

@@ -181,7 +181,12 @@ public final class Main implements Runnable {
             err.println("ifold: out of memory: give the JVM more, e.g. JAVA_OPTS=-Xmx8g");
             code = UserError.EXIT_CODE;
         }
-        out.flush();
+        // System.out swallows write errors: a full disk or a closed pipe under the summary is
+        // still a run whose output was lost, not a success.
+        if (out.checkError() && code == 0) {
+            err.println("ifold: cannot write to the standard output (a full disk, or a pipe closed): its lines are lost");
+            code = UserError.EXIT_CODE;
+        }
         ended = true;
         System.exit(code);
     }

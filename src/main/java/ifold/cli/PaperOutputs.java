@@ -56,6 +56,18 @@ final class PaperOutputs {
     FrameOptions frameOptions = new FrameOptions();
 
     /**
+     * The movie a command writes where no window can open and neither frames nor a movie were
+     * asked for, {@code name.mp4} ({@code name.gif} without ffmpeg), said on {@code err} with how
+     * to get frames instead.
+     */
+    static Path movieWithoutDisplay(String name, PrintWriter err) {
+        Path movie = Path.of(name + (ifold.image.Mp4Writer.available() ? ".mp4" : ".gif"));
+        err.println("ifold: no display: rendering the animation into " + movie.toAbsolutePath()
+                + " instead (--frames DIR for PNG frames, --movie FILE for another name)");
+        return movie;
+    }
+
+    /**
      * Checks every output before any work. With {@code movieWithoutDisplay}, where no window
      * can open and neither --frames nor --movie was given, the animation goes into one movie,
      * {@code name.mp4} ({@code name.gif} without ffmpeg), and it says where and how to get frames
@@ -75,9 +87,7 @@ final class PaperOutputs {
             OutputFiles.checkWritableFile(exportFold, "--export-fold", ".fold");
         }
         if (movieWithoutDisplay && !frameOptions.renders() && !noView && !hasDisplay()) {
-            frameOptions.movie = Path.of(name + (ifold.image.Mp4Writer.available() ? ".mp4" : ".gif"));
-            err.println("ifold: no display: rendering the animation into " + frameOptions.movie.toAbsolutePath()
-                    + " instead (--frames DIR for PNG frames, --movie FILE for another name)");
+            frameOptions.movie = movieWithoutDisplay(name, err);
         }
         frameOptions.check();
     }
@@ -85,9 +95,13 @@ final class PaperOutputs {
     /** The files this run wrote, to take back if a later output fails. */
     private final List<Path> written = new ArrayList<>();
 
-    /** Notes a file this run wrote by itself, so that a later failure takes it back too. */
+    /**
+     * Notes a file this run wrote, so that a later failure takes it back too, and says so once the
+     * summary is out ({@link #printFiles}).
+     */
     void wrote(Path file) {
         written.add(file);
+        wroteLines.add("wrote " + file);
     }
 
     /**
@@ -97,9 +111,9 @@ final class PaperOutputs {
      * independent checker, reading the FOLD file written (or its text), and adds
      * {@code layerOrder}.
      */
-    void exportFold(List<FoldFile.Folded> sheets, String title, Map<String, Object> figures, PrintWriter out) {
-        writeFold(sheets, title, figures, out);
-        if (exportFold == null && exportObj == null && exportMesh == null && report == null) {
+    void exportFold(List<FoldFile.Folded> sheets, String title, Map<String, Object> figures) {
+        writeFold(sheets, title, figures);
+        if (!checksLayerOrder()) {
             return;
         }
         long started = System.nanoTime();
@@ -113,20 +127,24 @@ final class PaperOutputs {
         layerOrderSeconds = (System.nanoTime() - started) * 1e-9;
     }
 
+    /** Whether the layer order is checked: where the paper is exported or reported. */
+    boolean checksLayerOrder() {
+        return exportFold != null || exportObj != null || exportMesh != null || report != null;
+    }
+
     /** The layer-order check's line, once made; null before. */
     private String layerOrder;
 
     /** The seconds the layer-order check took, 0 where none was made. */
     double layerOrderSeconds;
 
-    private void writeFold(List<FoldFile.Folded> sheets, String title, Map<String, Object> figures, PrintWriter out) {
+    private void writeFold(List<FoldFile.Folded> sheets, String title, Map<String, Object> figures) {
         if (exportFold == null) {
             return;
         }
         try {
             FoldFile.Counts counts = FoldFile.write(exportFold, title, sheets);
-            written.add(exportFold);
-            out.println("wrote " + exportFold);
+            wrote(exportFold);
             Map<String, Object> pattern = new java.util.LinkedHashMap<>();
             pattern.put("vertices", counts.vertices());
             pattern.put("faces", counts.faces());
@@ -147,16 +165,15 @@ final class PaperOutputs {
      * Writes folded paper (a fold script's, {@code thickness} thick, on planes of no model) as
      * OBJ under {@code header}, and its figures as JSON with its collisions, as asked.
      */
-    void write(List<WrapGeometry> folded, double thickness, String header, Map<String, Object> figures, PrintWriter out) {
+    void write(List<WrapGeometry> folded, double thickness, String header, Map<String, Object> figures) {
         try {
             if (exportObj != null) {
                 WrapExport.writeObj(exportObj, header, folded);
-                written.add(exportObj);
-                out.println("wrote " + exportObj);
+                wrote(exportObj);
             }
-            writeMesh(folded, out);
+            writeMesh(folded);
             checkCollisions(folded, thickness, null, figures);
-            writeReport(figures, out);
+            writeReport(figures);
         } catch (IOException e) {
             discardWritten();
             throw new UserError("cannot write: " + e.getMessage());
@@ -164,16 +181,15 @@ final class PaperOutputs {
     }
 
     /** Writes a wrap (or any folding on the sheet engine) as OBJ and its figures as JSON, as asked. */
-    void write(Wrap.Result result, List<WrapGeometry> geometries, String source, Map<String, Object> figures, PrintWriter out) {
+    void write(Wrap.Result result, List<WrapGeometry> geometries, String source, Map<String, Object> figures) {
         try {
             if (exportObj != null) {
                 WrapExport.writeObj(exportObj, source, result, geometries);
-                written.add(exportObj);
-                out.println("wrote " + exportObj);
+                wrote(exportObj);
             }
-            writeMesh(geometries, out);
+            writeMesh(geometries);
             checkCollisions(geometries, result.thickness(), result.mesh(), figures);
-            writeReport(figures, out);
+            writeReport(figures);
         } catch (IOException e) {
             discardWritten();
             throw new UserError("cannot write: " + e.getMessage());
@@ -181,13 +197,12 @@ final class PaperOutputs {
     }
 
     /** Writes the folded paper as one mesh ({@code --export-mesh}), where asked. */
-    private void writeMesh(List<WrapGeometry> folded, PrintWriter out) throws IOException {
+    private void writeMesh(List<WrapGeometry> folded) throws IOException {
         if (exportMesh == null) {
             return;
         }
         ifold.mesh.io.MeshWriters.write(WrapExport.paperMesh(folded), exportMesh);
-        written.add(exportMesh);
-        out.println("wrote " + exportMesh);
+        wrote(exportMesh);
     }
 
     /** The collision check's line, once a run that exports paper has made it; null before. */
@@ -211,22 +226,40 @@ final class PaperOutputs {
         }
     }
 
-    /** Prints the lines of the checks of the paper (its layer order, its collisions), where they were made. */
-    void printChecks(PrintWriter out) {
+    /**
+     * The lines saying which files were written, kept for after the summary: what was made comes
+     * first, then its checks, then where it went (and a failure, which takes the files back,
+     * prints none of them).
+     */
+    private final List<String> wroteLines = new ArrayList<>();
+
+    /**
+     * Prints, after the command's summary line, the lines of the checks of the paper (its layer
+     * order, its collisions), where they were made, then the files written.
+     */
+    void printChecksAndFiles(PrintWriter out) {
         if (layerOrder != null) {
             out.println(layerOrder);
         }
         if (collisions != null) {
             out.println(collisions);
         }
+        printFiles(out);
     }
 
-    private void writeReport(Map<String, Object> figures, PrintWriter out) throws IOException {
+    /** Prints the files written since the last call, one line each. */
+    void printFiles(PrintWriter out) {
+        for (String line : wroteLines) {
+            out.println(line);
+        }
+        wroteLines.clear();
+    }
+
+    private void writeReport(Map<String, Object> figures) throws IOException {
         if (report != null) {
             String json = Json.write(figures);
             AtomicFile.write(report, stream -> stream.write(json.getBytes(StandardCharsets.UTF_8)), true);
-            written.add(report);
-            out.println("wrote " + report);
+            wrote(report);
         }
     }
 

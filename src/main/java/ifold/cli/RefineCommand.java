@@ -100,8 +100,9 @@ final class RefineCommand implements Callable<Integer> {
             String prepared = path == null ? "" : String.format(java.util.Locale.ROOT, " -> %d prepared (%d of %d planar regions, min angle %.3f)",
                     path.preparation().trianglesAfter(), path.preparation().prepared(), path.preparation().regions(),
                     path.preparation().minAngleAfter());
-            out.printf(java.util.Locale.ROOT, "%s: %d triangles in %d component(s)%s -> %d triangles (5n-2c), min angle %.3f -> %.3f degrees%n",
-                    model, mesh.faceCount(), result.componentCount(), prepared, result.mesh().faceCount(), minIn, minOut);
+            out.printf(java.util.Locale.ROOT, "%s: %d %s in %d %s%s -> %d triangles (5n-2c), min angle %.3f -> %.3f degrees%n",
+                    model, mesh.faceCount(), mesh.faceCount() == 1 ? "triangle" : "triangles", result.componentCount(),
+                    result.componentCount() == 1 ? "component" : "components", prepared, result.mesh().faceCount(), minIn, minOut);
             out.println("wrote " + output + " (faces in path order)");
         }
         out.flush();

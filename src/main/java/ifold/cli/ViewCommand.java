@@ -23,7 +23,8 @@ import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code ifold view MODEL [--refine] [--path]}: the viewer, in a window or as frames. */
 @Command(name = "view", mixinStandardHelpOptions = true,
-        description = {"Shows a model in a window with a virtual trackball, or renders it into frames with --frames.",
+        description = {"Shows a model in a window with a virtual trackball, or renders it into frames with --frames (one movie, view.mp4,"
+            + " where there is no display).",
             "With --path, the Hamiltonian path appears triangle by triangle (spanning-tree edges in green).",
             "The animation takes ten seconds unless --seconds says otherwise."})
 final class ViewCommand implements Callable<Integer> {
@@ -64,10 +65,9 @@ final class ViewCommand implements Callable<Integer> {
             default -> throw UserError.usage("option --colors: expected darkness or rainbow, got '" + colorsName + "'");
         };
         PrintWriter err = spec.commandLine().getErr();
-        // Without a display it renders frames where the window was wanted, as every command does.
+        // Without a display it renders one movie where the window was wanted, as every command does.
         if (!frameOptions.renders() && closeAfter == 0 && !PaperOutputs.hasDisplay()) {
-            frameOptions.frames = Path.of("view-frames");
-            err.println("ifold: no display: rendering frames into " + frameOptions.frames.toAbsolutePath() + "/ instead");
+            frameOptions.movie = PaperOutputs.movieWithoutDisplay("view", err);
         }
         frameOptions.check();
         PrintWriter out = spec.commandLine().getOut();

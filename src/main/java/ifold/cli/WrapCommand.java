@@ -157,7 +157,7 @@ final class WrapCommand implements Callable<Integer> {
             for (Wrap.Strip strip : result.strips()) {
                 sheets.add(new FoldFile.Folded(strip.sheet(), result.frames()));
             }
-            outputs.exportFold(sheets, "ifold wrap " + model, figures, new PrintWriter(java.io.Writer.nullWriter()));
+            outputs.exportFold(sheets, "ifold wrap " + model, figures);
             if (outputs.exportFold != null) {
                 written.add(outputs.exportFold);
             }
@@ -182,11 +182,8 @@ final class WrapCommand implements Callable<Integer> {
         } catch (IOException e) {
             throw new UserError("cannot write: " + e.getMessage());
         }
-        for (Path file : written) {
-            out.println("wrote " + file);
-        }
         out.println(summary(model, mesh, path, result, analysis));
-        outputs.printChecks(out);
+        outputs.printChecksAndFiles(out);
         out.flush();
         if (outputs.frameOptions.frames != null || !outputs.noView) {
             show(mesh, result, geometries, written);

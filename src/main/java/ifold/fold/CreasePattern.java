@@ -77,9 +77,17 @@ public record CreasePattern(double length, double width, FoldScript script, List
                     angles.size(), edges.size()));
         }
         double[] box = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
-        for (double[] v : vertices) {
+        for (int i = 0; i < vertices.size(); i++) {
+            double[] v = vertices.get(i);
             if (v.length < 2 || !Double.isFinite(v[0]) || !Double.isFinite(v[1])) {
                 throw new Refused("vertices_coords must hold finite 2D points");
+            }
+            for (int k = 2; k < v.length; k++) {
+                if (v[k] != 0) {
+                    // A crease pattern lies flat: a z of 0 is the same point, any other a folded state.
+                    throw new Refused(String.format(Locale.ROOT, "vertex %d is %s: a crease pattern lies flat, its vertices 2D points"
+                            + " (or with z = 0)", i, pointText(v)));
+                }
             }
             box[0] = Math.min(box[0], v[0]);
             box[1] = Math.min(box[1], v[1]);
@@ -118,7 +126,11 @@ public record CreasePattern(double length, double width, FoldScript script, List
             }
             double[] p = {vertices.get(a)[0] - box[0], vertices.get(a)[1] - box[1]};
             double[] q = {vertices.get(b)[0] - box[0], vertices.get(b)[1] - box[1]};
-            String assignment = String.valueOf(assignments.get(e)).toUpperCase(Locale.ROOT);
+            if (!(assignments.get(e) instanceof String given)) {
+                throw new Refused("edge " + e + ": edges_assignment gives it " + valueText(assignments.get(e))
+                        + ", not one of B, M, V, F, U, C or J");
+            }
+            String assignment = given.toUpperCase(Locale.ROOT);
             switch (assignment) {
                 case "B" -> {
                     if (!border.add(p, q)) {
@@ -129,7 +141,12 @@ public record CreasePattern(double length, double width, FoldScript script, List
                     if (Math.hypot(q[0] - p[0], q[1] - p[1]) <= tolerance) {
                         throw new Refused("edge " + e + ": a crease of no length");
                     }
-                    double angle = angles != null && angles.get(e) instanceof Number n ? Math.abs(n.doubleValue()) : 180;
+                    Object givenAngle = angles == null ? null : angles.get(e);
+                    if (givenAngle != null && !(givenAngle instanceof Number)) {
+                        throw new Refused("edge " + e + ": edges_foldAngle gives it " + valueText(givenAngle)
+                                + ", not a number of degrees");
+                    }
+                    double angle = givenAngle instanceof Number n ? Math.abs(n.doubleValue()) : 180;
                     if (!(angle > 0 && angle <= 180)) {
                         throw new Refused("edge " + e + ": its fold angle must be more than 0 and at most 180 degrees");
                     }
@@ -139,8 +156,10 @@ public record CreasePattern(double length, double width, FoldScript script, List
                 case "F", "J", "C" -> {
                     // flat, joined or cut: nothing to fold
                 }
-                default -> throw new Refused("edge " + e + " is " + assignment + ": iFold folds mountains and valleys (M, V), "
+                case "U" -> throw new Refused("edge " + e + " is U: iFold folds mountains and valleys (M, V), "
                         + "not unassigned creases");
+                default -> throw new Refused("edge " + e + ": edges_assignment gives it " + valueText(given)
+                        + ", not one of B, M, V, F, U, C or J");
             }
         }
         border.check(box);
@@ -383,6 +402,31 @@ public record CreasePattern(double length, double width, FoldScript script, List
             points.add(p);
         }
         return points;
+    }
+
+    /** A value of the file as a message quotes it: a string in quotes, a number as {@link #fmt}, anything else as JSON would. */
+    private static String valueText(Object value) {
+        if (value instanceof String text) {
+            return "\"" + (text.length() > 20 ? text.substring(0, 20) + "…" : text) + "\"";
+        }
+        if (value instanceof Number n) {
+            return fmt(n.doubleValue());
+        }
+        if (value instanceof List<?>) {
+            return "a list";
+        }
+        if (value instanceof Map<?, ?>) {
+            return "an object";
+        }
+        return String.valueOf(value); // true, false, null
+    }
+
+    private static String pointText(double[] p) {
+        StringBuilder text = new StringBuilder("(");
+        for (int k = 0; k < p.length; k++) {
+            text.append(k > 0 ? ", " : "").append(fmt(p[k]));
+        }
+        return text.append(")").toString();
     }
 
     /** A coordinate as a message gives it: a whole number without its ".0", else the shortest decimal that reads back. */

@@ -13,9 +13,10 @@ import java.util.Arrays;
  * new face).
  *
  * <p>A face stays listed where it was added: one that shrinks (a cut) is found as before and
- * told apart by the exact test; one that moves or leaves (a tuck) makes the stack drop its grid
- * and build it again when next asked. A face that would meet more than {@link #MOST_CELLS}
- * cells is kept on a list looked at every time.
+ * told apart by the exact test; one that moves or leaves (a tuck) is found where it was too, and
+ * passed over by the stack, which builds its grid again once such faces are as many as its own.
+ * A face that would meet more than {@link #MOST_CELLS} cells is kept on a list looked at every
+ * time.
  */
 public final class FaceGrid {
     static final int MOST_CELLS = 4096;

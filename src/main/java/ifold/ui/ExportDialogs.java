@@ -265,8 +265,9 @@ final class ExportDialogs {
         boolean strict = host.strict();
         host.write("exporting the refinement", "cannot export the refinement", file, progress -> {
             Exports.Refined refined = Exports.refinement(model, strict, file, progress);
-            return String.format(Locale.ROOT, "wrote %s: %d triangles in %d component(s) -> %d triangles, in path order", file,
-                    refined.inputTriangles(), refined.components(), refined.outputTriangles());
+            return String.format(Locale.ROOT, "wrote %s: %d %s in %d %s -> %d triangles, in path order", file,
+                    refined.inputTriangles(), refined.inputTriangles() == 1 ? "triangle" : "triangles", refined.components(),
+                    refined.components() == 1 ? "component" : "components", refined.outputTriangles());
         }, host::say);
     }
 

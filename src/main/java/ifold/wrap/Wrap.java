@@ -1171,11 +1171,13 @@ public final class Wrap {
             // tolerance across the strip (a crease's end is snapped to the one before it within
             // the tolerance, and the corner is placed to it), which a side at a small angle θ to
             // the edge stretches along it by 1 / sin θ. Tori of 4,000 to 5,000 triangles met
-            // corners 1.0 to 1.2 tolerances beyond their edges' ends, and were refused.
+            // corners 1.0 to 1.2 tolerances beyond their edges' ends, and were refused. Far along
+            // a long strip, to the tolerance its poses' rounding has grown to (the cube at width
+            // 1e-4 was refused here, three quarters of its 60,000 along).
             double sine = Math.abs(back.dy(pose.dx(1, 0), pose.dy(1, 0)));
-            double slack = 2 * tolerance / Math.max(sine, 1e-3);
             for (boolean side : new boolean[] {false, true}) {
                 double u = sheet.tailStart(side);
+                double slack = 2 * sheet.toleranceAt(u) / Math.max(sine, 1e-3);
                 double v = side ? w : 0;
                 double x = back.x(pose.x(u, v), pose.y(u, v));
                 if (x < -slack || x > edgeLength + slack) {

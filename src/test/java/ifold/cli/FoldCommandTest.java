@@ -29,6 +29,14 @@ class FoldCommandTest {
         assertTrue(json.contains("\"maxLayers\": 21"), json);
         assertTrue(json.contains("\"folds\": 20"), json);
         assertTrue(run.out().contains("20 folds, 21 layers at most"), run.out());
+        // What was made first, then its checks, then where it went: the files' lines came before the summary.
+        String[] lines = run.out().split("\n");
+        assertTrue(lines[0].startsWith("pleat20.fold: 20 folds"), run.out());
+        assertTrue(lines[1].startsWith("layer order: ") && lines[2].startsWith("collisions: "), run.out());
+        assertEquals(java.util.List.of("wrote " + obj, "wrote " + report), java.util.List.of(lines).subList(3, lines.length), run.out());
+        // Checked without --export-fold as well: the audit found it checking no face ("0 faces on 0 planes").
+        assertTrue(run.out().contains("layer order: valid (21 faces on 1 plane, 210 pairs of layers)"), run.out());
+        assertTrue(json.contains("\"layerOrder\": \"valid\""), json);
     }
 
     @Test
@@ -149,6 +157,15 @@ class FoldCommandTest {
             // A crease from (3, 3) to (7, 7) would be folded as the whole diagonal.
             {"inner-crease.fold", square(", [3, 3], [7, 7]", ", [4, 5]", ", \"V\"", ""),
                 "edge 4: the crease (3, 3)-(7, 7) ends inside the paper"},
+            // Values of the wrong kind, which were folded as 180 degrees or read as a 2D point.
+            {"angle-text.fold", square("", ", [0, 2]", ", \"V\"", ", \"edges_foldAngle\": [0, 0, 0, 0, \"x\"]"),
+                "edge 4: edges_foldAngle gives it \"x\", not a number of degrees"},
+            {"angle-object.fold", square("", ", [0, 2]", ", \"V\"", ", \"edges_foldAngle\": [0, 0, 0, 0, {\"a\": 1}]"),
+                "edge 4: edges_foldAngle gives it an object, not a number of degrees"},
+            {"raised.fold", square(", [5, 10, 3]", ", [0, 2]", ", \"V\"", ""), "vertex 4 is (5, 10, 3): a crease pattern lies flat"},
+            {"assigned-number.fold", square("", ", [0, 2]", ", 5", ""), "edge 4: edges_assignment gives it 5, not one of B, M, V, F, U, C or J"},
+            {"assigned-x.fold", square("", ", [0, 2]", ", \"X\"", ""), "edge 4: edges_assignment gives it \"X\", not one of"},
+            {"unassigned.fold", square("", ", [0, 2]", ", \"U\"", ""), "edge 4 is U: iFold folds mountains and valleys (M, V), not unassigned"},
             // Half a line creased, from the border to the middle.
             {"half-line.fold", square(", [5, 0], [5, 5]", ", [4, 5]", ", \"M\"", ""), "edge 4: the crease (5, 0)-(5, 5) ends inside the paper"},
         };
@@ -188,7 +205,13 @@ class FoldCommandTest {
     void helpSaysFoldTakesFoldFiles() {
         CliTest.Run help = CliTest.run("help", "fold");
         assertEquals(0, help.code(), help.err());
-        assertTrue(help.out().contains("Plays a fold script (docs/fold-scripts.md) or a FOLD file"), help.out());
+        String words = help.out().replaceAll("\\s+", " ");
+        assertTrue(words.contains("Plays a fold script (docs/fold-scripts.md) or a FOLD file (JSON, as written by --export-fold)"),
+                help.out());
         assertTrue(help.out().matches("(?s).*SCRIPT +a fold script, or a FOLD file.*"), help.out());
+        // The list of commands gave the description's first line alone, cut at "as written by".
+        CliTest.Run commands = CliTest.run("help");
+        assertTrue(commands.out().replaceAll("\\s+", " ").contains("as written by --export-fold), whose crease pattern is folded"),
+                commands.out());
     }
 }

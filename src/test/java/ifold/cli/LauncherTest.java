@@ -247,6 +247,17 @@ class LauncherTest {
         return Files.readString(dir.resolve("out")) + "\n--- stderr ---\n" + Files.readString(dir.resolve("err"));
     }
 
+    /** Output that cannot be written is a failure in one line: '> /dev/full' exited 0 with the summary lost. */
+    @Test
+    void aStandardOutputThatCannotBeWrittenFailsInOneLine() throws Exception {
+        assumeTrue(Files.isWritable(Path.of("/dev/full")), "no /dev/full here");
+        ProcessBuilder builder = new ProcessBuilder(LAUNCHER.toString(), "info", "models/cube.off")
+                .redirectOutput(new java.io.File("/dev/full")).redirectError(dir.resolve("err").toFile());
+        assertEquals(UserError.EXIT_CODE, builder.start().waitFor());
+        assertEquals("ifold: cannot write to the standard output (a full disk, or a pipe closed): its lines are lost\n",
+                Files.readString(dir.resolve("err")));
+    }
+
     /**
      * The class-data-sharing archive installDist makes is used where it fits and quietly
      * ignored where it does not (another install directory, a jar changed): the output is the

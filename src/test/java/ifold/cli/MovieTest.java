@@ -14,6 +14,8 @@ import javax.imageio.ImageIO;
 import javax.imageio.ImageReader;
 import javax.imageio.stream.ImageInputStream;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 import org.junit.jupiter.api.io.TempDir;
 
 /** Movies and captions from the command line, checked by their pixels and frames. */
@@ -175,27 +177,35 @@ class MovieTest {
         assertTrue(run.out().contains("20 frames of 640x360 at 20 frames/s"), run.out());
     }
 
-    @Test
-    void withoutADisplayTheDemoWritesOneMovieAndSaysWhere() throws Exception {
+    /** Without a display the demo, and view (which wrote 300 PNGs into view-frames/), write one movie and say where. */
+    @ParameterizedTest
+    @ValueSource(strings = {"demo zigzag", "view"})
+    void withoutADisplayACommandWritesOneMovieAndSaysWhere(String command) throws Exception {
         assumeTrue(Mp4Writer.available(), "no ffmpeg here (scripts/setup installs it)");
         assumeTrue(new ProcessBuilder("sh", "-c", "command -v Xvfb").start().waitFor() == 0, "no Xvfb here");
         Path launcher = Path.of("build", "install", "ifold", "bin", "ifold").toAbsolutePath();
         assumeTrue(Files.isExecutable(launcher), "not installed (gradle installDist)");
         Path log = dir.resolve("log");
-        ProcessBuilder builder = new ProcessBuilder(launcher.toString(), "demo", "zigzag", "--seconds", "1", "--size", "160x90")
-                .directory(dir.toFile()).redirectErrorStream(true).redirectOutput(log.toFile());
+        java.util.List<String> args = new java.util.ArrayList<>(java.util.List.of(launcher.toString()));
+        args.addAll(java.util.List.of(command.split(" ")));
+        String name = command.equals("view") ? "view" : "zigzag";
+        if (name.equals("view")) {
+            args.add(Path.of("models", "cube.off").toAbsolutePath().toString());
+        }
+        args.addAll(java.util.List.of("--seconds", "1", "--size", "160x90"));
+        ProcessBuilder builder = new ProcessBuilder(args).directory(dir.toFile()).redirectErrorStream(true).redirectOutput(log.toFile());
         builder.environment().remove("DISPLAY");
         builder.environment().remove("IFOLD_IN_XVFB");
         Process process = builder.start();
-        assertTrue(process.waitFor(120, java.util.concurrent.TimeUnit.SECONDS), "the demo ends");
+        assertTrue(process.waitFor(120, java.util.concurrent.TimeUnit.SECONDS), "it ends");
         String output = Files.readString(log);
         assertEquals(0, process.exitValue(), output);
-        Path movie = dir.resolve("zigzag.mp4");
+        Path movie = dir.resolve(name + ".mp4");
         assertTrue(Files.size(movie) > 0, output);
-        assertFalse(Files.exists(dir.resolve("zigzag-frames")), "no folder of PNGs");
+        assertFalse(Files.exists(dir.resolve(name + "-frames")), "no folder of PNGs");
         assertTrue(output.contains("no display: rendering the animation into " + movie.toRealPath()), output);
         assertTrue(output.contains("--frames DIR for PNG frames"), "and how to get frames instead: " + output);
-        assertTrue(output.contains("wrote zigzag.mp4: 30 frames of 160x90"), output);
+        assertTrue(output.contains("wrote " + name + ".mp4: 30 frames of 160x90"), output);
     }
 
     @Test

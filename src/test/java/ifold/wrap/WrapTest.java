@@ -195,6 +195,23 @@ class WrapTest {
         assertTrue(analysis.maxLayers() <= 48, "layers " + analysis.maxLayers());
     }
 
+    /**
+     * A strip 150 million widths long (the cube at width 2e-4: 196,000 turns, 30,000 long): its
+     * poses, composed fold after fold, gather rounding past the tolerance, and a crossing made to
+     * meet a turn's crease on the strip's side missed it by 3.2e-9 against 2.4e-9, refusing the
+     * wrap ("the crease crosses the one before it"; at 1e-4, "would tear the strip"). The
+     * sheet tells creases apart to the tolerance the strip's length has grown it to.
+     */
+    @Test
+    void aStripOfAHundredMillionWidthsWraps() throws Exception {
+        HalfedgeMesh cube = build(Solids.cube());
+        HamiltonianRefinement.Result refinement = ifold.job.WrapPath.of(cube).refinement();
+        Wrap.Result result = Wrap.wrap(refinement, new Wrap.Options(2e-4, Double.NaN).withMaxFaces(1_000_000));
+        assertEquals(1, result.strips().size());
+        assertEquals(refinement.mesh().faceCount(), result.strips().get(0).triangles());
+        assertTrue(result.strips().get(0).sheet().length() / 2e-4 > 1e8, "a hundred million widths long");
+    }
+
     @Test
     void narrowerStripsAndZeroThickness() throws Exception {
         HalfedgeMesh cube = build(Solids.cube());
