@@ -48,11 +48,12 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
             if (room[k] >= least || !along(k, ax, ay, bx, by, tolerance)) {
                 continue;
             }
-            double px = corners[2 * k];
-            double py = corners[2 * k + 1];
-            double dx = corners[2 * ((k + 1) % n)] - px;
-            double dy = corners[2 * ((k + 1) % n) + 1] - py;
-            double length = Polygons2.length(dx, dy);
+            double[] edge = edge(k);
+            double px = edge[0];
+            double py = edge[1];
+            double dx = edge[2];
+            double dy = edge[3];
+            double length = edge[4];
             double ta = ((ax - px) * dx + (ay - py) * dy) / length;
             double tb = ((bx - px) * dx + (by - py) * dy) / length;
             double shared = Math.min(length, Math.max(ta, tb)) - Math.max(0, Math.min(ta, tb));
@@ -69,14 +70,24 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
      * {@code tolerance} of that line.
      */
     public boolean along(int k, double ax, double ay, double bx, double by, double tolerance) {
+        double[] edge = edge(k);
+        double px = edge[0];
+        double py = edge[1];
+        double dx = edge[2];
+        double dy = edge[3];
+        double length = edge[4];
+        return length > 0 && Math.abs((ax - px) * dy - (ay - py) * dx) / length <= tolerance
+                && Math.abs((bx - px) * dy - (by - py) * dx) / length <= tolerance;
+    }
+
+    /** Edge k of the corners' polygon, from corner k to corner k + 1: {x, y of its start, dx, dy, its length}. */
+    private double[] edge(int k) {
         int n = corners.length / 2;
         double px = corners[2 * k];
         double py = corners[2 * k + 1];
         double dx = corners[2 * ((k + 1) % n)] - px;
         double dy = corners[2 * ((k + 1) % n) + 1] - py;
-        double length = Polygons2.length(dx, dy);
-        return length > 0 && Math.abs((ax - px) * dy - (ay - py) * dx) / length <= tolerance
-                && Math.abs((bx - px) * dy - (by - py) * dx) / length <= tolerance;
+        return new double[] {px, py, dx, dy, Polygons2.length(dx, dy)};
     }
 
     /**
@@ -118,11 +129,12 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
             if (room[k] >= OPEN) {
                 continue;
             }
-            double px = corners[2 * k];
-            double py = corners[2 * k + 1];
-            double dx = corners[2 * ((k + 1) % n)] - px;
-            double dy = corners[2 * ((k + 1) % n) + 1] - py;
-            double length = Polygons2.length(dx, dy);
+            double[] edge = edge(k);
+            double px = edge[0];
+            double py = edge[1];
+            double dx = edge[2];
+            double dy = edge[3];
+            double length = edge[4];
             if (!(length > 0)) {
                 continue;
             }
