@@ -531,6 +531,20 @@ final class MainWindow extends JFrame {
         return opening != null && job instanceof Job.Script s && opening.equals(s.file());
     }
 
+    /** The section of docs/reports.md that explains a job's report. */
+    private static String reportSection(Job job) {
+        if (job instanceof Job.ZigZag) {
+            return "demo zigzag";
+        }
+        if (job instanceof Job.Turn) {
+            return "demo turn";
+        }
+        if (job instanceof Job.Script) {
+            return "fold";
+        }
+        return job instanceof Job.View ? "view" : "wrap";
+    }
+
     /** Shows a new plan: at the same point of its animation as the one before if it is the same kind of job, else from the start, playing. */
     private void show(Plan next) {
         Plan before = plan;
@@ -548,7 +562,7 @@ final class MainWindow extends JFrame {
         // A view reveals triangles and folds no paper: its steps are not folds.
         timeline.setTimeline(fresh, !sameKind || (old != null && old.isPlaying()), next.hasPaper() ? "fold" : "step");
         foldList.setBorder(BorderFactory.createTitledBorder(next.hasPaper() ? "Folds" : "Steps"));
-        report.show(next.figures());
+        report.show(reportSection(next.job()), next.figures());
         setTitle("iFold - " + next.title());
         say(next.title());
     }
@@ -735,7 +749,7 @@ final class MainWindow extends JFrame {
             informationDialog.pack();
             informationDialog.setLocationRelativeTo(this);
         }
-        information.show(figures);
+        information.show("info", figures);
         informationDialog.setTitle("Model information: " + model.getFileName());
         informationDialog.setVisible(true);
     }

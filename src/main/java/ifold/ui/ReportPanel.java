@@ -1,5 +1,6 @@
 package ifold.ui;
 
+import ifold.job.ReportGlossary;
 import java.awt.FontMetrics;
 import java.util.ArrayList;
 import java.util.List;
@@ -9,10 +10,11 @@ import javax.swing.table.AbstractTableModel;
 
 /**
  * The figures of the current result as the {@code --report} JSON holds them, one row a value:
- * a nested figure named in words ("Strip 1: length / width" for {@code strips.1.lengthOverWidth}),
- * a number to six significant digits so that it reads at a glance in its cell, and under the
- * mouse the figure's path in the report and the shortest decimal that reads back as the value
- * (what the JSON writes).
+ * a nested figure named in words with its unit ("Strip 1: length / width" for
+ * {@code strips.1.lengthOverWidth}, "Width (model units)"), a number to six significant digits
+ * so that it reads at a glance in its cell, and under the mouse what the figure means (the
+ * words of docs/reports.md), its path in the report and the shortest decimal that reads back as
+ * the value (what the JSON writes).
  */
 final class ReportPanel extends JTable {
     private static final long serialVersionUID = 1L;
@@ -27,18 +29,35 @@ final class ReportPanel extends JTable {
         getColumnModel().getColumn(1).setPreferredWidth(140);
     }
 
-    /** A long value is cut in its cell: the whole of it under the mouse. */
+    /**
+     * Under the mouse, what the figure means (the docs' words, {@link ReportGlossary}), its whole
+     * value (a long one is cut in its cell) and its path in the report.
+     */
     @Override
     public String getToolTipText(java.awt.event.MouseEvent e) {
         int row = rowAtPoint(e.getPoint());
-        if (row < 0) {
-            return null;
-        }
-        String[] shown = rows.rows.get(row);
-        return shown[3] + " = " + shown[2] + "  (" + shown[0] + " in the report)";
+        return row < 0 ? null : toolTip(row);
     }
 
-    void show(Map<String, Object> figures) {
+    /** The tool tip of a row, as HTML: for tests too. */
+    String toolTip(int row) {
+        String[] shown = rows.rows.get(row);
+        String meaning = ReportGlossary.packaged().meaning(section, shown[0]).orElse("");
+        return "<html><body style='width: 300px'><b>" + html(shown[3]) + "</b>"
+                + (meaning.isEmpty() ? "" : "<br>" + html(meaning))
+                + "<br><br>" + html(shown[0] + " = " + shown[2]) + "</body></html>";
+    }
+
+    private static String html(String text) {
+        return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;");
+    }
+
+    /** The report's section in docs/reports.md: "wrap", "demo zigzag", "demo turn", "fold", "info", "view". */
+    private String section = "wrap";
+
+    /** Shows the figures of a report of the kind that {@code section} names (its section in docs/reports.md). */
+    void show(String section, Map<String, Object> figures) {
+        this.section = section;
         List<String[]> flat = new ArrayList<>();
         if (figures != null) {
             flatten("", figures, flat);
@@ -103,10 +122,17 @@ final class ReportPanel extends JTable {
             }
         } else if (value instanceof Double d) {
             String exact = d == Math.rint(d) && Math.abs(d) < 1e15 ? Long.toString(d.longValue()) : d.toString();
-            out.add(new String[] {prefix, readable(d, exact), exact, words(prefix)});
+            out.add(new String[] {prefix, readable(d, exact), exact, named(prefix)});
         } else {
-            out.add(new String[] {prefix, String.valueOf(value), String.valueOf(value), words(prefix)});
+            out.add(new String[] {prefix, String.valueOf(value), String.valueOf(value), named(prefix)});
         }
+    }
+
+    /** A figure's name in words with its unit: "Width (model units)", "Seconds: wrap (s)", "Min angle in (°)". */
+    static String named(String path) {
+        String words = words(path);
+        String unit = ReportGlossary.unit(path).symbol();
+        return unit.isEmpty() || words.endsWith("(" + unit + ")") ? words : words + " (" + unit + ")";
     }
 
     /**

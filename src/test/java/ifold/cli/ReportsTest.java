@@ -6,10 +6,14 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import com.fasterxml.jackson.core.JsonFactory;
 import com.fasterxml.jackson.core.JsonParser;
 import com.fasterxml.jackson.core.JsonToken;
+import ifold.job.ReportGlossary;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
+import java.util.Optional;
 import java.util.Set;
 import java.util.TreeSet;
 import org.junit.jupiter.api.Test;
@@ -52,18 +56,19 @@ class ReportsTest {
         return keys;
     }
 
-    @Test
-    void everyKeyOfEveryReportIsDocumented() throws Exception {
-        String doc = Files.readString(Path.of("docs", "reports.md"));
-        List<String[]> runs = List.of(
-                new String[] {"wrap", "models/cube.off", "--no-view", "--export-fold", dir.resolve("a.fold").toString(), "--report", "R"},
-                new String[] {"demo", "zigzag", "--no-view", "--export-fold", dir.resolve("b.fold").toString(), "--report", "R"},
-                new String[] {"demo", "turn", "--angle", "70", "--no-view", "--report", "R"},
-                new String[] {"fold", "models/scripts/pleat20.fold", "--no-view", "--report", "R"});
-        int checked = 0;
-        for (String[] run : runs) {
-            Path report = dir.resolve("r" + checked + ".json");
-            String[] args = run.clone();
+    /** A report of each command, as its section of docs/reports.md names it, and its JSON. */
+    private Map<String, String> reports() throws Exception {
+        Map<String, String[]> runs = new LinkedHashMap<>();
+        runs.put("wrap", new String[] {"wrap", "models/cube.off", "--no-view", "--export-fold", dir.resolve("a.fold").toString(), "--report", "R"});
+        runs.put("demo zigzag", new String[] {"demo", "zigzag", "--no-view", "--export-fold", dir.resolve("b.fold").toString(), "--report", "R"});
+        runs.put("demo turn", new String[] {"demo", "turn", "--angle", "70", "--no-view", "--report", "R"});
+        runs.put("fold", new String[] {"fold", "models/scripts/pleat20.fold", "--no-view", "--report", "R"});
+        runs.put("info", new String[] {"info", "models/torus.off", "--json"});
+        runs.put("refine", new String[] {"refine", "models/torus.off", "-o", dir.resolve("t.off").toString(), "--json"});
+        Map<String, String> reports = new LinkedHashMap<>();
+        for (Map.Entry<String, String[]> run : runs.entrySet()) {
+            Path report = dir.resolve("r" + reports.size() + ".json");
+            String[] args = run.getValue().clone();
             for (int i = 0; i < args.length; i++) {
                 if (args[i].equals("R")) {
                     args[i] = report.toString();
@@ -71,22 +76,81 @@ class ReportsTest {
             }
             CliTest.Run result = CliTest.run(args);
             assertEquals(0, result.code(), result.err());
-            for (String key : keys(Files.readString(report))) {
-                assertTrue(doc.contains("`" + key + "`"), "docs/reports.md explains " + String.join(" ", run).replace(" R", "")
-                        + "'s key " + key);
-                checked++;
-            }
+            String json = Files.exists(report) ? Files.readString(report) : result.out().substring(result.out().indexOf('{'));
+            reports.put(run.getKey(), json);
         }
-        for (String[] json : new String[][] {{"info", "models/torus.off", "--json"},
-            {"refine", "models/torus.off", "-o", dir.resolve("t.off").toString(), "--json"}}) {
-            CliTest.Run result = CliTest.run(json);
-            assertEquals(0, result.code(), result.err());
-            String out = result.out();
-            for (String key : keys(out.substring(out.indexOf('{')))) {
-                assertTrue(doc.contains("`" + key + "`"), "docs/reports.md explains " + json[0] + "'s key " + key);
+        return reports;
+    }
+
+    @Test
+    void everyKeyOfEveryReportIsDocumented() throws Exception {
+        String doc = Files.readString(Path.of("docs", "reports.md"));
+        int checked = 0;
+        for (Map.Entry<String, String> report : reports().entrySet()) {
+            for (String key : keys(report.getValue())) {
+                assertTrue(doc.contains("`" + key + "`"), "docs/reports.md explains " + report.getKey() + "'s key " + key);
                 checked++;
             }
         }
         assertTrue(checked > 80, "keys checked: " + checked);
+    }
+
+    /** Every figure's path in a report, lists' items numbered from 1 as the window shows them. */
+    private static List<String> leaves(String json) throws Exception {
+        List<String> leaves = new ArrayList<>();
+        List<String> path = new ArrayList<>();
+        List<Integer> items = new ArrayList<>(); // per open container: -1 for an object, else the next item's number
+        try (JsonParser parser = new JsonFactory().createParser(json)) {
+            JsonToken token;
+            while ((token = parser.nextToken()) != null) {
+                boolean inList = !items.isEmpty() && items.get(items.size() - 1) >= 0;
+                if (token == JsonToken.FIELD_NAME) {
+                    path.set(path.size() - 1, parser.currentName());
+                    continue;
+                }
+                if (inList && token != JsonToken.END_ARRAY) {
+                    int next = items.get(items.size() - 1);
+                    path.set(path.size() - 1, Integer.toString(next));
+                    items.set(items.size() - 1, next + 1);
+                }
+                if (token == JsonToken.START_OBJECT || token == JsonToken.START_ARRAY) {
+                    items.add(token == JsonToken.START_ARRAY ? 1 : -1);
+                    path.add("");
+                } else if (token == JsonToken.END_OBJECT || token == JsonToken.END_ARRAY) {
+                    items.remove(items.size() - 1);
+                    path.remove(path.size() - 1);
+                } else {
+                    leaves.add(String.join(".", path));
+                }
+            }
+        }
+        return leaves;
+    }
+
+    /**
+     * The window explains every figure of every report, with the words of docs/reports.md as
+     * built into the program (as they are now, not a copy left from another build); a report
+     * of one kind never borrows the wrap's meaning of a word it does not list.
+     */
+    @Test
+    void everyFigureOfEveryReportHasItsMeaningInTheWindow() throws Exception {
+        ReportGlossary packaged = ReportGlossary.packaged();
+        ReportGlossary docs = ReportGlossary.parse(Files.readString(Path.of("docs", "reports.md")));
+        int checked = 0;
+        for (Map.Entry<String, String> report : reports().entrySet()) {
+            for (String leaf : leaves(report.getValue())) {
+                Optional<String> meaning = packaged.meaning(report.getKey(), leaf);
+                assertTrue(meaning.isPresent() && !meaning.get().isBlank(), report.getKey() + "'s " + leaf + " has a meaning");
+                assertEquals(docs.meaning(report.getKey(), leaf), meaning, leaf);
+                checked++;
+            }
+        }
+        assertTrue(checked > 150, "figures checked: " + checked);
+        assertEquals(Optional.empty(), packaged.meaning("demo turn", "deepestLayers"), "not the wrap's");
+        assertTrue(packaged.meaning("wrap", "strips.1.length").orElseThrow().startsWith("per strip"), "a strip's length is the strips' row");
+        assertTrue(packaged.meaning("wrap", "length").orElseThrow().startsWith("Σ L"));
+        assertTrue(packaged.meaning("demo zigzag", "paperOutsideArea").orElseThrow().startsWith("paper area whose shadow falls outside the triangle"));
+        assertEquals(packaged.meaning("wrap", "isometryError"), packaged.meaning("demo zigzag", "isometryError"), "as above: the shared row");
+        assertTrue(packaged.meaning("wrap", "collisions.pairs").orElseThrow().contains("cross deeper than"));
     }
 }

@@ -34,7 +34,7 @@ class ReportPanelTest {
         Map<String, Object> figures = new LinkedHashMap<>();
         figures.put("refinement", refinement);
         ReportPanel panel = new ReportPanel();
-        panel.show(figures);
+        panel.show("refine", figures);
         panel.setSize(330, 200); // the window's report column
         panel.doLayout();
         int name = panel.getFontMetrics(panel.getFont()).stringWidth("Refinement: min angle in (°)");
@@ -60,9 +60,48 @@ class ReportPanelTest {
         Map<String, Object> figures = new LinkedHashMap<>();
         figures.put("strips", java.util.List.of(strip));
         ReportPanel panel = new ReportPanel();
-        panel.show(figures);
+        panel.show("wrap", figures);
         assertEquals("Strip 1: length / width", panel.getValueAt(0, 0));
         assertEquals("126.2", panel.getValueAt(0, 1));
         assertEquals("126.2", panel.value("strips.1.lengthOverWidth"), "tests and tools still find a figure by its path");
+    }
+
+    /** Lengths, areas, angles and times say their unit; counts and ratios say none. */
+    @Test
+    void figuresSayTheirUnits() {
+        assertEquals("Width (model units)", ReportPanel.named("width"));
+        assertEquals("Strip 1: length (model units)", ReportPanel.named("strips.1.length"));
+        assertEquals("Surface area (square model units)", ReportPanel.named("surfaceArea"));
+        assertEquals("Min angle in (°)", ReportPanel.named("minAngleInDegrees"), "a name that says its unit says it once");
+        assertEquals("Preparation: min angles: input (°)", ReportPanel.named("preparation.minAngles.input"));
+        assertEquals("Seconds: wrap (s)", ReportPanel.named("seconds.wrap"));
+        assertEquals("Timing: milliseconds per fold (ms)", ReportPanel.named("timing.millisecondsPerFold"));
+        assertEquals("Collisions: deepest (thicknesses T)", ReportPanel.named("collisions.deepest"));
+        assertEquals("Max layers", ReportPanel.named("maxLayers"));
+        assertEquals("Folds: tucks", ReportPanel.named("folds.tucks"));
+        assertEquals("Coverage", ReportPanel.named("coverage"));
+    }
+
+    /** Under the mouse: what the figure means, in the docs' words for its kind of report, and its exact value. */
+    @Test
+    void aFiguresMeaningIsUnderTheMouse() {
+        Map<String, Object> strip = new LinkedHashMap<>();
+        strip.put("length", 204.07975802370808);
+        Map<String, Object> figures = new LinkedHashMap<>();
+        figures.put("strips", java.util.List.of(strip));
+        figures.put("length", 204.07975802370808);
+        figures.put("maxLayers", 15.0);
+        ReportPanel panel = new ReportPanel();
+        panel.show("wrap", figures);
+        assertEquals("Strip 1: length (model units)", panel.getValueAt(0, 0));
+        String strip1 = panel.toolTip(0);
+        assertTrue(strip1.contains("per strip: triangles on its path, length L"), strip1);
+        assertTrue(strip1.contains("strips.1.length = 204.07975802370808"), strip1);
+        assertTrue(panel.toolTip(1).contains("Σ L over the strips"), panel.toolTip(1));
+        assertTrue(panel.toolTip(2).contains("the most layers of paper over any point"), panel.toolTip(2));
+        Map<String, Object> turn = new LinkedHashMap<>();
+        turn.put("overhang", 0.5);
+        panel.show("demo turn", turn);
+        assertTrue(panel.toolTip(0).contains("how far beyond the fold across the turn fold begins"), panel.toolTip(0));
     }
 }
