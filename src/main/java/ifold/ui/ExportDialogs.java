@@ -1,11 +1,11 @@
 package ifold.ui;
 
-import ifold.render.FrameExport;
 import ifold.ui.model.Exports;
 import ifold.ui.model.ModelFile;
 import ifold.ui.model.Plan;
 import ifold.ui.model.Problem;
 import ifold.ui.model.Progress;
+import ifold.ui.model.Renderer;
 import ifold.ui.model.Worker;
 import java.awt.Component;
 import java.awt.GridLayout;
@@ -221,7 +221,7 @@ final class ExportDialogs {
     }
 
     void figure(Path file) {
-        file("figure", file, Exports::figure);
+        file("figure", file, (shown, to, progress) -> Exports.figure(OpenGlRenderer.INSTANCE, shown, to, progress));
     }
 
     void report(Path file) {
@@ -242,7 +242,7 @@ final class ExportDialogs {
 
     void movie(Path file, Exports.FrameSettings chosen) {
         plan("movie", file, (shown, progress) -> {
-            FrameExport.Result result = Exports.movie(shown, file, chosen, progress);
+            Renderer.Rendered result = Exports.movie(OpenGlRenderer.INSTANCE, shown, file, chosen, progress);
             return String.format(Locale.ROOT, "wrote %s: %d frames of %dx%d in %.1f s", file, result.frames(), chosen.width(),
                     chosen.height(), result.seconds());
         });
@@ -250,7 +250,7 @@ final class ExportDialogs {
 
     void frames(Path folder, Exports.FrameSettings chosen) {
         plan("frames", folder, (shown, progress) -> {
-            FrameExport.Result result = Exports.frames(shown, folder, chosen, progress);
+            Renderer.Rendered result = Exports.frames(OpenGlRenderer.INSTANCE, shown, folder, chosen, progress);
             return String.format(Locale.ROOT, "wrote %d frames of %dx%d to %s in %.1f s", result.frames(), chosen.width(),
                     chosen.height(), folder, result.seconds());
         });

@@ -11,8 +11,6 @@ import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.io.MeshWriters;
 import ifold.refine.HamiltonianRefinement;
-import ifold.render.FrameExport;
-import ifold.render.RenderUnavailableException;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -104,19 +102,21 @@ public final class Exports {
     }
 
     /** Renders the plan into a movie (.mp4 through ffmpeg, or .gif), on a scene of its own. */
-    public static FrameExport.Result movie(Plan plan, Path movie, FrameSettings settings, Progress progress) throws JobFailure {
+    public static Renderer.Rendered movie(Renderer renderer, Plan plan, Path movie, FrameSettings settings, Progress progress)
+            throws JobFailure {
         requireValid(settings.check(movie));
         progress.stage("rendering " + movie.getFileName());
         try (FrameSink sink = isGif(movie) ? new GifWriter(movie, settings.width(), settings.height(), settings.fps())
                 : new Mp4Writer(movie, settings.width(), settings.height(), settings.fps())) {
-            return render(plan, sink, settings, progress);
+            return render(renderer, plan, sink, settings, progress);
         } catch (IOException e) {
             throw new JobFailure("cannot write " + movie + ": " + e.getMessage());
         }
     }
 
     /** Renders the plan into {@code folder}/frame_00000.png, ...; the folder is made if it is not there. */
-    public static FrameExport.Result frames(Plan plan, Path folder, FrameSettings settings, Progress progress) throws JobFailure {
+    public static Renderer.Rendered frames(Renderer renderer, Plan plan, Path folder, FrameSettings settings, Progress progress)
+            throws JobFailure {
         requireValid(settings.check(null));
         boolean made = false;
         try {
@@ -130,7 +130,7 @@ public final class Exports {
         progress.stage("rendering frames into " + folder.getFileName());
         boolean finished = false;
         try (FrameSink sink = new FrameWriter(folder)) {
-            FrameExport.Result result = render(plan, sink, settings, progress);
+            Renderer.Rendered result = render(renderer, plan, sink, settings, progress);
             finished = true;
             return result;
         } catch (IOException e) {
@@ -146,7 +146,7 @@ public final class Exports {
         }
     }
 
-    private static FrameExport.Result render(Plan plan, FrameSink sink, FrameSettings settings, Progress progress)
+    private static Renderer.Rendered render(Renderer renderer, Plan plan, FrameSink sink, FrameSettings settings, Progress progress)
             throws IOException, JobFailure {
         Plan.Shown shown = plan.newScene();
         if (shown.animation() instanceof ifold.scene.WrapView.Playback playback) {
@@ -155,12 +155,12 @@ public final class Exports {
         progress.check();
         try {
             // Unfinished, the sink is closed without finishing: its output is discarded.
-            return FrameExport.export(shown.scene(), shown.animation(), sink, settings.width(), settings.height(),
-                    settings.frameCount(), 0, settings.captions(), (done, total) -> {
+            return renderer.frames(shown.scene(), shown.animation(), sink, settings.width(), settings.height(),
+                    settings.frameCount(), settings.captions(), (done, total) -> {
                         progress.check();
                         progress.done(done, total);
                     });
-        } catch (RenderUnavailableException e) {
+        } catch (Renderer.Unavailable e) {
             throw new JobFailure(e.getMessage());
         }
     }
@@ -169,7 +169,7 @@ public final class Exports {
      * Writes the zig-zag demo's figure (the seed's Figure 11 re-made: four stages, 800 by 500
      * each), as {@code ifold demo zigzag --figure} does.
      */
-    public static void figure(Plan plan, Path file, Progress progress) throws JobFailure {
+    public static void figure(Renderer renderer, Plan plan, Path file, Progress progress) throws JobFailure {
         if (plan.figureStages() == null) {
             throw new JobFailure("the figure is the zig-zag demo's: Fold, Zig-zag a triangle first");
         }
@@ -177,8 +177,8 @@ public final class Exports {
         Plan.Shown shown = plan.newScene();
         progress.check();
         try {
-            FrameExport.panel(shown.scene(), shown.animation(), plan.figureStages(), Scenes.FIGURE11_LABELS, 2, 800, 500, 4, file);
-        } catch (RenderUnavailableException e) {
+            renderer.panel(shown.scene(), shown.animation(), plan.figureStages(), Scenes.FIGURE11_LABELS, 2, 800, 500, 4, file);
+        } catch (Renderer.Unavailable e) {
             throw new JobFailure(e.getMessage());
         } catch (IOException e) {
             throw new JobFailure("cannot write " + file + ": " + e.getMessage());

@@ -36,7 +36,7 @@ class ExportsTest {
         Plan cube = Planning.plan(new Job.WrapModel(Path.of("models", "cube.off"), "", ""), Progress.NONE);
         Path folder = dir.resolve("frames");
         int fps = 2;
-        Exports.frames(cube, folder, new Exports.FrameSettings(320, 180, fps, 30, true), Progress.NONE);
+        Exports.frames(ifold.ui.OpenGlRenderer.INSTANCE, cube, folder, new Exports.FrameSettings(320, 180, fps, 30, true), Progress.NONE);
         // The caption's letters are white; nothing under the band's dark tint is: the white pixels
         // of the band are the caption. Each stays over at least 1.5 s: three frames, two where a
         // change falls between samples.
@@ -60,5 +60,37 @@ class ExportsTest {
             }
             previous = text;
         }
+    }
+
+    /**
+     * The window's model draws nothing itself: where nothing can draw, an export fails in the
+     * renderer's one line and takes back the folder it made, with no display needed to test it.
+     */
+    @Test
+    void anExportWhereNothingCanDrawFailsInOneLineAndLeavesNothing() throws Exception {
+        Plan zigzag = Planning.plan(Job.ZigZag.DEMO, Progress.NONE);
+        Renderer none = new Renderer() {
+            @Override
+            public Rendered frames(ifold.scene.Scene scene, ifold.scene.Animation animation, ifold.image.FrameSink sink, int width,
+                    int height, int frames, boolean captions, ifold.image.FrameSink.Progress progress) throws Unavailable {
+                throw new Unavailable("no X display: run under xvfb-run", null);
+            }
+
+            @Override
+            public void panel(ifold.scene.Scene scene, ifold.scene.Animation animation, double[] positions, java.util.List<String> labels,
+                    int columns, int width, int height, int samples, Path file) throws Unavailable {
+                throw new Unavailable("no X display: run under xvfb-run", null);
+            }
+        };
+        Path folder = dir.resolve("frames");
+        JobFailure frames = org.junit.jupiter.api.Assertions.assertThrows(JobFailure.class,
+                () -> Exports.frames(none, zigzag, folder, new Exports.FrameSettings(320, 180, 2, 1, true), Progress.NONE));
+        assertEquals("no X display: run under xvfb-run", frames.getMessage());
+        assertTrue(!java.nio.file.Files.exists(folder), "the folder it made is taken back");
+        Path figure = dir.resolve("figure.png");
+        JobFailure panel = org.junit.jupiter.api.Assertions.assertThrows(JobFailure.class,
+                () -> Exports.figure(none, zigzag, figure, Progress.NONE));
+        assertEquals("no X display: run under xvfb-run", panel.getMessage());
+        assertTrue(!java.nio.file.Files.exists(figure));
     }
 }
