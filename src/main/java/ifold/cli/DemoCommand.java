@@ -75,7 +75,7 @@ final class DemoCommand implements Runnable {
         @Option(names = "--width", paramLabel = "W", description = "the strip's width (default: a fifth of the altitude from the start corner)")
         Double width;
 
-        @Option(names = "--thickness", paramLabel = "T", description = "the paper's thickness (default: the width / 80)")
+        @Option(names = "--thickness", paramLabel = "T", description = "the paper's thickness (default: the width / " + Wrap.WIDTHS_A_THICKNESS + ")")
         Double thickness;
 
         @Option(names = "--figure", paramLabel = "FILE.png",
@@ -180,7 +180,7 @@ final class DemoCommand implements Runnable {
         @Option(names = "--width", paramLabel = "W", defaultValue = "1", description = "the strip's width (default ${DEFAULT-VALUE})")
         double width;
 
-        @Option(names = "--thickness", paramLabel = "T", description = "the paper's thickness (default: the width / 50)")
+        @Option(names = "--thickness", paramLabel = "T", description = "the paper's thickness (default: the width / " + TurnGadget.Options.WIDTHS_A_THICKNESS + ")")
         Double thickness;
 
         @Mixin

@@ -60,7 +60,7 @@ final class WrapCommand implements Callable<Integer> {
             description = "the strip's width (default: a third of the widest every triangle of the path takes, its smallest altitude from the corner the strip enters by)")
     Double width;
 
-    @Option(names = "--thickness", paramLabel = "T", description = "the paper's thickness (default: the width / 80)")
+    @Option(names = "--thickness", paramLabel = "T", description = "the paper's thickness (default: the width / " + Wrap.WIDTHS_A_THICKNESS + ")")
     Double thickness;
 
     @Option(names = "--max-faces", paramLabel = "N", defaultValue = "" + Wrap.DEFAULT_MAX_FACES,

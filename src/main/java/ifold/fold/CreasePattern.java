@@ -1,5 +1,6 @@
 package ifold.fold;
 
+import ifold.geom.Tolerance;
 import ifold.script.FoldScript;
 import ifold.script.FoldScriptException;
 import ifold.script.ScriptFolding;
@@ -110,7 +111,7 @@ public record CreasePattern(double length, double width, FoldScript script, List
             throw new Refused(String.format(Locale.ROOT, "the sheet is too small: %s across; iFold folds sheets from %s to %s across:"
                     + " scale the pattern up", fmt(size), SMALLEST_SHEET, LARGEST_SHEET));
         }
-        double tolerance = 1e-9 * Math.hypot(length, width);
+        double tolerance = Tolerance.ON_PLANE * Math.hypot(length, width);
         List<double[]> creases = new ArrayList<>();
         List<Integer> creaseEdges = new ArrayList<>();
         Border border = new Border(length, width, tolerance);

@@ -1,5 +1,9 @@
 package ifold.fold;
 
+import static ifold.geom.Vectors.dot;
+import static ifold.geom.Vectors.sub;
+import static ifold.geom.Vectors.unit;
+
 import com.fasterxml.jackson.core.JsonFactory;
 import com.fasterxml.jackson.core.JsonGenerator;
 import com.fasterxml.jackson.core.StreamWriteFeature;
@@ -485,18 +489,5 @@ public final class FoldFile {
         double[] p = new double[3];
         folded.frames()[sheet.host(f)].toSpace(pose.x(sheet.u(v), sheet.v(v)), pose.y(sheet.u(v), sheet.v(v)), 0, p, 0);
         return p;
-    }
-
-    private static double dot(double[] a, double[] b) {
-        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-    }
-
-    private static double[] sub(double[] a, double[] b) {
-        return new double[] {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-    }
-
-    private static double[] unit(double[] a) {
-        double length = Math.sqrt(dot(a, a));
-        return new double[] {a[0] / length, a[1] / length, a[2] / length};
     }
 }

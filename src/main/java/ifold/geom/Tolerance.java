@@ -28,6 +28,14 @@ public final class Tolerance {
      */
     public static final double ON_PLANE = 1e-9;
 
+    /**
+     * Two faces whose unit normals agree to this (1 - the cosine of the angle between them, an
+     * angle of about 1.4e-6 radians) and whose corners lie within {@link #ON_PLANE} of each
+     * other's plane are one plane: the wrap's hosts and the regions prepared before the
+     * refinement are the same.
+     */
+    public static final double COPLANAR_COSINE = 1e-12;
+
     /** Whether a triangle with doubled area {@code twiceArea} and longest edge squared {@code longestSquared} has no area. */
     public static boolean isDegenerateTriangle(double twiceArea, double longestSquared) {
         return !(twiceArea > DEGENERATE_AREA * longestSquared);

@@ -1,6 +1,7 @@
 package ifold.refine;
 
 import ifold.geom.Polygons;
+import ifold.geom.Tolerance;
 import ifold.geom.Triangles;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.InvalidMeshException;
@@ -56,12 +57,6 @@ import org.tinfour.standard.IncrementalTin;
 public final class FacePreparation {
     /** The smallest angle the preparation aims for, in degrees (Ruppert's algorithm is proven to about 20.7°). */
     public static final int TARGET_ANGLE = 20;
-
-    /** Normals of coplanar neighbours agree to this (1 - cos of the angle between them). */
-    private static final double COPLANAR_COSINE = 1e-12;
-
-    /** A point this far from a region's plane, over the size of the region's first face, is off it. */
-    private static final double OFF_PLANE = 1e-9;
 
     /** Boundary pieces are at most this many times the region's thickness long. */
     private static final double PIECE_OVER_THICKNESS = 1.5;
@@ -226,7 +221,7 @@ public final class FacePreparation {
         private boolean coplanar(PlanarRegion region, int g) {
             double cos = normal[3 * region.seed] * normal[3 * g] + normal[3 * region.seed + 1] * normal[3 * g + 1]
                     + normal[3 * region.seed + 2] * normal[3 * g + 2];
-            if (!(cos > 1 - COPLANAR_COSINE)) {
+            if (!(cos > 1 - Tolerance.COPLANAR_COSINE)) {
                 return false;
             }
             int h0 = mesh.faceHalfedge(g);
@@ -237,7 +232,7 @@ public final class FacePreparation {
                 for (int k = 0; k < 3; k++) {
                     d += normal[3 * region.seed + k] * (xyz[3 * v + k] - region.origin[k]);
                 }
-                if (Math.abs(d) > OFF_PLANE * region.seedSize) {
+                if (Math.abs(d) > Tolerance.ON_PLANE * region.seedSize) {
                     return false;
                 }
                 h = mesh.next(h);

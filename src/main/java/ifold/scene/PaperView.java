@@ -1,5 +1,6 @@
 package ifold.scene;
 
+import ifold.geom.Vectors;
 import ifold.script.ScriptFolding;
 import ifold.sheet.HostFrame;
 import ifold.sheet.Isometry2;
@@ -226,7 +227,7 @@ public final class PaperView {
 
     /** Point p turned by {@code angle} about the line through {@code origin} along the unit {@code axis}. */
     private static double[] turned(double[] p, double[] origin, double[] axis, double angle) {
-        double[] v = HostFrame.turn(new double[] {p[0] - origin[0], p[1] - origin[1], p[2] - origin[2]}, axis, angle);
+        double[] v = Vectors.turn(new double[] {p[0] - origin[0], p[1] - origin[1], p[2] - origin[2]}, axis, angle);
         return new double[] {origin[0] + v[0], origin[1] + v[1], origin[2] + v[2]};
     }
 

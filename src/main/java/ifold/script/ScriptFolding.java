@@ -1,5 +1,13 @@
 package ifold.script;
 
+import static ifold.geom.Vectors.add;
+import static ifold.geom.Vectors.cross;
+import static ifold.geom.Vectors.dot;
+import static ifold.geom.Vectors.sub;
+import static ifold.geom.Vectors.turn;
+import static ifold.geom.Vectors.unit;
+
+import ifold.geom.Tolerance;
 import ifold.sheet.FoldException;
 import ifold.sheet.HostFrame;
 import ifold.sheet.Isometry2;
@@ -44,11 +52,11 @@ public final class ScriptFolding {
 
     private ScriptFolding(double length, double width, double thickness) {
         size = Math.hypot(length, width);
-        planeTolerance = 1e-9 * size;
+        planeTolerance = Tolerance.ON_PLANE * size;
         // The table, lowered by half a thickness: the first layer's middle lies at z = 0.
         frames.add(new HostFrame(new double[] {0, 0, -thickness / 2}, new double[] {1, 0, 0}, new double[] {0, 1, 0},
                 new double[] {0, 0, 1}, new double[6]));
-        sheet = Sheet.rectangle(length, width, thickness, 1e-9 * size, 0, Isometry2.IDENTITY);
+        sheet = Sheet.rectangle(length, width, thickness, planeTolerance, 0, Isometry2.IDENTITY);
     }
 
     /**
@@ -436,7 +444,7 @@ public final class ScriptFolding {
         }
         HostFrame frame = frames.get(through);
         double[][] line = {{frame.localX(a), frame.localY(a)}, {frame.localX(b), frame.localY(b)}, {through}};
-        if (Math.hypot(line[1][0] - line[0][0], line[1][1] - line[0][1]) <= 1e-9 * size) {
+        if (Math.hypot(line[1][0] - line[0][0], line[1][1] - line[0][1]) <= planeTolerance) {
             throw new FoldScriptException(fold.line(), "the fold line runs straight across the paper: it needs a direction along it");
         }
         return line;
@@ -554,30 +562,9 @@ public final class ScriptFolding {
     /** The frame turned by {@code angle} about the line through {@code point} with direction {@code axis}. */
     static HostFrame rotate(HostFrame frame, double[] point, double[] axis, double angle) {
         double[] k = unit(axis);
-        double[] origin = add(point, HostFrame.turn(sub(frame.origin(), point), k, angle));
-        return new HostFrame(origin, HostFrame.turn(frame.ex(), k, angle), HostFrame.turn(frame.ey(), k, angle), HostFrame.turn(frame.normal(), k, angle),
+        double[] origin = add(point, turn(sub(frame.origin(), point), k, angle));
+        return new HostFrame(origin, turn(frame.ex(), k, angle), turn(frame.ey(), k, angle), turn(frame.normal(), k, angle),
                 frame.corners().clone());
-    }
-
-    private static double[] add(double[] a, double[] b) {
-        return new double[] {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
-    }
-
-    private static double[] sub(double[] a, double[] b) {
-        return new double[] {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-    }
-
-    private static double dot(double[] a, double[] b) {
-        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-    }
-
-    private static double[] cross(double[] a, double[] b) {
-        return new double[] {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-    }
-
-    private static double[] unit(double[] a) {
-        double length = Math.sqrt(dot(a, a));
-        return new double[] {a[0] / length, a[1] / length, a[2] / length};
     }
 
     static String fmt(double value) {

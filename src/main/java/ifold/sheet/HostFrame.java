@@ -1,5 +1,9 @@
 package ifold.sheet;
 
+import static ifold.geom.Vectors.cross;
+import static ifold.geom.Vectors.sub;
+import static ifold.geom.Vectors.unit;
+
 /**
  * The plane of a triangle that paper rests on, with a 2D frame in it: an origin, two unit axes
  * and the outward unit normal ({@code ex × ey = n}, so counter-clockwise in the frame is
@@ -171,27 +175,5 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
         }
     }
 
-    /** Rodrigues: vector {@code v} turned by {@code angle} (right-handed) about the unit axis {@code k}. */
-    public static double[] turn(double[] v, double[] k, double angle) {
-        double c = Math.cos(angle);
-        double s = Math.sin(angle);
-        double[] kxv = cross(k, v);
-        double kv = k[0] * v[0] + k[1] * v[1] + k[2] * v[2];
-        return new double[] {v[0] * c + kxv[0] * s + k[0] * kv * (1 - c), v[1] * c + kxv[1] * s + k[1] * kv * (1 - c),
-            v[2] * c + kxv[2] * s + k[2] * kv * (1 - c)};
-    }
-
-    static double[] sub(double[] a, double[] b) {
-        return new double[] {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-    }
-
-    static double[] cross(double[] a, double[] b) {
-        return new double[] {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-    }
-
-    static double[] unit(double[] a) {
-        double length = Math.sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-        return new double[] {a[0] / length, a[1] / length, a[2] / length};
-    }
 
 }

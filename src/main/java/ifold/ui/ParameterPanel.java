@@ -4,6 +4,7 @@ import ifold.job.Scenes;
 import ifold.scene.PathView;
 import ifold.ui.model.Job;
 import ifold.ui.model.Problem;
+import ifold.wrap.TurnGadget;
 import ifold.wrap.Wrap;
 import java.awt.CardLayout;
 import java.awt.Color;
@@ -103,14 +104,14 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
         zigzag.row("end", "End corner", end, null);
         zigzag.row("enterFrom", "Enter beside", enterFrom, null);
         zigzag.row("width", "Width", zigzagWidth, "blank: a fifth of the altitude");
-        zigzag.row("thickness", "Thickness", zigzagThickness, "blank: the width / 80");
+        zigzag.row("thickness", "Thickness", zigzagThickness, "blank: the width / " + Wrap.WIDTHS_A_THICKNESS);
         deck.add(top(zigzag.panel), "zigzag");
 
         Card turn = new Card("Turn gadget", "turn");
         turn.row("angle", "Angle (degrees)", angle, "from 0.01 to 179.9");
         turn.row("overhang", "Overhang", overhang, "in strip widths; 0 is the basic gadget");
         turn.row("width", "Width", turnWidth, null);
-        turn.row("thickness", "Thickness", turnThickness, "blank: the width / 50");
+        turn.row("thickness", "Thickness", turnThickness, "blank: the width / " + TurnGadget.Options.WIDTHS_A_THICKNESS);
         deck.add(top(turn.panel), "turn");
 
         Card wrap = new Card("Wrap a model", "wrap");
@@ -119,7 +120,7 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
         wrap.row("model", "Model", modelName, null);
         wrap.wide(chooseModelButton);
         wrap.row("width", "Width", wrapWidth, "blank: a third of the widest possible");
-        wrap.row("thickness", "Thickness", wrapThickness, "blank: the width / 80");
+        wrap.row("thickness", "Thickness", wrapThickness, "blank: the width / " + Wrap.WIDTHS_A_THICKNESS);
         wrap.row("maxFaces", "Max faces", wrapMaxFaces, String.format(java.util.Locale.ROOT, "blank: %,d, a gibibyte's worth (about %,d bytes each)", Wrap.DEFAULT_MAX_FACES,
                 Wrap.BYTES_PER_FACE));
         wrap.row("strict", "Strict", wrapStrict, "instead of repairing it (--strict); for the information and refinement too");

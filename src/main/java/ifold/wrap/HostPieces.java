@@ -1,5 +1,6 @@
 package ifold.wrap;
 
+import ifold.geom.Tolerance;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.IndexedPolygons;
 import ifold.refine.RefinedMesh;
@@ -23,9 +24,6 @@ import java.util.Map;
  * line is over the piece.
  */
 final class HostPieces {
-    private static final double COPLANAR_COSINE = 1e-12;
-    private static final double OFF_PLANE = 1e-9;
-
     /** The host of each path triangle, numbered by first appearance along the path. */
     final int[] hostOf;
     /** Each host's corners, vertex ids of the path, counter-clockwise seen from outside, none in line with its neighbours. */
@@ -161,7 +159,7 @@ final class HostPieces {
         private boolean coplanar(int a, int b) {
             double[] n = normal[a];
             double[] m = normal[b];
-            if (!(n[0] * m[0] + n[1] * m[1] + n[2] * m[2] >= 1 - COPLANAR_COSINE)) {
+            if (!(n[0] * m[0] + n[1] * m[1] + n[2] * m[2] >= 1 - Tolerance.COPLANAR_COSINE)) {
                 return false;
             }
             int o = loop[a][0];
@@ -170,7 +168,7 @@ final class HostPieces {
                 for (int axis = 0; axis < 3; axis++) {
                     off += (points.coordinate(v, axis) - points.coordinate(o, axis)) * n[axis];
                 }
-                if (!(Math.abs(off) <= OFF_PLANE * size)) {
+                if (!(Math.abs(off) <= Tolerance.ON_PLANE * size)) {
                     return false;
                 }
             }

@@ -1,5 +1,6 @@
 package ifold.wrap;
 
+import ifold.geom.Tolerance;
 import ifold.mesh.PolygonSoup;
 import ifold.sheet.FoldException;
 import ifold.sheet.HostFrame;
@@ -36,11 +37,16 @@ public final class TurnGadget {
      * widths, and below {@link #MIN_ANGLE} the two creases part by less than a millionth of the
      * width.
      *
-     * @param thickness the paper's thickness, or NaN for width / 50; at most a quarter of the width
+     * @param thickness the paper's thickness, or NaN for the width over {@link #WIDTHS_A_THICKNESS}; at most a quarter of the width
      * @throws ParameterException naming the value out of range
      */
     public record Options(double angle, double overhang, double width, double thickness) {
         public static final double MIN_ANGLE = 0.01;
+        /**
+         * The default thickness is the width over this: thicker than a wrap's, since the gadget
+         * is seen close, a few widths of strip, and its layers should show.
+         */
+        public static final int WIDTHS_A_THICKNESS = 50;
         public static final double MAX_ANGLE = 179.9;
         /** The most overhang, in strip widths. */
         public static final double MAX_OVERHANG = 100;
@@ -57,7 +63,7 @@ public final class TurnGadget {
                 throw new ParameterException("width", "must be a positive number, got " + width);
             }
             if (Double.isNaN(thickness)) {
-                thickness = width / 50;
+                thickness = width / WIDTHS_A_THICKNESS;
             }
             if (!(thickness >= 0) || !Double.isFinite(thickness) || thickness > width / 4) {
                 throw new ParameterException("thickness", "must be zero or more and at most a quarter of the width, got " + thickness);
@@ -137,7 +143,7 @@ public final class TurnGadget {
         double slant = width * Math.tan(Math.toRadians(angleDegrees / 2));
         double p = lead;
         double length = p + overhang + slant + tail;
-        double tolerance = 1e-9 * length;
+        double tolerance = Tolerance.ON_PLANE * length;
         Sheet sheet = new Sheet(width, thickness, tolerance, TABLE, Isometry2.IDENTITY);
         List<Wrap.Step> steps = new ArrayList<>();
         // Across the strip at u = p: it runs back along -x, back side up.

@@ -1,6 +1,7 @@
 package ifold.wrap;
 
 import ifold.geom.SlantedEdges;
+import ifold.geom.Tolerance;
 import ifold.geom.Triangle;
 import ifold.mesh.IndexedPolygons;
 import ifold.refine.HamiltonianRefinement;
@@ -102,12 +103,23 @@ public final class Wrap {
     }
 
     /**
+     * The default thickness is the width over this: a strip as thin as good paper for its width
+     * (a 2 cm strip of 0.25 mm card), so that the layers show in pictures of the whole model.
+     */
+    public static final int WIDTHS_A_THICKNESS = 80;
+
+    /** The paper's thickness where none is given: the width over {@link #WIDTHS_A_THICKNESS}. */
+    public static double defaultThickness(double width) {
+        return width / WIDTHS_A_THICKNESS;
+    }
+
+    /**
      * What to wrap with. The constructor checks every value on its own (and the thickness
      * against a width given); {@link #wrap} checks the thickness against a default width, and
      * the width against the triangles.
      *
      * @param width the strip's width, or NaN for {@link #defaultWidth}
-     * @param thickness the paper's thickness, or NaN for width / 80; at most a quarter of the width
+     * @param thickness the paper's thickness, or NaN for {@link #defaultThickness}; at most a quarter of the width
      * @param ends for paths of one triangle, where the strip starts, ends and comes in; null to
      *     let the planner choose (a path of several triangles sets them itself)
      * @param maxFaces the most faces of paper the wrap may make
@@ -146,7 +158,7 @@ public final class Wrap {
         /**
          * The options for wrapping the lone triangle {@code shape} (the single-triangle demo):
          * a width of NaN is a fifth of the altitude from the start corner, a thickness of NaN the
-         * width / 80. The width must lie between {@link #LONE_NARROWEST} and {@link #LONE_WIDEST}
+         * {@link #defaultThickness}. The width must lie between {@link #LONE_NARROWEST} and {@link #LONE_WIDEST}
          * times that altitude.
          *
          * @throws ParameterException naming the value out of range
@@ -165,7 +177,7 @@ public final class Wrap {
                 throw new ParameterException("width", String.format(Locale.ROOT, "%s is under 1/400 of the altitude %.4g from the "
                         + "start corner: a lone triangle takes at most 400 passes", w, altitude));
             }
-            return new Options(w, Double.isNaN(thickness) ? w / 80 : thickness, ends, DEFAULT_MAX_FACES);
+            return new Options(w, Double.isNaN(thickness) ? defaultThickness(w) : thickness, ends, DEFAULT_MAX_FACES);
         }
 
         /** These options with another limit on faces. */
@@ -474,7 +486,7 @@ public final class Wrap {
                     + " across: scale it into that range", across, SMALLEST_MODEL, LARGEST_MODEL));
         }
         double size = modelSize(mesh);
-        double tolerance = 1e-9 * size;
+        double tolerance = Tolerance.ON_PLANE * size;
         List<PathPlan> plans = plans(path, componentStart, options.ends());
         double[] narrowestTriangle = narrowest(mesh, plans);
         double widest = narrowestTriangle[0];
@@ -483,14 +495,14 @@ public final class Wrap {
         if (!(width > 0) || !Double.isFinite(width)) { // no triangle with an altitude to take a default from
             throw new WrapException("no triangle gives the strip a width: give one");
         }
-        double thickness = Double.isNaN(options.thickness()) ? width / 80 : options.thickness();
+        double thickness = Double.isNaN(options.thickness()) ? defaultThickness(width) : options.thickness();
         if (thickness > width / 4) {
             throw new ParameterException("thickness", "must be at most a quarter of the width " + width + ", got " + thickness);
         }
         if (!Double.isNaN(options.thickness()) && thickness > 0 && thickness < tolerance) {
             // Layers closer than the tolerance are one to every test of the wrap: the caps joining
             // them vanish and the checks find coplanar paper (at 1e-300 the cube's OBJ came out in
-            // 2,516 unconnected pieces). Only a thickness given is refused: the default, width / 80,
+            // 2,516 unconnected pieces). Only a thickness given is refused: the default thickness
             // is that thin only where the strip is a ten-millionth of the model, too narrow to fold.
             throw new ParameterException("thickness", String.format(Locale.ROOT, "must be 0 (paper without thickness) or at least %.3g,"
                     + " a billionth of the model's size, or the layers cannot be told apart; got %.3g", tolerance, thickness));
