@@ -187,7 +187,24 @@ public final class Main implements Runnable {
             err.println("ifold: cannot write to the standard output (a full disk, or a pipe closed): its lines are lost");
             code = UserError.EXIT_CODE;
         }
+        if (AtomicFile.stopping()) {
+            // A signal is stopping the JVM, which halts with 128 + its number once the shutdown
+            // hooks are done. Exiting here with the code the interrupted command returned would
+            // race it: a nonzero exit once the hooks have run halts at once with its own status,
+            // and a Ctrl-C came out as 1 instead of 130 about one run in four.
+            waitForTheHalt();
+        }
         ended = true;
         System.exit(code);
+    }
+
+    private static void waitForTheHalt() {
+        while (true) {
+            try {
+                Thread.sleep(Long.MAX_VALUE);
+            } catch (InterruptedException e) {
+                // Only the halt ends this thread.
+            }
+        }
     }
 }

@@ -61,8 +61,10 @@ final class RefineCommand implements Callable<Integer> {
         long start = System.nanoTime();
         WrapPath path = prepare ? WrapPath.prepared(mesh) : null;
         HamiltonianRefinement.Result result = path != null ? path.refinement() : HamiltonianRefinement.refine(mesh);
-        if (path != null) {
-            path.warnIfKept(model.toString(), spec.commandLine().getErr());
+        String kept = path != null ? path.keptNote(model.toString()) : null;
+        if (kept != null) {
+            spec.commandLine().getErr().println("ifold: " + kept);
+            spec.commandLine().getErr().flush();
         }
         long refined = System.nanoTime();
         try {

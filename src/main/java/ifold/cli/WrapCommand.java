@@ -1,22 +1,20 @@
 package ifold.cli;
 
-import ifold.job.Json;
-import ifold.job.NearOrigin;
-import ifold.job.Reports;
-import ifold.job.Scenes;
-import ifold.job.WrapPath;
-import ifold.io.AtomicFile;
 import ifold.fold.FoldFile;
+import ifold.io.AtomicFile;
+import ifold.job.Json;
+import ifold.job.ModelFiles;
+import ifold.job.Scenes;
+import ifold.job.WrapJob;
+import ifold.job.WrapPath;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.io.MeshWriters;
-import ifold.refine.HamiltonianRefinement;
 import ifold.scene.Animation;
 import ifold.scene.Scene;
 import ifold.wrap.LayerFloor;
 import ifold.wrap.ParameterException;
 import ifold.wrap.Wrap;
-import ifold.wrap.PlacedWrap;
 import ifold.wrap.WrapAnalysis;
 import ifold.wrap.WrapExport;
 import ifold.wrap.WrapGeometry;
@@ -95,52 +93,42 @@ final class WrapCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         Path exportObj = outputs.exportObj;
         Path report = outputs.report;
-        long started = System.nanoTime();
-        LoadedModel loaded = LoadedModel.load(model, new MeshBuilder.Options(strict, true));
-        loaded.requireFaces(model, "nothing to wrap");
-        loaded.reportRepairs(model, err);
-        HalfedgeMesh mesh = loaded.built().mesh();
-        if (mesh.faceCount() == 0) {
-            throw new UserError(model + ": no faces left to wrap");
-        }
-        double[] offset = NearOrigin.move(mesh);
-        if (NearOrigin.moved(offset)) {
-            err.println("ifold: " + model + ": wrapped about " + Reports.point(offset) + ", near its centre, where doubles can hold"
-                    + " the paper: the exports' coordinates are about that point");
-            err.flush();
-        }
-        long loadedAt = System.nanoTime();
-        WrapPath path = WrapPath.of(mesh);
-        HamiltonianRefinement.Result refinement = path.refinement();
-        path.warnIfKept(model.toString(), err);
-        long refinedAt = System.nanoTime();
-        Wrap.Result result;
+        WrapJob.Outcome wrapped;
         ProgressBar.WrapBar bar = ProgressBar.wrapping(err);
         try {
-            result = Wrap.wrap(refinement, options, bar);
+            wrapped = WrapJob.run(new WrapJob.Request(model, new MeshBuilder.Options(strict, true), options), new WrapJob.Watcher() {
+                @Override
+                public void wrapped(int done, int total) {
+                    bar.wrapped(done, total);
+                }
+
+                @Override
+                public boolean stopped() {
+                    return false;
+                }
+
+                @Override
+                public void note(String line) {
+                    err.println("ifold: " + line);
+                    err.flush();
+                }
+            });
+        } catch (ModelFiles.LoadFailure e) {
+            throw new UserError(e.getMessage() + (e.repairable() ? " (run without --strict to repair)" : ""));
         } catch (ParameterException e) {
             throw UserError.usage(e);
         } catch (Wrap.FaceLimitException e) {
             throw new UserError(model + ": cannot wrap: " + e.getMessage() + " (--max-faces raises the limit)");
-        } catch (Wrap.WrapException e) {
+        } catch (Wrap.WrapException | WrapJob.Stretched e) {
             throw new UserError(model + ": cannot wrap: " + e.getMessage());
         } finally {
             bar.wipe(); // before the summary or the error
         }
-        long wrappedAt = System.nanoTime();
-        PlacedWrap placed = PlacedWrap.of(result);
-        List<WrapGeometry> geometries = placed.geometries();
-        WrapAnalysis analysis = placed.analysis();
+        HalfedgeMesh mesh = wrapped.mesh();
+        Wrap.Result result = wrapped.result();
+        List<WrapGeometry> geometries = wrapped.geometries();
+        Map<String, Object> figures = wrapped.figures();
         long analysedAt = System.nanoTime();
-        String stretched = Reports.stretched(analysis);
-        if (stretched != null) {
-            throw new UserError(model + ": cannot wrap: " + stretched);
-        }
-
-        Map<String, Object> figures = Reports.wrap(model.toString(), mesh.faceCount(), loaded.repairs(), path, result, analysis);
-        if (NearOrigin.moved(offset)) {
-            figures.put("movedBy", List.of(offset[0], offset[1], offset[2]));
-        }
         List<Path> written = new ArrayList<>();
         try {
             if (exportObj != null) {
@@ -165,10 +153,10 @@ final class WrapCommand implements Callable<Integer> {
             outputs.checkCollisions(geometries, result.thickness(), mesh, figures);
             long writtenAt = System.nanoTime();
             Map<String, Object> seconds = new LinkedHashMap<>();
-            seconds.put("load", (loadedAt - started) * 1e-9);
-            seconds.put("refine", (refinedAt - loadedAt) * 1e-9);
-            seconds.put("wrap", (wrappedAt - refinedAt) * 1e-9);
-            seconds.put("analyse", (analysedAt - wrappedAt) * 1e-9);
+            seconds.put("load", wrapped.seconds().load());
+            seconds.put("refine", wrapped.seconds().refine());
+            seconds.put("wrap", wrapped.seconds().wrap());
+            seconds.put("analyse", wrapped.seconds().analyse());
             seconds.put("export", (exportedAt - analysedAt) * 1e-9 - outputs.layerOrderSeconds);
             seconds.put("layerOrder", outputs.layerOrderSeconds);
             seconds.put("collisions", (writtenAt - exportedAt) * 1e-9);
@@ -182,7 +170,7 @@ final class WrapCommand implements Callable<Integer> {
         } catch (IOException e) {
             throw new UserError("cannot write: " + e.getMessage());
         }
-        out.println(summary(model, mesh, path, result, analysis));
+        out.println(summary(model, mesh, wrapped.path(), result, wrapped.analysis()));
         outputs.printChecksAndFiles(out);
         out.flush();
         if (outputs.frameOptions.frames != null || !outputs.noView) {

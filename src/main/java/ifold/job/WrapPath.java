@@ -5,7 +5,6 @@ import ifold.refine.FacePreparation;
 import ifold.refine.HamiltonianRefinement;
 import ifold.refine.RefinementClaims;
 import ifold.wrap.Wrap;
-import java.io.PrintWriter;
 import java.util.LinkedHashMap;
 import java.util.Map;
 
@@ -41,14 +40,11 @@ public record WrapPath(FacePreparation.Result preparation, HamiltonianRefinement
     }
 
     /**
-     * Says on {@code err}, in one line naming {@code model}, why the model's faces were kept as
-     * they are although some needed preparing; says nothing where they were prepared or needed none.
+     * Why the model's faces were kept as they are although some needed preparing, in one line
+     * naming {@code model}; null where they were prepared or needed none.
      */
-    public void warnIfKept(String model, PrintWriter err) {
-        if (preparation.kept() != null) {
-            err.println("ifold: " + model + ": faces kept as they are, not prepared: " + preparation.kept());
-            err.flush();
-        }
+    public String keptNote(String model) {
+        return preparation.kept() != null ? model + ": faces kept as they are, not prepared: " + preparation.kept() : null;
     }
 
     /** The report's figures of the preparation: regions, triangles, and the smallest angles of the model, the prepared faces and the path, in degrees. */

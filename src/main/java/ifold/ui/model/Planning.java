@@ -7,11 +7,11 @@ import ifold.fold.FoldJson;
 import ifold.geom.Triangle;
 import ifold.job.Collisions;
 import ifold.job.LayerOrders;
-import ifold.job.NearOrigin;
+import ifold.job.ModelFiles;
 import ifold.job.Reports;
 import ifold.job.Scenes;
 import ifold.job.Triangles;
-import ifold.job.WrapPath;
+import ifold.job.WrapJob;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.PolygonSoup;
@@ -235,37 +235,38 @@ public final class Planning {
     private static Plan wrap(Job.WrapModel job, Progress progress) throws JobFailure {
         Wrap.Options options = wrapOptions(job, new ArrayList<>());
         Path model = job.model();
-        ModelFile loaded = ModelFile.load(model, new MeshBuilder.Options(job.strict(), true), progress);
-        loaded.requireFaces(model, "wrap");
-        MeshBuilder.Result built = loaded.built();
-        HalfedgeMesh mesh = built.mesh();
-        progress.check();
-        progress.stage("preparing and refining " + mesh.faceCount() + " triangles");
-        NearOrigin.move(mesh); // as the command line wraps it: about its centre where it lies far out
-        WrapPath path = WrapPath.of(mesh);
-        HamiltonianRefinement.Result refinement = path.refinement();
-        progress.check();
-        progress.stage("wrapping " + refinement.mesh().faceCount() + " triangles");
-        Wrap.Result result;
+        WrapJob.Outcome wrapped;
         try {
-            result = Wrap.wrap(refinement, options, watcher(progress));
+            wrapped = WrapJob.run(new WrapJob.Request(model, new MeshBuilder.Options(job.strict(), true), options), new WrapJob.Watcher() {
+                @Override
+                public void wrapped(int done, int total) {
+                    progress.done(done, total);
+                }
+
+                @Override
+                public boolean stopped() {
+                    return progress.cancelled();
+                }
+
+                @Override
+                public void stage(String what) {
+                    progress.stage(what);
+                }
+            });
+        } catch (ModelFiles.LoadFailure e) {
+            throw new JobFailure(new Problem("model", e.getMessage() + (e.repairable() ? " (clear Strict to repair it)" : "")));
         } catch (Wrap.FaceLimitException e) {
             throw new JobFailure(new Problem("maxFaces", model + ": cannot wrap: " + e.getMessage() + " (Max faces raises it)"));
         } catch (Wrap.TooWideException e) {
             throw new JobFailure(new Problem("width", model + ": cannot wrap: " + e.getMessage()));
-        } catch (Wrap.WrapException e) {
+        } catch (Wrap.WrapException | WrapJob.Stretched e) {
             throw new JobFailure(model + ": cannot wrap: " + e.getMessage());
         }
-        progress.check();
-        progress.stage("analysing");
-        PlacedWrap placed = PlacedWrap.of(result);
-        List<WrapGeometry> geometries = placed.geometries();
-        WrapAnalysis analysis = placed.analysis();
-        String stretched = Reports.stretched(analysis);
-        if (stretched != null) {
-            throw new JobFailure(model + ": cannot wrap: " + stretched);
-        }
-        Map<String, Object> figures = Reports.wrap(model.toString(), mesh.faceCount(), built.repairs(), path, result, analysis);
+        HalfedgeMesh mesh = wrapped.mesh();
+        Wrap.Result result = wrapped.result();
+        List<WrapGeometry> geometries = wrapped.geometries();
+        HamiltonianRefinement.Result refinement = wrapped.refinement();
+        Map<String, Object> figures = wrapped.figures();
         List<FoldFile.Folded> sheets = new ArrayList<>();
         for (Wrap.Strip strip : result.strips()) {
             sheets.add(new FoldFile.Folded(strip.sheet(), result.frames()));

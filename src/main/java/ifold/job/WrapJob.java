@@ -1,0 +1,145 @@
+package ifold.job;
+
+import ifold.mesh.HalfedgeMesh;
+import ifold.mesh.MeshBuilder;
+import ifold.refine.HamiltonianRefinement;
+import ifold.wrap.PlacedWrap;
+import ifold.wrap.Wrap;
+import ifold.wrap.WrapAnalysis;
+import ifold.wrap.WrapGeometry;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+
+/**
+ * The wrap of a model file, as {@code ifold wrap} and the window's Wrap the model both do it: the
+ * model read and built, moved near its centre where it lies far out, its faces prepared and
+ * refined, wrapped, placed in space and analysed, and the figures of its report. One pipeline:
+ * the front ends read what the user asked, run it, and present what it returns (each then
+ * writes and checks its outputs, and says a failure in its own words).
+ */
+public final class WrapJob {
+    private WrapJob() {
+    }
+
+    /** What to wrap and how: the model file, how strictly it is built, the strip. */
+    public record Request(Path model, MeshBuilder.Options build, Wrap.Options options) {
+    }
+
+    /**
+     * What a wrap tells as it goes, besides the triangles wrapped and whether to stop: the
+     * stage it starts, and notes on the data a user should read before the result (a repair
+     * made, the model moved near its centre, faces kept as they are).
+     */
+    public interface Watcher extends Wrap.Watcher {
+        /** A stage begins: "reading cube.off", "refining 12 triangles", "wrapping 58 triangles", "analysing". */
+        default void stage(String what) {
+        }
+
+        /** A note on the model, in one line without a prefix: "models/x.off: repaired: dropped 1 zero-area face". */
+        default void note(String line) {
+        }
+    }
+
+    /**
+     * A wrap done.
+     *
+     * @param loaded the model as read and built, with its repairs
+     * @param mesh the model's mesh, moved by {@code movedBy}
+     * @param movedBy what was taken from every coordinate (zeros where the model was left where it lies)
+     * @param path the prepared and refined path the strip follows
+     * @param figures the report's figures: {@link Reports#wrap}, and {@code movedBy} where moved
+     * @param seconds the phases' times: load, refine, wrap, analyse
+     */
+    public record Outcome(ModelFiles.Loaded loaded, HalfedgeMesh mesh, double[] movedBy, WrapPath path, Wrap.Result result,
+            List<WrapGeometry> geometries, WrapAnalysis analysis, Map<String, Object> figures, Seconds seconds) {
+        public HamiltonianRefinement.Result refinement() {
+            return path.refinement();
+        }
+    }
+
+    /** How long each phase took, in seconds. */
+    public record Seconds(double load, double refine, double wrap, double analyse) {
+    }
+
+    /**
+     * The paper came out stretched beyond the tolerance: rounding at the model's coordinates is
+     * coarser than its folds. A failure of the data, not of the wrap's code.
+     */
+    public static final class Stretched extends Exception {
+        private static final long serialVersionUID = 1L;
+
+        Stretched(String message) {
+            super(message);
+        }
+    }
+
+    /**
+     * Runs the wrap.
+     *
+     * @throws ModelFiles.LoadFailure where the file cannot be read or built, or holds no faces after its repairs
+     * @throws Wrap.WrapException where the wrap refuses (a {@link Wrap.FaceLimitException} or
+     *     {@link Wrap.TooWideException} names the option to change)
+     * @throws ifold.wrap.ParameterException where a value given does not fit this model
+     * @throws Stretched where the paper came out stretched
+     * @throws java.util.concurrent.CancellationException once the watcher says stop
+     */
+    public static Outcome run(Request request, Watcher watcher) throws ModelFiles.LoadFailure, Wrap.WrapException, Stretched {
+        Path model = request.model();
+        long started = System.nanoTime();
+        watcher.stage("reading " + model.getFileName());
+        ModelFiles.Loaded loaded = ModelFiles.load(model, request.build());
+        String noFaces = loaded.noFacesLeft(model, "nothing to wrap");
+        if (noFaces != null) {
+            throw new ModelFiles.LoadFailure(noFaces, false);
+        }
+        for (Map.Entry<ifold.mesh.Defect, Integer> repair : new TreeMap<>(loaded.repairs()).entrySet()) {
+            watcher.note(model + ": repaired: " + repair.getKey().describeRepair(repair.getValue()));
+        }
+        HalfedgeMesh mesh = loaded.built().mesh();
+        if (mesh.faceCount() == 0) {
+            throw new ModelFiles.LoadFailure(model + ": no faces left to wrap", false);
+        }
+        stopIfAsked(watcher);
+        double[] movedBy = NearOrigin.move(mesh);
+        if (NearOrigin.moved(movedBy)) {
+            watcher.note(model + ": wrapped about " + Reports.point(movedBy) + ", near its centre, where doubles can hold"
+                    + " the paper: the exports' coordinates are about that point");
+        }
+        long loadedAt = System.nanoTime();
+        watcher.stage("preparing and refining " + mesh.faceCount() + " triangles");
+        WrapPath path = WrapPath.of(mesh);
+        String kept = path.keptNote(model.toString());
+        if (kept != null) {
+            watcher.note(kept);
+        }
+        stopIfAsked(watcher);
+        long refinedAt = System.nanoTime();
+        watcher.stage("wrapping " + path.refinement().mesh().faceCount() + " triangles");
+        Wrap.Result result = Wrap.wrap(path.refinement(), request.options(), watcher);
+        long wrappedAt = System.nanoTime();
+        stopIfAsked(watcher);
+        watcher.stage("analysing");
+        PlacedWrap placed = PlacedWrap.of(result);
+        WrapAnalysis analysis = placed.analysis();
+        String stretched = Reports.stretched(analysis);
+        if (stretched != null) {
+            throw new Stretched(stretched);
+        }
+        Map<String, Object> figures = Reports.wrap(model.toString(), mesh.faceCount(), loaded.repairs(), path, result, analysis);
+        if (NearOrigin.moved(movedBy)) {
+            figures.put("movedBy", List.of(movedBy[0], movedBy[1], movedBy[2]));
+        }
+        long analysedAt = System.nanoTime();
+        return new Outcome(loaded, mesh, movedBy, path, result, placed.geometries(), analysis, figures,
+                new Seconds((loadedAt - started) * 1e-9, (refinedAt - loadedAt) * 1e-9, (wrappedAt - refinedAt) * 1e-9,
+                        (analysedAt - wrappedAt) * 1e-9));
+    }
+
+    private static void stopIfAsked(Watcher watcher) {
+        if (watcher.stopped()) {
+            throw new java.util.concurrent.CancellationException("stopped");
+        }
+    }
+}
