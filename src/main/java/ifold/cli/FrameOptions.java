@@ -4,6 +4,7 @@ import ifold.image.FrameSink;
 import ifold.image.FrameWriter;
 import ifold.image.GifWriter;
 import ifold.image.Mp4Writer;
+import ifold.io.AtomicFile;
 import ifold.render.FrameExport;
 import ifold.render.RenderUnavailableException;
 import ifold.scene.Animation;
@@ -25,7 +26,7 @@ import picocli.CommandLine.Option;
  * [--no-captions]}. Checked before any work.
  */
 final class FrameOptions {
-    private static final Pattern SIZE = Pattern.compile("(\\d{1,5})x(\\d{1,5})");
+    private static final Pattern SIZE = Pattern.compile("(\\d+)x(\\d+)");
 
     @Option(names = "--frames", paramLabel = "DIR", description = "render offscreen into DIR/frame_00000.png, ... instead of opening a window")
     Path frames;
@@ -83,8 +84,9 @@ final class FrameOptions {
         if (!m.matches()) {
             throw UserError.usage("option --size: '" + size + "' is not WIDTHxHEIGHT, e.g. 1280x720");
         }
-        width = Integer.parseInt(m.group(1));
-        height = Integer.parseInt(m.group(2));
+        // A side of any number of digits is a size, too big or not: the range below names it.
+        width = m.group(1).length() > 6 ? Integer.MAX_VALUE : Integer.parseInt(m.group(1));
+        height = m.group(2).length() > 6 ? Integer.MAX_VALUE : Integer.parseInt(m.group(2));
         if (width < 16 || height < 16 || width > 8192 || height > 8192) {
             throw UserError.usage("option --size: each side must be between 16 and 8192 pixels, got " + size);
         }
@@ -162,8 +164,9 @@ final class FrameOptions {
                     + frames) + ": " + e.getMessage());
         }
         if (frames != null) {
-            out.printf(Locale.ROOT, "wrote %d frames of %dx%d to %s in %.1f s (%.1f frames/s)%n", result.frames(), width, height,
-                    frames.toAbsolutePath(), result.seconds(), result.framesPerSecond());
+            out.printf(Locale.ROOT, "wrote %d %s of %dx%d to %s in %.1f s (%.1f frames/s)%n", result.frames(),
+                    result.frames() == 1 ? "frame" : "frames", width, height, frames.toAbsolutePath(), result.seconds(),
+                    result.framesPerSecond());
         }
         if (movie != null) {
             long bytes;
@@ -172,8 +175,8 @@ final class FrameOptions {
             } catch (IOException e) {
                 bytes = -1;
             }
-            out.printf(Locale.ROOT, "wrote %s: %d frames of %dx%d at %d frames/s (%.1f s), %.2f MB, in %.1f s (%.1f frames/s)%n",
-                    movie, result.frames(), width, height, fps, (double) result.frames() / fps, bytes / 1e6, result.seconds(),
+            out.printf(Locale.ROOT, "wrote %s: %d %s of %dx%d at %d frames/s (%.1f s), %.2f MB, in %.1f s (%.1f frames/s)%n",
+                    movie, result.frames(), result.frames() == 1 ? "frame" : "frames", width, height, fps, (double) result.frames() / fps, bytes / 1e6, result.seconds(),
                     result.framesPerSecond());
         }
         out.flush();
@@ -213,7 +216,7 @@ final class FrameOptions {
     private void makeFolder() {
         if (!Files.exists(frames)) {
             try {
-                Files.createDirectory(frames);
+                AtomicFile.createFolderRemovedIfEmptyOnStop(frames); // an interrupted run leaves no empty folder
                 createdFolder = true;
             } catch (IOException e) {
                 throw new UserError("option --frames: cannot create " + frames + ": " + e.getMessage());

@@ -132,7 +132,7 @@ final class WrapCommand implements Callable<Integer> {
         List<Path> written = new ArrayList<>();
         try {
             if (exportObj != null) {
-                WrapExport.writeObj(exportObj, model.toString(), result, geometries);
+                WrapExport.writeObj(exportObj, WrapExport.aboutCentre(model.toString(), wrapped.movedBy()), result, geometries);
                 written.add(exportObj);
                 outputs.wrote(exportObj);
             }

@@ -37,14 +37,13 @@ public record CreasePattern(double length, double width, FoldScript script, List
         int[] lineOfCrease, double thickness) {
 
     /**
-     * The largest and smallest sheets (their diagonal) folded: within them no product of two
-     * lengths overflows or underflows, as a line test on a sheet 1e154 across would (the range
-     * the zig-zag's triangles are held to).
+     * The largest and smallest sheets (their diagonal) folded, as every size iFold computes
+     * with ({@link Tolerance#SMALLEST_SIZE}): a sheet 1e85 across folded its valley as a mountain.
      */
-    static final double LARGEST_SHEET = 1e150;
+    static final double LARGEST_SHEET = Tolerance.LARGEST_SIZE;
 
     /** See {@link #LARGEST_SHEET}. */
-    static final double SMALLEST_SHEET = 1e-150;
+    static final double SMALLEST_SHEET = Tolerance.SMALLEST_SIZE;
 
     /** A crease pattern that cannot be read, or cannot be folded as iFold folds. */
     public static final class Refused extends Exception {
@@ -101,14 +100,14 @@ public record CreasePattern(double length, double width, FoldScript script, List
         if (!(size <= LARGEST_SHEET)) {
             // Each coordinate may be finite and their differences not: no length on such a sheet can be measured.
             throw new Refused(String.format(Locale.ROOT, "the sheet is too large: its vertices run from x = %s to %s and y = %s to %s;"
-                    + " iFold folds sheets from %s to %s across: scale the pattern down", fmt(box[0]), fmt(box[2]), fmt(box[1]),
+                    + " iFold folds sheets from %.0e to %.0e across: scale the pattern down", fmt(box[0]), fmt(box[2]), fmt(box[1]),
                     fmt(box[3]), SMALLEST_SHEET, LARGEST_SHEET));
         }
         if (!(length > 0) || !(width > 0)) {
             throw new Refused("the crease pattern has no area");
         }
         if (size < SMALLEST_SHEET) {
-            throw new Refused(String.format(Locale.ROOT, "the sheet is too small: %s across; iFold folds sheets from %s to %s across:"
+            throw new Refused(String.format(Locale.ROOT, "the sheet is too small: %s across; iFold folds sheets from %.0e to %.0e across:"
                     + " scale the pattern up", fmt(size), SMALLEST_SHEET, LARGEST_SHEET));
         }
         double tolerance = Tolerance.ON_PLANE * Math.hypot(length, width);

@@ -4,6 +4,7 @@ import com.fasterxml.jackson.core.JsonFactory;
 import com.fasterxml.jackson.core.JsonParseException;
 import com.fasterxml.jackson.core.JsonParser;
 import com.fasterxml.jackson.core.JsonToken;
+import com.fasterxml.jackson.core.exc.StreamConstraintsException;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.file.Files;
@@ -50,7 +51,8 @@ public final class FoldJson {
      */
     @SuppressWarnings("unchecked")
     static Map<String, Object> read(Path file) throws IOException, CreasePattern.Refused {
-        try (JsonParser parser = new JsonFactory().createParser(file.toFile())) {
+        // A key given twice is refused rather than the last one taken: the file says two things.
+        try (JsonParser parser = new JsonFactory().enable(JsonParser.Feature.STRICT_DUPLICATE_DETECTION).createParser(file.toFile())) {
             if (parser.nextToken() != JsonToken.START_OBJECT) {
                 throw new CreasePattern.Refused("not a FOLD file: it does not begin with a JSON object");
             }
@@ -69,8 +71,23 @@ public final class FoldJson {
             return fold;
         } catch (JsonParseException e) {
             throw new CreasePattern.Refused(String.format(Locale.ROOT, "line %d: not valid JSON: %s", e.getLocation().getLineNr(),
-                    e.getOriginalMessage()));
+                    inWords(e.getOriginalMessage())));
+        } catch (StreamConstraintsException e) {
+            // jackson gives no place for a limit it met.
+            throw new CreasePattern.Refused("not a FOLD file: " + (e.getOriginalMessage().contains("nesting depth")
+                    ? "lists or objects nested more than 1,000 deep" : inWords(e.getOriginalMessage())));
         }
+    }
+
+    /**
+     * jackson's message without what it says to its own programmers ("enable
+     * `JsonReadFeature.ALLOW_NON_NUMERIC_NUMBERS` to allow", "from
+     * `StreamReadConstraints...`"): a user cannot enable anything.
+     */
+    static String inWords(String message) {
+        String words = message.replaceAll(":? *\\(?(enable|from) `[^`]*`[^)]*\\)?", "").strip();
+        words = words.replaceFirst("^Non-standard token '([^']*)'", "'$1' is not a number JSON allows");
+        return words.replaceFirst("^Duplicate field '([^']*)'", "the key '$1' is given twice");
     }
 
     private static CreasePattern.Refused trailing(int line) {

@@ -36,6 +36,19 @@ public final class Tolerance {
      */
     public static final double COPLANAR_COSINE = 1e-12;
 
+    /**
+     * The smallest and largest sizes iFold computes with, across a model, a triangle or a sheet:
+     * a triangle's frame squares a cross product of edges, the fourth power of their length,
+     * which underflows to zero below about 1e-77 and overflows above about 1e77 (every triangle
+     * then seems to have no area, every fold the wrong way); a factor of 1e17 either way is left
+     * for the areas and measures that follow. A crease pattern 1e85 across came out with its
+     * valley a mountain.
+     */
+    public static final double SMALLEST_SIZE = 1e-60;
+
+    /** See {@link #SMALLEST_SIZE}. */
+    public static final double LARGEST_SIZE = 1e60;
+
     /** Whether a triangle with doubled area {@code twiceArea} and longest edge squared {@code longestSquared} has no area. */
     public static boolean isDegenerateTriangle(double twiceArea, double longestSquared) {
         return !(twiceArea > DEGENERATE_AREA * longestSquared);

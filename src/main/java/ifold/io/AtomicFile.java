@@ -130,6 +130,26 @@ public final class AtomicFile {
         }
     }
 
+    /** Folders this run made for its files, removed on a stop where nothing whole was left in them. */
+    private static final java.util.List<Path> FOLDERS = new java.util.ArrayList<>();
+
+    /**
+     * Makes the folder {@code dir} for this run's files, to be removed should the JVM stop
+     * (Ctrl-C, SIGTERM) while it holds nothing whole: made and registered in one step, so that no
+     * stop between the two can leave an empty folder behind.
+     *
+     * @throws IOException if the JVM is stopping already (nothing is made), or the folder cannot be made
+     */
+    public static void createFolderRemovedIfEmptyOnStop(Path dir) throws IOException {
+        synchronized (IN_FLIGHT) {
+            if (shuttingDown) {
+                throw new IOException("not made: iFold is stopping");
+            }
+            Files.createDirectory(dir);
+            FOLDERS.add(dir);
+        }
+    }
+
     /** Set once the JVM shuts down: no new file is begun after the unfinished ones are taken back. */
     private static boolean shuttingDown;
 
@@ -160,6 +180,13 @@ public final class AtomicFile {
                             deleteWithContents(temp);
                         } catch (IOException e) {
                             // Exiting anyway; the next run that writes there sweeps it.
+                        }
+                    }
+                    for (Path folder : FOLDERS) {
+                        try {
+                            Files.deleteIfExists(folder); // fails, as it should, where whole files stay in it
+                        } catch (IOException e) {
+                            // Something whole was written there: it stays.
                         }
                     }
                 }

@@ -1,5 +1,6 @@
 package ifold.job;
 
+import ifold.geom.Tolerance;
 import ifold.geom.Triangle;
 import ifold.wrap.ParameterException;
 import java.util.Locale;
@@ -51,10 +52,11 @@ public final class Triangles {
             // Thickness offsets of a millionth of the size would drown in the coordinates' rounding.
             throw new ParameterException("triangle", "the triangle is too small for its distance from the origin: move it nearer");
         }
-        if (far > 1e150 || size < 1e-150) {
-            // Lengths squared (areas, the stacks' overlaps) would overflow or underflow a double.
-            throw new ParameterException("triangle", String.format(Locale.ROOT, "iFold wraps triangles of sizes from 1e-150 to 1e150,"
-                    + " got %s up to %.3g", far > 1e150 ? "coordinates" : "sides", far > 1e150 ? far : size));
+        if (far > Tolerance.LARGEST_SIZE || size < Tolerance.SMALLEST_SIZE) {
+            // Fourth powers of lengths (a frame's cross products squared) would overflow or underflow a double.
+            throw new ParameterException("triangle", String.format(Locale.ROOT, "iFold wraps triangles of sizes from %.0e to %.0e,"
+                    + " got %s up to %.3g", Tolerance.SMALLEST_SIZE, Tolerance.LARGEST_SIZE,
+                    far > Tolerance.LARGEST_SIZE ? "coordinates" : "sides", far > Tolerance.LARGEST_SIZE ? far : size));
         }
         return triangle;
     }

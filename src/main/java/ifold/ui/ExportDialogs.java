@@ -162,6 +162,35 @@ final class ExportDialogs {
         return spinner;
     }
 
+    /**
+     * What is wrong with the number typed in {@code spinner}, or null where it is what the
+     * spinner holds: a number out of its range, or no number, is not committed to its value,
+     * which silently kept the last one that was ("5000" seconds became 500, as typed up to
+     * its fourth digit).
+     */
+    static String typedProblem(JSpinner spinner, String name) {
+        if (!(spinner.getEditor() instanceof JSpinner.DefaultEditor editor) || !(spinner.getModel() instanceof SpinnerNumberModel model)) {
+            return null;
+        }
+        javax.swing.JFormattedTextField field = editor.getTextField();
+        String text = field.getText().strip();
+        try {
+            Object value = field.getFormatter().stringToValue(text);
+            if (value instanceof Number number && number.doubleValue() == ((Number) spinner.getValue()).doubleValue()) {
+                return null;
+            }
+            spinner.setValue(value); // typed but not yet committed (the field never left): it counts
+            return null;
+        } catch (java.text.ParseException | IllegalArgumentException e) {
+            return name + ": '" + text + "' is not a number from " + plain(model.getMinimum()) + " to " + plain(model.getMaximum());
+        }
+    }
+
+    /** A bound as people write it: 3600, not 3600.0. */
+    private static String plain(Object bound) {
+        return bound instanceof Number n && n.doubleValue() == Math.rint(n.doubleValue()) ? Long.toString(n.longValue()) : String.valueOf(bound);
+    }
+
     /** Asks the size, frames a second, length and captions of frames or a movie; null if cancelled. */
     private Exports.FrameSettings askFrameSettings(String title) {
         String[] sizes = {"640x360", "960x540", "1280x720", "1920x1080"};
@@ -193,6 +222,12 @@ final class ExportDialogs {
                 size.setSelectedItem(typedSize);
             }
             String[] wh = String.valueOf(size.getSelectedItem()).strip().split("x");
+            String refused = typedProblem(fps, "frames a second");
+            refused = refused != null ? refused : typedProblem(seconds, "seconds");
+            if (refused != null) {
+                JOptionPane.showMessageDialog(parent, refused, title, JOptionPane.WARNING_MESSAGE);
+                continue;
+            }
             try {
                 Exports.FrameSettings chosen = new Exports.FrameSettings(Integer.parseInt(wh[0].strip()), Integer.parseInt(wh[1].strip()),
                         (Integer) fps.getValue(), ((Number) seconds.getValue()).doubleValue(), withCaptions.isSelected());
@@ -243,7 +278,8 @@ final class ExportDialogs {
     void movie(Path file, Exports.FrameSettings chosen) {
         plan("movie", file, (shown, progress) -> {
             Renderer.Rendered result = Exports.movie(OpenGlRenderer.INSTANCE, shown, file, chosen, progress);
-            return String.format(Locale.ROOT, "wrote %s: %d frames of %dx%d in %.1f s", file, result.frames(), chosen.width(),
+            return String.format(Locale.ROOT, "wrote %s: %d %s of %dx%d in %.1f s", file, result.frames(),
+                    result.frames() == 1 ? "frame" : "frames", chosen.width(),
                     chosen.height(), result.seconds());
         });
     }
@@ -251,7 +287,8 @@ final class ExportDialogs {
     void frames(Path folder, Exports.FrameSettings chosen) {
         plan("frames", folder, (shown, progress) -> {
             Renderer.Rendered result = Exports.frames(OpenGlRenderer.INSTANCE, shown, folder, chosen, progress);
-            return String.format(Locale.ROOT, "wrote %d frames of %dx%d to %s in %.1f s", result.frames(), chosen.width(),
+            return String.format(Locale.ROOT, "wrote %d %s of %dx%d to %s in %.1f s", result.frames(),
+                    result.frames() == 1 ? "frame" : "frames", chosen.width(),
                     chosen.height(), folder, result.seconds());
         });
     }

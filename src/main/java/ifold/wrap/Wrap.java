@@ -88,16 +88,11 @@ public final class Wrap {
      */
     public static final int DEFAULT_MAX_FACES = (int) ((1L << 30) / BYTES_PER_FACE);
 
-    /**
-     * The sizes of model a wrap computes in doubles, across its bounding box: a triangle's frame
-     * squares a cross product of edges, the fourth power of their length, which underflows to
-     * zero below about 1e-77 and overflows above about 1e77 (every triangle then seems to have
-     * no area); a factor of 1e17 either way is left for the areas and measures that follow.
-     */
-    public static final double SMALLEST_MODEL = 1e-60;
+    /** The sizes of model a wrap computes in doubles, across its bounding box ({@link Tolerance#SMALLEST_SIZE}). */
+    public static final double SMALLEST_MODEL = Tolerance.SMALLEST_SIZE;
 
     /** See {@link #SMALLEST_MODEL}. */
-    public static final double LARGEST_MODEL = 1e60;
+    public static final double LARGEST_MODEL = Tolerance.LARGEST_SIZE;
 
     private Wrap() {
     }

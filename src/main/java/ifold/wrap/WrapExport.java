@@ -28,6 +28,19 @@ public final class WrapExport {
                 + ", thickness " + result.thickness(), strips);
     }
 
+    /**
+     * The model as an export's header names it: with the point its coordinates are about, where
+     * the wrap moved it near its centre ({@code movedBy} not all zero), so that the paper can be
+     * put back where the model lies.
+     */
+    public static String aboutCentre(String model, double[] movedBy) {
+        if (movedBy == null || movedBy[0] == 0 && movedBy[1] == 0 && movedBy[2] == 0) {
+            return model;
+        }
+        return model + " (coordinates about (" + movedBy[0] + ", " + movedBy[1] + ", " + movedBy[2]
+                + "), near its centre: add that point to place the paper where the model lies)";
+    }
+
     /** Writes folded sheets (a wrap's strips, a fold script's paper) under a header line of their own. */
     public static void writeObj(Path file, String header, List<WrapGeometry> strips) throws IOException {
         AtomicFile.write(file, stream -> {

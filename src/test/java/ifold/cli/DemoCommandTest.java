@@ -78,8 +78,16 @@ class DemoCommandTest {
         CliTest.assertOneLineError(CliTest.run("demo", "turn", "--angle", "180", "--no-view"), "--angle");
         CliTest.assertOneLineError(CliTest.run("demo", "turn", "--angle", "0.001", "--no-view"), "--angle", "0.01 to 179.9");
         CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--triangle", "0,0,1e308,0,3e307,8e307", "--no-view"), "--triangle",
-                "1e150");
+                "1e+60");
+        // Before, a triangle 1e100 across passed this check and the default width overflowed: "option --width: ... got Infinity".
+        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--triangle", "0,0,1e100,0,3e99,8e99", "--no-view"), "--triangle",
+                "from 1e-60 to 1e+60");
+        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--triangle", "0,0,1e-100,0,3e-101,8e-101", "--no-view"), "--triangle",
+                "from 1e-60 to 1e+60");
         CliTest.assertOneLineError(CliTest.run("demo", "turn", "--angle", "90", "--overhang", "-1", "--no-view"), "--overhang");
+        // A side too long was "not WIDTHxHEIGHT".
+        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--frames", dir.resolve("big").toString(), "--size", "100000x100000"),
+                "--size", "each side must be between 16 and 8192 pixels, got 100000x100000");
         assertFalse(Files.exists(report), "nothing written by a refused run");
         assertEquals(2, CliTest.run("demo").code(), "a demo must be named");
     }
@@ -184,5 +192,16 @@ class DemoCommandTest {
                     + "a second; the frame past them gone, the user's own file kept");
         }
         assertTrue(Files.exists(frames.resolve("notes.txt")));
+    }
+
+    /** One frame is "1 frame" (was "wrote 1 frames"). */
+    @Test
+    void oneFrameIsSaidSo() throws Exception {
+        String display = System.getenv("DISPLAY");
+        assumeTrue(display != null && !display.isEmpty(), "no X display (run the tests under xvfb-run)");
+        Path frames = dir.resolve("one");
+        CliTest.Run run = CliTest.run("demo", "zigzag", "--frames", frames.toString(), "--size", "64x36", "--seconds", "0.01");
+        assertEquals(0, run.code(), run.err());
+        assertTrue(run.out().contains("wrote 1 frame of 64x36 to "), run.out());
     }
 }

@@ -145,6 +145,13 @@ class FoldCommandTest {
                 + " \"edges_vertices\": [[0, 1], [1, 2], [2, 3], [3, 0], [0, 2]],\n"
                 + " \"edges_assignment\": [\"B\", \"B\", \"B\", \"B\", \"V\"]}\n", "the sheet is too large"},
             {"tiny.fold", square("", ", [0, 2]", ", \"V\"", "").replace("10", "1e-200"), "the sheet is too small"},
+            // Within doubles, but past what folding computes: the valley came out a mountain ("cannot be folded ... in this order").
+            {"huge-but-finite.fold", square("", ", [0, 2]", ", \"V\"", "").replace("10", "1e85"), "iFold folds sheets from 1e-60 to 1e+60 across"},
+            {"tiny-but-normal.fold", square("", ", [0, 2]", ", \"V\"", "").replace("10", "1e-90"), "the sheet is too small"},
+            // jackson's own words named its settings ("enable `JsonReadFeature.ALLOW_NON_NUMERIC_NUMBERS` to allow").
+            {"nan.fold", square("", ", [0, 2]", ", \"V\"", "").replaceFirst("10", "NaN"), "line 1: not valid JSON: 'NaN' is not a number JSON allows"},
+            {"deep.fold", "{\"a\": " + "[".repeat(1200) + "]".repeat(1200) + "}", "not a FOLD file: lists or objects nested more than 1,000 deep"},
+            {"twice.fold", square("", ", [0, 2]", ", \"V\"", ", \"edges_assignment\": []"), "the key 'edges_assignment' is given twice"},
             {"trailing.fold", square("", ", [0, 2]", ", \"V\"", "") + "garbage\n", "line 4: text after the FOLD object"},
             {"two-objects.fold", square("", ", [0, 2]", ", \"V\"", "") + "{}\n", "line 4: text after the FOLD object"},
             // A triangle, its hypotenuse flat or not given at all: not the square it spans.

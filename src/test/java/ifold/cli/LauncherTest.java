@@ -117,6 +117,94 @@ class LauncherTest {
         }
     }
 
+    /**
+     * SIGTERM once the frames' folder is made, before its first frame: the folder iFold made
+     * goes too (an interrupted export left it, empty).
+     */
+    @Test
+    void framesStoppedAsTheyBeginLeaveNoFolder() throws Exception {
+        assumeTrue(Files.isExecutable(LAUNCHER) && hasXvfb(), "no installed launcher or no Xvfb");
+        Path frames = dir.resolve("fr");
+        Process launcher = launch("demo", "zigzag", "--frames", frames.toString(), "--size", "320x180");
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+        while (!Files.isDirectory(frames) && System.nanoTime() < deadline && launcher.isAlive()) {
+            Thread.sleep(2);
+        }
+        List<ProcessHandle> started = launcher.descendants().toList();
+        launcher.destroy(); // SIGTERM
+        assertTrue(launcher.waitFor(30, TimeUnit.SECONDS), "the launcher stops");
+        assertAllGone(started);
+        String log = Files.readString(dir.resolve("log"));
+        assertTrue(log.contains("ifold: interrupted: "), log);
+        if (log.contains("interrupted: nothing written")) {
+            assertFalse(Files.exists(frames), "nothing written, and no folder: " + log);
+        } else { // the first frames were quicker than the signal: they stay, whole, in their folder
+            try (var files = Files.list(frames)) {
+                assertTrue(files.allMatch(p -> p.getFileName().toString().matches("frame_\\d{5}\\.png")), log);
+            }
+        }
+    }
+
+    /**
+     * Signals at moments picked at random (seeded: the same every run), to the launcher or its
+     * process group, during headless movies, GIFs and frame exports of a wrap or the zig-zag:
+     * each run ends with the signal's status (128 + its number) and one line saying what was
+     * left, or, where the signal came after the end, exit 0 and the whole output; never a
+     * trace, a temporary file, a lock or a process left running.
+     */
+    @Test
+    void signalsAtRandomMomentsEndEveryRunCleanly() throws Exception {
+        assumeTrue(Files.isExecutable(LAUNCHER) && hasXvfb(), "no installed launcher or no Xvfb");
+        assumeTrue(new ProcessBuilder("sh", "-c", "command -v ffmpeg && command -v setsid").start().waitFor() == 0, "no ffmpeg or setsid");
+        java.util.Random random = new java.util.Random(20261203);
+        String[] signals = {"INT", "TERM", "HUP"};
+        int[] codes = {130, 143, 129};
+        int interrupted = 0;
+        for (int k = 0; k < 6; k++) {
+            Path out = Files.createDirectory(dir.resolve("run" + k));
+            int kind = random.nextInt(3);
+            List<String> command = new java.util.ArrayList<>(List.of("setsid", LAUNCHER.toString()));
+            command.addAll(random.nextBoolean() ? List.of("demo", "zigzag") : List.of("wrap", "models/tetrahedron.off"));
+            command.addAll(switch (kind) {
+                case 0 -> List.of("--movie", out.resolve("m.mp4").toString());
+                case 1 -> List.of("--movie", out.resolve("m.gif").toString());
+                default -> List.of("--frames", out.resolve("frames").toString());
+            });
+            command.addAll(List.of("--size", "640x360", "--seconds", "60", "--fps", "10"));
+            ProcessBuilder builder = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(dir.resolve("log").toFile());
+            builder.environment().remove("DISPLAY");
+            builder.environment().remove("IFOLD_IN_XVFB");
+            Process launcher = builder.start();
+            Thread.sleep(200 + random.nextInt(3500));
+            List<ProcessHandle> started = launcher.descendants().toList();
+            int which = random.nextInt(3);
+            boolean group = random.nextBoolean();
+            String what = "run " + k + ": " + String.join(" ", command.subList(2, command.size())) + ", SIG" + signals[which]
+                    + (group ? " to the group" : " to the launcher");
+            if (launcher.isAlive()) {
+                new ProcessBuilder("kill", "-" + signals[which], "--", (group ? "-" : "") + launcher.pid()).start().waitFor();
+            }
+            assertTrue(launcher.waitFor(30, TimeUnit.SECONDS), what + ": it stops");
+            assertAllGone(started);
+            String log = Files.readString(dir.resolve("log"));
+            assertFalse(log.contains("\tat ") || log.contains("Exception") || log.contains("FATAL"), what + ": " + log);
+            if (launcher.exitValue() == 0) {
+                assertTrue(log.contains("wrote "), what + ": finished first: " + log);
+            } else {
+                interrupted++;
+                assertEquals(codes[which], launcher.exitValue(), what + ": " + log);
+                List<String> said = said();
+                assertTrue(said.get(said.size() - 1).startsWith("ifold: interrupted: "), what + ": " + said);
+            }
+            try (var files = Files.walk(out)) {
+                List<String> left = files.map(p -> p.getFileName().toString())
+                        .filter(name -> name.endsWith(".tmp") || name.startsWith(".") || name.contains(".ifold")).toList();
+                assertEquals(List.of(), left, what + ": temporary files or locks left");
+            }
+        }
+        assertTrue(interrupted >= 2, "most runs were stopped by their signal: " + interrupted + " of 6");
+    }
+
     /** The lines of the log but the progress bar's. */
     private List<String> said() throws Exception {
         return Files.readAllLines(dir.resolve("log")).stream().filter(line -> !line.startsWith("[")).toList();

@@ -50,9 +50,14 @@ class WrapCoordinatesTest {
         // Check the setup: the cube is where it was asked to be, to the last bit.
         assertTrue(Files.readString(far).contains("\n" + (offset + 1) + " " + offset + " " + offset + "\n"), Files.readString(far));
         Path report = dir.resolve("far.json");
-        CliTest.Run run = CliTest.run("wrap", far.toString(), "--no-view", "--report", report.toString());
+        Path obj = dir.resolve("far.obj");
+        CliTest.Run run = CliTest.run("wrap", far.toString(), "--no-view", "--report", report.toString(), "--export-obj", obj.toString());
         assertEquals(0, run.code(), run.err());
-        assertEquals(afterName(origin.out(), atOrigin), afterName(run.out(), far), "the same wrap, fold for fold");
+        assertEquals(afterName(origin.out(), atOrigin).lines().findFirst(), afterName(run.out(), far).lines().findFirst(),
+                "the same wrap, fold for fold");
+        // The OBJ says where its coordinates are about, not only the line on stderr (it said nothing).
+        String header = Files.readAllLines(obj).get(0);
+        assertTrue(header.contains("(coordinates about (" + offset + ", " + offset + ", " + offset + "), near its centre"), header);
         assertTrue(CliTest.number(Files.readString(report), "isometryError") <= 1e-9, Files.readString(report));
         assertTrue(run.err().contains("wrapped about (" + offset + ", " + offset + ", " + offset + ")"), run.err());
     }

@@ -207,7 +207,7 @@ public final class Planning {
         progress.check();
         String source = "demo zigzag --triangle " + job.triangle();
         return paperPlan(job, "zig-zag: " + figures.get("folds") + " folds", result, geometries, figures,
-                Math.min(120, 2.0 * (result.steps().size() + 2)), source, scene -> Scenes.zigzag(scene, shape, result, geometries));
+                Math.min(120, 2.0 * (result.steps().size() + 2)), source, null, scene -> Scenes.zigzag(scene, shape, result, geometries));
     }
 
     private static Plan turn(Job.Turn job, Progress progress) throws JobFailure {
@@ -229,7 +229,7 @@ public final class Planning {
         progress.check();
         String source = String.format(Locale.ROOT, "demo turn --angle %s", options.angle());
         return paperPlan(job, String.format(Locale.ROOT, "turn gadget: %.4g degrees", options.angle()), result, geometries, figures, 6,
-                source, scene -> Scenes.turn(scene, result, geometries));
+                source, null, scene -> Scenes.turn(scene, result, geometries));
     }
 
     private static Plan wrap(Job.WrapModel job, Progress progress) throws JobFailure {
@@ -279,7 +279,7 @@ public final class Planning {
         progress.check();
         int folds = result.steps().size() - result.count(Wrap.Kind.END);
         return paperPlan(job, model.getFileName() + ": " + result.strips().size() + (result.strips().size() == 1 ? " strip, " : " strips, ") + folds + " folds",
-                result, geometries, figures, 120, "ifold wrap " + model, scene -> {
+                result, geometries, figures, 120, "ifold wrap " + model, wrapped.movedBy(), scene -> {
                     WrapView.Playback playback = Scenes.wrap(scene, mesh, result, geometries);
                     Scenes.refinement(scene, refinement);
                     Scenes.collisions(scene, geometries, collisions);
@@ -431,7 +431,7 @@ public final class Planning {
     }
 
     private static Plan paperPlan(Job job, String title, Wrap.Result result, List<WrapGeometry> geometries, Map<String, Object> figures,
-            double seconds, String source, WrapScene scenes) {
+            double seconds, String source, double[] movedBy, WrapScene scenes) {
         Scene scene = new Scene();
         WrapView.Playback playback = scenes.fill(scene);
         playback.pace(seconds); // the window plays it in as many seconds: its captions as long as a movie's
@@ -454,7 +454,7 @@ public final class Planning {
             WrapView.Playback again = scenes.fill(another);
             again.pace(seconds); // laid out as the window's, so that the figure's stages fall where they did
             return new Plan.Shown(another, again);
-        }, out -> WrapExport.writeObj(out, source, result, geometries), List.copyOf(sheets), source,
+        }, out -> WrapExport.writeObj(out, WrapExport.aboutCentre(source, movedBy), result, geometries), List.copyOf(sheets), source,
                 job instanceof Job.ZigZag ? Scenes.figure11Stages(playback, result) : null);
     }
 
