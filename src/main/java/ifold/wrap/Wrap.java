@@ -98,6 +98,12 @@ public final class Wrap {
     }
 
     /**
+     * The sharpest corner of a host whose tucks have been seen to finish, in degrees: a 0.1°
+     * corner wraps (5,416 tucks), and a needle of 0.0115° corners tears the strip at every width.
+     */
+    static final double SHARPEST_TUCKED = 0.1;
+
+    /**
      * The default thickness is the width over this: a strip as thin as good paper for its width
      * (a 2 cm strip of 0.25 mm card), so that the layers show in pictures of the whole model.
      */
@@ -1225,7 +1231,19 @@ public final class Wrap {
                 }
                 int from = edge;
                 int to = (edge + 1) % n;
-                Sheet.Tuck tuck = sheet.tuck(host, c[2 * from], c[2 * from + 1], c[2 * to] - c[2 * from], c[2 * to + 1] - c[2 * from + 1]);
+                Sheet.Tuck tuck;
+                try {
+                    tuck = sheet.tuck(host, c[2 * from], c[2 * from + 1], c[2 * to] - c[2 * from], c[2 * to + 1] - c[2 * from + 1]);
+                } catch (FoldException e) {
+                    double corner = smallestAngle(c);
+                    if (corner >= SHARPEST_TUCKED) {
+                        throw e;
+                    }
+                    // Say what to change: no width helps here (each tears, or passes the face limit).
+                    throw new FoldException(String.format(Locale.ROOT, "%s; a corner of %.2g degrees is sharper than the naive"
+                            + " tuck-under can hide paper in (iFold wraps corners of %s degrees and wider, at any width): widen it",
+                            e.getMessage(), corner, SHARPEST_TUCKED));
+                }
                 steps.add(new Step(Kind.TUCK, strip, plan.first + i, pathIndex, plan.m, -1, tuck, sheet.faceCount(), null,
                         shared("tuck " + (tucks + 1) + ": excess folded under " + edgeName(i, host, from, to))));
                 checkFaces();

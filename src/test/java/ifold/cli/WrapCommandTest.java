@@ -104,6 +104,19 @@ class WrapCommandTest {
         assertTrue(seconds < 30, "in seconds, not minutes: " + seconds + " s");
     }
 
+    /**
+     * A needle whose corners are a hundredth of a degree tears the strip at every width: the
+     * refusal says why and what to change (it said only "would tear the strip").
+     */
+    @Test
+    void aNeedleTooSharpToTuckIsRefusedSayingWhatToChange() throws Exception {
+        Path model = dir.resolve("needle.off");
+        Files.writeString(model, "OFF\n3 1 0\n0 0 0\n1 0 0\n0.5 1e-4 0\n3 0 1 2\n");
+        CliTest.Run run = CliTest.run("wrap", model.toString(), "--no-view");
+        CliTest.assertOneLineError(run, model + ": cannot wrap: ", "would tear the strip",
+                "a corner of 0.011 degrees is sharper than the naive tuck-under can hide paper in", "0.1 degrees and wider", "widen it");
+    }
+
     @Test
     void oneTriangleIsOneTriangle() throws Exception {
         CliTest.Run run = CliTest.run("wrap", "models/triangle.off", "--no-view");

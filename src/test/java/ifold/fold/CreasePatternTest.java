@@ -10,7 +10,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /** Crease patterns of many parallel creases fold at a cost that grows with the creases, not with their cube. */
-class CreasePatternTest {
+public class CreasePatternTest {
     @TempDir
     Path dir;
 
@@ -18,7 +18,7 @@ class CreasePatternTest {
      * A FOLD file of {@code n} parallel creases, mountain and valley in turn, across a strip
      * n + 1 long and 10 wide: it folds into a pile of n + 1 layers, each fold landing on the pile.
      */
-    static Path parallelCreases(Path dir, int n) throws Exception {
+    public static Path parallelCreases(Path dir, int n) throws Exception {
         StringBuilder vertices = new StringBuilder();
         StringBuilder edges = new StringBuilder();
         StringBuilder assignments = new StringBuilder();
