@@ -119,7 +119,7 @@ final class WrapCommand implements Callable<Integer> {
             throw UserError.usage(e);
         } catch (Wrap.FaceLimitException e) {
             throw new UserError(model + ": cannot wrap: " + e.getMessage() + " (--max-faces raises the limit)");
-        } catch (Wrap.WrapException | WrapJob.Stretched e) {
+        } catch (Wrap.WrapException | WrapJob.Refused e) {
             throw new UserError(model + ": cannot wrap: " + e.getMessage());
         } finally {
             bar.wipe(); // before the summary or the error

@@ -2,6 +2,7 @@ package ifold.job;
 
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
+import ifold.mesh.SelfCrossings;
 import ifold.refine.HamiltonianRefinement;
 import ifold.wrap.PlacedWrap;
 import ifold.wrap.Wrap;
@@ -64,13 +65,14 @@ public final class WrapJob {
     }
 
     /**
-     * The paper came out stretched beyond the tolerance: rounding at the model's coordinates is
-     * coarser than its folds. A failure of the data, not of the wrap's code.
+     * The model cannot be wrapped as it is, for what it is, not for the wrap's options: its
+     * surface runs through itself, or the paper came out stretched (rounding at the model's
+     * coordinates is coarser than its folds). A failure of the data, not of the wrap's code.
      */
-    public static final class Stretched extends Exception {
+    public static final class Refused extends Exception {
         private static final long serialVersionUID = 1L;
 
-        Stretched(String message) {
+        Refused(String message) {
             super(message);
         }
     }
@@ -82,10 +84,10 @@ public final class WrapJob {
      * @throws Wrap.WrapException where the wrap refuses (a {@link Wrap.FaceLimitException} or
      *     {@link Wrap.TooWideException} names the option to change)
      * @throws ifold.wrap.ParameterException where a value given does not fit this model
-     * @throws Stretched where the paper came out stretched
+     * @throws Refused where the model's surface runs through itself, or the paper came out stretched
      * @throws java.util.concurrent.CancellationException once the watcher says stop
      */
-    public static Outcome run(Request request, Watcher watcher) throws ModelFiles.LoadFailure, Wrap.WrapException, Stretched {
+    public static Outcome run(Request request, Watcher watcher) throws ModelFiles.LoadFailure, Wrap.WrapException, Refused {
         Path model = request.model();
         long started = System.nanoTime();
         watcher.stage("reading " + model.getFileName());
@@ -107,6 +109,14 @@ public final class WrapJob {
             watcher.note(model + ": wrapped about " + Reports.point(movedBy) + ", near its centre, where doubles can hold"
                     + " the paper: the exports' coordinates are about that point");
         }
+        int[] crossing = SelfCrossings.first(mesh);
+        if (crossing != null) {
+            // Paper laid on it would pass through itself, or cover one place twice: refused rather
+            // than wrapped into paper whose layers cannot be ordered (a cube with one corner of a
+            // face wrong wrapped "valid" with 2,464 violations of its layer order, exit 0).
+            throw new Refused("the model's surface runs through itself: the triangles (" + Wrap.cornersText(mesh, crossing[0]) + ") and ("
+                    + Wrap.cornersText(mesh, crossing[1]) + ") cross or overlap, and paper laid on them would too; repair the model");
+        }
         long loadedAt = System.nanoTime();
         watcher.stage("preparing and refining " + mesh.faceCount() + " triangles");
         WrapPath path = WrapPath.of(mesh);
@@ -125,7 +135,7 @@ public final class WrapJob {
         WrapAnalysis analysis = placed.analysis();
         String stretched = Reports.stretched(analysis);
         if (stretched != null) {
-            throw new Stretched(stretched);
+            throw new Refused(stretched);
         }
         Map<String, Object> figures = Reports.wrap(model.toString(), mesh.faceCount(), loaded.repairs(), path, result, analysis);
         if (NearOrigin.moved(movedBy)) {

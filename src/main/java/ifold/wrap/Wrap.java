@@ -629,7 +629,8 @@ public final class Wrap {
                 cornersText(mesh, triangle), altitude, widest);
     }
 
-    static String cornersText(IndexedPolygons mesh, int triangle) {
+    /** A triangle by its corners, six digits each: "(0.292893 0.292893 0.00000), (1.00000 0.00000 0.00000), ...". */
+    public static String cornersText(IndexedPolygons mesh, int triangle) {
         StringBuilder text = new StringBuilder();
         for (int k = 0; k < 3; k++) {
             int v = mesh.faceVertex(triangle, k);

@@ -105,6 +105,27 @@ class WrapCommandTest {
     }
 
     /**
+     * A cube with one corner of a face wrong (the repairs make a valid mesh of it, folding that
+     * face back over its neighbours) is refused saying its surface runs through itself: it was
+     * wrapped, exit 0, into paper whose layer order had 2,464 violations.
+     */
+    @Test
+    void aSurfaceThatRunsThroughItselfIsRefused() throws Exception {
+        Path model = dir.resolve("wrong-corner.off");
+        Files.writeString(model, Files.readString(Path.of("models", "cube.off")).replace("\n4 2 6 7 3", "\n4 2 6 0 3"));
+        assertTrue(Files.readString(model).contains("4 2 6 0 3"), "setup: one corner changed");
+        Path obj = dir.resolve("out.obj");
+        CliTest.Run run = CliTest.run("wrap", model.toString(), "--no-view", "--export-obj", obj.toString());
+        assertEquals(1, run.code(), run.err());
+        String[] said = run.err().strip().split("\n");
+        assertTrue(said[0].contains(": repaired: "), "the repairs first: " + run.err());
+        String last = said[said.length - 1];
+        assertTrue(last.startsWith("ifold: " + model + ": cannot wrap: the model's surface runs through itself: the triangles ((")
+                && last.endsWith("cross or overlap, and paper laid on them would too; repair the model"), run.err());
+        assertFalse(Files.exists(obj), "nothing written");
+    }
+
+    /**
      * A needle whose corners are a hundredth of a degree tears the strip at every width: the
      * refusal says why and what to change (it said only "would tear the strip").
      */

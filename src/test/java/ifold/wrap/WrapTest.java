@@ -370,8 +370,8 @@ class WrapTest {
 
     /**
      * Shared models: closed (and facing inward in the file), open (covered on the side its faces
-     * face). trimesh_rabbit.obj (nine components, 1,252 triangles) wraps too, but its OBJ of
-     * 500,000 faces is more than this test's heap should hold: see docs/wrap.md.
+     * face). trimesh_rabbit.obj (nine components, 1,252 triangles) is refused: its surface runs
+     * through itself (SelfCrossingsTest).
      */
     @ParameterizedTest
     @ValueSource(strings = {"cgal_tetrahedron.off", "cgal_mesh_with_colors.off"})

@@ -259,7 +259,7 @@ public final class Planning {
             throw new JobFailure(new Problem("maxFaces", model + ": cannot wrap: " + e.getMessage() + " (Max faces raises it)"));
         } catch (Wrap.TooWideException e) {
             throw new JobFailure(new Problem("width", model + ": cannot wrap: " + e.getMessage()));
-        } catch (Wrap.WrapException | WrapJob.Stretched e) {
+        } catch (Wrap.WrapException | WrapJob.Refused e) {
             throw new JobFailure(model + ": cannot wrap: " + e.getMessage());
         }
         HalfedgeMesh mesh = wrapped.mesh();
