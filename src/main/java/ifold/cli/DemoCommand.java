@@ -3,7 +3,7 @@ package ifold.cli;
 import ifold.fold.FoldFile;
 import ifold.job.Reports;
 import ifold.job.Scenes;
-import ifold.job.Triangles;
+import ifold.job.TriangleText;
 import ifold.geom.Triangle;
 import ifold.mesh.PolygonSoup;
 import ifold.render.FrameExport;
@@ -230,7 +230,7 @@ final class DemoCommand implements Runnable {
      */
     static Triangle parseTriangle(String text) {
         try {
-            return Triangles.parse(text);
+            return TriangleText.parse(text);
         } catch (ParameterException e) {
             throw UserError.usage(e);
         }

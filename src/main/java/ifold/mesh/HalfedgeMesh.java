@@ -8,8 +8,9 @@ import java.util.Arrays;
  * there is no object per element.
  *
  * <p>The mutators here are low level: they keep the arrays in step but not the invariants
- * between them. Whoever mutates (the {@link MeshBuilder}, later the fold engine) restores the
- * invariants, and tests call {@link MeshValidator#validate(HalfedgeMesh)} after every mutation.
+ * between them. Whoever mutates (the {@link MeshBuilder}) restores the invariants, and tests
+ * call {@link MeshValidator#validate(HalfedgeMesh)} after every mutation. (Paper is not a
+ * halfedge mesh: the fold engine keeps it in {@code ifold.sheet}.)
  */
 public final class HalfedgeMesh implements IndexedPolygons {
     /** x, y, z of each vertex, interleaved. */

@@ -30,7 +30,5 @@
  *   <li>Around a vertex, {@code twin(prev(h))} is the next outgoing halfedge counter-clockwise
  *       and {@code next(twin(h))} the next one clockwise.</li>
  * </ul>
- * A sheet of paper is double-sided: its bottom is its top mirrored, the same vertices with the
- * halfedges reversed.
  */
 package ifold.mesh;

@@ -21,6 +21,26 @@ import static ifold.geom.Vectors.unit;
  */
 public record HostFrame(double[] origin, double[] ex, double[] ey, double[] normal, double[] corners, double[] room) {
 
+    /*
+     * A wrap's path triangle has a frame of its own: its exit edge from the origin along the x
+     * axis (corners 0 and 1), the corner it is entered by above it (corner 2).
+     */
+
+    /** In a path triangle's frame: the length of its base, the edge on the x axis from the origin. */
+    public double baseLength() {
+        return corners[2];
+    }
+
+    /** In a path triangle's frame: how far along the base the corner above it lies. */
+    public double apexX() {
+        return corners[4];
+    }
+
+    /** In a path triangle's frame: the height of the corner above the base, the triangle's altitude from that corner. */
+    public double altitude() {
+        return corners[5];
+    }
+
     /** The most a bend leans out beyond a crease: at 45 degrees, as far out as it rises. */
     public static final double OPEN = 1;
 

@@ -409,7 +409,7 @@ public final class Wrap {
         int narrowest = -1;
         for (PathPlan plan : plans) {
             for (int i = 0; i < plan.m; i++) {
-                double h = i + 1 < plan.m || plan.m == 1 ? plan.frames[i].corners()[5] : lastAltitudeBound(mesh, plan);
+                double h = i + 1 < plan.m || plan.m == 1 ? plan.frames[i].altitude() : lastAltitudeBound(mesh, plan);
                 if (h < widest) {
                     widest = h;
                     narrowest = plan.first + i;
@@ -513,8 +513,8 @@ public final class Wrap {
         for (int c = 0; c < plans.size(); c++) {
             PathPlan plan = plans.get(c);
             for (int i = 0; i + 1 < plan.m; i++) {
-                if (plan.frames[i].corners()[5] < width * (1 - 1e-12)) {
-                    throw new TooWideException(tooWide(mesh, plan.first + i, i, plan.m, width, plan.frames[i].corners()[5], widest));
+                if (plan.frames[i].altitude() < width * (1 - 1e-12)) {
+                    throw new TooWideException(tooWide(mesh, plan.first + i, i, plan.m, width, plan.frames[i].altitude(), widest));
                 }
             }
             chooseLastStart(mesh, plan, width, widest);
@@ -530,7 +530,7 @@ public final class Wrap {
         int mostPasses = 0;
         for (PathPlan plan : plans) {
             for (int i = 0; i < plan.m; i++) {
-                int k = passes(plan.frames[i].corners()[5], width);
+                int k = passes(plan.frames[i].altitude(), width);
                 passes += k;
                 if (k > mostPasses) {
                     mostPasses = k;
@@ -557,7 +557,7 @@ public final class Wrap {
                 HostFrame host = frames[pieces.hostOf[plan.first + i]];
                 double[] a = position(mesh, plan.baseFrom[i]);
                 double[] b = position(mesh, plan.baseTo[i]);
-                toHost[plan.first + i] = Isometry2.taking(0, 0, plan.frames[i].corners()[2], 0, host.localX(a), host.localY(a),
+                toHost[plan.first + i] = Isometry2.taking(0, 0, plan.frames[i].baseLength(), 0, host.localX(a), host.localY(a),
                         host.localX(b), host.localY(b));
             }
         }
@@ -741,7 +741,7 @@ public final class Wrap {
         for (int s : plan.shared[last - 1]) {
             plan.start[last] = s;
             frame(mesh, plan, last);
-            bound = Math.min(bound, plan.frames[last].corners()[5]);
+            bound = Math.min(bound, plan.frames[last].altitude());
         }
         return bound;
     }
@@ -752,14 +752,14 @@ public final class Wrap {
      */
     private static void chooseLastStart(IndexedPolygons mesh, PathPlan plan, double width, double widest) throws WrapException {
         if (plan.m == 1) {
-            if (plan.frames[0].corners()[5] < width * (1 - 1e-12)) {
-                throw new TooWideException(tooWide(mesh, plan.first, 0, 1, width, plan.frames[0].corners()[5], widest));
+            if (plan.frames[0].altitude() < width * (1 - 1e-12)) {
+                throw new TooWideException(tooWide(mesh, plan.first, 0, 1, width, plan.frames[0].altitude(), widest));
             }
             return;
         }
         int before = plan.m - 2;
         HostFrame frame = plan.frames[before];
-        int passes = passes(frame.corners()[5], width);
+        int passes = passes(frame.altitude(), width);
         int lastDirection = firstDirection(plan, before, width) * (passes % 2 == 1 ? 1 : -1);
         int preferred = lastDirection > 0 ? plan.baseTo[before] : plan.baseFrom[before];
         int other = preferred == plan.baseTo[before] ? plan.baseFrom[before] : plan.baseTo[before];
@@ -767,11 +767,11 @@ public final class Wrap {
         for (int s : new int[] {preferred, other}) {
             plan.start[last] = s;
             frame(mesh, plan, last);
-            if (plan.frames[last].corners()[5] >= width * (1 - 1e-12)) {
+            if (plan.frames[last].altitude() >= width * (1 - 1e-12)) {
                 return;
             }
         }
-        throw new TooWideException(tooWide(mesh, plan.first + last, last, plan.m, width, plan.frames[last].corners()[5], widest));
+        throw new TooWideException(tooWide(mesh, plan.first + last, last, plan.m, width, plan.frames[last].altitude(), widest));
     }
 
     /** Whether each triangle of the mesh is alone on its host (a curved surface's are). */
@@ -801,7 +801,7 @@ public final class Wrap {
         long faces = 0;
         for (PathPlan plan : plans) {
             for (int i = 0; i < plan.m; i++) {
-                long k = passes(plan.frames[i].corners()[5], width);
+                long k = passes(plan.frames[i].altitude(), width);
                 boolean lone = alone[plan.first + i];
                 faces += likely ? likelyFaces(k, lone) : lone ? 3 * k + 6 : 2 * k;
             }
@@ -853,7 +853,7 @@ public final class Wrap {
         if (plan.m == 1 && plan.ends != null) {
             Ends ends = plan.ends;
             int wantLast = lastDirectionToEnd(plan);
-            int lastIfFirstPositive = passes(plan.frames[0].corners()[5], width) % 2 == 1 ? 1 : -1;
+            int lastIfFirstPositive = passes(plan.frames[0].altitude(), width) % 2 == 1 ? 1 : -1;
             if (ends.enterFrom() < 0) {
                 return wantLast * lastIfFirstPositive;
             }
@@ -862,7 +862,7 @@ public final class Wrap {
         if (plan.m <= 2) {
             return 1; // the end it leaves by is free (or there is none): it is chosen to fit
         }
-        int passes = passes(plan.frames[0].corners()[5], width);
+        int passes = passes(plan.frames[0].altitude(), width);
         int exit = plan.start[1];
         int towardsExit = exit == plan.baseTo[0] ? 1 : -1;
         return towardsExit * (passes % 2 == 1 ? 1 : -1);
@@ -882,7 +882,7 @@ public final class Wrap {
         if (plan.m != 1 || plan.ends == null) {
             return false;
         }
-        int lastIfFirstPositive = passes(plan.frames[0].corners()[5], width) % 2 == 1 ? 1 : -1;
+        int lastIfFirstPositive = passes(plan.frames[0].altitude(), width) % 2 == 1 ? 1 : -1;
         return firstDirection(plan, 0, width) * lastIfFirstPositive != lastDirectionToEnd(plan);
     }
 
@@ -1003,7 +1003,7 @@ public final class Wrap {
 
         private void wrapTriangle(int i) throws FoldException, WrapException {
             HostFrame frame = plan.frames[i];
-            SlantedEdges edges = new SlantedEdges(frame.corners()[2], frame.corners()[4], frame.corners()[5]);
+            SlantedEdges edges = new SlantedEdges(frame.baseLength(), frame.apexX(), frame.altitude());
             double h = edges.h();
             boolean last = i == plan.m - 1;
             int k = passes(h, w);
@@ -1141,11 +1141,11 @@ public final class Wrap {
             int host = plan.first + i;
             double[] a = position(mesh, plan.baseFrom[i]);
             double[] b = position(mesh, plan.baseTo[i]);
-            Isometry2 development = Isometry2.taking(0, 0, here.corners()[2], 0,
+            Isometry2 development = Isometry2.taking(0, 0, here.baseLength(), 0,
                     there.localX(a), there.localY(a), there.localX(b), there.localY(b));
             Isometry2 back = development.inverse();
             int dNext = firstDirection(plan, i + 1, w);
-            double centre = there.corners()[5] - w / 2;
+            double centre = there.altitude() - w / 2;
             double cx = back.x(0, centre);
             double cy = back.y(0, centre);
             double ox = back.dx(dNext, 0);
@@ -1179,7 +1179,7 @@ public final class Wrap {
             // The crease over the edge must lie on the edge itself: paper beyond its ends would be
             // joined to paper on both triangles' excess, which no tuck could then fold away.
             Isometry2 pose = next.inverse().after(sheet.tailPose());
-            double edgeLength = here.corners()[2];
+            double edgeLength = here.baseLength();
             // The first pass of the next triangle runs with one side through the corner the strip
             // enters by, an end of the edge: that side meets the edge at its end, to twice the
             // tolerance across the strip (a crease's end is snapped to the one before it within
@@ -1367,7 +1367,7 @@ public final class Wrap {
                 double done = 0;
                 double all = 0;
                 for (int i = 0; i < plan.m; i++) {
-                    double weight = likelyFaces(passes(plan.frames[i].corners()[5], sheet.width()), false);
+                    double weight = likelyFaces(passes(plan.frames[i].altitude(), sheet.width()), false);
                     all += weight;
                     done += i <= pathIndex ? weight : 0;
                 }

@@ -17,7 +17,7 @@ import org.junit.jupiter.api.Test;
 class ZigZagSceneTest {
     @Test
     void theCornersAreLabelledTheColoursExplainedAndTheTucksSeenFromBelow() throws Exception {
-        Triangle shape = Triangles.parse("0,0,10,0,3.5,8");
+        Triangle shape = TriangleText.parse("0,0,10,0,3.5,8");
         PolygonSoup soup = new PolygonSoup();
         for (int i = 0; i < 3; i++) {
             soup.addVertex(shape.corner(i).x(), shape.corner(i).y(), shape.corner(i).z());

@@ -10,7 +10,7 @@ import ifold.job.LayerOrders;
 import ifold.job.ModelFiles;
 import ifold.job.Reports;
 import ifold.job.Scenes;
-import ifold.job.Triangles;
+import ifold.job.TriangleText;
 import ifold.job.WrapJob;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
@@ -124,7 +124,7 @@ public final class Planning {
     private static Wrap.Options zigzagOptions(Job.ZigZag job, List<Problem> problems) {
         Triangle shape = null;
         try {
-            shape = Triangles.parse(job.triangle());
+            shape = TriangleText.parse(job.triangle());
         } catch (ParameterException e) {
             problems.add(new Problem(e.parameter(), e.getMessage()));
         }
@@ -183,7 +183,7 @@ public final class Planning {
 
     private static Plan zigzag(Job.ZigZag job, Progress progress) throws JobFailure {
         Wrap.Options options = zigzagOptions(job, new ArrayList<>());
-        Triangle shape = Triangles.parse(job.triangle());
+        Triangle shape = TriangleText.parse(job.triangle());
         PolygonSoup path = new PolygonSoup();
         for (int i = 0; i < 3; i++) {
             path.addVertex(shape.corner(i).x(), shape.corner(i).y(), shape.corner(i).z());

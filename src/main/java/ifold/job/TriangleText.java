@@ -7,8 +7,8 @@ import java.util.Locale;
 import org.joml.Vector3d;
 
 /** The zig-zag demo's triangle, read from the text the user typed. */
-public final class Triangles {
-    private Triangles() {
+public final class TriangleText {
+    private TriangleText() {
     }
 
     /**
