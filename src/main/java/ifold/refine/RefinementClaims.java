@@ -68,6 +68,13 @@ public final class RefinementClaims {
         if (count != 5 * n - 2 * c) {
             problems.add(count + " triangles, expected 5n - 2c = " + (5 * n - 2 * c));
         }
+        HalfedgeMesh refinedFrom = refined.original();
+        if (refinedFrom.faceCount() != n || refinedFrom.vertexCount() != input.vertexCount()) {
+            // The claims below compare each face with its sub-triangles: on another model they cannot be read.
+            problems.add("the refinement is of another model: " + refinedFrom.faceCount() + " faces and " + refinedFrom.vertexCount()
+                    + " vertices, not " + n + " and " + input.vertexCount());
+            return problems;
+        }
         int[] tri = new int[3 * count];
         for (int t = 0; t < count; t++) {
             for (int k = 0; k < 3; k++) {
