@@ -3,14 +3,10 @@ package ifold.cli;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import com.fasterxml.jackson.core.JsonFactory;
-import com.fasterxml.jackson.core.JsonParser;
-import com.fasterxml.jackson.core.JsonToken;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.io.TempDir;
@@ -39,14 +35,15 @@ class LayerCountTest {
         CliTest.Run run = CliTest.run(args.toArray(String[]::new));
         assertEquals(0, run.code(), run.err());
         int reported = (int) CliTest.number(Files.readString(report), "maxLayers");
-        int counted = mostFacesOverAPoint(Files.readString(fold));
+        int counted = mostFacesOverAPoint(fold);
         assertTrue(counted >= 2, "setup: paper folded over itself, got " + counted);
         assertEquals(counted, reported, command + ": the report's maxLayers against the faces of the FOLD file counted");
     }
 
-    /** The most faces of the folded state over any point of one plane, from the FOLD text alone. */
-    static int mostFacesOverAPoint(String foldText) throws Exception {
-        Map<String, Object> fold = read(foldText);
+    /** The most faces of the folded state over any point of one plane, from the FOLD file alone. */
+    @SuppressWarnings("unchecked")
+    static int mostFacesOverAPoint(Path file) throws Exception {
+        Map<String, Object> fold = (Map<String, Object>) ifold.fold.FoldFileTest.read(file);
         List<?> faces = (List<?>) fold.get("faces_vertices");
         List<?> frames = (List<?>) fold.get("file_frames");
         List<?> folded = (List<?>) ((Map<?, ?>) frames.get(0)).get("vertices_coords");
@@ -193,37 +190,5 @@ class LayerCountTest {
             }
         }
         return most;
-    }
-
-    @SuppressWarnings("unchecked")
-    private static Map<String, Object> read(String text) throws Exception {
-        try (JsonParser parser = new JsonFactory().createParser(text)) {
-            parser.nextToken();
-            return (Map<String, Object>) value(parser);
-        }
-    }
-
-    private static Object value(JsonParser parser) throws Exception {
-        JsonToken token = parser.currentToken();
-        if (token == JsonToken.START_OBJECT) {
-            Map<String, Object> map = new LinkedHashMap<>();
-            while (parser.nextToken() != JsonToken.END_OBJECT) {
-                String name = parser.currentName();
-                parser.nextToken();
-                map.put(name, value(parser));
-            }
-            return map;
-        }
-        if (token == JsonToken.START_ARRAY) {
-            List<Object> list = new ArrayList<>();
-            while (parser.nextToken() != JsonToken.END_ARRAY) {
-                list.add(value(parser));
-            }
-            return list;
-        }
-        if (token == JsonToken.VALUE_NUMBER_INT || token == JsonToken.VALUE_NUMBER_FLOAT) {
-            return parser.getDoubleValue();
-        }
-        return token == JsonToken.VALUE_STRING ? parser.getText() : null;
     }
 }

@@ -31,12 +31,12 @@ import org.junit.jupiter.params.provider.MethodSource;
  * the crease pattern is the sheet, every number as computed, and every flat-folded crease
  * pattern satisfies Maekawa and Kawasaki at every interior vertex.
  */
-class FoldFileTest {
+public class FoldFileTest {
     @TempDir
     Path dir;
 
-    /** Reads JSON into maps, lists, doubles, strings and booleans. */
-    static Object read(Path file) throws Exception {
+    /** Reads JSON into maps, lists, doubles, strings and booleans: the tests' own reader, independent of iFold's. */
+    public static Object read(Path file) throws Exception {
         try (JsonParser parser = new JsonFactory().createParser(file.toFile())) {
             parser.nextToken();
             return value(parser);

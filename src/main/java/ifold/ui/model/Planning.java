@@ -237,15 +237,16 @@ public final class Planning {
         Path model = job.model();
         WrapJob.Outcome wrapped;
         try {
+            Wrap.Watcher folds = watcher(progress);
             wrapped = WrapJob.run(new WrapJob.Request(model, new MeshBuilder.Options(job.strict(), true), options), new WrapJob.Watcher() {
                 @Override
                 public void wrapped(int done, int total) {
-                    progress.done(done, total);
+                    folds.wrapped(done, total);
                 }
 
                 @Override
                 public boolean stopped() {
-                    return progress.cancelled();
+                    return folds.stopped();
                 }
 
                 @Override
