@@ -228,7 +228,7 @@ class LoneTriangleTest {
         double h = c[5];
         double slant = Math.abs(c[4] / h) + Math.abs((base - c[4]) / h);
         double margin = Math.max(width / 10, 2 * thickness);
-        int k = Wrap.passes(h, width);
+        int k = PathPlan.passes(h, width);
         double bound = 0;
         for (int i = 0; i < k; i++) {
             bound += base * (1 - Math.max(0, h - (i + 2) * width) / h);

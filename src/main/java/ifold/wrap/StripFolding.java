@@ -1,0 +1,510 @@
+package ifold.wrap;
+
+import static ifold.wrap.PathPlan.firstDirection;
+import static ifold.wrap.PathPlan.likelyFaces;
+import static ifold.wrap.PathPlan.overlapped;
+import static ifold.wrap.PathPlan.passes;
+import static ifold.wrap.Wrap.BYTES_PER_FACE;
+import static ifold.wrap.Wrap.SHARPEST_TUCKED;
+import static ifold.wrap.Wrap.cornerName;
+import static ifold.wrap.Wrap.cornersText;
+import static ifold.wrap.Wrap.maxTucks;
+import static ifold.wrap.Wrap.position;
+
+import ifold.geom.SlantedEdges;
+import ifold.mesh.IndexedPolygons;
+import ifold.sheet.FoldException;
+import ifold.sheet.HostFrame;
+import ifold.sheet.Isometry2;
+import ifold.sheet.Sheet.Crease;
+import ifold.sheet.Sheet.Placement;
+import ifold.sheet.Sheet;
+import ifold.wrap.Wrap.FaceLimitException;
+import ifold.wrap.Wrap.Kind;
+import ifold.wrap.Wrap.Step;
+import ifold.wrap.Wrap.Strip;
+import ifold.wrap.Wrap.TailMove;
+import ifold.wrap.Wrap.Watcher;
+import ifold.wrap.Wrap.WrapException;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+
+/**
+ * The folding of one strip along one path: for each triangle its passes and turns, the gadget
+ * and the fold over the edge to the next, and the tucks once the strip leaves a host, each fold
+ * recorded as a step ({@link Wrap} plans the paths and the width; this folds them).
+ */
+final class StripFolding {
+    private final IndexedPolygons mesh;
+    private final PathPlan plan;
+    private final int strip;
+    private final double w;
+    private final double thickness;
+    private final double tolerance;
+    private final double margin;
+    private final List<Step> steps;
+    private Sheet sheet;
+    private int pathIndex;
+    /** The caption's detail for the folds being made, and the pass they belong to. */
+    private String detail = "";
+    private final Map<String, String> details = new HashMap<>();
+    private String passNote = "";
+    private final int maxFaces;
+    private Watcher watcher = Watcher.NONE;
+    /** Triangles of earlier paths, and of all paths: for the watcher. */
+    private int firstDone;
+    private int totalTriangles;
+    private final HostPieces pieces;
+    private final HostFrame[] hostFrames;
+    /** Per triangle of the mesh: from its frame (the planner's) into its host's (the sheet's). */
+    private final Isometry2[] toHost;
+    /** The triangle being wrapped's frame into its host's. */
+    private Isometry2 intoHost;
+
+    StripFolding(IndexedPolygons mesh, PathPlan plan, int strip, double width, double thickness, double tolerance, List<Step> steps,
+            int maxFaces, HostPieces pieces, HostFrame[] hostFrames, Isometry2[] toHost) {
+        this.pieces = pieces;
+        this.hostFrames = hostFrames;
+        this.toHost = toHost;
+        this.maxFaces = maxFaces;
+        this.mesh = mesh;
+        this.plan = plan;
+        this.strip = strip;
+        this.w = width;
+        this.thickness = thickness;
+        this.tolerance = tolerance;
+        // Just beyond the edges: far enough to see, and to clear the caps of the turns.
+        this.margin = Math.max(width / 10, 2 * thickness);
+        this.steps = steps;
+    }
+
+    Strip fold() throws FoldException, WrapException {
+        int[] after = new int[plan.m];
+        for (int i = 0; i < plan.m; i++) {
+            pathIndex = i;
+            intoHost = toHost[plan.first + i];
+            wrapTriangle(i);
+            // The paper is tucked once the strip leaves the host: until then the tail lies on it.
+            int host = hostOf(i);
+            if (i + 1 == plan.m || hostOf(i + 1) != host) {
+                tuckAll(i);
+                sheet.settle(host);
+            }
+            after[i] = sheet.faceCount();
+            watcher.wrapped(firstDone + i + 1, totalTriangles);
+        }
+        return new Strip(sheet, plan.first, plan.m, after);
+    }
+
+    private int hostOf(int i) {
+        return pieces.hostOf[plan.first + i];
+    }
+
+    /** The triangle being wrapped, in words: its place on the path and its corners, and the fold being made. */
+    String where() {
+        return String.format(Locale.ROOT, "triangle %d of %d on the path (%s)%s", pathIndex + 1, plan.m,
+                cornersText(mesh, plan.first + pathIndex), detail == null || detail.isEmpty() ? "" : ", " + detail);
+    }
+
+    private void wrapTriangle(int i) throws FoldException, WrapException {
+        HostFrame frame = plan.frames[i];
+        SlantedEdges edges = new SlantedEdges(frame.baseLength(), frame.apexX(), frame.altitude());
+        double h = edges.h();
+        boolean last = i == plan.m - 1;
+        int k = passes(h, w);
+        double[] bottom = new double[k];
+        for (int j = 0; j < k; j++) {
+            bottom[j] = h - (j + 1) * w;
+        }
+        if (!last) {
+            int shortTurn = shortTurn(edges, k, firstDirection(plan, i, w), hostFrames[hostOf(i)].corners());
+            for (int j = shortTurn + 1; j < k; j++) {
+                bottom[j] = (k - 1 - j) * w;
+            }
+        }
+        int d = firstDirection(plan, i, w);
+        int host = plan.first + i;
+        if (i == 0) {
+            double start = d > 0 ? edges.leftmost(bottom[0], bottom[0] + w) - margin : edges.rightmost(bottom[0], bottom[0] + w) + margin;
+            Isometry2 pose = d > 0 ? Isometry2.placement(start, bottom[0], 0, false)
+                    : Isometry2.placement(start, bottom[0] + w, Math.PI, false);
+            sheet = new Sheet(w, thickness, tolerance, hostOf(i), intoHost.after(pose));
+        } else {
+            checkEntry(d, bottom[0]);
+        }
+        int passes = k + (last && overlapped(plan, w) ? 1 : 0);
+        for (int j = 0; j + 1 < k; j++) {
+            passNote = String.format(Locale.ROOT, "pass %d of %d", j + 1, passes);
+            turn(edges, d, bottom[j], bottom[j + 1], host);
+            d = -d;
+        }
+        passNote = String.format(Locale.ROOT, "pass %d of %d", k, passes);
+        if (last) {
+            double end = endOfPass(edges, d, bottom[k - 1]);
+            if (overlapped(plan, w)) {
+                detail = "the strip turns back to end at corner " + cornerName(plan.ends.end());
+                tailFold(Kind.OVERLAP, host, end, 0, 0, 1, Placement.OVER, Crease.TURN);
+                d = -d;
+                end = endOfPass(edges, d, bottom[k - 1]);
+            }
+            detail = "";
+            record(Kind.END, host, sheet.endTail(intoHost.x(end, 0), intoHost.y(end, 0), intoHost.dx(0, 1), intoHost.dy(0, 1)));
+        } else {
+            leave(i, edges, d);
+        }
+    }
+
+    /**
+     * Which turn of a triangle's k passes, the first running in direction d, shifts by less
+     * than a width (the first pass runs along the apex, the last along the exit edge, the
+     * rest a width apart): the one after pass j. Its gadget of four folds reaches two widths
+     * beyond the slanted edge; where that lies on the host (a coplanar neighbour) it stays
+     * flat there, where it lies beyond the host's edge it is tucked under, and at a corner of
+     * the host tucked twice: the cube's faces had 17 of their 24 layers from gadgets of four
+     * triangles fanning at one corner, each turning at the last pass, by the base's corner.
+     * So: the turn nearest the middle whose gadget lies on the host; else the middle one.
+     */
+    private int shortTurn(SlantedEdges edges, int k, int d, double[] host) {
+        int middle = (k - 2) / 2;
+        int best = -1;
+        for (int j = 0; j + 1 < k; j++) {
+            int side = (j % 2 == 0) ? d : -d;
+            double top = edges.h() - j * w;
+            double low = Math.max(0, (k - 2 - j) * w);
+            boolean onHost = true;
+            for (double y : new double[] {low, top}) {
+                double x = side > 0 ? edges.right(y) : edges.left(y);
+                double beyond = x + side * (margin + 2 * w);
+                onHost &= insideConvex(host, intoHost.x(beyond, y), intoHost.y(beyond, y));
+            }
+            if (onHost && (best < 0 || Math.abs(j - middle) < Math.abs(best - middle))) {
+                best = j;
+            }
+        }
+        return best < 0 ? middle : best;
+    }
+
+    /** Whether (x, y) lies inside the counter-clockwise convex polygon {@code c} (x, y pairs). */
+    private static boolean insideConvex(double[] c, double x, double y) {
+        int n = c.length / 2;
+        for (int a = 0; a < n; a++) {
+            int b = (a + 1) % n;
+            if ((c[2 * b] - c[2 * a]) * (y - c[2 * a + 1]) - (c[2 * b + 1] - c[2 * a + 1]) * (x - c[2 * a]) < 0) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** Where a pass in the band [y, y + w] running in direction d ends: just beyond the slanted edge ahead. */
+    private double endOfPass(SlantedEdges edges, int d, double y) {
+        return d > 0 ? edges.rightmost(y, y + w) + margin : edges.leftmost(y, y + w) - margin;
+    }
+
+    /** The tail came in over the edge before: it must lie along the first pass, running in direction d. */
+    private void checkEntry(int d, double bottom) {
+        Isometry2 pose = intoHost.inverse().after(sheet.tailPose());
+        double along = pose.dx(1, 0);
+        double across = pose.dy(1, 0);
+        double edgeY = pose.y(sheet.tailStart(false), 0);
+        double expected = d > 0 ? bottom : bottom + w;
+        if (Math.abs(along - d) > 1e-6 || Math.abs(across) > 1e-6 || Math.abs(edgeY - expected) > 1e-6 * Math.max(1, w)) {
+            throw new IllegalStateException(String.format(Locale.ROOT,
+                    "the strip came into triangle %d off its first pass (direction %.3g %.3g, edge at %.6g, expected %.6g)",
+                    pathIndex + 1, along, across, edgeY, expected));
+        }
+    }
+
+    /** A turn beyond a slanted edge from the pass in band [y, y + w] running in direction d to the band [next, next + w]. */
+    private void turn(SlantedEdges edges, int d, double y, double next, int host) throws FoldException, WrapException {
+        double x1 = d > 0 ? edges.rightmost(next, y + w) + margin : edges.leftmost(next, y + w) - margin;
+        double shift = y - next;
+        if (Math.abs(shift - w) <= 1e-9 * w) {
+            // A valley fold lays the strip back across itself along the edge, a mountain fold
+            // one width on lays it flat beside the pass it left, running back.
+            detail = passNote + ": turn, 45° valley fold";
+            tailFold(Kind.ZIGZAG_TURN, host, x1, y + w, d, -1, Placement.OVER, Crease.TURN);
+            detail = passNote + ": turn, 45° mountain fold";
+            double[] corner = tailCorner(x1 + d * w, y);
+            tailFold(Kind.ZIGZAG_TURN, host, corner[0], corner[1], -d, -1, Placement.UNDER, Crease.TURN);
+            return;
+        }
+        // Two 90° turn gadgets: down a vertical band [x1, x1 + w] beyond the edge, then back
+        // along the next pass; the fold across the vertical band sets where the next pass lies.
+        double middle = x1 + d * w / 2;
+        detail = passNote + ": shift by less than a width, two 90° gadgets";
+        tailFold(Kind.TURN_GADGET, host, x1 + d * w, 0, 0, 1, Placement.OVER, Crease.GADGET);
+        tailFold(Kind.TURN_GADGET, host, middle, y + w / 2, -d, -1, Placement.OVER, Crease.GADGET);
+        tailFold(Kind.TURN_GADGET, host, 0, next, 1, 0, Placement.OVER, Crease.GADGET);
+        tailFold(Kind.TURN_GADGET, host, middle, next + w / 2, -d, 1, Placement.UNDER, Crease.GADGET);
+    }
+
+    /** From the last pass of triangle i (band [0, w], direction d) into the first pass of triangle i + 1. */
+    private void leave(int i, SlantedEdges edges, int d) throws FoldException, WrapException {
+        HostFrame here = plan.frames[i];
+        HostFrame there = plan.frames[i + 1];
+        int host = plan.first + i;
+        double[] a = position(mesh, plan.baseFrom[i]);
+        double[] b = position(mesh, plan.baseTo[i]);
+        Isometry2 development = Isometry2.taking(0, 0, here.baseLength(), 0,
+                there.localX(a), there.localY(a), there.localX(b), there.localY(b));
+        Isometry2 back = development.inverse();
+        int dNext = firstDirection(plan, i + 1, w);
+        double centre = there.altitude() - w / 2;
+        double cx = back.x(0, centre);
+        double cy = back.y(0, centre);
+        double ox = back.dx(dNext, 0);
+        double oy = back.dy(dNext, 0);
+        if (!(oy < 0)) {
+            throw new IllegalStateException("the next triangle's first pass does not run away from the edge");
+        }
+        // The gadget's turn crease: through where the two bands' centre lines meet, along the
+        // line that reflects the strip running back (-d) onto the next pass's direction.
+        double t = (w / 2 - cy) / oy;
+        double meetX = cx + t * ox;
+        double lx = -d + ox;
+        double ly = oy;
+        double reach = Math.abs(w / 2 * lx / ly);
+        double fold = d > 0 ? Math.max(edges.rightmost(0, w) + margin, meetX + reach)
+                : Math.min(edges.leftmost(0, w) - margin, meetX - reach);
+        detail = "fold back across the strip";
+        tailFold(Kind.TURN_GADGET, host, fold, 0, 0, 1, Placement.OVER, Crease.GADGET);
+        detail = "turn to run along the next triangle's first pass";
+        tailFold(Kind.TURN_GADGET, host, meetX, w / 2, lx, ly, Placement.OVER, Crease.GADGET);
+        detail = "";
+        int nextHost = hostOf(i + 1);
+        if (nextHost == hostOf(i)) {
+            // The next triangle lies in this one's plane, on the same host: the strip runs on
+            // flat, over the paper it leaves, as it would over the edge.
+            sheet.liftTail();
+            return;
+        }
+        Isometry2 next = toHost[plan.first + i + 1];
+        tailCross(Kind.EDGE_CROSSING, host, 0, 0, 1, 0, nextHost, next.after(development).after(intoHost.inverse()));
+        // The crease over the edge must lie on the edge itself: paper beyond its ends would be
+        // joined to paper on both triangles' excess, which no tuck could then fold away.
+        Isometry2 pose = next.inverse().after(sheet.tailPose());
+        double edgeLength = here.baseLength();
+        // The first pass of the next triangle runs with one side through the corner the strip
+        // enters by, an end of the edge: that side meets the edge at its end, to twice the
+        // tolerance across the strip (a crease's end is snapped to the one before it within
+        // the tolerance, and the corner is placed to it), which a side at a small angle θ to
+        // the edge stretches along it by 1 / sin θ. Tori of 4,000 to 5,000 triangles met
+        // corners 1.0 to 1.2 tolerances beyond their edges' ends, and were refused. Far along
+        // a long strip, to the tolerance its poses' rounding has grown to (the cube at width
+        // 1e-4 was refused here, three quarters of its 60,000 along).
+        double sine = Math.abs(back.dy(pose.dx(1, 0), pose.dy(1, 0)));
+        for (boolean side : new boolean[] {false, true}) {
+            double u = sheet.tailStart(side);
+            double slack = 2 * sheet.toleranceAt(u) / Math.max(sine, 1e-3);
+            double v = side ? w : 0;
+            double x = back.x(pose.x(u, v), pose.y(u, v));
+            if (x < -slack || x > edgeLength + slack) {
+                throw new FoldException(String.format(Locale.ROOT,
+                        "triangle %d of %d on the path (%s): the strip would cross the edge to the next triangle beyond its end",
+                        i + 1, plan.m, cornersText(mesh, host)));
+            }
+        }
+    }
+
+    /**
+     * Tucks the paper resting on triangle i's host beyond the host's edges under it, the edge
+     * with paper farthest beyond it first.
+     */
+    private void tuckAll(int i) throws FoldException, WrapException {
+        int host = hostOf(i);
+        double[] c = hostFrames[host].corners();
+        int n = c.length / 2;
+        int limit = maxTucks(smallestAngle(c));
+        for (int tucks = 0; ; tucks++) {
+            int edge = -1;
+            double farthest = sheet.tolerance();
+            for (int e = 0; e < n; e++) {
+                double beyond = farthestBeyond(host, c, e);
+                if (beyond > farthest) {
+                    farthest = beyond;
+                    edge = e;
+                }
+            }
+            if (edge < 0) {
+                return;
+            }
+            if (tucks == limit) {
+                throw new WrapException(String.format(Locale.ROOT, "triangle %d of %d on the path (%s): the excess is not"
+                        + " hidden after %d tucks: the naive tuck-under bounces paper between the edges of a corner as"
+                        + " sharp as %.2g degrees; a narrower strip may help", i + 1, plan.m, cornersText(mesh, plan.first + i),
+                        limit, smallestAngle(c)));
+            }
+            int from = edge;
+            int to = (edge + 1) % n;
+            Sheet.Tuck tuck;
+            try {
+                tuck = sheet.tuck(host, c[2 * from], c[2 * from + 1], c[2 * to] - c[2 * from], c[2 * to + 1] - c[2 * from + 1]);
+            } catch (FoldException e) {
+                double corner = smallestAngle(c);
+                if (corner >= SHARPEST_TUCKED) {
+                    throw e;
+                }
+                // Say what to change: no width helps here (each tears, or passes the face limit).
+                throw new FoldException(String.format(Locale.ROOT, "%s; a corner of %.2g degrees is sharper than the naive"
+                        + " tuck-under can hide paper in (iFold wraps corners of %s degrees and wider, at any width): widen it",
+                        e.getMessage(), corner, SHARPEST_TUCKED));
+            }
+            steps.add(new Step(Kind.TUCK, strip, plan.first + i, pathIndex, plan.m, -1, tuck, sheet.faceCount(), null,
+                    shared("tuck " + (tucks + 1) + ": excess folded under " + edgeName(i, host, from, to))));
+            checkFaces();
+        }
+    }
+
+    /** A lone triangle's edge by the corners the user named A, B and C; any other "an edge". */
+    private String edgeName(int i, int host, int from, int to) {
+        if (plan.m != 1) {
+            return "along an edge";
+        }
+        int[] corners = pieces.corners[host];
+        String a = null;
+        String b = null;
+        for (int k = 0; k < 3; k++) {
+            a = plan.corners[i][k] == corners[from] ? cornerName(k) : a;
+            b = plan.corners[i][k] == corners[to] ? cornerName(k) : b;
+        }
+        return a != null && b != null ? "along edge " + a + b : "along an edge";
+    }
+
+    /** A convex polygon's smallest angle in degrees, from its corners in its frame. */
+    private static double smallestAngle(double[] c) {
+        double smallest = 180;
+        int n = c.length / 2;
+        for (int k = 0; k < n; k++) {
+            int a = (k + 1) % n;
+            int b = (k + n - 1) % n;
+            double ux = c[2 * a] - c[2 * k];
+            double uy = c[2 * a + 1] - c[2 * k + 1];
+            double vx = c[2 * b] - c[2 * k];
+            double vy = c[2 * b + 1] - c[2 * k + 1];
+            smallest = Math.min(smallest, Math.toDegrees(Math.abs(Math.atan2(ux * vy - uy * vx, ux * vx + uy * vy))));
+        }
+        return smallest;
+    }
+
+    /** How far the paper on the host reaches beyond edge e of the triangle (corners counter-clockwise: outside is to the right). */
+    private double farthestBeyond(int host, double[] c, int e) {
+        int from = e;
+        int to = (e + 1) % (c.length / 2);
+        double dx = c[2 * to] - c[2 * from];
+        double dy = c[2 * to + 1] - c[2 * from + 1];
+        double length = Math.hypot(dx, dy);
+        double nx = dy / length;
+        double ny = -dx / length;
+        double farthest = Double.NEGATIVE_INFINITY;
+        for (int f : sheet.facesOn(host)) {
+            double[] xy = sheet.placed(f);
+            for (int k = 0; k < xy.length; k += 2) {
+                farthest = Math.max(farthest, nx * (xy[k] - c[2 * from]) + ny * (xy[k + 1] - c[2 * from + 1]));
+            }
+        }
+        return farthest;
+    }
+
+    /** A flat fold of the tail, recorded as a step with where the tail lay before and after. */
+    /**
+     * Where the paper has the point (x, y) of the triangle's frame that a turn's two creases
+     * share: the tail's start on the side nearest it, mapped by the tail's pose, where that
+     * lies within a quarter width of it; else (x, y). The mountain crease goes
+     * through the paper's own corner rather than the designed one: the two differ by rounding
+     * in the poses, the engine snaps the crease's end to the corner, and each turn's fold about
+     * a line that missed its crease by that much moved the paper on by it; over thousands of
+     * passes (a 10 × 10 × 0.03 plate's triangles) the paper fell past a tolerance behind its
+     * design, and the turn was refused as crossing the crease before it.
+     */
+    private double[] tailCorner(double x, double y) {
+        Isometry2 pose = intoHost.inverse().after(sheet.tailPose());
+        double[] best = {x, y};
+        double nearest = w / 4; // the other side's start lies about a width away
+        for (boolean side : new boolean[] {false, true}) {
+            double u = sheet.tailStart(side);
+            double v = side ? w : 0;
+            double px = pose.x(u, v);
+            double py = pose.y(u, v);
+            double off = Math.hypot(px - x, py - y);
+            if (off <= nearest) {
+                nearest = off;
+                best = new double[] {px, py};
+            }
+        }
+        return best;
+    }
+
+    private void tailFold(Kind kind, int host, double px, double py, double dx, double dy, Placement next, Crease crease)
+            throws FoldException, WrapException {
+        int hostBefore = sheet.tailHost();
+        Isometry2 before = sheet.tailPose();
+        int face = sheet.foldTail(intoHost.x(px, py), intoHost.y(px, py), intoHost.dx(dx, dy), intoHost.dy(dx, dy), next, crease);
+        recordTail(kind, host, face, hostBefore, before, next == Placement.OVER);
+    }
+
+    /** The fold of the tail over an edge onto the next triangle, recorded likewise. */
+    private void tailCross(Kind kind, int host, double px, double py, double dx, double dy, int nextHost, Isometry2 development)
+            throws FoldException, WrapException {
+        int hostBefore = sheet.tailHost();
+        Isometry2 before = sheet.tailPose();
+        int face = sheet.crossTail(intoHost.x(px, py), intoHost.y(px, py), intoHost.dx(dx, dy), intoHost.dy(dx, dy), nextHost, development);
+        recordTail(kind, host, face, hostBefore, before, true);
+    }
+
+    /** Tells {@code watcher} of this path's triangles as the {@code first}-th and on of {@code total}. */
+    void watch(Watcher watcher, int first, int total) {
+        this.watcher = watcher;
+        this.firstDone = first;
+        this.totalTriangles = total;
+    }
+
+    /**
+     * Stops the wrap at the fold that takes the paper past the limit, before memory runs out,
+     * saying what limit the whole path would likely need: the faces so far, over the share
+     * of the path's passes and triangles folded (weighed as on a shared host, {@link #likelyFaces}).
+     */
+    private void checkFaces() throws FaceLimitException {
+        if (watcher.stopped()) {
+            throw new java.util.concurrent.CancellationException("the wrap was stopped");
+        }
+        if (sheet.faceCount() > maxFaces) {
+            double done = 0;
+            double all = 0;
+            for (int i = 0; i < plan.m; i++) {
+                double weight = likelyFaces(passes(plan.frames[i].altitude(), sheet.width()), false);
+                all += weight;
+                done += i <= pathIndex ? weight : 0;
+            }
+            long whole = (long) Math.ceil(sheet.faceCount() * all / done);
+            long enough = (long) Math.ceil(whole * 1.1 / 1000) * 1000; // a tenth to spare, in thousands
+            throw new FaceLimitException(String.format(Locale.ROOT, "the strip has %d faces of paper on triangle %d of %d on the "
+                    + "path (%s), more than the limit of %d faces; at this rate the whole path makes about %d, and a limit "
+                    + "of %d (about %d MiB) would likely let it finish", sheet.faceCount(), pathIndex + 1, plan.m,
+                    cornersText(mesh, plan.first + pathIndex), maxFaces, whole, enough, enough * BYTES_PER_FACE >> 20));
+        }
+    }
+
+    private void recordTail(Kind kind, int host, int face, int hostBefore, Isometry2 before, boolean over) throws FaceLimitException {
+        checkFaces();
+        TailMove move = new TailMove(hostBefore, before, sheet.tailHost(), sheet.tailPose(), sheet.tailStart(false),
+                sheet.tailStart(true), over);
+        steps.add(new Step(kind, strip, host, pathIndex, plan.m, face, null, sheet.faceCount(), move, shared(detail)));
+    }
+
+    private void record(Kind kind, int host, int face) throws FaceLimitException {
+        checkFaces();
+        steps.add(new Step(kind, strip, host, pathIndex, plan.m, face, null, sheet.faceCount(), null, shared(detail)));
+    }
+
+    /**
+     * One copy of each caption detail: a wrap records hundreds of thousands of steps, and
+     * their details are a few dozen texts ("pass 2 of 5: turn, 45° valley fold"), each made
+     * anew by its fold; the copies were a twentieth of the memory the paper takes.
+     */
+    private String shared(String text) {
+        return text == null ? null : details.computeIfAbsent(text, t -> t);
+    }
+}
