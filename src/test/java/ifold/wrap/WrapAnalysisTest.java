@@ -20,7 +20,7 @@ class WrapAnalysisTest {
         // Squares of side 1 at (0.5, 0.5) and (1, 1) overlap in [1, 1.5]², a square of side 0.8
         // at (2.2, 0.1) lies apart: 2 at most, over 1 + 1 - 0.25 + 0.64 of the triangle's 8.
         List<double[]> faces = List.of(square(0.5, 0.5, 1), square(1, 1, 1), square(2.2, 0.1, 0.8));
-        double[] cells = WrapAnalysis.depths(TRIANGLE, faces, TOLERANCE);
+        double[] cells = FaceArrangement.depths(TRIANGLE, faces, TOLERANCE);
         assertEquals(8, cells[0], 1e-12);
         assertEquals(2.39, cells[1], 1e-12);
         assertEquals(2, (int) cells[2]);
@@ -40,7 +40,7 @@ class WrapAnalysisTest {
         for (int k = 0; k < 7; k++) {
             faces.add(square(0.3, 0.3, 0.5));
         }
-        assertEquals(8, (int) WrapAnalysis.depths(TRIANGLE, faces, TOLERANCE)[2]);
+        assertEquals(8, (int) FaceArrangement.depths(TRIANGLE, faces, TOLERANCE)[2]);
     }
 
     /**
@@ -52,6 +52,6 @@ class WrapAnalysisTest {
     void aFaceThinnerThanTheToleranceAddsNoLayer() {
         List<double[]> faces = List.of(square(0.5, 0.5, 1), square(1, 1, 1), square(1.2, 1.2, 1e-13),
                 new double[] {1.1, 1.1, 1.9, 1.9, 1.9, 1.9 + 1e-13});
-        assertEquals(2, (int) WrapAnalysis.depths(TRIANGLE, faces, TOLERANCE)[2]);
+        assertEquals(2, (int) FaceArrangement.depths(TRIANGLE, faces, TOLERANCE)[2]);
     }
 }
