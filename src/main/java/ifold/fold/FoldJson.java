@@ -85,7 +85,7 @@ public final class FoldJson {
      * `StreamReadConstraints...`"): a user cannot enable anything.
      */
     static String inWords(String message) {
-        String words = message.replaceAll(":? *\\(?(enable|from) `[^`]*`[^)]*\\)?", "").strip();
+        String words = message.replaceAll(", from `[^`]*`", "").replaceAll(": enable `[^`]*` to allow", "").strip();
         words = words.replaceFirst("^Non-standard token '([^']*)'", "'$1' is not a number JSON allows");
         return words.replaceFirst("^Duplicate field '([^']*)'", "the key '$1' is given twice");
     }

@@ -134,9 +134,9 @@ public final class AtomicFile {
     private static final java.util.List<Path> FOLDERS = new java.util.ArrayList<>();
 
     /**
-     * Makes the folder {@code dir} for this run's files, to be removed should the JVM stop
-     * (Ctrl-C, SIGTERM) while it holds nothing whole: made and registered in one step, so that no
-     * stop between the two can leave an empty folder behind.
+     * Makes the folder {@code dir} for this run's files, to be removed when the JVM stops (at the
+     * end of any run, Ctrl-C or SIGTERM) if it holds nothing whole then: made and registered in
+     * one step, so that no stop between the two can leave an empty folder behind.
      *
      * @throws IOException if the JVM is stopping already (nothing is made), or the folder cannot be made
      */

@@ -89,7 +89,7 @@ public final class ReportGlossary {
     public static ReportGlossary parse(String markdown) {
         Map<String, Map<String, String>> sections = new LinkedHashMap<>();
         Map<String, String> rows = null;
-        for (String line : markdown.split("\n")) {
+        for (String line : (Iterable<String>) markdown.lines()::iterator) {
             Matcher heading = HEADING.matcher(line);
             if (heading.matches()) {
                 rows = new HashMap<>();
@@ -114,7 +114,7 @@ public final class ReportGlossary {
             return text.substring("ifold ".length()).replace(" --json", "").strip();
         }
         String lower = text.toLowerCase(Locale.ROOT);
-        return lower.contains("share") ? SHARED : lower.contains("view") ? "view" : lower;
+        return lower.startsWith("figures several reports share") ? SHARED : lower.startsWith("the window's view") ? "view" : lower;
     }
 
     /**

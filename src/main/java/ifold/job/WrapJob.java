@@ -109,7 +109,10 @@ public final class WrapJob {
             watcher.note(model + ": wrapped about " + Reports.point(movedBy) + ", near its centre, where doubles can hold"
                     + " the paper: the exports' coordinates are about that point");
         }
+        watcher.stage("checking the surface of " + mesh.faceCount() + " triangles");
+        stopIfAsked(watcher);
         int[] crossing = SelfCrossings.first(mesh);
+        stopIfAsked(watcher);
         if (crossing != null) {
             // Paper laid on it would pass through itself, or cover one place twice: refused rather
             // than wrapped into paper whose layers cannot be ordered (a cube with one corner of a

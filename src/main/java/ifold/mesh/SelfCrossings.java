@@ -6,11 +6,13 @@ package ifold.mesh;
  * (a quad with a wrong corner can make a valid, even manifold, mesh that folds back over its
  * neighbours), and no paper can be laid on such a surface without passing through itself.
  *
- * <p>Each pair of triangles whose boxes meet is tested with both shrunk towards their centres
- * by a millionth: triangles that only share a corner or an edge then part, and any that cross
- * or overlap still meet. The test itself is exact in its signs up to rounding: a segment crosses
- * a triangle where it changes side of the triangle's plane within it; triangles in one plane
- * overlap where no axis of their edges separates them.
+ * <p>Triangles are told apart by what they share, not by moving them: two that share an edge
+ * cross only where they lie in one plane on the same side of it (folded flat onto each other);
+ * two that share a corner cross where an edge away from that corner passes through the other, or,
+ * in one plane, where no axis of their edges parts them but at the corner; two that share nothing
+ * cross where an edge of one passes through the other, or, in one plane, where their shadows
+ * overlap. Touching is not crossing: a crossing must be more than a billionth of the triangles'
+ * size inside both, so that a corner on another's edge (a T-junction) is not one.
  */
 public final class SelfCrossings {
     private SelfCrossings() {
@@ -20,13 +22,17 @@ public final class SelfCrossings {
     private static final double SMALLEST = 1e-60;
     private static final double LARGEST = 1e60;
 
-    /** How far each triangle is shrunk towards its centre before the test, as a fraction of it. */
-    private static final double SHRINK = 1e-6;
+    /** The most cells along an axis: a cell number then fits in 30 bits. */
+    private static final int CELLS = 1024;
+
+    /** How far inside, relative to the triangles' size, a crossing must lie: less is touching. */
+    private static final double INSIDE = 1e-9;
 
     /**
      * The first two triangles (faces of three corners) that cross or overlap, by face index, or
-     * null where none does. Faces that are not triangles are passed over. Linear in the faces
-     * for a surface whose triangles are about the same size (a grid of cells about their size).
+     * null where none does. Faces that are not triangles are passed over. The triangles are
+     * filed in a grid of cells about their mean size, grown until they fill at most eight cells
+     * each on average, so that its memory is linear in the triangles whatever their sizes.
      */
     public static int[] first(IndexedPolygons mesh) {
         int n = mesh.faceCount();
@@ -47,18 +53,19 @@ public final class SelfCrossings {
             sizes += Math.max(b[3] - b[0], Math.max(b[4] - b[1], b[5] - b[2]));
         }
         double across = Math.max(box[3] - box[0], Math.max(box[4] - box[1], box[5] - box[2]));
-        if (!(across >= SMALLEST && across <= LARGEST)) {
+        if (triangles < 2 || !(across >= SMALLEST && across <= LARGEST)) {
             return null; // beyond the sizes iFold computes with: the wrap refuses such a model for its size
         }
-        // Cells about a triangle's mean size, at most CELLS along an axis.
-        double cell = Math.max(sizes / Math.max(1, triangles), across / (CELLS - 1));
-        if (triangles < 2 || !(cell > 0) || !Double.isFinite(cell)) {
-            return null;
+        double cell = Math.max(sizes / triangles, across / (CELLS - 1));
+        // One big triangle among many small ones would fill a cube of cells: the cells grow
+        // until the entries are few (a 200,000-triangle model with one across it ran out of memory).
+        long budget = 8L * triangles + 64;
+        while (entries(mesh, box, cell, budget) > budget) {
+            cell *= 2;
         }
         // Each triangle in each cell its box meets, as (cell << 32 | face), sorted: a cell's
-        // triangles then lie side by side, without a map of lists (a 1.4M-triangle model's
-        // grid of boxed lists took 19 s and 120 MB more than its wrap's refusal).
-        long[] entries = new long[Math.max(16, 2 * triangles)];
+        // triangles then lie side by side, without a map of lists.
+        long[] entries = new long[(int) Math.min(Integer.MAX_VALUE - 8, Math.max(16, entries(mesh, box, cell, budget)))];
         int count = 0;
         for (int f = 0; f < n; f++) {
             if (mesh.faceSize(f) != 3) {
@@ -70,9 +77,6 @@ public final class SelfCrossings {
             for (int i = from[0]; i <= to[0]; i++) {
                 for (int j = from[1]; j <= to[1]; j++) {
                     for (int k = from[2]; k <= to[2]; k++) {
-                        if (count == entries.length) {
-                            entries = java.util.Arrays.copyOf(entries, 2 * entries.length);
-                        }
                         entries[count++] = ((((long) i * CELLS + j) * CELLS + k) << 32) | f;
                     }
                 }
@@ -81,6 +85,8 @@ public final class SelfCrossings {
         java.util.Arrays.sort(entries, 0, count);
         double[] a = new double[9];
         double[] b = new double[9];
+        int[] va = new int[3];
+        int[] vb = new int[3];
         int[] best = null;
         for (int start = 0; start < count; ) {
             int end = start + 1;
@@ -89,14 +95,14 @@ public final class SelfCrossings {
             }
             for (int x = start; x < end; x++) {
                 int f = (int) entries[x];
-                shrunk(mesh, f, a);
+                corners(mesh, f, a, va);
                 for (int y = x + 1; y < end; y++) {
                     int g = (int) entries[y];
                     if (best != null && f >= best[0] && (f > best[0] || g >= best[1])) {
                         break; // in the cell's order of faces: every pair after this one comes later
                     }
-                    shrunk(mesh, g, b);
-                    if (boxesMeet(a, b) && meet(a, b)) {
+                    corners(mesh, g, b, vb);
+                    if (boxesMeet(a, b) && cross(a, va, b, vb)) {
                         best = new int[] {f, g}; // f < g: entries of a cell are sorted by face
                         break;
                     }
@@ -107,8 +113,19 @@ public final class SelfCrossings {
         return best;
     }
 
-    /** The most cells along an axis: a cell number then fits in 30 bits. */
-    private static final int CELLS = 1024;
+    /** The entries a grid of this cell size holds, counted up to just past {@code stop}. */
+    private static long entries(IndexedPolygons mesh, double[] box, double cell, long stop) {
+        long total = 0;
+        for (int f = 0; f < mesh.faceCount() && total <= stop; f++) {
+            if (mesh.faceSize(f) == 3) {
+                double[] b = box(mesh, f);
+                int[] from = cellOf(b, 0, box, cell);
+                int[] to = cellOf(b, 3, box, cell);
+                total += (long) (to[0] - from[0] + 1) * (to[1] - from[1] + 1) * (to[2] - from[2] + 1);
+            }
+        }
+        return total;
+    }
 
     private static double[] box(IndexedPolygons mesh, int f) {
         double[] b = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY,
@@ -132,17 +149,13 @@ public final class SelfCrossings {
         return c;
     }
 
-    /** Triangle f's corners, each moved a millionth of the way to its centre. */
-    private static void shrunk(IndexedPolygons mesh, int f, double[] out) {
-        double[] centre = new double[3];
+    /** Triangle f's corners (9 numbers) and their vertices. */
+    private static void corners(IndexedPolygons mesh, int f, double[] out, int[] vertices) {
         for (int k = 0; k < 3; k++) {
+            vertices[k] = mesh.faceVertex(f, k);
             for (int axis = 0; axis < 3; axis++) {
-                out[3 * k + axis] = mesh.coordinate(mesh.faceVertex(f, k), axis);
-                centre[axis] += out[3 * k + axis] / 3;
+                out[3 * k + axis] = mesh.coordinate(vertices[k], axis);
             }
-        }
-        for (int k = 0; k < 9; k++) {
-            out[k] += (centre[k % 3] - out[k]) * SHRINK;
         }
     }
 
@@ -159,27 +172,101 @@ public final class SelfCrossings {
         return true;
     }
 
-    /** Whether two triangles (9 numbers each) share a point. */
-    static boolean meet(double[] a, double[] b) {
+    /** Whether triangles a and b (9 numbers each, vertices va and vb) cross beyond what they share. */
+    static boolean cross(double[] a, int[] va, double[] b, int[] vb) {
         double[] n = normal(a);
         double[] m = normal(b);
-        double scale = Math.max(length(n), length(m));
-        if (!(scale > 0)) {
+        if (!(length(n) > 0) || !(length(m) > 0)) {
             return false; // a triangle without area holds no paper
         }
-        double sa = side(a, 0, m, b);
-        double sb = side(a, 3, m, b);
-        double sc = side(a, 6, m, b);
-        double tolerance = 1e-9 * length(m) * span(a, b); // corners within a billionth of the size of b's plane
-        if (Math.abs(sa) <= tolerance && Math.abs(sb) <= tolerance && Math.abs(sc) <= tolerance) {
-            return coplanarOverlap(a, b, m);
+        int shared = 0;
+        int sharedA = -1;
+        int sharedB = -1;
+        for (int i = 0; i < 3; i++) {
+            for (int j = 0; j < 3; j++) {
+                if (va[i] == vb[j]) {
+                    shared++;
+                    sharedA = i;
+                    sharedB = j;
+                }
+            }
+        }
+        double span = span(a, b);
+        boolean coplanar = coplanar(a, b, m, span) && coplanar(b, a, n, span);
+        if (shared == 3) {
+            return true; // the same triangle twice
+        }
+        if (shared == 2) {
+            // Folded flat onto each other: one plane, the two far corners on one side of the edge.
+            if (!coplanar) {
+                return false;
+            }
+            int farA = farCorner(va, vb);
+            int farB = farCorner(vb, va);
+            int e0 = sharedVertexIndex(va, vb, 0);
+            int e1 = sharedVertexIndex(va, vb, 1);
+            double sa = sideOfEdge(a, 3 * e0, 3 * e1, a, 3 * farA, n);
+            double sb = sideOfEdge(a, 3 * e0, 3 * e1, b, 3 * farB, n);
+            return sa * sb > 0;
+        }
+        if (coplanar) {
+            return overlapInPlane(a, b, n, span);
+        }
+        if (shared == 1) {
+            // Planes meet in a line through the shared corner: only an edge away from it can pass through the other.
+            return segmentCrosses(a, (sharedA + 1) % 3, (sharedA + 2) % 3, b, span)
+                    || segmentCrosses(b, (sharedB + 1) % 3, (sharedB + 2) % 3, a, span);
         }
         for (int e = 0; e < 3; e++) {
-            if (segmentCrosses(a, e, (e + 1) % 3, b) || segmentCrosses(b, e, (e + 1) % 3, a)) {
+            if (segmentCrosses(a, e, (e + 1) % 3, b, span) || segmentCrosses(b, e, (e + 1) % 3, a, span)) {
                 return true;
             }
         }
         return false;
+    }
+
+    /** The corner of {@code v} that {@code w} does not have. */
+    private static int farCorner(int[] v, int[] w) {
+        for (int i = 0; i < 3; i++) {
+            if (v[i] != w[0] && v[i] != w[1] && v[i] != w[2]) {
+                return i;
+            }
+        }
+        return 0;
+    }
+
+    /** The corner (of {@code v}) of the k-th vertex {@code v} shares with {@code w}. */
+    private static int sharedVertexIndex(int[] v, int[] w, int k) {
+        for (int i = 0; i < 3; i++) {
+            if (v[i] == w[0] || v[i] == w[1] || v[i] == w[2]) {
+                if (k-- == 0) {
+                    return i;
+                }
+            }
+        }
+        return 0;
+    }
+
+    /** Which side of the line from p to q (corners of t) point r of s lies, in the plane of normal n. */
+    private static double sideOfEdge(double[] t, int p, int q, double[] s, int r, double[] n) {
+        double ex = t[q] - t[p];
+        double ey = t[q + 1] - t[p + 1];
+        double ez = t[q + 2] - t[p + 2];
+        double dx = s[r] - t[p];
+        double dy = s[r + 1] - t[p + 1];
+        double dz = s[r + 2] - t[p + 2];
+        return (ey * dz - ez * dy) * n[0] + (ez * dx - ex * dz) * n[1] + (ex * dy - ey * dx) * n[2];
+    }
+
+    /** Whether every corner of {@code t} lies within a billionth of the size of the plane of {@code plane} (normal n). */
+    private static boolean coplanar(double[] t, double[] plane, double[] n, double span) {
+        double tolerance = INSIDE * length(n) * span;
+        for (int k = 0; k < 9; k += 3) {
+            if (Math.abs(side(t, k, n, plane)) > tolerance) {
+                return false;
+            }
+        }
+        return true;
     }
 
     private static double span(double[] a, double[] b) {
@@ -209,12 +296,18 @@ public final class SelfCrossings {
         return n[0] * (t[at] - plane[0]) + n[1] * (t[at + 1] - plane[1]) + n[2] * (t[at + 2] - plane[2]);
     }
 
-    /** Whether edge (p, q) of triangle s crosses triangle t, not in its plane. */
-    private static boolean segmentCrosses(double[] s, int p, int q, double[] t) {
+    /**
+     * Whether edge (p, q) of triangle s passes through triangle t: from one side of its plane to
+     * the other, each end more than a billionth of the size away, at a point more than that inside
+     * every edge of t.
+     */
+    private static boolean segmentCrosses(double[] s, int p, int q, double[] t, double span) {
         double[] n = normal(t);
+        double nl = length(n);
+        double tolerance = INSIDE * nl * span;
         double hp = side(s, 3 * p, n, t);
         double hq = side(s, 3 * q, n, t);
-        if (hp > 0 && hq > 0 || hp < 0 && hq < 0 || hp == hq) {
+        if (!(hp > tolerance && hq < -tolerance || hp < -tolerance && hq > tolerance)) {
             return false;
         }
         double w = hp / (hp - hq);
@@ -222,43 +315,37 @@ public final class SelfCrossings {
         for (int axis = 0; axis < 3; axis++) {
             x[axis] = s[3 * p + axis] + w * (s[3 * q + axis] - s[3 * p + axis]);
         }
-        // Inside t: on the same side of each of its edges as its normal says.
         for (int e = 0; e < 3; e++) {
             int i = 3 * e;
             int j = 3 * ((e + 1) % 3);
-            double ex = t[j] - t[i];
-            double ey = t[j + 1] - t[i + 1];
-            double ez = t[j + 2] - t[i + 2];
-            double dx = x[0] - t[i];
-            double dy = x[1] - t[i + 1];
-            double dz = x[2] - t[i + 2];
-            double cx = ey * dz - ez * dy;
-            double cy = ez * dx - ex * dz;
-            double cz = ex * dy - ey * dx;
-            if (cx * n[0] + cy * n[1] + cz * n[2] < 0) {
+            double edge = Math.sqrt((t[j] - t[i]) * (t[j] - t[i]) + (t[j + 1] - t[i + 1]) * (t[j + 1] - t[i + 1])
+                    + (t[j + 2] - t[i + 2]) * (t[j + 2] - t[i + 2]));
+            // (edge × (x − corner)) · n / (|edge| |n|): how far inside that edge x lies.
+            if (sideOfEdge(t, i, j, x, 0, n) <= INSIDE * span * edge * nl) {
                 return false;
             }
         }
         return true;
     }
 
-    /** Whether two triangles of one plane (normal n) overlap: no edge's normal in the plane separates them. */
-    private static boolean coplanarOverlap(double[] a, double[] b, double[] n) {
+    /** Whether two triangles of one plane (normal n) overlap by more than touching: no edge's normal in the plane parts them. */
+    private static boolean overlapInPlane(double[] a, double[] b, double[] n, double span) {
         // Drop the axis the normal is longest along: the triangles' shadows keep their overlap.
         int drop = Math.abs(n[0]) >= Math.abs(n[1]) && Math.abs(n[0]) >= Math.abs(n[2]) ? 0 : Math.abs(n[1]) >= Math.abs(n[2]) ? 1 : 2;
         int u = (drop + 1) % 3;
         int v = (drop + 2) % 3;
         double[] p = {a[u], a[v], a[3 + u], a[3 + v], a[6 + u], a[6 + v]};
         double[] q = {b[u], b[v], b[3 + u], b[3 + v], b[6 + u], b[6 + v]};
-        return !separates(p, q) && !separates(q, p);
+        return !separates(p, q, span) && !separates(q, p, span);
     }
 
-    private static boolean separates(double[] p, double[] q) {
+    private static boolean separates(double[] p, double[] q, double span) {
         for (int e = 0; e < 3; e++) {
             int i = 2 * e;
             int j = 2 * ((e + 1) % 3);
             double nx = p[j + 1] - p[i + 1];
             double ny = p[i] - p[j];
+            double touch = INSIDE * span * Math.sqrt(nx * nx + ny * ny);
             double pMin = Double.POSITIVE_INFINITY;
             double pMax = Double.NEGATIVE_INFINITY;
             double qMin = Double.POSITIVE_INFINITY;
@@ -271,8 +358,8 @@ public final class SelfCrossings {
                 qMin = Math.min(qMin, dq);
                 qMax = Math.max(qMax, dq);
             }
-            if (pMax < qMin || qMax < pMin) {
-                return true;
+            if (pMax <= qMin + touch || qMax <= pMin + touch) {
+                return true; // apart, or touching along a line or at a point
             }
         }
         return false;

@@ -161,6 +161,8 @@ class FoldCommandTest {
             // jackson's own words named its settings ("enable `JsonReadFeature.ALLOW_NON_NUMERIC_NUMBERS` to allow").
             {"nan.fold", square("", ", [0, 2]", ", \"V\"", "").replaceFirst("10", "NaN"), "line 1: not valid JSON: 'NaN' is not a number JSON allows"},
             {"deep.fold", "{\"a\": " + "[".repeat(1200) + "]".repeat(1200) + "}", "not a FOLD file: lists or objects nested more than 1,000 deep"},
+            {"long-number.fold", "{\"vertices_coords\": [[0, " + "1".repeat(1200) + "]]}",
+                "not a FOLD file: Number value length (1200) exceeds the maximum allowed (1000)"},
             {"twice.fold", square("", ", [0, 2]", ", \"V\"", ", \"edges_assignment\": []"), "the key 'edges_assignment' is given twice"},
             {"trailing.fold", square("", ", [0, 2]", ", \"V\"", "") + "garbage\n", "line 4: text after the FOLD object"},
             {"two-objects.fold", square("", ", [0, 2]", ", \"V\"", "") + "{}\n", "line 4: text after the FOLD object"},

@@ -68,4 +68,55 @@ class SelfCrossingsTest {
         HalfedgeMesh mesh = MeshBuilder.build(MeshReaders.read(rabbit), new MeshBuilder.Options(false, true)).mesh();
         assertArrayEquals(new int[] {16, 1094}, SelfCrossings.first(mesh));
     }
+
+    /**
+     * Thin triangles fanning from a corner far from the origin, each a billionth wide: they only
+     * share edges and their corner. (Shrunk towards their centres by a millionth, as this check
+     * first did, neighbours moved by less than the coordinates' rounding and were taken for
+     * crossing.)
+     */
+    @Test
+    void aFanOfSliversAwayFromTheOriginOnlyTouches() {
+        PolygonSoup fan = new PolygonSoup();
+        int apex = fan.addVertex(10, 10, 10);
+        int[] rim = new int[11];
+        for (int k = 0; k <= 10; k++) {
+            rim[k] = fan.addVertex(11, 10 + k * 1e-9, 10);
+        }
+        for (int k = 0; k < 10; k++) {
+            fan.addFace(new int[] {apex, rim[k], rim[k + 1]}, 3, 0);
+        }
+        assertNull(SelfCrossings.first(fan));
+    }
+
+    /** A corner of one triangle on the edge of another (a T-junction) touches, it does not cross. */
+    @Test
+    void aCornerOnAnothersEdgeOnlyTouches() {
+        assertNull(SelfCrossings.first(triangles(new double[] {0, 0, 0, 2, 0, 0, 1, 1, 0}, new double[] {1, 0, 0, 1, -1, 0.5, 2, -1, 0})));
+    }
+
+    /**
+     * Many small triangles and one across them all, in separate places: the grid grows its cells
+     * rather than file the big one in a million of them (it ran out of memory).
+     */
+    @Test
+    void oneBigTriangleAmongManySmallOnesNeedsLittleMemory() {
+        PolygonSoup soup = new PolygonSoup();
+        for (int i = 0; i < 200; i++) {
+            for (int j = 0; j < 200; j++) {
+                int a = soup.addVertex(i, j, 0);
+                int b = soup.addVertex(i + 1e-3, j, 0);
+                int c = soup.addVertex(i, j + 1e-3, 0);
+                soup.addFace(new int[] {a, b, c}, 3, 0);
+            }
+        }
+        int a = soup.addVertex(0, 0, 5);
+        int b = soup.addVertex(200, 0, 6);
+        int c = soup.addVertex(0, 200, 7);
+        soup.addFace(new int[] {a, b, c}, 3, 0);
+        long before = Runtime.getRuntime().totalMemory() - Runtime.getRuntime().freeMemory();
+        assertNull(SelfCrossings.first(soup), "nothing crosses: the big one lies above the rest");
+        long after = Runtime.getRuntime().totalMemory() - Runtime.getRuntime().freeMemory();
+        org.junit.jupiter.api.Assertions.assertTrue(after - before < 512L << 20, "memory: " + ((after - before) >> 20) + " MiB");
+    }
 }
