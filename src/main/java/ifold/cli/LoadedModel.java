@@ -6,7 +6,6 @@ import ifold.mesh.MeshBuilder;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.Map;
-import java.util.TreeMap;
 
 /**
  * A model file read and built ({@link ModelFiles}, as the window reads it), for the commands:
@@ -31,8 +30,13 @@ final class LoadedModel {
         try {
             return new LoadedModel(ModelFiles.load(file, options));
         } catch (ModelFiles.LoadFailure e) {
-            throw new UserError(e.getMessage() + (e.repairable() ? " (run without --strict to repair)" : ""));
+            throw refusal(e);
         }
+    }
+
+    /** A model file that cannot be read or built, as the commands say it: how to let strict mode repair it, where it could. */
+    static UserError refusal(ModelFiles.LoadFailure e) {
+        return new UserError(e.getMessage() + (e.repairable() ? " (run without --strict to repair)" : ""));
     }
 
     int inputVertices() {
@@ -74,8 +78,8 @@ final class LoadedModel {
 
     /** One line on {@code err} for each kind of repair made, with its count. */
     void reportRepairs(Path file, PrintWriter err) {
-        for (Map.Entry<Defect, Integer> repair : new TreeMap<>(loaded.repairs()).entrySet()) {
-            err.println("ifold: " + file + ": repaired: " + repair.getKey().describeRepair(repair.getValue()));
+        for (String note : ModelFiles.repairNotes(file, loaded.repairs())) {
+            err.println("ifold: " + note);
         }
         err.flush();
     }

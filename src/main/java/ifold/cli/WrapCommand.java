@@ -114,7 +114,7 @@ final class WrapCommand implements Callable<Integer> {
                 }
             });
         } catch (ModelFiles.LoadFailure e) {
-            throw new UserError(e.getMessage() + (e.repairable() ? " (run without --strict to repair)" : ""));
+            throw LoadedModel.refusal(e);
         } catch (ParameterException e) {
             throw UserError.usage(e);
         } catch (Wrap.FaceLimitException e) {

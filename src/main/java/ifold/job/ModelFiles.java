@@ -58,6 +58,15 @@ public final class ModelFiles {
         return String.join(", ", parts);
     }
 
+    /** A line for each kind of repair made, with its count: "models/x.off: repaired: dropped 1 zero-area face". */
+    public static List<String> repairNotes(Path file, Map<Defect, Integer> repairs) {
+        List<String> notes = new ArrayList<>();
+        for (Map.Entry<Defect, Integer> repair : new TreeMap<>(repairs).entrySet()) {
+            notes.add(file + ": repaired: " + repair.getKey().describeRepair(repair.getValue()));
+        }
+        return notes;
+    }
+
     /**
      * The refusal of a model its repairs left without faces, in one line that names the repairs
      * (rather than a line per repair and then the refusal), or null where faces are left.

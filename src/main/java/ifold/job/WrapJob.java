@@ -11,7 +11,6 @@ import ifold.wrap.WrapGeometry;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
-import java.util.TreeMap;
 
 /**
  * The wrap of a model file, as {@code ifold wrap} and the window's Wrap the model both do it: the
@@ -96,8 +95,8 @@ public final class WrapJob {
         if (noFaces != null) {
             throw new ModelFiles.LoadFailure(noFaces, false);
         }
-        for (Map.Entry<ifold.mesh.Defect, Integer> repair : new TreeMap<>(loaded.repairs()).entrySet()) {
-            watcher.note(model + ": repaired: " + repair.getKey().describeRepair(repair.getValue()));
+        for (String note : ModelFiles.repairNotes(model, loaded.repairs())) {
+            watcher.note(note);
         }
         HalfedgeMesh mesh = loaded.built().mesh();
         if (mesh.faceCount() == 0) {

@@ -175,11 +175,7 @@ final class ExportDialogs {
         javax.swing.JFormattedTextField field = editor.getTextField();
         String text = field.getText().strip();
         try {
-            Object value = field.getFormatter().stringToValue(text);
-            if (value instanceof Number number && number.doubleValue() == ((Number) spinner.getValue()).doubleValue()) {
-                return null;
-            }
-            spinner.setValue(value); // typed but not yet committed (the field never left): it counts
+            spinner.setValue(field.getFormatter().stringToValue(text)); // typed, committed or not (the field never left): it counts
             return null;
         } catch (java.text.ParseException | IllegalArgumentException e) {
             return name + ": '" + text + "' is not a number from " + plain(model.getMinimum()) + " to " + plain(model.getMaximum());
