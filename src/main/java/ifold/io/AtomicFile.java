@@ -43,17 +43,18 @@ public final class AtomicFile {
      *     the machine soon after can leave an empty file; frames of a movie skip it for speed
      */
     public static void write(Path file, Content content, boolean durable) throws IOException {
-        Path target = file.toAbsolutePath();
+        Path named = file.toAbsolutePath();
+        Path target = destination(named);
         Path temp;
         synchronized (IN_FLIGHT) {
             if (shuttingDown) {
-                throw new IOException(target + ": not written: iFold is stopping");
+                throw new IOException(named + ": not written: iFold is stopping");
             }
             try {
                 temp = createTemporary(target);
             } catch (IOException e) {
                 // Name the file the user asked for, not the temporary one beside it.
-                throw new IOException(target + ": " + reason(e), e);
+                throw new IOException(named + ": " + reason(e), e);
             }
             register(temp);
         }
@@ -71,11 +72,11 @@ public final class AtomicFile {
             } catch (AtomicMoveNotSupportedException e) {
                 Files.move(temp, target, StandardCopyOption.REPLACE_EXISTING);
             }
-            WRITTEN.add(target);
+            WRITTEN.add(named);
         } catch (IOException e) {
             discard(temp, e);
             // Name the file the user asked for, not the temporary one beside it.
-            throw new IOException(target + ": " + reason(e), e);
+            throw new IOException(named + ": " + reason(e), e);
         } catch (RuntimeException | Error e) {
             discard(temp, e);
             throw e;
@@ -85,6 +86,24 @@ public final class AtomicFile {
     }
 
     /** Why a write failed, in words, without the temporary file's name. */
+    /**
+     * Where a write of {@code file} (absolute) lands: the file itself, or where a symbolic link
+     * there points, followed to the end. The rename would otherwise put a plain file in the
+     * link's place and leave the file it points to as it was, where every other program writes
+     * through the link.
+     */
+    static Path destination(Path file) throws IOException {
+        Path target = file;
+        for (int hops = 0; Files.isSymbolicLink(target); hops++) {
+            if (hops == 40) {
+                throw new IOException(file + ": too many levels of symbolic links");
+            }
+            Path parent = target.getParent();
+            target = parent.resolve(Files.readSymbolicLink(target)).normalize();
+        }
+        return target;
+    }
+
     private static String reason(IOException e) {
         if (e instanceof AccessDeniedException) {
             return "permission denied";
@@ -249,19 +268,22 @@ public final class AtomicFile {
      * make the file again once it is taken back, as its folder is gone.
      */
     public static final class Pending implements AutoCloseable {
+        /** The file as the user named it, and where it is written: where a link there points. */
+        private final Path named;
         private final Path target;
         /** What a stop takes back: the temporary file, or the folder it is in. */
         private final Path temp;
         private final Path path;
         private boolean done;
 
-        private Pending(Path target, boolean forProgram) throws IOException {
-            this.target = target;
+        private Pending(Path named, boolean forProgram) throws IOException {
+            this.named = named;
+            this.target = destination(named);
             try {
                 this.temp = createDeletedOnStop(() -> forProgram ? createTemporaryFolder(target) : createTemporary(target));
             } catch (IOException e) {
                 // Name the file the user asked for, not the temporary one beside it.
-                throw new IOException(target + ": " + reason(e), e);
+                throw new IOException(named + ": " + reason(e), e);
             }
             this.path = forProgram ? temp.resolve(target.getFileName()) : temp;
         }
@@ -292,7 +314,7 @@ public final class AtomicFile {
             } catch (AtomicMoveNotSupportedException e) {
                 Files.move(path, target, StandardCopyOption.REPLACE_EXISTING);
             }
-            WRITTEN.add(target);
+            WRITTEN.add(named);
             if (!temp.equals(path)) {
                 try {
                     deleteWithContents(temp);

@@ -716,7 +716,8 @@ public final class WrapView {
         /**
          * How far the camera has turned to look from below at a position along the folds (0 to
          * 1): on a lone triangle, its tucks fold the excess under it, out of sight from above,
-         * so the camera turns under for them, easing in half a fold before and out by the end.
+         * so the camera turns under for them, easing in half a fold before and out half a fold
+         * after (the last stays under until the final turn).
          * A polyhedron hides its tucks in the solid; the camera stays outside.
          */
         private double underAt(double along) {
@@ -730,7 +731,9 @@ public final class WrapView {
                     continue;
                 }
                 double rise = (along - (j - 0.5)) / 0.5;
-                double fall = j == n - 1 ? (n - along) / 0.5 : ((j + 1.5) - along) / 0.5;
+                // After the last tuck the camera stays under to the end of its caption: the final
+                // turn glides up from there.
+                double fall = j == n - 1 ? 1 : ((j + 1.5) - along) / 0.5;
                 under = Math.max(under, smooth(Math.max(0, Math.min(1, Math.min(rise, fall)))));
             }
             return under;

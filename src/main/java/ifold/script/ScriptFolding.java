@@ -338,6 +338,27 @@ public final class ScriptFolding {
         double du = u2 - u1;
         double dv = v2 - v1;
         double length = Math.hypot(du, dv);
+        // The paper that stays along the crease lies across the moving paper's edges on it: the
+        // first such face, found from them, not from every face of the sheet (a pleat of n folds
+        // asked n² faces).
+        int staying = -1;
+        for (int f : moving) {
+            int[] loop = sheet.loop(f);
+            for (int i = 0; i < loop.length; i++) {
+                int a = loop[i];
+                int b = loop[(i + 1) % loop.length];
+                double da = (du * (sheet.v(a) - v1) - dv * (sheet.u(a) - u1)) / length;
+                double db = (du * (sheet.v(b) - v1) - dv * (sheet.u(b) - u1)) / length;
+                int across = sheet.faceAcross(a, b);
+                if (Math.abs(da) <= sheet.tolerance() && Math.abs(db) <= sheet.tolerance() && a != b && across >= 0
+                        && !moving.contains(across) && (staying < 0 || across < staying)) {
+                    staying = across;
+                }
+            }
+        }
+        if (staying >= 0) {
+            return staying;
+        }
         int found = -1;
         for (int f = 0; f < sheet.faceCount(); f++) {
             int[] loop = sheet.loop(f);

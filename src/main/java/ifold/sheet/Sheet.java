@@ -855,21 +855,25 @@ public final class Sheet {
             // relations and each fold cost what the pile holds. (The order is kept where the
             // face between later leaves: see stayingAbove.)
             Between direct = new Between(to.above, placement);
-            List<Integer> touching = new ArrayList<>();
-            for (int i = 0; i < to.count; i++) {
-                int g = to.faces[i];
-                touching.clear();
-                int touches = nextMark();
-                for (int f : faces) {
-                    if (overlap(f, g)) {
-                        mark[f] = touches;
-                        touching.add(f);
-                    }
-                }
-                for (int f : touching) {
+            for (int f : faces) {
+                int holds = nextHoldsStamp();
+                for (int i = 0; i < to.count; i++) {
+                    int g = to.faces[i];
+                    // First the cheap cases, without even asking whether f and g overlap: a face
+                    // directly on f's side of g that holds all of g, or all of f, holds all of
+                    // where they overlap. Each fold of a pleat lands on a pile whose every layer
+                    // holds the one below: asked of each pair of layers, the pile of n folds cost
+                    // n² overlaps (24 s for 10,000 creases).
                     boolean implied = false;
+                    for (int k = direct.start(g); k < direct.end(g) && !implied; k++) {
+                        int h = direct.face(k);
+                        implied = holdsFace(h, g) || holdsAll(h, f, holds);
+                    }
+                    if (implied || !overlap(f, g)) {
+                        continue;
+                    }
                     for (int h : between.getOrDefault(f, List.of())) {
-                        if (mark[h] == touches && contains(h, f)) {
+                        if (contains(h, f) && overlap(h, g)) {
                             implied = true;
                             break;
                         }
@@ -1639,6 +1643,65 @@ public final class Sheet {
     private int markCount;
     /** Scratch: each face's place in the stack whose levels are being found. */
     private int[] placeInStack = new int[16];
+
+    /** Per face h, whether it holds all of the face being placed: {@link #holdsStamp} where it does, one more where not. */
+    private int[] holdsMark = new int[16];
+    private int holdsStamp;
+
+    private int nextHoldsStamp() {
+        if (holdsMark.length < loops.size()) {
+            holdsMark = Arrays.copyOf(holdsMark, Math.max(loops.size(), 2 * holdsMark.length));
+        }
+        holdsStamp += 2;
+        return holdsStamp;
+    }
+
+    /** Whether face h, as placed, holds all of face f: asked once a stamp (a face being placed), then remembered. */
+    private boolean holdsAll(int h, int f, int stamp) {
+        if (holdsMark[h] == stamp || holdsMark[h] == stamp + 1) {
+            return holdsMark[h] == stamp;
+        }
+        boolean holds = holdsBox(h, f) && contains(h, f);
+        holdsMark[h] = holds ? stamp : stamp + 1;
+        return holds;
+    }
+
+    /**
+     * Whether face h, as placed, holds all of face g: the last answer for g is kept, with the
+     * two placements it was found for, since a pile's layers are asked again at every fold
+     * landing on it, and a face placed anew is a new placement.
+     */
+    private boolean holdsFace(int h, int g) {
+        double[] outer = placedCached(h);
+        double[] inner = placedCached(g);
+        if (heldOuter.length <= g) {
+            int size = Math.max(g + 1, 2 * heldOuter.length);
+            heldOuter = Arrays.copyOf(heldOuter, size);
+            heldInner = Arrays.copyOf(heldInner, size);
+            heldAnswer = Arrays.copyOf(heldAnswer, size);
+        }
+        if (heldOuter[g] != outer || heldInner[g] != inner) {
+            heldOuter[g] = outer;
+            heldInner[g] = inner;
+            heldAnswer[g] = holdsBox(h, g) && containsPoints(outer, inner);
+        }
+        return heldAnswer[g];
+    }
+
+    /** {@link #holdsFace}'s last answer by face, and the placements it was for. */
+    private double[][] heldOuter = new double[16][];
+    private double[][] heldInner = new double[16][];
+    private boolean[] heldAnswer = new boolean[16];
+
+    /** Whether the bounding box of face h, as placed, holds that of face f: a quick test before {@link #contains}. */
+    private boolean holdsBox(int h, int f) {
+        placedCached(h);
+        placedCached(f);
+        double[] boxH = boxes.get(h);
+        double[] boxF = boxes.get(f);
+        return boxF[0] >= boxH[0] - tolerance && boxF[1] >= boxH[1] - tolerance && boxF[2] <= boxH[2] + tolerance
+                && boxF[3] <= boxH[3] + tolerance;
+    }
 
     private int nextMark() {
         if (mark.length < loops.size()) {

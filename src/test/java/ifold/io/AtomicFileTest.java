@@ -39,6 +39,52 @@ class AtomicFileTest {
         assertEquals(1, Files.size(dir.resolve("out.off")));
     }
 
+    /**
+     * A file written through a symbolic link lands where the link points, and the link stays
+     * (the rename put a plain file in the link's place, and the file it pointed to kept its old
+     * content), as it does for a file written in steps and one another program writes; a link
+     * to a file not there yet makes it, and links in a loop are refused naming the file.
+     */
+    @Test
+    void aFileWrittenThroughALinkLandsWhereTheLinkPoints() throws Exception {
+        Path models = Files.createDirectory(dir.resolve("models"));
+        Path real = Files.writeString(models.resolve("cube.obj"), "old");
+        Path link = Files.createSymbolicLink(dir.resolve("latest.obj"), Path.of("models/cube.obj"));
+        Path chain = Files.createSymbolicLink(dir.resolve("chain.obj"), link.getFileName());
+        AtomicFile.write(chain, out -> out.write("new".getBytes(java.nio.charset.StandardCharsets.UTF_8)), true);
+        assertTrue(Files.isSymbolicLink(chain) && Files.isSymbolicLink(link), "both links stay links");
+        assertEquals("new", Files.readString(real));
+        try (AtomicFile.Pending pending = AtomicFile.begin(link)) {
+            Files.writeString(pending.path(), "in steps");
+            pending.commit();
+        }
+        assertTrue(Files.isSymbolicLink(link));
+        assertEquals("in steps", Files.readString(real));
+        try (AtomicFile.Pending pending = AtomicFile.beginForProgram(link)) {
+            Files.writeString(pending.path(), "by a program");
+            pending.commit();
+        }
+        assertTrue(Files.isSymbolicLink(link));
+        assertEquals("by a program", Files.readString(real));
+        assertEquals(List.of("cube.obj"), names(models), "no temporary file left beside the real one");
+
+        Path dangling = Files.createSymbolicLink(dir.resolve("next.obj"), Path.of("models/next.obj"));
+        AtomicFile.write(dangling, out -> out.write(7), false);
+        assertTrue(Files.isSymbolicLink(dangling));
+        assertEquals(1, Files.size(models.resolve("next.obj")));
+
+        Path loop = Files.createSymbolicLink(dir.resolve("a.obj"), Path.of("b.obj"));
+        Files.createSymbolicLink(dir.resolve("b.obj"), Path.of("a.obj"));
+        java.io.IOException refused = assertThrows(java.io.IOException.class, () -> AtomicFile.write(loop, out -> out.write(1), false));
+        assertTrue(refused.getMessage().contains("a.obj") && refused.getMessage().contains("symbolic links"), refused.getMessage());
+    }
+
+    private static List<String> names(Path folder) throws Exception {
+        try (var files = Files.list(folder)) {
+            return files.map(f -> f.getFileName().toString()).sorted().toList();
+        }
+    }
+
     @Test
     void aFrameExportSweepsHalfWrittenFramesOfAKilledOne() throws Exception {
         Path frame = stale(".frame_00031.png.0a1b2c.tmp");

@@ -49,5 +49,22 @@ class ZigZagSceneTest {
         }
         assertTrue(tucks > 0, "check the setup: the triangle has tucks");
         assertFalse(playback.describe(playback.halfTurn()).contains("below"), "the final turn is not named so");
+
+        // And at every moment, not just the middles: while a caption says "seen from below", the
+        // camera is below the triangle (the last tuck's caption stayed on screen for 0.7 s of a
+        // movie after the camera had come back up).
+        org.joml.Vector3d eye = new org.joml.Vector3d();
+        int below = 0;
+        for (int k = 0; k <= 2000; k++) {
+            double position = playback.halfTurn() * k / 2000;
+            playback.apply(position);
+            String caption = playback.describe(position);
+            if (caption.endsWith("(seen from below)")) {
+                below++;
+                double height = scene.camera().eye(eye).z; // the triangle lies in z = 0, its normal +z
+                assertTrue(height < 0, "at " + position + " the caption says \"" + caption + "\" and the camera is at height " + height);
+            }
+        }
+        assertTrue(below > 0, "check the setup: some moments are captioned as seen from below");
     }
 }
