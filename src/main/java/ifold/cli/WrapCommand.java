@@ -211,13 +211,16 @@ final class WrapCommand implements Callable<Integer> {
         LayerFloor floor = LayerFloor.of(result.mesh());
         String atLeast = floor.layers() < 2 ? "" : String.format(Locale.ROOT, "; at least %d for any strip, at a vertex of %.3g degrees",
                 floor.layers(), Math.toDegrees(floor.angleSum()));
+        // Thick layers standing back from concave edges say how far: the OBJ's faces there are not their paper's shape.
+        String creep = !(analysis.creep() > 0) ? ""
+                : String.format(Locale.ROOT, " (layers creep up to %.1f T at concave edges)", analysis.creep() / result.thickness());
         return String.format(Locale.ROOT, "%s: %d %s%s -> %d on the path, %s, "
                 + "%d turn folds, %d gadget folds, %d edge crossings, %d tucks, %d layers at most (a stack of %d%s), "
-                + "paper efficiency %.3f, coverage %.3f, isometry error %.1e", model, mesh.faceCount(), mesh.faceCount() == 1 ? "triangle" : "triangles",
-                prepared, result.mesh().faceCount(),
+                + "paper efficiency %.3f, coverage %.3f, isometry error %.1e%s", model, mesh.faceCount(),
+                mesh.faceCount() == 1 ? "triangle" : "triangles", prepared, result.mesh().faceCount(),
                 paper, result.count(Wrap.Kind.ZIGZAG_TURN),
                 result.count(Wrap.Kind.TURN_GADGET), result.count(Wrap.Kind.EDGE_CROSSING), result.count(Wrap.Kind.TUCK),
                 analysis.maxLayers(), analysis.stackLevels(), atLeast, analysis.surfaceArea() / analysis.paperArea(), analysis.coverage(),
-                analysis.isometryError());
+                analysis.isometryError(), creep);
     }
 }

@@ -44,7 +44,7 @@ public final class ReportGlossary {
 
     // Named by the figure's own name, wherever it is: the reports use each of these words for one kind of measure.
     private static final Set<String> LENGTHS = Set.of("width", "widestWidth", "thickness", "length", "stripLength", "stripWidth",
-            "paperOutside", "farthestFromSurface", "farthestFromTriangle", "overhang", "insideFacesLength", "alongEdgesLength");
+            "paperOutside", "farthestFromSurface", "creep", "farthestFromTriangle", "overhang", "insideFacesLength", "alongEdgesLength");
     private static final Set<String> AREAS = Set.of("surfaceArea", "paperArea", "paperOutsideArea", "triangleArea");
     private static final Set<String> ANGLES = Set.of("angle", "measuredAngle", "targetAngle", "angleSumDegrees",
             "minAngleInDegrees", "minAngleOutDegrees");

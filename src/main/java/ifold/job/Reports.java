@@ -191,6 +191,7 @@ public final class Reports {
         figures.put("paperOutside", analysis.outsidePaper());
         figures.put("farthestFromSurface", analysis.farthest());
         figures.put("isometryError", analysis.isometryError());
+        figures.put("creep", analysis.creep());
         Map<String, Object> creases = new LinkedHashMap<>();
         creases.put("insideFaces", analysis.creasesInside());
         creases.put("insideFacesLength", analysis.creaseLengthInside());

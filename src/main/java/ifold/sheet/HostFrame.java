@@ -18,8 +18,13 @@ import static ifold.geom.Vectors.unit;
  *     bend of a flat fold along it may stand out beyond it before it meets paper on the host
  *     across, as a slope: the distance beyond the edge over the height above this host (1 where
  *     nothing across limits it); null where nothing limits any edge (a table, a plane in space)
+ * @param mitre for each edge of the corners' polygon, where the surface across turns up towards
+ *     the paper (a concave edge) by φ, tan(φ/2): paper at height z above this host keeps z·tan(φ/2)
+ *     from the edge's line, on this side of the plane that halves the wedge of air above the edge
+ *     (the mitre), where the paper of the host across keeps to the other side; 0 elsewhere; null
+ *     where no edge is concave
  */
-public record HostFrame(double[] origin, double[] ex, double[] ey, double[] normal, double[] corners, double[] room) {
+public record HostFrame(double[] origin, double[] ex, double[] ey, double[] normal, double[] corners, double[] room, double[] mitre) {
 
     /*
      * A wrap's path triangle has a frame of its own: its exit edge from the origin along the x
@@ -46,15 +51,96 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
 
     /** A frame whose edges limit no bend. */
     public HostFrame(double[] origin, double[] ex, double[] ey, double[] normal, double[] corners) {
-        this(origin, ex, ey, normal, corners, null);
+        this(origin, ex, ey, normal, corners, null, null);
     }
 
-    /** This frame with {@code room} beyond its edges (see the record's description). */
-    public HostFrame withRoom(double[] room) {
-        if (room.length != corners.length / 2) {
-            throw new IllegalArgumentException("room for " + room.length + " edges, the polygon has " + corners.length / 2);
+    /** This frame with {@code room} beyond its edges and the {@code mitre} of each (see the record's description; either may be null). */
+    public HostFrame withEdges(double[] room, double[] mitre) {
+        if (room != null && room.length != corners.length / 2 || mitre != null && mitre.length != corners.length / 2) {
+            throw new IllegalArgumentException("edges given for " + (room != null ? room.length : mitre.length) + " edges, the polygon has "
+                    + corners.length / 2);
         }
-        return new HostFrame(origin, ex, ey, normal, corners, room);
+        return new HostFrame(origin, ex, ey, normal, corners, room, mitre);
+    }
+
+    /**
+     * Where paper at frame point (x, y) and {@code height} above this host lies once mitred at
+     * its concave edges ({@link #mitre}): moved in from each such edge's line to
+     * height·tan(φ/2) from it where it lies nearer ({@link #keepFrom}); into {@code out} (x, y).
+     * A layer of a stack that runs up to a concave edge would otherwise run into the layers of
+     * the host across. Where two concave edges meet at a corner sharper than 90 degrees a move
+     * off one can bring the point nearer the other, so the moves are made until none is needed
+     * (a few rounds).
+     *
+     * @return whether the point moved
+     */
+    public boolean mitred(double x, double y, double height, double[] out) {
+        out[0] = x;
+        out[1] = y;
+        if (mitre == null || height <= 0) {
+            return false;
+        }
+        int n = corners.length / 2;
+        boolean moved = false;
+        for (int round = 0; round < 4; round++) {
+            boolean again = false;
+            for (int k = 0; k < n; k++) {
+                if (mitre[k] > 0 && keepFrom(k, height * mitre[k], out)) {
+                    again = moved = true;
+                }
+            }
+            if (!again) {
+                break;
+            }
+        }
+        return moved;
+    }
+
+    /**
+     * Moves the frame point {@code point} (x, y) in from the line of edge k of the corners'
+     * polygon until it lies {@code keep} from it, where it lies nearer: straight in, or, where
+     * that would take it out across another edge (near a corner sharper than 90 degrees), along
+     * that edge's line, so that paper within the polygon stays within it.
+     *
+     * @return whether it moved
+     */
+    public boolean keepFrom(int k, double keep, double[] point) {
+        double[] edge = edge(k);
+        double nx = -edge[3] / edge[4]; // inwards: left of the edge, the polygon running counter-clockwise
+        double ny = edge[2] / edge[4];
+        double need = keep - ((point[0] - edge[0]) * nx + (point[1] - edge[1]) * ny);
+        if (!(need > keep * 1e-12)) {
+            return false;
+        }
+        double dx = nx;
+        double dy = ny;
+        double amount = need;
+        int n = corners.length / 2;
+        for (int j = 0; j < n; j++) {
+            double[] other = edge(j);
+            if (j == k || !(other[4] > 0)) {
+                continue;
+            }
+            double mx = -other[3] / other[4];
+            double my = other[2] / other[4];
+            double inside = (point[0] - other[0]) * mx + (point[1] - other[1]) * my;
+            double after = inside + amount * (dx * mx + dy * my);
+            if (after < Math.min(inside, 0)) {
+                // Along edge j's line, the way that leads in from edge k: edge j's own distance stays.
+                double tx = other[2] / other[4];
+                double ty = other[3] / other[4];
+                double towards = tx * nx + ty * ny;
+                if (Math.abs(towards) > 1e-3) {
+                    dx = Math.signum(towards) * tx;
+                    dy = Math.signum(towards) * ty;
+                    amount = need / Math.abs(towards);
+                }
+                break;
+            }
+        }
+        point[0] += amount * dx;
+        point[1] += amount * dy;
+        return true;
     }
 
     /**

@@ -36,9 +36,11 @@ final class BendRoom {
      */
     static HostFrame[] of(IndexedPolygons mesh, int[] hostOf, HostFrame[] frames, double tolerance) {
         double[][] room = new double[frames.length][];
+        double[][] mitre = new double[frames.length][];
         for (int h = 0; h < frames.length; h++) {
             room[h] = new double[frames[h].corners().length / 2];
             Arrays.fill(room[h], HostFrame.OPEN);
+            mitre[h] = new double[frames[h].corners().length / 2];
         }
         Map<Long, Integer> firstSide = new HashMap<>();
         for (int t = 0; t < mesh.faceCount(); t++) {
@@ -51,24 +53,29 @@ final class BendRoom {
                 if (other == null) {
                     firstSide.put(key, t);
                 } else if (hostOf[other] != hostOf[t]) {
-                    limit(mesh, u, v, other, t, hostOf, frames, room, tolerance);
-                    limit(mesh, u, v, t, other, hostOf, frames, room, tolerance);
+                    limit(mesh, u, v, other, t, hostOf, frames, room, mitre, tolerance);
+                    limit(mesh, u, v, t, other, hostOf, frames, room, mitre, tolerance);
                 }
             }
         }
         HostFrame[] limited = new HostFrame[frames.length];
         for (int h = 0; h < frames.length; h++) {
-            limited[h] = frames[h].withRoom(room[h]);
+            boolean concave = false;
+            for (double m : mitre[h]) {
+                concave |= m > 0;
+            }
+            limited[h] = frames[h].withEdges(room[h], concave ? mitre[h] : null);
         }
         return limited;
     }
 
     /** Limits the room of the edge of {@code near}'s host that mesh edge (u, v) lies along, by the turn to {@code far}'s host. */
     private static void limit(IndexedPolygons mesh, int u, int v, int near, int far, int[] hostOf, HostFrame[] frames,
-            double[][] room, double tolerance) {
+            double[][] room, double[][] mitre, double tolerance) {
         HostFrame frame = frames[hostOf[near]];
         double slope = slope(frame, frames[hostOf[far]], mesh, far, tolerance);
-        if (slope >= HostFrame.OPEN) {
+        double concave = slope >= HostFrame.OPEN ? concaveTurn(frame, frames[hostOf[far]], mesh, far, tolerance) : 0;
+        if (slope >= HostFrame.OPEN && concave <= 0) {
             return;
         }
         double[] a = position(mesh, u);
@@ -81,6 +88,7 @@ final class BendRoom {
         for (int k = 0; k < edges.length; k++) {
             if (frame.along(k, ax, ay, bx, by, tolerance)) {
                 edges[k] = Math.min(edges[k], slope);
+                mitre[hostOf[near]][k] = Math.max(mitre[hostOf[near]][k], concave);
             }
         }
     }
@@ -106,6 +114,25 @@ final class BendRoom {
         double[] m = across.normal();
         double cos = Math.max(-1, Math.min(1, n[0] * m[0] + n[1] * m[1] + n[2] * m[2]));
         return Math.min(HostFrame.OPEN, Math.sqrt((1 - cos) / (1 + cos)));
+    }
+
+    /**
+     * Where triangle {@code far} of the host framed by {@code across} rises above {@code near}'s
+     * plane (a concave edge, turning up by φ), tan(φ/2): the mitre halving the wedge of air
+     * between the two; 0 where it does not rise.
+     */
+    private static double concaveTurn(HostFrame near, HostFrame across, IndexedPolygons mesh, int far, double tolerance) {
+        boolean rises = false;
+        for (int k = 0; k < mesh.faceSize(far); k++) {
+            rises |= near.height(position(mesh, mesh.faceVertex(far, k))) > tolerance;
+        }
+        if (!rises) {
+            return 0;
+        }
+        double[] n = near.normal();
+        double[] m = across.normal();
+        double cos = Math.max(-1, Math.min(1, n[0] * m[0] + n[1] * m[1] + n[2] * m[2]));
+        return Math.sqrt((1 - cos) / Math.max(1 + cos, 1e-12));
     }
 
     private static double[] position(IndexedPolygons mesh, int v) {

@@ -25,7 +25,9 @@ import java.util.concurrent.Future;
  * @param paperArea the area of all strips, Σ L·w
  * @param outsidePaper the largest distance of any paper vertex beyond the triangle it rests on
  * @param farthest the largest height of any paper above the surface
- * @param isometryError the largest difference between a face's distances in space and on the sheet, relative to its size (or the strip width)
+ * @param isometryError the largest difference between a face's distances in space and on the sheet, relative to its size (or the strip width),
+ *     the paper as laid, before its creases creep at concave edges
+ * @param creep the farthest a paper vertex stands back from where the paper was laid, at a concave edge of the model ({@link ConcaveWalls})
  * @param creasesInside creases lying inside the model's faces: count
  * @param creaseLengthInside and their length
  * @param creasesOnEdges creases along the model's edges: count
@@ -33,7 +35,7 @@ import java.util.concurrent.Future;
  * @param deepest where the layers are most, and where they come from; null without paper
  */
 public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, double surfaceArea, double paperArea,
-        double outsidePaper, double farthest, double isometryError, int creasesInside, double creaseLengthInside,
+        double outsidePaper, double farthest, double isometryError, double creep, int creasesInside, double creaseLengthInside,
         int creasesOnEdges, double creaseLengthOnEdges, Deepest deepest) {
 
     /**
@@ -176,14 +178,16 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
                 cancel(); // none left running where one failed
             }
             double isometry = 0;
+            double creep = 0;
             for (WrapGeometry geometry : geometries) {
                 isometry = Math.max(isometry, isometryError(geometry, result.width()));
+                creep = Math.max(creep, geometry.creep().most(geometry));
             }
             Deepest deepest = deepestStrip < 0 ? null
                     : deepest(result.strips().get(deepestStrip).sheet(), deepestStrip, deepestTriangle, deepestPoint,
                             result.hostOf()[deepestTriangle], frames[result.hostOf()[deepestTriangle]]);
             return new WrapAnalysis(maxLayers, stackLevels, surface > 0 ? covered / surface : 0, surface, paper, outside, farthest,
-                    isometry, inside, insideLength, onEdges, onEdgesLength, deepest);
+                    isometry, creep, inside, insideLength, onEdges, onEdgesLength, deepest);
         }
     }
 
@@ -486,14 +490,19 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
 
     /**
      * The largest difference between a paper face's distances in space and on the sheet,
-     * relative to the face's size, or to the strip's width for faces smaller than it: a paper
+     * relative to the face's size, or to the strip's width for faces smaller than it, the paper
+     * as laid (before its creases creep at concave edges, {@link WrapGeometry.Creep}): a paper
      * coordinate u on a strip of length L is a double good to about 1e-16 L, so a sliver far
      * along a long strip cannot be exact to 1e-9 of its own size.
      */
     public static double isometryError(WrapGeometry geometry, double width) {
         double worst = 0;
-        double[] xyz = geometry.xyz();
+        // The paper as laid, before its creases creep at concave edges (a creep is measured on its
+        // own): a crept vertex is taken where it was, looked up among the few that crept.
+        WrapGeometry.Creep creep = geometry.creep();
         double[] uv = geometry.uv();
+        double[] pa = new double[3];
+        double[] pb = new double[3];
         for (int[] face : geometry.paperFaces()) {
             double size = width;
             for (int i = 0; i < face.length; i++) {
@@ -505,8 +514,9 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
                 for (int j = i + 1; j < face.length; j++) {
                     int a = face[i];
                     int b = face[j];
-                    double space = Math.sqrt(Math.pow(xyz[3 * a] - xyz[3 * b], 2) + Math.pow(xyz[3 * a + 1] - xyz[3 * b + 1], 2)
-                            + Math.pow(xyz[3 * a + 2] - xyz[3 * b + 2], 2));
+                    creep.laid(geometry, a, pa);
+                    creep.laid(geometry, b, pb);
+                    double space = Math.sqrt(Math.pow(pa[0] - pb[0], 2) + Math.pow(pa[1] - pb[1], 2) + Math.pow(pa[2] - pb[2], 2));
                     double sheet = Math.hypot(uv[2 * a] - uv[2 * b], uv[2 * a + 1] - uv[2 * b + 1]);
                     worst = Math.max(worst, Math.abs(space - sheet) / size);
                 }

@@ -32,11 +32,50 @@ import java.util.List;
  * @param paperHosts the triangle each paper face rests on
  * @param caps the cap facets
  * @param capAfter for each cap, the later of the two faces it joins (index in paperFaces): it exists from then on
+ * @param creep the paper vertices that stand back from a concave edge, and where they stood
  */
-public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, int[] paperHosts, List<int[]> caps, int[] capAfter) {
+public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, int[] paperHosts, List<int[]> caps, int[] capAfter,
+        Creep creep) {
+
+    /** Paper that stands where it was laid: nothing creeps. */
+    public WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, int[] paperHosts, List<int[]> caps, int[] capAfter) {
+        this(xyz, uv, paperFaces, paperHosts, caps, capAfter, Creep.NONE);
+    }
 
     public int vertexCount() {
         return uv.length / 2;
+    }
+
+    /**
+     * Paper vertices moved in from a concave edge of their host ({@link ConcaveWalls}): thick
+     * layers that ran up to the edge would run into the layers of the host across. The sheet is
+     * folded without thickness; these are where the layers' creases creep once it has some.
+     *
+     * @param vertices the vertices moved, in increasing order
+     * @param from x, y, z of each where the paper of no creep puts it: on its layer over the
+     *     sheet's crease
+     */
+    public record Creep(int[] vertices, double[] from) {
+        public static final Creep NONE = new Creep(new int[0], new double[0]);
+
+        /** Where {@code geometry}'s vertex v lies without creep, into {@code out}: its own place, or where it was before it crept. */
+        public double[] laid(WrapGeometry geometry, int v, double[] out) {
+            int k = vertices.length == 0 ? -1 : java.util.Arrays.binarySearch(vertices, v);
+            System.arraycopy(k >= 0 ? from : geometry.xyz(), 3 * (k >= 0 ? k : v), out, 0, 3);
+            return out;
+        }
+
+        /** The farthest any vertex of {@code geometry} crept. */
+        public double most(WrapGeometry geometry) {
+            double most = 0;
+            double[] xyz = geometry.xyz();
+            for (int k = 0; k < vertices.length; k++) {
+                int v = vertices[k];
+                most = Math.max(most, Math.sqrt(Math.pow(xyz[3 * v] - from[3 * k], 2) + Math.pow(xyz[3 * v + 1] - from[3 * k + 1], 2)
+                        + Math.pow(xyz[3 * v + 2] - from[3 * k + 2], 2)));
+            }
+            return most;
+        }
     }
 
     /** The strip placed in space. */
@@ -65,6 +104,12 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
         /** The triangle and level each space vertex was made for (caps' middle rows: -1). */
         private int[] copyHost = new int[64];
         private int[] copyLevel = new int[64];
+        /** Where paper ends at the concave edges of its host. */
+        private ConcaveWalls walls;
+        /** The vertices made moved in from a concave edge (in the order made, so increasing), and where the paper put them. */
+        private int[] creptVertices = new int[0];
+        private double[] creptFrom = new double[0];
+        private int creptCount;
 
         Builder(Sheet sheet, HostFrame[] frames) {
             this.sheet = sheet;
@@ -83,6 +128,28 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
 
         WrapGeometry build() {
             int faces = sheet.faceCount();
+            // Flat folds first, from the sheet alone (two faces across a paper edge on one host at
+            // two levels): how far each bend stands out depends on the folds nested about its
+            // crease line (NestedBends), and where one lies along a concave edge of its host, the
+            // paper of its layers ends on its wall (ConcaveWalls), which places the vertices.
+            List<NestedBends.Bend> bends = new ArrayList<>();
+            List<int[]> bendEdges = new ArrayList<>();
+            for (int f = 0; f < faces; f++) {
+                int[] loop = sheet.loop(f);
+                for (int i = 0; i < loop.length; i++) {
+                    int a = loop[i];
+                    int b = loop[(i + 1) % loop.length];
+                    int g = sheet.faceAcross(a, b);
+                    if (g > f && sheet.host(f) == sheet.host(g) && levels[f] != levels[g]) {
+                        bends.add(bend(f, g, a, b));
+                        bendEdges.add(new int[] {f, i, g, a, b});
+                    }
+                }
+            }
+            NestedBends nested = NestedBends.of(bends, sheet.thickness() * NEST_TOLERANCE);
+            int[] ranks = nested.ranks();
+            walls = ConcaveWalls.of(bends, ranks, frames, sheet.thickness(), sheet.tolerance());
+
             List<int[]> paper = new ArrayList<>(faces);
             int[] hosts = new int[faces];
             int[][] corners = new int[faces][];
@@ -98,18 +165,14 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
             }
             List<int[]> caps = new ArrayList<>();
             List<Integer> capAfter = new ArrayList<>();
-            // Flat folds wait until every one is known: how far each bend stands out depends on
-            // the folds nested about its crease line (NestedBends).
-            List<NestedBends.Bend> bends = new ArrayList<>();
-            List<int[]> bendCorners = new ArrayList<>();
             for (int f = 0; f < faces; f++) {
                 int[] loop = sheet.loop(f);
                 for (int i = 0; i < loop.length; i++) {
                     int a = loop[i];
                     int b = loop[(i + 1) % loop.length];
                     int g = sheet.faceAcross(a, b);
-                    if (g <= f) {
-                        continue; // the border, or the pair seen from g already
+                    if (g <= f || sheet.host(f) == sheet.host(g) && levels[f] != levels[g]) {
+                        continue; // the border, the pair seen from g already, or a bend (below)
                     }
                     int fa = corners[f][i];
                     int fb = corners[f][(i + 1) % loop.length];
@@ -118,17 +181,21 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     if ((fa == ga || samePlace(fa, ga)) && (fb == gb || samePlace(fb, gb))) {
                         continue; // the paper runs on flat, or bends over an edge with no thickness
                     }
-                    if (sheet.host(f) != sheet.host(g)) {
-                        caps.add(new int[] {fa, fb, gb, ga});
-                        capAfter.add(g);
-                        continue;
-                    }
-                    bends.add(bend(f, g, a, b));
-                    bendCorners.add(new int[] {f, g, a, b, fa, fb, ga, gb});
+                    caps.add(new int[] {fa, fb, gb, ga});
+                    capAfter.add(g);
                 }
             }
-            NestedBends nested = NestedBends.of(bends, sheet.thickness() * NEST_TOLERANCE);
-            int[] ranks = nested.ranks();
+            List<int[]> bendCorners = new ArrayList<>();
+            for (int[] edge : bendEdges) {
+                int f = edge[0];
+                int i = edge[1];
+                int g = edge[2];
+                int a = edge[3];
+                int b = edge[4];
+                int length = sheet.loop(f).length;
+                bendCorners.add(new int[] {f, g, a, b, corners[f][i], corners[f][(i + 1) % length], cornerOf(g, a, corners[g]),
+                        cornerOf(g, b, corners[g])});
+            }
             double[] outs = new double[bends.size()];
             double[] slopes = new double[bends.size()];
             for (int k = 0; k < bends.size(); k++) {
@@ -137,8 +204,8 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 // is narrow: the lower side then leans out at the room's slope s, and a bend of
                 // rank r (its layers at least 2r + 1 apart) keeps a wall between its two sides:
                 // r·step·(1/s + 1) <= 2r·T.
-                if (ranks[k] == 0) {
-                    continue; // on its crease whatever the room
+                if (ranks[k] == 0 || walls.along(k)) {
+                    continue; // on its crease whatever the room, or on its wall at a concave edge
                 }
                 HostFrame frame = frames[bend.host()];
                 slopes[k] = frame.roomBeyond(bend.ax(), bend.ay(), bend.bx(), bend.by(), sheet.tolerance());
@@ -149,12 +216,16 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
             }
             nested.keepNested(outs);
             double[] past = nested.mitres(outs);
+
             for (int k = 0; k < bends.size(); k++) {
                 int[] c = bendCorners.get(k);
                 int f = c[0];
                 int g = c[1];
                 NestedBends.Bend bend = bends.get(k);
                 double out = outs[k];
+                if ((c[4] == c[6] || samePlace(c[4], c[6])) && (c[5] == c[7] || samePlace(c[5], c[7]))) {
+                    continue; // paper of no thickness folded flat: nothing to bridge
+                }
                 if (out == 0) {
                     caps.add(new int[] {c[4], c[5], c[7], c[6]});
                     capAfter.add(g);
@@ -175,8 +246,10 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 capAfter.add(g);
                 capAfter.add(g);
             }
+            Creep creep = creptCount == 0 ? Creep.NONE
+                    : new Creep(java.util.Arrays.copyOf(creptVertices, creptCount), java.util.Arrays.copyOf(creptFrom, 3 * creptCount));
             return new WrapGeometry(java.util.Arrays.copyOf(xyz, 3 * vertices), java.util.Arrays.copyOf(uv, 2 * vertices), paper,
-                    hosts, caps, capAfter.stream().mapToInt(Integer::intValue).toArray());
+                    hosts, caps, capAfter.stream().mapToInt(Integer::intValue).toArray(), creep);
         }
 
         private int cornerOf(int g, int paperVertex, int[] placed) {
@@ -203,8 +276,13 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
             Isometry2 pose = sheet.pose(f);
             HostFrame frame = frames[sheet.host(f)];
             double[] point = new double[3];
-            frame.toSpace(pose.x(sheet.u(p), sheet.v(p)), pose.y(sheet.u(p), sheet.v(p)), height(f), point, 0);
+            double[] xy = new double[2];
             int host = sheet.host(f);
+            double x = pose.x(sheet.u(p), sheet.v(p));
+            double y = pose.y(sheet.u(p), sheet.v(p));
+            walls.place(host, frame, x, y, height(f), xy);
+            boolean crept = xy[0] != x || xy[1] != y;
+            frame.toSpace(xy[0], xy[1], height(f), point, 0);
             for (int copy : copies.get(p)) {
                 if (copyHost[copy] == host && copyLevel[copy] == levels[f] && closer(copy, point, exact)) {
                     return copy;
@@ -224,6 +302,15 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
             }
             copyHost[v] = host;
             copyLevel[v] = levels[f];
+            if (crept) {
+                if (creptCount == creptVertices.length) {
+                    creptVertices = java.util.Arrays.copyOf(creptVertices, 2 * creptCount + 8);
+                    creptFrom = java.util.Arrays.copyOf(creptFrom, 3 * creptVertices.length);
+                }
+                creptVertices[creptCount] = v;
+                frame.toSpace(x, y, height(f), creptFrom, 3 * creptCount);
+                creptCount++;
+            }
             int[] list = copies.get(p);
             int[] longer = java.util.Arrays.copyOf(list, list.length + 1);
             longer[list.length] = v;
@@ -265,7 +352,9 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
             double px = pose.x(sheet.u(p), sheet.v(p)) + bend.nx() * out + (bend.bx() - bend.ax()) / length * along;
             double py = pose.y(sheet.u(p), sheet.v(p)) + bend.ny() * out + (bend.by() - bend.ay()) / length * along;
             double[] point = new double[3];
-            frames[sheet.host(f)].toSpace(px, py, height, point, 0);
+            double[] xy = new double[2];
+            walls.place(sheet.host(f), frames[sheet.host(f)], px, py, height, xy);
+            frames[sheet.host(f)].toSpace(xy[0], xy[1], height, point, 0);
             int v = add(point, sheet.u(p), sheet.v(p));
             if (v >= copyHost.length) {
                 copyHost = java.util.Arrays.copyOf(copyHost, 2 * v + 2);

@@ -471,7 +471,8 @@ class MainWindowTest {
         assertTrue(pixelsOf(path, 0x00A030, 60) > 50 && pixelsOf(plain, 0x00A030, 60) < 10,
                 "the path's tree edges in green, where the plain model has none");
         // View > Collisions: the faces of paper that cross, in red, seen through the paper. The
-        // cube's paper crosses nothing; the L-prism's, at its concave edge, does.
+        // cube's paper crosses nothing; the L-prism's, at bends by its concave edge, does (in 9
+        // pairs since its layers stand back to their mitres there: 851 before, 300 more pixels).
         onEdt(() -> {
             menuItem(window, "2  lprism.off").doClick();
             return null;
@@ -496,7 +497,7 @@ class MainWindowTest {
         });
         assertTrue(window.view.awaitFrame(30_000));
         int without = pixelsOf(window.view.picture(), 0xE0262B, 40);
-        assertTrue(red > without + 300, "red where paper collides (at the concave edge): " + red + " pixels, " + without + " without");
+        assertTrue(red > without + 40, "red where paper collides (at the concave edge): " + red + " pixels, " + without + " without");
         onEdt(() -> {
             window.parameters.wrapWidth.setText("0.1");
             return null;

@@ -31,7 +31,7 @@ import org.junit.jupiter.params.provider.ValueSource;
  * ({@link WrapTruths}): one strip per component tiling its rectangle, never stretched, not torn,
  * covering the model, flat on the surface and outside it; and that the report agrees with the file.
  */
-class WrapTest {
+public class WrapTest {
     @TempDir
     Path dir;
 
@@ -273,7 +273,7 @@ class WrapTest {
     }
 
     /** A prism 0.7 high on an L of three unit squares: two non-convex hexagons and six quads. */
-    static PolygonSoup lPrism() {
+    public static PolygonSoup lPrism() {
         double[][] l = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
         PolygonSoup soup = new PolygonSoup();
         for (double z : new double[] {0, 0.7}) {

@@ -21,10 +21,17 @@ import java.util.SplittableRandom;
  * <ol>
  * <li>{@link #TILED}: each strip's paper faces tile its rectangle once, and the strip is one piece
  * in space;</li>
- * <li>{@link #ISOMETRIC}: each paper face is planar and congruent to its sheet polygon;</li>
+ * <li>{@link #ISOMETRIC}: each paper face is planar and congruent to its sheet polygon; but thick
+ * paper at a concave edge of the model (where the surface across rises towards the paper) may
+ * stand back from it, as real layers must there: a corner within the creep zone of such an edge
+ * (at most (maxStack + 1)·T·(tan(φ/2) + 1) in from its line, φ the edge's turn) is held to its
+ * sheet distances only to within that much, and it must lie no nearer the edge than its mitre,
+ * its height times tan(φ/2) in from it (the plane halving the wedge of air above the edge,
+ * which the layers of the face across keep to from the other side);</li>
  * <li>{@link #NOT_TORN}: faces that are neighbours on the sheet are neighbours in space (or
  * joined by a cap across at most a few thicknesses);</li>
- * <li>{@link #COVERED}: random points of the model lie under paper;</li>
+ * <li>{@link #COVERED}: random points of the model lie under paper (but within the creep zone
+ * of a concave edge, truth 2, where thick paper stands back from the edge);</li>
  * <li>{@link #ON_SURFACE}: every paper face lies flat on the model, outside the solid and at most
  * (maxStack + 1) thicknesses above it: on one model triangle, or over triangles of one plane that
  * cover all of it (the strip lies flat across the edges between coplanar triangles); every cap
@@ -336,9 +343,10 @@ public final class WrapTruths {
         double top = (maxStack + 1) * thickness;
         Faces geometry = new Faces(eps, model.size);
         checkStripsAreTiledOnce(report, eps);
-        checkIsometry(report);
+        List<ConcaveSide> concave = concaveSides(model, eps);
+        checkIsometry(report, concave, thickness, maxStack, eps);
         checkNotTorn(report, eps, 2 * top);
-        checkCovered(report, model, geometry, eps, top, coverageSamples, seed);
+        checkCovered(report, model, geometry, eps, top, coverageSamples, seed, thickness > 0 ? concave : List.of());
         checkOnSurface(report, model, geometry, eps, top);
         return report.finish();
     }
@@ -568,17 +576,162 @@ public final class WrapTruths {
 
     // ---- Truth 2 ----
 
-    private void checkIsometry(Report report) {
+    /**
+     * One side of a concave edge of the model: the edge from a to b on a triangle of outward unit
+     * {@code normal}, whose neighbour across rises above its plane, turning by φ; {@code mitre}
+     * is tan(φ/2).
+     */
+    private record ConcaveSide(double[] normal, double[] a, double[] b, double mitre) {
+    }
+
+    /** Every side of every concave edge of the model: edges are matched by their corners' coordinates. */
+    private static List<ConcaveSide> concaveSides(Model model, double eps) {
+        int n = model.corners.length / 9;
+        Map<String, int[]> sides = new HashMap<>();
+        List<ConcaveSide> concave = new ArrayList<>();
+        for (int t = 0; t < n; t++) {
+            for (int k = 0; k < 3; k++) {
+                double[] a = Arrays.copyOfRange(model.corners, 9 * t + 3 * k, 9 * t + 3 * k + 3);
+                double[] b = Arrays.copyOfRange(model.corners, 9 * t + 3 * ((k + 1) % 3), 9 * t + 3 * ((k + 1) % 3) + 3);
+                String ab = Arrays.toString(a) + Arrays.toString(b);
+                String ba = Arrays.toString(b) + Arrays.toString(a);
+                int[] other = sides.remove(ba);
+                if (other == null) {
+                    sides.put(ab, new int[] {t, k});
+                    continue;
+                }
+                for (int[] side : List.of(new int[] {t, k}, other)) {
+                    int near = side[0];
+                    int far = side == other ? t : other[0];
+                    double rise = 0;
+                    for (int c = 0; c < 3; c++) {
+                        rise = Math.max(rise, model.height(near, model.corners, 9 * far + 3 * c));
+                    }
+                    if (rise > eps) {
+                        double[] m = model.normal(near);
+                        double[] o = model.normal(far);
+                        double cos = Math.max(-1, Math.min(1, m[0] * o[0] + m[1] * o[1] + m[2] * o[2]));
+                        double[] p = Arrays.copyOfRange(model.corners, 9 * near + 3 * side[1], 9 * near + 3 * side[1] + 3);
+                        double[] q = Arrays.copyOfRange(model.corners, 9 * near + 3 * ((side[1] + 1) % 3), 9 * near + 3 * ((side[1] + 1) % 3) + 3);
+                        concave.add(new ConcaveSide(m, p, q, Math.sqrt((1 - cos) / Math.max(1 + cos, 1e-12))));
+                    }
+                }
+            }
+        }
+        return concave;
+    }
+
+    private void checkIsometry(Report report, List<ConcaveSide> concave, double thickness, int maxStack, double eps) {
         StringBuilder why = new StringBuilder();
         for (int f = 0; f < faces(); f++) {
             if (!faceCap[f]) {
                 why.setLength(0);
                 double error = isometryError(f, why);
-                if (!(error <= RELATIVE)) {
+                Zones zones = thickness > 0 && !concave.isEmpty() ? zones(f, concave, thickness, maxStack, eps) : null;
+                if (zones != null && zones.nearer() != null) {
+                    report.add(ISOMETRIC, face(f) + ": " + zones.nearer());
+                }
+                if (!(error <= RELATIVE) && !(zones != null && creptOnly(f, zones))) {
                     report.add(ISOMETRIC, face(f) + " is stretched: " + why);
                 }
             }
         }
+    }
+
+    /**
+     * Where face f lies by the concave edges of the model: which corners lie in a creep zone
+     * ({@code inZone}), the widest such zone, and the first corner nearer a concave edge than
+     * its mitre on every plane of a concave side the face lies on (null if none). The face lies
+     * on the plane of a side when all its corners stand equally high above it (a face squashed
+     * to a sliver may lie on both sides' planes, and must keep to its mitre on one).
+     */
+    private record Zones(boolean[] inZone, double widest, String nearer) {
+    }
+
+    private Zones zones(int f, List<ConcaveSide> concave, double thickness, int maxStack, double eps) {
+        int start = faceStart[f];
+        int end = faceStart[f + 1];
+        double size = Math.max(sheetSize(f), stripW[faceStrip[f]]);
+        double top = (maxStack + 1) * thickness;
+        boolean[] inZone = new boolean[end - start];
+        double widest = 0;
+        String nearer = null;
+        boolean mitredOnSomePlane = false;
+        for (ConcaveSide side : concave) {
+            double[] m = side.normal();
+            double width = top * (side.mitre() + 1);
+            double[] along = minus(side.b(), side.a());
+            double length = Math.sqrt(times(along, along));
+            for (int d = 0; d < 3; d++) {
+                along[d] /= length;
+            }
+            double[] in = crossed(m, along); // in the plane, from the edge into the triangle
+            double low = Double.POSITIVE_INFINITY;
+            double high = Double.NEGATIVE_INFINITY;
+            boolean near = false;
+            for (int c = start; c < end; c++) {
+                double[] p = minus(new double[] {xyz[3 * cornerV[c]], xyz[3 * cornerV[c] + 1], xyz[3 * cornerV[c] + 2]}, side.a());
+                double height = times(p, m);
+                low = Math.min(low, height);
+                high = Math.max(high, height);
+                double s = times(p, along);
+                double inside = times(p, in);
+                near |= s >= -width && s <= length + width && inside <= width && inside >= -width;
+            }
+            if (!near || high - low > RELATIVE * size + eps || low < -eps || high > top + eps) {
+                continue; // not on this side's plane (so not planar there), or not near its edge
+            }
+            String here = null;
+            for (int c = start; c < end; c++) {
+                int v = cornerV[c];
+                double[] p = minus(new double[] {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]}, side.a());
+                double s = times(p, along);
+                double inside = times(p, in);
+                if (s < -width || s > length + width || inside > width || inside < -width) {
+                    continue;
+                }
+                inZone[c - start] = true;
+                widest = Math.max(widest, width);
+                double height = times(p, m);
+                if (here == null && inside < height * side.mitre() - eps - 1e-6 * thickness) {
+                    here = "vertex " + (v + 1) + " is " + inside + " in from a concave edge of the model, nearer than its mitre ("
+                            + height + " high: " + height * side.mitre() + " in), running into the layers across";
+                }
+            }
+            if (here == null) {
+                mitredOnSomePlane = true;
+            } else if (nearer == null) {
+                nearer = here;
+            }
+        }
+        return new Zones(inZone, widest, mitredOnSomePlane ? null : nearer);
+    }
+
+    /**
+     * Whether face f, not congruent to its sheet polygon, is so only by corners standing back from
+     * a concave edge: planar (its corners stand equally high above a concave side's plane, see
+     * {@link #zones}, which holds for a face squashed to a sliver too, whose own normal is
+     * rounding), its corners outside every creep zone congruent among themselves, and each pair
+     * with a corner in a zone off its sheet distance by no more than twice the widest zone.
+     */
+    private boolean creptOnly(int f, Zones zones) {
+        if (zones.widest() == 0) {
+            return false;
+        }
+        int start = faceStart[f];
+        int end = faceStart[f + 1];
+        double size = Math.max(sheetSize(f), stripW[faceStrip[f]]);
+        for (int a = start; a < end; a++) {
+            for (int b = a + 1; b < end; b++) {
+                double inSpace = distance(xyz, 3 * cornerV[a], xyz, 3 * cornerV[b]);
+                double onSheet = Math.hypot(uv[2 * cornerT[a]] - uv[2 * cornerT[b]], uv[2 * cornerT[a] + 1] - uv[2 * cornerT[b] + 1]);
+                boolean zone = zones.inZone()[a - start] || zones.inZone()[b - start];
+                if (!(Math.abs(inSpace - onSheet) <= (zone ? 2 * zones.widest() + RELATIVE * size : RELATIVE * size))) {
+                    return false;
+                }
+            }
+        }
+        return true;
     }
 
     /**
@@ -624,6 +777,18 @@ public final class WrapTruths {
             }
         }
         return worst;
+    }
+
+    private static double[] minus(double[] a, double[] b) {
+        return new double[] {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+    }
+
+    private static double times(double[] a, double[] b) {
+        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    }
+
+    private static double[] crossed(double[] a, double[] b) {
+        return new double[] {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
     }
 
     // ---- Truth 3 ----
@@ -766,6 +931,16 @@ public final class WrapTruths {
     private void toSpace(int f, double u, double v, double[] out) {
         int start = faceStart[f];
         int end = faceStart[f + 1];
+        // A corner is where the face puts it: a face whose corners stand back from a concave edge
+        // (truth 2) is not the rigid image of its sheet polygon, and the map below, through three
+        // corners, would move the others.
+        double near = RELATIVE * Math.max(sheetSize(f), stripW[faceStrip[f]]);
+        for (int c = start; c < end; c++) {
+            if (Math.hypot(uv[2 * cornerT[c]] - u, uv[2 * cornerT[c] + 1] - v) <= near) {
+                System.arraycopy(xyz, 3 * cornerV[c], out, 0, 3);
+                return;
+            }
+        }
         // The best-shaped corner triangle: the corner farthest from the first, then the one farthest from their line.
         int c0 = start;
         int c1 = start + 1;
@@ -840,7 +1015,76 @@ public final class WrapTruths {
 
     // ---- Truth 4 ----
 
-    private void checkCovered(Report report, Model model, Faces geometry, double eps, double top, int samples, long seed) {
+    /**
+     * Whether model point p, on a triangle of outward normal n, lies within the creep zone of a
+     * concave edge: thick layers stand back from such an edge (truth 2), and the surface next to
+     * it lies under the paper across, not under paper on its own plane.
+     */
+    private static boolean inCreepZone(double[] p, double[] n, List<ConcaveSide> concave, double top, double eps) {
+        for (ConcaveSide side : concave) {
+            double[] m = side.normal();
+            if (times(m, n) < 1 - 1e-9) {
+                continue;
+            }
+            double width = top * (side.mitre() + 1);
+            double[] along = minus(side.b(), side.a());
+            double length = Math.sqrt(times(along, along));
+            for (int d = 0; d < 3; d++) {
+                along[d] /= length;
+            }
+            double[] q = minus(p, side.a());
+            double s = times(q, along);
+            double inside = times(q, crossed(m, along));
+            if (Math.abs(times(q, m)) <= eps && s >= -width && s <= length + width && inside >= -eps && inside <= width) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * Whether model point p, on a triangle of outward normal n, lies within the widest creep zone
+     * of the model's concave edges of paper on its plane: where layers joined at a crease creep
+     * by different amounts, the crease opens a sliver no wider than that, which can run from the
+     * edge along the crease; a gap any wider is a hole.
+     */
+    private static boolean nearPaper(double[] p, double[] n, Faces geometry, List<ConcaveSide> concave, double top, double eps,
+            Ints candidates) {
+        double widest = 0;
+        for (ConcaveSide side : concave) {
+            widest = Math.max(widest, top * (side.mitre() + 1));
+        }
+        if (widest == 0) {
+            return false;
+        }
+        double reach = top + eps;
+        double around = widest + eps;
+        geometry.grid.query(Math.min(p[0], p[0] + reach * n[0]) - around, Math.min(p[1], p[1] + reach * n[1]) - around,
+                Math.min(p[2], p[2] + reach * n[2]) - around, Math.max(p[0], p[0] + reach * n[0]) + around,
+                Math.max(p[1], p[1] + reach * n[1]) + around, Math.max(p[2], p[2] + reach * n[2]) + around, candidates);
+        double[] q = new double[3];
+        for (int k = 0; k < candidates.size(); k++) {
+            int f = geometry.paper[candidates.get(k)];
+            if (!parallel(geometry.normal(f), n)) {
+                continue;
+            }
+            double[] centre = geometry.centre(f);
+            double height = n[0] * (centre[0] - p[0]) + n[1] * (centre[1] - p[1]) + n[2] * (centre[2] - p[2]);
+            if (height < -eps || height > top + eps) {
+                continue;
+            }
+            for (int d = 0; d < 3; d++) {
+                q[d] = p[d] + height * n[d];
+            }
+            if (geometry.spaceDepth(f, q) >= -widest - eps) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private void checkCovered(Report report, Model model, Faces geometry, double eps, double top, int samples, long seed,
+            List<ConcaveSide> concave) {
         SplittableRandom random = new SplittableRandom(seed);
         double[] p = new double[3];
         double[] q = new double[3];
@@ -876,7 +1120,7 @@ public final class WrapTruths {
                 }
                 covered = geometry.spaceDepth(f, q) >= -eps;
             }
-            if (!covered) {
+            if (!covered && !inCreepZone(p, n, concave, top, eps) && !nearPaper(p, n, geometry, concave, top, eps, candidates)) {
                 uncovered++;
                 report.add(COVERED, "model point " + point(p) + " of triangle " + (t + 1) + " lies under no paper face");
             }
@@ -901,7 +1145,7 @@ public final class WrapTruths {
             boolean rests = false;
             for (int k = 0; k < candidates.size() && !rests; k++) {
                 int t = candidates.get(k);
-                if (!parallel(geometry.normal(f), model.normal(t))) {
+                if (!parallel(geometry.normal(f), model.normal(t)) && !(squashed(f) && equallyHigh(f, model, t, eps))) {
                     continue;
                 }
                 parallels++;
@@ -1179,6 +1423,39 @@ public final class WrapTruths {
     }
 
     /** Face f's unit normal in space by the right-hand rule of its corners (Newell's sum, for any planar polygon). */
+    /**
+     * Whether face f is squashed in space to far less than its area on the sheet: crept to a
+     * sliver at a concave edge (truth 2 holds such a face to its creep zone), its own normal
+     * rounding.
+     */
+    private boolean squashed(int f) {
+        double[] n = new double[3];
+        int o = 3 * cornerV[faceStart[f]];
+        for (int c = faceStart[f] + 1; c + 1 < faceStart[f + 1]; c++) {
+            int i = 3 * cornerV[c];
+            int j = 3 * cornerV[c + 1];
+            double[] e1 = {xyz[i] - xyz[o], xyz[i + 1] - xyz[o + 1], xyz[i + 2] - xyz[o + 2]};
+            double[] e2 = {xyz[j] - xyz[o], xyz[j + 1] - xyz[o + 1], xyz[j + 2] - xyz[o + 2]};
+            double[] x = crossed(e1, e2);
+            for (int d = 0; d < 3; d++) {
+                n[d] += x[d];
+            }
+        }
+        return Math.sqrt(times(n, n)) / 2 < 1e-3 * Math.abs(sheetArea(f));
+    }
+
+    /** Whether every corner of face f stands equally high above model triangle t's plane. */
+    private boolean equallyHigh(int f, Model model, int t, double eps) {
+        double low = Double.POSITIVE_INFINITY;
+        double high = Double.NEGATIVE_INFINITY;
+        for (int c = faceStart[f]; c < faceStart[f + 1]; c++) {
+            double height = model.height(t, xyz, 3 * cornerV[c]);
+            low = Math.min(low, height);
+            high = Math.max(high, height);
+        }
+        return high - low <= eps;
+    }
+
     private double[] newellNormal(int f) {
         double[] n = new double[3];
         for (int c = faceStart[f]; c < faceStart[f + 1]; c++) {
