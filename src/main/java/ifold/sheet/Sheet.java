@@ -1805,6 +1805,7 @@ public final class Sheet {
 
     /** Where faces f and g, as placed, overlap (a convex polygon), or null where they do not beyond the tolerance. */
     private double[] overlapOf(int f, int g) {
+        polygonTests++;
         double[] common = placedCached(f);
         double[] other = placedCached(g);
         int n = other.length / 2;
@@ -1829,6 +1830,7 @@ public final class Sheet {
 
     /** Whether the points {@code inner} (x y x y ...) lie inside the convex polygon {@code outer}, either way round. */
     private boolean containsPoints(double[] outer, double[] inner) {
+        polygonTests++;
         int n = outer.length / 2;
         double orientation = Math.signum(Polygons2.twiceArea(outer, n));
         for (int i = 0; i < n; i++) {
@@ -1846,7 +1848,19 @@ public final class Sheet {
         return true;
     }
 
+    /** How many polygon tests (overlap, where two overlap, containment) the sheet has made. */
+    private long polygonTests;
+
+    /**
+     * How many tests of one face's polygon against another's the sheet has made since it was
+     * made: the costly part of folding, which tests and benchmarks watch grow with the folds.
+     */
+    public long polygonTests() {
+        return polygonTests;
+    }
+
     private boolean overlap(int f, int g) {
+        polygonTests++;
         double[] a = placedCached(f);
         double[] b = placedCached(g);
         // Bounding boxes first: most faces of a triangle lie apart, and this is four comparisons.
