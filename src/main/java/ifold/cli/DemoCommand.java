@@ -1,11 +1,12 @@
 package ifold.cli;
 
 import ifold.fold.FoldFile;
+import ifold.geom.Triangle;
 import ifold.job.Reports;
 import ifold.job.Scenes;
 import ifold.job.TriangleText;
-import ifold.geom.Triangle;
-import ifold.mesh.PolygonSoup;
+import ifold.job.TurnJob;
+import ifold.job.ZigZagJob;
 import ifold.render.FrameExport;
 import ifold.render.RenderUnavailableException;
 import ifold.scene.Animation;
@@ -16,7 +17,6 @@ import ifold.sheet.Sheet;
 import ifold.wrap.ParameterException;
 import ifold.wrap.TurnGadget;
 import ifold.wrap.Wrap;
-import ifold.wrap.PlacedWrap;
 import ifold.wrap.WrapAnalysis;
 import ifold.wrap.WrapGeometry;
 import java.io.IOException;
@@ -105,30 +105,25 @@ final class DemoCommand implements Runnable {
             double t = options.thickness();
             PrintWriter out = spec.commandLine().getOut();
             outputs.check("zigzag", spec.commandLine().getErr(), true);
-            PolygonSoup path = new PolygonSoup();
-            for (int i = 0; i < 3; i++) {
-                path.addVertex(shape.corner(i).x(), shape.corner(i).y(), shape.corner(i).z());
-            }
-            path.addTriangle(0, 1, 2);
-            Wrap.Result result;
+            ZigZagJob.Outcome zigzag;
             try {
-                result = Wrap.wrap(path, new int[] {0, 1}, options);
+                zigzag = ZigZagJob.run(new ZigZagJob.Request(triangle, shape, options), Wrap.Watcher.NONE);
             } catch (ParameterException e) {
                 throw UserError.usage(e); // a thickness too thin for the triangle's size
             } catch (Wrap.WrapException e) {
                 throw new UserError("cannot wrap this triangle: " + e.getMessage());
             }
-            PlacedWrap placed = PlacedWrap.of(result);
-            List<WrapGeometry> geometries = placed.geometries();
-            WrapAnalysis analysis = placed.analysis();
-            Sheet sheet = result.strips().get(0).sheet();
+            Wrap.Result result = zigzag.result();
+            List<WrapGeometry> geometries = zigzag.geometries();
+            WrapAnalysis analysis = zigzag.analysis();
+            Sheet sheet = zigzag.sheet();
             int turns = result.count(Wrap.Kind.ZIGZAG_TURN);
             int overlaps = result.count(Wrap.Kind.OVERLAP);
             int tucks = result.count(Wrap.Kind.TUCK);
             int passes = Reports.passes(result);
-            Map<String, Object> figures = Reports.zigzag(triangle, startCorner, endCorner, result, analysis);
-            outputs.exportFold(List.of(new FoldFile.Folded(sheet, result.frames())), "demo zigzag --triangle " + triangle, figures);
-            outputs.write(result, geometries, "demo zigzag --triangle " + triangle, figures);
+            Map<String, Object> figures = zigzag.figures();
+            outputs.exportFold(List.of(new FoldFile.Folded(sheet, result.frames())), zigzag.source(), figures);
+            outputs.write(result, geometries, zigzag.source(), figures);
             out.printf(Locale.ROOT, "zigzag: strip %.4g x %.4g (L/w %.1f), %d passes%s, %d turn folds, %d tucks, %d layers at most (a stack of %d), "
                     + "paper efficiency %.3f, coverage %.3f, paper outside %.2g, isometry error %.1e%n",
                     sheet.length(), sheet.width(), sheet.length() / sheet.width(), passes, overlaps > 0 ? " (last overlapped)" : "",
@@ -197,20 +192,19 @@ final class DemoCommand implements Runnable {
             double t = options.thickness();
             PrintWriter out = spec.commandLine().getOut();
             outputs.check("turn", spec.commandLine().getErr(), true);
-            TurnGadget.Result gadget;
+            TurnJob.Outcome turn;
             try {
-                gadget = TurnGadget.turn(options);
+                turn = TurnJob.run(options);
             } catch (FoldException e) {
                 throw new UserError("cannot make this turn: " + e.getMessage());
             }
-            Wrap.Result result = gadget.wrap();
-            PlacedWrap placed = PlacedWrap.of(result);
-            List<WrapGeometry> geometries = placed.geometries();
-            WrapAnalysis analysis = placed.analysis();
-            Map<String, Object> figures = Reports.turn(options, gadget, analysis);
-            outputs.exportFold(List.of(new FoldFile.Folded(gadget.sheet(), result.frames())),
-                    String.format(Locale.ROOT, "demo turn --angle %s", angle), figures);
-            outputs.write(result, geometries, String.format(Locale.ROOT, "demo turn --angle %s", angle), figures);
+            TurnGadget.Result gadget = turn.gadget();
+            Wrap.Result result = turn.result();
+            List<WrapGeometry> geometries = turn.geometries();
+            WrapAnalysis analysis = turn.analysis();
+            Map<String, Object> figures = turn.figures();
+            outputs.exportFold(List.of(new FoldFile.Folded(gadget.sheet(), result.frames())), turn.source(), figures);
+            outputs.write(result, geometries, turn.source(), figures);
             out.printf(Locale.ROOT, "turn: %.6g degrees asked, %.6g measured, top side %s, %d layers at most, strip %.4g x %.4g%n",
                     angle, gadget.measuredAngle(), gadget.endFacesUp() ? "up" : "down", analysis.maxLayers(), gadget.length(), width);
             outputs.printChecksAndFiles(out);

@@ -1,14 +1,11 @@
 package ifold.cli;
 
-import ifold.fold.CreasePattern;
 import ifold.fold.FoldFile;
-import ifold.fold.FoldJson;
-import ifold.job.Reports;
 import ifold.job.Scenes;
+import ifold.job.ScriptJob;
 import ifold.scene.Animation;
 import ifold.scene.Scene;
 import ifold.script.FoldScript;
-import ifold.script.FoldScriptException;
 import ifold.script.ScriptFolding;
 import ifold.wrap.WrapGeometry;
 import java.io.IOException;
@@ -60,47 +57,28 @@ final class FoldCommand implements Callable<Integer> {
         // Without a display it does the exports asked for and renders frames where the viewer was
         // wanted, as the demos and the wrap do.
         outputs.check("fold", spec.commandLine().getErr(), true);
-        FoldScript parsed;
-        ScriptFolding.Result result;
-        long[] nanosPerFold;
         if (Files.isDirectory(script)) {
             throw new UserError(script + ": is a folder, expected a fold script");
         }
         LoadedModel.requireRegularFile(script);
-        CreasePattern pattern = null;
+        ScriptJob.Outcome folding;
         try {
-            if (FoldJson.isFoldFile(script)) {
-                // A FOLD crease pattern, folded one crease line at a time.
-                pattern = CreasePattern.read(script);
-                parsed = pattern.script();
-            } else {
-                parsed = FoldScript.read(script);
-            }
-            nanosPerFold = new long[parsed.steps().size()];
-            if (pattern != null) {
-                CreasePattern.Folding folding = pattern.fold(nanosPerFold, maxFaces);
-                parsed = folding.script(); // some lines may have been folded the other way
-                result = folding.result();
-            } else {
-                result = parsed.play(nanosPerFold, maxFaces);
-            }
+            folding = ScriptJob.run(script, maxFaces, stage -> { });
         } catch (NoSuchFileException e) {
             throw new UserError(script + ": no such file");
         } catch (AccessDeniedException e) {
             throw new UserError(script + ": permission denied");
         } catch (IOException e) {
             throw new UserError(script + ": cannot read: " + e.getMessage());
-        } catch (CreasePattern.Refused e) {
-            throw new UserError(script + ": " + e.getMessage());
-        } catch (FoldScriptException e) {
-            if (pattern != null) {
-                throw new UserError(script + ": cannot be folded one crease line at a time in this order: " + e.getMessage());
-            }
-            throw new UserError(script + (e.line() > 0 ? ":" + e.getMessage().replaceFirst("^line ", "") : ": " + e.getMessage()));
+        } catch (ScriptJob.Refused e) {
+            throw new UserError(e.getMessage());
         }
-        WrapGeometry folded = WrapGeometry.of(result.sheet(), result.frames());
+        FoldScript parsed = folding.script();
+        ScriptFolding.Result result = folding.result();
+        long[] nanosPerFold = folding.nanosPerFold();
+        WrapGeometry folded = folding.folded();
         PrintWriter out = spec.commandLine().getOut();
-        Map<String, Object> figures = Reports.script(result, folded);
+        Map<String, Object> figures = folding.figures();
         figures.put("timing", timing(nanosPerFold, result.steps()));
         // The FOLD file's folded state folds the script again on paper of no thickness: only where a
         // FOLD file is written or the layer order checked (from the same FOLD text, made in memory).

@@ -1,35 +1,32 @@
 package ifold.ui.model;
 
 import ifold.check.PaperCollisions;
-import ifold.fold.CreasePattern;
 import ifold.fold.FoldFile;
-import ifold.fold.FoldJson;
 import ifold.geom.Triangle;
 import ifold.job.Collisions;
 import ifold.job.LayerOrders;
 import ifold.job.ModelFiles;
 import ifold.job.Reports;
 import ifold.job.Scenes;
+import ifold.job.ScriptJob;
 import ifold.job.TriangleText;
+import ifold.job.TurnJob;
 import ifold.job.WrapJob;
+import ifold.job.ZigZagJob;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
-import ifold.mesh.PolygonSoup;
 import ifold.refine.HamiltonianRefinement;
 import ifold.refine.RefinementClaims;
-import ifold.scene.PathView;
 import ifold.scene.Animation;
+import ifold.scene.PathView;
 import ifold.scene.Scene;
 import ifold.scene.WrapView;
 import ifold.script.FoldScript;
-import ifold.script.FoldScriptException;
 import ifold.script.ScriptFolding;
 import ifold.sheet.FoldException;
 import ifold.wrap.ParameterException;
 import ifold.wrap.TurnGadget;
 import ifold.wrap.Wrap;
-import ifold.wrap.PlacedWrap;
-import ifold.wrap.WrapAnalysis;
 import ifold.wrap.WrapExport;
 import ifold.wrap.WrapGeometry;
 import java.io.IOException;
@@ -184,52 +181,43 @@ public final class Planning {
     private static Plan zigzag(Job.ZigZag job, Progress progress) throws JobFailure {
         Wrap.Options options = zigzagOptions(job, new ArrayList<>());
         Triangle shape = TriangleText.parse(job.triangle());
-        PolygonSoup path = new PolygonSoup();
-        for (int i = 0; i < 3; i++) {
-            path.addVertex(shape.corner(i).x(), shape.corner(i).y(), shape.corner(i).z());
-        }
-        path.addTriangle(0, 1, 2);
         progress.stage("wrapping the triangle");
-        Wrap.Result result;
+        ZigZagJob.Outcome zigzag;
         try {
-            result = Wrap.wrap(path, new int[] {0, 1}, options, watcher(progress));
+            zigzag = ZigZagJob.run(new ZigZagJob.Request(job.triangle(), shape, options), watcher(progress));
         } catch (Wrap.WrapException e) {
             throw new JobFailure("cannot wrap this triangle: " + e.getMessage());
         }
         progress.check();
         progress.stage("analysing");
-        PlacedWrap placed = PlacedWrap.of(result);
-        List<WrapGeometry> geometries = placed.geometries();
-        WrapAnalysis analysis = placed.analysis();
-        Map<String, Object> figures = Reports.zigzag(job.triangle(), job.start(), job.end(), result, analysis);
-        LayerOrders.addTo(figures, List.of(new FoldFile.Folded(result.strips().get(0).sheet(), result.frames())), "zigzag");
+        Wrap.Result result = zigzag.result();
+        List<WrapGeometry> geometries = zigzag.geometries();
+        Map<String, Object> figures = zigzag.figures();
+        LayerOrders.addTo(figures, List.of(new FoldFile.Folded(zigzag.sheet(), result.frames())), "zigzag");
         Collisions.addTo(figures, geometries, result.thickness(), result.mesh());
         progress.check();
-        String source = "demo zigzag --triangle " + job.triangle();
         return paperPlan(job, "zig-zag: " + figures.get("folds") + " folds", result, geometries, figures,
-                Math.min(120, 2.0 * (result.steps().size() + 2)), source, null, scene -> Scenes.zigzag(scene, shape, result, geometries));
+                Math.min(120, 2.0 * (result.steps().size() + 2)), zigzag.source(), null,
+                scene -> Scenes.zigzag(scene, shape, result, geometries));
     }
 
     private static Plan turn(Job.Turn job, Progress progress) throws JobFailure {
         TurnGadget.Options options = turnOptions(job, new ArrayList<>());
         progress.stage("folding the turn");
-        TurnGadget.Result gadget;
+        TurnJob.Outcome turn;
         try {
-            gadget = TurnGadget.turn(options);
+            turn = TurnJob.run(options);
         } catch (FoldException e) {
             throw new JobFailure("cannot make this turn: " + e.getMessage());
         }
-        Wrap.Result result = gadget.wrap();
-        PlacedWrap placed = PlacedWrap.of(result);
-        List<WrapGeometry> geometries = placed.geometries();
-        WrapAnalysis analysis = placed.analysis();
-        Map<String, Object> figures = Reports.turn(options, gadget, analysis);
-        LayerOrders.addTo(figures, List.of(new FoldFile.Folded(gadget.sheet(), result.frames())), "turn");
+        Wrap.Result result = turn.result();
+        List<WrapGeometry> geometries = turn.geometries();
+        Map<String, Object> figures = turn.figures();
+        LayerOrders.addTo(figures, List.of(new FoldFile.Folded(turn.gadget().sheet(), result.frames())), "turn");
         Collisions.addTo(figures, geometries, result.thickness(), result.mesh());
         progress.check();
-        String source = String.format(Locale.ROOT, "demo turn --angle %s", options.angle());
         return paperPlan(job, String.format(Locale.ROOT, "turn gadget: %.4g degrees", options.angle()), result, geometries, figures, 6,
-                source, null, scene -> Scenes.turn(scene, result, geometries));
+                turn.source(), null, scene -> Scenes.turn(scene, result, geometries));
     }
 
     private static Plan wrap(Job.WrapModel job, Progress progress) throws JobFailure {
@@ -291,38 +279,22 @@ public final class Planning {
     private static Plan script(Job.Script job, Progress progress) throws JobFailure {
         Path file = job.file();
         progress.stage("reading " + file.getFileName());
-        FoldScript parsed;
-        CreasePattern pattern = null;
-        ScriptFolding.Result result;
+        ScriptJob.Outcome folding;
         try {
-            if (FoldJson.isFoldFile(file)) {
-                pattern = CreasePattern.read(file);
-                parsed = pattern.script();
-            } else {
-                parsed = FoldScript.read(file);
-            }
-            progress.check();
-            progress.stage("folding " + parsed.steps().size() + " folds");
-            if (pattern != null) {
-                CreasePattern.Folding folding = pattern.fold(new long[parsed.steps().size()], ScriptFolding.DEFAULT_MAX_FACES);
-                parsed = folding.script(); // some lines may have been folded the other way
-                result = folding.result();
-            } else {
-                result = parsed.play(new long[parsed.steps().size()], ScriptFolding.DEFAULT_MAX_FACES);
-            }
+            folding = ScriptJob.run(file, ScriptFolding.DEFAULT_MAX_FACES, what -> {
+                progress.check();
+                progress.stage(what);
+            });
         } catch (IOException e) {
             throw new JobFailure(new Problem("script", ModelFile.readError(file, e)));
-        } catch (CreasePattern.Refused e) {
-            throw new JobFailure(file + ": " + e.getMessage());
-        } catch (FoldScriptException e) {
-            if (pattern != null) {
-                throw new JobFailure(file + ": cannot be folded one crease line at a time in this order: " + e.getMessage());
-            }
-            throw new JobFailure(file + (e.line() > 0 ? ":" + e.getMessage().replaceFirst("^line ", "") : ": " + e.getMessage()));
+        } catch (ScriptJob.Refused e) {
+            throw new JobFailure(e.getMessage());
         }
         progress.check();
-        WrapGeometry folded = WrapGeometry.of(result.sheet(), result.frames());
-        Map<String, Object> figures = Reports.script(result, folded);
+        FoldScript parsed = folding.script();
+        ScriptFolding.Result result = folding.result();
+        WrapGeometry folded = folding.folded();
+        Map<String, Object> figures = folding.figures();
         // Folded once more on ideal paper where thick (ofScript): once, for the check and the export.
         List<FoldFile.Folded> sheets = List.of(FoldFile.Folded.ofScript(parsed, result, ScriptFolding.DEFAULT_MAX_FACES));
         LayerOrders.addTo(figures, sheets, "script");
