@@ -1,6 +1,7 @@
 package ifold.cli;
 
 import ifold.job.Json;
+import ifold.job.RefineJob;
 import ifold.job.Reports;
 import ifold.job.WrapPath;
 import ifold.mesh.HalfedgeMesh;
@@ -8,7 +9,6 @@ import ifold.mesh.MeshBuilder;
 import ifold.mesh.io.MeshWriters;
 import ifold.refine.FacePreparation;
 import ifold.refine.HamiltonianRefinement;
-import ifold.refine.RefinementClaims;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
@@ -59,43 +59,36 @@ final class RefineCommand implements Callable<Integer> {
             throw new UserError(model + ": no faces left to refine");
         }
         long start = System.nanoTime();
-        WrapPath path = prepare ? WrapPath.prepared(mesh) : null;
-        HamiltonianRefinement.Result result = path != null ? path.refinement() : HamiltonianRefinement.refine(mesh);
+        RefineJob.Outcome refined = RefineJob.run(mesh, prepare);
+        WrapPath path = refined.prepared();
+        HamiltonianRefinement.Result result = refined.refinement();
         String kept = path != null ? path.keptNote(model.toString()) : null;
         if (kept != null) {
             spec.commandLine().getErr().println("ifold: " + kept);
             spec.commandLine().getErr().flush();
         }
-        long refined = System.nanoTime();
+        long refinedAt = System.nanoTime();
         try {
             MeshWriters.write(result.mesh(), output, ascii);
         } catch (IOException e) {
             throw new UserError("cannot write " + e.getMessage());
         }
         long written = System.nanoTime();
-        double minIn = RefinementClaims.minAngleDegrees(mesh);
-        double minOut = RefinementClaims.minAngleDegrees(result.mesh());
+        double minIn = refined.minAngleIn();
+        double minOut = refined.minAngleOut();
 
         var out = spec.commandLine().getOut();
         if (json) {
             Map<String, Object> report = new LinkedHashMap<>();
             report.put("input", model.toString());
             report.put("output", output.toString());
-            report.put("inputTriangles", mesh.faceCount());
-            if (path != null) {
-                report.put("preparation", path.figures());
-            }
-            report.put("components", result.componentCount());
-            report.put("outputTriangles", result.mesh().faceCount());
-            report.put("outputVertices", result.mesh().vertexCount());
-            report.put("minAngleInDegrees", minIn);
-            report.put("minAngleOutDegrees", minOut);
+            report.putAll(refined.figures());
             report.put("repairs", Reports.repairs(loaded.repairs()));
             Map<String, Object> seconds = new LinkedHashMap<>();
             seconds.put("parse", loaded.parseSeconds());
             seconds.put("build", loaded.buildSeconds());
-            seconds.put("refine", (refined - start) * 1e-9);
-            seconds.put("write", (written - refined) * 1e-9);
+            seconds.put("refine", (refinedAt - start) * 1e-9);
+            seconds.put("write", (written - refinedAt) * 1e-9);
             report.put("seconds", seconds);
             out.print(Json.write(report));
         } else {

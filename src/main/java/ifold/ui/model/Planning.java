@@ -6,6 +6,7 @@ import ifold.geom.Triangle;
 import ifold.job.Collisions;
 import ifold.job.LayerOrders;
 import ifold.job.ModelFiles;
+import ifold.job.RefineJob;
 import ifold.job.Reports;
 import ifold.job.Scenes;
 import ifold.job.ScriptJob;
@@ -16,7 +17,6 @@ import ifold.job.ZigZagJob;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.refine.HamiltonianRefinement;
-import ifold.refine.RefinementClaims;
 import ifold.scene.Animation;
 import ifold.scene.PathView;
 import ifold.scene.Scene;
@@ -332,24 +332,21 @@ public final class Planning {
         loaded.requireFaces(model, "show");
         HalfedgeMesh mesh = loaded.built().mesh();
         progress.check();
-        HamiltonianRefinement.Result refinement = null;
+        RefineJob.Outcome refining = null;
         if (refined) {
             progress.stage("refining " + mesh.faceCount() + " triangles");
-            refinement = HamiltonianRefinement.refine(mesh);
+            refining = RefineJob.run(mesh, false);
             progress.check();
         }
+        HamiltonianRefinement.Result refinement = refining == null ? null : refining.refinement();
         HamiltonianRefinement.Result shownRefinement = refinement;
         String name = model.getFileName().toString();
         Scene scene = new Scene();
         Scenes.View view = Scenes.view(scene, name, mesh, refinement, job.show(), job.colors());
         Map<String, Object> figures = new LinkedHashMap<>();
         figures.put("model", model.toString());
-        if (refined) {
-            figures.put("inputTriangles", mesh.faceCount());
-            figures.put("components", refinement.componentCount());
-            figures.put("outputTriangles", refinement.mesh().faceCount());
-            figures.put("minAngleInDegrees", RefinementClaims.minAngleDegrees(mesh));
-            figures.put("minAngleOutDegrees", RefinementClaims.minAngleDegrees(refinement.mesh()));
+        if (refining != null) {
+            figures.putAll(refining.figures());
             int[] edges = PathView.edgeKindCounts(view.geometry().mesh());
             figures.put("treeEdges", edges[0]);
             figures.put("steinerEdges", edges[1]);
