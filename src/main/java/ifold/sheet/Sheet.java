@@ -54,6 +54,8 @@ public final class Sheet {
     private final double width;
     private final double thickness;
     private final double tolerance;
+    /** The faces as placed on their hosts, and the tests of one against another. */
+    private final PlacedFaces placedFaces;
 
     private double[] uv = new double[64];
     private int vertexCount;
@@ -133,7 +135,7 @@ public final class Sheet {
             faces[count++] = f;
             levels = null;
             if (grid != null) {
-                grid.add(f, placedCached(f));
+                grid.add(f, placedFaces.polygon(f));
                 gridListed++;
             }
         }
@@ -161,7 +163,7 @@ public final class Sheet {
             if (count >= GRID_FROM && grid == null) {
                 double[][] polygons = new double[count][];
                 for (int i = 0; i < count; i++) {
-                    polygons[i] = placedCached(faces[i]);
+                    polygons[i] = placedFaces.polygon(faces[i]);
                 }
                 grid = new FaceGrid(FaceGrid.cellFor(polygons, count, 2 * width));
                 for (int i = 0; i < count; i++) {
@@ -169,7 +171,7 @@ public final class Sheet {
                 }
                 gridListed = count;
             }
-            int[] listed = grid == null ? null : grid.near(placedCached(f));
+            int[] listed = grid == null ? null : grid.near(placedFaces.polygon(f));
             if (listed != null) {
                 // Faces that left the stack stay listed: only those still in it, by their place.
                 int[] slots = new int[listed.length];
@@ -207,6 +209,7 @@ public final class Sheet {
         this.width = width;
         this.thickness = thickness;
         this.tolerance = tolerance;
+        this.placedFaces = new PlacedFaces(this, tolerance);
         tailA = addVertex(0, 0);
         tailB = addVertex(0, width);
         tailHost = host;
@@ -799,7 +802,7 @@ public final class Sheet {
                     }
                     continue; // they lay side by side before; where the moved paper lands is decided below
                 }
-                if ((cutMark[upper] == cut || cutMark[lower] == cut) && !overlap(upper, lower)) {
+                if ((cutMark[upper] == cut || cutMark[lower] == cut) && !placedFaces.overlap(upper, lower)) {
                     continue; // a face cut by the line keeps only the relations of the part that overlaps
                 }
                 if (upperMoves) {
@@ -811,7 +814,7 @@ public final class Sheet {
             for (Map.Entry<Integer, List<Integer>> entry : stayingAbove.entrySet()) {
                 for (int upper : entry.getValue()) {
                     for (int lower : stayingBelow.getOrDefault(entry.getKey(), List.of())) {
-                        if (overlap(upper, lower)) {
+                        if (placedFaces.overlap(upper, lower)) {
                             kept.add(((long) upper << 32) | lower);
                         }
                     }
@@ -826,7 +829,7 @@ public final class Sheet {
                 }
                 poseOf.set(f, frameChange.after(poseOf.get(f)));
                 hostOf[f] = toHost;
-                changed(f);
+                placedFaces.forget(f);
             }
             Stack to = stacks.computeIfAbsent(toHost, h -> new Stack());
             if (tuckPlace != null) {
@@ -856,7 +859,7 @@ public final class Sheet {
             // face between later leaves: see stayingAbove.)
             Between direct = new Between(to.above, placement);
             for (int f : faces) {
-                int holds = nextHoldsStamp();
+                int holds = placedFaces.nextHoldsStamp();
                 for (int i = 0; i < to.count; i++) {
                     int g = to.faces[i];
                     // First the cheap cases, without even asking whether f and g overlap: a face
@@ -867,20 +870,20 @@ public final class Sheet {
                     boolean implied = false;
                     for (int k = direct.start(g); k < direct.end(g) && !implied; k++) {
                         int h = direct.face(k);
-                        implied = holdsFace(h, g) || holdsAll(h, f, holds);
+                        implied = placedFaces.holdsFace(h, g) || placedFaces.holdsAll(h, f, holds);
                     }
-                    if (implied || !overlap(f, g)) {
+                    if (implied || !placedFaces.overlap(f, g)) {
                         continue;
                     }
                     for (int h : between.getOrDefault(f, List.of())) {
-                        if (contains(h, f) && overlap(h, g)) {
+                        if (placedFaces.contains(h, f) && placedFaces.overlap(h, g)) {
                             implied = true;
                             break;
                         }
                     }
                     for (int k = direct.start(g); k < direct.end(g) && !implied; k++) {
                         int h = direct.face(k);
-                        implied = overlap(f, h) && holdsOverlap(h, f, g);
+                        implied = placedFaces.overlap(f, h) && placedFaces.holdsOverlap(h, f, g);
                     }
                     if (!implied) {
                         to.above.add(placement == Placement.OVER ? ((long) f << 32) | g : ((long) g << 32) | f);
@@ -953,7 +956,7 @@ public final class Sheet {
             overlapping.clear();
             for (int i : to.near(f)) {
                 int g = to.faces[i];
-                if (overlap(f, g)) {
+                if (placedFaces.overlap(f, g)) {
                     sideOf[i] = (originOf[g] & SEALED) != 0 || pieceUnder.contains(g) ? 1 : -1;
                     overlapping.add(g);
                 }
@@ -970,8 +973,8 @@ public final class Sheet {
                 for (int k = start[slotOf[g]]; k < end && !implied; k++) {
                     int h = next[k];
                     if (sideOf[slotOf[h]] == side) {
-                        common = common != null ? common : overlapOf(f, g);
-                        implied = common != null && containsPoints(placedCached(h), common);
+                        common = common != null ? common : placedFaces.overlapOf(f, g);
+                        implied = common != null && placedFaces.containsPoints(placedFaces.polygon(h), common);
                     }
                 }
                 if (!implied) {
@@ -1040,7 +1043,7 @@ public final class Sheet {
                 }
                 boolean overlapped = false;
                 for (int f : piece) {
-                    if (overlap(f, across)) {
+                    if (placedFaces.overlap(f, across)) {
                         overlapped = true;
                         break;
                     }
@@ -1104,7 +1107,7 @@ public final class Sheet {
         }
         unregister(f);
         loops.set(f, Arrays.copyOf(near, nearCount));
-        changed(f);
+        placedFaces.forget(f);
         register(f);
         int g = loops.size();
         loops.add(Arrays.copyOf(far, farCount));
@@ -1140,7 +1143,7 @@ public final class Sheet {
         faceOfEdge.put(directed(b, m), g);
         faceOfEdge.put(directed(m, a), g);
         loops.set(g, longer);
-        changed(g);
+        placedFaces.forget(g);
         int crease = creases.remove(undirected(a, b), -1);
         if (crease >= 0) {
             creases.put(undirected(a, m), crease);
@@ -1197,7 +1200,7 @@ public final class Sheet {
         Map<Integer, Boolean> overOf = new HashMap<>();
         for (int i : stack.near(f)) {
             int g = stack.faces[i];
-            if (overlap(f, g)) {
+            if (placedFaces.overlap(f, g)) {
                 boolean over = placement == Placement.OVER;
                 if ((originOf[g] & SEALED) != 0) {
                     over = true;
@@ -1250,7 +1253,7 @@ public final class Sheet {
      * it does not reach across where it can ({@link #outOfPockets}).
      */
     private void outOfFolds(int f, int hinge, Stack stack, int[] levels, List<Integer> touching, Map<Integer, Boolean> overOf) {
-        double[] placedF = placedCached(f);
+        double[] placedF = placedFaces.polygon(f);
         Map<Integer, Integer> acrossParent = new HashMap<>();
         Set<Integer> joinedAcross = new HashSet<>();
         List<int[]> pockets = new ArrayList<>();
@@ -1329,7 +1332,7 @@ public final class Sheet {
         Isometry2 pose = poseOf.get(f);
         for (int g : touching) {
             if (g != hinge && (belowHinge.contains(g) || aboveHinge.contains(g))
-                    && crosses(placedCached(g), pose.x(u(a), v(a)), pose.y(u(a), v(a)), pose.x(u(b), v(b)), pose.y(u(b), v(b)))) {
+                    && crosses(placedFaces.polygon(g), pose.x(u(a), v(a)), pose.y(u(a), v(a)), pose.x(u(b), v(b)), pose.y(u(b), v(b)))) {
                 forced.put(g, belowHinge.contains(g));
             }
         }
@@ -1493,7 +1496,7 @@ public final class Sheet {
         Map<Integer, List<Integer>> aboveOf = null;
         Set<Integer> overFrom = null;
         for (int g : touching) {
-            if (g == from || !overOf.get(g) || (originOf[g] & SEALED) != 0 || !crosses(placedCached(g), ax, ay, bx, by)) {
+            if (g == from || !overOf.get(g) || (originOf[g] & SEALED) != 0 || !crosses(placedFaces.polygon(g), ax, ay, bx, by)) {
                 continue;
             }
             if (aboveOf == null) {
@@ -1644,65 +1647,6 @@ public final class Sheet {
     /** Scratch: each face's place in the stack whose levels are being found. */
     private int[] placeInStack = new int[16];
 
-    /** Per face h, whether it holds all of the face being placed: {@link #holdsStamp} where it does, one more where not. */
-    private int[] holdsMark = new int[16];
-    private int holdsStamp;
-
-    private int nextHoldsStamp() {
-        if (holdsMark.length < loops.size()) {
-            holdsMark = Arrays.copyOf(holdsMark, Math.max(loops.size(), 2 * holdsMark.length));
-        }
-        holdsStamp += 2;
-        return holdsStamp;
-    }
-
-    /** Whether face h, as placed, holds all of face f: asked once a stamp (a face being placed), then remembered. */
-    private boolean holdsAll(int h, int f, int stamp) {
-        if (holdsMark[h] == stamp || holdsMark[h] == stamp + 1) {
-            return holdsMark[h] == stamp;
-        }
-        boolean holds = holdsBox(h, f) && contains(h, f);
-        holdsMark[h] = holds ? stamp : stamp + 1;
-        return holds;
-    }
-
-    /**
-     * Whether face h, as placed, holds all of face g: the last answer for g is kept, with the
-     * two placements it was found for, since a pile's layers are asked again at every fold
-     * landing on it, and a face placed anew is a new placement.
-     */
-    private boolean holdsFace(int h, int g) {
-        double[] outer = placedCached(h);
-        double[] inner = placedCached(g);
-        if (heldOuter.length <= g) {
-            int size = Math.max(g + 1, 2 * heldOuter.length);
-            heldOuter = Arrays.copyOf(heldOuter, size);
-            heldInner = Arrays.copyOf(heldInner, size);
-            heldAnswer = Arrays.copyOf(heldAnswer, size);
-        }
-        if (heldOuter[g] != outer || heldInner[g] != inner) {
-            heldOuter[g] = outer;
-            heldInner[g] = inner;
-            heldAnswer[g] = holdsBox(h, g) && containsPoints(outer, inner);
-        }
-        return heldAnswer[g];
-    }
-
-    /** {@link #holdsFace}'s last answer by face, and the placements it was for. */
-    private double[][] heldOuter = new double[16][];
-    private double[][] heldInner = new double[16][];
-    private boolean[] heldAnswer = new boolean[16];
-
-    /** Whether the bounding box of face h, as placed, holds that of face f: a quick test before {@link #contains}. */
-    private boolean holdsBox(int h, int f) {
-        placedCached(h);
-        placedCached(f);
-        double[] boxH = boxes.get(h);
-        double[] boxF = boxes.get(f);
-        return boxF[0] >= boxH[0] - tolerance && boxF[1] >= boxH[1] - tolerance && boxF[2] <= boxH[2] + tolerance
-                && boxF[3] <= boxH[3] + tolerance;
-    }
-
     private int nextMark() {
         if (mark.length < loops.size()) {
             mark = Arrays.copyOf(mark, Math.max(loops.size(), 2 * mark.length));
@@ -1797,105 +1741,6 @@ public final class Sheet {
         }
     }
 
-    /** Whether face h, as placed, holds all of where faces f and g overlap. */
-    private boolean holdsOverlap(int h, int f, int g) {
-        double[] common = overlapOf(f, g);
-        return common != null && containsPoints(placedCached(h), common);
-    }
-
-    /** Where faces f and g, as placed, overlap (a convex polygon), or null where they do not beyond the tolerance. */
-    private double[] overlapOf(int f, int g) {
-        polygonTests++;
-        double[] common = placedCached(f);
-        double[] other = placedCached(g);
-        int n = other.length / 2;
-        double orientation = Math.signum(Polygons2.twiceArea(other, n));
-        for (int i = 0; i < n && common != null; i++) {
-            int j = (i + 1) % n;
-            double ex = other[2 * j] - other[2 * i];
-            double ey = other[2 * j + 1] - other[2 * i + 1];
-            double length = Math.sqrt(ex * ex + ey * ey);
-            // Inside g: orientation × (e × (p - corner i)) >= 0, as n·p <= c with n of unit length.
-            double nx = orientation * ey / length;
-            double ny = -orientation * ex / length;
-            common = Polygons2.clip(common, common.length / 2, nx, ny, nx * other[2 * i] + ny * other[2 * i + 1], tolerance);
-        }
-        return common;
-    }
-
-    /** Whether face g, as placed, lies wholly inside face h (convex, either way round). */
-    private boolean contains(int h, int g) {
-        return containsPoints(placedCached(h), placedCached(g));
-    }
-
-    /** Whether the points {@code inner} (x y x y ...) lie inside the convex polygon {@code outer}, either way round. */
-    private boolean containsPoints(double[] outer, double[] inner) {
-        polygonTests++;
-        int n = outer.length / 2;
-        double orientation = Math.signum(Polygons2.twiceArea(outer, n));
-        for (int i = 0; i < n; i++) {
-            int j = (i + 1) % n;
-            double ex = outer[2 * j] - outer[2 * i];
-            double ey = outer[2 * j + 1] - outer[2 * i + 1];
-            double length = Math.sqrt(ex * ex + ey * ey);
-            for (int k = 0; k < inner.length; k += 2) {
-                double cross = ex * (inner[k + 1] - outer[2 * i + 1]) - ey * (inner[k] - outer[2 * i]);
-                if (orientation * cross < -tolerance * length) {
-                    return false;
-                }
-            }
-        }
-        return true;
-    }
-
-    /** How many polygon tests (overlap, where two overlap, containment) the sheet has made. */
-    private long polygonTests;
-
-    /**
-     * How many tests of one face's polygon against another's the sheet has made since it was
-     * made: the costly part of folding, which tests and benchmarks watch grow with the folds.
-     */
-    public long polygonTests() {
-        return polygonTests;
-    }
-
-    private boolean overlap(int f, int g) {
-        polygonTests++;
-        double[] a = placedCached(f);
-        double[] b = placedCached(g);
-        // Bounding boxes first: most faces of a triangle lie apart, and this is four comparisons.
-        double[] boxA = boxes.get(f);
-        double[] boxB = boxes.get(g);
-        if (boxA[0] >= boxB[2] - tolerance || boxB[0] >= boxA[2] - tolerance || boxA[1] >= boxB[3] - tolerance
-                || boxB[1] >= boxA[3] - tolerance) {
-            return false;
-        }
-        return Polygons2.overlap(a, a.length / 2, b, b.length / 2, tolerance);
-    }
-
-    /** Each face's corners in its host's frame and its bounding box, kept until the face changes. */
-    private final List<double[]> placements = new ArrayList<>();
-    private final List<double[]> boxes = new ArrayList<>();
-
-    private double[] placedCached(int f) {
-        while (placements.size() <= f) {
-            placements.add(null);
-            boxes.add(null);
-        }
-        double[] xy = placements.get(f);
-        if (xy == null) {
-            xy = placed(f);
-            placements.set(f, xy);
-            boxes.set(f, Polygons2.bounds(xy));
-        }
-        return xy;
-    }
-
-    private void changed(int f) {
-        if (f < placements.size()) {
-            placements.set(f, null);
-        }
-    }
 
     /**
      * Finishes the paper resting on {@code host}, as a wrap does when the strip leaves it: paper
@@ -1914,11 +1759,16 @@ public final class Sheet {
         for (int i = 0; i < stack.count; i++) {
             int f = stack.faces[i];
             originOf[f] |= SEALED;
-            if (f < placements.size()) {
-                placements.set(f, null);
-                boxes.set(f, null);
-            }
+            placedFaces.release(f);
         }
+    }
+
+    /**
+     * How many tests of one face's polygon against another's the sheet has made since it was
+     * made: the costly part of folding, which tests and benchmarks watch grow with the folds.
+     */
+    public long polygonTests() {
+        return placedFaces.polygonTests();
     }
 
     /** Face f's corners in its host's frame, x0 y0 x1 y1 ... */
