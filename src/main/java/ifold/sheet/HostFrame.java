@@ -18,13 +18,15 @@ import static ifold.geom.Vectors.unit;
  *     bend of a flat fold along it may stand out beyond it before it meets paper on the host
  *     across, as a slope: the distance beyond the edge over the height above this host (1 where
  *     nothing across limits it); null where nothing limits any edge (a table, a plane in space)
- * @param mitre for each edge of the corners' polygon, where the surface across turns up towards
- *     the paper (a concave edge) by φ, tan(φ/2): paper at height z above this host keeps z·tan(φ/2)
- *     from the edge's line, on this side of the plane that halves the wedge of air above the edge
- *     (the mitre), where the paper of the host across keeps to the other side; 0 elsewhere; null
- *     where no edge is concave
+ * @param mitre for each edge of the corners' polygon, the stretches of it along which the surface
+ *     across turns up towards the paper (a concave edge) by φ: from, to (distances along the edge
+ *     from its first corner) and tan(φ/2), three numbers a stretch (null for an edge with none).
+ *     Over such a stretch, paper at height z above this host keeps z·tan(φ/2) from the edge's
+ *     line, on this side of the plane that halves the wedge of air above the edge (the mitre),
+ *     where the paper of the host across keeps to the other side. An edge of a host can be
+ *     concave in part only (a low block beside a tall one). Null where no edge is concave.
  */
-public record HostFrame(double[] origin, double[] ex, double[] ey, double[] normal, double[] corners, double[] room, double[] mitre) {
+public record HostFrame(double[] origin, double[] ex, double[] ey, double[] normal, double[] corners, double[] room, double[][] mitre) {
 
     /*
      * A wrap's path triangle has a frame of its own: its exit edge from the origin along the x
@@ -55,7 +57,7 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
     }
 
     /** This frame with {@code room} beyond its edges and the {@code mitre} of each (see the record's description; either may be null). */
-    public HostFrame withEdges(double[] room, double[] mitre) {
+    public HostFrame withEdges(double[] room, double[][] mitre) {
         if (room != null && room.length != corners.length / 2 || mitre != null && mitre.length != corners.length / 2) {
             throw new IllegalArgumentException("edges given for " + (room != null ? room.length : mitre.length) + " edges, the polygon has "
                     + corners.length / 2);
@@ -66,18 +68,18 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
     /**
      * Where paper at frame point (x, y) and {@code height} above this host lies once mitred at
      * its concave edges ({@link #mitre}): moved in from each such edge's line to
-     * height·tan(φ/2) from it where it lies nearer ({@link #keepFrom}); into {@code out} (x, y).
-     * A layer of a stack that runs up to a concave edge would otherwise run into the layers of
-     * the host across. Where two concave edges meet at a corner sharper than 90 degrees a move
-     * off one can bring the point nearer the other, so the moves are made until none is needed
-     * (a few rounds).
+     * height·tan(φ/2) from it where it lies nearer, along a concave stretch ({@link #keepFrom});
+     * into {@code out} (x, y). A layer of a stack that runs up to a concave edge would otherwise
+     * run into the layers of the host across. Where two concave edges meet at a sharp corner a
+     * move off one brings the point nearer the other: after a few rounds it goes where the two
+     * mitres meet.
      *
      * @return whether the point moved
      */
     public boolean mitred(double x, double y, double height, double[] out) {
         out[0] = x;
         out[1] = y;
-        if (mitre == null || height <= 0) {
+        if (mitre == null || !(height > 0)) {
             return false;
         }
         int n = corners.length / 2;
@@ -85,22 +87,113 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
         for (int round = 0; round < 4; round++) {
             boolean again = false;
             for (int k = 0; k < n; k++) {
-                if (mitre[k] > 0 && keepFrom(k, height * mitre[k], out)) {
+                double tan = mitreAt(k, out[0], out[1]);
+                if (tan > 0 && keepFrom(k, height * tan, out)) {
                     again = moved = true;
                 }
             }
             if (!again) {
-                break;
+                return moved;
+            }
+        }
+        // Two concave edges at a corner sharper than 90 degrees: straight to where their mitres meet.
+        for (int k = 0; k < n; k++) {
+            for (int j = k + 1; j < n; j++) {
+                double tk = mitreAt(k, out[0], out[1]);
+                double tj = mitreAt(j, out[0], out[1]);
+                if (tk > 0 && tj > 0 && (inside(k, out) < height * tk * (1 - 1e-9) || inside(j, out) < height * tj * (1 - 1e-9))) {
+                    meet(k, height * tk, j, height * tj, out);
+                }
             }
         }
         return moved;
     }
 
     /**
+     * tan(φ/2) of the concave stretch of edge k beside frame point (x, y): its projection on
+     * the edge within the stretch, or beyond the edge's end where the stretch runs to it (near a
+     * corner of the host the paper across still rises; where the edge turns convex part way,
+     * it does not); 0 if none.
+     */
+    public double mitreAt(int k, double x, double y) {
+        if (mitre == null || mitre[k] == null) {
+            return 0;
+        }
+        double[] edge = edge(k);
+        double s = ((x - edge[0]) * edge[2] + (y - edge[1]) * edge[3]) / edge[4];
+        double near = 1e-9 * edge[4];
+        double most = 0;
+        for (int i = 0; i + 2 < mitre[k].length; i += 3) {
+            boolean fromStart = mitre[k][i] <= near;
+            boolean toEnd = mitre[k][i + 1] >= edge[4] - near;
+            if ((fromStart || s >= mitre[k][i] - near) && (toEnd || s <= mitre[k][i + 1] + near)) {
+                most = Math.max(most, mitre[k][i + 2]);
+            }
+        }
+        return most;
+    }
+
+    /**
+     * tan(φ/2) of the concave stretches of edge k that the segment from (ax, ay) to (bx, by)
+     * along it shares more than {@code tolerance} of, the most of them; 0 if none.
+     */
+    public double mitreAlong(int k, double ax, double ay, double bx, double by, double tolerance) {
+        if (mitre == null || mitre[k] == null) {
+            return 0;
+        }
+        double[] edge = edge(k);
+        double sa = ((ax - edge[0]) * edge[2] + (ay - edge[1]) * edge[3]) / edge[4];
+        double sb = ((bx - edge[0]) * edge[2] + (by - edge[1]) * edge[3]) / edge[4];
+        double most = 0;
+        for (int i = 0; i + 2 < mitre[k].length; i += 3) {
+            if (Math.min(mitre[k][i + 1], Math.max(sa, sb)) - Math.max(mitre[k][i], Math.min(sa, sb)) > tolerance) {
+                most = Math.max(most, mitre[k][i + 2]);
+            }
+        }
+        return most;
+    }
+
+    /** Whether edge k has a concave stretch. */
+    public boolean concave(int k) {
+        return mitre != null && mitre[k] != null;
+    }
+
+    /** How far frame point p lies in from the line of edge k (negative beyond it). */
+    private double inside(int k, double[] p) {
+        double[] edge = edge(k);
+        return ((p[0] - edge[0]) * -edge[3] + (p[1] - edge[1]) * edge[2]) / edge[4];
+    }
+
+    /** Moves p to where the lines {@code keepK} in from edge k and {@code keepJ} in from edge j meet, if they do, and it lies in the polygon. */
+    private void meet(int k, double keepK, int j, double keepJ, double[] p) {
+        double[] a = edge(k);
+        double[] b = edge(j);
+        double ax = -a[3] / a[4];
+        double ay = a[2] / a[4];
+        double bx = -b[3] / b[4];
+        double by = b[2] / b[4];
+        double det = ax * by - ay * bx;
+        if (Math.abs(det) < 1e-9) {
+            return; // parallel: no corner
+        }
+        double ck = keepK + ax * a[0] + ay * a[1];
+        double cj = keepJ + bx * b[0] + by * b[1];
+        double[] q = {(ck * by - cj * ay) / det, (ax * cj - bx * ck) / det};
+        for (int i = 0; i < corners.length / 2; i++) {
+            if (edge(i)[4] > 0 && inside(i, q) < -1e-9 * (Math.abs(q[0]) + Math.abs(q[1]) + 1)) {
+                return; // the host is too narrow there for both stacks
+            }
+        }
+        p[0] = q[0];
+        p[1] = q[1];
+    }
+
+    /**
      * Moves the frame point {@code point} (x, y) in from the line of edge k of the corners'
      * polygon until it lies {@code keep} from it, where it lies nearer: straight in, or, where
      * that would take it out across another edge (near a corner sharper than 90 degrees), along
-     * that edge's line, so that paper within the polygon stays within it.
+     * that edge's line; and never out of the polygon (a groove narrower than the stacks of its two
+     * walls leaves the paper nearer than its mitre, where it meets the paper across).
      *
      * @return whether it moved
      */
@@ -137,6 +230,23 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
                 }
                 break;
             }
+        }
+        // No farther than the polygon lets it go: each edge's distance stays at least what it was, or 0.
+        for (int j = 0; j < n; j++) {
+            double[] other = edge(j);
+            if (!(other[4] > 0)) {
+                continue;
+            }
+            double mx = -other[3] / other[4];
+            double my = other[2] / other[4];
+            double towards = dx * mx + dy * my;
+            if (towards < 0) {
+                double inside = (point[0] - other[0]) * mx + (point[1] - other[1]) * my;
+                amount = Math.min(amount, Math.max(0, inside - Math.min(inside, 0)) / -towards);
+            }
+        }
+        if (!(amount > 0)) {
+            return false;
         }
         point[0] += amount * dx;
         point[1] += amount * dy;

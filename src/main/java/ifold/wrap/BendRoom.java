@@ -2,7 +2,9 @@ package ifold.wrap;
 
 import ifold.mesh.IndexedPolygons;
 import ifold.sheet.HostFrame;
+import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.List;
 import java.util.HashMap;
 import java.util.Map;
 
@@ -36,11 +38,16 @@ final class BendRoom {
      */
     static HostFrame[] of(IndexedPolygons mesh, int[] hostOf, HostFrame[] frames, double tolerance) {
         double[][] room = new double[frames.length][];
-        double[][] mitre = new double[frames.length][];
+        // Each host edge's concave stretches: from, to and tan(φ/2), three numbers a stretch.
+        List<List<List<Double>>> mitre = new ArrayList<>();
         for (int h = 0; h < frames.length; h++) {
             room[h] = new double[frames[h].corners().length / 2];
             Arrays.fill(room[h], HostFrame.OPEN);
-            mitre[h] = new double[frames[h].corners().length / 2];
+            List<List<Double>> edges = new ArrayList<>();
+            for (int k = 0; k < room[h].length; k++) {
+                edges.add(new ArrayList<>());
+            }
+            mitre.add(edges);
         }
         Map<Long, Integer> firstSide = new HashMap<>();
         for (int t = 0; t < mesh.faceCount(); t++) {
@@ -60,18 +67,23 @@ final class BendRoom {
         }
         HostFrame[] limited = new HostFrame[frames.length];
         for (int h = 0; h < frames.length; h++) {
+            double[][] stretches = new double[room[h].length][];
             boolean concave = false;
-            for (double m : mitre[h]) {
-                concave |= m > 0;
+            for (int k = 0; k < stretches.length; k++) {
+                List<Double> edge = mitre.get(h).get(k);
+                if (!edge.isEmpty()) {
+                    stretches[k] = edge.stream().mapToDouble(Double::doubleValue).toArray();
+                    concave = true;
+                }
             }
-            limited[h] = frames[h].withEdges(room[h], concave ? mitre[h] : null);
+            limited[h] = frames[h].withEdges(room[h], concave ? stretches : null);
         }
         return limited;
     }
 
     /** Limits the room of the edge of {@code near}'s host that mesh edge (u, v) lies along, by the turn to {@code far}'s host. */
     private static void limit(IndexedPolygons mesh, int u, int v, int near, int far, int[] hostOf, HostFrame[] frames,
-            double[][] room, double[][] mitre, double tolerance) {
+            double[][] room, List<List<List<Double>>> mitre, double tolerance) {
         HostFrame frame = frames[hostOf[near]];
         double slope = slope(frame, frames[hostOf[far]], mesh, far, tolerance);
         double concave = slope >= HostFrame.OPEN ? concaveTurn(frame, frames[hostOf[far]], mesh, far, tolerance) : 0;
@@ -88,7 +100,16 @@ final class BendRoom {
         for (int k = 0; k < edges.length; k++) {
             if (frame.along(k, ax, ay, bx, by, tolerance)) {
                 edges[k] = Math.min(edges[k], slope);
-                mitre[hostOf[near]][k] = Math.max(mitre[hostOf[near]][k], concave);
+                if (concave > 0) {
+                    // Concave along this mesh edge only: the host's edge may go on convex beyond it.
+                    double[] edge = edgeOf(frame, k);
+                    double sa = ((ax - edge[0]) * edge[2] + (ay - edge[1]) * edge[3]) / edge[4];
+                    double sb = ((bx - edge[0]) * edge[2] + (by - edge[1]) * edge[3]) / edge[4];
+                    List<Double> stretches = mitre.get(hostOf[near]).get(k);
+                    stretches.add(Math.min(sa, sb));
+                    stretches.add(Math.max(sa, sb));
+                    stretches.add(concave);
+                }
             }
         }
     }
@@ -132,7 +153,20 @@ final class BendRoom {
         double[] n = near.normal();
         double[] m = across.normal();
         double cos = Math.max(-1, Math.min(1, n[0] * m[0] + n[1] * m[1] + n[2] * m[2]));
-        return Math.sqrt((1 - cos) / Math.max(1 + cos, 1e-12));
+        // A wedge of air all but closed (the faces back to back) leaves paper no room: its
+        // layers go as far in as the host lets them (HostFrame.keepFrom).
+        return Math.min(1e6, Math.sqrt((1 - cos) / Math.max(1 + cos, 1e-12)));
+    }
+
+    /** Edge k of the frame's polygon: x, y of its first corner, dx, dy, its length. */
+    static double[] edgeOf(HostFrame frame, int k) {
+        double[] corners = frame.corners();
+        int n = corners.length / 2;
+        double px = corners[2 * k];
+        double py = corners[2 * k + 1];
+        double dx = corners[2 * ((k + 1) % n)] - px;
+        double dy = corners[2 * ((k + 1) % n) + 1] - py;
+        return new double[] {px, py, dx, dy, Math.hypot(dx, dy)};
     }
 
     private static double[] position(IndexedPolygons mesh, int v) {

@@ -67,7 +67,8 @@ final class ConcaveWalls {
                 continue;
             }
             along[k] = true;
-            double need = (bend.high() + 0.5) * thickness * frame.mitre()[edgeOf[k]] + ranks[k] * thickness;
+            double tan = frame.mitreAlong(edgeOf[k], bend.ax(), bend.ay(), bend.bx(), bend.by(), tolerance);
+            double need = (bend.high() + 0.5) * thickness * tan + ranks[k] * thickness;
             most.merge(key(bend.host(), edgeOf[k]), need, Math::max);
         }
         List<List<Wall>> wallsOf = new ArrayList<>(java.util.Collections.nCopies(frames.length, (List<Wall>) null));
@@ -101,8 +102,8 @@ final class ConcaveWalls {
     void place(int host, HostFrame frame, double x, double y, double height, double[] out) {
         frame.mitred(x, y, height, out);
         List<Wall> walls = wallsOf.get(host);
-        if (walls == null) {
-            return;
+        if (walls == null || !(thickness > 0)) {
+            return; // paper of no thickness stands nowhere but on its creases
         }
         double level = height / thickness - 0.5;
         for (Wall wall : walls) {
@@ -111,7 +112,9 @@ final class ConcaveWalls {
             }
             double[] edge = wall.line();
             double s = ((out[0] - edge[0]) * edge[2] + (out[1] - edge[1]) * edge[3]) / edge[4];
-            if (s >= wall.from() - tolerance && s <= wall.to() + tolerance) {
+            // Beside the wall, and beside a concave stretch of the edge: a fold along the whole of
+            // a host's edge that is concave in part stands back only where the edge is concave.
+            if (s >= wall.from() - tolerance && s <= wall.to() + tolerance && frame.mitreAt(wall.edge(), out[0], out[1]) > 0) {
                 frame.keepFrom(wall.edge(), wall.in(), out);
             }
         }
@@ -119,12 +122,13 @@ final class ConcaveWalls {
 
     /** The concave edge of the frame's polygon that the bend's crease lies along, sharing more than the tolerance of it; -1 if none. */
     private static int concaveEdge(HostFrame frame, NestedBends.Bend bend, double tolerance) {
-        double[] mitre = frame.mitre();
-        if (mitre == null) {
+        if (frame.mitre() == null) {
             return -1;
         }
-        for (int k = 0; k < mitre.length; k++) {
-            if (mitre[k] <= 0 || !frame.along(k, bend.ax(), bend.ay(), bend.bx(), bend.by(), tolerance)) {
+        for (int k = 0; k < frame.mitre().length; k++) {
+            // Along a concave stretch of the edge, sharing more than the tolerance of it.
+            if (!frame.concave(k) || !frame.along(k, bend.ax(), bend.ay(), bend.bx(), bend.by(), tolerance)
+                    || frame.mitreAlong(k, bend.ax(), bend.ay(), bend.bx(), bend.by(), tolerance) == 0) {
                 continue;
             }
             double[] edge = edge(frame, k);

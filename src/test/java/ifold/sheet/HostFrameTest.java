@@ -8,13 +8,13 @@ import org.junit.jupiter.api.Test;
 
 /** Thick paper at a concave edge of its host keeps to its mitre, and stays on the host. */
 class HostFrameTest {
-    private static HostFrame host(double[] corners, double[] mitre) {
+    private static HostFrame host(double[] corners, double[][] mitre) {
         return new HostFrame(new double[] {0, 0, 0}, new double[] {1, 0, 0}, new double[] {0, 1, 0}, new double[] {0, 0, 1}, corners)
                 .withEdges(null, mitre);
     }
 
     /** The unit square whose edge x = 0 (edge 3, from (0, 1) to (0, 0)) is concave by 90 degrees: its mitre is as far in as up. */
-    private static final HostFrame SQUARE = host(new double[] {0, 0, 1, 0, 1, 1, 0, 1}, new double[] {0, 0, 0, 1});
+    private static final HostFrame SQUARE = host(new double[] {0, 0, 1, 0, 1, 1, 0, 1}, new double[][] {null, null, null, {0, 1, 1}});
 
     @Test
     void paperAtAConcaveEdgeStandsBackToItsMitre() {
@@ -36,11 +36,45 @@ class HostFrameTest {
     void paperAtASharpCornerSlidesAlongTheOtherEdge() {
         // A triangle with a corner of 26.6 degrees at the origin: its base (edge 0, y = 0) is
         // concave by 90 degrees; edge 2 runs from (1, 0.5) back to the origin, along y = x / 2.
-        HostFrame sharp = host(new double[] {0, 0, 1, 0, 1, 0.5}, new double[] {1, 0, 0});
+        HostFrame sharp = host(new double[] {0, 0, 1, 0, 1, 0.5}, new double[][] {{0, 1, 1}, null, null});
         double[] at = new double[2];
         assertTrue(sharp.mitred(0.1, 0.05, 0.1, at));
         assertArrayEquals(new double[] {0.2, 0.1}, at, 1e-12, "on edge 2's line, 0.1 up from the base");
         assertTrue(sharp.mitred(0.5, 0, 0.1, at));
         assertArrayEquals(new double[] {0.5, 0.1}, at, 1e-12, "away from the corner: straight in");
+    }
+
+    /** An edge concave along part of it only (a low block beside a tall one): paper beside the rest keeps to the edge. */
+    @Test
+    void onlyTheConcaveStretchOfAnEdgeMitres() {
+        // Edge 0 of the square, y = 0 from x = 0 to 1, concave from x = 0 to 0.5 only.
+        HostFrame partly = host(new double[] {0, 0, 1, 0, 1, 1, 0, 1}, new double[][] {{0, 0.5, 1}, null, null, null});
+        double[] at = new double[2];
+        assertTrue(partly.mitred(0.25, 0, 0.1, at));
+        assertArrayEquals(new double[] {0.25, 0.1}, at, 1e-15);
+        assertFalse(partly.mitred(0.75, 0, 0.1, at), "beside the convex stretch the paper stays");
+        assertArrayEquals(new double[] {0.75, 0}, at);
+    }
+
+    /**
+     * A host narrower than its stacks need (a groove whose two walls are concave): paper goes no
+     * farther than the far side, nearer than its mitre, where it meets the paper across; two
+     * concave edges at a sharp corner: paper goes where their mitres meet.
+     */
+    @Test
+    void paperNeverLeavesItsHostAndMeetsBothMitresAtASharpCorner() {
+        HostFrame groove = host(new double[] {0, 0, 1, 0, 1, 0.1, 0, 0.1}, new double[][] {{0, 1, 1}, null, {0, 1, 1}, null});
+        double[] at = new double[2];
+        groove.mitred(0.5, 0, 0.15, at);
+        assertTrue(at[1] >= -1e-12 && at[1] <= 0.1 + 1e-12, "within the groove: " + at[1]);
+
+        // A corner of 30 degrees at the origin between two concave edges: edge 0 along y = 0,
+        // edge 2 from the far corner back to the origin along y = x tan 30.
+        double t = Math.tan(Math.toRadians(30));
+        HostFrame sharp = host(new double[] {0, 0, 2, 0, 2, 2 * t}, new double[][] {{0, 2, 1}, null, {0, 2 / Math.cos(Math.toRadians(30)), 1}});
+        assertTrue(sharp.mitred(0.05, 0.01, 0.05, at));
+        double fromBase = at[1];
+        double fromSide = (at[0] * t - at[1]) * Math.cos(Math.toRadians(30));
+        assertTrue(fromBase >= 0.05 - 1e-12 && fromSide >= 0.05 - 1e-12, "0.05 from both edges: " + fromBase + ", " + fromSide);
     }
 }

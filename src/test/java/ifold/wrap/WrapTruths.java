@@ -344,9 +344,10 @@ public final class WrapTruths {
         Faces geometry = new Faces(eps, model.size);
         checkStripsAreTiledOnce(report, eps);
         List<ConcaveSide> concave = concaveSides(model, eps);
-        checkIsometry(report, concave, thickness, maxStack, eps);
+        boolean[] crept = new boolean[faces()];
+        checkIsometry(report, concave, thickness, maxStack, eps, crept);
         checkNotTorn(report, eps, 2 * top);
-        checkCovered(report, model, geometry, eps, top, coverageSamples, seed, thickness > 0 ? concave : List.of());
+        checkCovered(report, model, geometry, eps, top, coverageSamples, seed, thickness > 0 ? concave : List.of(), crept);
         checkOnSurface(report, model, geometry, eps, top);
         return report.finish();
     }
@@ -621,7 +622,8 @@ public final class WrapTruths {
         return concave;
     }
 
-    private void checkIsometry(Report report, List<ConcaveSide> concave, double thickness, int maxStack, double eps) {
+    /** Truth 2; {@code crept} gets the faces let stand back from a concave edge. */
+    private void checkIsometry(Report report, List<ConcaveSide> concave, double thickness, int maxStack, double eps, boolean[] crept) {
         StringBuilder why = new StringBuilder();
         for (int f = 0; f < faces(); f++) {
             if (!faceCap[f]) {
@@ -631,8 +633,12 @@ public final class WrapTruths {
                 if (zones != null && zones.nearer() != null) {
                     report.add(ISOMETRIC, face(f) + ": " + zones.nearer());
                 }
-                if (!(error <= RELATIVE) && !(zones != null && creptOnly(f, zones))) {
-                    report.add(ISOMETRIC, face(f) + " is stretched: " + why);
+                if (!(error <= RELATIVE)) {
+                    crept[f] = zones != null && creptOnly(f, zones);
+                    if (!crept[f]) {
+                        report.add(ISOMETRIC, face(f) + " is stretched: " + why + (zones == null || zones.widest() == 0 ? ""
+                                : " (more than twice the " + zones.widest() + " its corners by a concave edge may creep)"));
+                    }
                 }
             }
         }
@@ -655,8 +661,10 @@ public final class WrapTruths {
         double top = (maxStack + 1) * thickness;
         boolean[] inZone = new boolean[end - start];
         double widest = 0;
-        String nearer = null;
-        boolean mitredOnSomePlane = false;
+        // A face on a plane keeps to the mitre of every concave side of that plane (a room's floor
+        // of both its walls); a squashed face may lie on two planes, and must keep to one's.
+        List<ConcaveSide> planes = new ArrayList<>();
+        List<String> nearerOn = new ArrayList<>();
         for (ConcaveSide side : concave) {
             double[] m = side.normal();
             double width = top * (side.mitre() + 1);
@@ -693,18 +701,34 @@ public final class WrapTruths {
                 inZone[c - start] = true;
                 widest = Math.max(widest, width);
                 double height = times(p, m);
-                if (here == null && inside < height * side.mitre() - eps - 1e-6 * thickness) {
+                // The mitre stands beside the edge: round its ends the paper across turns away.
+                if (here == null && s >= 0 && s <= length && inside < height * side.mitre() - eps - 1e-6 * thickness) {
                     here = "vertex " + (v + 1) + " is " + inside + " in from a concave edge of the model, nearer than its mitre ("
                             + height + " high: " + height * side.mitre() + " in), running into the layers across";
                 }
             }
-            if (here == null) {
-                mitredOnSomePlane = true;
-            } else if (nearer == null) {
-                nearer = here;
+            int plane = -1;
+            for (int i = 0; i < planes.size() && plane < 0; i++) {
+                double[] n = planes.get(i).normal();
+                if (times(n, m) > 1 - 1e-9 && Math.abs(times(n, minus(side.a(), planes.get(i).a()))) <= eps) {
+                    plane = i;
+                }
+            }
+            if (plane < 0) {
+                planes.add(side);
+                nearerOn.add(here);
+            } else if (nearerOn.get(plane) == null) {
+                nearerOn.set(plane, here);
             }
         }
-        return new Zones(inZone, widest, mitredOnSomePlane ? null : nearer);
+        String nearer = null;
+        for (String onPlane : nearerOn) {
+            if (onPlane == null) {
+                return new Zones(inZone, widest, null);
+            }
+            nearer = nearer == null ? onPlane : nearer;
+        }
+        return new Zones(inZone, widest, nearer);
     }
 
     /**
@@ -1044,12 +1068,13 @@ public final class WrapTruths {
 
     /**
      * Whether model point p, on a triangle of outward normal n, lies within the widest creep zone
-     * of the model's concave edges of paper on its plane: where layers joined at a crease creep
-     * by different amounts, the crease opens a sliver no wider than that, which can run from the
-     * edge along the crease; a gap any wider is a hole.
+     * of the model's concave edges of a crept face on its plane (one truth 2 let stand back from
+     * a concave edge): where layers joined at a crease creep by different amounts, the crease
+     * opens a sliver no wider than that, which can run from the edge along the crease; a gap
+     * any wider, or beside paper that did not creep, is a hole.
      */
     private static boolean nearPaper(double[] p, double[] n, Faces geometry, List<ConcaveSide> concave, double top, double eps,
-            Ints candidates) {
+            Ints candidates, boolean[] crept) {
         double widest = 0;
         for (ConcaveSide side : concave) {
             widest = Math.max(widest, top * (side.mitre() + 1));
@@ -1076,7 +1101,7 @@ public final class WrapTruths {
             for (int d = 0; d < 3; d++) {
                 q[d] = p[d] + height * n[d];
             }
-            if (geometry.spaceDepth(f, q) >= -widest - eps) {
+            if (geometry.spaceDepth(f, q) >= -widest - eps && crept[f]) {
                 return true;
             }
         }
@@ -1084,7 +1109,7 @@ public final class WrapTruths {
     }
 
     private void checkCovered(Report report, Model model, Faces geometry, double eps, double top, int samples, long seed,
-            List<ConcaveSide> concave) {
+            List<ConcaveSide> concave, boolean[] crept) {
         SplittableRandom random = new SplittableRandom(seed);
         double[] p = new double[3];
         double[] q = new double[3];
@@ -1120,7 +1145,7 @@ public final class WrapTruths {
                 }
                 covered = geometry.spaceDepth(f, q) >= -eps;
             }
-            if (!covered && !inCreepZone(p, n, concave, top, eps) && !nearPaper(p, n, geometry, concave, top, eps, candidates)) {
+            if (!covered && !inCreepZone(p, n, concave, top, eps) && !nearPaper(p, n, geometry, concave, top, eps, candidates, crept)) {
                 uncovered++;
                 report.add(COVERED, "model point " + point(p) + " of triangle " + (t + 1) + " lies under no paper face");
             }
@@ -1240,7 +1265,7 @@ public final class WrapTruths {
         int plane = -1;
         for (int k = 0; k < candidates.size() && plane < 0; k++) {
             int t = candidates.get(k);
-            if (!parallel(geometryNormal(f), model.normal(t))) {
+            if (!parallel(geometryNormal(f), model.normal(t)) && !(squashed(f) && equallyHigh(f, model, t, eps))) {
                 continue;
             }
             boolean within = true;

@@ -536,4 +536,78 @@ class WrapTruthsTest {
         List<Violation> thin = check(insideCorner(0.005, 0.005, 0), INSIDE_CORNER, 0);
         assertBroken(thin, WrapTruths.ISOMETRIC, "is stretched");
     }
+
+    /** A room's corner: the floor z = 0 between two walls, x = 0 (normal +x) and y = 0 (normal +y). */
+    private static final List<double[]> ROOM_CORNER = List.of(
+            new double[] {0, 0, 0, 1, 0, 0, 1, 1, 0},
+            new double[] {0, 0, 0, 1, 1, 0, 0, 1, 0},
+            new double[] {0, 0, 0, 0, 1, 0, 0, 1, 1},
+            new double[] {0, 0, 0, 0, 1, 1, 0, 0, 1},
+            new double[] {0, 0, 0, 0, 0, 1, 1, 0, 1},
+            new double[] {0, 0, 0, 1, 0, 1, 1, 0, 0});
+
+    /**
+     * The checker's allowances at concave edges hold only where paper creeps: floor paper that
+     * keeps its mitre from one wall but runs into the other is caught (it passed, kept clear of
+     * the first), and a gap in the floor's paper away from the edge is a hole, though narrower
+     * than a creep zone (it passed too).
+     */
+    @Test
+    void creepIsAllowedOnlyWherePaperStandsBackFromEveryConcaveEdge() {
+        String floor = """
+                o strip-1
+                v 0 0.005 0.005
+                vt 0 0
+                v 1 0.005 0.005
+                vt 1 0
+                v 1 1 0.005
+                vt 1 1
+                v 0 1 0.005
+                vt 0 1
+                g paper
+                f 1/1 2/2 3/3 4/4
+                """;
+        assertBroken(check(floor, ROOM_CORNER, T), WrapTruths.ISOMETRIC, "vertex 1 is 0.0 in", "nearer than its mitre");
+
+        String gap = """
+                o strip-1
+                v 0.005 0 0.005
+                vt 0 0
+                v 0.47 0 0.005
+                vt 0.465 0
+                v 0.47 1 0.005
+                vt 0.465 1
+                v 0.005 1 0.005
+                vt 0 1
+                g paper
+                f 1/1 2/2 3/3 4/4
+                o strip-2
+                v 0.53 0 0.005
+                vt 0 0
+                v 1 0 0.005
+                vt 0.47 0
+                v 1 1 0.005
+                vt 0.47 1
+                v 0.53 1 0.005
+                vt 0 1
+                g paper
+                f 5/5 6/6 7/7 8/8
+                o strip-3
+                v 0.005 0 0.005
+                vt 0 0
+                v 0.005 1 0.005
+                vt 1 0
+                v 0.005 1 1
+                vt 1 0.995
+                v 0.005 0 1
+                vt 0 0.995
+                g paper
+                f 9/9 10/10 11/11 12/12
+                """;
+        assertBroken(check(gap, INSIDE_CORNER.subList(0, 2), T), WrapTruths.COVERED, "lies under no paper face");
+        List<Violation> holed = check(gap, INSIDE_CORNER, T);
+        assertEquals(Set.of(WrapTruths.COVERED), truths(holed), "the wall's paper and the floor's keep every other truth");
+        assertTrue(holed.stream().allMatch(v -> !v.message().contains("model point (") || v.message().contains("of triangle 1 ")
+                || v.message().contains("of triangle 2 ")), "only the floor's gap is bare: " + holed);
+    }
 }
