@@ -333,6 +333,13 @@ public final class ScriptFolding {
         return best >= 0 && sheet.pose(best).mirrors();
     }
 
+    /** Whether paper edge a → b lies on the crease through (u1, v1) in direction (du, dv) of that length. */
+    private boolean onCrease(int a, int b, double u1, double v1, double du, double dv, double length) {
+        double da = (du * (sheet.v(a) - v1) - dv * (sheet.u(a) - u1)) / length;
+        double db = (du * (sheet.v(b) - v1) - dv * (sheet.u(b) - u1)) / length;
+        return Math.abs(da) <= sheet.tolerance() && Math.abs(db) <= sheet.tolerance() && a != b;
+    }
+
     /** A face beyond the crease with an edge on it, or failing that one on the near side; -1 if none touches it. */
     private int faceAlong(Set<Integer> moving, double u1, double v1, double u2, double v2) {
         double du = u2 - u1;
@@ -347,11 +354,9 @@ public final class ScriptFolding {
             for (int i = 0; i < loop.length; i++) {
                 int a = loop[i];
                 int b = loop[(i + 1) % loop.length];
-                double da = (du * (sheet.v(a) - v1) - dv * (sheet.u(a) - u1)) / length;
-                double db = (du * (sheet.v(b) - v1) - dv * (sheet.u(b) - u1)) / length;
                 int across = sheet.faceAcross(a, b);
-                if (Math.abs(da) <= sheet.tolerance() && Math.abs(db) <= sheet.tolerance() && a != b && across >= 0
-                        && !moving.contains(across) && (staying < 0 || across < staying)) {
+                if (onCrease(a, b, u1, v1, du, dv, length) && across >= 0 && !moving.contains(across)
+                        && (staying < 0 || across < staying)) {
                     staying = across;
                 }
             }
@@ -365,9 +370,7 @@ public final class ScriptFolding {
             for (int i = 0; i < loop.length; i++) {
                 int a = loop[i];
                 int b = loop[(i + 1) % loop.length];
-                double da = (du * (sheet.v(a) - v1) - dv * (sheet.u(a) - u1)) / length;
-                double db = (du * (sheet.v(b) - v1) - dv * (sheet.u(b) - u1)) / length;
-                if (Math.abs(da) <= sheet.tolerance() && Math.abs(db) <= sheet.tolerance() && a != b) {
+                if (onCrease(a, b, u1, v1, du, dv, length)) {
                     if (!moving.contains(f)) {
                         return f; // the paper that stays holds the crease where it is
                     }

@@ -301,7 +301,7 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
     }
 
     /** Edge k of the corners' polygon, from corner k to corner k + 1: {x, y of its start, dx, dy, its length}. */
-    private double[] edge(int k) {
+    public double[] edge(int k) {
         int n = corners.length / 2;
         double px = corners[2 * k];
         double py = corners[2 * k + 1];

@@ -102,7 +102,7 @@ final class BendRoom {
                 edges[k] = Math.min(edges[k], slope);
                 if (concave > 0) {
                     // Concave along this mesh edge only: the host's edge may go on convex beyond it.
-                    double[] edge = edgeOf(frame, k);
+                    double[] edge = frame.edge(k);
                     double sa = ((ax - edge[0]) * edge[2] + (ay - edge[1]) * edge[3]) / edge[4];
                     double sb = ((bx - edge[0]) * edge[2] + (by - edge[1]) * edge[3]) / edge[4];
                     List<Double> stretches = mitre.get(hostOf[near]).get(k);
@@ -156,17 +156,6 @@ final class BendRoom {
         // A wedge of air all but closed (the faces back to back) leaves paper no room: its
         // layers go as far in as the host lets them (HostFrame.keepFrom).
         return Math.min(1e6, Math.sqrt((1 - cos) / Math.max(1 + cos, 1e-12)));
-    }
-
-    /** Edge k of the frame's polygon: x, y of its first corner, dx, dy, its length. */
-    static double[] edgeOf(HostFrame frame, int k) {
-        double[] corners = frame.corners();
-        int n = corners.length / 2;
-        double px = corners[2 * k];
-        double py = corners[2 * k + 1];
-        double dx = corners[2 * ((k + 1) % n)] - px;
-        double dy = corners[2 * ((k + 1) % n) + 1] - py;
-        return new double[] {px, py, dx, dy, Math.hypot(dx, dy)};
     }
 
     private static double[] position(IndexedPolygons mesh, int v) {

@@ -77,7 +77,7 @@ final class ConcaveWalls {
                 continue;
             }
             NestedBends.Bend bend = bends.get(k);
-            double[] edge = edge(frames[bend.host()], edgeOf[k]);
+            double[] edge = frames[bend.host()].edge(edgeOf[k]);
             double sa = ((bend.ax() - edge[0]) * edge[2] + (bend.ay() - edge[1]) * edge[3]) / edge[4];
             double sb = ((bend.bx() - edge[0]) * edge[2] + (bend.by() - edge[1]) * edge[3]) / edge[4];
             double in = most.get(key(bend.host(), edgeOf[k])) - ranks[k] * thickness;
@@ -131,7 +131,7 @@ final class ConcaveWalls {
                     || frame.mitreAlong(k, bend.ax(), bend.ay(), bend.bx(), bend.by(), tolerance) == 0) {
                 continue;
             }
-            double[] edge = edge(frame, k);
+            double[] edge = frame.edge(k);
             double sa = ((bend.ax() - edge[0]) * edge[2] + (bend.ay() - edge[1]) * edge[3]) / edge[4];
             double sb = ((bend.bx() - edge[0]) * edge[2] + (bend.by() - edge[1]) * edge[3]) / edge[4];
             if (Math.min(edge[4], Math.max(sa, sb)) - Math.max(0, Math.min(sa, sb)) > tolerance) {
@@ -139,17 +139,6 @@ final class ConcaveWalls {
             }
         }
         return -1;
-    }
-
-    /** Edge k of the frame's polygon: x, y of its first corner, dx, dy, its length. */
-    private static double[] edge(HostFrame frame, int k) {
-        double[] corners = frame.corners();
-        int n = corners.length / 2;
-        double px = corners[2 * k];
-        double py = corners[2 * k + 1];
-        double dx = corners[2 * ((k + 1) % n)] - px;
-        double dy = corners[2 * ((k + 1) % n) + 1] - py;
-        return new double[] {px, py, dx, dy, Math.hypot(dx, dy)};
     }
 
     private static long key(int host, int edge) {

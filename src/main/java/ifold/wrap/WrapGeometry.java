@@ -134,18 +134,12 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
             // paper of its layers ends on its wall (ConcaveWalls), which places the vertices.
             List<NestedBends.Bend> bends = new ArrayList<>();
             List<int[]> bendEdges = new ArrayList<>();
-            for (int f = 0; f < faces; f++) {
-                int[] loop = sheet.loop(f);
-                for (int i = 0; i < loop.length; i++) {
-                    int a = loop[i];
-                    int b = loop[(i + 1) % loop.length];
-                    int g = sheet.faceAcross(a, b);
-                    if (g > f && sheet.host(f) == sheet.host(g) && levels[f] != levels[g]) {
-                        bends.add(bend(f, g, a, b));
-                        bendEdges.add(new int[] {f, i, g, a, b});
-                    }
+            forEachJoin((f, i, g, a, b) -> {
+                if (isBend(f, g)) {
+                    bends.add(bend(f, g, a, b));
+                    bendEdges.add(new int[] {f, i, g, a, b});
                 }
-            }
+            });
             NestedBends nested = NestedBends.of(bends, sheet.thickness() * NEST_TOLERANCE);
             int[] ranks = nested.ranks();
             walls = ConcaveWalls.of(bends, ranks, frames, sheet.thickness(), sheet.tolerance());
@@ -165,26 +159,20 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
             }
             List<int[]> caps = new ArrayList<>();
             List<Integer> capAfter = new ArrayList<>();
-            for (int f = 0; f < faces; f++) {
-                int[] loop = sheet.loop(f);
-                for (int i = 0; i < loop.length; i++) {
-                    int a = loop[i];
-                    int b = loop[(i + 1) % loop.length];
-                    int g = sheet.faceAcross(a, b);
-                    if (g <= f || sheet.host(f) == sheet.host(g) && levels[f] != levels[g]) {
-                        continue; // the border, the pair seen from g already, or a bend (below)
-                    }
-                    int fa = corners[f][i];
-                    int fb = corners[f][(i + 1) % loop.length];
-                    int ga = cornerOf(g, a, corners[g]);
-                    int gb = cornerOf(g, b, corners[g]);
-                    if ((fa == ga || samePlace(fa, ga)) && (fb == gb || samePlace(fb, gb))) {
-                        continue; // the paper runs on flat, or bends over an edge with no thickness
-                    }
-                    caps.add(new int[] {fa, fb, gb, ga});
-                    capAfter.add(g);
+            forEachJoin((f, i, g, a, b) -> {
+                if (isBend(f, g)) {
+                    return; // below, once every bend is known
                 }
-            }
+                int fa = corners[f][i];
+                int fb = corners[f][(i + 1) % corners[f].length];
+                int ga = cornerOf(g, a, corners[g]);
+                int gb = cornerOf(g, b, corners[g]);
+                if ((fa == ga || samePlace(fa, ga)) && (fb == gb || samePlace(fb, gb))) {
+                    return; // the paper runs on flat, or bends over an edge with no thickness
+                }
+                caps.add(new int[] {fa, fb, gb, ga});
+                capAfter.add(g);
+            });
             List<int[]> bendCorners = new ArrayList<>();
             for (int[] edge : bendEdges) {
                 int f = edge[0];
@@ -250,6 +238,31 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     : new Creep(java.util.Arrays.copyOf(creptVertices, creptCount), java.util.Arrays.copyOf(creptFrom, 3 * creptCount));
             return new WrapGeometry(java.util.Arrays.copyOf(xyz, 3 * vertices), java.util.Arrays.copyOf(uv, 2 * vertices), paper,
                     hosts, caps, capAfter.stream().mapToInt(Integer::intValue).toArray(), creep);
+        }
+
+        /** What is done with two faces f and g (g > f) joined along paper edge a → b, edge i of f. */
+        private interface Join {
+            void of(int f, int i, int g, int a, int b);
+        }
+
+        /** Each pair of faces joined on the sheet, once. */
+        private void forEachJoin(Join join) {
+            for (int f = 0; f < sheet.faceCount(); f++) {
+                int[] loop = sheet.loop(f);
+                for (int i = 0; i < loop.length; i++) {
+                    int a = loop[i];
+                    int b = loop[(i + 1) % loop.length];
+                    int g = sheet.faceAcross(a, b);
+                    if (g > f) {
+                        join.of(f, i, g, a, b);
+                    }
+                }
+            }
+        }
+
+        /** Whether faces f and g, joined on the sheet, are folded flat onto each other: one host, two levels. */
+        private boolean isBend(int f, int g) {
+            return sheet.host(f) == sheet.host(g) && levels[f] != levels[g];
         }
 
         private int cornerOf(int g, int paperVertex, int[] placed) {

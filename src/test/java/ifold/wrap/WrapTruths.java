@@ -1087,32 +1087,36 @@ public final class WrapTruths {
         geometry.grid.query(Math.min(p[0], p[0] + reach * n[0]) - around, Math.min(p[1], p[1] + reach * n[1]) - around,
                 Math.min(p[2], p[2] + reach * n[2]) - around, Math.max(p[0], p[0] + reach * n[0]) + around,
                 Math.max(p[1], p[1] + reach * n[1]) + around, Math.max(p[2], p[2] + reach * n[2]) + around, candidates);
-        double[] q = new double[3];
         for (int k = 0; k < candidates.size(); k++) {
             int f = geometry.paper[candidates.get(k)];
-            if (!parallel(geometry.normal(f), n)) {
-                continue;
-            }
-            double[] centre = geometry.centre(f);
-            double height = n[0] * (centre[0] - p[0]) + n[1] * (centre[1] - p[1]) + n[2] * (centre[2] - p[2]);
-            if (height < -eps || height > top + eps) {
-                continue;
-            }
-            for (int d = 0; d < 3; d++) {
-                q[d] = p[d] + height * n[d];
-            }
-            if (geometry.spaceDepth(f, q) >= -widest - eps && crept[f]) {
+            if (crept[f] && depthOver(geometry, f, p, n, top, eps) >= -widest - eps) {
                 return true;
             }
         }
         return false;
     }
 
+    /**
+     * How deep model point p, on a triangle of outward normal n, lies under paper face f, seen
+     * along n (positive inside it, negative beyond its edges); minus infinity where f is not
+     * parallel to the triangle, or not between 0 and {@code top} above it.
+     */
+    private static double depthOver(Faces geometry, int f, double[] p, double[] n, double top, double eps) {
+        if (!parallel(geometry.normal(f), n)) {
+            return Double.NEGATIVE_INFINITY;
+        }
+        double[] centre = geometry.centre(f);
+        double height = n[0] * (centre[0] - p[0]) + n[1] * (centre[1] - p[1]) + n[2] * (centre[2] - p[2]);
+        if (height < -eps || height > top + eps) {
+            return Double.NEGATIVE_INFINITY;
+        }
+        return geometry.spaceDepth(f, new double[] {p[0] + height * n[0], p[1] + height * n[1], p[2] + height * n[2]});
+    }
+
     private void checkCovered(Report report, Model model, Faces geometry, double eps, double top, int samples, long seed,
             List<ConcaveSide> concave, boolean[] crept) {
         SplittableRandom random = new SplittableRandom(seed);
         double[] p = new double[3];
-        double[] q = new double[3];
         Ints candidates = new Ints();
         int uncovered = 0;
         for (int i = 0; i < samples; i++) {
@@ -1131,19 +1135,7 @@ public final class WrapTruths {
                     Math.max(p[1], p[1] + reach * n[1]) + eps, Math.max(p[2], p[2] + reach * n[2]) + eps, candidates);
             boolean covered = false;
             for (int k = 0; k < candidates.size() && !covered; k++) {
-                int f = geometry.paper[candidates.get(k)];
-                if (!parallel(geometry.normal(f), n)) {
-                    continue;
-                }
-                double[] centre = geometry.centre(f);
-                double height = n[0] * (centre[0] - p[0]) + n[1] * (centre[1] - p[1]) + n[2] * (centre[2] - p[2]);
-                if (height < -eps || height > top + eps) {
-                    continue;
-                }
-                for (int d = 0; d < 3; d++) {
-                    q[d] = p[d] + height * n[d];
-                }
-                covered = geometry.spaceDepth(f, q) >= -eps;
+                covered = depthOver(geometry, geometry.paper[candidates.get(k)], p, n, top, eps) >= -eps;
             }
             if (!covered && !inCreepZone(p, n, concave, top, eps) && !nearPaper(p, n, geometry, concave, top, eps, candidates, crept)) {
                 uncovered++;
