@@ -449,7 +449,8 @@ public final class WrapView {
                 for (int j = 0; j < n; j += per) {
                     int end = Math.min(n, j + per);
                     beats.add(new int[] {-1, j, end});
-                    captions.add(per == 1 ? null : describeStep(j) + " (folds " + (j + 1) + "\u2013" + end + " of " + n + ")");
+                    captions.add(per == 1 ? null : describeStep(j) + (end - j == 1 ? " (fold " + end : " (folds " + (j + 1) + "\u2013" + end)
+                            + " of " + n + ")");
                 }
             } else {
                 int first = withSteps.get(0);
@@ -964,13 +965,19 @@ public final class WrapView {
                         + (triangles == 1 ? " triangle" : " triangles");
             }
             int beat = beatAt(position);
-            if (beatCaption[beat] != null) {
-                return beatCaption[beat];
-            }
-            int j = Math.min(steps.size() - 1, (int) Math.floor(along(position)));
             // On a lone triangle the camera turns under for the tucks: what is seen is the underside.
             double middle = along(beat * beatLength + beatLength / 2);
-            return describeStep(j) + (underAt(middle) > 0.5 ? " (seen from below)" : "");
+            String below = underAt(middle) > 0.5 ? " (seen from below)" : "";
+            if (beatCaption[beat] != null) {
+                // A beat of several folds is seen from below all through only where each is a tuck.
+                boolean tucks = triangles == 1;
+                for (int j = 0; j < steps.size() && tucks; j++) {
+                    tucks = beatOfStep[j] != beat || steps.get(j).kind() == Wrap.Kind.TUCK;
+                }
+                return beatCaption[beat] + (tucks ? below : "");
+            }
+            int j = Math.min(steps.size() - 1, (int) Math.floor(along(position)));
+            return describeStep(j) + below;
         }
     }
 

@@ -53,6 +53,22 @@ class ZigZagSceneTest {
         // And at every moment, not just the middles: while a caption says "seen from below", the
         // camera is below the triangle (the last tuck's caption stayed on screen for 0.7 s of a
         // movie after the camera had come back up).
+        assertCaptionsSeenFromBelowOnlyFromBelow(scene, playback);
+        // A short movie groups the folds a caption each (--seconds 20): the grouped tucks are seen
+        // from below too, and a group of one fold is "fold 13 of 13", not "folds 13-13".
+        playback.pace(20);
+        assertCaptionsSeenFromBelowOnlyFromBelow(scene, playback);
+        boolean groupedTuck = false;
+        for (int k = 0; k <= 2000; k++) {
+            String caption = playback.describe(playback.halfTurn() * k / 2000);
+            assertFalse(caption.matches(".*folds (\\d+)\u2013\\1 of.*"), caption);
+            groupedTuck |= caption.startsWith("tuck") && caption.endsWith("(seen from below)");
+        }
+        assertTrue(groupedTuck, "check the setup: a grouped tuck's caption");
+    }
+
+    /** While a caption says "seen from below", the camera is below the triangle (in z = 0, its normal +z), at every moment. */
+    private static void assertCaptionsSeenFromBelowOnlyFromBelow(Scene scene, WrapView.Playback playback) {
         org.joml.Vector3d eye = new org.joml.Vector3d();
         int below = 0;
         for (int k = 0; k <= 2000; k++) {
@@ -61,7 +77,7 @@ class ZigZagSceneTest {
             String caption = playback.describe(position);
             if (caption.endsWith("(seen from below)")) {
                 below++;
-                double height = scene.camera().eye(eye).z; // the triangle lies in z = 0, its normal +z
+                double height = scene.camera().eye(eye).z;
                 assertTrue(height < 0, "at " + position + " the caption says \"" + caption + "\" and the camera is at height " + height);
             }
         }
