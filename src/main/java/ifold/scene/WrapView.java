@@ -4,6 +4,7 @@ import ifold.mesh.IndexedPolygons;
 import ifold.sheet.HostFrame;
 import ifold.sheet.Isometry2;
 import ifold.sheet.Sheet;
+import ifold.sheet.Tuck;
 import ifold.wrap.CoveredPaper;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapGeometry;
@@ -822,7 +823,7 @@ public final class WrapView {
                 lastStep++;
             }
             for (int q = lastStep; q > j; q--) {
-                Sheet.Tuck tuck = steps.get(q).tuck();
+                Tuck tuck = steps.get(q).tuck();
                 if (tuck == null) {
                     continue;
                 }
@@ -837,7 +838,7 @@ public final class WrapView {
             // A tuck being shown: its faces are cut already, and the flap turns from where it lay
             // (its reflection back over the tuck line) to under the paper.
             java.util.Set<Integer> turning = new java.util.HashSet<>();
-            Sheet.Tuck shownTuck = step.kind() == Wrap.Kind.TUCK ? step.tuck() : null;
+            Tuck shownTuck = step.kind() == Wrap.Kind.TUCK ? step.tuck() : null;
             if (shownTuck != null) {
                 Isometry2 back = Isometry2.reflection(shownTuck.px(), shownTuck.py(), shownTuck.dx(), shownTuck.dy());
                 for (int f : shownTuck.moved()) {

@@ -12,6 +12,7 @@ import ifold.sheet.FoldException;
 import ifold.sheet.HostFrame;
 import ifold.sheet.Isometry2;
 import ifold.sheet.Sheet;
+import ifold.sheet.SheetEdit;
 import ifold.sheet.Sheet.Placement;
 import java.util.ArrayList;
 import java.util.HashSet;
@@ -123,7 +124,7 @@ public final class ScriptFolding {
 
     private void fold(FoldScript.Step fold) throws FoldScriptException, FoldException {
         int[] levelsBefore = sheet.levels();
-        Sheet.Edit edit = sheet.edit();
+        SheetEdit edit = sheet.edit();
         int host;
         double[] from2;
         double[] to2;
@@ -254,7 +255,7 @@ public final class ScriptFolding {
         }
 
         // The journal, with what came after, for the animation.
-        Sheet.Edit.Journal journal = edit.journal();
+        SheetEdit.Journal journal = edit.journal();
         int[] levelsAfter = sheet.levels();
         int facesBefore = journal.facesBefore();
         Map<Integer, Integer> index = new LinkedHashMap<>();

@@ -51,147 +51,62 @@ public final class Sheet {
     /** Why the paper is creased along an edge of the sheet. */
     public enum Crease { TURN, GADGET, CROSSING, TUCK, FOLD }
 
-    private final double width;
-    private final double thickness;
-    private final double tolerance;
+    final double width;
+    final double thickness;
+    final double tolerance;
     /** The faces as placed on their hosts, and the tests of one against another. */
-    private final PlacedFaces placedFaces;
+    final PlacedFaces placedFaces;
+    /** Where each face laid lands in its host's stack. */
+    final Landing landing = new Landing(this);
 
-    private double[] uv = new double[64];
-    private int vertexCount;
+    double[] uv = new double[64];
+    int vertexCount;
 
-    private final List<int[]> loops = new ArrayList<>();
-    private int[] hostOf = new int[16];
+    final List<int[]> loops = new ArrayList<>();
+    int[] hostOf = new int[16];
     /**
      * How each face came to be where it is: the kind of the fold of the tail that laid it (its
      * crease's ordinal + 1; 0 for the strip's first face, or a sheet's), plus {@link #TUCKED}
      * once a tuck has moved it, and {@link #SEALED} once its host is {@link #settle settled}. A
      * face cut from another inherits it.
      */
-    private byte[] originOf = new byte[16];
-    private static final int TUCKED = 16;
-    private static final int SEALED = 32;
+    byte[] originOf = new byte[16];
+    static final int TUCKED = 16;
+    static final int SEALED = 32;
     /** The kind of the tail's last crease, which the next face laid from the tail comes after; null before any. */
-    private Crease lastTailCrease;
-    private final List<Isometry2> poseOf = new ArrayList<>();
+    Crease lastTailCrease;
+    final List<Isometry2> poseOf = new ArrayList<>();
     /** The face to the left of each directed paper edge a → b, keyed a << 32 | b. */
-    private final LongIntMap faceOfEdge = new LongIntMap();
+    final LongIntMap faceOfEdge = new LongIntMap();
     /**
      * The creases, keyed by their lower vertex << 32 | the higher: each its kind and the fold
      * that made it, as kind + {@link #CREASES}.length × fold (see {@link #creaseFold}).
      */
-    private final LongIntMap creases = new LongIntMap();
-    private static final Crease[] CREASES = Crease.values();
+    final LongIntMap creases = new LongIntMap();
+    static final Crease[] CREASES = Crease.values();
     /** The folds that made creases so far: the next one's number. */
-    private int creasingFolds;
-    private final Map<Integer, Stack> stacks = new HashMap<>();
+    int creasingFolds;
+    final Map<Integer, Stack> stacks = new HashMap<>();
 
-    private int tailA;
-    private int tailB;
-    private int tailHost;
-    private Isometry2 tailPose;
-    private Placement tailPlacement = Placement.OVER;
+    int tailA;
+    int tailB;
+    int tailHost;
+    Isometry2 tailPose;
+    Placement tailPlacement = Placement.OVER;
     /** Whether the next piece of the tail laid lands over all it overlaps ({@link #liftTail}). */
-    private boolean tailLifted;
+    boolean tailLifted;
     /** The face the tail ran on from when it was lifted, on its host, for the next face laid; else -1. */
-    private int liftedFrom = -1;
-    private double length = Double.NaN;
+    int liftedFrom = -1;
+    double length = Double.NaN;
 
     /** Each face's place in its stack's list of faces. */
-    private int[] slotOf = new int[16];
+    int[] slotOf = new int[16];
     /**
      * How far, relative to u, a crease's place on the tail may stray by the rounding of the
      * poses composed fold after fold: about the square root of the folds times the rounding of
      * one, 1e-16; a million folds, 1e-13; this leaves ten times that.
      */
-    private static final double POSE_DRIFT = 1e-12;
-
-    /** From how many faces a stack finds the faces a new one overlaps through a grid rather than by looking at all. */
-    private static final int GRID_FROM = 32;
-
-    /** The faces resting on one host and their order. */
-    private final class Stack {
-        int[] faces = new int[8];
-        int count;
-        /** Pairs (above << 32 | below) of overlapping faces. */
-        LongList above = new LongList();
-        int[] levels;
-        int top = -1;
-        /**
-         * The faces by where they lie, once the stack is big enough. A face that moves or leaves
-         * stays listed where it was ({@link #near} passes over it, and the faces it finds are
-         * only candidates): the grid is made again once those are as many as the faces, not at
-         * each tuck, which cost a big host's every face each time.
-         */
-        FaceGrid grid;
-        /** The faces listed in the grid since it was made, those gone or moved since included. */
-        int gridListed;
-
-        void add(int f) {
-            if (count == faces.length) {
-                faces = Arrays.copyOf(faces, 2 * count);
-            }
-            slotOf[f] = count;
-            faces[count++] = f;
-            levels = null;
-            if (grid != null) {
-                grid.add(f, placedFaces.polygon(f));
-                gridListed++;
-            }
-        }
-
-        void remove(Set<Integer> gone) {
-            int n = 0;
-            for (int i = 0; i < count; i++) {
-                if (!gone.contains(faces[i])) {
-                    slotOf[faces[i]] = n;
-                    faces[n++] = faces[i];
-                }
-            }
-            count = n;
-            levels = null;
-        }
-
-        /**
-         * The places in the stack, in order, of the faces that may overlap face f (listed in the
-         * grid cells its polygon meets): all of them while the stack is small.
-         */
-        int[] near(int f) {
-            if (grid != null && gridListed > 2 * count + GRID_FROM) {
-                grid = null; // more listed faces gone or moved than there are faces
-            }
-            if (count >= GRID_FROM && grid == null) {
-                double[][] polygons = new double[count][];
-                for (int i = 0; i < count; i++) {
-                    polygons[i] = placedFaces.polygon(faces[i]);
-                }
-                grid = new FaceGrid(FaceGrid.cellFor(polygons, count, 2 * width));
-                for (int i = 0; i < count; i++) {
-                    grid.add(faces[i], polygons[i]);
-                }
-                gridListed = count;
-            }
-            int[] listed = grid == null ? null : grid.near(placedFaces.polygon(f));
-            if (listed != null) {
-                // Faces that left the stack stay listed: only those still in it, by their place.
-                int[] slots = new int[listed.length];
-                int n = 0;
-                for (int g : listed) {
-                    if (g != f && slotOf[g] < count && faces[slotOf[g]] == g) {
-                        slots[n++] = slotOf[g];
-                    }
-                }
-                slots = Arrays.copyOf(slots, n);
-                Arrays.sort(slots);
-                return slots;
-            }
-            int[] all = new int[count];
-            for (int i = 0; i < count; i++) {
-                all[i] = i;
-            }
-            return all;
-        }
-    }
+    static final double POSE_DRIFT = 1e-12;
 
     /**
      * A strip of width {@code width} whose start, the edge u = 0, lies on {@code host} where
@@ -228,7 +143,7 @@ public final class Sheet {
         Sheet sheet = new Sheet(width, thickness, tolerance, host, pose);
         int a = sheet.addVertex(length, 0);
         int b = sheet.addVertex(length, width);
-        sheet.addFace(new int[] {sheet.tailA, a, b, sheet.tailB}, host, pose, Placement.OVER, -1);
+        sheet.landing.addFace(new int[] {sheet.tailA, a, b, sheet.tailB}, host, pose, Placement.OVER, -1);
         sheet.length = length;
         return sheet;
     }
@@ -287,7 +202,7 @@ public final class Sheet {
         int a = addVertex(end, 0);
         int b = addVertex(end, width);
         int[] loop = {tailA, a, b, tailB};
-        int face = addFace(loop, tailHost, tailPose, tailPlacement, tailHinge(loop));
+        int face = landing.addFace(loop, tailHost, tailPose, tailPlacement, tailHinge(loop));
         originOf[face] = (byte) (lastTailCrease == null ? 0 : lastTailCrease.ordinal() + 1);
         length = end;
         tailA = a;
@@ -321,7 +236,7 @@ public final class Sheet {
     }
 
     /** u and u at v = 0 and v = w where the host line meets the strip, as the tail lies. */
-    private double[] creaseOnTail(double px, double py, double dx, double dy) throws FoldException {
+    double[] creaseOnTail(double px, double py, double dx, double dy) throws FoldException {
         Isometry2 inverse = tailPose.inverse();
         double pu = inverse.x(px, py);
         double pv = inverse.y(px, py);
@@ -333,7 +248,7 @@ public final class Sheet {
         return new double[] {pu + (0 - pv) / dv * du, pu + (width - pv) / dv * du};
     }
 
-    private int cutTail(double px, double py, double dx, double dy, Crease kind) throws FoldException {
+    int cutTail(double px, double py, double dx, double dy, Crease kind) throws FoldException {
         if (!Double.isNaN(length)) {
             throw new IllegalStateException("the strip has ended");
         }
@@ -361,7 +276,7 @@ public final class Sheet {
         int a = sameA ? tailA : addVertex(at[0], 0);
         int b = sameB ? tailB : addVertex(at[1], width);
         int[] loop = sameA ? new int[] {tailA, b, tailB} : sameB ? new int[] {tailA, a, tailB} : new int[] {tailA, a, b, tailB};
-        int face = addFace(loop, tailHost, tailPose, tailPlacement, tailHinge(loop));
+        int face = landing.addFace(loop, tailHost, tailPose, tailPlacement, tailHinge(loop));
         originOf[face] = (byte) (lastTailCrease == null ? 0 : lastTailCrease.ordinal() + 1);
         lastTailCrease = kind;
         creases.put(undirected(a, b), kind.ordinal() + CREASES.length * creasingFolds++);
@@ -374,24 +289,6 @@ public final class Sheet {
     // ---------------------------------------------------------------- tucks
 
     /**
-     * What a tuck did.
-     *
-     * @param host the host whose paper was tucked
-     * @param moved the faces that turned under (after cutting)
-     * @param px a point of the tuck line, in the host's frame
-     * @param py its y
-     * @param dx the line's direction; the paper on its right turned
-     * @param dy its y
-     * @param facesBefore the faces of the sheet before the tuck: those from it on were cut off by it
-     * @param changed the faces that were there before and were cut or moved
-     * @param loopsBefore their loops before the tuck
-     * @param posesBefore their poses before the tuck
-     */
-    public record Tuck(int host, int[] moved, double px, double py, double dx, double dy, int facesBefore, int[] changed,
-            int[][] loopsBefore, Isometry2[] posesBefore) {
-    }
-
-    /**
      * Tucks the paper resting on {@code host} to the right of the directed line through (px, py)
      * with direction (dx, dy) under the host's other paper: faces the line crosses are cut, the
      * part beyond it is reflected over the line and slid under what it lands below.
@@ -400,755 +297,12 @@ public final class Sheet {
      *     the rest by anything but the line (tucking it would tear the strip)
      */
     public Tuck tuck(int host, double px, double py, double dx, double dy) throws FoldException {
-        if (stacks.get(host) == null) {
-            throw new FoldException("no paper rests on triangle " + host);
-        }
-        Edit edit = edit();
-        int[] beyond = edit.cutOnHost(host, px, py, dx, dy);
-        if (beyond.length == 0) {
-            throw new FoldException("nothing to tuck: no paper on triangle " + host + " lies beyond the line");
-        }
-        Set<Integer> moving = new HashSet<>();
-        for (int f : beyond) {
-            moving.add(f);
-        }
-        double length = Math.hypot(dx, dy);
-        double nx = dy / length;
-        double ny = -dx / length;
-        double c = nx * px + ny * py;
-        // The flap may be joined to the rest only along the tuck line.
-        for (int f : moving) {
-            int[] loop = loops.get(f);
-            Isometry2 pose = poseOf.get(f);
-            for (int i = 0; i < loop.length; i++) {
-                int a = loop[i];
-                int b = loop[(i + 1) % loop.length];
-                int across = faceOfEdge.get(directed(b, a), -1);
-                if (across < 0 || moving.contains(across)) {
-                    continue;
-                }
-                double da = nx * pose.x(u(a), v(a)) + ny * pose.y(u(a), v(a)) - c;
-                double db = nx * pose.x(u(b), v(b)) + ny * pose.y(u(b), v(b)) - c;
-                // On the line to twice the tolerance: the crease's ends and the line were each
-                // placed to the tolerance (a 4,000-triangle torus had a turn's crease end 1.003
-                // tolerances off the tuck line along the same triangle edge); far along a long
-                // strip, to the tolerance its poses' rounding has grown to.
-                if (Math.abs(da) > 2 * toleranceAt(u(a)) || Math.abs(db) > 2 * toleranceAt(u(b))) {
-                    throw new FoldException("tucking under triangle " + host + " would tear the strip: paper beyond the line"
-                            + " is joined to paper that stays by a crease off the line");
-                }
-            }
-        }
-        edit.crease(moving, Crease.TUCK);
-        edit.tuckUnder(moving, Isometry2.reflection(px, py, dx, dy), nx, ny, c);
-        for (int f : moving) {
-            originOf[f] |= TUCKED;
-        }
-        Edit.Journal journal = edit.journal();
-        int[] moved = moving.stream().mapToInt(Integer::intValue).sorted().toArray();
-        return new Tuck(host, moved, px, py, dx, dy, journal.facesBefore(), journal.changed(), journal.loopsBefore(),
-                journal.posesBefore());
+        return TuckPlacement.tuck(this, host, px, py, dx, dy);
     }
 
     /** Begins an edit of the laid paper: cuts and moves of faces, journaled. */
-    public Edit edit() {
-        return new Edit();
-    }
-
-    /**
-     * An edit of the paper already laid, as a fold of it makes: cut faces along a line, then
-     * move some of them to a host (the same one, reflected, or another) over or under the paper
-     * there. Every face it cuts or moves is journaled with its loop, pose and host before, for
-     * the animation.
-     */
-    public final class Edit {
-        private final int facesBefore = loops.size();
-        private final Map<Integer, Integer> journalIndex = new HashMap<>();
-        private final List<Integer> changedFaces = new ArrayList<>();
-        private final List<int[]> loopsBefore = new ArrayList<>();
-        private final List<Isometry2> posesBefore = new ArrayList<>();
-        private final List<Integer> hostsBefore = new ArrayList<>();
-        private final Map<Long, Integer> splitOfEdge = new HashMap<>();
-        /** Faces whose shape changed (cut, or made by a cut): their relations are checked again. */
-        private final Set<Integer> reshaped = new HashSet<>();
-        /** For each face made by a cut, the face it was cut from. */
-        private final List<Integer> parents = new ArrayList<>();
-        /** Whether a cut ran along a line on the sheet rather than on a host. */
-        private boolean sheetCut;
-
-        private Edit() {
-        }
-
-        /**
-         * What the edit did.
-         *
-         * @param facesBefore the faces before it: those from it on were cut off by it
-         * @param changed the faces there before that it cut or moved
-         * @param loopsBefore their loops before
-         * @param posesBefore their poses before
-         * @param hostsBefore their hosts before
-         * @param parents for each face made by the edit (facesBefore, facesBefore + 1, ...), the
-         *     face there before that it was cut from
-         */
-        public record Journal(int facesBefore, int[] changed, int[][] loopsBefore, Isometry2[] posesBefore, int[] hostsBefore,
-                int[] parents) {
-            /** The face there before the edit that face g was cut from (g itself if it was there). */
-            public int parentOf(int g) {
-                return g < facesBefore ? g : parents[g - facesBefore];
-            }
-        }
-
-        public Journal journal() {
-            return new Journal(facesBefore, changedFaces.stream().mapToInt(Integer::intValue).toArray(),
-                    loopsBefore.toArray(new int[0][]), posesBefore.toArray(new Isometry2[0]),
-                    hostsBefore.stream().mapToInt(Integer::intValue).toArray(), parents.stream().mapToInt(Integer::intValue).toArray());
-        }
-
-        private void note(int f) {
-            if (f < facesBefore && !journalIndex.containsKey(f)) {
-                journalIndex.put(f, changedFaces.size());
-                changedFaces.add(f);
-                loopsBefore.add(loops.get(f));
-                posesBefore.add(poseOf.get(f));
-                hostsBefore.add(hostOf[f]);
-            }
-        }
-
-        /**
-         * Cuts the faces on {@code host} that the directed line through (px, py) with direction
-         * (dx, dy), in the host's frame, crosses.
-         *
-         * @return the faces of the host right of the line, after cutting
-         */
-        public int[] cutOnHost(int host, double px, double py, double dx, double dy) {
-            Stack stack = stacks.get(host);
-            if (stack == null) {
-                return new int[0];
-            }
-            double length = Math.hypot(dx, dy);
-            double nx = dy / length; // right of the direction
-            double ny = -dx / length;
-            double c = nx * px + ny * py;
-            return cut(Arrays.copyOf(stack.faces, stack.count), nx, ny, c, false);
-        }
-
-        /**
-         * Cuts every face the directed line through paper points (u1, v1) and (u2, v2) crosses,
-         * wherever it lies.
-         *
-         * @return the faces right of the line on the sheet (seen from its top), after cutting
-         */
-        public int[] cutOnSheet(double u1, double v1, double u2, double v2) {
-            double du = u2 - u1;
-            double dv = v2 - v1;
-            double length = Math.hypot(du, dv);
-            double nu = dv / length;
-            double nv = -du / length;
-            double c = nu * u1 + nv * v1;
-            sheetCut = true;
-            int[] all = new int[loops.size()];
-            for (int f = 0; f < all.length; f++) {
-                all[f] = f;
-            }
-            return cut(all, nu, nv, c, true);
-        }
-
-        /**
-         * Cuts those of {@code faces} that the line n·p = c crosses (p in their host's frame, or
-         * on the sheet): each keeps its near side, a new face takes the far side.
-         *
-         * @return the faces beyond the line, after cutting
-         */
-        private int[] cut(int[] faces, double nx, double ny, double c, boolean onSheet) {
-            List<Integer> beyond = new ArrayList<>();
-            Map<Integer, Map<Integer, Integer>> partsByHost = new HashMap<>();
-            for (int f : faces) {
-                double[] range = range(f, nx, ny, c, onSheet);
-                if (range[1] <= tolerance) {
-                    continue;
-                }
-                note(f);
-                if (range[0] >= -tolerance) {
-                    beyond.add(f);
-                    continue;
-                }
-                int g = split(f, nx, ny, c, onSheet, splitOfEdge, this);
-                partsByHost.computeIfAbsent(hostOf[f], h -> new HashMap<>()).put(f, g);
-                beyond.add(g);
-            }
-            // Each new part inherits its face's relations, in one pass over each stack's (a cut
-            // across a deep stack splits thousands of faces); those that no longer overlap are
-            // dropped later.
-            for (Map.Entry<Integer, Map<Integer, Integer>> entry : partsByHost.entrySet()) {
-                Stack stack = stacks.get(entry.getKey());
-                Map<Integer, Integer> partOf = entry.getValue();
-                LongList inherited = new LongList();
-                for (int r = 0; r < stack.above.size(); r++) {
-                    long pair = stack.above.get(r);
-                    Integer upper = partOf.get((int) (pair >>> 32));
-                    Integer lower = partOf.get((int) pair);
-                    if (upper != null) {
-                        inherited.add(((long) upper << 32) | (pair & 0xffffffffL));
-                    }
-                    if (lower != null) {
-                        inherited.add((pair & ~0xffffffffL) | lower);
-                    }
-                    if (upper != null && lower != null) {
-                        inherited.add(((long) upper << 32) | lower);
-                    }
-                }
-                stack.above.addAll(inherited);
-            }
-            return beyond.stream().mapToInt(Integer::intValue).toArray();
-        }
-
-        private double[] range(int f, double nx, double ny, double c, boolean onSheet) {
-            int[] loop = loops.get(f);
-            Isometry2 pose = poseOf.get(f);
-            double min = Double.POSITIVE_INFINITY;
-            double max = Double.NEGATIVE_INFINITY;
-            for (int v : loop) {
-                double d = onSheet ? nx * u(v) + ny * v(v) - c : nx * pose.x(u(v), v(v)) + ny * pose.y(u(v), v(v)) - c;
-                min = Math.min(min, d);
-                max = Math.max(max, d);
-            }
-            return new double[] {min, max};
-        }
-
-        /** Marks the paper edges between {@code moving} faces and the rest as creases of {@code kind}, where they are not creases already. */
-        public void crease(Set<Integer> moving, Crease kind) {
-            int value = kind.ordinal() + CREASES.length * creasingFolds++;
-            for (int f : moving) {
-                int[] loop = loops.get(f);
-                for (int i = 0; i < loop.length; i++) {
-                    int a = loop[i];
-                    int b = loop[(i + 1) % loop.length];
-                    int across = faceOfEdge.get(directed(b, a), -1);
-                    if (across >= 0 && !moving.contains(across) && creases.get(undirected(a, b), -1) < 0) {
-                        creases.put(undirected(a, b), value);
-                    }
-                }
-            }
-        }
-
-        /**
-         * Moves {@code faces}, all resting on one host, to {@code toHost} (which may be the same):
-         * each pose is composed with {@code frameChange}, which maps the old host's frame to the
-         * new one's. Their order among themselves is kept, or reversed where the change mirrors
-         * (the paper turned over); where they overlap paper already on the new host they land
-         * {@code placement} it.
-         */
-        public void move(Set<Integer> faces, int toHost, Isometry2 frameChange, Placement placement) {
-            move(faces, toHost, frameChange, placement, null, null);
-        }
-
-        /**
-         * Tucks {@code faces}, resting on one host, across the fold line (nx, ny)·p = c: as
-         * {@link #move} does with {@link Placement#UNDER}, their own order reversed, so that
-         * their layers nest about the line as they did before (flat folding's taco-taco
-         * condition), but not so that paper going on across the line to another host (a strip
-         * crossing the edge) lies between the flap and the paper it is folded from, its hinges:
-         * the flap would wrap around that strip, which paper cannot (taco-tortilla). The flap
-         * goes as one: under all it overlaps but such strips below the lowest of its hinges (the
-         * staying faces it is joined to) and the paper below them (in the stack's order, through
-         * its relations): just above those. Paper that only lies near them stays above the flap,
-         * so that a fold of the strip whose crease lies on the tuck line itself (a turn's bottom
-         * along a host's edge) nests inside the tuck rather than interleaving with it
-         * (taco-taco). A flap with hinges on either side of such a strip (a pass's end that
-         * turns beyond the line and comes back around it) still wraps it; it happens at the
-         * widest strip on the cube.
-         */
-        public void tuckUnder(Set<Integer> faces, Isometry2 reflection, double nx, double ny, double c) {
-            if (faces.isEmpty()) {
-                return;
-            }
-            int host = hostOf[faces.iterator().next()];
-            Stack stack = stacks.get(host);
-            int[] levels = levels(stack);
-            Map<Integer, Integer> levelOf = new HashMap<>();
-            for (int i = 0; i < stack.count; i++) {
-                levelOf.put(stack.faces[i], levels[i]);
-            }
-            // The flap's pieces: paper beyond the line joined on the sheet, each with its hinges.
-            Map<Integer, Integer> pieceOf = new HashMap<>();
-            int pieces = 0;
-            for (int f : faces) {
-                if (pieceOf.containsKey(f)) {
-                    continue;
-                }
-                ArrayDeque<Integer> open = new ArrayDeque<>(List.of(f));
-                pieceOf.put(f, pieces);
-                while (!open.isEmpty()) {
-                    int[] loop = loops.get(open.poll());
-                    for (int k = 0; k < loop.length; k++) {
-                        int across = faceOfEdge.get(directed(loop[(k + 1) % loop.length], loop[k]), -1);
-                        if (across >= 0 && faces.contains(across) && !pieceOf.containsKey(across)) {
-                            pieceOf.put(across, pieces);
-                            open.add(across);
-                        }
-                    }
-                }
-                pieces++;
-            }
-            int[] lowestHinge = new int[pieces];
-            Arrays.fill(lowestHinge, Integer.MAX_VALUE);
-            Set<Integer> hinges = new HashSet<>();
-            Map<Integer, Set<Integer>> hingesOf = new HashMap<>();
-            List<Integer> crossing = new ArrayList<>();
-            for (int i = 0; i < stack.count; i++) {
-                int f = stack.faces[i];
-                int[] loop = loops.get(f);
-                Isometry2 pose = poseOf.get(f);
-                boolean moves = faces.contains(f);
-                for (int k = 0; k < loop.length; k++) {
-                    int a = loop[k];
-                    int b = loop[(k + 1) % loop.length];
-                    int across = faceOfEdge.get(directed(b, a), -1);
-                    if (across < 0) {
-                        continue;
-                    }
-                    if (moves && !faces.contains(across) && hostOf[across] == host) {
-                        int piece = pieceOf.get(f);
-                        lowestHinge[piece] = Math.min(lowestHinge[piece], levelOf.get(across));
-                        hinges.add(across);
-                        hingesOf.computeIfAbsent(piece, p -> new HashSet<>()).add(across);
-                    } else if (!moves && hostOf[across] != host && onLine(pose, a, nx, ny, c) && onLine(pose, b, nx, ny, c)) {
-                        crossing.add(f);
-                    }
-                }
-            }
-            // A strip below the lowest hinge by level, or below any hinge by the stack's order (a
-            // piece whose hinges lie both at the strip's level, beside it, and above it).
-            Map<Integer, List<Integer>> below = crossing.isEmpty() ? new HashMap<>() : related(stack, true);
-            Map<Integer, Set<Integer>> overStrip = new HashMap<>();
-            if (!crossing.isEmpty()) {
-                Map<Integer, List<Integer>> above = related(stack, false);
-                for (int strip : crossing) {
-                    Set<Integer> reached = new HashSet<>();
-                    ArrayDeque<Integer> open = new ArrayDeque<>(List.of(strip));
-                    while (!open.isEmpty()) {
-                        for (int g : above.getOrDefault(open.poll(), List.of())) {
-                            if (!faces.contains(g) && reached.add(g)) {
-                                open.add(g);
-                            }
-                        }
-                    }
-                    overStrip.put(strip, reached);
-                }
-            }
-            List<Set<Integer>> under = new ArrayList<>();
-            for (int piece = 0; piece < pieces; piece++) {
-                Set<Integer> set = new HashSet<>();
-                ArrayDeque<Integer> open = new ArrayDeque<>();
-                Set<Integer> ownHinges = hingesOf.getOrDefault(piece, Set.of());
-                for (int f : crossing) {
-                    boolean belowHinge = levelOf.get(f) < lowestHinge[piece]
-                            || ownHinges.stream().anyMatch(overStrip.get(f)::contains);
-                    if (belowHinge && set.add(f)) {
-                        open.add(f);
-                    }
-                }
-                closeDownwards(set, open, below, faces, null);
-                under.add(set);
-            }
-            move(faces, host, reflection, Placement.UNDER, new TuckPlace(pieceOf, under, below, hinges, lowestHinge), levelOf);
-        }
-
-
-        private boolean onLine(Isometry2 pose, int p, double nx, double ny, double c) {
-            return Math.abs(nx * pose.x(u(p), v(p)) + ny * pose.y(u(p), v(p)) - c) <= tolerance;
-        }
-
-        /**
-         * As {@link #move(Set, int, Isometry2, Placement)}; with a {@code tuckPlace} (not null),
-         * a tuck ({@link #tuckUnder}), placed as {@link #placeTucked} says, with the stack's
-         * levels before the move {@code levelBefore}.
-         */
-        private void move(Set<Integer> faces, int toHost, Isometry2 frameChange, Placement placement, TuckPlace tuckPlace,
-                Map<Integer, Integer> levelBefore) {
-            if (faces.isEmpty()) {
-                return;
-            }
-            int fromHost = hostOf[faces.iterator().next()];
-            Stack from = stacks.get(fromHost);
-            boolean mirrors = frameChange.mirrors();
-            LongList kept = new LongList();
-            LongList carried = new LongList();
-            // Marks by face, not set lookups: a stack folded again and again holds many relations.
-            // (Kept by the sheet and told apart by a count, not cleared: a tuck must not cost the
-            // whole sheet.)
-            int moves = nextMark();
-            for (int f : faces) {
-                mark[f] = moves;
-            }
-            int cut = nextMark();
-            for (int f : reshaped) {
-                cutMark[f] = cut;
-            }
-            // A cut along a line on the sheet can take away paper that lay between two faces that
-            // stay, wherever they lie: their order, implied through it, is then recorded itself.
-            Map<Integer, List<Integer>> stayingAbove = new HashMap<>();
-            Map<Integer, List<Integer>> stayingBelow = new HashMap<>();
-            for (int r = 0; r < from.above.size(); r++) {
-                long pair = from.above.get(r);
-                int upper = (int) (pair >>> 32);
-                int lower = (int) pair;
-                boolean upperMoves = mark[upper] == moves;
-                boolean lowerMoves = mark[lower] == moves;
-                if (upperMoves != lowerMoves) {
-                    if (sheetCut) {
-                        (upperMoves ? stayingBelow : stayingAbove).computeIfAbsent(upperMoves ? upper : lower, k -> new ArrayList<>())
-                                .add(upperMoves ? lower : upper);
-                    }
-                    continue; // they lay side by side before; where the moved paper lands is decided below
-                }
-                if ((cutMark[upper] == cut || cutMark[lower] == cut) && !placedFaces.overlap(upper, lower)) {
-                    continue; // a face cut by the line keeps only the relations of the part that overlaps
-                }
-                if (upperMoves) {
-                    carried.add(mirrors ? ((long) lower << 32) | upper : pair);
-                } else {
-                    kept.add(pair);
-                }
-            }
-            for (Map.Entry<Integer, List<Integer>> entry : stayingAbove.entrySet()) {
-                for (int upper : entry.getValue()) {
-                    for (int lower : stayingBelow.getOrDefault(entry.getKey(), List.of())) {
-                        if (placedFaces.overlap(upper, lower)) {
-                            kept.add(((long) upper << 32) | lower);
-                        }
-                    }
-                }
-            }
-            from.above = kept;
-            from.remove(faces);
-            for (int f : faces) {
-                note(f);
-                if (hostOf[f] != fromHost) {
-                    throw new IllegalArgumentException("the faces moved together must rest on one host");
-                }
-                poseOf.set(f, frameChange.after(poseOf.get(f)));
-                hostOf[f] = toHost;
-                placedFaces.forget(f);
-            }
-            Stack to = stacks.computeIfAbsent(toHost, h -> new Stack());
-            if (tuckPlace != null) {
-                placeTucked(faces, to, carried, tuckPlace, levelBefore);
-                to.levels = null;
-                from.levels = null;
-                return;
-            }
-            // Each moved face lands over (or under) the faces it overlaps, unless a moved face it
-            // rests on, and that holds all of it, lies between: the order is then implied, and a
-            // stack folded again and again would otherwise hold every pair of its layers.
-            Map<Integer, List<Integer>> between = new HashMap<>();
-            for (int r = 0; r < carried.size(); r++) {
-                long pair = carried.get(r);
-                int upper = (int) (pair >>> 32);
-                int lower = (int) pair;
-                if (placement == Placement.OVER) {
-                    between.computeIfAbsent(upper, k -> new ArrayList<>()).add(lower);
-                } else {
-                    between.computeIfAbsent(lower, k -> new ArrayList<>()).add(upper);
-                }
-            }
-            // A face there already that the moved face overlaps too, lying directly between and
-            // holding all of where the two overlap, implies the order as well: paper folded onto a
-            // pile lands on its top layer, not on each, or a pleat of n folds would hold n²
-            // relations and each fold cost what the pile holds. (The order is kept where the
-            // face between later leaves: see stayingAbove.)
-            Between direct = new Between(to.above, placement);
-            for (int f : faces) {
-                int holds = placedFaces.nextHoldsStamp();
-                for (int i = 0; i < to.count; i++) {
-                    int g = to.faces[i];
-                    // First the cheap cases, without even asking whether f and g overlap: a face
-                    // directly on f's side of g that holds all of g, or all of f, holds all of
-                    // where they overlap. Each fold of a pleat lands on a pile whose every layer
-                    // holds the one below: asked of each pair of layers, the pile of n folds cost
-                    // n² overlaps (24 s for 10,000 creases).
-                    boolean implied = false;
-                    for (int k = direct.start(g); k < direct.end(g) && !implied; k++) {
-                        int h = direct.face(k);
-                        implied = placedFaces.holdsFace(h, g) || placedFaces.holdsAll(h, f, holds);
-                    }
-                    if (implied || !placedFaces.overlap(f, g)) {
-                        continue;
-                    }
-                    for (int h : between.getOrDefault(f, List.of())) {
-                        if (placedFaces.contains(h, f) && placedFaces.overlap(h, g)) {
-                            implied = true;
-                            break;
-                        }
-                    }
-                    for (int k = direct.start(g); k < direct.end(g) && !implied; k++) {
-                        int h = direct.face(k);
-                        implied = placedFaces.overlap(f, h) && placedFaces.holdsOverlap(h, f, g);
-                    }
-                    if (!implied) {
-                        to.above.add(placement == Placement.OVER ? ((long) f << 32) | g : ((long) g << 32) | f);
-                    }
-                }
-            }
-            to.above.addAll(carried);
-            for (int f : faces) {
-                to.add(f);
-            }
-            to.levels = null;
-            from.levels = null;
-        }
-    }
-
-    /**
-     * Where a tuck's flap goes, piece by piece (paper beyond the line joined on the sheet, each
-     * {@code pieceOf} it): above the staying faces {@code under} it (strips crossing the tuck
-     * line below the piece's hinges, {@code lowestHinge} the lowest, and the paper below them,
-     * through the stack's relations {@code below}), under the rest; {@code hinges} are the
-     * staying faces the flap is joined to.
-     */
-    private record TuckPlace(Map<Integer, Integer> pieceOf, List<Set<Integer>> under, Map<Integer, List<Integer>> below,
-            Set<Integer> hinges, int[] lowestHinge) {
-    }
-
-    /**
-     * The order of tucked {@code faces}, as {@link Edit#tuckUnder} places them: each piece above
-     * the staying paper {@code place.under()} says and below the rest, in their own order
-     * {@code carried}. A layer of paper a piece goes above goes on above it where it continues on
-     * the host, folded or flat, into paper the piece overlaps (below its hinges): the piece cannot
-     * pass through it, nor lie between the two layers of its fold (taco-tortilla). A piece over
-     * another in the flap's own order goes over all the other goes over, so that the order has
-     * no cycle.
-     */
-    private void placeTucked(Set<Integer> faces, Stack to, LongList carried, TuckPlace place, Map<Integer, Integer> levelBefore) {
-        List<Set<Integer>> under = place.under();
-        Map<Integer, List<Integer>> facesOfPiece = new HashMap<>();
-        for (int f : faces) {
-            facesOfPiece.computeIfAbsent(place.pieceOf().get(f), k -> new ArrayList<>()).add(f);
-        }
-        for (int piece = 0; piece < under.size(); piece++) {
-            closeOverFolds(under.get(piece), facesOfPiece.getOrDefault(piece, List.of()), faces, place, place.lowestHinge()[piece],
-                    levelBefore);
-        }
-        // A piece above another goes above all that one does.
-        boolean grew = under.size() > 1;
-        while (grew) {
-            grew = false;
-            for (int r = 0; r < carried.size(); r++) {
-                long pair = carried.get(r);
-                int upper = place.pieceOf().get((int) (pair >>> 32));
-                int lower = place.pieceOf().get((int) pair);
-                if (upper != lower) {
-                    grew |= under.get(upper).addAll(under.get(lower));
-                }
-            }
-        }
-        // A face f goes over or under each staying face g it overlaps, but the order is not
-        // recorded where a face h directly next to g on f's side holds all of where f and g
-        // overlap: f over h over g, or f under h under g, implies it (and still does when h is cut
-        // by a later line, whose pieces hold the overlap's pieces). At a sharp corner each flap
-        // overlaps every layer bounced there before: recorded pair by pair, the stack of a 1°
-        // corner held 200,000 relations, which every later tuck walked.
-        StackOrder order = new StackOrder(to);
-        int[] sideOf = new int[to.count]; // by slot: +1 where f goes over, -1 under, 0 apart
-        List<Integer> overlapping = new ArrayList<>();
-        for (int f : faces) {
-            Set<Integer> pieceUnder = under.get(place.pieceOf().get(f));
-            overlapping.clear();
-            for (int i : to.near(f)) {
-                int g = to.faces[i];
-                if (placedFaces.overlap(f, g)) {
-                    sideOf[i] = (originOf[g] & SEALED) != 0 || pieceUnder.contains(g) ? 1 : -1;
-                    overlapping.add(g);
-                }
-            }
-            for (int g : overlapping) {
-                int side = sideOf[slotOf[g]];
-                boolean implied = false;
-                int[] next = side > 0 ? order.upper : order.lower;
-                int[] start = side > 0 ? order.upperStart : order.lowerStart;
-                double[] common = null; // where f and g overlap, found once a face might hold it
-                // A few of g's neighbours at most: the face at the foot of a tall stack of passes has
-                // thousands, and recording the pair is always right, only less economical.
-                int end = Math.min(start[slotOf[g] + 1], start[slotOf[g]] + WITNESSES);
-                for (int k = start[slotOf[g]]; k < end && !implied; k++) {
-                    int h = next[k];
-                    if (sideOf[slotOf[h]] == side) {
-                        common = common != null ? common : placedFaces.overlapOf(f, g);
-                        implied = common != null && placedFaces.containsPoints(placedFaces.polygon(h), common);
-                    }
-                }
-                if (!implied) {
-                    to.above.add(side > 0 ? ((long) f << 32) | g : ((long) g << 32) | f);
-                }
-            }
-            for (int g : overlapping) {
-                sideOf[slotOf[g]] = 0;
-            }
-        }
-        to.above.addAll(carried);
-        for (int f : faces) {
-            to.add(f);
-        }
-    }
-
-    /**
-     * Adds to {@code under} every face below those in {@code open}, through a stack's relations
-     * {@code below}, but the {@code moving}; each face added goes to {@code added} too, if given.
-     */
-    private static void closeDownwards(Set<Integer> under, ArrayDeque<Integer> open, Map<Integer, List<Integer>> below,
-            Set<Integer> moving, ArrayDeque<Integer> added) {
-        while (!open.isEmpty()) {
-            for (int g : below.getOrDefault(open.poll(), List.of())) {
-                if (!moving.contains(g) && under.add(g)) {
-                    open.add(g);
-                    if (added != null) {
-                        added.add(g);
-                    }
-                }
-            }
-        }
-    }
-
-    /**
-     * A stack's relations by face: the faces directly below each ({@code byUpper}), or directly
-     * above each.
-     */
-    private static Map<Integer, List<Integer>> related(Stack stack, boolean byUpper) {
-        Map<Integer, List<Integer>> related = new HashMap<>();
-        for (int r = 0; r < stack.above.size(); r++) {
-            long pair = stack.above.get(r);
-            int upper = (int) (pair >>> 32);
-            int lower = (int) pair;
-            related.computeIfAbsent(byUpper ? upper : lower, k -> new ArrayList<>()).add(byUpper ? lower : upper);
-        }
-        return related;
-    }
-
-    /**
-     * Adds to {@code under} the staying faces that continue a face of it on the host (across an
-     * edge of the sheet) into paper the {@code piece} overlaps, below its lowest hinge, with all
-     * paper below them.
-     */
-    private void closeOverFolds(Set<Integer> under, List<Integer> piece, Set<Integer> faces, TuckPlace place, int lowestHinge,
-            Map<Integer, Integer> levelBefore) {
-        ArrayDeque<Integer> open = new ArrayDeque<>(under);
-        while (!open.isEmpty()) {
-            int g = open.poll();
-            int[] loop = loops.get(g);
-            for (int k = 0; k < loop.length; k++) {
-                int across = faceOfEdge.get(directed(loop[(k + 1) % loop.length], loop[k]), -1);
-                if (across < 0 || hostOf[across] != hostOf[g] || faces.contains(across) || under.contains(across)
-                        || place.hinges().contains(across) || levelBefore.get(across) >= lowestHinge) {
-                    continue;
-                }
-                boolean overlapped = false;
-                for (int f : piece) {
-                    if (placedFaces.overlap(f, across)) {
-                        overlapped = true;
-                        break;
-                    }
-                }
-                if (overlapped) {
-                    under.add(across);
-                    open.add(across);
-                    closeDownwards(under, new ArrayDeque<>(List.of(across)), place.below(), faces, open);
-                }
-            }
-        }
-    }
-
-    /**
-     * Cuts face f along the line n·p = c: f keeps the part on the near side, a new face the
-     * part beyond, which is returned. Each crossing edge gets one new vertex, shared with the
-     * face across it on the sheet, which is given the vertex too so that no edge of the sheet
-     * ends in the middle of another.
-     */
-    private int split(int f, double nx, double ny, double c, boolean onSheet, Map<Long, Integer> splitOfEdge, Edit edit) {
-        int[] loop = loops.get(f);
-        Isometry2 pose = poseOf.get(f);
-        int n = loop.length;
-        double[] d = new double[n];
-        for (int i = 0; i < n; i++) {
-            int v = loop[i];
-            d[i] = onSheet ? nx * u(v) + ny * v(v) - c : nx * pose.x(u(v), v(v)) + ny * pose.y(u(v), v(v)) - c;
-        }
-        int[] withSplits = new int[2 * n];
-        int[] side = new int[2 * n];
-        int m = 0;
-        for (int i = 0; i < n; i++) {
-            int j = (i + 1) % n;
-            withSplits[m] = loop[i];
-            side[m++] = d[i] > tolerance ? 1 : d[i] < -tolerance ? -1 : 0;
-            if ((d[i] > tolerance && d[j] < -tolerance) || (d[i] < -tolerance && d[j] > tolerance)) {
-                int a = loop[i];
-                int b = loop[j];
-                Integer split = splitOfEdge.get(undirected(a, b));
-                if (split == null) {
-                    double t = d[i] / (d[i] - d[j]);
-                    split = addVertex(u(a) + t * (u(b) - u(a)), v(a) + t * (v(b) - v(a)));
-                    splitOfEdge.put(undirected(a, b), split);
-                    insertAcross(a, b, split, edit);
-                }
-                withSplits[m] = split;
-                side[m++] = 0;
-            }
-        }
-        int[] near = new int[m];
-        int[] far = new int[m];
-        int nearCount = 0;
-        int farCount = 0;
-        for (int i = 0; i < m; i++) {
-            if (side[i] <= 0) {
-                near[nearCount++] = withSplits[i];
-            }
-            if (side[i] >= 0) {
-                far[farCount++] = withSplits[i];
-            }
-        }
-        unregister(f);
-        loops.set(f, Arrays.copyOf(near, nearCount));
-        placedFaces.forget(f);
-        register(f);
-        int g = loops.size();
-        loops.add(Arrays.copyOf(far, farCount));
-        poseOf.add(pose);
-        ensureFaceCapacity(g + 1);
-        hostOf[g] = hostOf[f];
-        originOf[g] = originOf[f];
-        register(g);
-        edit.reshaped.add(f);
-        edit.reshaped.add(g);
-        edit.parents.add(f < edit.facesBefore ? f : edit.parents.get(f - edit.facesBefore));
-        stacks.get(hostOf[f]).add(g);
-        return g;
-    }
-
-    /** Gives the face across edge a → b (the one holding b → a) the vertex m between b and a. */
-    private void insertAcross(int a, int b, int m, Edit edit) {
-        int g = faceOfEdge.get(directed(b, a), -1);
-        if (g < 0) {
-            return; // the strip's own border
-        }
-        edit.note(g);
-        int[] loop = loops.get(g);
-        int[] longer = new int[loop.length + 1];
-        int k = 0;
-        for (int i = 0; i < loop.length; i++) {
-            longer[k++] = loop[i];
-            if (loop[i] == b && loop[(i + 1) % loop.length] == a) {
-                longer[k++] = m;
-            }
-        }
-        faceOfEdge.remove(directed(b, a), -1);
-        faceOfEdge.put(directed(b, m), g);
-        faceOfEdge.put(directed(m, a), g);
-        loops.set(g, longer);
-        placedFaces.forget(g);
-        int crease = creases.remove(undirected(a, b), -1);
-        if (crease >= 0) {
-            creases.put(undirected(a, m), crease);
-            creases.put(undirected(m, b), crease);
-        }
+    public SheetEdit edit() {
+        return new SheetEdit(this);
     }
 
     // ---------------------------------------------------------------- faces and stacks
@@ -1158,7 +312,7 @@ public final class Sheet {
      * laid last, across the tail's start, where it rests on the tail's host; -1 where there is
      * none (the strip's first face, or the first on a host after a crossing).
      */
-    private int tailHinge(int[] loop) {
+    int tailHinge(int[] loop) {
         if (tailLifted) {
             tailLifted = false;
             int before = faceOfEdge.get(directed(loop[0], loop[loop.length - 1]), -1);
@@ -1170,455 +324,7 @@ public final class Sheet {
         return before >= 0 && hostOf[before] == tailHost ? before : -1;
     }
 
-    /**
-     * Lays a new face on {@code host}. Folded from {@code hinge} (a face of the same host, or
-     * -1), it goes just over (or under) it, as paper folded about a crease lands on the layer it
-     * is folded from: in the stack's order by levels, with the hinge last of its level (first,
-     * under), it lies above the faces that come before the hinge and below those after. Paper
-     * crossing the crease above the hinge then stays outside the fold, not between its two
-     * layers (flat folding's taco-tortilla condition). Without a hinge it lands over (under)
-     * every face it overlaps.
-     */
-    private int addFace(int[] loop, int host, Isometry2 pose, Placement placement, int hinge) {
-        int f = loops.size();
-        loops.add(loop);
-        poseOf.add(pose);
-        ensureFaceCapacity(f + 1);
-        hostOf[f] = host;
-        register(f);
-        Stack stack = stacks.computeIfAbsent(host, h -> new Stack());
-        int[] levels = hinge >= 0 ? levels(stack) : null;
-        int hingeLevel = hinge >= 0 ? levels[slotOf[hinge]] : -1;
-        // The new face's level is one more than the highest below it; where every face it lies
-        // under stands higher still (it landed over all it overlaps, or just under a hinge with
-        // room below), no other level changes, and the stack's levels are kept rather than found
-        // again at the next fold (a strip folded over and over on one plane would cost the square).
-        int[] known = stack.levels;
-        int level = 0;
-        int lowestAbove = Integer.MAX_VALUE;
-        List<Integer> touching = new ArrayList<>();
-        Map<Integer, Boolean> overOf = new HashMap<>();
-        for (int i : stack.near(f)) {
-            int g = stack.faces[i];
-            if (placedFaces.overlap(f, g)) {
-                boolean over = placement == Placement.OVER;
-                if ((originOf[g] & SEALED) != 0) {
-                    over = true;
-                } else if (hinge >= 0) {
-                    over = placement == Placement.OVER ? levels[i] <= hingeLevel : levels[i] < hingeLevel;
-                }
-                touching.add(g);
-                overOf.put(g, over);
-            }
-        }
-        if (hinge >= 0) {
-            outOfFolds(f, hinge, stack, levels, touching, overOf);
-        } else if (liftedFrom >= 0 && overOf.containsKey(liftedFrom)) {
-            outOfLiftedFold(f, liftedFrom, stack, touching, overOf);
-        }
-        liftedFrom = -1;
-        for (int g : touching) {
-            boolean over = overOf.get(g);
-            int i = slotOf[g];
-            stack.above.add(over ? ((long) f << 32) | g : ((long) g << 32) | f);
-            if (known != null && over) {
-                level = Math.max(level, known[i] + 1);
-            } else if (known != null) {
-                lowestAbove = Math.min(lowestAbove, known[i]);
-            }
-        }
-        stack.add(f);
-        if (known != null && level < lowestAbove) {
-            int[] grown = known.length >= stack.faces.length ? known : Arrays.copyOf(known, stack.faces.length);
-            grown[stack.count - 1] = level;
-            stack.levels = grown;
-            stack.top = Math.max(stack.top, level);
-        }
-        return f;
-    }
-
-    /**
-     * Keeps a new face out of the folds it overlaps: the order by levels puts it just over (or
-     * under) its hinge, and above or below each other face by its level, but levels compare
-     * faces of different places of a stack only loosely, and a face it lands under whose fold
-     * partner (the face across a crease, on this host) it lands over would lie between the two
-     * layers of their fold, reaching across the crease (taco-tortilla). So the faces it overlaps
-     * that are joined by creases it reaches across go together, a chain of them as one: the new
-     * face goes over all of such a group or under all of it, the side most of it already has
-     * (the hinge's, where the hinge is one of them), unless that would contradict the order
-     * already there (a face it lies under below one it would go over, or the other way), and
-     * then the other side; where neither fits, the chain carries the paper the order puts with it
-     * ({@link #carryAlong}). Turned one by one, a gadget's chain of three layers, two creases,
-     * was only turned from one fold into the other. Then the new face leaves the pockets of folds
-     * it does not reach across where it can ({@link #outOfPockets}).
-     */
-    private void outOfFolds(int f, int hinge, Stack stack, int[] levels, List<Integer> touching, Map<Integer, Boolean> overOf) {
-        double[] placedF = placedFaces.polygon(f);
-        Map<Integer, Integer> acrossParent = new HashMap<>();
-        Set<Integer> joinedAcross = new HashSet<>();
-        List<int[]> pockets = new ArrayList<>();
-        for (int g : touching) {
-            int[] loop = loops.get(g);
-            Isometry2 pose = poseOf.get(g);
-            for (int k = 0; k < loop.length; k++) {
-                int a = loop[k];
-                int b = loop[(k + 1) % loop.length];
-                if (crease(a, b) == null) {
-                    continue;
-                }
-                int d = faceOfEdge.get(directed(b, a), -1);
-                if (d < g || !overOf.containsKey(d)) {
-                    continue; // each crease once, from its face of the smaller number
-                }
-                if (crosses(placedF, pose.x(u(a), v(a)), pose.y(u(a), v(a)), pose.x(u(b), v(b)), pose.y(u(b), v(b)))) {
-                    join(acrossParent, g, d);
-                    joinedAcross.add(g);
-                    joinedAcross.add(d);
-                } else if (overOf.get(g) != overOf.get(d) && g != hinge && d != hinge) {
-                    pockets.add(new int[] {g, d});
-                }
-            }
-        }
-        if (joinedAcross.isEmpty() && pockets.isEmpty()) {
-            return;
-        }
-        List<Map<Integer, List<Integer>>> relations = new ArrayList<>(2); // below, above: found once needed
-        Map<Integer, Boolean> forced = null;
-        Map<Integer, List<Integer>> unitOf = new HashMap<>(); // each face of a group: the group
-        for (List<Integer> group : groups(acrossParent, joinedAcross)) {
-            for (int g : group) {
-                unitOf.put(g, group);
-            }
-            int over = 0;
-            for (int g : group) {
-                over += overOf.get(g) ? 1 : 0;
-            }
-            if (over == 0 || over == group.size()) {
-                continue;
-            }
-            if (relations.isEmpty()) {
-                relations.add(related(stack, true));
-                relations.add(related(stack, false));
-            }
-            forced = forced != null ? forced : forcedSides(f, hinge, touching, overOf, relations);
-            if (!uniform(group, hinge, overOf, relations, forced)) {
-                carryAlong(group, 2 * over >= group.size(), overOf, forced, relations);
-            }
-        }
-        if (!pockets.isEmpty()) {
-            outOfPockets(f, hinge, stack, levels, touching, pockets, unitOf, overOf, relations, forced);
-        }
-    }
-
-    /**
-     * The sides a new face must take, whatever its tentative sides by level: over its hinge and
-     * all below it (under, and all above, for a face laid under its hinge), and, for paper that
-     * reaches across its own crease with the hinge, the side of the hinge that paper is on (it
-     * lies over both, or under both).
-     */
-    private Map<Integer, Boolean> forcedSides(int f, int hinge, List<Integer> touching, Map<Integer, Boolean> overOf,
-            List<Map<Integer, List<Integer>>> relations) {
-        boolean overHinge = overOf.get(hinge);
-        Set<Integer> belowHinge = reachedFrom(hinge, relations.get(0));
-        Set<Integer> aboveHinge = reachedFrom(hinge, relations.get(1));
-        Map<Integer, Boolean> forced = new HashMap<>();
-        forced.put(hinge, overHinge);
-        for (int g : overHinge ? belowHinge : aboveHinge) {
-            forced.put(g, overHinge);
-        }
-        int[] loop = loops.get(f);
-        int a = loop[loop.length - 1];
-        int b = loop[0];
-        Isometry2 pose = poseOf.get(f);
-        for (int g : touching) {
-            if (g != hinge && (belowHinge.contains(g) || aboveHinge.contains(g))
-                    && crosses(placedFaces.polygon(g), pose.x(u(a), v(a)), pose.y(u(a), v(a)), pose.x(u(b), v(b)), pose.y(u(b), v(b)))) {
-                forced.put(g, belowHinge.contains(g));
-            }
-        }
-        return forced;
-    }
-
-    /**
-     * Where a group of fold layers cannot be put on one side of a new face without changing its
-     * tentative side to other paper: the group goes to one side after all, and the paper the
-     * order then puts there (below the group for over, above for under) goes with it, where none
-     * of that paper's side is {@code forced} the other way; the side most of the group has, else
-     * the other. A turn laid over a neighbour's turn, both folded over paper of their own, met
-     * this on a random star-shaped solid.
-     */
-    private static void carryAlong(List<Integer> group, boolean first, Map<Integer, Boolean> overOf, Map<Integer, Boolean> forced,
-            List<Map<Integer, List<Integer>>> relations) {
-        for (boolean side : new boolean[] {first, !first}) {
-            Set<Integer> reached = new HashSet<>(group);
-            ArrayDeque<Integer> open = new ArrayDeque<>(group);
-            boolean possible = true;
-            while (!open.isEmpty() && possible) {
-                int g = open.poll();
-                Boolean must = forced.get(g);
-                possible = must == null || must == side;
-                for (int next : relations.get(side ? 0 : 1).getOrDefault(g, List.of())) {
-                    if (reached.add(next)) {
-                        open.add(next);
-                    }
-                }
-            }
-            if (possible) {
-                for (int g : reached) {
-                    if (overOf.containsKey(g)) {
-                        overOf.put(g, side);
-                    }
-                }
-                return;
-            }
-        }
-    }
-
-    /**
-     * Keeps a new face out of the pockets of folds it lands in without reaching their creases
-     * where its order with one layer of the fold is free: a layer neither above its hinge nor
-     * below it in the stack's order, placed only by its level. Paper folded on from the new face
-     * (its next turn) reaches across the pocket's crease, and would then be caught between the
-     * new face's fold and the pocket's (a turn landing in the pocket of a neighbour's turn, and
-     * the next fold over it). The free layer goes to the other's side, where the order allows.
-     */
-    private void outOfPockets(int f, int hinge, Stack stack, int[] levels, List<Integer> touching, List<int[]> pockets,
-            Map<Integer, List<Integer>> unitOf, Map<Integer, Boolean> overOf, List<Map<Integer, List<Integer>>> relations,
-            Map<Integer, Boolean> forcedSoFar) {
-        Map<Integer, Boolean> forced = forcedSoFar;
-        if (relations.isEmpty()) {
-            relations.add(related(stack, true));
-            relations.add(related(stack, false));
-        }
-        Set<Integer> bound = reachedFrom(hinge, relations.get(0));
-        bound.addAll(reachedFrom(hinge, relations.get(1)));
-        int hingeLevel = levels[slotOf[hinge]];
-        for (int[] pocket : pockets) {
-            int g = pocket[0];
-            int d = pocket[1];
-            boolean gBound = bound.contains(g);
-            boolean dBound = bound.contains(d);
-            if ((gBound && dBound) || overOf.get(g) == overOf.get(d)) {
-                continue;
-            }
-            // Both free: the layer nearer the hinge's level keeps its side, and the other follows,
-            // with the layers it goes with (those joined by creases the new face reaches across).
-            boolean gKeeps = gBound || (!dBound
-                    && Math.abs(levels[slotOf[g]] - hingeLevel) <= Math.abs(levels[slotOf[d]] - hingeLevel));
-            List<Integer> keeper = unitOf.getOrDefault(gKeeps ? g : d, List.of(gKeeps ? g : d));
-            List<Integer> follower = unitOf.getOrDefault(gKeeps ? d : g, List.of(gKeeps ? d : g));
-            if (keeper == follower) {
-                continue; // one group, made uniform already: the new face is not between them
-            }
-            boolean side = overOf.get(gKeeps ? g : d);
-            if (!contradicts(follower, side, overOf, relations.get(side ? 0 : 1))) {
-                for (int h : follower) {
-                    overOf.put(h, side);
-                }
-            } else if (!gBound && !dBound && !contradicts(keeper, !side, overOf, relations.get(side ? 1 : 0))) {
-                for (int h : keeper) {
-                    overOf.put(h, !side);
-                }
-            } else {
-                forced = forced != null ? forced : forcedSides(f, hinge, touching, overOf, relations);
-                List<Integer> both = new ArrayList<>(keeper);
-                both.addAll(follower);
-                carryAlong(both, side, overOf, forced, relations);
-            }
-        }
-    }
-
-    /** Joins g and d in a forest of parents. */
-    private static void join(Map<Integer, Integer> parent, int g, int d) {
-        int rg = root(parent, g);
-        int rd = root(parent, d);
-        if (rg != rd) {
-            parent.put(rg, rd);
-        }
-    }
-
-    /** The faces {@code joined} in a forest of parents, tree by tree. */
-    private static Collection<List<Integer>> groups(Map<Integer, Integer> parent, Set<Integer> joined) {
-        Map<Integer, List<Integer>> groupOf = new HashMap<>();
-        for (int g : joined) {
-            groupOf.computeIfAbsent(root(parent, g), r -> new ArrayList<>()).add(g);
-        }
-        return groupOf.values();
-    }
-
-    /**
-     * Puts a new face over all of {@code group} or under all of it, where the order allows: the
-     * side most of it has (the hinge's, where the hinge is one of them), else the other, so long
-     * as no tentative side of other paper must change, nor a side {@code forced} on one of the
-     * group; whether it could. {@code relations} holds the stack's relations, downwards and
-     * upwards.
-     */
-    private static boolean uniform(List<Integer> group, int hinge, Map<Integer, Boolean> overOf,
-            List<Map<Integer, List<Integer>>> relations, Map<Integer, Boolean> forced) {
-        int over = 0;
-        for (int g : group) {
-            over += overOf.get(g) ? 1 : 0;
-        }
-        boolean first = group.contains(hinge) ? overOf.get(hinge) : 2 * over >= group.size();
-        for (boolean side : group.contains(hinge) ? new boolean[] {first} : new boolean[] {first, !first}) {
-            boolean allowed = true;
-            for (int g : group) {
-                Boolean must = forced.get(g);
-                allowed &= must == null || must == side;
-            }
-            if (allowed && !contradicts(group, side, overOf, relations.get(side ? 0 : 1))) {
-                for (int g : group) {
-                    overOf.put(g, side);
-                }
-                return true;
-            }
-        }
-        return false;
-    }
-
-    /**
-     * Keeps paper out of the flat fold between a face laid on after a lifted tail (over all it
-     * overlaps, {@link #liftTail}) and the face {@code from} it runs on from, its hinge on the
-     * sheet: paper over {@code from} that reaches across their crease would lie between the two
-     * layers (taco-tortilla: a gadget's last turn, the strip running on into the next triangle
-     * of the host, and an earlier pass over the gadget). The new face goes under such paper, and
-     * under all the paper it overlaps above it, unless that contradicts the order already there.
-     */
-    private void outOfLiftedFold(int f, int from, Stack stack, List<Integer> touching, Map<Integer, Boolean> overOf) {
-        int[] loop = loops.get(f);
-        int a = loop[loop.length - 1];
-        int b = loop[0];
-        Isometry2 pose = poseOf.get(f);
-        double ax = pose.x(u(a), v(a));
-        double ay = pose.y(u(a), v(a));
-        double bx = pose.x(u(b), v(b));
-        double by = pose.y(u(b), v(b));
-        Map<Integer, List<Integer>> aboveOf = null;
-        Set<Integer> overFrom = null;
-        for (int g : touching) {
-            if (g == from || !overOf.get(g) || (originOf[g] & SEALED) != 0 || !crosses(placedFaces.polygon(g), ax, ay, bx, by)) {
-                continue;
-            }
-            if (aboveOf == null) {
-                aboveOf = related(stack, false);
-                overFrom = reachedFrom(from, aboveOf);
-            }
-            if (!overFrom.contains(g)) {
-                continue;
-            }
-            List<Integer> group = new ArrayList<>();
-            for (int h : reachedFrom(g, aboveOf)) {
-                if (overOf.containsKey(h)) {
-                    group.add(h);
-                }
-            }
-            group.add(g);
-            if (!contradicts(group, false, overOf, aboveOf)) {
-                for (int h : group) {
-                    overOf.put(h, false);
-                }
-            }
-        }
-    }
-
-    /** The faces reached from g (g not among them, unless on a cycle) through relations {@code onward}. */
-    private static Set<Integer> reachedFrom(int g, Map<Integer, List<Integer>> onward) {
-        Set<Integer> reached = new HashSet<>();
-        ArrayDeque<Integer> open = new ArrayDeque<>(List.of(g));
-        while (!open.isEmpty()) {
-            for (int next : onward.getOrDefault(open.poll(), List.of())) {
-                if (reached.add(next)) {
-                    open.add(next);
-                }
-            }
-        }
-        return reached;
-    }
-
-    /** The root of g in a forest of parents (g itself where it has none). */
-    private static int root(Map<Integer, Integer> parent, int g) {
-        int r = g;
-        while (parent.containsKey(r)) {
-            r = parent.get(r);
-        }
-        return r;
-    }
-
-    /**
-     * Whether a new face going over ({@code side}) or under every face of {@code group} would
-     * contradict the order: over a face means over all below it ({@code onward}: the stack's
-     * relations downwards), none of which may be one it lies under; under, likewise upwards.
-     */
-    private static boolean contradicts(List<Integer> group, boolean side, Map<Integer, Boolean> overOf,
-            Map<Integer, List<Integer>> onward) {
-        Set<Integer> reached = new HashSet<>(group);
-        ArrayDeque<Integer> open = new ArrayDeque<>();
-        for (int g : group) {
-            if (overOf.get(g) != side) {
-                open.add(g);
-            }
-        }
-        while (!open.isEmpty()) {
-            for (int next : onward.getOrDefault(open.poll(), List.of())) {
-                if (reached.add(next)) {
-                    Boolean nextOver = overOf.get(next);
-                    if (nextOver != null && nextOver != side) {
-                        return true;
-                    }
-                    open.add(next);
-                }
-            }
-        }
-        return false;
-    }
-
-    /** Whether convex polygon xy reaches across the segment (a, b): on both sides of its line, over a length of it. */
-    private boolean crosses(double[] xy, double ax, double ay, double bx, double by) {
-        double dx = bx - ax;
-        double dy = by - ay;
-        double length = Math.hypot(dx, dy);
-        if (!(length > tolerance)) {
-            return false;
-        }
-        double nx = dy / length;
-        double ny = -dx / length;
-        double c = nx * ax + ny * ay;
-        int n = xy.length / 2;
-        boolean left = false;
-        boolean right = false;
-        for (int k = 0; k < n; k++) {
-            double side = nx * xy[2 * k] + ny * xy[2 * k + 1] - c;
-            left |= side < -tolerance;
-            right |= side > tolerance;
-        }
-        if (!(left && right)) {
-            return false;
-        }
-        // The part of the segment inside the polygon: t in [t0, t1] along a → b.
-        double t0 = 0;
-        double t1 = 1;
-        double orientation = Math.signum(Polygons2.twiceArea(xy, n));
-        for (int k = 0; k < n && t0 < t1; k++) {
-            int j = (k + 1) % n;
-            double ex = xy[2 * j] - xy[2 * k];
-            double ey = xy[2 * j + 1] - xy[2 * k + 1];
-            // Inside: orientation × (e × (p - corner k)) >= 0, at p = a + t (b - a).
-            double at = orientation * (ex * (ay - xy[2 * k + 1]) - ey * (ax - xy[2 * k]));
-            double slope = orientation * (ex * dy - ey * dx);
-            if (Math.abs(slope) < 1e-300) {
-                if (at < 0) {
-                    return false;
-                }
-            } else if (slope > 0) {
-                t0 = Math.max(t0, -at / slope);
-            } else {
-                t1 = Math.min(t1, -at / slope);
-            }
-        }
-        return (t1 - t0) * length > tolerance;
-    }
-
-    private void ensureFaceCapacity(int n) {
+    void ensureFaceCapacity(int n) {
         if (n > hostOf.length) {
             hostOf = Arrays.copyOf(hostOf, Math.max(n, 2 * hostOf.length));
             originOf = Arrays.copyOf(originOf, hostOf.length);
@@ -1626,14 +332,14 @@ public final class Sheet {
         }
     }
 
-    private void register(int f) {
+    void register(int f) {
         int[] loop = loops.get(f);
         for (int i = 0; i < loop.length; i++) {
             faceOfEdge.put(directed(loop[i], loop[(i + 1) % loop.length]), f);
         }
     }
 
-    private void unregister(int f) {
+    void unregister(int f) {
         int[] loop = loops.get(f);
         for (int i = 0; i < loop.length; i++) {
             faceOfEdge.remove(directed(loop[i], loop[(i + 1) % loop.length]), -1);
@@ -1641,106 +347,19 @@ public final class Sheet {
     }
 
     /** Per-face marks for one pass over a stack, told apart by {@link #nextMark()} rather than cleared. */
-    private int[] mark = new int[16];
-    private int[] cutMark = new int[16];
-    private int markCount;
+    int[] mark = new int[16];
+    int[] cutMark = new int[16];
+    int markCount;
     /** Scratch: each face's place in the stack whose levels are being found. */
-    private int[] placeInStack = new int[16];
+    int[] placeInStack = new int[16];
 
-    private int nextMark() {
+    int nextMark() {
         if (mark.length < loops.size()) {
             mark = Arrays.copyOf(mark, Math.max(loops.size(), 2 * mark.length));
             cutMark = Arrays.copyOf(cutMark, mark.length);
         }
         return ++markCount;
     }
-
-    /**
-     * The faces of a stack directly over each (for paper landing over it) or directly under
-     * each (landing under), from its relations, as compressed rows by face.
-     */
-    private final class Between {
-        private final int[] start;
-        private final int[] faces;
-
-        Between(LongList above, Placement placement) {
-            int relations = above.size();
-            start = new int[loops.size() + 1];
-            faces = new int[relations];
-            for (int r = 0; r < relations; r++) {
-                start[from(above.get(r), placement) + 1]++;
-            }
-            for (int f = 0; f < loops.size(); f++) {
-                start[f + 1] += start[f];
-            }
-            int[] fill = Arrays.copyOf(start, loops.size());
-            for (int r = 0; r < relations; r++) {
-                long pair = above.get(r);
-                int f = from(pair, placement);
-                faces[fill[f]++] = placement == Placement.OVER ? (int) (pair >>> 32) : (int) pair;
-            }
-        }
-
-        /** The face a relation is listed under: its lower face for paper landing over, its upper one for paper landing under. */
-        private static int from(long pair, Placement placement) {
-            return placement == Placement.OVER ? (int) pair : (int) (pair >>> 32);
-        }
-
-        int start(int g) {
-            return start[g];
-        }
-
-        int end(int g) {
-            return start[g + 1];
-        }
-
-        int face(int k) {
-            return faces[k];
-        }
-    }
-
-    /** The most faces next to g tried as witnesses that an order with g is implied. */
-    private static final int WITNESSES = 16;
-
-    /**
-     * A stack's relations by face, both ways, indexed by the faces' places in the stack: for the
-     * face in place i, the faces directly above it are {@code upper[upperStart[i] ..
-     * upperStart[i + 1]]}, those directly below {@code lower[lowerStart[i] .. lowerStart[i + 1]]}.
-     * Sized by the stack, not the sheet: a tuck must not cost the whole sheet.
-     */
-    private final class StackOrder {
-        final int[] upperStart;
-        final int[] upper;
-        final int[] lowerStart;
-        final int[] lower;
-
-        StackOrder(Stack stack) {
-            int relations = stack.above.size();
-            upperStart = new int[stack.count + 1];
-            lowerStart = new int[stack.count + 1];
-            upper = new int[relations];
-            lower = new int[relations];
-            for (int r = 0; r < relations; r++) {
-                long pair = stack.above.get(r);
-                upperStart[slotOf[(int) pair] + 1]++;
-                lowerStart[slotOf[(int) (pair >>> 32)] + 1]++;
-            }
-            for (int i = 0; i < stack.count; i++) {
-                upperStart[i + 1] += upperStart[i];
-                lowerStart[i + 1] += lowerStart[i];
-            }
-            int[] upperFill = Arrays.copyOf(upperStart, stack.count);
-            int[] lowerFill = Arrays.copyOf(lowerStart, stack.count);
-            for (int r = 0; r < relations; r++) {
-                long pair = stack.above.get(r);
-                int above = (int) (pair >>> 32);
-                int below = (int) pair;
-                upper[upperFill[slotOf[below]]++] = above;
-                lower[lowerFill[slotOf[above]]++] = below;
-            }
-        }
-    }
-
 
     /**
      * Finishes the paper resting on {@code host}, as a wrap does when the strip leaves it: paper
@@ -1784,72 +403,8 @@ public final class Sheet {
         return xy;
     }
 
-    private int[] levels(Stack stack) {
-        if (stack.levels != null) {
-            return stack.levels;
-        }
-        // Faces by their place in the stack, and the relations as arrays (compressed rows): a
-        // stack folded over and over holds hundreds of thousands of them.
-        int n = stack.count;
-        if (placeInStack.length < loops.size()) {
-            placeInStack = new int[Math.max(loops.size(), 2 * placeInStack.length)];
-        }
-        int[] index = placeInStack; // only the stack's own faces are read, and all are written first
-        for (int i = 0; i < n; i++) {
-            index[stack.faces[i]] = i;
-        }
-        int relations = stack.above.size();
-        int[] uppers = new int[relations];
-        int[] lowers = new int[relations];
-        int[] below = new int[n]; // how many faces lie directly below each, still to place
-        int[] start = new int[n + 1];
-        for (int r = 0; r < relations; r++) {
-            long pair = stack.above.get(r);
-            uppers[r] = index[(int) (pair >>> 32)];
-            lowers[r] = index[(int) pair];
-            below[uppers[r]]++;
-            start[lowers[r] + 1]++;
-        }
-        for (int i = 0; i < n; i++) {
-            start[i + 1] += start[i];
-        }
-        int[] fill = Arrays.copyOf(start, n);
-        int[] over = new int[relations];
-        for (int r = 0; r < relations; r++) {
-            over[fill[lowers[r]]++] = uppers[r];
-        }
-        int[] level = new int[n];
-        int[] queue = new int[n];
-        int head = 0;
-        int tail = 0;
-        for (int i = 0; i < n; i++) {
-            if (below[i] == 0) {
-                queue[tail++] = i;
-            }
-        }
-        while (head < tail) {
-            int i = queue[head++];
-            for (int k = start[i]; k < start[i + 1]; k++) {
-                int upper = over[k];
-                level[upper] = Math.max(level[upper], level[i] + 1);
-                if (--below[upper] == 0) {
-                    queue[tail++] = upper;
-                }
-            }
-        }
-        if (tail != n) {
-            throw new IllegalStateException("the stack on host has a cycle: a face lies above itself");
-        }
-        int top = -1;
-        for (int l : level) {
-            top = Math.max(top, l);
-        }
-        stack.top = top;
-        stack.levels = new int[stack.faces.length];
-        for (int i = 0; i < n; i++) {
-            stack.levels[i] = level[i];
-        }
-        return stack.levels;
+    int[] levels(Stack stack) {
+        return stack.findLevels();
     }
 
     /** Face f's level in its host's stack: 0 on the surface. */
@@ -1997,7 +552,7 @@ public final class Sheet {
         return crease < 0 ? -1 : crease / CREASES.length;
     }
 
-    private int addVertex(double u, double v) {
+    int addVertex(double u, double v) {
         if (2 * vertexCount + 2 > uv.length) {
             uv = Arrays.copyOf(uv, 2 * uv.length);
         }
@@ -2006,11 +561,11 @@ public final class Sheet {
         return vertexCount++;
     }
 
-    private static long directed(int a, int b) {
+    static long directed(int a, int b) {
         return ((long) a << 32) | (b & 0xffffffffL);
     }
 
-    private static long undirected(int a, int b) {
+    static long undirected(int a, int b) {
         return directed(Math.min(a, b), Math.max(a, b));
     }
 }

@@ -19,6 +19,7 @@ import ifold.sheet.Isometry2;
 import ifold.sheet.Sheet.Crease;
 import ifold.sheet.Sheet.Placement;
 import ifold.sheet.Sheet;
+import ifold.sheet.Tuck;
 import ifold.wrap.Wrap.FaceLimitException;
 import ifold.wrap.Wrap.Kind;
 import ifold.wrap.Wrap.Step;
@@ -339,7 +340,7 @@ final class StripFolding {
             }
             int from = edge;
             int to = (edge + 1) % n;
-            Sheet.Tuck tuck;
+            Tuck tuck;
             try {
                 tuck = sheet.tuck(host, c[2 * from], c[2 * from + 1], c[2 * to] - c[2 * from], c[2 * to + 1] - c[2 * from + 1]);
             } catch (FoldException e) {

@@ -18,6 +18,7 @@ import ifold.sheet.FoldException;
 import ifold.sheet.HostFrame;
 import ifold.sheet.Isometry2;
 import ifold.sheet.Sheet;
+import ifold.sheet.Tuck;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -239,7 +240,7 @@ public final class Wrap {
      * @param detail where in the triangle's work the fold comes, for a caption: "pass 2 of 5,
      *     45° valley fold", "tuck 3, along edge AB"
      */
-    public record Step(Kind kind, int strip, int triangle, int pathIndex, int pathLength, int face, Sheet.Tuck tuck, int facesAfter,
+    public record Step(Kind kind, int strip, int triangle, int pathIndex, int pathLength, int face, Tuck tuck, int facesAfter,
             TailMove tail, String detail) {
         public String describe() {
             String what = switch (kind) {

@@ -97,7 +97,7 @@ class SheetTest {
         int pass = sheet.foldTail(5, 0, 0, 1, Sheet.Placement.OVER, Sheet.Crease.GADGET);
         int back = sheet.endTail(2, 0, 0, 1);
         // Both layers poke beyond x = 4; tuck them under along that line (direction +y: +x is on its right).
-        Sheet.Tuck tuck = sheet.tuck(0, 4, 0, 0, 1);
+        Tuck tuck = sheet.tuck(0, 4, 0, 0, 1);
         assertEquals(2, tuck.changed().length, "both layers were cut");
         assertEquals(2, tuck.moved().length, "and their parts beyond the line moved");
         for (int f = 0; f < sheet.faceCount(); f++) {

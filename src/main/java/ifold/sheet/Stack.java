@@ -1,0 +1,191 @@
+package ifold.sheet;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+
+/**
+ * The faces of a sheet resting on one host and their order: which of its overlapping faces lies
+ * above which (pairs above << 32 | below), each face's level once found, and a grid of where
+ * they lie once there are many.
+ */
+final class Stack {
+    /** From how many faces a stack finds the faces a new one overlaps through a grid rather than by looking at all. */
+    static final int GRID_FROM = 32;
+    private final Sheet sheet;
+    int[] faces = new int[8];
+    int count;
+    /** Pairs (above << 32 | below) of overlapping faces. */
+    LongList above = new LongList();
+    int[] levels;
+    int top = -1;
+
+    /**
+     * The faces by where they lie, once the stack is big enough. A face that moves or leaves
+     * stays listed where it was ({@link #near} passes over it, and the faces it finds are
+     * only candidates): the grid is made again once those are as many as the faces, not at
+     * each tuck, which cost a big host's every face each time.
+     */
+    FaceGrid grid;
+
+    /** The faces listed in the grid since it was made, those gone or moved since included. */
+    int gridListed;
+
+    void add(int f) {
+        if (count == faces.length) {
+            faces = Arrays.copyOf(faces, 2 * count);
+        }
+        sheet.slotOf[f] = count;
+        faces[count++] = f;
+        levels = null;
+        if (grid != null) {
+            grid.add(f, sheet.placedFaces.polygon(f));
+            gridListed++;
+        }
+    }
+
+    void remove(Set<Integer> gone) {
+        int n = 0;
+        for (int i = 0; i < count; i++) {
+            if (!gone.contains(faces[i])) {
+                sheet.slotOf[faces[i]] = n;
+                faces[n++] = faces[i];
+            }
+        }
+        count = n;
+        levels = null;
+    }
+
+    /**
+     * The places in the stack, in order, of the faces that may overlap face f (listed in the
+     * grid cells its polygon meets): all of them while the stack is small.
+     */
+    int[] near(int f) {
+        if (grid != null && gridListed > 2 * count + GRID_FROM) {
+            grid = null; // more listed faces gone or moved than there are faces
+        }
+        if (count >= GRID_FROM && grid == null) {
+            double[][] polygons = new double[count][];
+            for (int i = 0; i < count; i++) {
+                polygons[i] = sheet.placedFaces.polygon(faces[i]);
+            }
+            grid = new FaceGrid(FaceGrid.cellFor(polygons, count, 2 * sheet.width));
+            for (int i = 0; i < count; i++) {
+                grid.add(faces[i], polygons[i]);
+            }
+            gridListed = count;
+        }
+        int[] listed = grid == null ? null : grid.near(sheet.placedFaces.polygon(f));
+        if (listed != null) {
+            // Faces that left the stack stay listed: only those still in it, by their place.
+            int[] slots = new int[listed.length];
+            int n = 0;
+            for (int g : listed) {
+                if (g != f && sheet.slotOf[g] < count && faces[sheet.slotOf[g]] == g) {
+                    slots[n++] = sheet.slotOf[g];
+                }
+            }
+            slots = Arrays.copyOf(slots, n);
+            Arrays.sort(slots);
+            return slots;
+        }
+        int[] all = new int[count];
+        for (int i = 0; i < count; i++) {
+            all[i] = i;
+        }
+        return all;
+    }
+    Stack(Sheet sheet) {
+        this.sheet = sheet;
+    }
+
+    /**
+     * A stack's relations by face: the faces directly below each ({@code byUpper}), or directly
+     * above each.
+     */
+    static Map<Integer, List<Integer>> related(Stack stack, boolean byUpper) {
+        Map<Integer, List<Integer>> related = new HashMap<>();
+        for (int r = 0; r < stack.above.size(); r++) {
+            long pair = stack.above.get(r);
+            int upper = (int) (pair >>> 32);
+            int lower = (int) pair;
+            related.computeIfAbsent(byUpper ? upper : lower, k -> new ArrayList<>()).add(byUpper ? lower : upper);
+        }
+        return related;
+    }
+
+    /**
+     * The level of each face of the stack, by its place in it (0 on the surface: the longest chain
+     * of faces below it), found again only after a change.
+     */
+    int[] findLevels() {
+        if (levels != null) {
+            return levels;
+        }
+        // Faces by their place in the stack, and the relations as arrays (compressed rows): a
+        // stack folded over and over holds hundreds of thousands of them.
+        int n = count;
+        if (sheet.placeInStack.length < sheet.loops.size()) {
+            sheet.placeInStack = new int[Math.max(sheet.loops.size(), 2 * sheet.placeInStack.length)];
+        }
+        int[] index = sheet.placeInStack; // only the stack's own faces are read, and all are written first
+        for (int i = 0; i < n; i++) {
+            index[faces[i]] = i;
+        }
+        int relations = above.size();
+        int[] uppers = new int[relations];
+        int[] lowers = new int[relations];
+        int[] below = new int[n]; // how many faces lie directly below each, still to place
+        int[] start = new int[n + 1];
+        for (int r = 0; r < relations; r++) {
+            long pair = above.get(r);
+            uppers[r] = index[(int) (pair >>> 32)];
+            lowers[r] = index[(int) pair];
+            below[uppers[r]]++;
+            start[lowers[r] + 1]++;
+        }
+        for (int i = 0; i < n; i++) {
+            start[i + 1] += start[i];
+        }
+        int[] fill = Arrays.copyOf(start, n);
+        int[] over = new int[relations];
+        for (int r = 0; r < relations; r++) {
+            over[fill[lowers[r]]++] = uppers[r];
+        }
+        int[] level = new int[n];
+        int[] queue = new int[n];
+        int head = 0;
+        int tail = 0;
+        for (int i = 0; i < n; i++) {
+            if (below[i] == 0) {
+                queue[tail++] = i;
+            }
+        }
+        while (head < tail) {
+            int i = queue[head++];
+            for (int k = start[i]; k < start[i + 1]; k++) {
+                int upper = over[k];
+                level[upper] = Math.max(level[upper], level[i] + 1);
+                if (--below[upper] == 0) {
+                    queue[tail++] = upper;
+                }
+            }
+        }
+        if (tail != n) {
+            throw new IllegalStateException("the stack on host has a cycle: a face lies above itself");
+        }
+        int highest = -1;
+        for (int l : level) {
+            highest = Math.max(highest, l);
+        }
+        top = highest;
+        levels = new int[faces.length];
+        for (int i = 0; i < n; i++) {
+            levels[i] = level[i];
+        }
+        return levels;
+    }
+}
