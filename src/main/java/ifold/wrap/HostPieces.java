@@ -4,6 +4,7 @@ import ifold.geom.Tolerance;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.IndexedPolygons;
 import ifold.refine.RefinedMesh;
+import ifold.sheet.HostFrame;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashMap;
@@ -413,5 +414,55 @@ final class HostPieces {
             }
             return kept.stream().mapToInt(Integer::intValue).toArray();
         }
+    }
+
+    /** Whether each triangle of the mesh is alone on its host (a curved surface's are). */
+    boolean[] alone() {
+        int[] count = new int[hostCount()];
+        for (int h : hostOf) {
+            count[h]++;
+        }
+        boolean[] alone = new boolean[hostOf.length];
+        for (int t = 0; t < alone.length; t++) {
+            alone[t] = count[hostOf[t]] == 1;
+        }
+        return alone;
+    }
+
+    /**
+     * Each host's frame: the frame of the first triangle of the path on it (a host of one
+     * triangle keeps its triangle's frame), with the host's polygon for corners.
+     */
+    HostFrame[] frames(IndexedPolygons mesh, HostFrame[] triangleFrames) {
+        HostFrame[] frames = new HostFrame[hostCount()];
+        for (int t = 0; t < triangleFrames.length; t++) {
+            int h = hostOf[t];
+            if (frames[h] != null) {
+                continue;
+            }
+            HostFrame f = triangleFrames[t];
+            int[] corners = this.corners[h];
+            if (corners.length == 3 && sameCorners(corners, mesh, t)) {
+                frames[h] = f; // a host of one triangle: its frame and corners as the planner has them
+                continue;
+            }
+            double[] xy = new double[2 * corners.length];
+            for (int k = 0; k < corners.length; k++) {
+                double[] p = Wrap.position(mesh, corners[k]);
+                xy[2 * k] = f.localX(p);
+                xy[2 * k + 1] = f.localY(p);
+            }
+            frames[h] = new HostFrame(f.origin(), f.ex(), f.ey(), f.normal(), xy);
+        }
+        return frames;
+    }
+
+    private static boolean sameCorners(int[] corners, IndexedPolygons mesh, int t) {
+        for (int v : corners) {
+            if (v != mesh.faceVertex(t, 0) && v != mesh.faceVertex(t, 1) && v != mesh.faceVertex(t, 2)) {
+                return false;
+            }
+        }
+        return true;
     }
 }

@@ -1,8 +1,8 @@
 package ifold.wrap;
 
 import static ifold.wrap.Wrap.position;
+import static ifold.wrap.Wrap.cornersText;
 import static ifold.wrap.Wrap.sq;
-import static ifold.wrap.Wrap.tooWide;
 
 import ifold.mesh.IndexedPolygons;
 import ifold.sheet.HostFrame;
@@ -11,6 +11,7 @@ import ifold.wrap.Wrap.TooWideException;
 import ifold.wrap.Wrap.WrapException;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 
 /**
  * How every triangle of one path is entered and left, and the planning of it: each triangle
@@ -291,5 +292,17 @@ final class PathPlan {
             }
         }
         return best;
+    }
+
+    /**
+     * Why {@code width} is refused at a triangle, and the width every triangle takes: the first
+     * triangle found too narrow need not be the narrowest, and a width it takes may still be
+     * refused further on.
+     */
+    static String tooWide(IndexedPolygons mesh, int triangle, int pathIndex, int m, double width, double altitude,
+            double widest) {
+        return String.format(Locale.ROOT, "the strip width %s is too wide for triangle %d of %d on the path (%s): "
+                + "its passes need a width of at most %s, and the whole path one of at most %s", width, pathIndex + 1, m,
+                cornersText(mesh, triangle), altitude, widest);
     }
 }

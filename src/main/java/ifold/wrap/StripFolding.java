@@ -5,10 +5,8 @@ import static ifold.wrap.PathPlan.likelyFaces;
 import static ifold.wrap.PathPlan.overlapped;
 import static ifold.wrap.PathPlan.passes;
 import static ifold.wrap.Wrap.BYTES_PER_FACE;
-import static ifold.wrap.Wrap.SHARPEST_TUCKED;
 import static ifold.wrap.Wrap.cornerName;
 import static ifold.wrap.Wrap.cornersText;
-import static ifold.wrap.Wrap.maxTucks;
 import static ifold.wrap.Wrap.position;
 
 import ifold.geom.SlantedEdges;
@@ -16,7 +14,6 @@ import ifold.mesh.IndexedPolygons;
 import ifold.sheet.FoldException;
 import ifold.sheet.HostFrame;
 import ifold.sheet.Isometry2;
-import ifold.sheet.Sheet.Crease;
 import ifold.sheet.Sheet.Placement;
 import ifold.sheet.Sheet;
 import ifold.sheet.Tuck;
@@ -38,6 +35,28 @@ import java.util.Map;
  * recorded as a step ({@link Wrap} plans the paths and the width; this folds them).
  */
 final class StripFolding {
+    /**
+     * The fewest tucks on one triangle before giving up; a host with a corner sharper than
+     * 0.72° gets more ({@link #maxTucks}).
+     */
+    public static final int MAX_TUCKS = 1000;
+
+    /**
+     * The most tucks on one triangle of a host whose smallest corner is {@code degrees}: the
+     * naïve tucks bounce a flap between the edges of a corner of θ degrees about 180/θ times
+     * (601 on a triangle of the 0.3° corner in docs/wrap.md), so four times that, and never
+     * fewer than {@link #MAX_TUCKS}. Past it the tucks are running away, not converging.
+     */
+    public static int maxTucks(double degrees) {
+        return (int) Math.min(Integer.MAX_VALUE / 2, Math.max(MAX_TUCKS, Math.ceil(4 * 180 / degrees)));
+    }
+
+    /**
+     * The sharpest corner of a host whose tucks have been seen to finish, in degrees: a 0.1°
+     * corner wraps (5,416 tucks), and a needle of 0.0115° corners tears the strip at every width.
+     */
+    static final double SHARPEST_TUCKED = 0.1;
+
     private final IndexedPolygons mesh;
     private final PathPlan plan;
     private final int strip;
@@ -146,7 +165,7 @@ final class StripFolding {
             double end = endOfPass(edges, d, bottom[k - 1]);
             if (overlapped(plan, w)) {
                 detail = "the strip turns back to end at corner " + cornerName(plan.ends.end());
-                tailFold(Kind.OVERLAP, host, end, 0, 0, 1, Placement.OVER, Crease.TURN);
+                tailFold(Kind.OVERLAP, host, end, 0, 0, 1, Placement.OVER);
                 d = -d;
                 end = endOfPass(edges, d, bottom[k - 1]);
             }
@@ -226,20 +245,20 @@ final class StripFolding {
             // A valley fold lays the strip back across itself along the edge, a mountain fold
             // one width on lays it flat beside the pass it left, running back.
             detail = passNote + ": turn, 45° valley fold";
-            tailFold(Kind.ZIGZAG_TURN, host, x1, y + w, d, -1, Placement.OVER, Crease.TURN);
+            tailFold(Kind.ZIGZAG_TURN, host, x1, y + w, d, -1, Placement.OVER);
             detail = passNote + ": turn, 45° mountain fold";
             double[] corner = tailCorner(x1 + d * w, y);
-            tailFold(Kind.ZIGZAG_TURN, host, corner[0], corner[1], -d, -1, Placement.UNDER, Crease.TURN);
+            tailFold(Kind.ZIGZAG_TURN, host, corner[0], corner[1], -d, -1, Placement.UNDER);
             return;
         }
         // Two 90° turn gadgets: down a vertical band [x1, x1 + w] beyond the edge, then back
         // along the next pass; the fold across the vertical band sets where the next pass lies.
         double middle = x1 + d * w / 2;
         detail = passNote + ": shift by less than a width, two 90° gadgets";
-        tailFold(Kind.TURN_GADGET, host, x1 + d * w, 0, 0, 1, Placement.OVER, Crease.GADGET);
-        tailFold(Kind.TURN_GADGET, host, middle, y + w / 2, -d, -1, Placement.OVER, Crease.GADGET);
-        tailFold(Kind.TURN_GADGET, host, 0, next, 1, 0, Placement.OVER, Crease.GADGET);
-        tailFold(Kind.TURN_GADGET, host, middle, next + w / 2, -d, 1, Placement.UNDER, Crease.GADGET);
+        tailFold(Kind.TURN_GADGET, host, x1 + d * w, 0, 0, 1, Placement.OVER);
+        tailFold(Kind.TURN_GADGET, host, middle, y + w / 2, -d, -1, Placement.OVER);
+        tailFold(Kind.TURN_GADGET, host, 0, next, 1, 0, Placement.OVER);
+        tailFold(Kind.TURN_GADGET, host, middle, next + w / 2, -d, 1, Placement.UNDER);
     }
 
     /** From the last pass of triangle i (band [0, w], direction d) into the first pass of triangle i + 1. */
@@ -271,9 +290,9 @@ final class StripFolding {
         double fold = d > 0 ? Math.max(edges.rightmost(0, w) + margin, meetX + reach)
                 : Math.min(edges.leftmost(0, w) - margin, meetX - reach);
         detail = "fold back across the strip";
-        tailFold(Kind.TURN_GADGET, host, fold, 0, 0, 1, Placement.OVER, Crease.GADGET);
+        tailFold(Kind.TURN_GADGET, host, fold, 0, 0, 1, Placement.OVER);
         detail = "turn to run along the next triangle's first pass";
-        tailFold(Kind.TURN_GADGET, host, meetX, w / 2, lx, ly, Placement.OVER, Crease.GADGET);
+        tailFold(Kind.TURN_GADGET, host, meetX, w / 2, lx, ly, Placement.OVER);
         detail = "";
         int nextHost = hostOf(i + 1);
         if (nextHost == hostOf(i)) {
@@ -438,11 +457,11 @@ final class StripFolding {
         return best;
     }
 
-    private void tailFold(Kind kind, int host, double px, double py, double dx, double dy, Placement next, Crease crease)
+    private void tailFold(Kind kind, int host, double px, double py, double dx, double dy, Placement next)
             throws FoldException, WrapException {
         int hostBefore = sheet.tailHost();
         Isometry2 before = sheet.tailPose();
-        int face = sheet.foldTail(intoHost.x(px, py), intoHost.y(px, py), intoHost.dx(dx, dy), intoHost.dy(dx, dy), next, crease);
+        int face = sheet.foldTail(intoHost.x(px, py), intoHost.y(px, py), intoHost.dx(dx, dy), intoHost.dy(dx, dy), next, kind.crease());
         recordTail(kind, host, face, hostBefore, before, next == Placement.OVER);
     }
 

@@ -9,6 +9,7 @@ import static ifold.wrap.PathPlan.narrowestFitting;
 import static ifold.wrap.PathPlan.passes;
 import static ifold.wrap.PathPlan.plans;
 import static ifold.wrap.PathPlan.third;
+import static ifold.wrap.PathPlan.tooWide;
 
 import ifold.geom.Tolerance;
 import ifold.geom.Triangle;
@@ -61,21 +62,6 @@ import java.util.Locale;
  * never the strip that crosses E_{i-1} or E_i, which rests on other triangles.
  */
 public final class Wrap {
-    /**
-     * The fewest tucks on one triangle before giving up; a host with a corner sharper than
-     * 0.72° gets more ({@link #maxTucks}).
-     */
-    public static final int MAX_TUCKS = 1000;
-
-    /**
-     * The most tucks on one triangle of a host whose smallest corner is {@code degrees}: the
-     * naïve tucks bounce a flap between the edges of a corner of θ degrees about 180/θ times
-     * (601 on a triangle of the 0.3° corner in docs/wrap.md), so four times that, and never
-     * fewer than {@link #MAX_TUCKS}. Past it the tucks are running away, not converging.
-     */
-    public static int maxTucks(double degrees) {
-        return (int) Math.min(Integer.MAX_VALUE / 2, Math.max(MAX_TUCKS, Math.ceil(4 * 180 / degrees)));
-    }
 
     /**
      * What a face of paper costs a whole run of {@code ifold wrap} in resident memory, the sheet,
@@ -102,12 +88,6 @@ public final class Wrap {
 
     private Wrap() {
     }
-
-    /**
-     * The sharpest corner of a host whose tucks have been seen to finish, in degrees: a 0.1°
-     * corner wraps (5,416 tucks), and a needle of 0.0115° corners tears the strip at every width.
-     */
-    static final double SHARPEST_TUCKED = 0.1;
 
     /**
      * The default thickness is the width over this: a strip as thin as good paper for its width
@@ -222,8 +202,27 @@ public final class Wrap {
         }
     }
 
-    /** What a step of the wrap does. */
-    public enum Kind { ZIGZAG_TURN, TURN_GADGET, EDGE_CROSSING, OVERLAP, TUCK, END }
+    /**
+     * What a step of the wrap does, and the crease it leaves on the sheet ({@link Sheet.Crease}:
+     * why the paper is creased there, which the sheet keeps for each crease): a step's kind
+     * names the work, the crease its mark, so an overlap leaves a turn's crease and the strip's
+     * end none.
+     */
+    public enum Kind {
+        ZIGZAG_TURN(Sheet.Crease.TURN), TURN_GADGET(Sheet.Crease.GADGET), EDGE_CROSSING(Sheet.Crease.CROSSING),
+        OVERLAP(Sheet.Crease.TURN), TUCK(Sheet.Crease.TUCK), END(null);
+
+        private final Sheet.Crease crease;
+
+        Kind(Sheet.Crease crease) {
+            this.crease = crease;
+        }
+
+        /** The crease a fold of this kind leaves; null for the strip's end. */
+        public Sheet.Crease crease() {
+            return crease;
+        }
+    }
 
     /**
      * One fold of the wrap, for the report and the animation.
@@ -374,7 +373,7 @@ public final class Wrap {
         if (!(width > 0) || !Double.isFinite(width)) {
             return Long.MAX_VALUE;
         }
-        return faces(plans, width, alone(HostPieces.of(refinement.mesh())), true);
+        return faces(plans, width, HostPieces.of(refinement.mesh()).alone(), true);
     }
 
     /** The passes the narrowest triangle gets at the default width. */
@@ -500,7 +499,7 @@ public final class Wrap {
             }
         }
         HostPieces pieces = HostPieces.of(mesh);
-        boolean[] alone = alone(pieces);
+        boolean[] alone = pieces.alone();
         long fewestFaces = faces(plans, width, alone, false);
         if (fewestFaces > options.maxFaces()) {
             double fits = narrowestFitting(plans, alone, width, widest, options.maxFaces());
@@ -511,7 +510,7 @@ public final class Wrap {
                     : String.format(Locale.ROOT, "no strip the path takes fits: the widest, %.4g, which the narrowest triangle (%s) "
                     + "sets, would make about %d", widest, cornersText(mesh, narrowest), faces(plans, widest, alone, true))));
         }
-        HostFrame[] frames = BendRoom.of(mesh, pieces.hostOf, hostFrames(mesh, pieces, triangleFrames), tolerance);
+        HostFrame[] frames = BendRoom.of(mesh, pieces.hostOf, pieces.frames(mesh, triangleFrames), tolerance);
         Isometry2[] toHost = new Isometry2[mesh.faceCount()];
         for (PathPlan plan : plans) {
             for (int i = 0; i < plan.m; i++) {
@@ -539,55 +538,6 @@ public final class Wrap {
             widest = Double.NaN;
         }
         return new Result(mesh, frames, pieces.hostOf, List.copyOf(strips), List.copyOf(steps), width, thickness, widest);
-    }
-
-    private static boolean sameCorners(int[] corners, IndexedPolygons mesh, int t) {
-        for (int v : corners) {
-            if (v != mesh.faceVertex(t, 0) && v != mesh.faceVertex(t, 1) && v != mesh.faceVertex(t, 2)) {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    /**
-     * Each host's frame: the frame of the first triangle of the path on it (a host of one
-     * triangle keeps its triangle's frame), with the host's polygon for corners.
-     */
-    private static HostFrame[] hostFrames(IndexedPolygons mesh, HostPieces pieces, HostFrame[] triangleFrames) {
-        HostFrame[] frames = new HostFrame[pieces.hostCount()];
-        for (int t = 0; t < triangleFrames.length; t++) {
-            int h = pieces.hostOf[t];
-            if (frames[h] != null) {
-                continue;
-            }
-            HostFrame f = triangleFrames[t];
-            int[] corners = pieces.corners[h];
-            if (corners.length == 3 && sameCorners(corners, mesh, t)) {
-                frames[h] = f; // a host of one triangle: its frame and corners as the planner has them
-                continue;
-            }
-            double[] xy = new double[2 * corners.length];
-            for (int k = 0; k < corners.length; k++) {
-                double[] p = position(mesh, corners[k]);
-                xy[2 * k] = f.localX(p);
-                xy[2 * k + 1] = f.localY(p);
-            }
-            frames[h] = new HostFrame(f.origin(), f.ex(), f.ey(), f.normal(), xy);
-        }
-        return frames;
-    }
-
-    /**
-     * Why {@code width} is refused at a triangle, and the width every triangle takes: the first
-     * triangle found too narrow need not be the narrowest, and a width it takes may still be
-     * refused further on.
-     */
-    static String tooWide(IndexedPolygons mesh, int triangle, int pathIndex, int m, double width, double altitude,
-            double widest) {
-        return String.format(Locale.ROOT, "the strip width %s is too wide for triangle %d of %d on the path (%s): "
-                + "its passes need a width of at most %s, and the whole path one of at most %s", width, pathIndex + 1, m,
-                cornersText(mesh, triangle), altitude, widest);
     }
 
     /** A triangle by its corners, six digits each: "(0.292893 0.292893 0.00000), (1.00000 0.00000 0.00000), ...". */
@@ -637,19 +587,6 @@ public final class Wrap {
 
     static double[] position(IndexedPolygons mesh, int v) {
         return new double[] {mesh.coordinate(v, 0), mesh.coordinate(v, 1), mesh.coordinate(v, 2)};
-    }
-
-    /** Whether each triangle of the mesh is alone on its host (a curved surface's are). */
-    private static boolean[] alone(HostPieces pieces) {
-        int[] count = new int[pieces.hostCount()];
-        for (int h : pieces.hostOf) {
-            count[h]++;
-        }
-        boolean[] alone = new boolean[pieces.hostOf.length];
-        for (int t = 0; t < alone.length; t++) {
-            alone[t] = count[pieces.hostOf[t]] == 1;
-        }
-        return alone;
     }
 
     /** The name of a lone triangle's corner at place {@code k} of its face: A, B, C, as the user gave them. */

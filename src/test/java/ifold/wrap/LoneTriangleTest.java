@@ -120,16 +120,16 @@ class LoneTriangleTest {
         // within the 4 x 180 / 0.23 its corner allows.
         Wrap.Result sharper = wrapAndCheck(Triangle.planar(0, 0, 10, 0, 5, 0.02), 0.02 / 20, 0.00004, 2, 0, -1);
         int tucks = sharper.count(Wrap.Kind.TUCK);
-        assertTrue(tucks > Wrap.MAX_TUCKS && tucks < Wrap.maxTucks(0.229), "tucks: " + tucks);
+        assertTrue(tucks > StripFolding.MAX_TUCKS && tucks < StripFolding.maxTucks(0.229), "tucks: " + tucks);
     }
 
     @Test
     void theTucksAllowedGrowAsTheCornerSharpens() {
-        assertEquals(Wrap.MAX_TUCKS, Wrap.maxTucks(60));
-        assertEquals(Wrap.MAX_TUCKS, Wrap.maxTucks(0.72));
-        assertEquals(2400, Wrap.maxTucks(0.3));
-        assertEquals(7200, Wrap.maxTucks(0.1));
-        assertTrue(Wrap.maxTucks(0) > 1_000_000_000, "a degenerate corner is not a limit of zero");
+        assertEquals(StripFolding.MAX_TUCKS, StripFolding.maxTucks(60));
+        assertEquals(StripFolding.MAX_TUCKS, StripFolding.maxTucks(0.72));
+        assertEquals(2400, StripFolding.maxTucks(0.3));
+        assertEquals(7200, StripFolding.maxTucks(0.1));
+        assertTrue(StripFolding.maxTucks(0) > 1_000_000_000, "a degenerate corner is not a limit of zero");
     }
 
     @Test
