@@ -11,7 +11,7 @@ import ifold.render.FrameExport;
 import ifold.render.RenderUnavailableException;
 import ifold.scene.Animation;
 import ifold.scene.Scene;
-import ifold.scene.WrapView;
+import ifold.scene.WrapPlayback;
 import ifold.sheet.FoldException;
 import ifold.sheet.Sheet;
 import ifold.wrap.ParameterException;
@@ -133,7 +133,7 @@ final class DemoCommand implements Runnable {
             out.flush();
 
             Scene scene = new Scene();
-            WrapView.Playback animation = Scenes.zigzag(scene, shape, result, geometries);
+            WrapPlayback animation = Scenes.zigzag(scene, shape, result, geometries);
             if (figure != null) {
                 double[] stages = Scenes.figure11Stages(animation, result);
                 try {

@@ -2,17 +2,18 @@ package ifold.cli;
 
 import ifold.check.LayerOrder;
 import ifold.check.PaperCollisions;
-import ifold.job.Collisions;
-import ifold.job.LayerOrders;
-import ifold.job.Json;
-import ifold.io.AtomicFile;
-import ifold.mesh.IndexedPolygons;
 import ifold.fold.FoldFile;
+import ifold.io.AtomicFile;
+import ifold.job.Collisions;
+import ifold.job.Json;
+import ifold.job.LayerOrders;
+import ifold.mesh.IndexedPolygons;
 import ifold.render.RenderUnavailableException;
 import ifold.render.ViewerWindow;
 import ifold.scene.Animation;
 import ifold.scene.Player;
 import ifold.scene.Scene;
+import ifold.scene.WrapPlayback;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapExport;
 import ifold.wrap.WrapGeometry;
@@ -293,7 +294,7 @@ final class PaperOutputs {
         PrintWriter err = spec.commandLine().getErr();
         boolean secondsGiven = spec.commandLine().getParseResult().hasMatchedOption("--seconds");
         double seconds = secondsGiven ? frameOptions.seconds : defaultSeconds;
-        if (animation instanceof ifold.scene.WrapView.Playback playback) {
+        if (animation instanceof ifold.scene.WrapPlayback playback) {
             playback.pace(seconds); // its folds laid out so that every caption can be read in the time it has
         }
         if (frameOptions.renders()) {

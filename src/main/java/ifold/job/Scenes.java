@@ -15,6 +15,7 @@ import ifold.scene.PathView;
 import ifold.scene.Scene;
 import ifold.scene.SceneMesh;
 import ifold.scene.Turntable;
+import ifold.scene.WrapPlayback;
 import ifold.scene.WrapView;
 import ifold.script.ScriptFolding;
 import ifold.wrap.Wrap;
@@ -106,7 +107,7 @@ public final class Scenes {
     public static final int BACKGROUND = 0xFFD3DAE2;
 
     /** The lone triangle, solid and outlined in green, and the strip laid fold by fold over it, then turned round. */
-    public static WrapView.Playback zigzag(Scene scene, Triangle shape, Wrap.Result result, List<WrapGeometry> geometries) {
+    public static WrapPlayback zigzag(Scene scene, Triangle shape, Wrap.Result result, List<WrapGeometry> geometries) {
         scene.root().attach(solid(shape));
         scene.root().attach(outline(shape));
         scene.setLegend(List.of(WrapView.TOP_SIDE, WrapView.UNDERSIDE, new Scene.Swatch(WrapView.MODEL, "the triangle")));
@@ -128,20 +129,20 @@ public final class Scenes {
      * {@link #FIGURE11_LABELS} name them: the first turn, every pass laid, the excess tucked
      * under, the underside.
      */
-    public static double[] figure11Stages(WrapView.Playback playback, Wrap.Result result) {
+    public static double[] figure11Stages(WrapPlayback playback, Wrap.Result result) {
         int laid = result.count(Wrap.Kind.ZIGZAG_TURN) + result.count(Wrap.Kind.OVERLAP);
         return new double[] {playback.positionAfter(Math.min(2, laid)), playback.positionAfter(laid),
             playback.positionAfter(result.steps().size()), playback.halfTurn()};
     }
 
     /** The turn gadget's strip folded on an empty table. */
-    public static WrapView.Playback turn(Scene scene, Wrap.Result result, List<WrapGeometry> geometries) {
+    public static WrapPlayback turn(Scene scene, Wrap.Result result, List<WrapGeometry> geometries) {
         scene.setLegend(List.of(WrapView.TOP_SIDE, WrapView.UNDERSIDE));
         return paper(scene, result, geometries, "turned: the strip runs on at the angle asked, top side up");
     }
 
     /** The model, solid, and the strips laid over it along the path; then a turn around it. */
-    public static WrapView.Playback wrap(Scene scene, HalfedgeMesh mesh, Wrap.Result result, List<WrapGeometry> geometries) {
+    public static WrapPlayback wrap(Scene scene, HalfedgeMesh mesh, Wrap.Result result, List<WrapGeometry> geometries) {
         Geometry solid = new Geometry(MODEL, SceneMesh.of(mesh), new Material(WrapView.MODEL, 0xFF4A5460, false, false));
         scene.root().attach(solid);
         // Blue-grey underside over a grey-blue model reads as a hole: the legend says which is which.
@@ -214,7 +215,7 @@ public final class Scenes {
         return animation;
     }
 
-    private static WrapView.Playback paper(Scene scene, Wrap.Result result, List<WrapGeometry> geometries, String ending) {
+    private static WrapPlayback paper(Scene scene, Wrap.Result result, List<WrapGeometry> geometries, String ending) {
         // White paper on a white background would not be seen where it leaves the triangle.
         scene.setBackground(BACKGROUND);
         return WrapView.play(scene, result, geometries, ending);

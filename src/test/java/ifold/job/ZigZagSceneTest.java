@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import ifold.geom.Triangle;
 import ifold.mesh.PolygonSoup;
 import ifold.scene.Scene;
+import ifold.scene.WrapPlayback;
 import ifold.scene.WrapView;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapGeometry;
@@ -26,7 +27,7 @@ class ZigZagSceneTest {
         Wrap.Result result = Wrap.wrap(soup, new int[] {0, 1},
                 Wrap.Options.loneTriangle(shape, new Wrap.Ends(2, 0, -1), Double.NaN, Double.NaN));
         Scene scene = new Scene();
-        WrapView.Playback playback = Scenes.zigzag(scene, shape, result,
+        WrapPlayback playback = Scenes.zigzag(scene, shape, result,
                 List.of(WrapGeometry.of(result.strips().get(0).sheet(), result.frames())));
 
         List<Scene.Label> labels = scene.labels();
@@ -68,7 +69,7 @@ class ZigZagSceneTest {
     }
 
     /** While a caption says "seen from below", the camera is below the triangle (in z = 0, its normal +z), at every moment. */
-    private static void assertCaptionsSeenFromBelowOnlyFromBelow(Scene scene, WrapView.Playback playback) {
+    private static void assertCaptionsSeenFromBelowOnlyFromBelow(Scene scene, WrapPlayback playback) {
         org.joml.Vector3d eye = new org.joml.Vector3d();
         int below = 0;
         for (int k = 0; k <= 2000; k++) {

@@ -71,7 +71,7 @@ class WrapViewTest {
                 MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();
     }
 
-    private static WrapView.Playback playback(Scene scene, HalfedgeMesh mesh, Wrap.Result result) {
+    private static WrapPlayback playback(Scene scene, HalfedgeMesh mesh, Wrap.Result result) {
         List<WrapGeometry> geometries = new ArrayList<>();
         for (Wrap.Strip strip : result.strips()) {
             geometries.add(WrapGeometry.of(strip.sheet(), result.frames()));
@@ -101,7 +101,7 @@ class WrapViewTest {
         Wrap.Result result = wrap(mesh);
         int path = result.strips().get(0).triangles();
         assertTrue(result.steps().size() > 800 && path > 50, "check the setup: eight hundred folds over some fifty triangles");
-        WrapView.Playback animation = playback(new Scene(), mesh, result);
+        WrapPlayback animation = playback(new Scene(), mesh, result);
         for (double seconds : new double[] {120, 30}) {
             animation.pace(seconds);
             List<Map.Entry<String, Double>> runs = captionRuns(animation, seconds, 30);
@@ -133,7 +133,7 @@ class WrapViewTest {
         HalfedgeMesh mesh = cube();
         Wrap.Result result = wrap(mesh);
         Scene scene = new Scene();
-        WrapView.Playback animation = playback(scene, mesh, result);
+        WrapPlayback animation = playback(scene, mesh, result);
         int n = result.steps().size();
         Wrap.Strip strip = result.strips().get(0);
         int j = 0;

@@ -11,6 +11,7 @@ import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.io.MeshWriters;
 import ifold.refine.HamiltonianRefinement;
+import ifold.scene.WrapPlayback;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -149,7 +150,7 @@ public final class Exports {
     private static Renderer.Rendered render(Renderer renderer, Plan plan, FrameSink sink, FrameSettings settings, Progress progress)
             throws IOException, JobFailure {
         Plan.Shown shown = plan.newScene();
-        if (shown.animation() instanceof ifold.scene.WrapView.Playback playback) {
+        if (shown.animation() instanceof ifold.scene.WrapPlayback playback) {
             playback.pace(settings.seconds()); // as the command line's movies: every caption long enough to read
         }
         progress.check();

@@ -20,7 +20,7 @@ import ifold.refine.HamiltonianRefinement;
 import ifold.scene.Animation;
 import ifold.scene.PathView;
 import ifold.scene.Scene;
-import ifold.scene.WrapView;
+import ifold.scene.WrapPlayback;
 import ifold.script.FoldScript;
 import ifold.script.ScriptFolding;
 import ifold.sheet.FoldException;
@@ -269,7 +269,7 @@ public final class Planning {
         int folds = result.steps().size() - result.count(Wrap.Kind.END);
         return paperPlan(job, model.getFileName() + ": " + result.strips().size() + (result.strips().size() == 1 ? " strip, " : " strips, ") + folds + " folds",
                 result, geometries, figures, 120, "ifold wrap " + model, wrapped.movedBy(), scene -> {
-                    WrapView.Playback playback = Scenes.wrap(scene, mesh, result, geometries);
+                    WrapPlayback playback = Scenes.wrap(scene, mesh, result, geometries);
                     Scenes.refinement(scene, refinement);
                     Scenes.collisions(scene, geometries, collisions);
                     return playback;
@@ -397,13 +397,13 @@ public final class Planning {
     /** How a scene of a wrap is made: filled into the scene given, its playback returned. */
     @FunctionalInterface
     private interface WrapScene {
-        WrapView.Playback fill(Scene scene);
+        WrapPlayback fill(Scene scene);
     }
 
     private static Plan paperPlan(Job job, String title, Wrap.Result result, List<WrapGeometry> geometries, Map<String, Object> figures,
             double seconds, String source, double[] movedBy, WrapScene scenes) {
         Scene scene = new Scene();
-        WrapView.Playback playback = scenes.fill(scene);
+        WrapPlayback playback = scenes.fill(scene);
         playback.pace(seconds); // the window plays it in as many seconds: its captions as long as a movie's
         List<Fold> folds = new ArrayList<>(result.steps().size());
         boolean several = result.strips().size() > 1;
@@ -421,7 +421,7 @@ public final class Planning {
         }
         return new Plan(job, title, new Plan.Shown(scene, playback), List.copyOf(folds), figures, seconds, () -> {
             Scene another = new Scene();
-            WrapView.Playback again = scenes.fill(another);
+            WrapPlayback again = scenes.fill(another);
             again.pace(seconds); // laid out as the window's, so that the figure's stages fall where they did
             return new Plan.Shown(another, again);
         }, out -> WrapExport.writeObj(out, WrapExport.aboutCentre(source, movedBy), result, geometries), List.copyOf(sheets), source,

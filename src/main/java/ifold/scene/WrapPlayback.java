@@ -1,0 +1,415 @@
+package ifold.scene;
+
+import ifold.mesh.IndexedPolygons;
+import ifold.wrap.Wrap;
+import java.util.ArrayList;
+import java.util.List;
+import org.joml.Quaterniond;
+import org.joml.Quaterniondc;
+import org.joml.Vector3d;
+
+/**
+ * The wrap played fold by fold, then one turn around the result. A movie of a thousand folds
+ * cannot show each for long enough to read its caption: the first triangle is shown fold by
+ * fold, and each later step is a triangle, or a run of them, wrapped the same way, said so in
+ * its caption; every caption stays at least {@link WrapView#CAPTION_SECONDS} at the length it is
+ * {@linkplain #pace paced} for.
+ */
+public final class WrapPlayback implements Animation {
+    final Scene scene;
+
+    final Geometry done;
+
+    final Geometry current;
+
+    final WrapView.Strips strips;
+
+    final Wrap.Result result;
+
+    final List<Wrap.Step> steps;
+
+    /** For each step, its place among all path triangles (strips one after another). */
+    final int[] triangleOf;
+
+    /** Each strip's face levels, final: found once, not per frame. */
+    final int[][] levels;
+
+    final int triangles;
+
+    final double[] centres;
+
+    final double[] normals;
+
+    final Vector3d modelCentre;
+
+    final double modelRadius;
+
+    final int window;
+
+    /** What the final turn starts from: the model turned to show its outer side, where it has one. */
+    final Quaterniondc finalFacing;
+
+    final double finalTurn;
+
+    /** The caption once all is folded: what the paper does now. */
+    final String ending;
+
+    double shown = -1;
+
+    /** For each step, the position it begins at; the last entry is the end of the folding. */
+    double[] stepStart;
+
+    /** For each step, the beat (a caption's time on screen) it is played in. */
+    int[] beatOfStep;
+
+    /** Each beat's caption, or null where it is its fold's own. */
+    String[] beatCaption;
+
+    /** The positions one beat lasts. */
+    double beatLength;
+
+    /** For each path triangle, the positions its folds begin and end at. */
+    double[] slotStart;
+
+    double[] slotEnd;
+
+    /** For each path triangle, its first step and the step after its last (none: equal). */
+    int[] firstStep;
+
+    int[] endStep;
+    /** The paper being folded, as it stands at each moment. */
+    final PlaybackMesh meshes = new PlaybackMesh(this);
+    /** Where the camera looks as the wrap plays. */
+    final PlaybackCamera cameraPath = new PlaybackCamera(this);
+
+    WrapPlayback(Scene scene, Geometry done, Geometry current, WrapView.Strips strips, Wrap.Result result, String ending) {
+        this.scene = scene;
+        this.done = done;
+        this.current = current;
+        this.strips = strips;
+        this.result = result;
+        this.ending = ending;
+        this.steps = result.steps();
+        IndexedPolygons mesh = result.mesh();
+        int[] firstOfStrip = new int[result.strips().size()];
+        int total = 0;
+        for (int k = 0; k < result.strips().size(); k++) {
+            firstOfStrip[k] = total;
+            total += result.strips().get(k).triangles();
+        }
+        triangles = total;
+        levels = new int[result.strips().size()][];
+        for (int k = 0; k < levels.length; k++) {
+            levels[k] = result.strips().get(k).sheet().levels();
+        }
+        triangleOf = new int[steps.size()];
+        for (int j = 0; j < steps.size(); j++) {
+            triangleOf[j] = firstOfStrip[steps.get(j).strip()] + steps.get(j).pathIndex();
+        }
+        centres = new double[3 * triangles];
+        normals = new double[3 * triangles];
+        double[] areas = new double[triangles];
+        int g = 0;
+        for (Wrap.Strip strip : result.strips()) {
+            for (int i = 0; i < strip.triangles(); i++, g++) {
+                int t = strip.firstTriangle() + i;
+                double[] n = result.frames()[result.hostOf()[t]].normal();
+                for (int axis = 0; axis < 3; axis++) {
+                    double sum = 0;
+                    for (int c = 0; c < 3; c++) {
+                        sum += mesh.coordinate(mesh.faceVertex(t, c), axis);
+                    }
+                    centres[3 * g + axis] = sum / 3;
+                    normals[3 * g + axis] = n[axis];
+                }
+                areas[g] = PlaybackMesh.area(mesh, t);
+            }
+        }
+        // An open surface (a lone triangle, a patch) is wrapped on the side its faces face:
+        // the final turn starts facing it. A closed one shows every side in turn anyway.
+        Vector3d weighted = new Vector3d();
+        double area = 0;
+        for (int t = 0; t < triangles; t++) {
+            double a = areas[t];
+            weighted.fma(a, new Vector3d(normals[3 * t], normals[3 * t + 1], normals[3 * t + 2]));
+            area += a;
+        }
+        boolean open = area > 0 && weighted.length() > 0.5 * area;
+        finalFacing = open ? Camera.facing(weighted.normalize()) : new Quaterniond();
+        finalTurn = open ? 0.3 : 0.6;
+        Bounds bounds = scene.bounds();
+        modelCentre = bounds.center(new Vector3d());
+        modelRadius = bounds.radius();
+        // The camera follows a moving average of the triangles, so that it glides rather than jumps.
+        window = Math.max(1, triangles / 40);
+        firstStep = new int[triangles];
+        endStep = new int[triangles];
+        for (int j = steps.size() - 1; j >= 0; j--) {
+            firstStep[triangleOf[j]] = j;
+        }
+        for (int j = 0; j < steps.size(); j++) {
+            endStep[triangleOf[j]] = j + 1;
+        }
+        pace(WrapView.DEFAULT_SECONDS);
+    }
+
+    /**
+     * Lays the folds out for a playback of {@code seconds}, so that each caption stays at least
+     * {@link WrapView#CAPTION_SECONDS}: where there is time, the first triangle fold by fold and each
+     * later one a step; where there is not, the later ones in runs ("triangles 12-20 of 58:
+     * each wrapped as triangle 1"), or, on a lone triangle, its folds in runs.
+     */
+    public void pace(double seconds) {
+        if (!(seconds > 0)) {
+            throw new IllegalArgumentException("seconds must be positive, got " + seconds);
+        }
+        int n = steps.size();
+        stepStart = new double[n + 1];
+        beatOfStep = new int[n];
+        slotStart = new double[triangles];
+        slotEnd = new double[triangles];
+        if (n == 0) {
+            beatCaption = new String[0];
+            beatLength = WrapView.REVEAL_STEPS;
+            return;
+        }
+        double folding = seconds * WrapView.REVEAL_STEPS / (WrapView.REVEAL_STEPS + WrapView.TURN_STEPS);
+        int most = Math.max(1, (int) Math.floor(folding / WrapView.CAPTION_SECONDS + 1e-9));
+        // Each beat: its triangles (from, to) or, for a beat of folds, -1 and its steps.
+        List<int[]> beats = new ArrayList<>();
+        List<String> captions = new ArrayList<>();
+        List<Integer> withSteps = new ArrayList<>();
+        for (int t = 0; t < triangles; t++) {
+            if (endStep[t] > firstStep[t]) {
+                withSteps.add(t);
+            }
+        }
+        if (withSteps.size() == 1) {
+            int per = (n + most - 1) / most;
+            for (int j = 0; j < n; j += per) {
+                int end = Math.min(n, j + per);
+                beats.add(new int[] {-1, j, end});
+                captions.add(per == 1 ? null : describeStep(j) + (end - j == 1 ? " (fold " + end : " (folds " + (j + 1) + "\u2013" + end)
+                        + " of " + n + ")");
+            }
+        } else {
+            int first = withSteps.get(0);
+            int detailed = endStep[first] - firstStep[first];
+            boolean detail = detailed + 1 <= most;
+            List<Integer> grouped = detail ? withSteps.subList(1, withSteps.size()) : withSteps;
+            if (detail) {
+                for (int j = firstStep[first]; j < endStep[first]; j++) {
+                    beats.add(new int[] {-1, j, j + 1});
+                    captions.add(null);
+                }
+            }
+            int room = Math.max(1, most - beats.size());
+            List<List<Integer>> runs = runs(grouped, room);
+            for (List<Integer> run : runs) {
+                beats.add(new int[] {run.get(0), run.get(run.size() - 1)});
+                captions.add(describeRun(run, detail));
+            }
+        }
+        beatLength = (double) WrapView.REVEAL_STEPS / beats.size();
+        beatCaption = captions.toArray(new String[0]);
+        for (int b = 0; b < beats.size(); b++) {
+            int[] beat = beats.get(b);
+            double start = b * beatLength;
+            if (beat[0] == -1) {
+                int count = beat[2] - beat[1];
+                for (int j = beat[1]; j < beat[2]; j++) {
+                    stepStart[j] = start + beatLength * (j - beat[1]) / count;
+                    beatOfStep[j] = b;
+                }
+                continue;
+            }
+            // A run of triangles: each an equal share of the beat, each fold an equal share of its triangle's.
+            List<Integer> inRun = new ArrayList<>();
+            for (int t = beat[0]; t <= beat[1]; t++) {
+                if (endStep[t] > firstStep[t]) {
+                    inRun.add(t);
+                }
+            }
+            double share = beatLength / inRun.size();
+            for (int r = 0; r < inRun.size(); r++) {
+                int t = inRun.get(r);
+                int count = endStep[t] - firstStep[t];
+                for (int j = firstStep[t]; j < endStep[t]; j++) {
+                    stepStart[j] = start + share * (r + (double) (j - firstStep[t]) / count);
+                    beatOfStep[j] = b;
+                }
+            }
+        }
+        stepStart[n] = WrapView.REVEAL_STEPS;
+        for (int t = 0; t < triangles; t++) {
+            if (endStep[t] > firstStep[t]) {
+                slotStart[t] = stepStart[firstStep[t]];
+                slotEnd[t] = stepStart[endStep[t]];
+            }
+        }
+        shown = -1;
+    }
+
+    /** The triangles in runs of equal length, as few as fit in {@code room} beats, a run never crossing from one strip to the next. */
+    List<List<Integer>> runs(List<Integer> grouped, int room) {
+        for (int per = Math.max(1, (grouped.size() + room - 1) / room);; per++) {
+            List<List<Integer>> runs = new ArrayList<>();
+            List<Integer> run = new ArrayList<>();
+            for (int t : grouped) {
+                if (!run.isEmpty() && (run.size() == per || steps.get(firstStep[t]).strip() != steps.get(firstStep[run.get(0)]).strip())) {
+                    runs.add(run);
+                    run = new ArrayList<>();
+                }
+                run.add(t);
+            }
+            if (!run.isEmpty()) {
+                runs.add(run);
+            }
+            if (runs.size() <= room || per >= grouped.size()) {
+                return runs;
+            }
+        }
+    }
+
+    /** A run's caption: "triangles 12-20 of 58: each wrapped as triangle 1". */
+    String describeRun(List<Integer> run, boolean afterDetail) {
+        Wrap.Step first = steps.get(firstStep[run.get(0)]);
+        Wrap.Step last = steps.get(firstStep[run.get(run.size() - 1)]);
+        String strip = result.strips().size() > 1 ? "strip " + (first.strip() + 1) + ", " : "";
+        String which = run.size() == 1 ? "triangle " + (first.pathIndex() + 1)
+                : "triangles " + (first.pathIndex() + 1) + "\u2013" + (last.pathIndex() + 1);
+        String how = !afterDetail ? "zig-zag passes, turns and tucks"
+                : (run.size() == 1 ? "wrapped as triangle 1" : "each wrapped as triangle 1") + (result.strips().size() > 1 ? " of strip 1" : "");
+        return strip + which + " of " + first.pathLength() + ": " + how;
+    }
+
+    String describeStep(int j) {
+        Wrap.Step step = steps.get(j);
+        return (result.strips().size() > 1 ? "strip " + (step.strip() + 1) + ", " : "") + step.describe();
+    }
+
+    /** The beat shown at a position of the folding. */
+    int beatAt(double position) {
+        return beatOfStep[(int) Math.floor(along(position))];
+    }
+
+    public int stepCount() {
+        return WrapView.REVEAL_STEPS + WrapView.TURN_STEPS;
+    }
+
+    /** The position at which the first {@code folds} steps of the wrap are made and the next has not begun. */
+    public double positionAfter(int folds) {
+        return steps.isEmpty() ? 0 : stepStart[Math.max(0, Math.min(folds, steps.size()))];
+    }
+
+    /** The position half way round the final turn: the wrapped model seen from behind. */
+    public double halfTurn() {
+        return WrapView.REVEAL_STEPS + WrapView.TURN_STEPS / 2.0;
+    }
+
+    /** The step (fold) shown at a position, with how far it has gone. */
+    double along(double position) {
+        int n = steps.size();
+        if (position >= WrapView.REVEAL_STEPS) {
+            return n;
+        }
+        int j = java.util.Arrays.binarySearch(stepStart, 0, n, position);
+        j = j >= 0 ? j : -j - 2;
+        j = Math.max(0, Math.min(n - 1, j));
+        double length = stepStart[j + 1] - stepStart[j];
+        return j + (length > 0 ? Math.min(1, (position - stepStart[j]) / length) : 0);
+    }
+
+    public void apply(double position) {
+        if (position == shown) {
+            return;
+        }
+        shown = position;
+        Camera camera = scene.camera();
+        if (position >= WrapView.REVEAL_STEPS || steps.isEmpty()) {
+            done.setRevealed(Geometry.ALL);
+            current.setMesh(WrapView.EMPTY);
+            camera.frame(modelCentre, modelRadius);
+            double angle = Math.toRadians((position - WrapView.REVEAL_STEPS) * 360.0 / WrapView.TURN_STEPS);
+            Quaterniond turn = new Quaterniond().rotateX(-0.5).rotateY(finalTurn + Math.max(0, angle)).mul(finalFacing);
+            camera.setOrientation(turn);
+            // The first moments of the turn glide from where the camera followed the last fold.
+            double glide = steps.isEmpty() ? 1 : (position - WrapView.REVEAL_STEPS) / (WrapView.GLIDE * WrapView.TURN_STEPS);
+            if (glide < 1) {
+                Camera last = new Camera();
+                if (triangles > 2) {
+                    last.frame(modelCentre, PlaybackCamera.WIDE * modelRadius);
+                    last.setOrientation(cameraPath.closeOrientation(triangleOf[steps.size() - 1]));
+                } else {
+                    cameraPath.follow(last, triangles, cameraPath.underAt(steps.size()));
+                }
+                double b = PlaybackCamera.smooth(Math.max(0, glide));
+                camera.setOrientation(new Quaterniond(last.orientation()).slerp(turn, b));
+                camera.setTarget(new Vector3d(last.target()).lerp(camera.target(), b));
+                camera.setDistance(last.distance() + b * (camera.distance() - last.distance()));
+                camera.setSceneRadius(Math.max(last.sceneRadius(), camera.sceneRadius()));
+            }
+            return;
+        }
+        double along = along(position);
+        int j = Math.min(steps.size() - 1, (int) Math.floor(along));
+        double fraction = along - j;
+        Wrap.Step step = steps.get(j);
+        Wrap.Strip strip = result.strips().get(step.strip());
+        int i = step.pathIndex();
+        int k = step.strip();
+        // Triangles wrapped before this one are done; this one is drawn as it stands.
+        int doneTriangles = i > 0 ? strips.trianglesAfter()[k][i - 1] : k > 0 ? last(strips.trianglesAfter()[k - 1]) : 0;
+        done.setRevealed(doneTriangles);
+        int firstFace = i > 0 ? strip.facesAfter()[i - 1] : 0;
+        current.setMesh(meshes.currentMesh(strip, step, j, firstFace, fraction));
+        if (triangles > 2) {
+            cameraPath.frameTriangle(camera, position, triangleOf[j]);
+        } else {
+            cameraPath.follow(camera, triangleOf[j] + Math.min(1, (j + fraction - firstStepOf(j)) / Math.max(1, stepsOf(j))), cameraPath.underAt(along));
+        }
+    }
+
+    static int last(int[] a) {
+        return a[a.length - 1];
+    }
+
+    int firstStepOf(int j) {
+        int first = j;
+        while (first > 0 && triangleOf[first - 1] == triangleOf[j]) {
+            first--;
+        }
+        return first;
+    }
+
+    int stepsOf(int j) {
+        int first = firstStepOf(j);
+        int end = j;
+        while (end < steps.size() && triangleOf[end] == triangleOf[j]) {
+            end++;
+        }
+        return end - first;
+    }
+
+    public String describe(double position) {
+        if (position >= WrapView.REVEAL_STEPS || steps.isEmpty()) {
+            int strips = result.strips().size();
+            return ending != null ? ending : "wrapped: " + strips + (strips == 1 ? " strip" : " strips") + " over " + triangles
+                    + (triangles == 1 ? " triangle" : " triangles");
+        }
+        int beat = beatAt(position);
+        // On a lone triangle the camera turns under for the tucks: what is seen is the underside.
+        double middle = along(beat * beatLength + beatLength / 2);
+        String below = cameraPath.underAt(middle) > 0.5 ? " (seen from below)" : "";
+        if (beatCaption[beat] != null) {
+            // A beat of several folds is seen from below all through only where each is a tuck.
+            boolean tucks = triangles == 1;
+            for (int j = 0; j < steps.size() && tucks; j++) {
+                tucks = beatOfStep[j] != beat || steps.get(j).kind() == Wrap.Kind.TUCK;
+            }
+            return beatCaption[beat] + (tucks ? below : "");
+        }
+        int j = Math.min(steps.size() - 1, (int) Math.floor(along(position)));
+        return describeStep(j) + below;
+    }
+}
