@@ -53,12 +53,12 @@ public final class App {
                 lookAndFeel();
                 windowClass();
                 MainWindow frame = new MainWindow(settings);
-                frame.restoreOtherParameters();
+                frame.remembered.restoreOtherParameters();
                 frame.setVisible(true);
                 if (file != null) {
                     frame.open(file);
                 } else {
-                    frame.parameters.show(frame.rememberedZigZag());
+                    frame.parameters.show(frame.remembered.rememberedZigZag());
                 }
                 window.set(frame);
             });

@@ -379,7 +379,7 @@ class MainWindowTest {
         assertTrue(window.view.awaitFrame(30_000));
         assertTrue(undersidePixels(window.view.picture()) > 20_000, "setup: the blue-grey underside shows");
         onEdt(() -> {
-            window.setPaperColours(0xFFFFFF00, 0xFFFF0000);
+            window.menuBar.setPaperColours(0xFFFFFF00, 0xFFFF0000);
             return null;
         });
         assertTrue(window.view.awaitFrame(30_000));
