@@ -6,7 +6,7 @@ import ifold.refine.HamiltonianRefinement;
 import ifold.wrap.LayerFloor;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapAnalysis;
-import ifold.wrap.WrapGeometry;
+import ifold.wrap.PaperInSpace;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -27,9 +27,9 @@ public final class Corners {
             try {
                 Wrap.Result result = Wrap.wrap(HamiltonianRefinement.refine(FacePreparation.prepare(spike).mesh()),
                         new Wrap.Options(Double.NaN, Double.NaN));
-                List<WrapGeometry> geometries = new ArrayList<>();
+                List<PaperInSpace> geometries = new ArrayList<>();
                 for (Wrap.Strip strip : result.strips()) {
-                    geometries.add(WrapGeometry.of(strip.sheet(), result.frames()));
+                    geometries.add(PaperInSpace.of(strip.sheet(), result.frames()));
                 }
                 int[] tucks = new int[result.mesh().faceCount()];
                 for (Wrap.Step step : result.steps()) {

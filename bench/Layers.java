@@ -1,6 +1,6 @@
 import ifold.check.LayerOrder;
 import ifold.check.PaperCollisions;
-import ifold.fold.FoldFile;
+import ifold.foldfile.FoldFile;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.PolygonSoup;
@@ -11,7 +11,7 @@ import ifold.refine.HamiltonianRefinement;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapAnalysis;
 import ifold.wrap.WrapExport;
-import ifold.wrap.WrapGeometry;
+import ifold.wrap.PaperInSpace;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -46,9 +46,9 @@ public final class Layers {
             return "refused: " + e.getMessage().substring(0, Math.min(60, e.getMessage().length())) + "...";
         }
         double seconds = (System.nanoTime() - start) * 1e-9;
-        List<WrapGeometry> geometries = new ArrayList<>();
+        List<PaperInSpace> geometries = new ArrayList<>();
         for (Wrap.Strip strip : result.strips()) {
-            geometries.add(WrapGeometry.of(strip.sheet(), result.frames()));
+            geometries.add(PaperInSpace.of(strip.sheet(), result.frames()));
         }
         WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
         Path obj = Files.createTempFile("layers", ".obj");

@@ -1,8 +1,8 @@
 import ifold.check.LayerOrder;
 import ifold.check.PaperCollisions;
 import ifold.job.Collisions;
-import ifold.wrap.WrapGeometry;
-import ifold.fold.FoldFile;
+import ifold.wrap.PaperInSpace;
+import ifold.foldfile.FoldFile;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.PolygonSoup;
@@ -47,9 +47,9 @@ public final class RandomSolids {
                         broken++;
                         System.out.println(what + ": " + order.summary());
                     }
-                    List<WrapGeometry> geometries = new ArrayList<>();
+                    List<PaperInSpace> geometries = new ArrayList<>();
                     for (Wrap.Strip strip : result.strips()) {
-                        geometries.add(WrapGeometry.of(strip.sheet(), result.frames()));
+                        geometries.add(PaperInSpace.of(strip.sheet(), result.frames()));
                     }
                     PaperCollisions.Result collisions = Collisions.check(geometries, result.thickness(), mesh, null);
                     if (collisions != null && !collisions.isClean()) {

@@ -40,7 +40,7 @@ class ArchitectureTest {
 
     /** The core: geometry, meshes, the refinement, the fold engine, the planner, scripts, the FOLD format, the checks. */
     static final String[] CORE = {"ifold.geom..", "ifold.mesh..", "ifold.refine..", "ifold.sheet..", "ifold.wrap..", "ifold.script..",
-        "ifold.fold..", "ifold.check..", "ifold.io.."};
+        "ifold.foldfile..", "ifold.check..", "ifold.io.."};
 
     /** The libraries the table names, by the packages they hold. */
     private static final Map<String, List<String>> LIBRARIES = Map.of(

@@ -1,6 +1,6 @@
 package ifold.cli;
 
-import ifold.fold.FoldFile;
+import ifold.foldfile.FoldFile;
 import ifold.geom.Triangle;
 import ifold.job.Reports;
 import ifold.job.Scenes;
@@ -18,7 +18,7 @@ import ifold.wrap.ParameterException;
 import ifold.wrap.TurnGadget;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapAnalysis;
-import ifold.wrap.WrapGeometry;
+import ifold.wrap.PaperInSpace;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
@@ -114,7 +114,7 @@ final class DemoCommand implements Runnable {
                 throw new UserError("cannot wrap this triangle: " + e.getMessage());
             }
             Wrap.Result result = zigzag.result();
-            List<WrapGeometry> geometries = zigzag.geometries();
+            List<PaperInSpace> geometries = zigzag.geometries();
             WrapAnalysis analysis = zigzag.analysis();
             Sheet sheet = zigzag.sheet();
             int turns = result.count(Wrap.Kind.ZIGZAG_TURN);
@@ -200,7 +200,7 @@ final class DemoCommand implements Runnable {
             }
             TurnGadget.Result gadget = turn.gadget();
             Wrap.Result result = turn.result();
-            List<WrapGeometry> geometries = turn.geometries();
+            List<PaperInSpace> geometries = turn.geometries();
             WrapAnalysis analysis = turn.analysis();
             Map<String, Object> figures = turn.figures();
             outputs.exportFold(List.of(new FoldFile.Folded(gadget.sheet(), result.frames())), turn.source(), figures);

@@ -1,13 +1,13 @@
 package ifold.cli;
 
-import ifold.fold.FoldFile;
+import ifold.foldfile.FoldFile;
 import ifold.job.Scenes;
 import ifold.job.ScriptJob;
 import ifold.scene.Animation;
 import ifold.scene.Scene;
 import ifold.script.FoldScript;
 import ifold.script.ScriptFolding;
-import ifold.wrap.WrapGeometry;
+import ifold.wrap.PaperInSpace;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.AccessDeniedException;
@@ -76,7 +76,7 @@ final class FoldCommand implements Callable<Integer> {
         FoldScript parsed = folding.script();
         ScriptFolding.Result result = folding.result();
         long[] nanosPerFold = folding.nanosPerFold();
-        WrapGeometry folded = folding.folded();
+        PaperInSpace folded = folding.folded();
         PrintWriter out = spec.commandLine().getOut();
         Map<String, Object> figures = folding.figures();
         figures.put("timing", timing(nanosPerFold, result.steps()));

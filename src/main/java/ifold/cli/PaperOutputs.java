@@ -2,7 +2,7 @@ package ifold.cli;
 
 import ifold.check.LayerOrder;
 import ifold.check.PaperCollisions;
-import ifold.fold.FoldFile;
+import ifold.foldfile.FoldFile;
 import ifold.io.AtomicFile;
 import ifold.job.Collisions;
 import ifold.job.Json;
@@ -16,7 +16,7 @@ import ifold.scene.Scene;
 import ifold.scene.WrapPlayback;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapExport;
-import ifold.wrap.WrapGeometry;
+import ifold.wrap.PaperInSpace;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
@@ -166,7 +166,7 @@ final class PaperOutputs {
      * Writes folded paper (a fold script's, {@code thickness} thick, on planes of no model) as
      * OBJ under {@code header}, and its figures as JSON with its collisions, as asked.
      */
-    void write(List<WrapGeometry> folded, double thickness, String header, Map<String, Object> figures) {
+    void write(List<PaperInSpace> folded, double thickness, String header, Map<String, Object> figures) {
         try {
             if (exportObj != null) {
                 WrapExport.writeObj(exportObj, header, folded);
@@ -182,7 +182,7 @@ final class PaperOutputs {
     }
 
     /** Writes a wrap (or any folding on the sheet engine) as OBJ and its figures as JSON, as asked. */
-    void write(Wrap.Result result, List<WrapGeometry> geometries, String source, Map<String, Object> figures) {
+    void write(Wrap.Result result, List<PaperInSpace> geometries, String source, Map<String, Object> figures) {
         try {
             if (exportObj != null) {
                 WrapExport.writeObj(exportObj, source, result, geometries);
@@ -198,7 +198,7 @@ final class PaperOutputs {
     }
 
     /** Writes the folded paper as one mesh ({@code --export-mesh}), where asked. */
-    private void writeMesh(List<WrapGeometry> folded) throws IOException {
+    private void writeMesh(List<PaperInSpace> folded) throws IOException {
         if (exportMesh == null) {
             return;
         }
@@ -214,7 +214,7 @@ final class PaperOutputs {
      * independent checker, reading the OBJ written (or its text), and adds {@code collisions}
      * to the figures; {@code model} is the surface it rests on, or null for none.
      */
-    void checkCollisions(List<WrapGeometry> strips, double thickness, IndexedPolygons model, Map<String, Object> figures)
+    void checkCollisions(List<PaperInSpace> strips, double thickness, IndexedPolygons model, Map<String, Object> figures)
             throws IOException {
         if (exportObj == null && exportMesh == null && report == null) {
             return;

@@ -1,6 +1,6 @@
 package ifold.cli;
 
-import ifold.fold.FoldFile;
+import ifold.foldfile.FoldFile;
 import ifold.io.AtomicFile;
 import ifold.job.Json;
 import ifold.job.ModelFiles;
@@ -17,7 +17,7 @@ import ifold.wrap.ParameterException;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapAnalysis;
 import ifold.wrap.WrapExport;
-import ifold.wrap.WrapGeometry;
+import ifold.wrap.PaperInSpace;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
@@ -126,7 +126,7 @@ final class WrapCommand implements Callable<Integer> {
         }
         HalfedgeMesh mesh = wrapped.mesh();
         Wrap.Result result = wrapped.result();
-        List<WrapGeometry> geometries = wrapped.geometries();
+        List<PaperInSpace> geometries = wrapped.geometries();
         Map<String, Object> figures = wrapped.figures();
         long analysedAt = System.nanoTime();
         List<Path> written = new ArrayList<>();
@@ -180,7 +180,7 @@ final class WrapCommand implements Callable<Integer> {
     }
 
     /** The model, solid, and the strips laid over it along the path; then a turn around it. */
-    private void show(HalfedgeMesh mesh, Wrap.Result result, List<WrapGeometry> geometries, List<Path> written) {
+    private void show(HalfedgeMesh mesh, Wrap.Result result, List<PaperInSpace> geometries, List<Path> written) {
         Scene scene = new Scene();
         Animation animation = Scenes.wrap(scene, mesh, result, geometries);
         if (!outputs.frameOptions.renders()) { // a window, where C shows them

@@ -3,7 +3,7 @@ package ifold.job;
 import ifold.check.PaperCollisions;
 import ifold.mesh.IndexedPolygons;
 import ifold.wrap.WrapExport;
-import ifold.wrap.WrapGeometry;
+import ifold.wrap.PaperInSpace;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
@@ -30,12 +30,12 @@ public final class Collisions {
     public static final int MOST_FACES = 600_000;
 
     /** Why {@code strips} are not checked, or null where they are: paper of no thickness, or more than {@link #MOST_FACES} faces. */
-    public static String notChecked(List<WrapGeometry> strips, double thickness) {
+    public static String notChecked(List<PaperInSpace> strips, double thickness) {
         if (!(thickness > 0)) {
             return "paper of no thickness";
         }
         long faces = 0;
-        for (WrapGeometry strip : strips) {
+        for (PaperInSpace strip : strips) {
             faces += strip.paperFaces().size() + strip.caps().size();
         }
         return faces > MOST_FACES ? faces + " faces of paper and caps, more than the " + MOST_FACES + " checked" : null;
@@ -48,13 +48,13 @@ public final class Collisions {
      *
      * @param exported the OBJ written of these strips, or null to make its text here
      */
-    public static PaperCollisions.Result check(List<WrapGeometry> strips, double thickness, IndexedPolygons model, Path exported)
+    public static PaperCollisions.Result check(List<PaperInSpace> strips, double thickness, IndexedPolygons model, Path exported)
             throws IOException {
         return check(strips, thickness, model, exported, PaperCollisions.Options.DEFAULT);
     }
 
     /** As {@link #check(List, double, IndexedPolygons, Path)}, listing as many crossings as {@code options} say. */
-    public static PaperCollisions.Result check(List<WrapGeometry> strips, double thickness, IndexedPolygons model, Path exported,
+    public static PaperCollisions.Result check(List<PaperInSpace> strips, double thickness, IndexedPolygons model, Path exported,
             PaperCollisions.Options options) throws IOException {
         if (notChecked(strips, thickness) != null) {
             return null;
@@ -69,7 +69,7 @@ public final class Collisions {
      *
      * @return the check, or null where {@link #notChecked} says why not (too many faces are reported as such)
      */
-    public static PaperCollisions.Result addTo(Map<String, Object> figures, List<WrapGeometry> strips, double thickness,
+    public static PaperCollisions.Result addTo(Map<String, Object> figures, List<PaperInSpace> strips, double thickness,
             IndexedPolygons model, Path exported) throws IOException {
         PaperCollisions.Result result = check(strips, thickness, model, exported);
         if (result != null) {
@@ -84,7 +84,7 @@ public final class Collisions {
      * The check of {@code strips} as the viewer shows it, listing the first
      * {@link Scenes#SHOWN_CROSSINGS} crossing pairs; null where {@link #notChecked} says why not.
      */
-    public static PaperCollisions.Result forScene(List<WrapGeometry> strips, double thickness, IndexedPolygons model) {
+    public static PaperCollisions.Result forScene(List<PaperInSpace> strips, double thickness, IndexedPolygons model) {
         try {
             return check(strips, thickness, model, null, new PaperCollisions.Options(Scenes.SHOWN_CROSSINGS,
                     PaperCollisions.Options.DEFAULT.threads()));
@@ -97,7 +97,7 @@ public final class Collisions {
      * Adds a check made already ({@link #check}, or null where none was) to a report's figures as
      * {@link #addTo} does.
      */
-    public static void put(Map<String, Object> figures, PaperCollisions.Result result, List<WrapGeometry> strips, double thickness) {
+    public static void put(Map<String, Object> figures, PaperCollisions.Result result, List<PaperInSpace> strips, double thickness) {
         if (result != null) {
             figures.put("collisions", figures(result));
         } else if (thickness > 0) {
@@ -106,7 +106,7 @@ public final class Collisions {
     }
 
     /** As {@link #addTo(Map, List, double, IndexedPolygons, Path)} on the OBJ's text made in memory. */
-    public static PaperCollisions.Result addTo(Map<String, Object> figures, List<WrapGeometry> strips, double thickness,
+    public static PaperCollisions.Result addTo(Map<String, Object> figures, List<PaperInSpace> strips, double thickness,
             IndexedPolygons model) {
         try {
             return addTo(figures, strips, thickness, model, null);

@@ -1,7 +1,7 @@
 package ifold.job;
 
 import ifold.check.LayerOrder;
-import ifold.fold.FoldFile;
+import ifold.foldfile.FoldFile;
 import java.io.IOException;
 import java.io.Reader;
 import java.io.UncheckedIOException;

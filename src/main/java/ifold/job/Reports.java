@@ -10,7 +10,7 @@ import ifold.wrap.LayerFloor;
 import ifold.wrap.TurnGadget;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapAnalysis;
-import ifold.wrap.WrapGeometry;
+import ifold.wrap.PaperInSpace;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -202,7 +202,7 @@ public final class Reports {
     }
 
     /** A fold script's figures: its folds, the paper's faces, creases, layers and area, the isometry. */
-    public static Map<String, Object> script(ScriptFolding.Result result, WrapGeometry folded) {
+    public static Map<String, Object> script(ScriptFolding.Result result, PaperInSpace folded) {
         Sheet sheet = result.sheet();
         int creases = 0;
         double area = 0;

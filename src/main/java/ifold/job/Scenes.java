@@ -20,7 +20,7 @@ import ifold.scene.WrapView;
 import ifold.script.ScriptFolding;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapExport;
-import ifold.wrap.WrapGeometry;
+import ifold.wrap.PaperInSpace;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.util.ArrayList;
@@ -107,7 +107,7 @@ public final class Scenes {
     public static final int BACKGROUND = 0xFFD3DAE2;
 
     /** The lone triangle, solid and outlined in green, and the strip laid fold by fold over it, then turned round. */
-    public static WrapPlayback zigzag(Scene scene, Triangle shape, Wrap.Result result, List<WrapGeometry> geometries) {
+    public static WrapPlayback zigzag(Scene scene, Triangle shape, Wrap.Result result, List<PaperInSpace> geometries) {
         scene.root().attach(solid(shape));
         scene.root().attach(outline(shape));
         scene.setLegend(List.of(WrapView.TOP_SIDE, WrapView.UNDERSIDE, new Scene.Swatch(WrapView.MODEL, "the triangle")));
@@ -136,13 +136,13 @@ public final class Scenes {
     }
 
     /** The turn gadget's strip folded on an empty table. */
-    public static WrapPlayback turn(Scene scene, Wrap.Result result, List<WrapGeometry> geometries) {
+    public static WrapPlayback turn(Scene scene, Wrap.Result result, List<PaperInSpace> geometries) {
         scene.setLegend(List.of(WrapView.TOP_SIDE, WrapView.UNDERSIDE));
         return paper(scene, result, geometries, "turned: the strip runs on at the angle asked, top side up");
     }
 
     /** The model, solid, and the strips laid over it along the path; then a turn around it. */
-    public static WrapPlayback wrap(Scene scene, HalfedgeMesh mesh, Wrap.Result result, List<WrapGeometry> geometries) {
+    public static WrapPlayback wrap(Scene scene, HalfedgeMesh mesh, Wrap.Result result, List<PaperInSpace> geometries) {
         Geometry solid = new Geometry(MODEL, SceneMesh.of(mesh), new Material(WrapView.MODEL, 0xFF4A5460, false, false));
         scene.root().attach(solid);
         // Blue-grey underside over a grey-blue model reads as a hole: the legend says which is which.
@@ -160,7 +160,7 @@ public final class Scenes {
      *
      * @return the geometry, or null for paper the checker does not check ({@link Collisions#notChecked})
      */
-    public static Geometry collisions(Scene scene, List<WrapGeometry> strips, double thickness, IndexedPolygons model) {
+    public static Geometry collisions(Scene scene, List<PaperInSpace> strips, double thickness, IndexedPolygons model) {
         return collisions(scene, strips, Collisions.forScene(strips, thickness, model));
     }
 
@@ -169,7 +169,7 @@ public final class Scenes {
      * already made (listing up to {@link #SHOWN_CROSSINGS}: {@link Collisions#forScene}); null
      * where there is none.
      */
-    public static Geometry collisions(Scene scene, List<WrapGeometry> strips, PaperCollisions.Result result) {
+    public static Geometry collisions(Scene scene, List<PaperInSpace> strips, PaperCollisions.Result result) {
         if (result == null) {
             return null;
         }
@@ -206,7 +206,7 @@ public final class Scenes {
     }
 
     /** A fold script's paper, folding up, the camera framing it as it stands. */
-    public static Animation script(Scene scene, ScriptFolding.Result result, WrapGeometry folded) {
+    public static Animation script(Scene scene, ScriptFolding.Result result, PaperInSpace folded) {
         Geometry geometry = new Geometry("paper", PaperView.mesh(folded, result.sheet()), PaperView.MATERIAL);
         scene.root().attach(geometry);
         scene.camera().setOrientation(new Quaterniond().rotateX(-0.75).rotateZ(-0.35));
@@ -215,7 +215,7 @@ public final class Scenes {
         return animation;
     }
 
-    private static WrapPlayback paper(Scene scene, Wrap.Result result, List<WrapGeometry> geometries, String ending) {
+    private static WrapPlayback paper(Scene scene, Wrap.Result result, List<PaperInSpace> geometries, String ending) {
         // White paper on a white background would not be seen where it leaves the triangle.
         scene.setBackground(BACKGROUND);
         return WrapView.play(scene, result, geometries, ending);

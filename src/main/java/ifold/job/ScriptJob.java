@@ -1,11 +1,11 @@
 package ifold.job;
 
-import ifold.fold.CreasePattern;
-import ifold.fold.FoldJson;
+import ifold.foldfile.CreasePattern;
+import ifold.foldfile.FoldJson;
 import ifold.script.FoldScript;
 import ifold.script.FoldScriptException;
 import ifold.script.ScriptFolding;
-import ifold.wrap.WrapGeometry;
+import ifold.wrap.PaperInSpace;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Map;
@@ -31,7 +31,7 @@ public final class ScriptJob {
      * @param nanosPerFold how long each fold took
      * @param fromFoldFile whether the file was a FOLD crease pattern
      */
-    public record Outcome(FoldScript script, ScriptFolding.Result result, WrapGeometry folded, Map<String, Object> figures,
+    public record Outcome(FoldScript script, ScriptFolding.Result result, PaperInSpace folded, Map<String, Object> figures,
             long[] nanosPerFold, boolean fromFoldFile) {
     }
 
@@ -80,7 +80,7 @@ public final class ScriptJob {
             }
             throw new Refused(file + (e.line() > 0 ? ":" + e.getMessage().replaceFirst("^line ", "") : ": " + e.getMessage()));
         }
-        WrapGeometry folded = WrapGeometry.of(result.sheet(), result.frames());
+        PaperInSpace folded = PaperInSpace.of(result.sheet(), result.frames());
         return new Outcome(parsed, result, folded, Reports.script(result, folded), nanosPerFold, pattern != null);
     }
 }

@@ -5,7 +5,7 @@ import ifold.wrap.PlacedWrap;
 import ifold.wrap.TurnGadget;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapAnalysis;
-import ifold.wrap.WrapGeometry;
+import ifold.wrap.PaperInSpace;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -25,7 +25,7 @@ public final class TurnJob {
      * @param figures the report's figures ({@link Reports#turn})
      * @param source what made it, as the exports' headers say: "demo turn --angle 90.0"
      */
-    public record Outcome(TurnGadget.Result gadget, List<WrapGeometry> geometries, WrapAnalysis analysis, Map<String, Object> figures,
+    public record Outcome(TurnGadget.Result gadget, List<PaperInSpace> geometries, WrapAnalysis analysis, Map<String, Object> figures,
             String source) {
         /** The gadget's strip as a wrap of one strip, for the scenes and exports that show wraps. */
         public Wrap.Result result() {

@@ -7,7 +7,7 @@ import ifold.refine.HamiltonianRefinement;
 import ifold.wrap.PlacedWrap;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapAnalysis;
-import ifold.wrap.WrapGeometry;
+import ifold.wrap.PaperInSpace;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
@@ -53,7 +53,7 @@ public final class WrapJob {
      * @param seconds the phases' times: load, refine, wrap, analyse
      */
     public record Outcome(ModelFiles.Loaded loaded, HalfedgeMesh mesh, double[] movedBy, WrapPath path, Wrap.Result result,
-            List<WrapGeometry> geometries, WrapAnalysis analysis, Map<String, Object> figures, Seconds seconds) {
+            List<PaperInSpace> geometries, WrapAnalysis analysis, Map<String, Object> figures, Seconds seconds) {
         public HamiltonianRefinement.Result refinement() {
             return path.refinement();
         }

@@ -6,7 +6,7 @@ import ifold.sheet.Sheet;
 import ifold.wrap.PlacedWrap;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapAnalysis;
-import ifold.wrap.WrapGeometry;
+import ifold.wrap.PaperInSpace;
 import java.util.List;
 import java.util.Map;
 
@@ -34,7 +34,7 @@ public final class ZigZagJob {
      * @param figures the report's figures ({@link Reports#zigzag})
      * @param source what made it, as the exports' headers say: "demo zigzag --triangle 0,0,10,0,3.5,8"
      */
-    public record Outcome(Wrap.Result result, List<WrapGeometry> geometries, WrapAnalysis analysis, Map<String, Object> figures,
+    public record Outcome(Wrap.Result result, List<PaperInSpace> geometries, WrapAnalysis analysis, Map<String, Object> figures,
             String source) {
         /** The strip's paper. */
         public Sheet sheet() {

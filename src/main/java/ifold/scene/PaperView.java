@@ -5,7 +5,7 @@ import ifold.script.ScriptFolding;
 import ifold.sheet.HostFrame;
 import ifold.sheet.Isometry2;
 import ifold.sheet.Sheet;
-import ifold.wrap.WrapGeometry;
+import ifold.wrap.PaperInSpace;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
@@ -24,7 +24,7 @@ public final class PaperView {
     public static final Material MATERIAL = new Material(PAPER, 0xFF8FAACB, true, true);
 
     /** Folded paper as it is written: its faces, the caps between layers in grey, face edges outlined and creases in red. */
-    public static SceneMesh mesh(WrapGeometry geometry, Sheet sheet) {
+    public static SceneMesh mesh(PaperInSpace geometry, Sheet sheet) {
         Mesh mesh = new Mesh();
         double[] xyz = geometry.xyz();
         int[] index = new int[geometry.vertexCount()];
@@ -57,16 +57,16 @@ public final class PaperView {
      * and all. The paper between folds is stepped back and forth by each fold's record of the
      * faces it changed, not kept whole per fold.
      */
-    public static Animation folding(Geometry geometry, ScriptFolding.Result result, WrapGeometry folded) {
+    public static Animation folding(Geometry geometry, ScriptFolding.Result result, PaperInSpace folded) {
         return new Playback(geometry, result, folded, null);
     }
 
     /**
-     * As {@link #folding(Geometry, ScriptFolding.Result, WrapGeometry)}, the camera framing the
+     * As {@link #folding(Geometry, ScriptFolding.Result, PaperInSpace)}, the camera framing the
      * paper as it stands in every frame (its direction kept): it follows the paper as it folds
      * up, and moves smoothly, since the paper does.
      */
-    public static Animation folding(Geometry geometry, ScriptFolding.Result result, WrapGeometry folded, Camera camera) {
+    public static Animation folding(Geometry geometry, ScriptFolding.Result result, PaperInSpace folded, Camera camera) {
         return new Playback(geometry, result, folded, camera);
     }
 
@@ -86,7 +86,7 @@ public final class PaperView {
         private final Camera camera;
         private double sceneRadius;
 
-        Playback(Geometry geometry, ScriptFolding.Result result, WrapGeometry folded, Camera camera) {
+        Playback(Geometry geometry, ScriptFolding.Result result, PaperInSpace folded, Camera camera) {
             this.geometry = geometry;
             this.camera = camera;
             this.result = result;

@@ -4,7 +4,7 @@ import ifold.mesh.IndexedPolygons;
 import ifold.sheet.HostFrame;
 import ifold.wrap.CoveredPaper;
 import ifold.wrap.Wrap;
-import ifold.wrap.WrapGeometry;
+import ifold.wrap.PaperInSpace;
 import java.util.ArrayList;
 import java.util.BitSet;
 import java.util.List;
@@ -47,9 +47,9 @@ public final class WrapView {
     public record Strips(SceneMesh mesh, int[][] trianglesAfter) {
     }
 
-    public static Strips strips(Wrap.Result result, List<WrapGeometry> geometries) {
+    public static Strips strips(Wrap.Result result, List<PaperInSpace> geometries) {
         int total = 0;
-        for (WrapGeometry g : geometries) {
+        for (PaperInSpace g : geometries) {
             total += g.vertexCount();
         }
         double[] positions = new double[3 * total];
@@ -62,7 +62,7 @@ public final class WrapView {
         int[][] after = new int[geometries.size()][];
         int base = 0;
         for (int k = 0; k < geometries.size(); k++) {
-            WrapGeometry g = geometries.get(k);
+            PaperInSpace g = geometries.get(k);
             Wrap.Strip strip = result.strips().get(k);
             System.arraycopy(g.xyz(), 0, positions, 3 * base, 3 * g.vertexCount());
             // Caps come right after the later of the faces they join.
@@ -267,12 +267,12 @@ public final class WrapView {
      * triangle, stays under it), frames the whole, and returns its playback, whose last caption
      * counts the strips and triangles wrapped.
      */
-    public static WrapPlayback play(Scene scene, Wrap.Result result, List<WrapGeometry> geometries) {
+    public static WrapPlayback play(Scene scene, Wrap.Result result, List<PaperInSpace> geometries) {
         return play(scene, result, geometries, null);
     }
 
     /** As {@link #play(Scene, Wrap.Result, List)}, with {@code ending} the caption once all is folded (null for the count). */
-    public static WrapPlayback play(Scene scene, Wrap.Result result, List<WrapGeometry> geometries, String ending) {
+    public static WrapPlayback play(Scene scene, Wrap.Result result, List<PaperInSpace> geometries, String ending) {
         Strips strips = strips(result, geometries);
         scene.root().visitGeometry(under -> under.setUnder(true)); // the model, or the triangle, under the paper
         Geometry paper = new Geometry("paper", strips.mesh(), PAPER);

@@ -53,7 +53,7 @@ public final class CoveredPaper {
      * The covered paper of {@code geometry}, whose faces rest on {@code frames} (by
      * {@code paperHosts}) in layers {@code thickness} apart.
      */
-    public static Covered of(WrapGeometry geometry, HostFrame[] frames, double thickness) {
+    public static Covered of(PaperInSpace geometry, HostFrame[] frames, double thickness) {
         Projected paper = new Projected(geometry, frames);
         int[] faces = new int[geometry.paperFaces().size()];
         int[] caps = new int[geometry.caps().size()];
@@ -277,7 +277,7 @@ public final class CoveredPaper {
         final BitSet undersideOut = new BitSet();
         final double[] areas;
 
-        Projected(WrapGeometry geometry, HostFrame[] frames) {
+        Projected(PaperInSpace geometry, HostFrame[] frames) {
             int n = geometry.paperFaces().size();
             areas = new double[n];
             polygons = new double[n][];

@@ -15,14 +15,14 @@ import java.util.List;
  * @param geometries each strip's paper in space, in the order of the strips
  * @param analysis the wrap's measures
  */
-public record PlacedWrap(List<WrapGeometry> geometries, WrapAnalysis analysis) {
+public record PlacedWrap(List<PaperInSpace> geometries, WrapAnalysis analysis) {
 
     public static PlacedWrap of(Wrap.Result result) {
         WrapAnalysis.Started measuring = WrapAnalysis.start(result);
-        List<WrapGeometry> geometries = new ArrayList<>();
+        List<PaperInSpace> geometries = new ArrayList<>();
         try {
             for (Wrap.Strip strip : result.strips()) {
-                geometries.add(WrapGeometry.of(strip.sheet(), result.frames()));
+                geometries.add(PaperInSpace.of(strip.sheet(), result.frames()));
             }
         } catch (RuntimeException | Error e) {
             measuring.cancel();

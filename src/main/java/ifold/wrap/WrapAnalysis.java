@@ -54,7 +54,7 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
     }
 
     /** The measures of {@code result}, whose strips' paper is placed in space as {@code geometries}. */
-    public static WrapAnalysis of(Wrap.Result result, List<WrapGeometry> geometries) {
+    public static WrapAnalysis of(Wrap.Result result, List<PaperInSpace> geometries) {
         return start(result).finish(geometries);
     }
 
@@ -111,7 +111,7 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
         }
 
         /** The measures, once every host's are taken, with the isometry of the paper as {@code geometries} place it. */
-        WrapAnalysis finish(List<WrapGeometry> geometries) {
+        WrapAnalysis finish(List<PaperInSpace> geometries) {
             HostFrame[] frames = result.frames();
             int maxLayers = 0;
             int stackLevels = 0;
@@ -179,7 +179,7 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
             }
             double isometry = 0;
             double creep = 0;
-            for (WrapGeometry geometry : geometries) {
+            for (PaperInSpace geometry : geometries) {
                 isometry = Math.max(isometry, isometryError(geometry, result.width()));
                 creep = Math.max(creep, geometry.creep().most(geometry));
             }
@@ -491,15 +491,15 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
     /**
      * The largest difference between a paper face's distances in space and on the sheet,
      * relative to the face's size, or to the strip's width for faces smaller than it, the paper
-     * as laid (before its creases creep at concave edges, {@link WrapGeometry.Creep}): a paper
+     * as laid (before its creases creep at concave edges, {@link PaperInSpace.Creep}): a paper
      * coordinate u on a strip of length L is a double good to about 1e-16 L, so a sliver far
      * along a long strip cannot be exact to 1e-9 of its own size.
      */
-    public static double isometryError(WrapGeometry geometry, double width) {
+    public static double isometryError(PaperInSpace geometry, double width) {
         double worst = 0;
         // The paper as laid, before its creases creep at concave edges (a creep is measured on its
         // own): a crept vertex is taken where it was, looked up among the few that crept.
-        WrapGeometry.Creep creep = geometry.creep();
+        PaperInSpace.Creep creep = geometry.creep();
         double[] uv = geometry.uv();
         double[] pa = new double[3];
         double[] pb = new double[3];

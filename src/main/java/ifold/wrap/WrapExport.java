@@ -23,7 +23,7 @@ public final class WrapExport {
     private WrapExport() {
     }
 
-    public static void writeObj(Path file, String model, Wrap.Result result, List<WrapGeometry> strips) throws IOException {
+    public static void writeObj(Path file, String model, Wrap.Result result, List<PaperInSpace> strips) throws IOException {
         writeObj(file, "iFold wrap of " + model.replace('\n', ' ') + ": " + strips.size() + (strips.size() == 1 ? " strip" : " strips") + ", width " + result.width()
                 + ", thickness " + result.thickness(), strips);
     }
@@ -42,7 +42,7 @@ public final class WrapExport {
     }
 
     /** Writes folded sheets (a wrap's strips, a fold script's paper) under a header line of their own. */
-    public static void writeObj(Path file, String header, List<WrapGeometry> strips) throws IOException {
+    public static void writeObj(Path file, String header, List<PaperInSpace> strips) throws IOException {
         AtomicFile.write(file, stream -> {
             Writer out = new BufferedWriter(new OutputStreamWriter(stream, StandardCharsets.UTF_8), 1 << 16);
             writeObj(out, header, strips);
@@ -50,7 +50,7 @@ public final class WrapExport {
     }
 
     /** The text {@link #writeObj(Path, String, List)} writes, for a check that reads it without a file. */
-    public static String objText(String header, List<WrapGeometry> strips) {
+    public static String objText(String header, List<PaperInSpace> strips) {
         StringWriter text = new StringWriter();
         try {
             writeObj(text, header, strips);
@@ -60,12 +60,12 @@ public final class WrapExport {
         return text.toString();
     }
 
-    private static void writeObj(Writer out, String header, List<WrapGeometry> strips) throws IOException {
+    private static void writeObj(Writer out, String header, List<PaperInSpace> strips) throws IOException {
         out.write("# " + header.replace('\n', ' ') + "\n");
         out.write("# vt holds each vertex's paper coordinates (u, v) on its strip; group cap holds the bent paper at folds\n");
         int base = 0;
         for (int k = 0; k < strips.size(); k++) {
-            WrapGeometry strip = strips.get(k);
+            PaperInSpace strip = strips.get(k);
             out.write("o strip-" + (k + 1) + "\n");
             double[] xyz = strip.xyz();
             double[] uv = strip.uv();
@@ -94,16 +94,16 @@ public final class WrapExport {
      * for printing and other tools): each strip's vertices, its paper faces, then its caps, in
      * the order the OBJ numbers them.
      */
-    public static PolygonSoup paperMesh(List<WrapGeometry> strips) {
+    public static PolygonSoup paperMesh(List<PaperInSpace> strips) {
         int vertices = 0;
         int faces = 0;
-        for (WrapGeometry strip : strips) {
+        for (PaperInSpace strip : strips) {
             vertices += strip.vertexCount();
             faces += strip.paperFaces().size() + strip.caps().size();
         }
         PolygonSoup mesh = new PolygonSoup(vertices, faces, 4 * faces);
         int base = 0;
-        for (WrapGeometry strip : strips) {
+        for (PaperInSpace strip : strips) {
             double[] xyz = strip.xyz();
             for (int v = 0; v < strip.vertexCount(); v++) {
                 mesh.addVertex(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]);
@@ -128,12 +128,12 @@ public final class WrapExport {
      *
      * @throws IllegalArgumentException for a number no face has
      */
-    public static double[] faceCorners(List<WrapGeometry> strips, int face) {
+    public static double[] faceCorners(List<PaperInSpace> strips, int face) {
         if (face < 1) {
             throw new IllegalArgumentException("the OBJ has no face " + face + ": they count from 1");
         }
         int n = face - 1;
-        for (WrapGeometry strip : strips) {
+        for (PaperInSpace strip : strips) {
             for (List<int[]> group : List.of(strip.paperFaces(), strip.caps())) {
                 if (n < group.size()) {
                     int[] loop = group.get(n);

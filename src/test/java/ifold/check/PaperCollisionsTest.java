@@ -137,7 +137,7 @@ class PaperCollisionsTest {
 
     /**
      * A strip z-folded flat: three layers 0, T and 2T up, each fold bent round by a cap of two
-     * 45-degree facets (as WrapGeometry makes them) half a thickness beyond the crease. Every
+     * 45-degree facets (as PaperInSpace makes them) half a thickness beyond the crease. Every
      * face meets its neighbours only at shared edges: nothing crosses.
      */
     private static final String Z_FOLD = """

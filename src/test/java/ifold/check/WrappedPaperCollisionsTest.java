@@ -17,7 +17,7 @@ import ifold.script.ScriptFolding;
 import ifold.testing.SharedMeshes;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapExport;
-import ifold.wrap.WrapGeometry;
+import ifold.wrap.PaperInSpace;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
@@ -44,7 +44,7 @@ import org.junit.jupiter.params.provider.ValueSource;
  *
  * <p>Solids without concave edges, the scripts and the demos are clean: their bends stand on
  * their creases, step out only to wrap folds nested about the same line, within the room the
- * host across leaves, and mitre where two meet (WrapGeometry). Where a non-convex face is cut
+ * host across leaves, and mitre where two meet (PaperInSpace). Where a non-convex face is cut
  * into convex hosts (figure3), nested bends along the cut stand in one plane: no pair crosses,
  * some overlap there. At concave edges the layers stand back to their mitres: no paper enters the
  * solid, and what still crosses is bends near such an edge (docs/wrap.md, Limits): counted, printed.
@@ -92,9 +92,9 @@ class WrappedPaperCollisionsTest {
         HalfedgeMesh mesh = MeshBuilder.build(soup, MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();
         HamiltonianRefinement.Result refinement = HamiltonianRefinement.refine(mesh);
         Wrap.Result result = Wrap.wrap(refinement, new Wrap.Options(Double.NaN, Double.NaN));
-        List<WrapGeometry> geometries = new ArrayList<>();
+        List<PaperInSpace> geometries = new ArrayList<>();
         for (Wrap.Strip strip : result.strips()) {
-            geometries.add(WrapGeometry.of(strip.sheet(), result.frames()));
+            geometries.add(PaperInSpace.of(strip.sheet(), result.frames()));
         }
         Path obj = dir.resolve(name + ".obj");
         WrapExport.writeObj(obj, name, result, geometries);
@@ -148,7 +148,7 @@ class WrappedPaperCollisionsTest {
 
     /**
      * Concave edges: each layer stands back from the edge to its mitre, or to the wall of a fold
-     * made along it (WrapGeometry, ConcaveWalls), so the layers of the two faces no longer run
+     * made along it (PaperInSpace, ConcaveWalls), so the layers of the two faces no longer run
      * into each other: the torus's inner half crossed in 38,826 pairs (7.4 T deep), now in 3,181,
      * all at bends near such an edge; counted, printed, not yet clean.
      */
@@ -192,7 +192,7 @@ class WrappedPaperCollisionsTest {
     @MethodSource("scripts")
     void foldScriptsAreClean(Path script) throws Exception {
         ScriptFolding.Result result = FoldScript.read(script).play();
-        WrapGeometry geometry = WrapGeometry.of(result.sheet(), result.frames());
+        PaperInSpace geometry = PaperInSpace.of(result.sheet(), result.frames());
         Path obj = dir.resolve("folded.obj");
         WrapExport.writeObj(obj, script.toString(), List.of(geometry));
         Result check = PaperCollisions.check(Files.readString(obj), result.sheet().thickness());

@@ -134,7 +134,7 @@ class FoldCommandTest {
     /** A pattern whose lines alone cut more faces than allowed is refused before any fold (10,000 creases: at the last, after 31 s). */
     @Test
     void morePatternLinesThanFacesAllowedAreRefusedAtOnce() throws Exception {
-        Path pattern = ifold.fold.CreasePatternTest.parallelCreases(dir, 30);
+        Path pattern = ifold.foldfile.CreasePatternTest.parallelCreases(dir, 30);
         CliTest.Run run = CliTest.run("fold", pattern.toString(), "--no-view", "--max-faces", "30");
         CliTest.assertOneLineError(run, "its 30 crease lines cut the paper into at least 31 faces, more than the 30 allowed",
                 "--max-faces raises the limit");

@@ -43,7 +43,7 @@ class LayerCountTest {
     /** The most faces of the folded state over any point of one plane, from the FOLD file alone. */
     @SuppressWarnings("unchecked")
     static int mostFacesOverAPoint(Path file) throws Exception {
-        Map<String, Object> fold = (Map<String, Object>) ifold.fold.FoldFileTest.read(file);
+        Map<String, Object> fold = (Map<String, Object>) ifold.foldfile.FoldFileTest.read(file);
         List<?> faces = (List<?>) fold.get("faces_vertices");
         List<?> frames = (List<?>) fold.get("file_frames");
         List<?> folded = (List<?>) ((Map<?, ?>) frames.get(0)).get("vertices_coords");

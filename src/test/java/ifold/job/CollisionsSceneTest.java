@@ -17,7 +17,7 @@ import ifold.scene.Geometry;
 import ifold.scene.Scene;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapExport;
-import ifold.wrap.WrapGeometry;
+import ifold.wrap.PaperInSpace;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
@@ -35,24 +35,24 @@ class CollisionsSceneTest {
         return Wrap.wrap(HamiltonianRefinement.refine(cube), new Wrap.Options(Double.NaN, thickness));
     }
 
-    private static List<WrapGeometry> strips(Wrap.Result result) {
-        List<WrapGeometry> strips = new ArrayList<>();
+    private static List<PaperInSpace> strips(Wrap.Result result) {
+        List<PaperInSpace> strips = new ArrayList<>();
         for (Wrap.Strip strip : result.strips()) {
-            strips.add(WrapGeometry.of(strip.sheet(), result.frames()));
+            strips.add(PaperInSpace.of(strip.sheet(), result.frames()));
         }
         return strips;
     }
 
     /** Two unit squares through each other, as an X: paper crossing itself, made by hand. */
-    private static List<WrapGeometry> anX() {
+    private static List<PaperInSpace> anX() {
         double[] xyz = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 0, -0.5, 0.5, 1, -0.5, 0.5, 1, 0.5, 0.5, 0, 0.5};
-        return List.of(new WrapGeometry(xyz, new double[16], List.of(new int[] {0, 1, 2, 3}, new int[] {4, 5, 6, 7}),
+        return List.of(new PaperInSpace(xyz, new double[16], List.of(new int[] {0, 1, 2, 3}, new int[] {4, 5, 6, 7}),
                 new int[] {0, 1}, List.of(), new int[0]));
     }
 
     @Test
     void crossingFacesAreShownInRedWhenAskedFor() throws Exception {
-        List<WrapGeometry> strips = anX();
+        List<PaperInSpace> strips = anX();
         double thickness = 0.01;
         PaperCollisions.Result check = Collisions.check(strips, thickness, null, null);
         assertTrue(check.crossingPairs() > 0, "setup: the X crosses itself");
@@ -85,7 +85,7 @@ class CollisionsSceneTest {
     @Test
     void theCubesWrapHasNothingToShow() throws Exception {
         Wrap.Result result = wrapCube(Double.NaN);
-        List<WrapGeometry> strips = strips(result);
+        List<PaperInSpace> strips = strips(result);
         assertTrue(Collisions.check(strips, result.thickness(), cube, null).isClean(), "the cube's paper crosses nothing");
         Geometry shown = Scenes.collisions(new Scene(), strips, result.thickness(), cube);
         assertEquals(0, shown.mesh().triangleCount(), "no face to show");
@@ -100,7 +100,7 @@ class CollisionsSceneTest {
 
     @Test
     void aNumberNoFaceHasIsRefused() throws Exception {
-        List<WrapGeometry> strips = strips(wrapCube(Double.NaN));
+        List<PaperInSpace> strips = strips(wrapCube(Double.NaN));
         int faces = strips.get(0).paperFaces().size() + strips.get(0).caps().size();
         WrapExport.faceCorners(strips, faces);
         assertThrows(IllegalArgumentException.class, () -> WrapExport.faceCorners(strips, faces + 1));

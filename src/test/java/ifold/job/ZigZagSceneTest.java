@@ -10,7 +10,7 @@ import ifold.scene.Scene;
 import ifold.scene.WrapPlayback;
 import ifold.scene.WrapView;
 import ifold.wrap.Wrap;
-import ifold.wrap.WrapGeometry;
+import ifold.wrap.PaperInSpace;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 
@@ -28,7 +28,7 @@ class ZigZagSceneTest {
                 Wrap.Options.loneTriangle(shape, new Wrap.Ends(2, 0, -1), Double.NaN, Double.NaN));
         Scene scene = new Scene();
         WrapPlayback playback = Scenes.zigzag(scene, shape, result,
-                List.of(WrapGeometry.of(result.strips().get(0).sheet(), result.frames())));
+                List.of(PaperInSpace.of(result.strips().get(0).sheet(), result.frames())));
 
         List<Scene.Label> labels = scene.labels();
         assertEquals(List.of("A", "B", "C"), labels.stream().map(Scene.Label::text).toList());

@@ -139,9 +139,9 @@ class OffscreenRendererTest {
                 MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();
         ifold.wrap.Wrap.Result result = ifold.wrap.Wrap.wrap(HamiltonianRefinement.refine(mesh),
                 new ifold.wrap.Wrap.Options(Double.NaN, Double.NaN));
-        java.util.List<ifold.wrap.WrapGeometry> geometries = new java.util.ArrayList<>();
+        java.util.List<ifold.wrap.PaperInSpace> geometries = new java.util.ArrayList<>();
         for (ifold.wrap.Wrap.Strip strip : result.strips()) {
-            geometries.add(ifold.wrap.WrapGeometry.of(strip.sheet(), result.frames()));
+            geometries.add(ifold.wrap.PaperInSpace.of(strip.sheet(), result.frames()));
         }
         Scene scene = new Scene();
         scene.root().attach(new Geometry("model", SceneMesh.of(mesh), Material.PAPER));

@@ -8,7 +8,7 @@ import ifold.mesh.MeshBuilder;
 import ifold.mesh.Solids;
 import ifold.refine.HamiltonianRefinement;
 import ifold.wrap.Wrap;
-import ifold.wrap.WrapGeometry;
+import ifold.wrap.PaperInSpace;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
@@ -20,9 +20,9 @@ class WrapViewTest {
     void theAnimationLaysTheStripInOrderAndEndsWithAllOfIt() throws Exception {
         HalfedgeMesh mesh = MeshBuilder.build(Solids.tetrahedron(), MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();
         Wrap.Result result = Wrap.wrap(HamiltonianRefinement.refine(mesh), new Wrap.Options(Double.NaN, Double.NaN));
-        List<WrapGeometry> geometries = new ArrayList<>();
+        List<PaperInSpace> geometries = new ArrayList<>();
         for (Wrap.Strip strip : result.strips()) {
-            geometries.add(WrapGeometry.of(strip.sheet(), result.frames()));
+            geometries.add(PaperInSpace.of(strip.sheet(), result.frames()));
         }
         WrapView.Strips strips = WrapView.strips(result, geometries);
         int paperFaces = geometries.get(0).paperFaces().size();
@@ -72,9 +72,9 @@ class WrapViewTest {
     }
 
     private static WrapPlayback playback(Scene scene, HalfedgeMesh mesh, Wrap.Result result) {
-        List<WrapGeometry> geometries = new ArrayList<>();
+        List<PaperInSpace> geometries = new ArrayList<>();
         for (Wrap.Strip strip : result.strips()) {
-            geometries.add(WrapGeometry.of(strip.sheet(), result.frames()));
+            geometries.add(PaperInSpace.of(strip.sheet(), result.frames()));
         }
         scene.root().attach(new Geometry("model", SceneMesh.of(mesh), Material.PAPER));
         return WrapView.play(scene, result, geometries);

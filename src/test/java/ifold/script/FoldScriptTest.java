@@ -5,7 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import ifold.wrap.WrapAnalysis;
-import ifold.wrap.WrapGeometry;
+import ifold.wrap.PaperInSpace;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -57,7 +57,7 @@ class FoldScriptTest {
     }
 
     private static double isometryError(ScriptFolding.Result result) {
-        return WrapAnalysis.isometryError(WrapGeometry.of(result.sheet(), result.frames()), result.sheet().width());
+        return WrapAnalysis.isometryError(PaperInSpace.of(result.sheet(), result.frames()), result.sheet().width());
     }
 
     @Test
@@ -65,8 +65,8 @@ class FoldScriptTest {
         FoldScript built = FoldScript.builder().strip(10, 1).thickness(0.02)
                 .foldOnPaper(FoldScript.Kind.VALLEY, 180, 5, 0, 6, 1, FoldScript.Side.RIGHT).build();
         FoldScript parsed = FoldScript.parse("paper strip 10 1\nthickness 0.02\nfold valley 180 paper 5 0 6 1 right\n");
-        WrapGeometry a = WrapGeometry.of(built.play().sheet(), built.play().frames());
-        WrapGeometry b = WrapGeometry.of(parsed.play().sheet(), parsed.play().frames());
+        PaperInSpace a = PaperInSpace.of(built.play().sheet(), built.play().frames());
+        PaperInSpace b = PaperInSpace.of(parsed.play().sheet(), parsed.play().frames());
         assertEquals(a.vertexCount(), b.vertexCount());
         for (int k = 0; k < a.xyz().length; k++) {
             assertEquals(a.xyz()[k], b.xyz()[k], 0);
@@ -90,7 +90,7 @@ class FoldScriptTest {
     @Test
     void theTurnScriptTurnsTheStripByNinetyDegrees() throws Exception {
         ScriptFolding.Result folded = FoldScript.read(Path.of("models", "scripts", "strip-turn.fold")).play();
-        WrapGeometry geometry = WrapGeometry.of(folded.sheet(), folded.frames());
+        PaperInSpace geometry = PaperInSpace.of(folded.sheet(), folded.frames());
         int found = 0;
         for (int v = 0; v < geometry.vertexCount(); v++) {
             if (geometry.uv()[2 * v] == 10 && geometry.uv()[2 * v + 1] == 0) {

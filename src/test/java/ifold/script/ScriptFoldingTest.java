@@ -7,7 +7,7 @@ import ifold.sheet.Sheet;
 import ifold.sheet.SheetChecks;
 import ifold.wrap.WrapAnalysis;
 import ifold.wrap.WrapExport;
-import ifold.wrap.WrapGeometry;
+import ifold.wrap.PaperInSpace;
 import ifold.wrap.WrapTruths;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -30,7 +30,7 @@ class ScriptFoldingTest {
 
     /** Where paper point (u, v) lies in space, on the faces holding it (several where it lies on a crease): {x, y, z} of the first. */
     private static double[] where(ScriptFolding.Result result, double u, double v) {
-        WrapGeometry geometry = WrapGeometry.of(result.sheet(), result.frames());
+        PaperInSpace geometry = PaperInSpace.of(result.sheet(), result.frames());
         for (int p = 0; p < geometry.vertexCount(); p++) {
             if (Math.abs(geometry.uv()[2 * p] - u) < 1e-12 && Math.abs(geometry.uv()[2 * p + 1] - v) < 1e-12) {
                 return new double[] {geometry.xyz()[3 * p], geometry.xyz()[3 * p + 1], geometry.xyz()[3 * p + 2]};
@@ -41,7 +41,7 @@ class ScriptFoldingTest {
 
     /** The distinct heights of the paper faces' corners, rounded to 1e-12. */
     private static TreeSet<Double> heights(ScriptFolding.Result result) {
-        WrapGeometry geometry = WrapGeometry.of(result.sheet(), result.frames());
+        PaperInSpace geometry = PaperInSpace.of(result.sheet(), result.frames());
         TreeSet<Double> heights = new TreeSet<>();
         for (int[] face : geometry.paperFaces()) {
             for (int p : face) {
@@ -53,7 +53,7 @@ class ScriptFoldingTest {
 
     /** The truths any folded paper keeps, checked on its OBJ: it tiles its sheet once, no face stretched, none torn. */
     private void assertSound(ScriptFolding.Result result) throws Exception {
-        WrapGeometry geometry = WrapGeometry.of(result.sheet(), result.frames());
+        PaperInSpace geometry = PaperInSpace.of(result.sheet(), result.frames());
         Path obj = dir.resolve("folded.obj");
         WrapExport.writeObj(obj, "test", List.of(geometry));
         WrapTruths truths = WrapTruths.read(Files.readString(obj));

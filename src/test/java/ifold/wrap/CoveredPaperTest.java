@@ -59,7 +59,7 @@ class CoveredPaperTest {
             for (int i = 0; i < points.size(); i++) {
                 System.arraycopy(points.get(i), 0, xyz, 3 * i, 3);
             }
-            WrapGeometry geometry = new WrapGeometry(xyz, new double[2 * points.size()], faces, new int[faces.size()], caps,
+            PaperInSpace geometry = new PaperInSpace(xyz, new double[2 * points.size()], faces, new int[faces.size()], caps,
                     capAfter.stream().mapToInt(Integer::intValue).toArray());
             return CoveredPaper.of(geometry, PLANE, thickness);
         }

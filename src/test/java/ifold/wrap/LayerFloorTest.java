@@ -89,9 +89,9 @@ class LayerFloorTest {
         assertEquals(10, LayerFloor.of(model).layers());
         Wrap.Result result = Wrap.wrap(HamiltonianRefinement.refine(model), new Wrap.Options(Double.NaN, Double.NaN));
         WrapTest.check(dir, result, model, 1, 2000);
-        List<WrapGeometry> geometries = new ArrayList<>();
+        List<PaperInSpace> geometries = new ArrayList<>();
         for (Wrap.Strip strip : result.strips()) {
-            geometries.add(WrapGeometry.of(strip.sheet(), result.frames()));
+            geometries.add(PaperInSpace.of(strip.sheet(), result.frames()));
         }
         assertTrue(WrapAnalysis.of(result, geometries).maxLayers() >= 10);
     }

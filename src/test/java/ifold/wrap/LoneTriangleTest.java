@@ -189,7 +189,7 @@ class LoneTriangleTest {
     }
 
     private static WrapAnalysis analyse(Wrap.Result result) {
-        return WrapAnalysis.of(result, List.of(WrapGeometry.of(result.strips().get(0).sheet(), result.frames())));
+        return WrapAnalysis.of(result, List.of(PaperInSpace.of(result.strips().get(0).sheet(), result.frames())));
     }
 
     /**

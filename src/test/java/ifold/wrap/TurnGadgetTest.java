@@ -24,7 +24,7 @@ class TurnGadgetTest {
                 assertEquals(angle, gadget.measuredAngle(), 1e-9, what);
                 assertTrue(gadget.endFacesUp(), "top side up after " + what);
                 Wrap.Result result = gadget.wrap();
-                WrapGeometry geometry = WrapGeometry.of(gadget.sheet(), result.frames());
+                PaperInSpace geometry = PaperInSpace.of(gadget.sheet(), result.frames());
                 WrapAnalysis analysis = WrapAnalysis.of(result, List.of(geometry));
                 assertTrue(analysis.isometryError() <= 1e-9, what);
                 assertEquals(2, result.count(Wrap.Kind.TURN_GADGET), what);

@@ -56,9 +56,9 @@ public class WrapTest {
      * report against the file, and the layer order of its FOLD file.
      */
     static void check(Path dir, Wrap.Result result, IndexedPolygons model, int components, int samples) throws Exception {
-        List<WrapGeometry> geometries = new ArrayList<>();
+        List<PaperInSpace> geometries = new ArrayList<>();
         for (Wrap.Strip strip : result.strips()) {
-            geometries.add(WrapGeometry.of(strip.sheet(), result.frames()));
+            geometries.add(PaperInSpace.of(strip.sheet(), result.frames()));
         }
         WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
         Path obj = dir.resolve("wrap.obj");
@@ -110,12 +110,12 @@ public class WrapTest {
         }
         assertEquals(hostChanges, result.count(Wrap.Kind.EDGE_CROSSING));
         // The sixth truth, read from the FOLD file: the layers are in an order flat paper can have.
-        List<ifold.fold.FoldFile.Folded> sheets = new ArrayList<>();
+        List<ifold.foldfile.FoldFile.Folded> sheets = new ArrayList<>();
         for (Wrap.Strip strip : result.strips()) {
-            sheets.add(new ifold.fold.FoldFile.Folded(strip.sheet(), result.frames()));
+            sheets.add(new ifold.foldfile.FoldFile.Folded(strip.sheet(), result.frames()));
         }
         Path fold = dir.resolve("wrap.fold");
-        ifold.fold.FoldFile.write(fold, "test", sheets);
+        ifold.foldfile.FoldFile.write(fold, "test", sheets);
         ifold.check.LayerOrder.Result order;
         try (java.io.Reader reader = Files.newBufferedReader(fold)) {
             order = ifold.check.LayerOrder.check(reader);
@@ -188,7 +188,7 @@ public class WrapTest {
         Wrap.Result result = Wrap.wrap(refinement, new Wrap.Options(Double.NaN, Double.NaN).withMaxFaces(1_000_000));
         assertEquals(1, result.strips().size());
         assertEquals(refinement.mesh().faceCount(), result.strips().get(0).triangles());
-        List<WrapGeometry> geometries = List.of(WrapGeometry.of(result.strips().get(0).sheet(), result.frames()));
+        List<PaperInSpace> geometries = List.of(PaperInSpace.of(result.strips().get(0).sheet(), result.frames()));
         WrapAnalysis analysis = WrapAnalysis.of(result, geometries);
         assertEquals(1, analysis.coverage(), 1e-6);
         assertTrue(analysis.isometryError() < 1e-9, "isometry error " + analysis.isometryError());
@@ -353,9 +353,9 @@ public class WrapTest {
     }
 
     private static int maxLayers(Wrap.Result result) {
-        List<WrapGeometry> geometries = new ArrayList<>();
+        List<PaperInSpace> geometries = new ArrayList<>();
         for (Wrap.Strip strip : result.strips()) {
-            geometries.add(WrapGeometry.of(strip.sheet(), result.frames()));
+            geometries.add(PaperInSpace.of(strip.sheet(), result.frames()));
         }
         return WrapAnalysis.of(result, geometries).maxLayers();
     }

@@ -1,6 +1,6 @@
 package ifold.ui.model;
 
-import ifold.fold.FoldFile;
+import ifold.foldfile.FoldFile;
 import ifold.scene.Animation;
 import ifold.scene.Scene;
 import java.io.IOException;

@@ -1,7 +1,7 @@
 package ifold.ui.model;
 
 import ifold.check.PaperCollisions;
-import ifold.fold.FoldFile;
+import ifold.foldfile.FoldFile;
 import ifold.geom.Triangle;
 import ifold.job.Collisions;
 import ifold.job.LayerOrders;
@@ -28,7 +28,7 @@ import ifold.wrap.ParameterException;
 import ifold.wrap.TurnGadget;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapExport;
-import ifold.wrap.WrapGeometry;
+import ifold.wrap.PaperInSpace;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -191,7 +191,7 @@ public final class Planning {
         progress.check();
         progress.stage("analysing");
         Wrap.Result result = zigzag.result();
-        List<WrapGeometry> geometries = zigzag.geometries();
+        List<PaperInSpace> geometries = zigzag.geometries();
         Map<String, Object> figures = zigzag.figures();
         LayerOrders.addTo(figures, List.of(new FoldFile.Folded(zigzag.sheet(), result.frames())), "zigzag");
         Collisions.addTo(figures, geometries, result.thickness(), result.mesh());
@@ -211,7 +211,7 @@ public final class Planning {
             throw new JobFailure("cannot make this turn: " + e.getMessage());
         }
         Wrap.Result result = turn.result();
-        List<WrapGeometry> geometries = turn.geometries();
+        List<PaperInSpace> geometries = turn.geometries();
         Map<String, Object> figures = turn.figures();
         LayerOrders.addTo(figures, List.of(new FoldFile.Folded(turn.gadget().sheet(), result.frames())), "turn");
         Collisions.addTo(figures, geometries, result.thickness(), result.mesh());
@@ -253,7 +253,7 @@ public final class Planning {
         }
         HalfedgeMesh mesh = wrapped.mesh();
         Wrap.Result result = wrapped.result();
-        List<WrapGeometry> geometries = wrapped.geometries();
+        List<PaperInSpace> geometries = wrapped.geometries();
         HamiltonianRefinement.Result refinement = wrapped.refinement();
         Map<String, Object> figures = wrapped.figures();
         List<FoldFile.Folded> sheets = new ArrayList<>();
@@ -293,7 +293,7 @@ public final class Planning {
         progress.check();
         FoldScript parsed = folding.script();
         ScriptFolding.Result result = folding.result();
-        WrapGeometry folded = folding.folded();
+        PaperInSpace folded = folding.folded();
         Map<String, Object> figures = folding.figures();
         // Folded once more on ideal paper where thick (ofScript): once, for the check and the export.
         List<FoldFile.Folded> sheets = List.of(FoldFile.Folded.ofScript(parsed, result, ScriptFolding.DEFAULT_MAX_FACES));
@@ -388,7 +388,7 @@ public final class Planning {
         return List.copyOf(parts);
     }
 
-    private static Plan.Shown scriptScene(ScriptFolding.Result result, WrapGeometry folded) {
+    private static Plan.Shown scriptScene(ScriptFolding.Result result, PaperInSpace folded) {
         Scene scene = new Scene();
         Animation animation = Scenes.script(scene, result, folded);
         return new Plan.Shown(scene, animation);
@@ -400,7 +400,7 @@ public final class Planning {
         WrapPlayback fill(Scene scene);
     }
 
-    private static Plan paperPlan(Job job, String title, Wrap.Result result, List<WrapGeometry> geometries, Map<String, Object> figures,
+    private static Plan paperPlan(Job job, String title, Wrap.Result result, List<PaperInSpace> geometries, Map<String, Object> figures,
             double seconds, String source, double[] movedBy, WrapScene scenes) {
         Scene scene = new Scene();
         WrapPlayback playback = scenes.fill(scene);

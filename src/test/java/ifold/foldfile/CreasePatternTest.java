@@ -1,4 +1,4 @@
-package ifold.fold;
+package ifold.foldfile;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;

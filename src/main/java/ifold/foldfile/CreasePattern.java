@@ -1,4 +1,4 @@
-package ifold.fold;
+package ifold.foldfile;
 
 import ifold.geom.Tolerance;
 import ifold.script.FoldScript;

@@ -1,4 +1,4 @@
-package ifold.fold;
+package ifold.foldfile;
 
 import com.fasterxml.jackson.core.JsonFactory;
 import com.fasterxml.jackson.core.JsonParseException;

@@ -4,4 +4,4 @@
  * state (a 3D frame with the stacking order of overlapping faces). Mountain and valley are
  * measured against the paper's own top side, as crease patterns mean them.
  */
-package ifold.fold;
+package ifold.foldfile;

@@ -1,4 +1,4 @@
-package ifold.fold;
+package ifold.foldfile;
 
 import java.util.ArrayList;
 import java.util.Arrays;

@@ -1,4 +1,4 @@
-package ifold.fold;
+package ifold.foldfile;
 
 import static ifold.geom.Vectors.dot;
 import static ifold.geom.Vectors.sub;

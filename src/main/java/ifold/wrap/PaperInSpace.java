@@ -8,9 +8,10 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * A wrapped strip in space: every face of its sheet placed on its host at its level, with
- * vertices shared where neighbouring faces meet, and caps where they meet at different heights
- * (the paper bent around a fold, or over an edge of the surface).
+ * Folded paper in space, with its thickness: every face of a sheet (a wrapped strip, or the
+ * sheet of a fold script or a demo) placed on its host at its level, with vertices shared
+ * where neighbouring faces meet, and caps where they meet at different heights (the paper bent
+ * around a fold, or over an edge of the surface).
  *
  * <p>A face at level k lies at height (k + 1/2)·T above its host: its mid-surface, so the
  * paper's lower side touches the surface, or the face below. A cap over an edge of the surface
@@ -34,11 +35,11 @@ import java.util.List;
  * @param capAfter for each cap, the later of the two faces it joins (index in paperFaces): it exists from then on
  * @param creep the paper vertices that stand back from a concave edge, and where they stood
  */
-public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, int[] paperHosts, List<int[]> caps, int[] capAfter,
+public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, int[] paperHosts, List<int[]> caps, int[] capAfter,
         Creep creep) {
 
     /** Paper that stands where it was laid: nothing creeps. */
-    public WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, int[] paperHosts, List<int[]> caps, int[] capAfter) {
+    public PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, int[] paperHosts, List<int[]> caps, int[] capAfter) {
         this(xyz, uv, paperFaces, paperHosts, caps, capAfter, Creep.NONE);
     }
 
@@ -59,14 +60,14 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
         public static final Creep NONE = new Creep(new int[0], new double[0]);
 
         /** Where {@code geometry}'s vertex v lies without creep, into {@code out}: its own place, or where it was before it crept. */
-        public double[] laid(WrapGeometry geometry, int v, double[] out) {
+        public double[] laid(PaperInSpace geometry, int v, double[] out) {
             int k = vertices.length == 0 ? -1 : java.util.Arrays.binarySearch(vertices, v);
             System.arraycopy(k >= 0 ? from : geometry.xyz(), 3 * (k >= 0 ? k : v), out, 0, 3);
             return out;
         }
 
         /** The farthest any vertex of {@code geometry} crept. */
-        public double most(WrapGeometry geometry) {
+        public double most(PaperInSpace geometry) {
             double most = 0;
             double[] xyz = geometry.xyz();
             for (int k = 0; k < vertices.length; k++) {
@@ -79,7 +80,7 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
     }
 
     /** The strip placed in space. */
-    public static WrapGeometry of(Sheet sheet, HostFrame[] frames) {
+    public static PaperInSpace of(Sheet sheet, HostFrame[] frames) {
         Builder builder = new Builder(sheet, frames);
         return builder.build();
     }
@@ -126,7 +127,7 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
             }
         }
 
-        WrapGeometry build() {
+        PaperInSpace build() {
             int faces = sheet.faceCount();
             // Flat folds first, from the sheet alone (two faces across a paper edge on one host at
             // two levels): how far each bend stands out depends on the folds nested about its
@@ -236,7 +237,7 @@ public record WrapGeometry(double[] xyz, double[] uv, List<int[]> paperFaces, in
             }
             Creep creep = creptCount == 0 ? Creep.NONE
                     : new Creep(java.util.Arrays.copyOf(creptVertices, creptCount), java.util.Arrays.copyOf(creptFrom, 3 * creptCount));
-            return new WrapGeometry(java.util.Arrays.copyOf(xyz, 3 * vertices), java.util.Arrays.copyOf(uv, 2 * vertices), paper,
+            return new PaperInSpace(java.util.Arrays.copyOf(xyz, 3 * vertices), java.util.Arrays.copyOf(uv, 2 * vertices), paper,
                     hosts, caps, capAfter.stream().mapToInt(Integer::intValue).toArray(), creep);
         }
 
