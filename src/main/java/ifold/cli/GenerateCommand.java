@@ -1,8 +1,8 @@
 package ifold.cli;
 
 import ifold.job.BuiltInModels;
-import ifold.mesh.PolygonSoup;
-import ifold.mesh.io.MeshWriters;
+import ifold.job.GenerateJob;
+import ifold.job.JobWatcher;
 import ifold.wrap.ParameterException;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -43,22 +43,18 @@ final class GenerateCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         OutputFiles.checkWritableFile(output, "-o", ".off", ".obj", ".ply", ".stl");
-        PolygonSoup soup;
+        GenerateJob.Made made;
         try {
-            soup = BuiltInModels.make(shape, around, across, subdivisions);
+            made = GenerateJob.run(new GenerateJob.Request(shape, around, across, subdivisions, output, ascii), JobWatcher.NONE);
         } catch (ParameterException e) {
             if (e.parameter().equals(BuiltInModels.SEGMENTS)) {
                 throw UserError.usage("options --around and --across: " + e.getMessage());
             }
             throw new CommandLine.ParameterException(spec.commandLine(), "option --" + e.parameter() + ": " + e.getMessage());
-        }
-        try {
-            MeshWriters.write(soup, output, ascii);
         } catch (IOException e) {
             throw new UserError(output + ": cannot write: " + e.getMessage());
         }
-        spec.commandLine().getOut().println("wrote " + output + ": " + soup.vertexCount() + " vertices, "
-                + soup.faceCount() + " faces");
+        spec.commandLine().getOut().println("wrote " + output + ": " + made.vertices() + " vertices, " + made.faces() + " faces");
         return 0;
     }
 }

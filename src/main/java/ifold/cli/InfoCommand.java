@@ -1,8 +1,9 @@
 package ifold.cli;
 
+import ifold.job.InfoJob;
 import ifold.job.Json;
-import ifold.job.ModelInfo;
-import ifold.mesh.MeshBuilder;
+import ifold.job.ModelFiles;
+import java.io.PrintWriter;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
@@ -30,10 +31,13 @@ final class InfoCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        LoadedModel loaded = LoadedModel.load(model, new MeshBuilder.Options(strict, false));
-        loaded.requireFaces(model, "nothing to describe");
-        loaded.reportRepairs(model, spec.commandLine().getErr());
-        Map<String, Object> report = ModelInfo.of(model.toString(), loaded.read(), loaded.inputVertices(), loaded.inputFaces(), loaded.built());
+        PrintWriter err = spec.commandLine().getErr();
+        Map<String, Object> report;
+        try {
+            report = InfoJob.run(new InfoJob.Request(model, strict), LoadedModel.printingNotes(err));
+        } catch (ModelFiles.LoadFailure e) {
+            throw LoadedModel.refusal(e);
+        }
         var out = spec.commandLine().getOut();
         if (json) {
             out.print(Json.write(report));

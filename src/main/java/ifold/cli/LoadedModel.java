@@ -1,5 +1,6 @@
 package ifold.cli;
 
+import ifold.job.JobWatcher;
 import ifold.job.ModelFiles;
 import ifold.mesh.Defect;
 import ifold.mesh.MeshBuilder;
@@ -82,5 +83,16 @@ final class LoadedModel {
             err.println("ifold: " + note);
         }
         err.flush();
+    }
+
+    /** A job's watcher for the commands: each note printed on {@code err} as "ifold: NOTE", as {@link #reportRepairs} prints them. */
+    static JobWatcher printingNotes(PrintWriter err) {
+        return new JobWatcher() {
+            @Override
+            public void note(String line) {
+                err.println("ifold: " + line);
+                err.flush();
+            }
+        };
     }
 }

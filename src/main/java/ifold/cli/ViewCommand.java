@@ -1,9 +1,8 @@
 package ifold.cli;
 
+import ifold.job.ModelFiles;
 import ifold.job.Scenes;
-import ifold.mesh.HalfedgeMesh;
-import ifold.mesh.MeshBuilder;
-import ifold.refine.HamiltonianRefinement;
+import ifold.job.ViewJob;
 import ifold.render.RenderUnavailableException;
 import ifold.render.ViewerWindow;
 import ifold.scene.Animation;
@@ -71,19 +70,15 @@ final class ViewCommand implements Callable<Integer> {
         }
         frameOptions.check();
         PrintWriter out = spec.commandLine().getOut();
-        boolean refined = refine || path;
-        LoadedModel loaded = LoadedModel.load(model, new MeshBuilder.Options(strict, refined));
-        loaded.requireFaces(model, "nothing to show");
-        loaded.reportRepairs(model, err);
-        HalfedgeMesh mesh = loaded.built().mesh();
-        if (mesh.faceCount() == 0) {
-            throw new UserError(model + ": no faces to show");
+        Scenes.Show show = path ? Scenes.Show.PATH : refine ? Scenes.Show.REFINEMENT : Scenes.Show.MODEL;
+        ViewJob.Outcome shown;
+        try {
+            shown = ViewJob.run(new ViewJob.Request(model, strict, show, colors), LoadedModel.printingNotes(err));
+        } catch (ModelFiles.LoadFailure e) {
+            throw LoadedModel.refusal(e);
         }
-
-        Scene scene = new Scene();
-        HamiltonianRefinement.Result refinement = refined ? HamiltonianRefinement.refine(mesh) : null;
-        Scenes.Show show = path ? Scenes.Show.PATH : refined ? Scenes.Show.REFINEMENT : Scenes.Show.MODEL;
-        Scenes.View view = Scenes.view(scene, model.getFileName().toString(), mesh, refinement, show, colors);
+        Scene scene = shown.scene();
+        Scenes.View view = shown.view();
         Animation animation = view.animation();
         String caption = view.caption();
         int samples = view.samples();

@@ -147,15 +147,39 @@ public final class ModelFiles {
 
     /** Reads and builds {@code file}. */
     public static Loaded load(Path file, MeshBuilder.Options options) throws LoadFailure {
+        return load(file, options, JobWatcher.NONE);
+    }
+
+    /** Reads and builds {@code file}, the stage told to {@code watcher}, which may stop it between reading and building. */
+    public static Loaded load(Path file, MeshBuilder.Options options, JobWatcher watcher) throws LoadFailure {
+        watcher.stage("reading " + file.getFileName());
         long start = System.nanoTime();
         MeshReaders.Read read = readDescribed(file);
         PolygonSoup soup = read.soup();
         long parsed = System.nanoTime();
+        watcher.stopIfAsked();
         MeshBuilder.Result built = build(file, soup, options);
         long builtAt = System.nanoTime();
         // The soup is not kept: for big models it is a third of the memory the refinement needs.
         return new Loaded(soup.vertexCount(), soup.faceCount(), new MeshReaders.Read(null, read.format(), read.weldedCorners()), built,
                 (parsed - start) * 1e-9, (builtAt - parsed) * 1e-9);
+    }
+
+    /**
+     * Reads and builds {@code file} for a job that looks at its surface: the stage told, a stop
+     * looked for between reading and building, a model its repairs left without faces refused
+     * ("nothing to {@code what}"), and a note for each kind of repair made.
+     */
+    public static Loaded loadSurface(Path file, MeshBuilder.Options options, String what, JobWatcher watcher) throws LoadFailure {
+        Loaded loaded = load(file, options, watcher);
+        String refusal = loaded.noFacesLeft(file, "nothing to " + what);
+        if (refusal != null) {
+            throw new LoadFailure(refusal, false);
+        }
+        for (String note : repairNotes(file, loaded.repairs())) {
+            watcher.note(note);
+        }
+        return loaded;
     }
 
     /** What went wrong reading {@code file}, in one line. */

@@ -5,6 +5,7 @@ import ifold.image.FrameWriter;
 import ifold.image.GifWriter;
 import ifold.image.Mp4Writer;
 import ifold.io.AtomicFile;
+import ifold.job.CancellableMesh;
 import ifold.job.Json;
 import ifold.job.Scenes;
 import ifold.mesh.HalfedgeMesh;
@@ -243,7 +244,7 @@ public final class Exports {
         progress.check();
         progress.stage("writing " + file.getFileName());
         try {
-            MeshWriters.write(new CancellableMesh(result.mesh(), progress), file);
+            MeshWriters.write(new CancellableMesh(result.mesh(), progress.watcher()), file);
         } catch (IOException e) {
             throw new JobFailure("cannot write " + e.getMessage());
         }

@@ -1,12 +1,10 @@
 package ifold.ui.model;
 
+import ifold.job.InfoJob;
 import ifold.job.ModelFiles;
-import ifold.job.ModelInfo;
 import ifold.mesh.MeshBuilder;
-import ifold.mesh.PolygonSoup;
 import java.io.IOException;
 import java.nio.file.Path;
-import java.util.Locale;
 import java.util.Map;
 
 /**
@@ -26,15 +24,11 @@ public record ModelFile(int inputVertices, int inputFaces, ifold.mesh.io.MeshRea
      * @throws java.util.concurrent.CancellationException if the progress was cancelled after reading
      */
     public static ModelFile load(Path file, MeshBuilder.Options options, Progress progress) throws JobFailure {
-        progress.stage("reading " + file.getFileName());
         try {
-            ifold.mesh.io.MeshReaders.Read read = ModelFiles.readDescribed(file);
-            PolygonSoup soup = read.soup();
-            progress.check();
-            return new ModelFile(soup.vertexCount(), soup.faceCount(), new ifold.mesh.io.MeshReaders.Read(null, read.format(),
-                    read.weldedCorners()), ModelFiles.build(file, soup, options));
+            ModelFiles.Loaded loaded = ModelFiles.load(file, options, progress.watcher());
+            return new ModelFile(loaded.inputVertices(), loaded.inputFaces(), loaded.read(), loaded.built());
         } catch (ModelFiles.LoadFailure e) {
-            throw new JobFailure(new Problem("model", e.getMessage() + (e.repairable() ? " (clear Strict to repair it)" : "")));
+            throw failure(e);
         }
     }
 
@@ -51,11 +45,11 @@ public record ModelFile(int inputVertices, int inputFaces, ifold.mesh.io.MeshRea
      * as {@code ifold info} does (faces kept as they are, not triangulated).
      */
     public static Map<String, Object> information(Path file, boolean strict, Progress progress) throws JobFailure {
-        ModelFile loaded = load(file, new MeshBuilder.Options(strict, false), progress);
-        loaded.requireFaces(file, "describe");
-        progress.check();
-        progress.stage("measuring " + file.getFileName());
-        return ModelInfo.of(file.toString(), loaded.read(), loaded.inputVertices(), loaded.inputFaces(), loaded.built());
+        try {
+            return InfoJob.run(new InfoJob.Request(file, strict), progress.watcher());
+        } catch (ModelFiles.LoadFailure e) {
+            throw failure(e);
+        }
     }
 
     /** Whether {@code file} is named as a model iFold reads: .off, .obj, .ply or .stl, in any case. */
@@ -70,5 +64,10 @@ public record ModelFile(int inputVertices, int inputFaces, ifold.mesh.io.MeshRea
 
     static String readError(Path file, IOException e) {
         return ModelFiles.readError(file, e);
+    }
+
+    /** A model file that cannot be read or built, as the window says it: at the model's field, and how to let strict mode repair it. */
+    static JobFailure failure(ModelFiles.LoadFailure e) {
+        return new JobFailure(new Problem("model", e.getMessage() + (e.repairable() ? " (clear Strict to repair it)" : "")));
     }
 }

@@ -1,8 +1,7 @@
 package ifold.ui.model;
 
 import ifold.job.BuiltInModels;
-import ifold.mesh.PolygonSoup;
-import ifold.mesh.io.MeshWriters;
+import ifold.job.GenerateJob;
 import ifold.wrap.ParameterException;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -67,17 +66,14 @@ public record NewModel(BuiltInModels.Shape shape, String around, String across, 
         if (!ModelFile.isWritableModelName(file)) {
             throw new JobFailure(new Problem("file", "a model is written as .off, .obj, .ply or .stl, got " + file.getFileName()));
         }
-        progress.stage("making the " + shape);
         Counts counts = counts(problems);
-        PolygonSoup soup = BuiltInModels.make(shape, counts.around(), counts.across(), counts.subdivisions());
-        progress.check();
-        progress.stage("writing " + file.getFileName());
         try {
-            MeshWriters.write(new CancellableMesh(soup, progress), file);
+            GenerateJob.Made made = GenerateJob.run(new GenerateJob.Request(shape, counts.around(), counts.across(), counts.subdivisions(),
+                    file, false), progress.watcher());
+            return new Made(made.file(), made.vertices(), made.faces());
         } catch (IOException e) {
             throw new JobFailure(file + ": cannot write: " + e.getMessage());
         }
-        return new Made(file, soup.vertexCount(), soup.faceCount());
     }
 
     /** The parameters as numbers, the defaults where blank. */

@@ -3,10 +3,11 @@ package ifold.ui.model;
 import ifold.check.PaperCollisions;
 import ifold.foldfile.FoldFile;
 import ifold.geom.Triangle;
+import ifold.job.ModelFiles;
+import ifold.job.ViewJob;
 import ifold.job.Collisions;
 import ifold.job.LayerOrders;
 import ifold.job.ModelFiles;
-import ifold.job.RefineJob;
 import ifold.job.Reports;
 import ifold.job.Scenes;
 import ifold.job.ScriptJob;
@@ -18,7 +19,6 @@ import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.refine.HamiltonianRefinement;
 import ifold.scene.Animation;
-import ifold.scene.PathView;
 import ifold.scene.Scene;
 import ifold.scene.WrapPlayback;
 import ifold.script.FoldScript;
@@ -33,7 +33,6 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -326,42 +325,20 @@ public final class Planning {
      * edges by kind.
      */
     private static Plan view(Job.View job, Progress progress) throws JobFailure {
-        Path model = job.model();
-        boolean refined = job.show() != Scenes.Show.MODEL;
-        ModelFile loaded = ModelFile.load(model, new MeshBuilder.Options(job.strict(), refined), progress);
-        loaded.requireFaces(model, "show");
-        HalfedgeMesh mesh = loaded.built().mesh();
-        progress.check();
-        RefineJob.Outcome refining = null;
-        if (refined) {
-            progress.stage("refining " + mesh.faceCount() + " triangles");
-            refining = RefineJob.run(mesh, false);
-            progress.check();
+        ViewJob.Outcome shown;
+        try {
+            shown = ViewJob.run(new ViewJob.Request(job.model(), job.strict(), job.show(), job.colors()), progress.watcher());
+        } catch (ModelFiles.LoadFailure e) {
+            throw ModelFile.failure(e);
         }
-        HamiltonianRefinement.Result refinement = refining == null ? null : refining.refinement();
-        HamiltonianRefinement.Result shownRefinement = refinement;
-        String name = model.getFileName().toString();
-        Scene scene = new Scene();
-        Scenes.View view = Scenes.view(scene, name, mesh, refinement, job.show(), job.colors());
-        Map<String, Object> figures = new LinkedHashMap<>();
-        figures.put("model", model.toString());
-        if (refining != null) {
-            figures.putAll(refining.figures());
-            int[] edges = PathView.edgeKindCounts(view.geometry().mesh());
-            figures.put("treeEdges", edges[0]);
-            figures.put("steinerEdges", edges[1]);
-            figures.put("originalEdges", edges[2]);
-        } else {
-            figures.put("faces", mesh.faceCount());
-            figures.put("triangles", view.geometry().mesh().triangleCount());
-        }
-        figures.put("repairs", Reports.repairs(loaded.built().repairs()));
+        Map<String, Object> figures = shown.figures();
         progress.check();
-        return new Plan(job, view.caption(), new Plan.Shown(scene, view.animation()), viewParts(view.animation(), job.show()), figures,
-                10, () -> {
+        Scenes.View view = shown.view();
+        return new Plan(job, view.caption(), new Plan.Shown(shown.scene(), view.animation()), viewParts(view.animation(), job.show()),
+                figures, 10, () -> {
                     Scene another = new Scene();
-                    return new Plan.Shown(another, Scenes.view(another, name, mesh, shownRefinement, job.show(), job.colors()).animation());
-                }, null, List.of(), "ifold view " + model, null);
+                    return new Plan.Shown(another, shown.viewIn(another).animation());
+                }, null, List.of(), "ifold view " + job.model(), null);
     }
 
     /**

@@ -1,5 +1,6 @@
 package ifold.ui.model;
 
+import ifold.job.JobWatcher;
 import java.util.concurrent.CancellationException;
 
 /**
@@ -39,4 +40,25 @@ public interface Progress {
             return false;
         }
     };
+
+    /** This progress as a job's watcher: its stages and counts shown, Cancel stopping the job; notes go unshown. */
+    default JobWatcher watcher() {
+        Progress progress = this;
+        return new JobWatcher() {
+            @Override
+            public void stage(String what) {
+                progress.stage(what);
+            }
+
+            @Override
+            public void done(int done, int total) {
+                progress.done(done, total);
+            }
+
+            @Override
+            public boolean stopped() {
+                return progress.cancelled();
+            }
+        };
+    }
 }

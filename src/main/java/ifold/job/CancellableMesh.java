@@ -1,33 +1,33 @@
-package ifold.ui.model;
+package ifold.job;
 
 import ifold.mesh.IndexedPolygons;
 import java.util.concurrent.atomic.AtomicInteger;
 
 /**
- * A mesh as a writer reads it, which looks at the export's {@link Progress} every
+ * A mesh as a writer reads it, which looks at its job's {@link JobWatcher} every
  * {@link #BLOCK} vertices and faces: Cancel then throws out of the writer, which discards its
  * temporary file, and the progress bar moves meanwhile. The writers format blocks of lines on
  * several threads, so the count is shared and the bar may step back by a block or two.
  */
-final class CancellableMesh implements IndexedPolygons {
+public final class CancellableMesh implements IndexedPolygons {
     /** How often the progress is looked at: a few microseconds a time, against milliseconds of formatting. */
-    static final int BLOCK = 1 << 14;
+    public static final int BLOCK = 1 << 14;
 
     private final IndexedPolygons mesh;
-    private final Progress progress;
+    private final JobWatcher watcher;
     /** Blocks of vertices and faces begun. */
     private final AtomicInteger blocks = new AtomicInteger();
     private final int totalBlocks;
 
-    CancellableMesh(IndexedPolygons mesh, Progress progress) {
+    public CancellableMesh(IndexedPolygons mesh, JobWatcher watcher) {
         this.mesh = mesh;
-        this.progress = progress;
+        this.watcher = watcher;
         totalBlocks = (mesh.vertexCount() + BLOCK - 1) / BLOCK + (mesh.faceCount() + BLOCK - 1) / BLOCK;
     }
 
     private void blockBegins() {
-        progress.check();
-        progress.done(Math.min(blocks.incrementAndGet(), totalBlocks), totalBlocks);
+        watcher.stopIfAsked();
+        watcher.done(Math.min(blocks.incrementAndGet(), totalBlocks), totalBlocks);
     }
 
     @Override
