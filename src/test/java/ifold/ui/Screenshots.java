@@ -26,39 +26,39 @@ public final class Screenshots {
         Files.delete(settings);
         MainWindow window = App.open(null, new Settings(settings));
         try {
-            MainWindowTest.onEdt(() -> {
+            WindowTestBase.onEdt(() -> {
                 window.setSize(1360, 820);
                 return null;
             });
             shoot(window, 0.45, out.resolve("app-zigzag.png"));
-            MainWindowTest.onEdt(() -> {
+            WindowTestBase.onEdt(() -> {
                 window.parameters.zigzagWidth.setText("12");
                 return null;
             });
-            MainWindowTest.waitFor("the width marked", 10, () -> window.parameters.isMarked("width"));
+            WindowTestBase.waitFor("the width marked", 10, () -> window.parameters.isMarked("width"));
             shoot(window, -1, out.resolve("app-invalid.png"));
-            MainWindowTest.onEdt(() -> {
+            WindowTestBase.onEdt(() -> {
                 window.parameters.show(Job.Turn.DEMO);
                 return null;
             });
             shoot(window, 0.6, out.resolve("app-turn.png"));
-            MainWindowTest.onEdt(() -> {
+            WindowTestBase.onEdt(() -> {
                 window.open(Path.of("models", "icosahedron.off"));
                 return null;
             });
             shoot(window, 0.55, out.resolve("app-wrap.png"));
-            MainWindowTest.onEdt(() -> {
+            WindowTestBase.onEdt(() -> {
                 window.open(Path.of("models", "scripts", "pleat20.fold"));
                 return null;
             });
             shoot(window, 0.7, out.resolve("app-script.png"));
-            MainWindowTest.onEdt(() -> {
+            WindowTestBase.onEdt(() -> {
                 window.parameters.show(new Job.View(Path.of("models", "icosahedron.off"), Scenes.Show.PATH, PathView.Colors.DARKNESS, false));
                 return null;
             });
             shoot(window, 0.6, out.resolve("app-view.png"));
         } finally {
-            MainWindowTest.onEdt(() -> {
+            WindowTestBase.onEdt(() -> {
                 window.dispose();
                 return null;
             });
@@ -69,9 +69,9 @@ public final class Screenshots {
 
     /** Waits for the plan, moves the timeline to {@code fraction} of its length (unless negative), and paints the window. */
     private static void shoot(MainWindow window, double fraction, Path file) throws Exception {
-        MainWindowTest.waitFor("the plan", 120, () -> !window.isWorking() && window.plan() != null);
+        WindowTestBase.waitFor("the plan", 120, () -> !window.isWorking() && window.plan() != null);
         if (fraction >= 0) {
-            MainWindowTest.onEdt(() -> {
+            WindowTestBase.onEdt(() -> {
                 window.timeline.seek(fraction * window.timeline.timeline().end());
                 return null;
             });
@@ -79,7 +79,7 @@ public final class Screenshots {
         Thread.sleep(300);
         window.view.awaitFrame(30_000);
         Thread.sleep(300);
-        BufferedImage image = MainWindowTest.onEdt(() -> {
+        BufferedImage image = WindowTestBase.onEdt(() -> {
             BufferedImage picture = new BufferedImage(window.getRootPane().getWidth(), window.getRootPane().getHeight(),
                     BufferedImage.TYPE_INT_RGB);
             Graphics2D g = picture.createGraphics();

@@ -15,7 +15,7 @@ import org.junit.jupiter.api.Test;
 
 /** The checker on tiny hand-made wraps: each truth holds where it should and breaks where it should. */
 class WrapTruthsTest {
-    private static final double T = 0.01;
+    static final double T = 0.01;
 
     /** The unit square in z = 0, normal +z, cut along its diagonal from (0, 0) to (1, 1). */
     private static final List<double[]> SQUARE = List.of(
@@ -77,16 +77,16 @@ class WrapTruthsTest {
             f 2/2 3/3 6/6 5/5
             """;
 
-    private static List<Violation> check(String obj, List<double[]> model, double thickness) {
+    static List<Violation> check(String obj, List<double[]> model, double thickness) {
         return WrapTruths.read(obj).check(model, thickness, 1, 500, 7);
     }
 
-    private static Set<String> truths(List<Violation> violations) {
+    static Set<String> truths(List<Violation> violations) {
         return violations.stream().map(Violation::truth).collect(Collectors.toCollection(TreeSet::new));
     }
 
     /** Some violation of the truth says every one of the words. */
-    private static void assertBroken(List<Violation> violations, String truth, String... words) {
+    static void assertBroken(List<Violation> violations, String truth, String... words) {
         assertTrue(violations.stream().anyMatch(v -> v.truth().equals(truth) && Arrays.stream(words).allMatch(v.message()::contains)),
                 truth + " " + List.of(words) + " among " + violations);
     }
@@ -462,152 +462,5 @@ class WrapTruthsTest {
         assertEquals(1000.0, wrap.length(0), 1e-12);
         assertEquals(List.of(), violations);
         assertTrue(seconds < 20, "took " + seconds + " s");
-    }
-
-    /**
-     * An inside corner: the floor z = 0 (normal +z) and a wall x = 0 (normal +x) rising from its
-     * edge along y, a concave edge turning by 90 degrees (its mitre: in as far as up).
-     */
-    private static final List<double[]> INSIDE_CORNER = List.of(
-            new double[] {0, 0, 0, 1, 0, 0, 1, 1, 0},
-            new double[] {0, 0, 0, 1, 1, 0, 0, 1, 0},
-            new double[] {0, 0, 0, 0, 1, 0, 0, 1, 1},
-            new double[] {0, 0, 0, 0, 1, 1, 0, 0, 1});
-
-    /**
-     * A unit sheet on the floor and one on the wall, half a thickness up, each standing back
-     * {@code floorIn} and {@code wallIn} from the corner's edge, as thick layers must there.
-     */
-    private static String insideCorner(double floorIn, double wallIn) {
-        return insideCorner(floorIn, wallIn, 0.005);
-    }
-
-    /** As {@link #insideCorner(double, double)}, the sheets {@code up} from the surface. */
-    private static String insideCorner(double floorIn, double wallIn, double up) {
-        return String.format(java.util.Locale.ROOT, """
-                o strip-1
-                v %1$s 0 %3$s
-                vt 0 0
-                v 1 0 %3$s
-                vt 1 0
-                v 1 1 %3$s
-                vt 1 1
-                v %1$s 1 %3$s
-                vt 0 1
-                g paper
-                f 1/1 2/2 3/3 4/4
-                o strip-2
-                v %3$s 0 %2$s
-                vt 0 0
-                v %3$s 1 %2$s
-                vt 1 0
-                v %3$s 1 1
-                vt 1 1
-                v %3$s 0 1
-                vt 0 1
-                g paper
-                f 5/5 6/6 7/7 8/8
-                """, floorIn, wallIn, up);
-    }
-
-    /**
-     * Thick paper at a concave edge stands back from it (its creases creep): a face whose corners
-     * stand in from the edge by its mitre (its height, at 90 degrees) is no stretch, and the
-     * floor by the edge under no paper of its own plane is no hole; a corner nearer the edge than
-     * its mitre runs into the layers across, and one farther in than the creep zone is a stretch
-     * and leaves a hole; without thickness nothing creeps.
-     */
-    @Test
-    void paperStandsBackFromAConcaveEdgeByItsMitreAndNoMore() {
-        assertEquals(List.of(), check(insideCorner(0.005, 0.005), INSIDE_CORNER, T), "mitred at the corner");
-        assertEquals(List.of(), check(insideCorner(0.02, 0.005), INSIDE_CORNER, T), "in farther, within the zone (a fold's wall)");
-
-        List<Violation> nearer = check(insideCorner(0.002, 0.005), INSIDE_CORNER, T);
-        assertBroken(nearer, WrapTruths.ISOMETRIC, "vertex 1 is 0.002", "nearer than its mitre");
-        // Laid as it would be without thickness, congruent but running into the wall's layers.
-        List<Violation> unmitred = check(insideCorner(0, 0), INSIDE_CORNER, T);
-        assertBroken(unmitred, WrapTruths.ISOMETRIC, "face 1", "vertex 1 is 0.0 in", "nearer than its mitre");
-        assertBroken(unmitred, WrapTruths.ISOMETRIC, "face 2", "vertex 5 is 0.0 in", "nearer than its mitre");
-
-        List<Violation> far = check(insideCorner(0.2, 0.005), INSIDE_CORNER, T);
-        assertBroken(far, WrapTruths.ISOMETRIC, "face 1", "is stretched");
-        assertBroken(far, WrapTruths.COVERED, "lies under no paper face");
-
-        List<Violation> thin = check(insideCorner(0.005, 0.005, 0), INSIDE_CORNER, 0);
-        assertBroken(thin, WrapTruths.ISOMETRIC, "is stretched");
-    }
-
-    /** A room's corner: the floor z = 0 between two walls, x = 0 (normal +x) and y = 0 (normal +y). */
-    private static final List<double[]> ROOM_CORNER = List.of(
-            new double[] {0, 0, 0, 1, 0, 0, 1, 1, 0},
-            new double[] {0, 0, 0, 1, 1, 0, 0, 1, 0},
-            new double[] {0, 0, 0, 0, 1, 0, 0, 1, 1},
-            new double[] {0, 0, 0, 0, 1, 1, 0, 0, 1},
-            new double[] {0, 0, 0, 0, 0, 1, 1, 0, 1},
-            new double[] {0, 0, 0, 1, 0, 1, 1, 0, 0});
-
-    /**
-     * The checker's allowances at concave edges hold only where paper creeps: floor paper that
-     * keeps its mitre from one wall but runs into the other is caught (it passed, kept clear of
-     * the first), and a gap in the floor's paper away from the edge is a hole, though narrower
-     * than a creep zone (it passed too).
-     */
-    @Test
-    void creepIsAllowedOnlyWherePaperStandsBackFromEveryConcaveEdge() {
-        String floor = """
-                o strip-1
-                v 0 0.005 0.005
-                vt 0 0
-                v 1 0.005 0.005
-                vt 1 0
-                v 1 1 0.005
-                vt 1 1
-                v 0 1 0.005
-                vt 0 1
-                g paper
-                f 1/1 2/2 3/3 4/4
-                """;
-        assertBroken(check(floor, ROOM_CORNER, T), WrapTruths.ISOMETRIC, "vertex 1 is 0.0 in", "nearer than its mitre");
-
-        String gap = """
-                o strip-1
-                v 0.005 0 0.005
-                vt 0 0
-                v 0.47 0 0.005
-                vt 0.465 0
-                v 0.47 1 0.005
-                vt 0.465 1
-                v 0.005 1 0.005
-                vt 0 1
-                g paper
-                f 1/1 2/2 3/3 4/4
-                o strip-2
-                v 0.53 0 0.005
-                vt 0 0
-                v 1 0 0.005
-                vt 0.47 0
-                v 1 1 0.005
-                vt 0.47 1
-                v 0.53 1 0.005
-                vt 0 1
-                g paper
-                f 5/5 6/6 7/7 8/8
-                o strip-3
-                v 0.005 0 0.005
-                vt 0 0
-                v 0.005 1 0.005
-                vt 1 0
-                v 0.005 1 1
-                vt 1 0.995
-                v 0.005 0 1
-                vt 0 0.995
-                g paper
-                f 9/9 10/10 11/11 12/12
-                """;
-        assertBroken(check(gap, INSIDE_CORNER.subList(0, 2), T), WrapTruths.COVERED, "lies under no paper face");
-        List<Violation> holed = check(gap, INSIDE_CORNER, T);
-        assertEquals(Set.of(WrapTruths.COVERED), truths(holed), "the wall's paper and the floor's keep every other truth");
-        assertTrue(holed.stream().allMatch(v -> !v.message().contains("model point (") || v.message().contains("of triangle 1 ")
-                || v.message().contains("of triangle 2 ")), "only the floor's gap is bare: " + holed);
     }
 }

@@ -1,0 +1,258 @@
+package ifold.wrap;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * Truth 2 of {@link WrapTruths}: every paper face congruent to its paper polygon, but for thick
+ * paper's corners that creep within the zone of a concave edge of the model, none nearer such an
+ * edge than its mitre.
+ */
+final class TruthIsometry {
+    private final WrapTruths wrap;
+
+    TruthIsometry(WrapTruths wrap) {
+        this.wrap = wrap;
+    }
+
+    /**
+     * One side of a concave edge of the model: the edge from a to b on a triangle of outward unit
+     * {@code normal}, whose neighbour across rises above its plane, turning by φ; {@code mitre}
+     * is tan(φ/2).
+     */
+    record ConcaveSide(double[] normal, double[] a, double[] b, double mitre) {
+    }
+
+    /** Every side of every concave edge of the model: edges are matched by their corners' coordinates. */
+    static List<ConcaveSide> concaveSides(TruthModel model, double eps) {
+        int n = model.corners.length / 9;
+        Map<String, int[]> sides = new HashMap<>();
+        List<ConcaveSide> concave = new ArrayList<>();
+        for (int t = 0; t < n; t++) {
+            for (int k = 0; k < 3; k++) {
+                double[] a = Arrays.copyOfRange(model.corners, 9 * t + 3 * k, 9 * t + 3 * k + 3);
+                double[] b = Arrays.copyOfRange(model.corners, 9 * t + 3 * ((k + 1) % 3), 9 * t + 3 * ((k + 1) % 3) + 3);
+                String ab = Arrays.toString(a) + Arrays.toString(b);
+                String ba = Arrays.toString(b) + Arrays.toString(a);
+                int[] other = sides.remove(ba);
+                if (other == null) {
+                    sides.put(ab, new int[] {t, k});
+                    continue;
+                }
+                for (int[] side : List.of(new int[] {t, k}, other)) {
+                    int near = side[0];
+                    int far = side == other ? t : other[0];
+                    double rise = 0;
+                    for (int c = 0; c < 3; c++) {
+                        rise = Math.max(rise, model.height(near, model.corners, 9 * far + 3 * c));
+                    }
+                    if (rise > eps) {
+                        double[] m = model.normal(near);
+                        double[] o = model.normal(far);
+                        double cos = Math.max(-1, Math.min(1, m[0] * o[0] + m[1] * o[1] + m[2] * o[2]));
+                        double[] p = Arrays.copyOfRange(model.corners, 9 * near + 3 * side[1], 9 * near + 3 * side[1] + 3);
+                        double[] q = Arrays.copyOfRange(model.corners, 9 * near + 3 * ((side[1] + 1) % 3), 9 * near + 3 * ((side[1] + 1) % 3) + 3);
+                        concave.add(new ConcaveSide(m, p, q, Math.sqrt((1 - cos) / Math.max(1 + cos, 1e-12))));
+                    }
+                }
+            }
+        }
+        return concave;
+    }
+
+    /** Truth 2; {@code crept} gets the faces let stand back from a concave edge. */
+    void checkIsometry(TruthReport report, List<ConcaveSide> concave, double thickness, int maxStack, double eps, boolean[] crept) {
+        StringBuilder why = new StringBuilder();
+        for (int f = 0; f < wrap.faces(); f++) {
+            if (!wrap.faceCap[f]) {
+                why.setLength(0);
+                double error = isometryError(f, why);
+                Zones zones = thickness > 0 && !concave.isEmpty() ? zones(f, concave, thickness, maxStack, eps) : null;
+                if (zones != null && zones.nearer() != null) {
+                    report.add(WrapTruths.ISOMETRIC, wrap.face(f) + ": " + zones.nearer());
+                }
+                if (!(error <= WrapTruths.RELATIVE)) {
+                    crept[f] = zones != null && creptOnly(f, zones);
+                    if (!crept[f]) {
+                        report.add(WrapTruths.ISOMETRIC, wrap.face(f) + " is stretched: " + why + (zones == null || zones.widest() == 0 ? ""
+                                : " (more than twice the " + zones.widest() + " its corners by a concave edge may creep)"));
+                    }
+                }
+            }
+        }
+    }
+
+    /**
+     * Where face f lies by the concave edges of the model: which corners lie in a creep zone
+     * ({@code inZone}), the widest such zone, and the first corner nearer a concave edge than
+     * its mitre on every plane of a concave side the face lies on (null if none). The face lies
+     * on the plane of a side when all its corners stand equally high above it (a face squashed
+     * to a sliver may lie on both sides' planes, and must keep to its mitre on one).
+     */
+    record Zones(boolean[] inZone, double widest, String nearer) {
+    }
+
+    Zones zones(int f, List<ConcaveSide> concave, double thickness, int maxStack, double eps) {
+        int start = wrap.faceStart[f];
+        int end = wrap.faceStart[f + 1];
+        double size = Math.max(wrap.surface.sheetSize(f), wrap.stripW[wrap.faceStrip[f]]);
+        double top = (maxStack + 1) * thickness;
+        boolean[] inZone = new boolean[end - start];
+        double widest = 0;
+        // A face on a plane keeps to the mitre of every concave side of that plane (a room's floor
+        // of both its walls); a squashed face may lie on two planes, and must keep to one's.
+        List<ConcaveSide> planes = new ArrayList<>();
+        List<String> nearerOn = new ArrayList<>();
+        for (ConcaveSide side : concave) {
+            double[] m = side.normal();
+            double width = top * (side.mitre() + 1);
+            double[] along = minus(side.b(), side.a());
+            double length = Math.sqrt(times(along, along));
+            for (int d = 0; d < 3; d++) {
+                along[d] /= length;
+            }
+            double[] in = crossed(m, along); // in the plane, from the edge into the triangle
+            double low = Double.POSITIVE_INFINITY;
+            double high = Double.NEGATIVE_INFINITY;
+            boolean near = false;
+            for (int c = start; c < end; c++) {
+                double[] p = minus(new double[] {wrap.xyz[3 * wrap.cornerV[c]], wrap.xyz[3 * wrap.cornerV[c] + 1], wrap.xyz[3 * wrap.cornerV[c] + 2]}, side.a());
+                double height = times(p, m);
+                low = Math.min(low, height);
+                high = Math.max(high, height);
+                double s = times(p, along);
+                double inside = times(p, in);
+                near |= s >= -width && s <= length + width && inside <= width && inside >= -width;
+            }
+            if (!near || high - low > WrapTruths.RELATIVE * size + eps || low < -eps || high > top + eps) {
+                continue; // not on this side's plane (so not planar there), or not near its edge
+            }
+            String here = null;
+            for (int c = start; c < end; c++) {
+                int v = wrap.cornerV[c];
+                double[] p = minus(new double[] {wrap.xyz[3 * v], wrap.xyz[3 * v + 1], wrap.xyz[3 * v + 2]}, side.a());
+                double s = times(p, along);
+                double inside = times(p, in);
+                if (s < -width || s > length + width || inside > width || inside < -width) {
+                    continue;
+                }
+                inZone[c - start] = true;
+                widest = Math.max(widest, width);
+                double height = times(p, m);
+                // The mitre stands beside the edge: round its ends the paper across turns away.
+                if (here == null && s >= 0 && s <= length && inside < height * side.mitre() - eps - 1e-6 * thickness) {
+                    here = "vertex " + (v + 1) + " is " + inside + " in from a concave edge of the model, nearer than its mitre ("
+                            + height + " high: " + height * side.mitre() + " in), running into the layers across";
+                }
+            }
+            int plane = -1;
+            for (int i = 0; i < planes.size() && plane < 0; i++) {
+                double[] n = planes.get(i).normal();
+                if (times(n, m) > 1 - 1e-9 && Math.abs(times(n, minus(side.a(), planes.get(i).a()))) <= eps) {
+                    plane = i;
+                }
+            }
+            if (plane < 0) {
+                planes.add(side);
+                nearerOn.add(here);
+            } else if (nearerOn.get(plane) == null) {
+                nearerOn.set(plane, here);
+            }
+        }
+        String nearer = null;
+        for (String onPlane : nearerOn) {
+            if (onPlane == null) {
+                return new Zones(inZone, widest, null);
+            }
+            nearer = nearer == null ? onPlane : nearer;
+        }
+        return new Zones(inZone, widest, nearer);
+    }
+
+    /**
+     * Whether face f, not congruent to its sheet polygon, is so only by corners standing back from
+     * a concave edge: planar (its corners stand equally high above a concave side's plane, see
+     * {@link #zones}, which holds for a face squashed to a sliver too, whose own normal is
+     * rounding), its corners outside every creep zone congruent among themselves, and each pair
+     * with a corner in a zone off its sheet distance by no more than twice the widest zone.
+     */
+    boolean creptOnly(int f, Zones zones) {
+        if (zones.widest() == 0) {
+            return false;
+        }
+        int start = wrap.faceStart[f];
+        int end = wrap.faceStart[f + 1];
+        double size = Math.max(wrap.surface.sheetSize(f), wrap.stripW[wrap.faceStrip[f]]);
+        for (int a = start; a < end; a++) {
+            for (int b = a + 1; b < end; b++) {
+                double inSpace = WrapTruths.distance(wrap.xyz, 3 * wrap.cornerV[a], wrap.xyz, 3 * wrap.cornerV[b]);
+                double onSheet = Math.hypot(wrap.uv[2 * wrap.cornerT[a]] - wrap.uv[2 * wrap.cornerT[b]], wrap.uv[2 * wrap.cornerT[a] + 1] - wrap.uv[2 * wrap.cornerT[b] + 1]);
+                boolean zone = zones.inZone()[a - start] || zones.inZone()[b - start];
+                if (!(Math.abs(inSpace - onSheet) <= (zone ? 2 * zones.widest() + WrapTruths.RELATIVE * size : WrapTruths.RELATIVE * size))) {
+                    return false;
+                }
+            }
+        }
+        return true;
+    }
+
+    /**
+     * Face f's worst departure from its sheet polygon, relative to its size (at least the strip's width): of a 3D distance from
+     * the sheet distance between two corners, or of a corner from the face's plane. When why is
+     * given, it gets the worst one in words.
+     */
+    double isometryError(int f, StringBuilder why) {
+        int start = wrap.faceStart[f];
+        int end = wrap.faceStart[f + 1];
+        // A paper coordinate u on a strip of length L is a double good to about 1e-16 L: a sliver
+        // far along a long strip cannot be exact to 1e-9 of its own size, only of the strip's width.
+        double size = Math.max(wrap.surface.sheetSize(f), wrap.stripW[wrap.faceStrip[f]]);
+        double worst = 0;
+        for (int a = start; a < end; a++) {
+            for (int b = a + 1; b < end; b++) {
+                double inSpace = WrapTruths.distance(wrap.xyz, 3 * wrap.cornerV[a], wrap.xyz, 3 * wrap.cornerV[b]);
+                double onSheet = Math.hypot(wrap.uv[2 * wrap.cornerT[a]] - wrap.uv[2 * wrap.cornerT[b]], wrap.uv[2 * wrap.cornerT[a] + 1] - wrap.uv[2 * wrap.cornerT[b] + 1]);
+                double error = Math.abs(inSpace - onSheet) / size;
+                if (!(error <= worst)) {
+                    worst = error;
+                    if (why != null) {
+                        why.setLength(0);
+                        why.append("vertices ").append(wrap.cornerV[a] + 1).append(" and ").append(wrap.cornerV[b] + 1).append(" are ")
+                                .append(inSpace).append(" apart in space but ").append(onSheet).append(" on the sheet");
+                    }
+                }
+            }
+        }
+        double[] normal = wrap.newellNormal(f);
+        double[] centre = wrap.centroid(f);
+        for (int c = start; c < end; c++) {
+            int v = wrap.cornerV[c];
+            double off = Math.abs(normal[0] * (wrap.xyz[3 * v] - centre[0]) + normal[1] * (wrap.xyz[3 * v + 1] - centre[1])
+                    + normal[2] * (wrap.xyz[3 * v + 2] - centre[2]));
+            double error = off / size;
+            if (!(error <= worst)) {
+                worst = error;
+                if (why != null) {
+                    why.setLength(0);
+                    why.append("vertex ").append(v + 1).append(" is ").append(off).append(" off the face's plane");
+                }
+            }
+        }
+        return worst;
+    }
+
+    static double[] minus(double[] a, double[] b) {
+        return new double[] {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+    }
+
+    static double times(double[] a, double[] b) {
+        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    }
+
+    static double[] crossed(double[] a, double[] b) {
+        return new double[] {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    }
+}
