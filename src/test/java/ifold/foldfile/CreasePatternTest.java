@@ -109,4 +109,63 @@ public class CreasePatternTest {
         }
         assertTrue(perFold[1] < 1.5 * perFold[0], "polygon tests a fold: " + perFold[0] + " for 500 creases, " + perFold[1] + " for 2,000");
     }
+
+    /**
+     * A file as another tool writes it (the FOLD spec's keys beside the crease pattern: its
+     * spec, creator, title, faces and vertex neighbours, fold angles, a flat fold F) is read for
+     * its crease pattern alone, the other keys passed over: a 10 × 4 sheet with a valley at
+     * x = 4 and a mountain at x = 7, which fold into three layers.
+     */
+    @Test
+    void aFileOfAnotherToolIsReadForItsCreasePattern() throws Exception {
+        Path file = Files.writeString(dir.resolve("foreign.fold"), """
+                {"file_spec": 1.1, "file_creator": "another tool", "file_classes": ["singleModel"],
+                 "frame_title": "two pleats", "frame_classes": ["creasePattern"], "frame_attributes": ["2D"],
+                 "vertices_coords": [[0, 0], [4, 0], [7, 0], [10, 0], [10, 4], [7, 4], [4, 4], [0, 4], [2, 0], [2, 4]],
+                 "vertices_vertices": [[1, 7], [0, 2, 6], [1, 3, 5], [2, 4], [3, 5], [4, 2, 6], [5, 1, 7], [6, 0], [], []],
+                 "edges_vertices": [[0, 8], [8, 1], [1, 2], [2, 3], [3, 4], [4, 5], [5, 6], [6, 9], [9, 7], [7, 0], [1, 6], [2, 5], [8, 9]],
+                 "edges_assignment": ["B", "B", "B", "B", "B", "B", "B", "B", "B", "B", "V", "M", "F"],
+                 "edges_foldAngle": [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 180, -180, 0],
+                 "faces_vertices": [[0, 1, 6, 7], [1, 2, 5, 6], [2, 3, 4, 5]]}
+                """);
+        CreasePattern pattern = CreasePattern.read(file);
+        assertEquals(10, pattern.length(), 1e-12);
+        assertEquals(4, pattern.width(), 1e-12);
+        assertEquals(2, pattern.creases().size(), "the valley and the mountain; the flat fold creases nothing");
+        assertEquals(java.util.List.of(4.0, 7.0), foldedAt(pattern));
+        CreasePattern.Folding folding = pattern.fold(new long[2], ScriptFolding.DEFAULT_MAX_FACES);
+        assertEquals(3, folding.result().sheet().faceCount());
+        assertEquals(3, folding.result().sheet().stackLevels(), "a pleat: three layers");
+    }
+
+    /** What is not a crease pattern iFold folds is refused, naming the key or the edge. */
+    @Test
+    void malformedFilesAreRefusedNamingTheKeyOrTheEdge() throws Exception {
+        String square = "\"vertices_coords\": [[0, 0], [4, 0], [4, 4], [0, 4], [2, 0], [2, 4]], "
+                + "\"edges_vertices\": [[0, 4], [4, 1], [1, 2], [2, 5], [5, 3], [3, 0], [4, 5]], ";
+        String[][] cases = {
+            {"{" + square + "\"edges_assignment\": [\"B\", \"B\", \"B\", \"B\", \"B\", \"B\"]}",
+                "edges_assignment must give each edge B, M, V or F"},
+            {"{\"edges_vertices\": [[0, 1]], \"edges_assignment\": [\"B\"]}", "no vertices_coords: a crease pattern needs"},
+            {"{" + square.replace("[0, 4], [2, 0]", "[0, 4], \"x\"") + "\"edges_assignment\": [\"B\", \"B\", \"B\", \"B\", \"B\", \"B\", \"V\"]}",
+                "vertices_coords must be a list of lists of numbers"},
+            {"{" + square.replace("[4, 5]]", "[4, 4]]") + "\"edges_assignment\": [\"B\", \"B\", \"B\", \"B\", \"B\", \"B\", \"V\"]}",
+                "edge 6: a crease of no length"},
+            {"{" + square + "\"edges_assignment\": [\"B\", \"B\", \"B\", \"B\", \"B\", \"B\", \"U\"]}", "edge 6 is U"},
+            {"{" + square + "\"edges_assignment\": [\"B\", \"B\", \"B\", \"B\", \"B\", \"B\", \"B\"]}",
+                "edge 6 is a border edge inside the sheet"},
+            {"{" + square + "\"edges_assignment\": [\"B\", \"B\", \"B\", \"B\", \"B\", \"B\", \"V\"],"
+                + " \"edges_foldAngle\": [0, 0, 0, 0, 0, 0, 200]}", "edge 6: its fold angle must be more than 0 and at most 180 degrees"},
+        };
+        for (String[] c : cases) {
+            Path file = Files.writeString(dir.resolve("bad.fold"), c[0]);
+            CreasePattern.Refused refused = org.junit.jupiter.api.Assertions.assertThrows(CreasePattern.Refused.class,
+                    () -> CreasePattern.read(file), c[1]);
+            assertTrue(refused.getMessage().contains(c[1]), "expected '" + c[1] + "', got: " + refused.getMessage());
+        }
+        // The same square with its crease valid folds: the cases above fail for what they say.
+        Path good = Files.writeString(dir.resolve("good.fold"),
+                "{" + square + "\"edges_assignment\": [\"B\", \"B\", \"B\", \"B\", \"B\", \"B\", \"V\"]}");
+        assertEquals(1, CreasePattern.read(good).creases().size());
+    }
 }
