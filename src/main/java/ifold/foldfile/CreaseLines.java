@@ -1,5 +1,6 @@
 package ifold.foldfile;
 
+import ifold.geom.Tolerance;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Comparator;
@@ -14,7 +15,7 @@ import java.util.Locale;
  */
 final class CreaseLines {
     /** Directions closer than this (radians) are compared as one line's: it only narrows the search, {@link #onLine} decides. */
-    private static final double ANGLE_WINDOW = 1e-7;
+    private static final double ANGLE_WINDOW = Tolerance.FILE_PRECISION;
 
     private CreaseLines() {
     }

@@ -321,7 +321,7 @@ public record CreasePattern(double length, double width, FoldScript script, List
         private final int[] levels;
         /** For each fold, the edges it creased: face, a, b (the edge a → b of the face, with a face across). */
         private final List<List<int[]>> byFold = new ArrayList<>();
-        private final double tolerance = 1e-7 * Math.hypot(length, width);
+        private final double tolerance = Tolerance.FILE_PRECISION * Math.hypot(length, width);
 
         Creased(ScriptFolding.Result result, int folds) {
             sheet = result.sheet();

@@ -7,6 +7,7 @@ import static ifold.geom.Vectors.unit;
 import com.fasterxml.jackson.core.JsonFactory;
 import com.fasterxml.jackson.core.JsonGenerator;
 import com.fasterxml.jackson.core.StreamWriteFeature;
+import ifold.geom.Tolerance;
 import ifold.io.AtomicFile;
 import ifold.script.FoldScript;
 import ifold.script.FoldScriptException;
@@ -197,7 +198,7 @@ public final class FoldFile {
                             continue;
                         }
                         double angle = sheet.crease(a, b) == null ? 0 : foldAngle(folded, levels.get(k), f, g, a, b);
-                        if (Math.abs(angle) < 1e-9) {
+                        if (Math.abs(angle) < Tolerance.RELATIVE_EQUALITY) {
                             assignments.add("F");
                             angles.add(0.0);
                             flat++;
@@ -448,10 +449,10 @@ public final class FoldFile {
         // of one face of the model) would come out creased.
         double[] cross = {nf[1] * ng[2] - nf[2] * ng[1], nf[2] * ng[0] - nf[0] * ng[2], nf[0] * ng[1] - nf[1] * ng[0]};
         double degrees = Math.toDegrees(Math.atan2(Math.sqrt(dot(cross, cross)), dot(nf, ng)));
-        if (degrees < 1e-7) {
+        if (degrees < Tolerance.FILE_PRECISION) {
             return 0;
         }
-        if (cos < -1 + 1e-12 && sheet.host(f) == sheet.host(g)) {
+        if (cos < -1 + Tolerance.COPLANAR_COSINE && sheet.host(f) == sheet.host(g)) {
             // Flat: a valley lays g on f's top side.
             double[] hostNormal = folded.frames()[sheet.host(f)].normal();
             double side = (levels[g] - levels[f]) * dot(hostNormal, nf);

@@ -37,6 +37,13 @@ public final class Tolerance {
     public static final double COPLANAR_COSINE = 1e-12;
 
     /**
+     * What a FOLD file's numbers are good to, relative: other tools write them in single
+     * precision or to seven digits, so points and directions of a crease pattern that agree to
+     * this are the same, and a fold angle below this many degrees is no fold.
+     */
+    public static final double FILE_PRECISION = 1e-7;
+
+    /**
      * The smallest and largest sizes iFold computes with, across a model, a triangle or a sheet:
      * a triangle's frame squares a cross product of edges, the fourth power of their length,
      * which underflows to zero below about 1e-77 and overflows above about 1e77 (every triangle

@@ -1,5 +1,6 @@
 package ifold.mesh;
 
+import ifold.geom.Tolerance;
 import ifold.geom.Triangles;
 import java.util.Arrays;
 
@@ -100,7 +101,7 @@ final class MeshOrientation {
         // rounding, whose sign the order of summing decides) has no inside to turn out.
         double[][] volumes = signedVolumes(component, flip, inverted, closedComponent, origin, components);
         for (int k = 0; k < components; k++) {
-            if (closedComponent[k] && volumes[0][k] < -1e-9 * Math.pow(volumes[1][k], 1.5)) {
+            if (closedComponent[k] && volumes[0][k] < -Tolerance.RELATIVE_EQUALITY * Math.pow(volumes[1][k], 1.5)) {
                 inverted[k] = !inverted[k];
                 builder.repairs.merge(Defect.INWARD_COMPONENT, 1, Integer::sum);
             }

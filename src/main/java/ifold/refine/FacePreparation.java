@@ -262,7 +262,7 @@ public final class FacePreparation {
                 }
                 int h = HalfedgeMesh.halfedgeOfEdge(e, 0);
                 double length = Triangles.distance(xyz, mesh.fromVertex(h), mesh.toVertex(h));
-                double n0 = Math.ceil(length / piece[e] - 1e-9);
+                double n0 = Math.ceil(length / piece[e] - Tolerance.RELATIVE_EQUALITY);
                 pieces += (long) Math.min(n0, budget + 1);
                 if (pieces > budget) {
                     throw new Unprepared(String.format(Locale.ROOT, "a face is too thin to prepare: its edges would be cut "
@@ -403,7 +403,7 @@ public final class FacePreparation {
             }
             double areaBefore = area(mesh);
             double areaAfter = area(prepared);
-            if (Math.abs(areaAfter - areaBefore) > 1e-9 * areaBefore) {
+            if (Math.abs(areaAfter - areaBefore) > Tolerance.RELATIVE_EQUALITY * areaBefore) {
                 throw new Unprepared("the prepared surface's area " + areaAfter + " is not the model's " + areaBefore);
             }
             return prepared;

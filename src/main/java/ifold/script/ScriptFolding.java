@@ -549,7 +549,7 @@ public final class ScriptFolding {
     private int coplanar(HostFrame frame, double layers) {
         for (int h = 0; h < frames.size(); h++) {
             HostFrame other = frames.get(h);
-            if (Math.abs(Math.abs(dot(frame.normal(), other.normal())) - 1) <= 1e-9
+            if (Math.abs(Math.abs(dot(frame.normal(), other.normal())) - 1) <= Tolerance.RELATIVE_EQUALITY
                     && Math.abs(other.height(frame.origin())) <= layers + planeTolerance) {
                 return h;
             }

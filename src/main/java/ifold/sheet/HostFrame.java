@@ -3,6 +3,7 @@ package ifold.sheet;
 import static ifold.geom.Vectors.cross;
 import static ifold.geom.Vectors.sub;
 import static ifold.geom.Vectors.unit;
+import ifold.geom.Tolerance;
 
 /**
  * The plane of a triangle that paper rests on, with a 2D frame in it: an origin, two unit axes
@@ -121,7 +122,7 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
         }
         double[] edge = edge(k);
         double s = ((x - edge[0]) * edge[2] + (y - edge[1]) * edge[3]) / edge[4];
-        double near = 1e-9 * edge[4];
+        double near = Tolerance.ON_PLANE * edge[4];
         double most = 0;
         for (int i = 0; i + 2 < mitre[k].length; i += 3) {
             boolean fromStart = mitre[k][i] <= near;
@@ -173,14 +174,14 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
         double bx = -b[3] / b[4];
         double by = b[2] / b[4];
         double det = ax * by - ay * bx;
-        if (Math.abs(det) < 1e-9) {
+        if (Math.abs(det) < Tolerance.RELATIVE_EQUALITY) {
             return; // parallel: no corner
         }
         double ck = keepK + ax * a[0] + ay * a[1];
         double cj = keepJ + bx * b[0] + by * b[1];
         double[] q = {(ck * by - cj * ay) / det, (ax * cj - bx * ck) / det};
         for (int i = 0; i < corners.length / 2; i++) {
-            if (edge(i)[4] > 0 && inside(i, q) < -1e-9 * (Math.abs(q[0]) + Math.abs(q[1]) + 1)) {
+            if (edge(i)[4] > 0 && inside(i, q) < -Tolerance.ON_PLANE * (Math.abs(q[0]) + Math.abs(q[1]) + 1)) {
                 return; // the host is too narrow there for both stacks
             }
         }

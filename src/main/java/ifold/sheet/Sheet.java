@@ -1,5 +1,6 @@
 package ifold.sheet;
 
+import ifold.geom.Tolerance;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -242,7 +243,7 @@ public final class Sheet {
         double pv = inverse.y(px, py);
         double du = inverse.dx(dx, dy);
         double dv = inverse.dy(dx, dy);
-        if (!(Math.abs(dv) > 1e-12 * Math.hypot(du, dv))) {
+        if (!(Math.abs(dv) > Tolerance.DEGENERATE_AREA * Math.hypot(du, dv))) {
             throw new FoldException("the crease runs along the strip: a fold of the tail must cross it");
         }
         return new double[] {pu + (0 - pv) / dv * du, pu + (width - pv) / dv * du};

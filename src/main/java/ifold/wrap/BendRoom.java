@@ -1,5 +1,6 @@
 package ifold.wrap;
 
+import ifold.geom.Tolerance;
 import ifold.mesh.IndexedPolygons;
 import ifold.sheet.HostFrame;
 import java.util.ArrayList;
@@ -155,7 +156,7 @@ final class BendRoom {
         double cos = Math.max(-1, Math.min(1, n[0] * m[0] + n[1] * m[1] + n[2] * m[2]));
         // A wedge of air all but closed (the faces back to back) leaves paper no room: its
         // layers go as far in as the host lets them (HostFrame.keepFrom).
-        return Math.min(1e6, Math.sqrt((1 - cos) / Math.max(1 + cos, 1e-12)));
+        return Math.min(1e6, Math.sqrt((1 - cos) / Math.max(1 + cos, Tolerance.COPLANAR_COSINE)));
     }
 
     private static double[] position(IndexedPolygons mesh, int v) {

@@ -1,5 +1,6 @@
 package ifold.wrap;
 
+import ifold.geom.Tolerance;
 import ifold.sheet.HostFrame;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -107,7 +108,7 @@ final class ConcaveWalls {
         }
         double level = height / thickness - 0.5;
         for (Wall wall : walls) {
-            if (level < wall.low() - 1e-9 || level > wall.high() + 1e-9) {
+            if (level < wall.low() - Tolerance.RELATIVE_EQUALITY || level > wall.high() + Tolerance.RELATIVE_EQUALITY) {
                 continue;
             }
             double[] edge = wall.line();

@@ -262,7 +262,7 @@ public final class CoveredPaper {
             int j = (i + 1) % k;
             span = Math.max(span, Math.hypot(xy[2 * j] - xy[2 * i], xy[2 * j + 1] - xy[2 * i + 1]));
         }
-        return twiceArea(xy) > 1e-9 * span * span ? xy : null;
+        return twiceArea(xy) > NO_AREA * span * span ? xy : null;
     }
 
     private static double turn(double[] p, int a, int b, int c) {

@@ -362,7 +362,7 @@ final class HostPieces {
         private boolean convex(int[] l, double[] n) {
             int count = l.length;
             for (int k = 0; k < count; k++) {
-                if (turn(l[(k + count - 1) % count], l[k], l[(k + 1) % count], n) < -1e-12) {
+                if (turn(l[(k + count - 1) % count], l[k], l[(k + 1) % count], n) < -Tolerance.DEGENERATE_AREA) {
                     return false;
                 }
             }
@@ -408,7 +408,7 @@ final class HostPieces {
             List<Integer> kept = new ArrayList<>();
             int count = l.length;
             for (int k = 0; k < count; k++) {
-                if (turn(l[(k + count - 1) % count], l[k], l[(k + 1) % count], n) > 1e-12) {
+                if (turn(l[(k + count - 1) % count], l[k], l[(k + 1) % count], n) > Tolerance.DEGENERATE_AREA) {
                     kept.add(l[k]);
                 }
             }

@@ -4,6 +4,7 @@ import static ifold.wrap.Wrap.position;
 import static ifold.wrap.Wrap.cornersText;
 import static ifold.wrap.Wrap.sq;
 
+import ifold.geom.Tolerance;
 import ifold.mesh.IndexedPolygons;
 import ifold.sheet.HostFrame;
 import ifold.wrap.Wrap.Ends;
@@ -207,7 +208,7 @@ final class PathPlan {
     }
 
     static int passes(double h, double width) {
-        return Math.max(1, (int) Math.ceil(h / width - 1e-9));
+        return Math.max(1, (int) Math.ceil(h / width - Tolerance.RELATIVE_EQUALITY));
     }
 
     /**

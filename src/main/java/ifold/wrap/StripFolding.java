@@ -10,6 +10,7 @@ import static ifold.wrap.Wrap.cornersText;
 import static ifold.wrap.Wrap.position;
 
 import ifold.geom.SlantedEdges;
+import ifold.geom.Tolerance;
 import ifold.mesh.IndexedPolygons;
 import ifold.sheet.FoldException;
 import ifold.sheet.HostFrame;
@@ -223,6 +224,13 @@ final class StripFolding {
         return d > 0 ? edges.rightmost(y, y + w) + margin : edges.leftmost(y, y + w) - margin;
     }
 
+    /**
+     * How far the tail coming in may stray from the first pass it must lie along, relative: a
+     * check that the planner's frames agree, far above the rounding of the poses composed fold
+     * after fold, not a tolerance of the geometry.
+     */
+    private static final double ENTRY_SLACK = 1e-6;
+
     /** The tail came in over the edge before: it must lie along the first pass, running in direction d. */
     private void checkEntry(int d, double bottom) {
         Isometry2 pose = intoHost.inverse().after(sheet.tailPose());
@@ -230,7 +238,7 @@ final class StripFolding {
         double across = pose.dy(1, 0);
         double edgeY = pose.y(sheet.tailStart(false), 0);
         double expected = d > 0 ? bottom : bottom + w;
-        if (Math.abs(along - d) > 1e-6 || Math.abs(across) > 1e-6 || Math.abs(edgeY - expected) > 1e-6 * Math.max(1, w)) {
+        if (Math.abs(along - d) > ENTRY_SLACK || Math.abs(across) > ENTRY_SLACK || Math.abs(edgeY - expected) > ENTRY_SLACK * Math.max(1, w)) {
             throw new IllegalStateException(String.format(Locale.ROOT,
                     "the strip came into triangle %d off its first pass (direction %.3g %.3g, edge at %.6g, expected %.6g)",
                     pathIndex + 1, along, across, edgeY, expected));
@@ -241,7 +249,7 @@ final class StripFolding {
     private void turn(SlantedEdges edges, int d, double y, double next, int host) throws FoldException, WrapException {
         double x1 = d > 0 ? edges.rightmost(next, y + w) + margin : edges.leftmost(next, y + w) - margin;
         double shift = y - next;
-        if (Math.abs(shift - w) <= 1e-9 * w) {
+        if (Math.abs(shift - w) <= Tolerance.RELATIVE_EQUALITY * w) {
             // A valley fold lays the strip back across itself along the edge, a mountain fold
             // one width on lays it flat beside the pass it left, running back.
             detail = passNote + ": turn, 45° valley fold";
