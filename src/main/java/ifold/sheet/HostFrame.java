@@ -3,6 +3,7 @@ package ifold.sheet;
 import static ifold.geom.Vectors.cross;
 import static ifold.geom.Vectors.sub;
 import static ifold.geom.Vectors.unit;
+
 import ifold.geom.Tolerance;
 
 /**
