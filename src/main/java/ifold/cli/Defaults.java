@@ -1,6 +1,6 @@
 package ifold.cli;
 
-import ifold.wrap.ParameterException;
+import ifold.geom.ParameterException;
 
 /** Number options whose default the core chooses: left out, the core gets NaN, which stands for "the default". */
 final class Defaults {

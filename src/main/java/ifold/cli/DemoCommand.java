@@ -14,7 +14,7 @@ import ifold.scene.Scene;
 import ifold.scene.WrapPlayback;
 import ifold.sheet.FoldException;
 import ifold.sheet.Sheet;
-import ifold.wrap.ParameterException;
+import ifold.geom.ParameterException;
 import ifold.wrap.TurnGadget;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapAnalysis;

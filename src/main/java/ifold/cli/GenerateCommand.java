@@ -3,7 +3,7 @@ package ifold.cli;
 import ifold.job.BuiltInModels;
 import ifold.job.GenerateJob;
 import ifold.job.JobWatcher;
-import ifold.wrap.ParameterException;
+import ifold.geom.ParameterException;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;

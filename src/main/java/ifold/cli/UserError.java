@@ -1,6 +1,6 @@
 package ifold.cli;
 
-import ifold.wrap.ParameterException;
+import ifold.geom.ParameterException;
 
 /**
  * A failure the user can act on: printed as one line, {@code ifold: MESSAGE}. An error in what

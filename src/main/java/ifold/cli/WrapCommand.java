@@ -13,7 +13,7 @@ import ifold.mesh.io.MeshWriters;
 import ifold.scene.Animation;
 import ifold.scene.Scene;
 import ifold.wrap.LayerFloor;
-import ifold.wrap.ParameterException;
+import ifold.geom.ParameterException;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapAnalysis;
 import ifold.wrap.WrapExport;

@@ -2,7 +2,7 @@ package ifold.job;
 
 import ifold.mesh.PolygonSoup;
 import ifold.mesh.Solids;
-import ifold.wrap.ParameterException;
+import ifold.geom.ParameterException;
 import java.util.Locale;
 
 /**

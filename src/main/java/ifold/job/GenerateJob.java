@@ -32,7 +32,7 @@ public final class GenerateJob {
     /**
      * Makes and writes the model.
      *
-     * @throws ifold.wrap.ParameterException where a count does not fit the shape
+     * @throws ifold.geom.ParameterException where a count does not fit the shape
      * @throws IOException where the file cannot be written (nothing is left of it)
      * @throws java.util.concurrent.CancellationException once the watcher says stop
      */

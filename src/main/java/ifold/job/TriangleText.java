@@ -2,7 +2,7 @@ package ifold.job;
 
 import ifold.geom.Tolerance;
 import ifold.geom.Triangle;
-import ifold.wrap.ParameterException;
+import ifold.geom.ParameterException;
 import java.util.Locale;
 import org.joml.Vector3d;
 

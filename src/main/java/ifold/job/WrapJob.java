@@ -82,7 +82,7 @@ public final class WrapJob {
      * @throws ModelFiles.LoadFailure where the file cannot be read or built, or holds no faces after its repairs
      * @throws Wrap.WrapException where the wrap refuses (a {@link Wrap.FaceLimitException} or
      *     {@link Wrap.TooWideException} names the option to change)
-     * @throws ifold.wrap.ParameterException where a value given does not fit this model
+     * @throws ifold.geom.ParameterException where a value given does not fit this model
      * @throws Refused where the model's surface runs through itself, or the paper came out stretched
      * @throws java.util.concurrent.CancellationException once the watcher says stop
      */

@@ -46,7 +46,7 @@ public final class ZigZagJob {
      * Wraps the triangle.
      *
      * @throws Wrap.WrapException where the triangle cannot be wrapped at these options
-     * @throws ifold.wrap.ParameterException where a value given does not fit the triangle (a
+     * @throws ifold.geom.ParameterException where a value given does not fit the triangle (a
      *     thickness too thin for its size)
      */
     public static Outcome run(Request request, Wrap.Watcher watcher) throws Wrap.WrapException {

@@ -1,5 +1,6 @@
 package ifold.wrap;
 
+import ifold.geom.ParameterException;
 import ifold.geom.Tolerance;
 import ifold.mesh.PolygonSoup;
 import ifold.sheet.FoldException;

@@ -11,6 +11,7 @@ import static ifold.wrap.PathPlan.plans;
 import static ifold.wrap.PathPlan.third;
 import static ifold.wrap.PathPlan.tooWide;
 
+import ifold.geom.ParameterException;
 import ifold.geom.Tolerance;
 import ifold.geom.Triangle;
 import ifold.mesh.IndexedPolygons;

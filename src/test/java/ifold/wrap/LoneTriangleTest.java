@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import ifold.geom.ParameterException;
 import ifold.geom.Triangle;
 import ifold.mesh.PolygonSoup;
 import ifold.sheet.HostFrame;

@@ -2,7 +2,7 @@ package ifold.ui.model;
 
 import ifold.job.BuiltInModels;
 import ifold.job.GenerateJob;
-import ifold.wrap.ParameterException;
+import ifold.geom.ParameterException;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;

@@ -24,7 +24,7 @@ import ifold.scene.WrapPlayback;
 import ifold.script.FoldScript;
 import ifold.script.ScriptFolding;
 import ifold.sheet.FoldException;
-import ifold.wrap.ParameterException;
+import ifold.geom.ParameterException;
 import ifold.wrap.TurnGadget;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapExport;
