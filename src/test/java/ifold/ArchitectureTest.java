@@ -51,6 +51,7 @@ class ArchitectureTest {
             "fastdoubleparser", List.of("ch.randelshofer.fastdoubleparser"),
             "Tinfour", List.of("org.tinfour"),
             "FlatLaf", List.of("com.formdev.flatlaf"),
+            "PDFBox", List.of("org.apache.pdfbox"),
             "AWT", List.of("java.awt", "javax.swing", "javax.imageio", "sun.awt"));
 
     private static JavaClasses main;

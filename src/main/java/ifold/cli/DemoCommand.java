@@ -122,7 +122,9 @@ final class DemoCommand implements Runnable {
             int tucks = result.count(Wrap.Kind.TUCK);
             int passes = Reports.passes(result);
             Map<String, Object> figures = zigzag.figures();
-            outputs.exportFold(List.of(new FoldFile.Folded(sheet, result.frames())), zigzag.source(), figures);
+            List<FoldFile.Folded> folded = List.of(new FoldFile.Folded(sheet, result.frames()));
+            outputs.exportFold(folded, zigzag.source(), figures);
+            outputs.exportPrint(folded, "a triangle zig-zagged", "the zig-zag of one triangle (Demaine, Demaine and Mitchell)");
             outputs.write(result, geometries, zigzag.source(), figures);
             out.printf(Locale.ROOT, "zigzag: strip %.4g x %.4g (L/w %.1f), %d passes%s, %d turn folds, %d tucks, %d layers at most (a stack of %d), "
                     + "paper efficiency %.3f, coverage %.3f, paper outside %.2g, isometry error %.1e%n",
@@ -203,7 +205,9 @@ final class DemoCommand implements Runnable {
             List<PaperInSpace> geometries = turn.geometries();
             WrapAnalysis analysis = turn.analysis();
             Map<String, Object> figures = turn.figures();
-            outputs.exportFold(List.of(new FoldFile.Folded(gadget.sheet(), result.frames())), turn.source(), figures);
+            List<FoldFile.Folded> folded = List.of(new FoldFile.Folded(gadget.sheet(), result.frames()));
+            outputs.exportFold(folded, turn.source(), figures);
+            outputs.exportPrint(folded, String.format(Locale.ROOT, "a turn of %.4g degrees", angle), "the turn gadget (Demaine, Demaine and Mitchell)");
             outputs.write(result, geometries, turn.source(), figures);
             out.printf(Locale.ROOT, "turn: %.6g degrees asked, %.6g measured, top side %s, %d layers at most, strip %.4g x %.4g%n",
                     angle, gadget.measuredAngle(), gadget.endFacesUp() ? "up" : "down", analysis.maxLayers(), gadget.length(), width);

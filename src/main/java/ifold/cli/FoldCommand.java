@@ -82,8 +82,10 @@ final class FoldCommand implements Callable<Integer> {
         figures.put("timing", timing(nanosPerFold, result.steps()));
         // The FOLD file's folded state folds the script again on paper of no thickness: only where a
         // FOLD file is written or the layer order checked (from the same FOLD text, made in memory).
-        outputs.exportFold(outputs.checksLayerOrder() ? List.of(FoldFile.Folded.ofScript(parsed, result, maxFaces)) : List.of(),
-                "ifold fold " + script, figures);
+        List<FoldFile.Folded> sheets = outputs.checksLayerOrder() || outputs.prints()
+                ? List.of(FoldFile.Folded.ofScript(parsed, result, maxFaces)) : List.of();
+        outputs.exportFold(sheets, "ifold fold " + script, figures);
+        outputs.exportPrint(sheets, script.getFileName().toString(), "a fold script's sheet");
         outputs.write(List.of(folded), result.sheet().thickness(), "iFold fold script " + script + ": " + result.steps().size() + " folds, thickness "
                 + result.sheet().thickness(), figures);
         int folds = result.steps().size();

@@ -3,6 +3,11 @@ package ifold.cli;
 import ifold.check.LayerOrder;
 import ifold.check.PaperCollisions;
 import ifold.foldfile.FoldFile;
+import ifold.print.CreasePatternPages;
+import ifold.print.Lengths;
+import ifold.print.Page;
+import ifold.print.PdfCanvas;
+import ifold.print.SvgCanvas;
 import ifold.io.AtomicFile;
 import ifold.job.Collisions;
 import ifold.job.Json;
@@ -50,6 +55,25 @@ final class PaperOutputs {
     @Option(names = "--report", paramLabel = "FILE", description = "write the figures of the result as JSON, the layer order and collisions of the paper among them (checked as for --export-obj)")
     Path report;
 
+    @Option(names = "--export-pdf", paramLabel = "FILE.pdf", description = "print the crease pattern at real size as PDF: the"
+            + " strip cut into numbered pieces a page wide, glue tabs and marks where they join, valleys dashed, mountains"
+            + " dash-dot-dot, each crease numbered in folding order, a 5 cm scale bar (--paper-width, --page)")
+    Path exportPdf;
+
+    @Option(names = "--export-svg", paramLabel = "FILE.svg", description = "the same as SVG in millimetres, a file a page"
+            + " (FILE-01.svg, ...) or one long strip with --page none; the lines' kinds are CSS classes (cut, valley,"
+            + " mountain, flat, tab) for cutting machines")
+    Path exportSvg;
+
+    @Option(names = "--paper-width", paramLabel = "LENGTH", defaultValue = "2cm",
+            description = "how wide the strip (or the sheet) is printed: 2cm, 20mm, 0.8in (default ${DEFAULT-VALUE})")
+    String paperWidth;
+
+    @Option(names = "--page", paramLabel = "PAGE", defaultValue = "a4",
+            description = "the page printed on: a4, a4-landscape, letter, letter-landscape, or none for one long page"
+            + " (default ${DEFAULT-VALUE})")
+    String page;
+
     @Option(names = "--no-view", description = "do not open the viewer, nor render frames unless --frames asks")
     boolean noView;
 
@@ -86,6 +110,18 @@ final class PaperOutputs {
         }
         if (exportFold != null) {
             OutputFiles.checkWritableFile(exportFold, "--export-fold", ".fold");
+        }
+        if (exportPdf != null) {
+            OutputFiles.checkWritableFile(exportPdf, "--export-pdf", ".pdf");
+        }
+        if (exportSvg != null) {
+            OutputFiles.checkWritableFile(exportSvg, "--export-svg", ".svg");
+        }
+        try {
+            printOptions = new CreasePatternPages.Options(Lengths.millimetres(paperWidth), Page.of(page));
+        } catch (IllegalArgumentException e) {
+            throw UserError.usage("option --" + (e.getMessage().startsWith("expected a4") ? "page" : "paper-width") + ": "
+                    + e.getMessage());
         }
         if (movieWithoutDisplay && !frameOptions.renders() && !noView && !hasDisplay()) {
             frameOptions.movie = movieWithoutDisplay(name, err);
@@ -126,6 +162,64 @@ final class PaperOutputs {
             throw new UserError("option --export-fold: cannot read back " + exportFold + ": " + e.getMessage());
         }
         layerOrderSeconds = (System.nanoTime() - started) * 1e-9;
+    }
+
+    /** The strip's width on paper and the page, checked by {@link #check}. */
+    private CreasePatternPages.Options printOptions;
+
+    /** Whether the crease pattern is printed (PDF or SVG). */
+    boolean prints() {
+        return exportPdf != null || exportSvg != null;
+    }
+
+    /**
+     * Prints the sheets' crease pattern as asked (PDF, SVG), {@code title} naming what was folded
+     * and {@code method} how.
+     */
+    void exportPrint(List<FoldFile.Folded> sheets, String title, String method) {
+        if (!prints()) {
+            return;
+        }
+        CreasePatternPages pages;
+        try {
+            pages = CreasePatternPages.of(title, method, FoldFile.creases(sheets), printOptions);
+        } catch (IllegalArgumentException e) {
+            discardWritten();
+            throw UserError.usage("option --paper-width: " + e.getMessage());
+        }
+        try {
+            if (exportPdf != null) {
+                try (PdfCanvas pdf = new PdfCanvas()) {
+                    pages.draw(pdf);
+                    pdf.save(exportPdf);
+                }
+                written.add(exportPdf);
+                wroteLines.add(String.format(java.util.Locale.ROOT, "wrote %s: %s", exportPdf, printed(pages)));
+            }
+            if (exportSvg != null) {
+                int count = pages.pageCount();
+                String name = exportSvg.getFileName().toString();
+                String stem = name.substring(0, name.length() - 4);
+                String digits = "%0" + Integer.toString(count).length() + "d";
+                SvgCanvas svg = new SvgCanvas(p -> count == 1 ? exportSvg
+                        : exportSvg.resolveSibling(stem + "-" + String.format(java.util.Locale.ROOT, digits, p + 1) + ".svg"));
+                try {
+                    pages.draw(svg);
+                } finally {
+                    written.addAll(svg.written());
+                }
+                wroteLines.add(String.format(java.util.Locale.ROOT, "wrote %s: %s", count == 1 ? exportSvg
+                        : svg.written().get(0) + " to " + svg.written().get(count - 1).getFileName(), printed(pages)));
+            }
+        } catch (IOException e) {
+            discardWritten();
+            throw new UserError("cannot print the crease pattern: " + e.getMessage());
+        }
+    }
+
+    private static String printed(CreasePatternPages pages) {
+        return String.format(java.util.Locale.ROOT, "%d page%s, %d piece%s", pages.pageCount(), pages.pageCount() == 1 ? "" : "s",
+                pages.pieceCount(), pages.pieceCount() == 1 ? "" : "s");
     }
 
     /** Whether the layer order is checked: where the paper is exported or reported. */

@@ -149,6 +149,8 @@ final class WrapCommand implements Callable<Integer> {
             if (outputs.exportFold != null) {
                 written.add(outputs.exportFold);
             }
+            outputs.exportPrint(sheets, model.getFileName().toString(), "the zig-zag wrap (Demaine, Demaine and Mitchell), "
+                    + result.strips().size() + (result.strips().size() == 1 ? " strip" : " strips"));
             long exportedAt = System.nanoTime();
             outputs.checkCollisions(geometries, result.thickness(), mesh, figures);
             long writtenAt = System.nanoTime();

@@ -138,6 +138,44 @@ public final class FoldFile {
         return bytes.toString(java.nio.charset.StandardCharsets.UTF_8);
     }
 
+    /**
+     * One sheet's crease pattern as its FOLD file has it, for drawing: the paper rectangle
+     * [0, length] × [0, width], its vertices in paper coordinates (u, v pairs), and each edge's
+     * two vertices, its assignment (B, M, V or F, as {@code edges_assignment}) and its fold step
+     * (from 1, as {@code edges_ifold:foldStep}; 0 for the border and flat edges).
+     */
+    public record SheetCreases(double length, double width, double[] uv, int[][] edges, char[] assignments, int[] steps) {
+    }
+
+    /** The crease patterns of {@code sheets}, one a sheet, their fold steps counted over all of them as the FOLD file counts them. */
+    public static List<SheetCreases> creases(List<Folded> sheets) {
+        Pattern pattern = new Pattern(sheets);
+        List<SheetCreases> all = new ArrayList<>();
+        for (int k = 0; k < sheets.size(); k++) {
+            Sheet sheet = sheets.get(k).sheet();
+            double[] uv = new double[2 * sheet.vertexCount()];
+            for (int v = 0; v < sheet.vertexCount(); v++) {
+                uv[2 * v] = sheet.u(v);
+                uv[2 * v + 1] = sheet.v(v);
+            }
+            List<int[]> edges = new ArrayList<>();
+            StringBuilder assignments = new StringBuilder();
+            List<Integer> steps = new ArrayList<>();
+            for (int e = 0; e < pattern.edges.size(); e++) {
+                int[] edge = pattern.edges.get(e);
+                if (edge[4] != k) {
+                    continue;
+                }
+                edges.add(new int[] {edge[0] - pattern.vertexBase[k], edge[1] - pattern.vertexBase[k]});
+                assignments.append(pattern.assignments.get(e).charAt(0));
+                steps.add(pattern.foldStep[e] == null ? 0 : pattern.foldStep[e]);
+            }
+            all.add(new SheetCreases(sheet.length(), sheet.width(), uv, edges.toArray(new int[0][]), assignments.toString().toCharArray(),
+                    steps.stream().mapToInt(Integer::intValue).toArray()));
+        }
+        return all;
+    }
+
     /** The crease pattern and folded state, found once and written after. */
     private static final class Pattern {
         final List<Folded> sheets;

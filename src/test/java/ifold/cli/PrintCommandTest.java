@@ -1,0 +1,94 @@
+package ifold.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** Crease patterns printed from the command line: --export-pdf, --export-svg, --paper-width, --page. */
+class PrintCommandTest {
+    @TempDir
+    Path dir;
+
+    @Test
+    void theZigZagsStripPrintsOnOnePageAsPdfAndSvg() throws Exception {
+        Path pdf = dir.resolve("zigzag.pdf");
+        Path svg = dir.resolve("zigzag.svg");
+        CliTest.Run run = CliTest.run("demo", "zigzag", "--no-view", "--export-pdf", pdf.toString(), "--export-svg", svg.toString());
+        assertEquals(0, run.code(), run.err());
+        assertEquals("", run.err());
+        assertTrue(run.out().contains("wrote " + pdf + ": 1 page, 4 pieces"), run.out());
+        assertTrue(run.out().contains("wrote " + svg + ": 1 page, 4 pieces"), run.out());
+        assertTrue(new String(Files.readAllBytes(pdf), 0, 5).equals("%PDF-"), "a PDF");
+        String page = Files.readString(svg);
+        assertTrue(page.contains("width=\"210mm\" height=\"297mm\""), "A4 in millimetres");
+        for (String kind : List.of("cut", "valley", "mountain", "tab", "scale")) {
+            assertTrue(page.contains("class=\"" + kind + "\""), kind + " lines");
+        }
+    }
+
+    /** The cube's strip on A4 pages: its pieces end to end, in the SVGs' millimetres, are the report's L. */
+    @Test
+    void theCubesWrapPrintsAsNumberedPiecesThatAddUpToTheStrip() throws Exception {
+        Path svg = dir.resolve("cube.svg");
+        Path report = dir.resolve("cube.json");
+        CliTest.Run run = CliTest.run("wrap", "models/cube.off", "--no-view", "--export-svg", svg.toString(), "--paper-width", "3cm",
+                "--report", report.toString());
+        assertEquals(0, run.code(), run.err());
+        Matcher counts = Pattern.compile("wrote \\S+cube-0*1\\.svg to cube-(\\d+)\\.svg: (\\d+) pages, (\\d+) pieces").matcher(run.out());
+        assertTrue(counts.find(), run.out());
+        int pages = Integer.parseInt(counts.group(2));
+        int pieces = Integer.parseInt(counts.group(3));
+        String json = Files.readString(report);
+        double length = CliTest.number(json.substring(json.indexOf("\"strips\"")), "length");
+        double width = CliTest.number(json, "width");
+        double mm = 0;
+        int outlines = 0;
+        Pattern cut = Pattern.compile("<polygon class=\"cut\" points=\"([-0-9.]+),[-0-9.]+ ([-0-9.]+),");
+        String digits = "%0" + Integer.toString(pages).length() + "d";
+        for (int p = 1; p <= pages; p++) {
+            String page = Files.readString(dir.resolve("cube-" + String.format(digits, p) + ".svg"));
+            Matcher m = cut.matcher(page);
+            while (m.find()) {
+                mm += Double.parseDouble(m.group(2)) - Double.parseDouble(m.group(1));
+                outlines++;
+            }
+            assertTrue(page.contains(String.format("page %d of %d", p, pages)), "page " + p + " says which it is");
+        }
+        assertEquals(pieces, outlines, "an outline a piece");
+        // SVG coordinates are written to a thousandth of a millimetre: a rounding of 5e-4 mm a piece.
+        assertEquals(length, mm / (30 / width), pieces * 1e-3 / (30 / width) + 1e-6 * length, "the pieces end to end are the strip");
+    }
+
+    @Test
+    void badValuesAreRefusedInOneLineAndNothingIsWritten() throws Exception {
+        Path pdf = dir.resolve("out.pdf");
+        Object[][] cases = {
+            {new String[] {"--paper-width", "2"}, "option --paper-width: expected a length with its unit"},
+            {new String[] {"--paper-width", "1mm"}, "option --paper-width: must be from 2 mm to 1 m"},
+            {new String[] {"--page", "a5"}, "option --page: expected a4, a4-landscape, letter, letter-landscape or none"},
+            {new String[] {"--paper-width", "30cm"}, "option --paper-width: a strip 300.0 mm wide does not fit the page (a4): at most"},
+        };
+        for (Object[] c : cases) {
+            String[] extra = (String[]) c[0];
+            String[] args = new String[4 + extra.length];
+            args[0] = "demo";
+            args[1] = "zigzag";
+            args[2] = "--no-view";
+            args[3] = "--export-pdf=" + pdf;
+            System.arraycopy(extra, 0, args, 4, extra.length);
+            CliTest.Run run = CliTest.run(args);
+            CliTest.assertOneLineError(run, (String) c[1]);
+            assertFalse(Files.exists(pdf), "nothing written for " + String.join(" ", extra));
+        }
+        CliTest.Run wrongName = CliTest.run("demo", "zigzag", "--no-view", "--export-pdf", dir.resolve("out.png").toString());
+        CliTest.assertOneLineError(wrongName, "--export-pdf");
+    }
+}
