@@ -3,25 +3,25 @@ package ifold.cli;
 import ifold.check.LayerOrder;
 import ifold.check.PaperCollisions;
 import ifold.foldfile.FoldFile;
+import ifold.io.AtomicFile;
+import ifold.job.Collisions;
+import ifold.job.JobWatcher;
+import ifold.job.Json;
+import ifold.job.LayerOrders;
+import ifold.job.PrintJob;
+import ifold.mesh.IndexedPolygons;
 import ifold.print.CreasePatternPages;
 import ifold.print.Lengths;
 import ifold.print.Page;
-import ifold.print.PdfCanvas;
-import ifold.print.SvgCanvas;
-import ifold.io.AtomicFile;
-import ifold.job.Collisions;
-import ifold.job.Json;
-import ifold.job.LayerOrders;
-import ifold.mesh.IndexedPolygons;
 import ifold.render.RenderUnavailableException;
 import ifold.render.ViewerWindow;
 import ifold.scene.Animation;
 import ifold.scene.Player;
 import ifold.scene.Scene;
 import ifold.scene.WrapPlayback;
+import ifold.wrap.PaperInSpace;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapExport;
-import ifold.wrap.PaperInSpace;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
@@ -177,49 +177,22 @@ final class PaperOutputs {
      * and {@code method} how.
      */
     void exportPrint(List<FoldFile.Folded> sheets, String title, String method) {
-        if (!prints()) {
-            return;
-        }
-        CreasePatternPages pages;
-        try {
-            pages = CreasePatternPages.of(title, method, FoldFile.creases(sheets), printOptions);
-        } catch (IllegalArgumentException e) {
-            discardWritten();
-            throw UserError.usage("option --paper-width: " + e.getMessage());
-        }
-        try {
-            if (exportPdf != null) {
-                try (PdfCanvas pdf = new PdfCanvas()) {
-                    pages.draw(pdf);
-                    pdf.save(exportPdf);
-                }
-                written.add(exportPdf);
-                wroteLines.add(String.format(java.util.Locale.ROOT, "wrote %s: %s", exportPdf, printed(pages)));
+        for (Path file : new Path[] {exportPdf, exportSvg}) {
+            if (file == null) {
+                continue;
             }
-            if (exportSvg != null) {
-                int count = pages.pageCount();
-                String name = exportSvg.getFileName().toString();
-                String stem = name.substring(0, name.length() - 4);
-                String digits = "%0" + Integer.toString(count).length() + "d";
-                SvgCanvas svg = new SvgCanvas(p -> count == 1 ? exportSvg
-                        : exportSvg.resolveSibling(stem + "-" + String.format(java.util.Locale.ROOT, digits, p + 1) + ".svg"));
-                try {
-                    pages.draw(svg);
-                } finally {
-                    written.addAll(svg.written());
-                }
-                wroteLines.add(String.format(java.util.Locale.ROOT, "wrote %s: %s", count == 1 ? exportSvg
-                        : svg.written().get(0) + " to " + svg.written().get(count - 1).getFileName(), printed(pages)));
+            try {
+                PrintJob.Printed printed = PrintJob.run(new PrintJob.Request(sheets, title, method, printOptions, file), JobWatcher.NONE);
+                written.addAll(printed.files());
+                wroteLines.add(printed.summary());
+            } catch (IllegalArgumentException e) {
+                discardWritten();
+                throw UserError.usage("option --paper-width: " + e.getMessage());
+            } catch (IOException e) {
+                discardWritten();
+                throw new UserError("cannot print the crease pattern: " + e.getMessage());
             }
-        } catch (IOException e) {
-            discardWritten();
-            throw new UserError("cannot print the crease pattern: " + e.getMessage());
         }
-    }
-
-    private static String printed(CreasePatternPages pages) {
-        return String.format(java.util.Locale.ROOT, "%d page%s, %d piece%s", pages.pageCount(), pages.pageCount() == 1 ? "" : "s",
-                pages.pieceCount(), pages.pieceCount() == 1 ? "" : "s");
     }
 
     /** Whether the layer order is checked: where the paper is exported or reported. */

@@ -1,5 +1,9 @@
 package ifold.ui;
 
+import ifold.job.PrintJob;
+import ifold.print.CreasePatternPages;
+import ifold.print.Lengths;
+import ifold.print.Page;
 import ifold.ui.model.Exports;
 import ifold.ui.model.ModelFile;
 import ifold.ui.model.Plan;
@@ -64,6 +68,9 @@ final class ExportDialogs {
     private final Host host;
     /** Where the next export's settings start: the last ones used. */
     private Exports.FrameSettings frameSettings = Exports.FrameSettings.DEFAULT;
+    /** The last crease pattern's width on paper and page, where the next one starts. */
+    private String printWidth = "2cm";
+    private Page printPage = Page.A4;
 
     ExportDialogs(Component parent, Host host) {
         this.parent = parent;
@@ -123,6 +130,62 @@ final class ExportDialogs {
         if (folder != null) {
             frames(folder, chosen);
         }
+    }
+
+    /**
+     * Export crease pattern: asks the strip's width on paper and the page, then where (PDF or
+     * SVG by the name; PDF where it says neither), as {@code --export-pdf} and {@code --export-svg}
+     * print it.
+     */
+    void creasePatternAsk() {
+        if (!hasPlan()) {
+            return;
+        }
+        if (!host.plan().hasPaper()) {
+            host.say("nothing to print: a model's view folds no paper");
+            return;
+        }
+        javax.swing.JTextField width = new javax.swing.JTextField(printWidth, 8);
+        javax.swing.JComboBox<String> page = new javax.swing.JComboBox<>();
+        for (Page each : Page.values()) {
+            page.addItem(each.optionName());
+        }
+        page.setSelectedItem(printPage.optionName());
+        javax.swing.JPanel form = new javax.swing.JPanel(new java.awt.GridLayout(2, 2, 8, 8));
+        form.add(new javax.swing.JLabel("Strip width on paper (2cm, 20mm, 0.8in)"));
+        form.add(width);
+        form.add(new javax.swing.JLabel("Page"));
+        form.add(page);
+        CreasePatternPages.Options options;
+        while (true) {
+            int answer = javax.swing.JOptionPane.showConfirmDialog(parent, form, "Export crease pattern", javax.swing.JOptionPane.OK_CANCEL_OPTION,
+                    javax.swing.JOptionPane.PLAIN_MESSAGE);
+            if (answer != javax.swing.JOptionPane.OK_OPTION) {
+                return;
+            }
+            try {
+                options = new CreasePatternPages.Options(Lengths.millimetres(width.getText()), Page.of((String) page.getSelectedItem()));
+                break;
+            } catch (IllegalArgumentException e) {
+                javax.swing.JOptionPane.showMessageDialog(parent, "Strip width: " + e.getMessage(), "Export crease pattern",
+                        javax.swing.JOptionPane.ERROR_MESSAGE);
+            }
+        }
+        printWidth = width.getText();
+        printPage = options.page();
+        Path file = host.choose("Export crease pattern", true, new FileNameExtensionFilter("Crease pattern (PDF, SVG)", "pdf", "svg"));
+        if (file == null) {
+            return;
+        }
+        if (!PrintJob.prints(file)) {
+            file = file.resolveSibling(file.getFileName() + ".pdf");
+        }
+        creasePattern(file, options);
+    }
+
+    /** Prints the plan's crease pattern to {@code file}, in the background. */
+    void creasePattern(Path file, CreasePatternPages.Options options) {
+        plan("crease pattern", file, (shown, progress) -> Exports.creasePattern(shown, file, options, progress).summary());
     }
 
     /** Export refinement: the open model's, as {@code ifold refine} writes it; OFF unless the name says OBJ, PLY or STL (binary). */

@@ -7,10 +7,12 @@ import ifold.image.Mp4Writer;
 import ifold.io.AtomicFile;
 import ifold.job.CancellableMesh;
 import ifold.job.Json;
+import ifold.job.PrintJob;
 import ifold.job.Scenes;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.io.MeshWriters;
+import ifold.print.CreasePatternPages;
 import ifold.refine.HamiltonianRefinement;
 import ifold.scene.WrapPlayback;
 import java.io.IOException;
@@ -207,6 +209,37 @@ public final class Exports {
         } catch (IOException e) {
             throw new JobFailure("cannot write " + file + ": " + e.getMessage());
         }
+    }
+
+    /**
+     * Prints the crease pattern at real size, as {@code --export-pdf} and {@code --export-svg} do:
+     * PDF or SVG by the file's name, the strip {@code options} wide on its pages.
+     */
+    public static PrintJob.Printed creasePattern(Plan plan, Path file, CreasePatternPages.Options options, Progress progress)
+            throws JobFailure {
+        requirePaper(plan);
+        try {
+            return PrintJob.run(new PrintJob.Request(plan.sheets(), plan.source(), printedMethod(plan.job()), options, file),
+                    progress.watcher());
+        } catch (IllegalArgumentException e) {
+            throw new JobFailure(new Problem("paperWidth", e.getMessage()));
+        } catch (IOException e) {
+            throw new JobFailure("cannot write " + file + ": " + e.getMessage());
+        }
+    }
+
+    /** How the job folded, for a printed page's header. */
+    static String printedMethod(Job job) {
+        if (job instanceof Job.ZigZag) {
+            return "the zig-zag of one triangle (Demaine, Demaine and Mitchell)";
+        }
+        if (job instanceof Job.Turn) {
+            return "the turn gadget (Demaine, Demaine and Mitchell)";
+        }
+        if (job instanceof Job.WrapModel) {
+            return "the zig-zag wrap (Demaine, Demaine and Mitchell)";
+        }
+        return "a fold script's sheet";
     }
 
     /** Writes the plan's figures as the {@code --report} JSON. */

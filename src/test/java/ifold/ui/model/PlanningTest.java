@@ -323,4 +323,22 @@ class PlanningTest {
         Map<String, Object> figures = plan.figures();
         assertEquals("C", figures.get("start"));
     }
+
+    /** The window prints the plan's crease pattern as the command line does: the zig-zag's strip on one A4 page, in four pieces. */
+    @Test
+    void theCreasePatternIsPrintedAsTheCommandLinePrintsIt() throws Exception {
+        Plan plan = Planning.plan(Job.ZigZag.DEMO, Progress.NONE);
+        ifold.print.CreasePatternPages.Options options = new ifold.print.CreasePatternPages.Options(20, ifold.print.Page.A4);
+        ifold.job.PrintJob.Printed pdf = Exports.creasePattern(plan, dir.resolve("zigzag.pdf"), options, Progress.NONE);
+        assertEquals(1, pdf.pages());
+        assertEquals(4, pdf.pieces());
+        assertTrue(Files.size(dir.resolve("zigzag.pdf")) > 1000);
+        ifold.job.PrintJob.Printed svg = Exports.creasePattern(plan, dir.resolve("zigzag.svg"), options, Progress.NONE);
+        assertEquals(java.util.List.of(dir.resolve("zigzag.svg")), svg.files());
+        // Too wide for the page: a problem at the width's field, nothing written.
+        JobFailure wide = assertThrows(JobFailure.class, () -> Exports.creasePattern(plan, dir.resolve("wide.pdf"),
+                new ifold.print.CreasePatternPages.Options(300, ifold.print.Page.A4), Progress.NONE));
+        assertEquals("paperWidth", wide.problem().field());
+        assertFalse(Files.exists(dir.resolve("wide.pdf")));
+    }
 }

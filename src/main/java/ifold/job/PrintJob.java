@@ -1,0 +1,101 @@
+package ifold.job;
+
+import ifold.foldfile.FoldFile;
+import ifold.print.CreasePatternPages;
+import ifold.print.PdfCanvas;
+import ifold.print.SvgCanvas;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * Folded sheets' crease pattern printed at real size, as {@code --export-pdf}, {@code
+ * --export-svg} and the window's Export crease pattern print it ({@link CreasePatternPages}):
+ * a PDF of every page, or SVG files a page ({@code NAME-01.svg}, ...; {@code NAME.svg} itself
+ * where there is one page).
+ */
+public final class PrintJob {
+    private PrintJob() {
+    }
+
+    /**
+     * What to print.
+     *
+     * @param sheets the folded sheets, as their FOLD file has them
+     * @param title what was folded: the model's or the script's name, "a triangle zig-zagged"
+     * @param method how, in words, for the header
+     * @param options the strip's width on paper and the page
+     * @param file where: .pdf or .svg
+     */
+    public record Request(List<FoldFile.Folded> sheets, String title, String method, CreasePatternPages.Options options, Path file) {
+    }
+
+    /** What was printed: the files written, the pages and the pieces. */
+    public record Printed(List<Path> files, int pages, int pieces) {
+        /** "wrote zigzag.pdf: 1 page, 4 pieces", or "wrote cube-01.svg to cube-45.svg: 45 pages, 360 pieces". */
+        public String summary() {
+            String where = files.size() == 1 ? files.get(0).toString() : files.get(0) + " to " + files.get(files.size() - 1).getFileName();
+            return String.format(Locale.ROOT, "wrote %s: %d page%s, %d piece%s", where, pages, pages == 1 ? "" : "s", pieces,
+                    pieces == 1 ? "" : "s");
+        }
+    }
+
+    /** Whether iFold prints to {@code file}: its name ends in .pdf or .svg, in any case. */
+    public static boolean prints(Path file) {
+        String name = file.getFileName() == null ? "" : file.getFileName().toString().toLowerCase(Locale.ROOT);
+        return name.endsWith(".pdf") || name.endsWith(".svg");
+    }
+
+    /**
+     * Lays out and prints. On failure the files already written are taken back.
+     *
+     * @throws IllegalArgumentException where the width asked does not fit the page, or would take
+     *     more than {@link CreasePatternPages#MOST_PAGES} pages (naming a width that fits)
+     * @throws IOException where a file cannot be written
+     */
+    public static Printed run(Request request, JobWatcher watcher) throws IOException {
+        Path file = request.file();
+        if (!prints(file)) {
+            throw new IllegalArgumentException("a crease pattern is printed as .pdf or .svg, got " + file.getFileName());
+        }
+        watcher.stage("laying out the crease pattern");
+        CreasePatternPages pages = CreasePatternPages.of(request.title(), request.method(), FoldFile.creases(request.sheets()),
+                request.options());
+        watcher.stopIfAsked();
+        watcher.stage("printing " + file.getFileName());
+        List<Path> written = new ArrayList<>();
+        boolean done = false;
+        try {
+            if (file.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".pdf")) {
+                try (PdfCanvas pdf = new PdfCanvas()) {
+                    pages.draw(pdf);
+                    watcher.stopIfAsked();
+                    pdf.save(file);
+                }
+                written.add(file);
+            } else {
+                int count = pages.pageCount();
+                String name = file.getFileName().toString();
+                String stem = name.substring(0, name.length() - 4);
+                String digits = "%0" + Integer.toString(count).length() + "d";
+                SvgCanvas svg = new SvgCanvas(p -> count == 1 ? file
+                        : file.resolveSibling(stem + "-" + String.format(Locale.ROOT, digits, p + 1) + name.substring(name.length() - 4)));
+                try {
+                    pages.draw(svg);
+                } finally {
+                    written.addAll(svg.written());
+                }
+            }
+            done = true;
+        } finally {
+            if (!done) {
+                for (Path path : written) {
+                    java.nio.file.Files.deleteIfExists(path);
+                }
+            }
+        }
+        return new Printed(List.copyOf(written), pages.pageCount(), pages.pieceCount());
+    }
+}
