@@ -1,7 +1,9 @@
 package ifold.cli;
 
 import ifold.foldfile.FoldFile;
+import ifold.geom.ParameterException;
 import ifold.geom.Triangle;
+import ifold.job.PrintJob;
 import ifold.job.Reports;
 import ifold.job.Scenes;
 import ifold.job.TriangleText;
@@ -14,11 +16,10 @@ import ifold.scene.Scene;
 import ifold.scene.WrapPlayback;
 import ifold.sheet.FoldException;
 import ifold.sheet.Sheet;
-import ifold.geom.ParameterException;
+import ifold.wrap.PaperInSpace;
 import ifold.wrap.TurnGadget;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapAnalysis;
-import ifold.wrap.PaperInSpace;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
@@ -124,7 +125,7 @@ final class DemoCommand implements Runnable {
             Map<String, Object> figures = zigzag.figures();
             List<FoldFile.Folded> folded = List.of(new FoldFile.Folded(sheet, result.frames()));
             outputs.exportFold(folded, zigzag.source(), figures);
-            outputs.exportPrint(folded, "a triangle zig-zagged", "the zig-zag of one triangle (Demaine, Demaine and Mitchell)");
+            outputs.exportPrint(folded, "a triangle zig-zagged", PrintJob.ZIGZAG);
             outputs.write(result, geometries, zigzag.source(), figures);
             out.printf(Locale.ROOT, "zigzag: strip %.4g x %.4g (L/w %.1f), %d passes%s, %d turn folds, %d tucks, %d layers at most (a stack of %d), "
                     + "paper efficiency %.3f, coverage %.3f, paper outside %.2g, isometry error %.1e%n",
@@ -207,7 +208,7 @@ final class DemoCommand implements Runnable {
             Map<String, Object> figures = turn.figures();
             List<FoldFile.Folded> folded = List.of(new FoldFile.Folded(gadget.sheet(), result.frames()));
             outputs.exportFold(folded, turn.source(), figures);
-            outputs.exportPrint(folded, String.format(Locale.ROOT, "a turn of %.4g degrees", angle), "the turn gadget (Demaine, Demaine and Mitchell)");
+            outputs.exportPrint(folded, String.format(Locale.ROOT, "a turn of %.4g degrees", angle), PrintJob.TURN);
             outputs.write(result, geometries, turn.source(), figures);
             out.printf(Locale.ROOT, "turn: %.6g degrees asked, %.6g measured, top side %s, %d layers at most, strip %.4g x %.4g%n",
                     angle, gadget.measuredAngle(), gadget.endFacesUp() ? "up" : "down", analysis.maxLayers(), gadget.length(), width);

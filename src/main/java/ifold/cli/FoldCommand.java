@@ -1,6 +1,7 @@
 package ifold.cli;
 
 import ifold.foldfile.FoldFile;
+import ifold.job.PrintJob;
 import ifold.job.Scenes;
 import ifold.job.ScriptJob;
 import ifold.scene.Animation;
@@ -85,7 +86,7 @@ final class FoldCommand implements Callable<Integer> {
         List<FoldFile.Folded> sheets = outputs.checksLayerOrder() || outputs.prints()
                 ? List.of(FoldFile.Folded.ofScript(parsed, result, maxFaces)) : List.of();
         outputs.exportFold(sheets, "ifold fold " + script, figures);
-        outputs.exportPrint(sheets, script.getFileName().toString(), "a fold script's sheet");
+        outputs.exportPrint(sheets, script.getFileName().toString(), PrintJob.SCRIPT);
         outputs.write(List.of(folded), result.sheet().thickness(), "iFold fold script " + script + ": " + result.steps().size() + " folds, thickness "
                 + result.sheet().thickness(), figures);
         int folds = result.steps().size();

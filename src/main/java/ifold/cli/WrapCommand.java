@@ -1,9 +1,11 @@
 package ifold.cli;
 
 import ifold.foldfile.FoldFile;
+import ifold.geom.ParameterException;
 import ifold.io.AtomicFile;
 import ifold.job.Json;
 import ifold.job.ModelFiles;
+import ifold.job.PrintJob;
 import ifold.job.Scenes;
 import ifold.job.WrapJob;
 import ifold.job.WrapPath;
@@ -13,11 +15,10 @@ import ifold.mesh.io.MeshWriters;
 import ifold.scene.Animation;
 import ifold.scene.Scene;
 import ifold.wrap.LayerFloor;
-import ifold.geom.ParameterException;
+import ifold.wrap.PaperInSpace;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapAnalysis;
 import ifold.wrap.WrapExport;
-import ifold.wrap.PaperInSpace;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
@@ -149,7 +150,7 @@ final class WrapCommand implements Callable<Integer> {
             if (outputs.exportFold != null) {
                 written.add(outputs.exportFold);
             }
-            outputs.exportPrint(sheets, model.getFileName().toString(), "the zig-zag wrap (Demaine, Demaine and Mitchell), "
+            outputs.exportPrint(sheets, model.getFileName().toString(), PrintJob.WRAP + ", "
                     + result.strips().size() + (result.strips().size() == 1 ? " strip" : " strips"));
             long exportedAt = System.nanoTime();
             outputs.checkCollisions(geometries, result.thickness(), mesh, figures);

@@ -20,6 +20,15 @@ public final class PrintJob {
     private PrintJob() {
     }
 
+    /** How each job folded, for a printed page's header, as both front ends say it. */
+    public static final String ZIGZAG = "the zig-zag of one triangle (Demaine, Demaine and Mitchell)";
+    /** See {@link #ZIGZAG}. */
+    public static final String TURN = "the turn gadget (Demaine, Demaine and Mitchell)";
+    /** See {@link #ZIGZAG}. */
+    public static final String WRAP = "the zig-zag wrap (Demaine, Demaine and Mitchell)";
+    /** See {@link #ZIGZAG}. */
+    public static final String SCRIPT = "a fold script's sheet";
+
     /**
      * What to print.
      *

@@ -231,15 +231,15 @@ public final class Exports {
     /** How the job folded, for a printed page's header. */
     static String printedMethod(Job job) {
         if (job instanceof Job.ZigZag) {
-            return "the zig-zag of one triangle (Demaine, Demaine and Mitchell)";
+            return PrintJob.ZIGZAG;
         }
         if (job instanceof Job.Turn) {
-            return "the turn gadget (Demaine, Demaine and Mitchell)";
+            return PrintJob.TURN;
         }
         if (job instanceof Job.WrapModel) {
-            return "the zig-zag wrap (Demaine, Demaine and Mitchell)";
+            return PrintJob.WRAP;
         }
-        return "a fold script's sheet";
+        return PrintJob.SCRIPT;
     }
 
     /** Writes the plan's figures as the {@code --report} JSON. */
