@@ -436,7 +436,6 @@ final class StripFolding {
         return farthest;
     }
 
-    /** A flat fold of the tail, recorded as a step with where the tail lay before and after. */
     /**
      * Where the paper has the point (x, y) of the triangle's frame that a turn's two creases
      * share: the tail's start on the side nearest it, mapped by the tail's pose, where that
@@ -465,6 +464,7 @@ final class StripFolding {
         return best;
     }
 
+    /** A flat fold of the tail, recorded as a step with where the tail lay before and after. */
     private void tailFold(Kind kind, int host, double px, double py, double dx, double dy, Placement next)
             throws FoldException, WrapException {
         int hostBefore = sheet.tailHost();
