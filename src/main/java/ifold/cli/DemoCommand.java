@@ -125,7 +125,7 @@ final class DemoCommand implements Runnable {
             Map<String, Object> figures = zigzag.figures();
             List<FoldFile.Folded> folded = List.of(new FoldFile.Folded(sheet, result.frames()));
             outputs.exportFold(folded, zigzag.source(), figures);
-            outputs.exportPrint(folded, "a triangle zig-zagged", PrintJob.ZIGZAG);
+            outputs.exportPrint(folded, "a triangle zig-zagged", PrintJob.ZIGZAG, PrintJob.triangle(shape, result.frames()[0]));
             outputs.write(result, geometries, zigzag.source(), figures);
             out.printf(Locale.ROOT, "zigzag: strip %.4g x %.4g (L/w %.1f), %d passes%s, %d turn folds, %d tucks, %d layers at most (a stack of %d), "
                     + "paper efficiency %.3f, coverage %.3f, paper outside %.2g, isometry error %.1e%n",

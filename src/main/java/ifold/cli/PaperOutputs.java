@@ -177,12 +177,18 @@ final class PaperOutputs {
      * and {@code method} how.
      */
     void exportPrint(List<FoldFile.Folded> sheets, String title, String method) {
+        exportPrint(sheets, title, method, null);
+    }
+
+    /** As {@link #exportPrint(List, String, String)}, with a shape to print beside the strip (the demo's triangle). */
+    void exportPrint(List<FoldFile.Folded> sheets, String title, String method, CreasePatternPages.Template template) {
         for (Path file : new Path[] {exportPdf, exportSvg}) {
             if (file == null) {
                 continue;
             }
             try {
-                PrintJob.Printed printed = PrintJob.run(new PrintJob.Request(sheets, title, method, printOptions, file), JobWatcher.NONE);
+                PrintJob.Printed printed = PrintJob.run(new PrintJob.Request(sheets, title, method, printOptions, file, template),
+                        JobWatcher.NONE);
                 written.addAll(printed.files());
                 wroteLines.add(printed.summary());
             } catch (IllegalArgumentException e) {

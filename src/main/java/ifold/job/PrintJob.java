@@ -1,9 +1,11 @@
 package ifold.job;
 
 import ifold.foldfile.FoldFile;
+import ifold.geom.Triangle;
 import ifold.print.CreasePatternPages;
 import ifold.print.PdfCanvas;
 import ifold.print.SvgCanvas;
+import ifold.sheet.HostFrame;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -38,7 +40,27 @@ public final class PrintJob {
      * @param options the strip's width on paper and the page
      * @param file where: .pdf or .svg
      */
-    public record Request(List<FoldFile.Folded> sheets, String title, String method, CreasePatternPages.Options options, Path file) {
+    public record Request(List<FoldFile.Folded> sheets, String title, String method, CreasePatternPages.Options options, Path file,
+            CreasePatternPages.Template template) {
+        /** Without a template. */
+        public Request(List<FoldFile.Folded> sheets, String title, String method, CreasePatternPages.Options options, Path file) {
+            this(sheets, title, method, options, file, null);
+        }
+    }
+
+    /**
+     * The zig-zag demo's triangle as a template to print beside its strip: {@code shape}'s corners
+     * A, B, C in the plane of {@code frame} (the host the strip was folded on).
+     */
+    public static CreasePatternPages.Template triangle(Triangle shape, HostFrame frame) {
+        double[] xy = new double[6];
+        for (int k = 0; k < 3; k++) {
+            double[] p = {shape.corner(k).x(), shape.corner(k).y(), shape.corner(k).z()};
+            xy[2 * k] = frame.localX(p);
+            xy[2 * k + 1] = frame.localY(p);
+        }
+        return new CreasePatternPages.Template("the triangle the strip wraps, at the same scale: cut it out of card, top side up",
+                xy, new String[] {"A", "B", "C"});
     }
 
     /** What was printed: the files written, the pages and the pieces. */
@@ -71,7 +93,7 @@ public final class PrintJob {
         }
         watcher.stage("laying out the crease pattern");
         CreasePatternPages pages = CreasePatternPages.of(request.title(), request.method(), FoldFile.creases(request.sheets()),
-                request.options());
+                request.options(), request.template());
         watcher.stopIfAsked();
         watcher.stage("printing " + file.getFileName());
         List<Path> written = new ArrayList<>();

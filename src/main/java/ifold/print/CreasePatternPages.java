@@ -41,6 +41,17 @@ public final class CreasePatternPages {
     public record Options(double paperWidthMm, Page page) {
     }
 
+    /**
+     * A shape printed at the same scale as the strip, to cut out of card and fold the strip on:
+     * the triangle of the zig-zag demo.
+     *
+     * @param label what it is, printed above it
+     * @param xy its corners in its own plane, in the model's units (x, y pairs)
+     * @param names each corner's name, printed inside it
+     */
+    public record Template(String label, double[] xy, String[] names) {
+    }
+
     /** Strip {@code strip}'s paper from u0 to u1, its top left corner at (x, y) on its page. */
     record Piece(int strip, int index, int count, double u0, double u1, double x, double y, String markIn, String markOut) {
     }
@@ -55,6 +66,11 @@ public final class CreasePatternPages {
     private final double scale;
     private final double paperWidth;
     private final List<Sheet> pages = new ArrayList<>();
+    /** The template, where it is drawn (page, x, y of its box's top left corner); null where none. */
+    private Template template;
+    private int templatePage = -1;
+    private double templateX;
+    private double templateY;
     /** Each strip's edges sorted by their smallest u, and the longest any spans along u. */
     private final List<Integer[]> byU = new ArrayList<>();
     private final double[] longestSpan;
@@ -75,6 +91,11 @@ public final class CreasePatternPages {
      *     more than {@link #MOST_PAGES} pages (naming the width that fits)
      */
     public static CreasePatternPages of(String title, String method, List<SheetCreases> strips, Options options) {
+        return of(title, method, strips, options, null);
+    }
+
+    /** As {@link #of(String, String, List, Options)}, with {@code template} (or none) printed after the strips. */
+    public static CreasePatternPages of(String title, String method, List<SheetCreases> strips, Options options, Template template) {
         if (strips.isEmpty()) {
             throw new IllegalArgumentException("nothing to print");
         }
@@ -82,6 +103,9 @@ public final class CreasePatternPages {
         double scale = options.paperWidthMm() / width;
         CreasePatternPages pages = new CreasePatternPages(title, method, strips, scale, options.paperWidthMm());
         pages.layOut(options.page());
+        if (template != null) {
+            pages.placeTemplate(template, options.page());
+        }
         pages.sortEdges();
         return pages;
     }
@@ -159,6 +183,72 @@ public final class CreasePatternPages {
         }
     }
 
+    /** Places the template under the last piece where it fits there, else on a page of its own. */
+    private void placeTemplate(Template shape, Page page) {
+        double[] box = box(shape.xy());
+        double width = (box[2] - box[0]) * scale;
+        double height = (box[3] - box[1]) * scale;
+        Sheet last = pages.get(pages.size() - 1);
+        double pageWidth = page == Page.NONE ? Math.max(last.width(), width + 2 * MARGIN) : page.width();
+        if (width > pageWidth - 2 * MARGIN) {
+            return; // larger than a page at this scale: the strip alone is printed
+        }
+        double y = MARGIN + HEADER + LABEL;
+        for (Piece piece : last.pieces()) {
+            y = Math.max(y, piece.y() + paperWidth + GAP + LABEL);
+        }
+        double bottom = (page == Page.NONE ? last.height() : page.height()) - MARGIN - FOOTER;
+        if (page == Page.NONE) {
+            pages.set(pages.size() - 1, new Sheet(pageWidth, last.height() + height + LABEL + GAP, last.pieces()));
+            bottom += height + LABEL + GAP;
+        }
+        if (y + height > bottom) {
+            if (height > page.height() - 2 * MARGIN - HEADER - FOOTER - LABEL) {
+                return;
+            }
+            pages.add(new Sheet(page.width(), page.height(), List.of()));
+            y = MARGIN + HEADER + LABEL;
+        }
+        template = shape;
+        templatePage = pages.size() - 1;
+        templateX = MARGIN;
+        templateY = y;
+    }
+
+    private static double[] box(double[] xy) {
+        double[] box = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        for (int k = 0; k < xy.length; k += 2) {
+            box[0] = Math.min(box[0], xy[k]);
+            box[1] = Math.min(box[1], xy[k + 1]);
+            box[2] = Math.max(box[2], xy[k]);
+            box[3] = Math.max(box[3], xy[k + 1]);
+        }
+        return box;
+    }
+
+    private void drawTemplate(Canvas canvas) throws IOException {
+        double[] box = box(template.xy());
+        int n = template.xy().length / 2;
+        double[] at = new double[2 * n];
+        double cx = 0;
+        double cy = 0;
+        for (int k = 0; k < n; k++) {
+            // Its y upwards, as the strip's v.
+            at[2 * k] = templateX + (template.xy()[2 * k] - box[0]) * scale;
+            at[2 * k + 1] = templateY + (box[3] - template.xy()[2 * k + 1]) * scale;
+            cx += at[2 * k] / n;
+            cy += at[2 * k + 1] / n;
+        }
+        canvas.text(templateX, templateY - 1.4, 2.6, template.label(), false);
+        canvas.outline(at, Ink.CUT);
+        for (int k = 0; k < n && k < template.names().length; k++) {
+            // Each name a little way in from its corner, towards the middle.
+            double x = at[2 * k] + 0.12 * (cx - at[2 * k]);
+            double y = at[2 * k + 1] + 0.12 * (cy - at[2 * k + 1]);
+            canvas.text(x - 1.2, y + 1.4, 3.6, template.names()[k], true);
+        }
+    }
+
     /** Marks A to Z, then AA, AB, ... */
     static String letters(int n) {
         StringBuilder text = new StringBuilder();
@@ -195,6 +285,9 @@ public final class CreasePatternPages {
             header(canvas, page, p);
             for (Piece piece : page.pieces()) {
                 piece(canvas, piece);
+            }
+            if (p == templatePage) {
+                drawTemplate(canvas);
             }
             footer(canvas, page);
             canvas.endPage();

@@ -32,6 +32,21 @@ class PrintCommandTest {
         for (String kind : List.of("cut", "valley", "mountain", "tab", "scale")) {
             assertTrue(page.contains("class=\"" + kind + "\""), kind + " lines");
         }
+        // The triangle to fold it on, at the strip's scale (12.5 mm a unit): the demo's 0,0 10,0 3.5,8.
+        assertTrue(page.contains("the triangle the strip wraps, at the same scale"), "the triangle's template");
+        Matcher triangle = Pattern.compile("<polygon class=\"cut\" points=\"([-0-9.,]+) ([-0-9.,]+) ([-0-9.,]+)\"/>").matcher(page);
+        assertTrue(triangle.find(), "a triangle cut out");
+        double[] xs = new double[3];
+        double[] ys = new double[3];
+        for (int k = 0; k < 3; k++) {
+            String[] xy = triangle.group(k + 1).split(",");
+            xs[k] = Double.parseDouble(xy[0]);
+            ys[k] = Double.parseDouble(xy[1]);
+        }
+        double ab = Math.hypot(xs[1] - xs[0], ys[1] - ys[0]);
+        double area = Math.abs((xs[1] - xs[0]) * (ys[2] - ys[0]) - (xs[2] - xs[0]) * (ys[1] - ys[0])) / 2;
+        assertEquals(10 * 12.5, ab, 1e-2, "side AB, 10 units");
+        assertEquals(10 * 8 / 2.0 * 12.5 * 12.5, area, 1, "its area, at the strip's scale");
     }
 
     /** The cube's strip on A4 pages: its pieces end to end, in the SVGs' millimetres, are the report's L. */

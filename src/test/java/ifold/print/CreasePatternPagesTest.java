@@ -172,4 +172,22 @@ class CreasePatternPagesTest {
         assertEquals(Page.A4_LANDSCAPE, Page.of("A4-Landscape"));
         assertTrue(assertThrows(IllegalArgumentException.class, () -> Page.of("a5")).getMessage().contains("expected a4"));
     }
+
+    @Test
+    void aTemplateGoesUnderTheLastPieceWhereItFitsElseOnAPageOfItsOwn() throws Exception {
+        CreasePatternPages.Template small = new CreasePatternPages.Template("the triangle", new double[] {0, 0, 5, 0, 2, 4},
+                new String[] {"A", "B", "C"});
+        CreasePatternPages pages = CreasePatternPages.of("test", "by hand", List.of(strip()), new CreasePatternPages.Options(20, Page.A4),
+                small);
+        assertEquals(2, pages.pageCount(), "under the last piece of page 2 (4 pieces there, 80 mm of template)");
+        Recording canvas = new Recording();
+        pages.draw(canvas);
+        assertTrue(canvas.texts.get(1).contains("the triangle"));
+        assertEquals(5, canvas.cuts.get(1).size(), "four pieces and the triangle");
+        CreasePatternPages.Template large = new CreasePatternPages.Template("the triangle", new double[] {0, 0, 8, 0, 2, 11},
+                new String[] {"A", "B", "C"});
+        CreasePatternPages more = CreasePatternPages.of("test", "by hand", List.of(strip()), new CreasePatternPages.Options(20, Page.A4),
+                large);
+        assertEquals(3, more.pageCount(), "220 mm high: a page of its own");
+    }
 }

@@ -9,6 +9,7 @@ import ifold.job.CancellableMesh;
 import ifold.job.Json;
 import ifold.job.PrintJob;
 import ifold.job.Scenes;
+import ifold.job.TriangleText;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.io.MeshWriters;
@@ -219,7 +220,9 @@ public final class Exports {
             throws JobFailure {
         requirePaper(plan);
         try {
-            return PrintJob.run(new PrintJob.Request(plan.sheets(), plan.source(), printedMethod(plan.job()), options, file),
+            CreasePatternPages.Template template = plan.job() instanceof Job.ZigZag zigzag && !plan.sheets().isEmpty()
+                    ? PrintJob.triangle(TriangleText.parse(zigzag.triangle()), plan.sheets().get(0).frames()[0]) : null;
+            return PrintJob.run(new PrintJob.Request(plan.sheets(), plan.source(), printedMethod(plan.job()), options, file, template),
                     progress.watcher());
         } catch (IllegalArgumentException e) {
             throw new JobFailure(new Problem("paperWidth", e.getMessage()));
