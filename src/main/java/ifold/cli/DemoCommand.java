@@ -86,8 +86,12 @@ final class DemoCommand implements Runnable {
         @Mixin
         PaperOutputs outputs = new PaperOutputs();
 
+        @Mixin
+        DiagramOutput diagrams = new DiagramOutput();
+
         @Override
         public Integer call() {
+            diagrams.check();
             if (figure != null) {
                 OutputFiles.checkWritableFile(figure, "--figure", ".png");
             }
@@ -126,6 +130,7 @@ final class DemoCommand implements Runnable {
             List<FoldFile.Folded> folded = List.of(new FoldFile.Folded(sheet, result.frames()));
             outputs.exportFold(folded, zigzag.source(), figures);
             outputs.exportPrint(folded, "a triangle zig-zagged", PrintJob.ZIGZAG, PrintJob.triangle(shape, result.frames()[0]));
+            diagrams.write(outputs, "a triangle zig-zagged", PrintJob.ZIGZAG, in -> Scenes.zigzag(in, shape, result, geometries));
             outputs.write(result, geometries, zigzag.source(), figures);
             out.printf(Locale.ROOT, "zigzag: strip %.4g x %.4g (L/w %.1f), %d passes%s, %d turn folds, %d tucks, %d layers at most (a stack of %d), "
                     + "paper efficiency %.3f, coverage %.3f, paper outside %.2g, isometry error %.1e%n",
@@ -184,8 +189,12 @@ final class DemoCommand implements Runnable {
         @Mixin
         PaperOutputs outputs = new PaperOutputs();
 
+        @Mixin
+        DiagramOutput diagrams = new DiagramOutput();
+
         @Override
         public Integer call() {
+            diagrams.check();
             TurnGadget.Options options;
             try {
                 options = new TurnGadget.Options(angle, overhang, width, Defaults.orDefault(thickness, "thickness"));
@@ -209,6 +218,8 @@ final class DemoCommand implements Runnable {
             List<FoldFile.Folded> folded = List.of(new FoldFile.Folded(gadget.sheet(), result.frames()));
             outputs.exportFold(folded, turn.source(), figures);
             outputs.exportPrint(folded, String.format(Locale.ROOT, "a turn of %.4g degrees", angle), PrintJob.TURN);
+            diagrams.write(outputs, String.format(Locale.ROOT, "a turn of %.4g degrees", angle), PrintJob.TURN,
+                    in -> Scenes.turn(in, result, geometries));
             outputs.write(result, geometries, turn.source(), figures);
             out.printf(Locale.ROOT, "turn: %.6g degrees asked, %.6g measured, top side %s, %d layers at most, strip %.4g x %.4g%n",
                     angle, gadget.measuredAngle(), gadget.endFacesUp() ? "up" : "down", analysis.maxLayers(), gadget.length(), width);

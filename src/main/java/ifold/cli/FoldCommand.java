@@ -50,6 +50,9 @@ final class FoldCommand implements Callable<Integer> {
     @Mixin
     PaperOutputs outputs = new PaperOutputs();
 
+    @Mixin
+    DiagramOutput diagrams = new DiagramOutput();
+
     @Override
     public Integer call() {
         if (maxFaces < 1) {
@@ -58,6 +61,7 @@ final class FoldCommand implements Callable<Integer> {
         // Without a display it does the exports asked for and renders frames where the viewer was
         // wanted, as the demos and the wrap do.
         outputs.check("fold", spec.commandLine().getErr(), true);
+        diagrams.check();
         if (Files.isDirectory(script)) {
             throw new UserError(script + ": is a folder, expected a fold script");
         }
@@ -87,6 +91,7 @@ final class FoldCommand implements Callable<Integer> {
                 ? List.of(FoldFile.Folded.ofScript(parsed, result, maxFaces)) : List.of();
         outputs.exportFold(sheets, "ifold fold " + script, figures);
         outputs.exportPrint(sheets, script.getFileName().toString(), PrintJob.SCRIPT);
+        diagrams.write(outputs, script.getFileName().toString(), PrintJob.SCRIPT, in -> Scenes.script(in, result, folded));
         outputs.write(List.of(folded), result.sheet().thickness(), "iFold fold script " + script + ": " + result.steps().size() + " folds, thickness "
                 + result.sheet().thickness(), figures);
         int folds = result.steps().size();

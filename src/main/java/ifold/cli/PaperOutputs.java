@@ -137,8 +137,13 @@ final class PaperOutputs {
      * summary is out ({@link #printFiles}).
      */
     void wrote(Path file) {
+        wrote(file, "wrote " + file);
+    }
+
+    /** As {@link #wrote(Path)}, said in {@code line}. */
+    void wrote(Path file, String line) {
         written.add(file);
-        wroteLines.add("wrote " + file);
+        wroteLines.add(line);
     }
 
     /**

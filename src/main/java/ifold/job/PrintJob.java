@@ -4,7 +4,10 @@ import ifold.foldfile.FoldFile;
 import ifold.geom.Triangle;
 import ifold.print.CreasePatternPages;
 import ifold.print.PdfCanvas;
+import ifold.print.StepDiagrams;
 import ifold.print.SvgCanvas;
+import ifold.scene.Animation;
+import ifold.scene.Scene;
 import ifold.sheet.HostFrame;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -128,5 +131,23 @@ public final class PrintJob {
             }
         }
         return new Printed(List.copyOf(written), pages.pageCount(), pages.pieceCount());
+    }
+
+    /**
+     * Step diagrams of {@code animation} in {@code scene} (the movie's own, made afresh for them):
+     * a title page and a panel a fold, as one PDF written to {@code file}, whole or not at all.
+     *
+     * @return the file, its pages and the folds drawn (as {@link Printed#pieces})
+     */
+    public static Printed diagrams(String title, String method, Scene scene, Animation animation, Path file, JobWatcher watcher)
+            throws IOException {
+        watcher.stage("drawing the step diagrams");
+        int folds;
+        try (PdfCanvas pdf = new PdfCanvas()) {
+            folds = StepDiagrams.draw(title, method, scene, animation, pdf);
+            watcher.stopIfAsked();
+            pdf.save(file);
+        }
+        return new Printed(List.of(file), StepDiagrams.pageCount(folds), folds);
     }
 }

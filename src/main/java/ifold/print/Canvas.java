@@ -14,6 +14,9 @@ public interface Canvas {
     /** A closed outline through the points (x, y pairs). */
     void outline(double[] xy, Ink ink) throws IOException;
 
+    /** A polygon filled with colour {@code argb} (its alpha ignored), without outline. */
+    void fill(double[] xy, int argb) throws IOException;
+
     /** Text whose baseline starts at (x, y), {@code size} millimetres high (its capitals about 0.7 of that). */
     void text(double x, double y, double size, String text, boolean bold) throws IOException;
 

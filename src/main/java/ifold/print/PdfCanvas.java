@@ -93,6 +93,17 @@ public final class PdfCanvas implements Canvas, AutoCloseable {
     }
 
     @Override
+    public void fill(double[] xy, int argb) throws IOException {
+        content.setNonStrokingColor(((argb >> 16) & 255) / 255f, ((argb >> 8) & 255) / 255f, (argb & 255) / 255f);
+        content.moveTo(x(xy[0]), y(xy[1]));
+        for (int k = 2; k < xy.length; k += 2) {
+            content.lineTo(x(xy[k]), y(xy[k + 1]));
+        }
+        content.closePath();
+        content.fill();
+    }
+
+    @Override
     public void text(double x, double y, double size, String text, boolean heavy) throws IOException {
         content.beginText();
         content.setNonStrokingColor(0f, 0f, 0f);

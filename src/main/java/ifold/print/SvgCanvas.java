@@ -64,6 +64,15 @@ public final class SvgCanvas implements Canvas {
     }
 
     @Override
+    public void fill(double[] xy, int argb) {
+        page.append("<polygon fill=\"#").append(String.format(Locale.ROOT, "%06x", argb & 0xFFFFFF)).append("\" points=\"");
+        for (int k = 0; k < xy.length; k += 2) {
+            page.append(k == 0 ? "" : " ").append(number(xy[k])).append(',').append(number(xy[k + 1]));
+        }
+        page.append("\"/>\n");
+    }
+
+    @Override
     public void text(double x, double y, double size, String text, boolean bold) {
         page.append("<text").append(bold ? " class=\"bold\"" : "").append(" x=\"").append(number(x)).append("\" y=\"").append(number(y))
                 .append("\" font-size=\"").append(number(size)).append("\">").append(escaped(text)).append("</text>\n");

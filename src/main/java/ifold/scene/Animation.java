@@ -15,4 +15,14 @@ public interface Animation {
     default String describe(double position) {
         return "step " + (int) Math.floor(position) + " of " + stepCount();
     }
+
+    /** How many folds it shows one after another, for step diagrams (a panel a fold): its steps unless it says otherwise. */
+    default int foldCount() {
+        return stepCount();
+    }
+
+    /** The position at which fold {@code k} (from 0) begins; {@code foldStart(foldCount())} is where the last has ended. */
+    default double foldStart(int k) {
+        return k;
+    }
 }

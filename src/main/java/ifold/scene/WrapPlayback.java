@@ -297,6 +297,16 @@ public final class WrapPlayback implements Animation {
         return WrapView.REVEAL_STEPS + WrapView.TURN_STEPS;
     }
 
+    @Override
+    public int foldCount() {
+        return steps.size();
+    }
+
+    @Override
+    public double foldStart(int k) {
+        return positionAfter(k);
+    }
+
     /** The position at which the first {@code folds} steps of the wrap are made and the next has not begun. */
     public double positionAfter(int folds) {
         return steps.isEmpty() ? 0 : stepStart[Math.max(0, Math.min(folds, steps.size()))];

@@ -106,4 +106,64 @@ class PrintCommandTest {
         CliTest.Run wrongName = CliTest.run("demo", "zigzag", "--no-view", "--export-pdf", dir.resolve("out.png").toString());
         CliTest.assertOneLineError(wrongName, "--export-pdf");
     }
+
+    /**
+     * Step diagrams: a title page, then the zig-zag's 13 folds six to a page, each captioned as the
+     * movie captions it; a fold script's 20 folds likewise. Their text read back by pdftotext and
+     * their panels' paper by pixels (pdftoppm), where poppler-utils is installed.
+     */
+    @Test
+    void stepDiagramsHaveAPanelAFoldCaptionedAsTheMovie() throws Exception {
+        Path pdf = dir.resolve("steps.pdf");
+        CliTest.Run run = CliTest.run("demo", "zigzag", "--no-view", "--export-diagrams", pdf.toString());
+        assertEquals(0, run.code(), run.err());
+        assertTrue(run.out().contains("wrote " + pdf + ": 4 pages, 13 steps"), run.out());
+        Path script = dir.resolve("script.pdf");
+        CliTest.Run folded = CliTest.run("fold", "models/scripts/pleat20.fold", "--no-view", "--export-diagrams", script.toString());
+        assertEquals(0, folded.code(), folded.err());
+        assertTrue(folded.out().contains("wrote " + script + ": 5 pages, 20 steps"), folded.out());
+        CliTest.Run wrong = CliTest.run("demo", "zigzag", "--no-view", "--export-diagrams", dir.resolve("steps.png").toString());
+        CliTest.assertOneLineError(wrong, "--export-diagrams");
+        if (!tool("pdftotext") || !tool("pdftoppm")) {
+            return; // poppler-utils missing: scripts/setup installs it
+        }
+        Path text = dir.resolve("steps.txt");
+        assertEquals(0, new ProcessBuilder("pdftotext", "-layout", pdf.toString(), text.toString()).start().waitFor());
+        String words = Files.readString(text);
+        assertTrue(words.contains("The steps") && words.contains("1. pass 1 of 5: turn, 45° valley fold"), words);
+        assertTrue(words.contains("tuck 1: excess folded under along edge"), words);
+        assertEquals(0, new ProcessBuilder("pdftoppm", "-r", "50", "-png", "-f", "2", "-l", "2", pdf.toString(), dir.resolve("page").toString())
+                .start().waitFor());
+        Path png;
+        try (var files = Files.list(dir)) {
+            png = files.filter(f -> f.getFileName().toString().startsWith("page") && f.getFileName().toString().endsWith(".png")).findFirst()
+                    .orElseThrow();
+        }
+        java.awt.image.BufferedImage page = javax.imageio.ImageIO.read(png.toFile());
+        // The first panel: 12 mm in, below the header and its caption, 90 by about 68 mm; at 50 dpi a mm is 1.97 px.
+        int paper = 0;
+        int model = 0;
+        for (int y = (int) (40 * 1.97); y < (int) (100 * 1.97); y++) {
+            for (int x = (int) (14 * 1.97); x < (int) (100 * 1.97); x++) {
+                int rgb = page.getRGB(x, y) & 0xFFFFFF;
+                int r = rgb >> 16;
+                int g = (rgb >> 8) & 255;
+                int b = rgb & 255;
+                paper += r > 200 && r < 250 && Math.abs(r - g) < 12 && b < r ? 1 : 0; // the cream top side, lit
+                model += r < 140 && g < 150 && b < 170 && b > r ? 1 : 0; // the blue-grey triangle
+            }
+        }
+        assertTrue(paper > 200, "paper in the first panel: " + paper + " pixels");
+        assertTrue(model > 1000, "the triangle in the first panel: " + model + " pixels");
+    }
+
+    private static boolean tool(String name) {
+        try {
+            Process p = new ProcessBuilder(name, "-v").redirectErrorStream(true).start();
+            p.getInputStream().readAllBytes();
+            return p.waitFor() >= 0;
+        } catch (Exception e) {
+            return false;
+        }
+    }
 }

@@ -42,6 +42,10 @@ class CreasePatternPagesTest {
         }
 
         @Override
+        public void fill(double[] xy, int argb) {
+        }
+
+        @Override
         public void text(double x, double y, double size, String text, boolean bold) {
             texts.get(texts.size() - 1).add(text);
         }

@@ -1,0 +1,45 @@
+package ifold.cli;
+
+import ifold.job.JobWatcher;
+import ifold.job.PrintJob;
+import ifold.scene.Animation;
+import ifold.scene.Scene;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.function.Function;
+import picocli.CommandLine.Option;
+
+/** {@code --export-diagrams FILE.pdf}: step diagrams, a panel a fold, for the demos and fold scripts. */
+final class DiagramOutput {
+    @Option(names = "--export-diagrams", paramLabel = "FILE.pdf", description = "draw step diagrams as PDF: a title page with"
+            + " the folded paper and the steps listed, then a panel a fold, six to an A4 page, each showing the fold half made as"
+            + " the movie shows it, numbered and captioned")
+    Path file;
+
+    void check() {
+        if (file != null) {
+            OutputFiles.checkWritableFile(file, "--export-diagrams", ".pdf");
+        }
+    }
+
+    /**
+     * Draws the diagrams if asked: {@code animationIn} puts the movie's animation in the scene it
+     * is given (a fresh one, not the viewer's).
+     */
+    void write(PaperOutputs outputs, String title, String method, Function<Scene, Animation> animationIn) {
+        if (file == null) {
+            return;
+        }
+        try {
+            Scene scene = new Scene();
+            Animation animation = animationIn.apply(scene);
+            PrintJob.Printed printed = PrintJob.diagrams(title, method, scene, animation, file, JobWatcher.NONE);
+            outputs.wrote(file, String.format(Locale.ROOT, "wrote %s: %d pages, %d step%s", file, printed.pages(), printed.pieces(),
+                    printed.pieces() == 1 ? "" : "s"));
+        } catch (IOException e) {
+            outputs.discardWritten();
+            throw new UserError("cannot draw the step diagrams: " + e.getMessage());
+        }
+    }
+}

@@ -1,0 +1,106 @@
+package ifold.print;
+
+import ifold.scene.Camera;
+import ifold.scene.Geometry;
+import ifold.scene.Scene;
+import ifold.scene.SceneMesh;
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.List;
+import org.joml.Matrix4d;
+import org.joml.Vector3d;
+import org.joml.Vector4d;
+
+/**
+ * A scene drawn as vectors into a panel of a page, as its camera sees it: the triangles of its
+ * visible geometries (as far as each is revealed) projected, the farthest first (the painter's
+ * order), each filled with its colour, lighter where it faces the camera. The same scene the
+ * movies render, drawn for paper.
+ */
+final class SceneDrawing {
+    private SceneDrawing() {
+    }
+
+    /** A projected triangle: its corners on the panel, whether it lies under the rest (the model under its paper), its depth. */
+    private record Flat(double[] xy, boolean under, double depth, int color) {
+    }
+
+    /** Draws {@code scene} into the panel (x, y) to (x + width, y + height), in millimetres. */
+    static void draw(Scene scene, Canvas canvas, double x, double y, double width, double height) throws IOException {
+        Camera camera = scene.camera();
+        Matrix4d view = camera.viewMatrix(new Matrix4d());
+        Matrix4d projection = camera.projectionMatrix(width / height, new Matrix4d());
+        Matrix4d viewProjection = new Matrix4d(projection).mul(view);
+        List<Flat> flats = new ArrayList<>();
+        scene.root().visitGeometry(geometry -> collect(geometry, view, viewProjection, x, y, width, height, flats));
+        // What lies under the rest first (the model under its paper, which rests on it), then the
+        // farthest first: a big triangle of the model would otherwise cover the paper on it.
+        flats.sort((a, b) -> a.under() != b.under() ? (a.under() ? -1 : 1) : Double.compare(b.depth(), a.depth()));
+        for (Flat flat : flats) {
+            canvas.fill(flat.xy(), flat.color());
+        }
+    }
+
+    private static void collect(Geometry geometry, Matrix4d view, Matrix4d viewProjection, double x, double y, double width,
+            double height, List<Flat> flats) {
+        if (!isShown(geometry) || geometry.isSeenThrough()) {
+            return;
+        }
+        SceneMesh mesh = geometry.mesh();
+        Matrix4d world = new Matrix4d(geometry.worldTransform());
+        Matrix4d clip = new Matrix4d(viewProjection).mul(world);
+        Matrix4d eye = new Matrix4d(view).mul(world);
+        double[] positions = mesh.positions();
+        int[] triangles = mesh.triangles();
+        int[] colors = mesh.triangleColors();
+        int count = Math.min(mesh.triangleCount(), geometry.revealed());
+        Vector4d p = new Vector4d();
+        Vector3d[] e = {new Vector3d(), new Vector3d(), new Vector3d()};
+        for (int t = 0; t < count; t++) {
+            double[] xy = new double[6];
+            boolean behind = false;
+            for (int k = 0; k < 3; k++) {
+                int v = triangles[3 * t + k];
+                p.set(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2], 1);
+                eye.transformPosition(e[k].set(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]));
+                clip.transform(p);
+                if (!(p.w > 0)) {
+                    behind = true;
+                    break;
+                }
+                xy[2 * k] = x + (p.x / p.w + 1) / 2 * width;
+                xy[2 * k + 1] = y + (1 - p.y / p.w) / 2 * height;
+            }
+            if (behind) {
+                continue;
+            }
+            // Lit from the camera: full where a face looks at it, darker as it turns away.
+            Vector3d normal = new Vector3d(e[1]).sub(e[0]).cross(new Vector3d(e[2]).sub(e[0]));
+            Vector3d centre = new Vector3d(e[0]).add(e[1]).add(e[2]).div(3);
+            double facing = normal.length() > 0 && centre.length() > 0 ? Math.abs(normal.dot(centre)) / (normal.length() * centre.length()) : 1;
+            // The material's front where the triangle faces the camera, its back where it turns away,
+            // as the renderer colours the paper's top side and underside; or the triangle's own colour.
+            boolean front = normal.dot(centre) < 0;
+            int color = geometry.material().useFaceColors() && colors != null && t < colors.length ? colors[t]
+                    : front ? geometry.material().front() : geometry.material().back();
+            flats.add(new Flat(xy, geometry.isUnder(), -centre.z, shade(color, 0.6 + 0.4 * facing)));
+        }
+    }
+
+    /** Whether the geometry and every node above it are visible. */
+    private static boolean isShown(Geometry geometry) {
+        for (ifold.scene.Spatial s = geometry; s != null; s = s.parent()) {
+            if (!s.isVisible()) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private static int shade(int argb, double light) {
+        int r = (int) Math.round(((argb >> 16) & 255) * light);
+        int g = (int) Math.round(((argb >> 8) & 255) * light);
+        int b = (int) Math.round((argb & 255) * light);
+        return 0xFF000000 | (Math.min(255, r) << 16) | (Math.min(255, g) << 8) | Math.min(255, b);
+    }
+}

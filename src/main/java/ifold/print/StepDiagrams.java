@@ -1,0 +1,130 @@
+package ifold.print;
+
+import ifold.scene.Animation;
+import ifold.scene.Scene;
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * Step diagrams: a panel a fold, six to an A4 page, each the scene the movie shows half way
+ * through that fold (the flap lifted from the paper it leaves, on its way to where it lands),
+ * numbered and captioned as the movie captions it; after a title page with the finished paper
+ * and the list of the steps. Drawn from the movie's own scene and animation, as vectors.
+ */
+public final class StepDiagrams {
+    private static final double WIDTH = 210;
+    private static final double HEIGHT = 297;
+    private static final double MARGIN = 12;
+    private static final double HEADER = 14;
+    private static final int COLUMNS = 2;
+    private static final int ROWS = 3;
+    private static final double GUTTER = 6;
+    private static final double CAPTION = 9;
+    /** How far into each fold its panel shows it. */
+    static final double MIDWAY = 0.5;
+
+    private StepDiagrams() {
+    }
+
+    /** The pages {@code folds} panels take, the title page included. */
+    public static int pageCount(int folds) {
+        return 1 + (folds + COLUMNS * ROWS - 1) / (COLUMNS * ROWS);
+    }
+
+    /**
+     * Draws the title page and the panels of {@code animation}'s folds in {@code scene}, which it
+     * moves through them.
+     *
+     * @return the folds drawn
+     */
+    public static int draw(String title, String method, Scene scene, Animation animation, Canvas canvas) throws IOException {
+        int folds = animation.foldCount();
+        int pages = pageCount(folds);
+        // The title page: the paper folded, and the steps listed.
+        canvas.beginPage(WIDTH, HEIGHT);
+        canvas.text(MARGIN, MARGIN + 6, 6, "iFold: " + title, true);
+        canvas.text(MARGIN, MARGIN + 13, 3.2, String.format(Locale.ROOT, "%s: %d %s, step diagrams, page 1 of %d", method, folds,
+                folds == 1 ? "fold" : "folds", pages), false);
+        animation.apply(animation.stepCount());
+        double pictureHeight = 110;
+        SceneDrawing.draw(scene, canvas, MARGIN, MARGIN + 18, WIDTH - 2 * MARGIN, pictureHeight);
+        double y = MARGIN + 18 + pictureHeight + 8;
+        canvas.text(MARGIN, y, 3.6, "The steps", true);
+        y += 5;
+        double column = MARGIN;
+        for (int k = 0; k < folds; k++) {
+            if (y > HEIGHT - MARGIN) {
+                if (column > MARGIN) {
+                    canvas.text(column, y, 2.6, "...", false);
+                    break;
+                }
+                column = WIDTH / 2;
+                y = MARGIN + 18 + pictureHeight + 13;
+            }
+            canvas.text(column, y, 2.6, shortened(String.format(Locale.ROOT, "%d. %s", k + 1, caption(animation, k)), 70), false);
+            y += 3.6;
+        }
+        canvas.endPage();
+        double panelWidth = (WIDTH - 2 * MARGIN - (COLUMNS - 1) * GUTTER) / COLUMNS;
+        double panelHeight = (HEIGHT - 2 * MARGIN - HEADER - (ROWS - 1) * GUTTER) / ROWS;
+        for (int k = 0; k < folds; k++) {
+            int slot = k % (COLUMNS * ROWS);
+            if (slot == 0) {
+                if (k > 0) {
+                    canvas.endPage();
+                }
+                canvas.beginPage(WIDTH, HEIGHT);
+                canvas.text(MARGIN, MARGIN + 6, 4, "iFold: " + title, true);
+                canvas.text(MARGIN, MARGIN + 11, 2.8, String.format(Locale.ROOT, "%s; page %d of %d", method, 2 + k / (COLUMNS * ROWS), pages),
+                        false);
+            }
+            double x = MARGIN + (slot % COLUMNS) * (panelWidth + GUTTER);
+            double top = MARGIN + HEADER + (slot / COLUMNS) * (panelHeight + GUTTER);
+            double start = animation.foldStart(k);
+            double end = animation.foldStart(k + 1);
+            animation.apply(start + MIDWAY * (end - start));
+            SceneDrawing.draw(scene, canvas, x, top + CAPTION, panelWidth, panelHeight - CAPTION);
+            canvas.outline(new double[] {x, top + CAPTION, x + panelWidth, top + CAPTION, x + panelWidth, top + panelHeight, x,
+                top + panelHeight}, Ink.FLAT);
+            canvas.text(x, top + 4.2, 4.2, Integer.toString(k + 1), true);
+            List<String> lines = wrapped(caption(animation, k), 58);
+            for (int i = 0; i < Math.min(2, lines.size()); i++) {
+                canvas.text(x + 8, top + 3.2 + 3.4 * i, 2.7, lines.get(i), false);
+            }
+        }
+        if (folds > 0) {
+            canvas.endPage();
+        }
+        return folds;
+    }
+
+    /** Fold k's caption, as the movie says it while the fold is made. */
+    static String caption(Animation animation, int k) {
+        double start = animation.foldStart(k);
+        double end = animation.foldStart(k + 1);
+        return animation.describe(start + MIDWAY * (end - start)).replaceAll(" \\(\\d+ %\\)", "");
+    }
+
+    private static String shortened(String text, int most) {
+        return text.length() <= most ? text : text.substring(0, most - 3) + "...";
+    }
+
+    /** Words in lines of at most {@code most} characters. */
+    static List<String> wrapped(String text, int most) {
+        List<String> lines = new ArrayList<>();
+        StringBuilder line = new StringBuilder();
+        for (String word : text.split(" ")) {
+            if (line.length() > 0 && line.length() + 1 + word.length() > most) {
+                lines.add(line.toString());
+                line.setLength(0);
+            }
+            line.append(line.length() == 0 ? "" : " ").append(word);
+        }
+        if (line.length() > 0) {
+            lines.add(line.toString());
+        }
+        return lines;
+    }
+}
