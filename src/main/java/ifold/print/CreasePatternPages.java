@@ -1,6 +1,7 @@
 package ifold.print;
 
 import ifold.foldfile.FoldFile.SheetCreases;
+import ifold.sheet.Polygons2;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -185,7 +186,7 @@ public final class CreasePatternPages {
 
     /** Places the template under the last piece where it fits there, else on a page of its own. */
     private void placeTemplate(Template shape, Page page) {
-        double[] box = box(shape.xy());
+        double[] box = Polygons2.bounds(shape.xy());
         double width = (box[2] - box[0]) * scale;
         double height = (box[3] - box[1]) * scale;
         Sheet last = pages.get(pages.size() - 1);
@@ -215,19 +216,9 @@ public final class CreasePatternPages {
         templateY = y;
     }
 
-    private static double[] box(double[] xy) {
-        double[] box = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
-        for (int k = 0; k < xy.length; k += 2) {
-            box[0] = Math.min(box[0], xy[k]);
-            box[1] = Math.min(box[1], xy[k + 1]);
-            box[2] = Math.max(box[2], xy[k]);
-            box[3] = Math.max(box[3], xy[k + 1]);
-        }
-        return box;
-    }
 
     private void drawTemplate(Canvas canvas) throws IOException {
-        double[] box = box(template.xy());
+        double[] box = Polygons2.bounds(template.xy());
         int n = template.xy().length / 2;
         double[] at = new double[2 * n];
         double cx = 0;
