@@ -10,11 +10,11 @@ import java.util.Locale;
 import java.util.function.Function;
 import picocli.CommandLine.Option;
 
-/** {@code --export-diagrams FILE.pdf}: step diagrams, a panel a fold, for the demos and fold scripts. */
+/** {@code --export-diagrams FILE.pdf}: step diagrams, a panel a fold (a wrap's: a panel a triangle of its path). */
 final class DiagramOutput {
     @Option(names = "--export-diagrams", paramLabel = "FILE.pdf", description = "draw step diagrams as PDF: a title page with"
-            + " the folded paper and the steps listed, then a panel a fold, six to an A4 page, each showing the fold half made as"
-            + " the movie shows it, numbered and captioned")
+            + " the folded paper and the steps listed, then a panel a fold (a wrap's: a triangle of its path), six to an A4"
+            + " page, each showing it half made as the movie shows it, numbered and captioned")
     Path file;
 
     void check() {

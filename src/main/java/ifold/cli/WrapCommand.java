@@ -72,6 +72,9 @@ final class WrapCommand implements Callable<Integer> {
     @Mixin
     PaperOutputs outputs = new PaperOutputs();
 
+    @Mixin
+    DiagramOutput diagrams = new DiagramOutput();
+
     @Override
     public Integer call() {
         Wrap.Options options;
@@ -81,6 +84,7 @@ final class WrapCommand implements Callable<Integer> {
             throw UserError.usage(e);
         }
         outputs.check("wrap", spec.commandLine().getErr(), true);
+        diagrams.check();
         try {
             return wrap(options);
         } catch (UserError | CommandLine.ParameterException e) {
@@ -152,6 +156,7 @@ final class WrapCommand implements Callable<Integer> {
             }
             outputs.exportPrint(sheets, model.getFileName().toString(), PrintJob.WRAP + ", "
                     + result.strips().size() + (result.strips().size() == 1 ? " strip" : " strips"));
+            diagrams.write(outputs, model.getFileName().toString(), PrintJob.WRAP, in -> Scenes.wrap(in, mesh, result, geometries));
             long exportedAt = System.nanoTime();
             outputs.checkCollisions(geometries, result.thickness(), mesh, figures);
             long writtenAt = System.nanoTime();

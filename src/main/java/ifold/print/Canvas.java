@@ -20,5 +20,10 @@ public interface Canvas {
     /** Text whose baseline starts at (x, y), {@code size} millimetres high (its capitals about 0.7 of that). */
     void text(double x, double y, double size, String text, boolean bold) throws IOException;
 
+    /** What is drawn until {@link #endClip} shows only inside the rectangle (a panel). */
+    void beginClip(double x, double y, double width, double height) throws IOException;
+
+    void endClip() throws IOException;
+
     void endPage() throws IOException;
 }

@@ -114,6 +114,18 @@ public final class PdfCanvas implements Canvas, AutoCloseable {
     }
 
     @Override
+    public void beginClip(double x, double y, double width, double height) throws IOException {
+        content.saveGraphicsState();
+        content.addRect(x(x), y(y + height), (float) width * POINTS_A_MM, (float) height * POINTS_A_MM);
+        content.clip();
+    }
+
+    @Override
+    public void endClip() throws IOException {
+        content.restoreGraphicsState();
+    }
+
+    @Override
     public void endPage() throws IOException {
         content.close();
         content = null;

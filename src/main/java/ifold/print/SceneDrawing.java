@@ -36,9 +36,11 @@ final class SceneDrawing {
         // What lies under the rest first (the model under its paper, which rests on it), then the
         // farthest first: a big triangle of the model would otherwise cover the paper on it.
         flats.sort((a, b) -> a.under() != b.under() ? (a.under() ? -1 : 1) : Double.compare(b.depth(), a.depth()));
+        canvas.beginClip(x, y, width, height);
         for (Flat flat : flats) {
             canvas.fill(flat.xy(), flat.color());
         }
+        canvas.endClip();
     }
 
     private static void collect(Geometry geometry, Matrix4d view, Matrix4d viewProjection, double x, double y, double width,
@@ -71,7 +73,7 @@ final class SceneDrawing {
                 xy[2 * k] = x + (p.x / p.w + 1) / 2 * width;
                 xy[2 * k + 1] = y + (1 - p.y / p.w) / 2 * height;
             }
-            if (behind) {
+            if (behind || outside(xy, x, y, width, height)) {
                 continue;
             }
             // Lit from the camera: full where a face looks at it, darker as it turns away.
@@ -85,6 +87,19 @@ final class SceneDrawing {
                     : front ? geometry.material().front() : geometry.material().back();
             flats.add(new Flat(xy, geometry.isUnder(), -centre.z, shade(color, 0.6 + 0.4 * facing)));
         }
+    }
+
+    /**
+     * Whether the triangle lies wholly beyond one side of the panel, or is too small to see (a
+     * hundredth of a square millimetre): a wrap's panel frames one triangle of thousands.
+     */
+    private static boolean outside(double[] xy, double x, double y, double width, double height) {
+        double minX = Math.min(xy[0], Math.min(xy[2], xy[4]));
+        double maxX = Math.max(xy[0], Math.max(xy[2], xy[4]));
+        double minY = Math.min(xy[1], Math.min(xy[3], xy[5]));
+        double maxY = Math.max(xy[1], Math.max(xy[3], xy[5]));
+        double area = Math.abs((xy[2] - xy[0]) * (xy[5] - xy[1]) - (xy[4] - xy[0]) * (xy[3] - xy[1])) / 2;
+        return maxX < x || minX > x + width || maxY < y || minY > y + height || area < 0.01;
     }
 
     /** Whether the geometry and every node above it are visible. */

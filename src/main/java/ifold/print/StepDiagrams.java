@@ -102,9 +102,7 @@ public final class StepDiagrams {
 
     /** Fold k's caption, as the movie says it while the fold is made. */
     static String caption(Animation animation, int k) {
-        double start = animation.foldStart(k);
-        double end = animation.foldStart(k + 1);
-        return animation.describe(start + MIDWAY * (end - start)).replaceAll(" \\(\\d+ %\\)", "");
+        return animation.foldCaption(k).replaceAll(" \\(\\d+ %\\)", "");
     }
 
     private static String shortened(String text, int most) {

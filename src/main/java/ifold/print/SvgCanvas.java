@@ -19,6 +19,8 @@ public final class SvgCanvas implements Canvas {
     private final List<Path> written = new ArrayList<>();
     private StringBuilder page;
     private int pages;
+    /** Clipping rectangles made so far, for their ids. */
+    private int clips;
 
     /** Writes page p (from 0) to {@code fileOfPage.apply(p)}. */
     public SvgCanvas(IntFunction<Path> fileOfPage) {
@@ -76,6 +78,19 @@ public final class SvgCanvas implements Canvas {
     public void text(double x, double y, double size, String text, boolean bold) {
         page.append("<text").append(bold ? " class=\"bold\"" : "").append(" x=\"").append(number(x)).append("\" y=\"").append(number(y))
                 .append("\" font-size=\"").append(number(size)).append("\">").append(escaped(text)).append("</text>\n");
+    }
+
+    @Override
+    public void beginClip(double x, double y, double width, double height) {
+        clips++;
+        page.append("<clipPath id=\"panel").append(clips).append("\"><rect x=\"").append(number(x)).append("\" y=\"").append(number(y))
+                .append("\" width=\"").append(number(width)).append("\" height=\"").append(number(height)).append("\"/></clipPath>\n")
+                .append("<g clip-path=\"url(#panel").append(clips).append(")\">\n");
+    }
+
+    @Override
+    public void endClip() {
+        page.append("</g>\n");
     }
 
     @Override

@@ -25,4 +25,9 @@ public interface Animation {
     default double foldStart(int k) {
         return k;
     }
+
+    /** Fold {@code k}'s caption for its panel: what the animation says half way through it. */
+    default String foldCaption(int k) {
+        return describe((foldStart(k) + foldStart(k + 1)) / 2);
+    }
 }

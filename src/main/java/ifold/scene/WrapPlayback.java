@@ -297,14 +297,45 @@ public final class WrapPlayback implements Animation {
         return WrapView.REVEAL_STEPS + WrapView.TURN_STEPS;
     }
 
+    /**
+     * The folds of step diagrams: each fold of a path of one or two triangles (the demos), and
+     * each triangle of a longer path, its passes, gadgets, crossing and tucks in one panel.
+     */
     @Override
     public int foldCount() {
-        return steps.size();
+        return triangles > 2 ? triangles : steps.size();
     }
 
     @Override
     public double foldStart(int k) {
+        if (triangles > 2) {
+            return k >= triangles ? WrapView.REVEAL_STEPS : slotStart[k];
+        }
         return positionAfter(k);
+    }
+
+    /** A wrap's panel, a triangle of its path: its folds by kind; a demo's, as the movie says it. */
+    @Override
+    public String foldCaption(int k) {
+        if (triangles <= 2) {
+            return describe((foldStart(k) + foldStart(k + 1)) / 2);
+        }
+        int[] kinds = new int[Wrap.Kind.values().length];
+        for (int j = firstStep[k]; j < endStep[k]; j++) {
+            kinds[steps.get(j).kind().ordinal()]++;
+        }
+        String[] words = {"turn fold", "gadget fold", "crossing to the next triangle", "overlap", "tuck", "end of the strip"};
+        StringBuilder text = new StringBuilder(String.format(java.util.Locale.ROOT, "triangle %d of %d:", k + 1, triangles));
+        String separator = " ";
+        for (Wrap.Kind kind : Wrap.Kind.values()) {
+            int n = kinds[kind.ordinal()];
+            if (n > 0) {
+                text.append(separator).append(n).append(' ').append(words[kind.ordinal()]).append(n == 1 || kind == Wrap.Kind.EDGE_CROSSING
+                        || kind == Wrap.Kind.END ? "" : "s");
+                separator = ", ";
+            }
+        }
+        return text.toString();
     }
 
     /** The position at which the first {@code folds} steps of the wrap are made and the next has not begun. */

@@ -157,6 +157,23 @@ class PrintCommandTest {
         assertTrue(model > 1000, "the triangle in the first panel: " + model + " pixels");
     }
 
+    /** A wrap's diagrams: a panel a triangle of its path, its folds counted by kind; the paper beyond a panel not drawn. */
+    @Test
+    void aWrapsStepDiagramsHaveAPanelATriangle() throws Exception {
+        Path pdf = dir.resolve("cube-steps.pdf");
+        CliTest.Run run = CliTest.run("wrap", "models/cube.off", "--no-view", "--export-diagrams", pdf.toString());
+        assertEquals(0, run.code(), run.err());
+        assertTrue(run.out().contains("wrote " + pdf + ": 11 pages, 58 steps"), run.out());
+        assertTrue(Files.size(pdf) < 5_000_000, "the paper outside each panel left out: " + Files.size(pdf) + " bytes");
+        if (!tool("pdftotext")) {
+            return;
+        }
+        Path text = dir.resolve("cube-steps.txt");
+        assertEquals(0, new ProcessBuilder("pdftotext", "-f", "2", "-l", "2", pdf.toString(), text.toString()).start().waitFor());
+        String words = Files.readString(text).replaceAll("\\s+", " ");
+        assertTrue(words.contains("triangle 1 of 58: 6 turn folds, 6 gadget folds, 1 crossing to the next triangle, 1 tuck"), words);
+    }
+
     private static boolean tool(String name) {
         try {
             Process p = new ProcessBuilder(name, "-v").redirectErrorStream(true).start();

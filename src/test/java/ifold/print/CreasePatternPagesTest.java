@@ -46,6 +46,14 @@ class CreasePatternPagesTest {
         }
 
         @Override
+        public void beginClip(double x, double y, double width, double height) {
+        }
+
+        @Override
+        public void endClip() {
+        }
+
+        @Override
         public void text(double x, double y, double size, String text, boolean bold) {
             texts.get(texts.size() - 1).add(text);
         }
