@@ -45,8 +45,8 @@ public final class StepDiagrams {
         // The title page: the paper folded, and the steps listed.
         canvas.beginPage(WIDTH, HEIGHT);
         canvas.text(MARGIN, MARGIN + 6, 6, "iFold: " + title, true);
-        canvas.text(MARGIN, MARGIN + 13, 3.2, String.format(Locale.ROOT, "%s: %d %s, step diagrams, page 1 of %d", method, folds,
-                folds == 1 ? "fold" : "folds", pages), false);
+        canvas.text(MARGIN, MARGIN + 13, 3.2, String.format(Locale.ROOT, "%s: step diagrams, %d %s, page 1 of %d", method, folds,
+                folds == 1 ? "step" : "steps", pages), false);
         animation.apply(animation.stepCount());
         double pictureHeight = 110;
         SceneDrawing.draw(scene, canvas, MARGIN, MARGIN + 18, WIDTH - 2 * MARGIN, pictureHeight);
