@@ -102,6 +102,25 @@ final class SceneDrawing {
         return maxX < x || minX > x + width || maxY < y || minY > y + height || area < 0.01;
     }
 
+    /**
+     * Draws the segment from {@code from} to {@code to} (x, y, z) in {@code ink} over the panel, as
+     * the scene's camera sees it: a fold's crease over the paper it creases.
+     */
+    static void line(Scene scene, Canvas canvas, double x, double y, double width, double height, double[] from, double[] to, Ink ink)
+            throws IOException {
+        Camera camera = scene.camera();
+        Matrix4d viewProjection = camera.projectionMatrix(width / height, new Matrix4d()).mul(camera.viewMatrix(new Matrix4d()));
+        Vector4d a = viewProjection.transform(new Vector4d(from[0], from[1], from[2], 1));
+        Vector4d b = viewProjection.transform(new Vector4d(to[0], to[1], to[2], 1));
+        if (!(a.w > 0) || !(b.w > 0)) {
+            return;
+        }
+        canvas.beginClip(x, y, width, height);
+        canvas.line(x + (a.x / a.w + 1) / 2 * width, y + (1 - a.y / a.w) / 2 * height, x + (b.x / b.w + 1) / 2 * width,
+                y + (1 - b.y / b.w) / 2 * height, ink);
+        canvas.endClip();
+    }
+
     /** Whether the geometry and every node above it are visible. */
     private static boolean isShown(Geometry geometry) {
         for (ifold.scene.Spatial s = geometry; s != null; s = s.parent()) {

@@ -86,6 +86,11 @@ public final class StepDiagrams {
             double end = animation.foldStart(k + 1);
             animation.apply(start + MIDWAY * (end - start));
             SceneDrawing.draw(scene, canvas, x, top + CAPTION, panelWidth, panelHeight - CAPTION);
+            Animation.FoldLine crease = animation.foldLine(k);
+            if (crease != null) {
+                SceneDrawing.line(scene, canvas, x, top + CAPTION, panelWidth, panelHeight - CAPTION, crease.from(), crease.to(),
+                        crease.valley() ? Ink.VALLEY : Ink.MOUNTAIN);
+            }
             canvas.outline(new double[] {x, top + CAPTION, x + panelWidth, top + CAPTION, x + panelWidth, top + panelHeight, x,
                 top + panelHeight}, Ink.FLAT);
             canvas.text(x, top + 4.2, 4.2, Integer.toString(k + 1), true);

@@ -26,6 +26,19 @@ public interface Animation {
         return k;
     }
 
+    /**
+     * Fold {@code k}'s crease in space, for its panel: from x, y, z to x, y, z, and whether it is a
+     * valley seen from the paper's top side (else a mountain); null where the animation does not
+     * say.
+     */
+    record FoldLine(double[] from, double[] to, boolean valley) {
+    }
+
+    /** See {@link FoldLine}. */
+    default FoldLine foldLine(int k) {
+        return null;
+    }
+
     /** Fold {@code k}'s caption for its panel: what the animation says half way through it. */
     default String foldCaption(int k) {
         return describe((foldStart(k) + foldStart(k + 1)) / 2);

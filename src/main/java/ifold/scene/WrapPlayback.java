@@ -1,6 +1,8 @@
 package ifold.scene;
 
 import ifold.mesh.IndexedPolygons;
+import ifold.sheet.HostFrame;
+import ifold.sheet.Tuck;
 import ifold.wrap.Wrap;
 import java.util.ArrayList;
 import java.util.List;
@@ -312,6 +314,37 @@ public final class WrapPlayback implements Animation {
             return k >= triangles ? WrapView.REVEAL_STEPS : slotStart[k];
         }
         return positionAfter(k);
+    }
+
+    /**
+     * A demo's fold's crease: a fold of the tail across the strip where it lay before (over: a
+     * valley from the top side), or a tuck's line along its host's edge (its flap goes under: a
+     * mountain). A wrap's panels, a triangle each, have none.
+     */
+    @Override
+    public FoldLine foldLine(int k) {
+        if (triangles > 2 || k >= steps.size()) {
+            return null;
+        }
+        Wrap.Step step = steps.get(k);
+        double[] from = new double[3];
+        double[] to = new double[3];
+        if (step.tail() != null) {
+            Wrap.TailMove tail = step.tail();
+            double w = result.strips().get(step.strip()).sheet().width();
+            HostFrame frame = result.frames()[tail.hostBefore()];
+            frame.toSpace(tail.before().x(tail.u0(), 0), tail.before().y(tail.u0(), 0), 0, from, 0);
+            frame.toSpace(tail.before().x(tail.u1(), w), tail.before().y(tail.u1(), w), 0, to, 0);
+            return new FoldLine(from, to, tail.over());
+        }
+        if (step.tuck() != null) {
+            Tuck tuck = step.tuck();
+            HostFrame frame = result.frames()[tuck.host()];
+            frame.toSpace(tuck.px(), tuck.py(), 0, from, 0);
+            frame.toSpace(tuck.px() + tuck.dx(), tuck.py() + tuck.dy(), 0, to, 0);
+            return new FoldLine(from, to, false);
+        }
+        return null;
     }
 
     /** A wrap's panel, a triangle of its path: its folds by kind; a demo's, as the movie says it. */

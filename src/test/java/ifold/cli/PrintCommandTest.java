@@ -155,6 +155,9 @@ class PrintCommandTest {
         }
         assertTrue(paper > 200, "paper in the first panel: " + paper + " pixels");
         assertTrue(model > 1000, "the triangle in the first panel: " + model + " pixels");
+        // Each fold's crease in its style's colour: the first fold a valley (blue), the second a mountain (red).
+        assertTrue(inked(page, 14, 100, true) > 5 && inked(page, 14, 100, false) == 0, "fold 1's valley, and no mountain, in panel 1");
+        assertTrue(inked(page, 110, 196, false) > 5 && inked(page, 110, 196, true) == 0, "fold 2's mountain, and no valley, in panel 2");
     }
 
     /** A wrap's diagrams: a panel a triangle of its path, its folds counted by kind; the paper beyond a panel not drawn. */
@@ -172,6 +175,21 @@ class PrintCommandTest {
         assertEquals(0, new ProcessBuilder("pdftotext", "-f", "2", "-l", "2", pdf.toString(), text.toString()).start().waitFor());
         String words = Files.readString(text).replaceAll("\\s+", " ");
         assertTrue(words.contains("triangle 1 of 58: 6 turn folds, 6 gadget folds, 1 crossing to the next triangle, 1 tuck"), words);
+    }
+
+    /** The pixels of a valley's blue (or a mountain's red) in a panel of the top row, from x0 to x1 mm across. */
+    private static int inked(java.awt.image.BufferedImage page, double x0, double x1, boolean blue) {
+        int count = 0;
+        for (int y = (int) (40 * 1.97); y < (int) (100 * 1.97); y++) {
+            for (int x = (int) (x0 * 1.97); x < (int) (x1 * 1.97); x++) {
+                int rgb = page.getRGB(x, y) & 0xFFFFFF;
+                int r = rgb >> 16;
+                int g = (rgb >> 8) & 255;
+                int b = rgb & 255;
+                count += blue ? (b > r + 60 && b > g + 30 ? 1 : 0) : (r > g + 60 && r > b + 60 ? 1 : 0);
+            }
+        }
+        return count;
     }
 
     private static boolean tool(String name) {
