@@ -183,6 +183,33 @@ final class ExportDialogs {
         creasePattern(file, options);
     }
 
+    /** Export step diagrams: asks where (a PDF), then draws them in the background, as {@code --export-diagrams} does. */
+    void diagramsAsk() {
+        if (!hasPlan()) {
+            return;
+        }
+        if (!host.plan().hasPaper()) {
+            host.say("nothing to draw: a model's view folds no paper");
+            return;
+        }
+        Path file = host.choose("Export step diagrams", true, new FileNameExtensionFilter("Step diagrams (PDF)", "pdf"));
+        if (file == null) {
+            return;
+        }
+        if (!file.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".pdf")) {
+            file = file.resolveSibling(file.getFileName() + ".pdf");
+        }
+        diagrams(file);
+    }
+
+    /** Draws the plan's step diagrams to {@code file}, in the background. */
+    void diagrams(Path file) {
+        plan("step diagrams", file, (shown, progress) -> {
+            PrintJob.Printed printed = Exports.diagrams(shown, file, progress);
+            return String.format(Locale.ROOT, "wrote %s: %d pages, %d steps", file, printed.pages(), printed.pieces());
+        });
+    }
+
     /** Prints the plan's crease pattern to {@code file}, in the background. */
     void creasePattern(Path file, CreasePatternPages.Options options) {
         plan("crease pattern", file, (shown, progress) -> Exports.creasePattern(shown, file, options, progress).summary());

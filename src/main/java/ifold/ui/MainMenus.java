@@ -43,6 +43,7 @@ final class MainMenus {
         file.add(item("Export OBJ...", KeyEvent.VK_E, ctrl, () -> window.exports.fileAsk("OBJ", "obj")));
         file.add(item("Export FOLD...", KeyEvent.VK_E, ctrl | shift, () -> window.exports.fileAsk("FOLD", "fold")));
         file.add(item("Export crease pattern (PDF, SVG)...", KeyEvent.VK_P, ctrl | shift, window.exports::creasePatternAsk));
+        file.add(item("Export step diagrams (PDF)...", KeyEvent.VK_D, ctrl | shift, window.exports::diagramsAsk));
         file.add(item("Export report (JSON)...", KeyEvent.VK_J, ctrl, () -> window.exports.fileAsk("report", "json")));
         file.add(item("Export figure (PNG)...", KeyEvent.VK_G, ctrl, () -> window.exports.fileAsk("figure", "png")));
         file.add(window.exportRefinement);

@@ -259,6 +259,24 @@ class MainWindowFilesTest extends WindowTestBase {
         BufferedImage panel = javax.imageio.ImageIO.read(figure.toFile());
         assertEquals(2 * 800 + 2, panel.getWidth(), "two stages a row, as --figure draws them");
         assertEquals(2 * 500 + 2, panel.getHeight());
+        // The crease pattern and the step diagrams, printed as the command line prints them.
+        Path svg = dir.resolve("zigzag.svg");
+        Path steps = dir.resolve("steps.pdf");
+        List<String> said = new java.util.concurrent.CopyOnWriteArrayList<>();
+        window.messages = said::add;
+        onEdt(() -> {
+            window.exports.creasePattern(svg, new ifold.print.CreasePatternPages.Options(20, ifold.print.Page.A4));
+            return null;
+        });
+        waitFor("the crease pattern", 60, () -> !window.isWorking());
+        onEdt(() -> {
+            window.exports.diagrams(steps);
+            return null;
+        });
+        waitFor("the step diagrams", 60, () -> !window.isWorking());
+        assertTrue(Files.readString(svg).contains("piece 1 of 4; glue piece 2 on its tab at mark A"), "the strip's four pieces");
+        assertTrue(said.stream().anyMatch(m -> m.contains("wrote " + svg + ": 1 page, 4 pieces")), said.toString());
+        assertTrue(said.stream().anyMatch(m -> m.contains("wrote " + steps + ": 4 pages, 13 steps")), said.toString());
     }
 
     @Test

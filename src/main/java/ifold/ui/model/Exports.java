@@ -231,6 +231,20 @@ public final class Exports {
         }
     }
 
+    /**
+     * Draws step diagrams of the plan, as {@code --export-diagrams} does: a title page and a panel
+     * a fold (a wrap's: a triangle of its path), from a new scene of the result.
+     */
+    public static PrintJob.Printed diagrams(Plan plan, Path file, Progress progress) throws JobFailure {
+        requirePaper(plan);
+        Plan.Shown shown = plan.newScene();
+        try {
+            return PrintJob.diagrams(plan.source(), printedMethod(plan.job()), shown.scene(), shown.animation(), file, progress.watcher());
+        } catch (IOException e) {
+            throw new JobFailure("cannot write " + file + ": " + e.getMessage());
+        }
+    }
+
     /** How the job folded, for a printed page's header. */
     static String printedMethod(Job job) {
         if (job instanceof Job.ZigZag) {

@@ -341,4 +341,14 @@ class PlanningTest {
         assertEquals("paperWidth", wide.problem().field());
         assertFalse(Files.exists(dir.resolve("wide.pdf")));
     }
+
+    /** The window draws step diagrams as the command line does: the zig-zag's 13 folds on 4 pages. */
+    @Test
+    void stepDiagramsAreDrawnAsTheCommandLineDrawsThem() throws Exception {
+        Plan plan = Planning.plan(Job.ZigZag.DEMO, Progress.NONE);
+        ifold.job.PrintJob.Printed printed = Exports.diagrams(plan, dir.resolve("steps.pdf"), Progress.NONE);
+        assertEquals(4, printed.pages());
+        assertEquals(13, printed.pieces(), "a panel a fold");
+        assertTrue(Files.size(dir.resolve("steps.pdf")) > 10_000);
+    }
 }
