@@ -211,6 +211,53 @@ public final class PaperView {
             camera.setSceneRadius(sceneRadius);
         }
 
+        /**
+         * Fold k's line: its axis in space, as long as the sheet's diagonal each way from the
+         * point the script gave (the panel shows the part over the paper); a valley or mountain as
+         * the script says.
+         */
+        @Override
+        public FoldLine foldLine(int k) {
+            if (k < 0 || k >= result.steps().size()) {
+                return null;
+            }
+            ScriptFolding.Step step = result.steps().get(k);
+            double[] p = step.axisPoint();
+            double[] d = step.axisDirection();
+            // The crease is where the faces the fold changed meet its axis: their corners on it,
+            // which the turn leaves where they were.
+            double reach = Math.hypot(sheet.length(), sheet.width());
+            // Thick paper's faces lie their levels above their planes, and the axis at the paper it
+            // turns: a corner within a thickness or two of the axis lies on the crease.
+            double near = 1e-6 * reach + 2 * sheet.thickness();
+            double low = Double.POSITIVE_INFINITY;
+            double high = Double.NEGATIVE_INFINITY;
+            double[] q = new double[3];
+            for (int i = 0; i < step.faces().length; i++) {
+                Isometry2 pose = step.posesAfter()[i];
+                HostFrame frame = result.frames()[step.hostsAfter()[i]];
+                for (int v : step.loopsAfter()[i]) {
+                    frame.toSpace(pose.x(sheet.u(v), sheet.v(v)), pose.y(sheet.u(v), sheet.v(v)),
+                            (step.levelsAfter()[i] + 0.5) * sheet.thickness(), q, 0);
+                    double wx = q[0] - p[0];
+                    double wy = q[1] - p[1];
+                    double wz = q[2] - p[2];
+                    double t = wx * d[0] + wy * d[1] + wz * d[2];
+                    if (wx * wx + wy * wy + wz * wz - t * t <= near * near) {
+                        low = Math.min(low, t);
+                        high = Math.max(high, t);
+                    }
+                }
+            }
+            if (!(high > low)) {
+                low = -reach;
+                high = reach;
+            }
+            return new FoldLine(new double[] {p[0] + low * d[0], p[1] + low * d[1], p[2] + low * d[2]},
+                    new double[] {p[0] + high * d[0], p[1] + high * d[1], p[2] + high * d[2]},
+                    step.fold().kind() == ifold.script.FoldScript.Kind.VALLEY);
+        }
+
         @Override
         public String describe(double position) {
             List<ScriptFolding.Step> steps = result.steps();

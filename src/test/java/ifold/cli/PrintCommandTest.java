@@ -156,8 +156,19 @@ class PrintCommandTest {
         assertTrue(paper > 200, "paper in the first panel: " + paper + " pixels");
         assertTrue(model > 1000, "the triangle in the first panel: " + model + " pixels");
         // Each fold's crease in its style's colour: the first fold a valley (blue), the second a mountain (red).
-        assertTrue(inked(page, 14, 100, true) > 5 && inked(page, 14, 100, false) == 0, "fold 1's valley, and no mountain, in panel 1");
-        assertTrue(inked(page, 110, 196, false) > 5 && inked(page, 110, 196, true) == 0, "fold 2's mountain, and no valley, in panel 2");
+        assertTrue(inked(page, 50, 14, 100, true) > 5 && inked(page, 50, 14, 100, false) == 0, "fold 1's valley, and no mountain, in panel 1");
+        assertTrue(inked(page, 50, 110, 196, false) > 5 && inked(page, 50, 110, 196, true) == 0, "fold 2's mountain, and no valley, in panel 2");
+        // A fold script's too: pleat20's first fold a valley, its second a mountain.
+        // Its creases are short (the strip's width), so at 150 dpi.
+        assertEquals(0, new ProcessBuilder("pdftoppm", "-r", "150", "-png", "-f", "2", "-l", "2", script.toString(), dir.resolve("pleat").toString())
+                .start().waitFor());
+        java.awt.image.BufferedImage pleat;
+        try (var files = Files.list(dir)) {
+            pleat = javax.imageio.ImageIO.read(files.filter(f -> f.getFileName().toString().startsWith("pleat")).findFirst().orElseThrow()
+                    .toFile());
+        }
+        assertTrue(inked(pleat, 150, 14, 100, true) > 5 && inked(pleat, 150, 14, 100, false) == 0, "pleat20's fold 1, a valley");
+        assertTrue(inked(pleat, 150, 110, 196, false) > 5 && inked(pleat, 150, 110, 196, true) == 0, "pleat20's fold 2, a mountain");
     }
 
     /** A wrap's diagrams: a panel a triangle of its path, its folds counted by kind; the paper beyond a panel not drawn. */
@@ -177,11 +188,12 @@ class PrintCommandTest {
         assertTrue(words.contains("triangle 1 of 58: 6 turn folds, 6 gadget folds, 1 crossing to the next triangle, 1 tuck"), words);
     }
 
-    /** The pixels of a valley's blue (or a mountain's red) in a panel of the top row, from x0 to x1 mm across. */
-    private static int inked(java.awt.image.BufferedImage page, double x0, double x1, boolean blue) {
+    /** The pixels of a valley's blue (or a mountain's red) in a panel of the top row, from x0 to x1 mm across, at {@code dpi}. */
+    private static int inked(java.awt.image.BufferedImage page, double dpi, double x0, double x1, boolean blue) {
         int count = 0;
-        for (int y = (int) (40 * 1.97); y < (int) (100 * 1.97); y++) {
-            for (int x = (int) (x0 * 1.97); x < (int) (x1 * 1.97); x++) {
+        double mm = dpi / 25.4;
+        for (int y = (int) (40 * mm); y < (int) (100 * mm); y++) {
+            for (int x = (int) (x0 * mm); x < (int) (x1 * mm); x++) {
                 int rgb = page.getRGB(x, y) & 0xFFFFFF;
                 int r = rgb >> 16;
                 int g = (rgb >> 8) & 255;
