@@ -79,10 +79,10 @@ final class LoadedModel {
 
     /** One line on {@code err} for each kind of repair made, with its count. */
     void reportRepairs(Path file, PrintWriter err) {
+        JobWatcher printing = printingNotes(err);
         for (String note : ModelFiles.repairNotes(file, loaded.repairs())) {
-            err.println("ifold: " + note);
+            printing.note(note);
         }
-        err.flush();
     }
 
     /** A job's watcher for the commands: each note printed on {@code err} as "ifold: NOTE", as {@link #reportRepairs} prints them. */

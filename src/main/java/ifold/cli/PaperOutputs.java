@@ -187,18 +187,26 @@ final class PaperOutputs {
 
     /** As {@link #exportPrint(List, String, String)}, with a shape to print beside the strip (the demo's triangle). */
     void exportPrint(List<FoldFile.Folded> sheets, String title, String method, CreasePatternPages.Template template) {
+        if (!prints()) {
+            return;
+        }
+        CreasePatternPages pages;
+        try {
+            // Laid out once for both files: the crease pattern is the same.
+            pages = PrintJob.layOut(new PrintJob.Request(sheets, title, method, printOptions, exportPdf != null ? exportPdf : exportSvg,
+                    template), JobWatcher.NONE);
+        } catch (IllegalArgumentException e) {
+            discardWritten();
+            throw UserError.usage("option --paper-width: " + e.getMessage());
+        }
         for (Path file : new Path[] {exportPdf, exportSvg}) {
             if (file == null) {
                 continue;
             }
             try {
-                PrintJob.Printed printed = PrintJob.run(new PrintJob.Request(sheets, title, method, printOptions, file, template),
-                        JobWatcher.NONE);
+                PrintJob.Printed printed = PrintJob.write(pages, file, JobWatcher.NONE);
                 written.addAll(printed.files());
                 wroteLines.add(printed.summary());
-            } catch (IllegalArgumentException e) {
-                discardWritten();
-                throw UserError.usage("option --paper-width: " + e.getMessage());
             } catch (IOException e) {
                 discardWritten();
                 throw new UserError("cannot print the crease pattern: " + e.getMessage());

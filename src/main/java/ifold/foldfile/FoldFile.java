@@ -149,7 +149,7 @@ public final class FoldFile {
 
     /** The crease patterns of {@code sheets}, one a sheet, their fold steps counted over all of them as the FOLD file counts them. */
     public static List<SheetCreases> creases(List<Folded> sheets) {
-        Pattern pattern = new Pattern(sheets);
+        Pattern pattern = new Pattern(sheets, false); // the faces' order in the folded state: not drawn
         List<SheetCreases> all = new ArrayList<>();
         for (int k = 0; k < sheets.size(); k++) {
             Sheet sheet = sheets.get(k).sheet();
@@ -197,6 +197,11 @@ public final class FoldFile {
         Counts counts;
 
         Pattern(List<Folded> sheets) {
+            this(sheets, true);
+        }
+
+        /** With {@code withOrders}, the folded state's face orders too (a FOLD file's); without, the crease pattern alone. */
+        Pattern(List<Folded> sheets, boolean withOrders) {
             this.sheets = sheets;
             vertexBase = new int[sheets.size()];
             faceBase = new int[sheets.size()];
@@ -252,7 +257,9 @@ public final class FoldFile {
                         }
                     }
                 }
-                findOrders(k);
+                if (withOrders) {
+                    findOrders(k);
+                }
             }
             folds.sort(Comparator.<long[]>comparingLong(f -> f[0]).thenComparingLong(f -> f[1])
                     .thenComparingLong(f -> f[2]));

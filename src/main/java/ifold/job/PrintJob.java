@@ -83,21 +83,40 @@ public final class PrintJob {
     }
 
     /**
-     * Lays out and prints. On failure the files already written are taken back.
+     * Lays out and prints to the request's file. On failure the files already written are taken back.
      *
      * @throws IllegalArgumentException where the width asked does not fit the page, or would take
      *     more than {@link CreasePatternPages#MOST_PAGES} pages (naming a width that fits)
      * @throws IOException where a file cannot be written
      */
     public static Printed run(Request request, JobWatcher watcher) throws IOException {
-        Path file = request.file();
-        if (!prints(file)) {
-            throw new IllegalArgumentException("a crease pattern is printed as .pdf or .svg, got " + file.getFileName());
-        }
+        return write(layOut(request, watcher), request.file(), watcher);
+    }
+
+    /**
+     * The request's crease pattern laid out on pages, to write to one file or more ({@link #write}).
+     *
+     * @throws IllegalArgumentException as {@link #run} says
+     */
+    public static CreasePatternPages layOut(Request request, JobWatcher watcher) {
         watcher.stage("laying out the crease pattern");
         CreasePatternPages pages = CreasePatternPages.of(request.title(), request.method(), FoldFile.creases(request.sheets()),
                 request.options(), request.template());
         watcher.stopIfAsked();
+        return pages;
+    }
+
+    /**
+     * Writes {@code pages} to {@code file}: a PDF, or SVG files a page. On failure the files
+     * already written are taken back.
+     *
+     * @throws IllegalArgumentException where the file is named neither .pdf nor .svg
+     * @throws IOException where a file cannot be written
+     */
+    public static Printed write(CreasePatternPages pages, Path file, JobWatcher watcher) throws IOException {
+        if (!prints(file)) {
+            throw new IllegalArgumentException("a crease pattern is printed as .pdf or .svg, got " + file.getFileName());
+        }
         watcher.stage("printing " + file.getFileName());
         List<Path> written = new ArrayList<>();
         boolean done = false;

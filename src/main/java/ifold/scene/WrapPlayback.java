@@ -357,14 +357,20 @@ public final class WrapPlayback implements Animation {
         for (int j = firstStep[k]; j < endStep[k]; j++) {
             kinds[steps.get(j).kind().ordinal()]++;
         }
-        String[] words = {"turn fold", "gadget fold", "crossing to the next triangle", "overlap", "tuck", "end of the strip"};
         StringBuilder text = new StringBuilder(String.format(java.util.Locale.ROOT, "triangle %d of %d:", k + 1, triangles));
         String separator = " ";
         for (Wrap.Kind kind : Wrap.Kind.values()) {
             int n = kinds[kind.ordinal()];
             if (n > 0) {
-                text.append(separator).append(n).append(' ').append(words[kind.ordinal()]).append(n == 1 || kind == Wrap.Kind.EDGE_CROSSING
-                        || kind == Wrap.Kind.END ? "" : "s");
+                String word = switch (kind) {
+                    case ZIGZAG_TURN -> n == 1 ? "turn fold" : "turn folds";
+                    case TURN_GADGET -> n == 1 ? "gadget fold" : "gadget folds";
+                    case EDGE_CROSSING -> "crossing to the next triangle";
+                    case OVERLAP -> n == 1 ? "overlap" : "overlaps";
+                    case TUCK -> n == 1 ? "tuck" : "tucks";
+                    case END -> "end of the strip";
+                };
+                text.append(separator).append(n).append(' ').append(word);
                 separator = ", ";
             }
         }

@@ -105,6 +105,8 @@ class PrintCommandTest {
         }
         CliTest.Run wrongName = CliTest.run("demo", "zigzag", "--no-view", "--export-pdf", dir.resolve("out.png").toString());
         CliTest.assertOneLineError(wrongName, "--export-pdf");
+        CliTest.Run wrongSvg = CliTest.run("demo", "zigzag", "--no-view", "--export-svg", dir.resolve("out.pdf").toString());
+        CliTest.assertOneLineError(wrongSvg, "--export-svg");
     }
 
     /**
