@@ -13,5 +13,7 @@ public enum Ink {
     /** A glue tab's outline: dotted grey. */
     TAB,
     /** The scale bar and its ticks: solid black. */
-    SCALE
+    SCALE,
+    /** A diagram's arrow (the motion of a fold, turn over): solid black, heavier. */
+    ARROW
 }

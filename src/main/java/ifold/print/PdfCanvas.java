@@ -59,6 +59,7 @@ public final class PdfCanvas implements Canvas, AutoCloseable {
             case MOUNTAIN -> style(0xc6, 0x28, 0x28, 0.25, new float[] {2.4f, 0.8f, 0.4f, 0.8f, 0.4f, 0.8f});
             case FLAT -> style(0xc8, 0xc8, 0xc8, 0.1, new float[0]);
             case TAB -> style(0x80, 0x80, 0x80, 0.2, new float[] {0.5f, 0.7f});
+            case ARROW -> style(0, 0, 0, 0.4, new float[0]);
             default -> throw new IllegalArgumentException("no style for " + ink);
         }
     }

@@ -108,17 +108,35 @@ final class SceneDrawing {
      */
     static void line(Scene scene, Canvas canvas, double x, double y, double width, double height, double[] from, double[] to, Ink ink)
             throws IOException {
-        Camera camera = scene.camera();
-        Matrix4d viewProjection = camera.projectionMatrix(width / height, new Matrix4d()).mul(camera.viewMatrix(new Matrix4d()));
-        Vector4d a = viewProjection.transform(new Vector4d(from[0], from[1], from[2], 1));
-        Vector4d b = viewProjection.transform(new Vector4d(to[0], to[1], to[2], 1));
-        if (!(a.w > 0) || !(b.w > 0)) {
+        double[] a = project(scene, x, y, width, height, from);
+        double[] b = project(scene, x, y, width, height, to);
+        if (a == null || b == null) {
             return;
         }
         canvas.beginClip(x, y, width, height);
-        canvas.line(x + (a.x / a.w + 1) / 2 * width, y + (1 - a.y / a.w) / 2 * height, x + (b.x / b.w + 1) / 2 * width,
-                y + (1 - b.y / b.w) / 2 * height, ink);
+        canvas.line(a[0], a[1], b[0], b[1], ink);
         canvas.endClip();
+    }
+
+    /**
+     * Where the scene's camera sees {@code point} (x, y, z) in the panel (x, y) to (x + width,
+     * y + height), in millimetres on the page; null where it lies behind the camera.
+     */
+    static double[] project(Scene scene, double x, double y, double width, double height, double[] point) {
+        Camera camera = scene.camera();
+        Matrix4d viewProjection = camera.projectionMatrix(width / height, new Matrix4d()).mul(camera.viewMatrix(new Matrix4d()));
+        Vector4d p = viewProjection.transform(new Vector4d(point[0], point[1], point[2], 1));
+        if (!(p.w > 0)) {
+            return null;
+        }
+        return new double[] {x + (p.x / p.w + 1) / 2 * width, y + (1 - p.y / p.w) / 2 * height};
+    }
+
+    /** The direction the scene's camera looks in, in space (a unit vector). */
+    static Vector3d viewDirection(Scene scene) {
+        Matrix4d view = scene.camera().viewMatrix(new Matrix4d());
+        // The view matrix's third row is the camera's backward axis in world coordinates.
+        return new Vector3d(-view.m02(), -view.m12(), -view.m22()).normalize();
     }
 
     /** Whether the geometry and every node above it are visible. */

@@ -1,11 +1,13 @@
 package ifold.print;
 
 import ifold.scene.Animation;
+import ifold.scene.Camera;
 import ifold.scene.Scene;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import org.joml.Vector3d;
 
 /**
  * Step diagrams: a panel a fold, six to an A4 page, each the scene the movie shows half way
@@ -24,6 +26,13 @@ public final class StepDiagrams {
     private static final double CAPTION = 9;
     /** How far into each fold its panel shows it. */
     static final double MIDWAY = 0.5;
+    /**
+     * Below this cosine between the directions two panels are seen from, the later one shows
+     * the paper's other side: it gets the turn-over symbol.
+     */
+    private static final double TURNED_OVER = -0.3;
+    /** How many times a panel's camera may move to show its fold whole. */
+    private static final int FITTING = 6;
 
     private StepDiagrams() {
     }
@@ -67,6 +76,7 @@ public final class StepDiagrams {
             y += 3.6;
         }
         canvas.endPage();
+        Vector3d lookedBefore = null;
         double panelWidth = (WIDTH - 2 * MARGIN - (COLUMNS - 1) * GUTTER) / COLUMNS;
         double panelHeight = (HEIGHT - 2 * MARGIN - HEADER - (ROWS - 1) * GUTTER) / ROWS;
         for (int k = 0; k < folds; k++) {
@@ -85,12 +95,26 @@ public final class StepDiagrams {
             double start = animation.foldStart(k);
             double end = animation.foldStart(k + 1);
             animation.apply(start + MIDWAY * (end - start));
-            SceneDrawing.draw(scene, canvas, x, top + CAPTION, panelWidth, panelHeight - CAPTION);
             Animation.FoldLine crease = animation.foldLine(k);
+            Camera camera = scene.camera();
+            Vector3d target = new Vector3d(camera.target());
+            double distance = camera.distance();
+            fit(scene, panelWidth, panelHeight - CAPTION, crease, animation.foldPath(k));
+            SceneDrawing.draw(scene, canvas, x, top + CAPTION, panelWidth, panelHeight - CAPTION);
+            Vector3d looking = SceneDrawing.viewDirection(scene);
+            // A valley seen from the other side is a mountain: the panel says what its eye sees.
+            boolean valley = crease == null || crease.valleyLookingAlong(new double[] {looking.x, looking.y, looking.z});
             if (crease != null) {
                 SceneDrawing.line(scene, canvas, x, top + CAPTION, panelWidth, panelHeight - CAPTION, crease.from(), crease.to(),
-                        crease.valley() ? Ink.VALLEY : Ink.MOUNTAIN);
+                        valley ? Ink.VALLEY : Ink.MOUNTAIN);
             }
+            arrow(scene, animation, k, valley, canvas, x, top + CAPTION, panelWidth, panelHeight - CAPTION);
+            if (lookedBefore != null && lookedBefore.dot(looking) < TURNED_OVER) {
+                DiagramArrows.turnOver(canvas, x + panelWidth - 9, top + CAPTION + 6, 3.5);
+            }
+            lookedBefore = looking;
+            camera.setTarget(target);
+            camera.setDistance(distance);
             canvas.outline(new double[] {x, top + CAPTION, x + panelWidth, top + CAPTION, x + panelWidth, top + panelHeight, x,
                 top + panelHeight}, Ink.FLAT);
             canvas.text(x, top + 4.2, 4.2, Integer.toString(k + 1), true);
@@ -103,6 +127,72 @@ public final class StepDiagrams {
             canvas.endPage();
         }
         return folds;
+    }
+
+    /**
+     * Moves the camera back, and towards them, until the fold's crease and the way its flap
+     * travels lie inside the panel, a tenth of it clear of the border: a wrap's view follows its
+     * triangle, and a fold at its edge would fall outside.
+     */
+    static void fit(Scene scene, double width, double height, Animation.FoldLine crease, double[][] path) {
+        List<double[]> points = new ArrayList<>();
+        if (crease != null) {
+            points.add(crease.from());
+            points.add(crease.to());
+        }
+        if (path != null) {
+            points.addAll(List.of(path));
+        }
+        if (points.isEmpty()) {
+            return;
+        }
+        Camera camera = scene.camera();
+        for (int tries = 0; tries < FITTING && !inside(scene, width, height, points); tries++) {
+            if (tries == 0) {
+                Vector3d centre = new Vector3d();
+                for (double[] p : points) {
+                    centre.add(p[0], p[1], p[2]);
+                }
+                centre.div(points.size());
+                camera.setTarget(new Vector3d(camera.target()).lerp(centre, 0.5));
+            } else {
+                camera.setDistance(1.3 * camera.distance());
+            }
+        }
+    }
+
+    private static boolean inside(Scene scene, double width, double height, List<double[]> points) {
+        for (double[] point : points) {
+            double[] p = SceneDrawing.project(scene, 0, 0, width, height, point);
+            if (p == null || p[0] < 0.1 * width || p[0] > 0.9 * width || p[1] < 0.1 * height || p[1] > 0.9 * height) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /**
+     * Fold k's arrow over its panel: the way its flap travels, from before the fold to after, as
+     * the panel's camera sees it.
+     *
+     * @return whether one was drawn
+     */
+    static boolean arrow(Scene scene, Animation animation, int k, boolean valley, Canvas canvas, double x, double y, double width,
+            double height) throws IOException {
+        double[][] path = animation.foldPath(k);
+        if (path == null) {
+            return false;
+        }
+        double[] start = SceneDrawing.project(scene, x, y, width, height, path[0]);
+        double[] middle = SceneDrawing.project(scene, x, y, width, height, path[path.length / 2]);
+        double[] end = SceneDrawing.project(scene, x, y, width, height, path[path.length - 1]);
+        if (start == null || middle == null || end == null) {
+            return false;
+        }
+        canvas.beginClip(x, y, width, height);
+        boolean drawn = DiagramArrows.fold(canvas, start, middle, end, valley);
+        canvas.endClip();
+        return drawn;
     }
 
     /** Fold k's caption, as the movie says it while the fold is made. */

@@ -45,6 +45,7 @@ public final class SvgCanvas implements Canvas {
                 .append(".flat { stroke: #c8c8c8; stroke-width: 0.1; fill: none; }\n")
                 .append(".tab { stroke: #808080; stroke-width: 0.2; fill: none; stroke-dasharray: 0.5 0.7; }\n")
                 .append(".scale { stroke: #000000; stroke-width: 0.3; fill: none; }\n")
+                .append(".arrow { stroke: #000000; stroke-width: 0.4; fill: none; }\n")
                 .append("text { font-family: Helvetica, Arial, sans-serif; fill: #000000; }\n")
                 .append(".bold { font-weight: bold; }\n")
                 .append("</style>\n");

@@ -28,14 +28,35 @@ public interface Animation {
 
     /**
      * Fold {@code k}'s crease in space, for its panel: from x, y, z to x, y, z, and whether it is a
-     * valley seen from the paper's top side (else a mountain); null where the animation does not
-     * say.
+     * valley (else a mountain) seen from the side {@code seenFrom} points to (a unit vector; null:
+     * from wherever the panel looks, as a fold script says it). A diagram draws a valley seen from
+     * the other side as a mountain.
      */
-    record FoldLine(double[] from, double[] to, boolean valley) {
+    record FoldLine(double[] from, double[] to, boolean valley, double[] seenFrom) {
+        /** Whether it is a valley seen by an eye looking along {@code looking}. */
+        public boolean valleyLookingAlong(double[] looking) {
+            if (seenFrom == null) {
+                return valley;
+            }
+            double along = seenFrom[0] * looking[0] + seenFrom[1] * looking[1] + seenFrom[2] * looking[2];
+            return along > 0 ? !valley : valley;
+        }
     }
 
     /** See {@link FoldLine}. */
     default FoldLine foldLine(int k) {
+        return null;
+    }
+
+    /** How many points a {@link #foldPath} has. */
+    int PATH_POINTS = 9;
+
+    /**
+     * The way a point of fold {@code k}'s flap travels, in space: where it lies before the fold,
+     * points along its swing, where it lands; for the panel's arrow. Null where the animation does
+     * not say (a step of many folds).
+     */
+    default double[][] foldPath(int k) {
         return null;
     }
 

@@ -255,7 +255,49 @@ public final class PaperView {
             }
             return new FoldLine(new double[] {p[0] + low * d[0], p[1] + low * d[1], p[2] + low * d[2]},
                     new double[] {p[0] + high * d[0], p[1] + high * d[1], p[2] + high * d[2]},
-                    step.fold().kind() == ifold.script.FoldScript.Kind.VALLEY);
+                    step.fold().kind() == ifold.script.FoldScript.Kind.VALLEY, null);
+        }
+
+        /** The centre of the paper fold k turns, as it lay before the fold, swung about the fold's axis. */
+        @Override
+        public double[][] foldPath(int k) {
+            if (k < 0 || k >= result.steps().size()) {
+                return null;
+            }
+            ScriptFolding.Step step = result.steps().get(k);
+            java.util.Set<Integer> moved = new java.util.HashSet<>();
+            for (int f : step.moved()) {
+                moved.add(f);
+            }
+            double[] centre = new double[3];
+            double[] q = new double[3];
+            int corners = 0;
+            for (int i = 0; i < step.faces().length; i++) {
+                if (!moved.contains(step.faces()[i])) {
+                    continue;
+                }
+                Isometry2 pose = step.posesBefore()[i];
+                HostFrame frame = result.frames()[step.hostsBefore()[i]];
+                for (int v : step.loopsAfter()[i]) {
+                    frame.toSpace(pose.x(sheet.u(v), sheet.v(v)), pose.y(sheet.u(v), sheet.v(v)),
+                            (step.levelsBefore()[i] + 0.5) * sheet.thickness(), q, 0);
+                    for (int axis = 0; axis < 3; axis++) {
+                        centre[axis] += q[axis];
+                    }
+                    corners++;
+                }
+            }
+            if (corners == 0) {
+                return null;
+            }
+            for (int axis = 0; axis < 3; axis++) {
+                centre[axis] /= corners;
+            }
+            double[][] path = new double[PATH_POINTS][];
+            for (int p = 0; p < PATH_POINTS; p++) {
+                path[p] = turned(centre, step.axisPoint(), step.axisDirection(), step.angle() * p / (PATH_POINTS - 1));
+            }
+            return path;
         }
 
         @Override

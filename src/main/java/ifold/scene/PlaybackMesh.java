@@ -29,44 +29,11 @@ final class PlaybackMesh {
     SceneMesh currentMesh(Wrap.Strip strip, Wrap.Step step, int j, int firstFace, double fraction) {
         Sheet sheet = strip.sheet();
         int end = step.facesAfter();
-        int count = end - firstFace;
-        int[][] loops = new int[count][];
-        Isometry2[] poses = new Isometry2[count];
-        for (int f = firstFace; f < end; f++) {
-            loops[f - firstFace] = sheet.loop(f);
-            poses[f - firstFace] = sheet.pose(f);
-        }
-        // Undo the tucks of this triangle after the one shown.
-        int lastStep = j;
-        while (lastStep + 1 < playback.steps.size() && playback.triangleOf[lastStep + 1] == playback.triangleOf[j]) {
-            lastStep++;
-        }
-        for (int q = lastStep; q > j; q--) {
-            Tuck tuck = playback.steps.get(q).tuck();
-            if (tuck == null) {
-                continue;
-            }
-            for (int c = 0; c < tuck.changed().length; c++) {
-                int f = tuck.changed()[c];
-                if (f >= firstFace && f < end) {
-                    loops[f - firstFace] = tuck.loopsBefore()[c];
-                    poses[f - firstFace] = tuck.posesBefore()[c];
-                }
-            }
-        }
-        // A tuck being shown: its faces are cut already, and the flap turns from where it lay
-        // (its reflection back over the tuck line) to under the paper.
-        java.util.Set<Integer> turning = new java.util.HashSet<>();
-        Tuck shownTuck = step.kind() == Wrap.Kind.TUCK ? step.tuck() : null;
-        if (shownTuck != null) {
-            Isometry2 back = Isometry2.reflection(shownTuck.px(), shownTuck.py(), shownTuck.dx(), shownTuck.dy());
-            for (int f : shownTuck.moved()) {
-                if (f >= firstFace && f < end) {
-                    turning.add(f);
-                    poses[f - firstFace] = back.after(poses[f - firstFace]);
-                }
-            }
-        }
+        Pieces pieces = pieces(sheet, step, j, firstFace);
+        int[][] loops = pieces.loops();
+        Isometry2[] poses = pieces.poses();
+        java.util.Set<Integer> turning = pieces.turning();
+        Tuck shownTuck = pieces.tuck();
         int[] levels = playback.levels[step.strip()];
         double thickness = sheet.thickness();
         List<double[]> points = new ArrayList<>();
@@ -116,11 +83,126 @@ final class PlaybackMesh {
     }
 
     /**
+     * The faces of the triangle being wrapped at step j as they stand then, from {@code firstFace}:
+     * their loops and poses (the final state with this triangle's tucks after step j undone; the
+     * flap of a tuck being shown laid back over its line), and the faces of that flap.
+     */
+    private record Pieces(int[][] loops, Isometry2[] poses, java.util.Set<Integer> turning, Tuck tuck) {
+    }
+
+    private Pieces pieces(Sheet sheet, Wrap.Step step, int j, int firstFace) {
+        int end = step.facesAfter();
+        int count = end - firstFace;
+        int[][] loops = new int[count][];
+        Isometry2[] poses = new Isometry2[count];
+        for (int f = firstFace; f < end; f++) {
+            loops[f - firstFace] = sheet.loop(f);
+            poses[f - firstFace] = sheet.pose(f);
+        }
+        // Undo the tucks of this triangle after the one shown.
+        int lastStep = j;
+        while (lastStep + 1 < playback.steps.size() && playback.triangleOf[lastStep + 1] == playback.triangleOf[j]) {
+            lastStep++;
+        }
+        for (int q = lastStep; q > j; q--) {
+            Tuck tuck = playback.steps.get(q).tuck();
+            if (tuck == null) {
+                continue;
+            }
+            for (int c = 0; c < tuck.changed().length; c++) {
+                int f = tuck.changed()[c];
+                if (f >= firstFace && f < end) {
+                    loops[f - firstFace] = tuck.loopsBefore()[c];
+                    poses[f - firstFace] = tuck.posesBefore()[c];
+                }
+            }
+        }
+        // A tuck being shown: its faces are cut already, and the flap turns from where it lay
+        // (its reflection back over the tuck line) to under the paper.
+        java.util.Set<Integer> turning = new java.util.HashSet<>();
+        Tuck shownTuck = step.kind() == Wrap.Kind.TUCK ? step.tuck() : null;
+        if (shownTuck != null) {
+            Isometry2 back = Isometry2.reflection(shownTuck.px(), shownTuck.py(), shownTuck.dx(), shownTuck.dy());
+            for (int f : shownTuck.moved()) {
+                if (f >= firstFace && f < end) {
+                    turning.add(f);
+                    poses[f - firstFace] = back.after(poses[f - firstFace]);
+                }
+            }
+        }
+        return new Pieces(loops, poses, turning, shownTuck);
+    }
+
+    /**
+     * The way the centre of step j's moving paper travels, {@link Animation#PATH_POINTS} points
+     * from before the fold to after: the tail swinging about its new crease, or a tuck's flap
+     * turning under; null for a step that moves neither.
+     */
+    double[][] flapPath(Wrap.Strip strip, Wrap.Step step, int j, int firstFace) {
+        Sheet sheet = strip.sheet();
+        double[][] path = new double[Animation.PATH_POINTS][];
+        if (step.tail() != null && step.kind() != Wrap.Kind.END) {
+            Swing swing = swing(sheet, step.strip(), step.tail());
+            // The tail piece's far end, two widths beyond the crease: the flap's tip, where a
+            // diagram's arrow starts.
+            double[] centre = new double[3];
+            for (int axis = 0; axis < 3; axis++) {
+                centre[axis] = (swing.from()[1][axis] + swing.from()[2][axis]) / 2;
+            }
+            for (int p = 0; p < path.length; p++) {
+                path[p] = WrapView.rotate(centre, swing.origin(), swing.axis(), swing.angle() * p / (path.length - 1));
+            }
+            return path;
+        }
+        Pieces pieces = pieces(sheet, step, j, firstFace);
+        if (pieces.tuck() == null || pieces.turning().isEmpty()) {
+            return null;
+        }
+        int[] levels = playback.levels[step.strip()];
+        double[] centre = new double[3];
+        int corners = 0;
+        for (int f : pieces.turning()) {
+            Isometry2 pose = pieces.poses()[f - firstFace];
+            HostFrame on = playback.result.frames()[sheet.host(f)];
+            double[] point = new double[3];
+            for (int v : pieces.loops()[f - firstFace]) {
+                on.toSpace(pose.x(sheet.u(v), sheet.v(v)), pose.y(sheet.u(v), sheet.v(v)), (levels[f] + 0.5) * sheet.thickness(), point, 0);
+                for (int axis = 0; axis < 3; axis++) {
+                    centre[axis] += point[axis];
+                }
+                corners++;
+            }
+        }
+        for (int axis = 0; axis < 3; axis++) {
+            centre[axis] /= corners;
+        }
+        Tuck tuck = pieces.tuck();
+        HostFrame frame = playback.result.frames()[tuck.host()];
+        for (int p = 0; p < path.length; p++) {
+            path[p] = WrapView.turnAbout(centre, frame, tuck.px(), tuck.py(), tuck.dx(), tuck.dy(), Math.PI * p / (path.length - 1));
+        }
+        return path;
+    }
+
+    /** A tail's swing: its piece's corners before, and the turn about its crease that lays it where the fold does. */
+    private record Swing(double[][] from, Vector3d origin, Vector3d axis, double angle) {
+    }
+
+    /**
      * The tail beyond its new crease, two widths of it, swinging from where it would run on
      * unfolded to where the fold lays it: a turn about the crease line in space.
      */
     private void addTail(Sheet sheet, int strip, Wrap.TailMove move, double fraction, List<double[]> points, List<int[]> triangles,
             List<Integer> colors) {
+        Swing swing = swing(sheet, strip, move);
+        double[][] corners = new double[4][];
+        for (int c = 0; c < 4; c++) {
+            corners[c] = WrapView.rotate(swing.from()[c], swing.origin(), swing.axis(), swing.angle() * fraction);
+        }
+        WrapView.addPolygon(corners, PaperView.CAP, points, triangles, colors);
+    }
+
+    private Swing swing(Sheet sheet, int strip, Wrap.TailMove move) {
         double w = sheet.width();
         double[][] paper = {{move.u0(), 0}, {move.u0() + 2 * w, 0}, {move.u1() + 2 * w, w}, {move.u1(), w}};
         HostFrame before = playback.result.frames()[move.hostBefore()];
@@ -147,11 +229,7 @@ final class PlaybackMesh {
             double sign = new Vector3d(axis).cross(out0).dot(up) > 0 ? 1 : -1;
             angle = move.over() ? sign * Math.PI : -sign * Math.PI;
         }
-        double[][] corners = new double[4][];
-        for (int c = 0; c < 4; c++) {
-            corners[c] = WrapView.rotate(from[c], a, axis, angle * fraction);
-        }
-        WrapView.addPolygon(corners, PaperView.CAP, points, triangles, colors);
+        return new Swing(from, a, axis, angle);
     }
 
     /** The area of triangle t of the mesh. */

@@ -79,6 +79,11 @@ public final class WrapPlayback implements Animation {
     int[] firstStep;
 
     int[] endStep;
+
+    /** For each panel of the step diagrams, its first step, and whether it shows that step alone. */
+    int[] panelFirst;
+
+    boolean[] panelIsStep;
     /** The paper being folded, as it stands at each moment. */
     final PlaybackMesh meshes = new PlaybackMesh(this);
     /** Where the camera looks as the wrap plays. */
@@ -152,6 +157,7 @@ public final class WrapPlayback implements Animation {
         for (int j = 0; j < steps.size(); j++) {
             endStep[triangleOf[j]] = j + 1;
         }
+        layOutPanels();
         pace(WrapView.DEFAULT_SECONDS);
     }
 
@@ -300,33 +306,72 @@ public final class WrapPlayback implements Animation {
     }
 
     /**
-     * The folds of step diagrams: each fold of a path of one or two triangles (the demos), and
-     * each triangle of a longer path, its passes, gadgets, crossing and tucks in one panel.
+     * The folds of step diagrams: each fold of a path of one or two triangles (the demos); for a
+     * longer path, each fold of its first triangle, then each later triangle, its passes, gadgets,
+     * crossing and tucks in one panel.
      */
     @Override
     public int foldCount() {
-        return triangles > 2 ? triangles : steps.size();
+        return panelFirst.length;
     }
 
     @Override
     public double foldStart(int k) {
-        if (triangles > 2) {
-            return k >= triangles ? WrapView.REVEAL_STEPS : slotStart[k];
+        if (steps.isEmpty()) {
+            return 0;
         }
-        return positionAfter(k);
+        return k >= panelFirst.length ? stepStart[steps.size()] : stepStart[panelFirst[k]];
+    }
+
+    /** The step a panel shows alone, or -1 where it shows a triangle's folds together. */
+    private int stepOfPanel(int k) {
+        return k >= 0 && k < panelFirst.length && panelIsStep[k] ? panelFirst[k] : -1;
     }
 
     /**
-     * A demo's fold's crease: a fold of the tail across the strip where it lay before (over: a
-     * valley from the top side), or a tuck's line along its host's edge (its flap goes under: a
-     * mountain). A wrap's panels, a triangle each, have none.
+     * The panels of the step diagrams: for each, its first step and whether it shows that step
+     * alone (else the steps of its triangle).
+     */
+    private void layOutPanels() {
+        List<Integer> first = new ArrayList<>();
+        List<Boolean> alone = new ArrayList<>();
+        boolean detailed = false;
+        for (int t = 0; t < triangles; t++) {
+            if (endStep[t] <= firstStep[t]) {
+                continue;
+            }
+            boolean byFold = triangles <= 2 || !detailed;
+            detailed = true;
+            if (byFold) {
+                for (int j = firstStep[t]; j < endStep[t]; j++) {
+                    first.add(j);
+                    alone.add(true);
+                }
+            } else {
+                first.add(firstStep[t]);
+                alone.add(false);
+            }
+        }
+        panelFirst = first.stream().mapToInt(Integer::intValue).toArray();
+        panelIsStep = new boolean[alone.size()];
+        for (int k = 0; k < panelIsStep.length; k++) {
+            panelIsStep[k] = alone.get(k);
+        }
+    }
+
+    /**
+     * A fold's crease, where its panel shows one fold: a fold of the tail across the strip where
+     * it lay before (over: a valley seen from outside the host, the side its normal points to), or
+     * a tuck's line along its host's edge (its flap goes under: a mountain from outside). A panel
+     * of a whole triangle has none.
      */
     @Override
     public FoldLine foldLine(int k) {
-        if (triangles > 2 || k >= steps.size()) {
+        int j = stepOfPanel(k);
+        if (j < 0) {
             return null;
         }
-        Wrap.Step step = steps.get(k);
+        Wrap.Step step = steps.get(j);
         double[] from = new double[3];
         double[] to = new double[3];
         if (step.tail() != null) {
@@ -335,24 +380,47 @@ public final class WrapPlayback implements Animation {
             HostFrame frame = result.frames()[tail.hostBefore()];
             frame.toSpace(tail.before().x(tail.u0(), 0), tail.before().y(tail.u0(), 0), 0, from, 0);
             frame.toSpace(tail.before().x(tail.u1(), w), tail.before().y(tail.u1(), w), 0, to, 0);
-            return new FoldLine(from, to, tail.over());
+            return new FoldLine(from, to, tail.over(), frame.normal().clone());
         }
         if (step.tuck() != null) {
             Tuck tuck = step.tuck();
             HostFrame frame = result.frames()[tuck.host()];
             frame.toSpace(tuck.px(), tuck.py(), 0, from, 0);
             frame.toSpace(tuck.px() + tuck.dx(), tuck.py() + tuck.dy(), 0, to, 0);
-            return new FoldLine(from, to, false);
+            return new FoldLine(from, to, false, frame.normal().clone());
         }
         return null;
     }
 
-    /** A wrap's panel, a triangle of its path: its folds by kind; a demo's, as the movie says it. */
+    /** The way the paper a lone fold moves travels, for its panel's arrow. */
+    @Override
+    public double[][] foldPath(int k) {
+        int j = stepOfPanel(k);
+        if (j < 0) {
+            return null;
+        }
+        Wrap.Step step = steps.get(j);
+        Wrap.Strip strip = result.strips().get(step.strip());
+        int i = step.pathIndex();
+        return meshes.flapPath(strip, step, j, i > 0 ? strip.facesAfter()[i - 1] : 0);
+    }
+
+    /**
+     * A demo's panel, as the movie says it; a wrap's panel of one fold of its first triangle, that
+     * fold's own words; a wrap's panel of a triangle, its folds by kind.
+     */
     @Override
     public String foldCaption(int k) {
         if (triangles <= 2) {
             return describe((foldStart(k) + foldStart(k + 1)) / 2);
         }
+        int alone = stepOfPanel(k);
+        if (alone >= 0) {
+            int t = triangleOf[alone];
+            return String.format(java.util.Locale.ROOT, "%s (fold %d of %d)", describeStep(alone), alone - firstStep[t] + 1,
+                    endStep[t] - firstStep[t]);
+        }
+        k = triangleOf[panelFirst[k]];
         int[] kinds = new int[Wrap.Kind.values().length];
         for (int j = firstStep[k]; j < endStep[k]; j++) {
             kinds[steps.get(j).kind().ordinal()]++;

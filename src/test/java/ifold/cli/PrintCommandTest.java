@@ -173,13 +173,17 @@ class PrintCommandTest {
         assertTrue(inked(pleat, 150, 110, 196, false) > 5 && inked(pleat, 150, 110, 196, true) == 0, "pleat20's fold 2, a mountain");
     }
 
-    /** A wrap's diagrams: a panel a triangle of its path, its folds counted by kind; the paper beyond a panel not drawn. */
+    /**
+     * A wrap's diagrams: its first triangle fold by fold, then a panel a triangle of its path, its
+     * folds counted by kind; the paper beyond a panel not drawn.
+     */
     @Test
     void aWrapsStepDiagramsHaveAPanelATriangle() throws Exception {
         Path pdf = dir.resolve("cube-steps.pdf");
         CliTest.Run run = CliTest.run("wrap", "models/cube.off", "--no-view", "--export-diagrams", pdf.toString());
         assertEquals(0, run.code(), run.err());
-        assertTrue(run.out().contains("wrote " + pdf + ": 11 pages, 58 steps"), run.out());
+        // The first triangle fold by fold (14 panels), then the 57 others a panel each.
+        assertTrue(run.out().contains("wrote " + pdf + ": 13 pages, 71 steps"), run.out());
         assertTrue(Files.size(pdf) < 5_000_000, "the paper outside each panel left out: " + Files.size(pdf) + " bytes");
         if (!tool("pdftotext")) {
             return;
@@ -187,7 +191,11 @@ class PrintCommandTest {
         Path text = dir.resolve("cube-steps.txt");
         assertEquals(0, new ProcessBuilder("pdftotext", "-f", "2", "-l", "2", pdf.toString(), text.toString()).start().waitFor());
         String words = Files.readString(text).replaceAll("\\s+", " ");
-        assertTrue(words.contains("triangle 1 of 58: 6 turn folds, 6 gadget folds, 1 crossing to the next triangle, 1 tuck"), words);
+        assertTrue(words.contains("triangle 1 of 58: pass 1 of 5: turn, 45° valley fold (fold 1 of 14)"), words);
+        Path later = dir.resolve("cube-later.txt");
+        assertEquals(0, new ProcessBuilder("pdftotext", "-f", "4", "-l", "4", pdf.toString(), later.toString()).start().waitFor());
+        words = Files.readString(later).replaceAll("\\s+", " ");
+        assertTrue(words.contains("triangle 2 of 58: 4 turn folds, 2 gadget folds"), words);
     }
 
     /** The pixels of a valley's blue (or a mountain's red) in a panel of the top row, from x0 to x1 mm across, at {@code dpi}. */
