@@ -65,8 +65,9 @@ final class PaperOutputs {
             + " mountain, flat, tab) for cutting machines")
     Path exportSvg;
 
-    @Option(names = "--paper-width", paramLabel = "LENGTH", defaultValue = "2cm",
-            description = "how wide the strip (or the sheet) is printed: 2cm, 20mm, 0.8in (default ${DEFAULT-VALUE})")
+    @Option(names = "--paper-width", paramLabel = "LENGTH", defaultValue = Lengths.AUTOMATIC,
+            description = "how wide the strip (or the sheet) is printed: 2cm, 20mm, 0.8in, or auto: 2cm for a strip, a sheet"
+            + " (a fold script's square) as large as fits the page (default ${DEFAULT-VALUE})")
     String paperWidth;
 
     @Option(names = "--page", paramLabel = "PAGE", defaultValue = "a4",

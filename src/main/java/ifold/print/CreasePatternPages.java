@@ -6,10 +6,10 @@ import java.io.IOException;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Comparator;
-import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.TreeMap;
 
 /**
  * The crease pattern of strips (or sheets) laid out on pages at real size and drawn: each strip
@@ -38,7 +38,15 @@ public final class CreasePatternPages {
     /** The most pages printed: beyond, the width asked is refused as too wide for the strip's length. */
     public static final int MOST_PAGES = 500;
 
-    /** How to print: the strip's width on paper, in millimetres, and the page. */
+    /** The width a strip is printed at unless told: 2 cm, a strip a hand folds. */
+    public static final double STRIP_WIDTH_MM = 20;
+    /** Paper at most this many times as long as wide is a sheet, not a strip: printed as large as fits a page. */
+    static final double SHEET_ASPECT = 3;
+
+    /**
+     * How to print: the strip's width on paper, in millimetres (NaN: {@link #STRIP_WIDTH_MM} for a
+     * strip, a sheet as large as fits the page, in whole centimetres), and the page.
+     */
     public record Options(double paperWidthMm, Page page) {
     }
 
@@ -101,14 +109,33 @@ public final class CreasePatternPages {
             throw new IllegalArgumentException("nothing to print");
         }
         double width = strips.get(0).width();
-        double scale = options.paperWidthMm() / width;
-        CreasePatternPages pages = new CreasePatternPages(title, method, strips, scale, options.paperWidthMm());
+        double paperWidth = Double.isNaN(options.paperWidthMm()) ? automaticWidth(strips, options.page()) : options.paperWidthMm();
+        double scale = paperWidth / width;
+        CreasePatternPages pages = new CreasePatternPages(title, method, strips, scale, paperWidth);
         pages.layOut(options.page());
         if (template != null) {
             pages.placeTemplate(template, options.page());
         }
         pages.sortEdges();
         return pages;
+    }
+
+    /**
+     * The width printed where none is asked: a strip {@link #STRIP_WIDTH_MM} wide; a sheet (no
+     * longer than {@link #SHEET_ASPECT} times its width, a fold script's square) in one piece, as
+     * wide as fits the page (an A4 where the page is as long as the paper), in whole centimetres.
+     */
+    static double automaticWidth(List<SheetCreases> strips, Page page) {
+        double width = strips.get(0).width();
+        double longest = strips.stream().mapToDouble(SheetCreases::length).max().orElse(0);
+        if (longest > SHEET_ASPECT * width) {
+            return STRIP_WIDTH_MM;
+        }
+        Page on = page == Page.NONE ? Page.A4 : page;
+        double across = on.width() - 2 * MARGIN - TAB;
+        double down = (on.height() - 2 * MARGIN - HEADER - FOOTER) / strips.size() - LABEL - GAP;
+        double fits = Math.min(down, across * width / longest);
+        return Math.max(STRIP_WIDTH_MM, 10 * Math.floor(fits / 10));
     }
 
     public int pageCount() {
@@ -287,7 +314,8 @@ public final class CreasePatternPages {
 
     private void header(Canvas canvas, Sheet page, int p) throws IOException {
         canvas.text(MARGIN, MARGIN + 5, 4.5, "iFold: " + title, true);
-        String width = String.format(Locale.ROOT, "%s; the strip %s wide (%.4g model units, %.4g mm a unit)", method,
+        boolean sheet = strips.stream().mapToDouble(SheetCreases::length).max().orElse(0) <= SHEET_ASPECT * strips.get(0).width();
+        String width = String.format(Locale.ROOT, "%s; the %s %s wide (%.4g model units, %.4g mm a unit)", method, sheet ? "sheet" : "strip",
                 millimetres(paperWidth), strips.get(0).width(), scale);
         String pages = this.pages.size() > 1 ? String.format(Locale.ROOT, "; page %d of %d", p + 1, this.pages.size()) : "";
         canvas.text(MARGIN, MARGIN + 11, 3, width + pages, false);
@@ -318,7 +346,7 @@ public final class CreasePatternPages {
         }
         canvas.text(x0, top - 1.4, 2.6, label.toString(), false);
         // The creases and flat edges within the piece.
-        Map<Integer, double[]> numberAt = new HashMap<>();
+        Map<Integer, double[]> numberAt = new TreeMap<>();
         Integer[] order = byU.get(piece.strip());
         double[] uv = strip.uv();
         int start = lowerBound(order, strip, piece.u0() - longestSpan[piece.strip()]);
@@ -351,16 +379,20 @@ public final class CreasePatternPages {
             if (step > 0) {
                 double length = Math.hypot(bx - ax, by - ay);
                 double[] best = numberAt.get(step);
-                if (best == null || length > best[2]) {
-                    numberAt.put(step, new double[] {(ax + bx) / 2, (ay + by) / 2, length});
+                if (best == null || length > best[4]) {
+                    numberAt.put(step, new double[] {ax, ay, bx, by, length});
                 }
             }
         }
+        // Each crease's number beside its longest piece here, in folding order, none over another.
         double size = Math.min(2.4, 0.3 * h);
+        NumberPlaces places = new NumberPlaces(x0, top, x1, bottom, size);
         for (Map.Entry<Integer, double[]> entry : numberAt.entrySet()) {
             double[] at = entry.getValue();
-            if (at[2] > 0.5) {
-                canvas.text(at[0] + 0.4, at[1] - 0.4, size, Integer.toString(entry.getKey()), false);
+            if (at[4] > 0.5) {
+                String number = Integer.toString(entry.getKey());
+                double[] place = places.place(number, at[0], at[1], at[2], at[3]);
+                canvas.text(place[0], place[1], size, number, false);
             }
         }
         // The outline: cut all round; where a tab follows, round the tab instead, its base a fold.

@@ -69,7 +69,7 @@ final class ExportDialogs {
     /** Where the next export's settings start: the last ones used. */
     private Exports.FrameSettings frameSettings = Exports.FrameSettings.DEFAULT;
     /** The last crease pattern's width on paper and page, where the next one starts. */
-    private String printWidth = "2cm";
+    private String printWidth = ifold.print.Lengths.AUTOMATIC;
     private Page printPage = Page.A4;
 
     ExportDialogs(Component parent, Host host) {
@@ -152,7 +152,7 @@ final class ExportDialogs {
         }
         page.setSelectedItem(printPage.optionName());
         javax.swing.JPanel form = new javax.swing.JPanel(new java.awt.GridLayout(2, 2, 8, 8));
-        form.add(new javax.swing.JLabel("Strip width on paper (2cm, 20mm, 0.8in)"));
+        form.add(new javax.swing.JLabel("Strip width on paper (auto, 2cm, 20mm, 0.8in)"));
         form.add(width);
         form.add(new javax.swing.JLabel("Page"));
         form.add(page);

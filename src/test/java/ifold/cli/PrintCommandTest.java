@@ -86,7 +86,7 @@ class PrintCommandTest {
     void badValuesAreRefusedInOneLineAndNothingIsWritten() throws Exception {
         Path pdf = dir.resolve("out.pdf");
         Object[][] cases = {
-            {new String[] {"--paper-width", "2"}, "option --paper-width: expected a length with its unit"},
+            {new String[] {"--paper-width", "2"}, "option --paper-width: expected auto or a length with its unit"},
             {new String[] {"--paper-width", "1mm"}, "option --paper-width: must be from 2 mm to 1 m"},
             {new String[] {"--page", "a5"}, "option --page: expected a4, a4-landscape, letter, letter-landscape or none"},
             {new String[] {"--paper-width", "30cm"}, "option --paper-width: a strip 300.0 mm wide does not fit the page (a4): at most"},

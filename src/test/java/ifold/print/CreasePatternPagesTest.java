@@ -174,6 +174,29 @@ class CreasePatternPagesTest {
         assertEquals("AAA", CreasePatternPages.letters(702));
     }
 
+    /**
+     * Where no width is asked, a strip is printed 2 cm wide, and a sheet (a fold script's square)
+     * in one piece as large as the page holds, in whole centimetres, said so in the header.
+     */
+    @Test
+    void automaticWidthPrintsAStripTwoCentimetresWideAndASheetAsLargeAsThePageHolds() throws Exception {
+        CreasePatternPages strip = CreasePatternPages.of("test", "by hand", List.of(strip()), new CreasePatternPages.Options(Double.NaN, Page.A4));
+        assertEquals(20, strip.scale(), 1e-12);
+        double[] uv = {0, 0, 10, 0, 10, 10, 0, 10, 5, 0, 5, 10};
+        int[][] edges = {{0, 4}, {4, 1}, {1, 2}, {2, 5}, {5, 3}, {3, 0}, {4, 5}};
+        SheetCreases square = new SheetCreases(10, 10, uv, edges, "BBBBBBV".toCharArray(), new int[] {0, 0, 0, 0, 0, 0, 1});
+        CreasePatternPages sheet = CreasePatternPages.of("test", "by hand", List.of(square), new CreasePatternPages.Options(Double.NaN, Page.A4));
+        // A4 is 210 mm wide: 12 mm margins and room for a tab leave 178 mm, so 17 cm.
+        assertEquals(17, sheet.scale(), 1e-12);
+        assertEquals(1, sheet.pieceCount());
+        assertEquals(13, CreasePatternPages.of("test", "by hand", List.of(square), new CreasePatternPages.Options(Double.NaN, Page.A4_LANDSCAPE))
+                .scale(), 1e-12, "on its side the page's height limits it: 210 mm less margins, header, footer and label leave 139 mm");
+        Recording canvas = new Recording();
+        sheet.draw(canvas);
+        assertTrue(canvas.texts.get(0).stream().anyMatch(t -> t.contains("the sheet 17 cm wide")), canvas.texts.get(0).toString());
+        assertTrue(Double.isNaN(Lengths.millimetres("auto")));
+    }
+
     @Test
     void lengthsAndPagesAreReadAsWritten() {
         assertEquals(20, Lengths.millimetres("2cm"), 1e-12);

@@ -277,6 +277,34 @@ class MainWindowFilesTest extends WindowTestBase {
         assertTrue(Files.readString(svg).contains("piece 1 of 4; glue piece 2 on its tab at mark A"), "the strip's four pieces");
         assertTrue(said.stream().anyMatch(m -> m.contains("wrote " + svg + ": 1 page, 4 pieces")), said.toString());
         assertTrue(said.stream().anyMatch(m -> m.contains("wrote " + steps + ": 4 pages, 13 steps")), said.toString());
+
+        // The same through the menu and its dialog, as a user prints: 3 cm wide on an A4 on its side.
+        Path landscape = dir.resolve("landscape.pdf");
+        clickLater(window, "Export crease pattern (PDF, SVG)...");
+        javax.swing.JTextField width = inDialog(javax.swing.JTextField.class);
+        javax.swing.JComboBox<?> page = inDialog(javax.swing.JComboBox.class);
+        assertEquals("auto", onEdt(width::getText), "the width the printer chooses, unless told");
+        onEdt(() -> {
+            width.setText("3cm");
+            page.setSelectedItem("a4-landscape");
+            return null;
+        });
+        pressOk(width);
+        saveAs(landscape);
+        waitFor("the crease pattern from the dialog", 60, () -> said.stream().anyMatch(m -> m.contains("wrote " + landscape)));
+        // 48.4 by 1.6 at 18.75 mm a unit is 907.5 mm: four pieces of 265 mm, three rows of 3 cm to a page.
+        assertTrue(said.stream().anyMatch(m -> m.contains("wrote " + landscape + ": 2 pages, 4 pieces")), said.toString());
+        try (org.apache.pdfbox.pdmodel.PDDocument pdf = org.apache.pdfbox.Loader.loadPDF(landscape.toFile())) {
+            assertEquals(297, pdf.getPage(0).getMediaBox().getWidth() * 25.4 / 72, 0.01, "A4 on its side");
+            String text = new org.apache.pdfbox.text.PDFTextStripper().getText(pdf);
+            assertTrue(text.contains("the strip 3 cm wide"), text);
+        }
+        // And the step diagrams through theirs: where to write them, nothing else asked.
+        Path menuSteps = dir.resolve("menu-steps.pdf");
+        clickLater(window, "Export step diagrams (PDF)...");
+        saveAs(menuSteps);
+        waitFor("the step diagrams from the menu", 60, () -> said.stream().anyMatch(m -> m.contains("wrote " + menuSteps)));
+        assertTrue(said.stream().anyMatch(m -> m.contains("wrote " + menuSteps + ": 4 pages, 13 steps")), said.toString());
     }
 
     @Test
