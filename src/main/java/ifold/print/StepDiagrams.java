@@ -10,10 +10,11 @@ import java.util.Locale;
 import org.joml.Vector3d;
 
 /**
- * Step diagrams: a panel a fold, six to an A4 page, each the scene the movie shows half way
- * through that fold (the flap lifted from the paper it leaves, on its way to where it lands),
- * numbered and captioned as the movie captions it; after a title page with the finished paper
- * and the list of the steps. Drawn from the movie's own scene and animation, as vectors.
+ * Step diagrams: a panel a fold, six to an A4 page, each the scene the movie shows as the fold
+ * begins, with the fold's crease in its style and an arrow from the flap to where it lands
+ * (origami's notation), numbered and captioned as the movie captions it; after a title page
+ * with the finished paper and the list of the steps. Drawn from the movie's own scene and
+ * animation, as vectors.
  */
 public final class StepDiagrams {
     private static final double WIDTH = 210;
@@ -24,8 +25,8 @@ public final class StepDiagrams {
     private static final int ROWS = 3;
     private static final double GUTTER = 6;
     private static final double CAPTION = 9;
-    /** How far into each fold its panel shows it. */
-    static final double MIDWAY = 0.5;
+    /** How little before its end a panel of many folds shows them: all made, its camera still on them. */
+    private static final double DONE = 1e-6;
     /**
      * Below this cosine between the directions two panels are seen from, the later one shows
      * the paper's other side: it gets the turn-over symbol.
@@ -94,12 +95,15 @@ public final class StepDiagrams {
             double top = MARGIN + HEADER + (slot / COLUMNS) * (panelHeight + GUTTER);
             double start = animation.foldStart(k);
             double end = animation.foldStart(k + 1);
-            animation.apply(start + MIDWAY * (end - start));
             Animation.FoldLine crease = animation.foldLine(k);
+            double[][] path = animation.foldPath(k);
+            // A fold as origami diagrams draw it: the paper before it, its crease and its arrow
+            // over it. A panel of many folds (a wrap's triangle) shows them made.
+            animation.apply(animation.foldIsGroup(k) ? end - DONE * (end - start) : start);
             Camera camera = scene.camera();
             Vector3d target = new Vector3d(camera.target());
             double distance = camera.distance();
-            fit(scene, panelWidth, panelHeight - CAPTION, crease, animation.foldPath(k));
+            fit(scene, panelWidth, panelHeight - CAPTION, crease, path);
             SceneDrawing.draw(scene, canvas, x, top + CAPTION, panelWidth, panelHeight - CAPTION);
             Vector3d looking = SceneDrawing.viewDirection(scene);
             // A valley seen from the other side is a mountain: the panel says what its eye sees.

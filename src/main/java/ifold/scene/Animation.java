@@ -48,6 +48,14 @@ public interface Animation {
         return null;
     }
 
+    /**
+     * Whether "fold" {@code k} is many folds together (a wrap's triangle, its passes, gadgets and
+     * tucks): its panel shows them made, not about to be.
+     */
+    default boolean foldIsGroup(int k) {
+        return false;
+    }
+
     /** How many points a {@link #foldPath} has. */
     int PATH_POINTS = 9;
 

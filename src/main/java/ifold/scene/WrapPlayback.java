@@ -323,6 +323,11 @@ public final class WrapPlayback implements Animation {
         return k >= panelFirst.length ? stepStart[steps.size()] : stepStart[panelFirst[k]];
     }
 
+    @Override
+    public boolean foldIsGroup(int k) {
+        return k >= 0 && k < panelFirst.length && !panelIsStep[k];
+    }
+
     /** The step a panel shows alone, or -1 where it shows a triangle's folds together. */
     private int stepOfPanel(int k) {
         return k >= 0 && k < panelFirst.length && panelIsStep[k] ? panelFirst[k] : -1;
