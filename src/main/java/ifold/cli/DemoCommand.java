@@ -91,7 +91,7 @@ final class DemoCommand implements Runnable {
 
         @Override
         public Integer call() {
-            diagrams.check();
+            diagrams.check(outputs);
             if (figure != null) {
                 OutputFiles.checkWritableFile(figure, "--figure", ".png");
             }
@@ -129,7 +129,7 @@ final class DemoCommand implements Runnable {
             Map<String, Object> figures = zigzag.figures();
             List<FoldFile.Folded> folded = List.of(new FoldFile.Folded(sheet, result.frames()));
             outputs.exportFold(folded, zigzag.source(), figures);
-            outputs.exportPrint(folded, "a triangle zig-zagged", PrintJob.ZIGZAG, PrintJob.triangle(shape, result.frames()[0]));
+            outputs.exportPrint(folded, "a triangle zig-zagged", PrintJob.ZIGZAG, PrintJob.triangle(shape, result.frames()[0], result.strips().get(0).sheet()));
             diagrams.write(outputs, "a triangle zig-zagged", PrintJob.ZIGZAG, in -> Scenes.zigzag(in, shape, result, geometries));
             outputs.write(result, geometries, zigzag.source(), figures);
             out.printf(Locale.ROOT, "zigzag: strip %.4g x %.4g (L/w %.1f), %d passes%s, %d turn folds, %d tucks, %d layers at most (a stack of %d), "
@@ -194,7 +194,7 @@ final class DemoCommand implements Runnable {
 
         @Override
         public Integer call() {
-            diagrams.check();
+            diagrams.check(outputs);
             TurnGadget.Options options;
             try {
                 options = new TurnGadget.Options(angle, overhang, width, Defaults.orDefault(thickness, "thickness"));

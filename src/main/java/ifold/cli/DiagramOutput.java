@@ -13,15 +13,18 @@ import picocli.CommandLine.Option;
 /** {@code --export-diagrams FILE.pdf}: step diagrams, a panel a fold (a wrap's: a panel a triangle of its path). */
 final class DiagramOutput {
     @Option(names = "--export-diagrams", paramLabel = "FILE.pdf", description = "draw step diagrams as PDF: a title page with"
-            + " the folded paper and the steps listed, then a panel a fold (a wrap's: a triangle of its path), six to an A4"
-            + " page, each showing the paper as the fold begins, its crease and an arrow for its motion in origami's notation,"
+            + " the folded paper and the steps listed, then a panel a fold (a wrap's: a triangle of its path), six to a"
+            + " page (--page letter, a4-landscape, ...), each showing the paper as the fold begins, its crease and an arrow for its motion in origami's notation,"
             + " numbered and captioned as the movie captions it")
     Path file;
 
-    void check() {
+    /** Checks the file, and that no other output of {@code outputs} names it (the second would overwrite the first). */
+    void check(PaperOutputs outputs) {
         if (file != null) {
             OutputFiles.checkWritableFile(file, "--export-diagrams", ".pdf");
         }
+        outputs.checkDistinct(file);
+        outputs.checkPrintOptionsUsed(file);
     }
 
     /**
@@ -35,7 +38,7 @@ final class DiagramOutput {
         try {
             Scene scene = new Scene();
             Animation animation = animationIn.apply(scene);
-            PrintJob.Printed printed = PrintJob.diagrams(title, method, scene, animation, file, JobWatcher.NONE);
+            PrintJob.Printed printed = PrintJob.diagrams(title, method, scene, animation, file, outputs.printPage(), JobWatcher.NONE);
             outputs.wrote(file, String.format(Locale.ROOT, "wrote %s: %d pages, %d step%s", file, printed.pages(), printed.pieces(),
                     printed.pieces() == 1 ? "" : "s"));
         } catch (IOException e) {

@@ -61,7 +61,7 @@ final class FoldCommand implements Callable<Integer> {
         // Without a display it does the exports asked for and renders frames where the viewer was
         // wanted, as the demos and the wrap do.
         outputs.check("fold", spec.commandLine().getErr(), true);
-        diagrams.check();
+        diagrams.check(outputs);
         if (Files.isDirectory(script)) {
             throw new UserError(script + ": is a folder, expected a fold script");
         }

@@ -14,6 +14,16 @@ final class OutputFiles {
      * exists and can be written.
      */
     static void checkWritableFile(Path file, String option, String... extensions) {
+        if (file.toString().isBlank()) {
+            throw UserError.usage("option " + option + ": no file named");
+        }
+        if (Files.isDirectory(file)) {
+            throw UserError.usage("option " + option + ": " + file + " is a folder");
+        }
+        if (Files.exists(file) && !Files.isRegularFile(file)) {
+            throw UserError.usage("option " + option + ": " + file + " is not a regular file (a device, a pipe or a socket):"
+                    + " iFold writes plain files");
+        }
         String name = file.getFileName() == null ? "" : file.getFileName().toString().toLowerCase(Locale.ROOT);
         boolean known = false;
         for (String extension : extensions) {
@@ -28,9 +38,6 @@ final class OutputFiles {
         }
         if (!Files.isWritable(folder)) {
             throw UserError.usage("option " + option + ": folder " + folder + " is not writable");
-        }
-        if (Files.isDirectory(file)) {
-            throw UserError.usage("option " + option + ": " + file + " is a folder");
         }
     }
 }

@@ -65,14 +65,14 @@ final class PaperOutputs {
             + " mountain, flat, tab) for cutting machines")
     Path exportSvg;
 
-    @Option(names = "--paper-width", paramLabel = "LENGTH", defaultValue = Lengths.AUTOMATIC,
-            description = "how wide the strip (or the sheet) is printed: 2cm, 20mm, 0.8in, or auto: 2cm for a strip, a sheet"
-            + " (a fold script's square) as large as fits the page (default ${DEFAULT-VALUE})")
+    @Option(names = "--paper-width", paramLabel = "LENGTH",
+            description = "how wide --export-pdf and --export-svg print the strip (or the sheet): 2cm, 20mm, 0.8in, or auto: 2cm for"
+            + " a strip, a sheet (a fold script's square) as large as fits the page (default auto)")
     String paperWidth;
 
-    @Option(names = "--page", paramLabel = "PAGE", defaultValue = "a4",
-            description = "the page printed on: a4, a4-landscape, letter, letter-landscape, or none for one long page"
-            + " (default ${DEFAULT-VALUE})")
+    @Option(names = "--page", paramLabel = "PAGE",
+            description = "the page --export-pdf, --export-svg and --export-diagrams print on: a4, a4-landscape, letter,"
+            + " letter-landscape, or none for one page as long as the strip (default a4)")
     String page;
 
     @Option(names = "--no-view", description = "do not open the viewer, nor render frames unless --frames asks")
@@ -91,6 +91,45 @@ final class PaperOutputs {
         err.println("ifold: no display: rendering the animation into " + movie.toAbsolutePath()
                 + " instead (--frames DIR for PNG frames, --movie FILE for another name)");
         return movie;
+    }
+
+    /** The page step diagrams and crease patterns are printed on. */
+    Page printPage() {
+        return printOptions.page();
+    }
+
+    /**
+     * Refuses a print option given with nothing to print ({@code diagrams}: --export-diagrams, or
+     * null): it would be ignored without a word.
+     */
+    void checkPrintOptionsUsed(Path diagrams) {
+        if (paperWidth != null && !prints()) {
+            throw UserError.usage("option --paper-width: only with --export-pdf or --export-svg, which print the crease pattern");
+        }
+        if (page != null && !prints() && diagrams == null) {
+            throw UserError.usage("option --page: only with --export-pdf, --export-svg or --export-diagrams, which print pages");
+        }
+    }
+
+    /**
+     * Refuses two outputs that name one file, with {@code diagrams} (--export-diagrams, or null):
+     * the second written would overwrite the first.
+     */
+    void checkDistinct(Path diagrams) {
+        Object[][] named = {{"--export-obj", exportObj}, {"--export-mesh", exportMesh}, {"--report", report}, {"--export-fold", exportFold},
+            {"--export-pdf", exportPdf}, {"--export-svg", exportSvg}, {"--movie", frameOptions.movie}, {"--export-diagrams", diagrams}};
+        java.util.Map<Path, String> seen = new java.util.HashMap<>();
+        for (Object[] output : named) {
+            if (output[1] == null) {
+                continue;
+            }
+            Path file = ((Path) output[1]).toAbsolutePath().normalize();
+            String before = seen.putIfAbsent(file, (String) output[0]);
+            if (before != null) {
+                throw UserError.usage("option " + output[0] + ": " + output[1] + " is the file " + before
+                        + " writes too: the second would overwrite the first");
+            }
+        }
     }
 
     /**
@@ -119,7 +158,8 @@ final class PaperOutputs {
             OutputFiles.checkWritableFile(exportSvg, "--export-svg", ".svg");
         }
         try {
-            printOptions = new CreasePatternPages.Options(Lengths.millimetres(paperWidth), Page.of(page));
+            printOptions = new CreasePatternPages.Options(Lengths.millimetres(paperWidth == null ? Lengths.AUTOMATIC : paperWidth),
+                    Page.of(page == null ? Page.A4.optionName() : page));
         } catch (IllegalArgumentException e) {
             throw UserError.usage("option --" + (e.getMessage().startsWith("expected a4") ? "page" : "paper-width") + ": "
                     + e.getMessage());
@@ -198,7 +238,7 @@ final class PaperOutputs {
                     template), JobWatcher.NONE);
         } catch (IllegalArgumentException e) {
             discardWritten();
-            throw UserError.usage("option --paper-width: " + e.getMessage());
+            throw UserError.usage((e.getMessage().startsWith("--page none") ? "option --page: " : "option --paper-width: ") + e.getMessage());
         }
         for (Path file : new Path[] {exportPdf, exportSvg}) {
             if (file == null) {

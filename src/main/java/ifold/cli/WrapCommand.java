@@ -84,7 +84,7 @@ final class WrapCommand implements Callable<Integer> {
             throw UserError.usage(e);
         }
         outputs.check("wrap", spec.commandLine().getErr(), true);
-        diagrams.check();
+        diagrams.check(outputs);
         try {
             return wrap(options);
         } catch (UserError | CommandLine.ParameterException e) {

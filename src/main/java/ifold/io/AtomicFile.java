@@ -45,6 +45,11 @@ public final class AtomicFile {
     public static void write(Path file, Content content, boolean durable) throws IOException {
         Path named = file.toAbsolutePath();
         Path target = destination(named);
+        if (Files.exists(target) && !Files.isRegularFile(target)) {
+            // A device, a pipe or a socket (or a link to one): renaming over it would replace it
+            // with a plain file, and /dev/full with a PDF.
+            throw new IOException(named + ": not a regular file (a device, a pipe or a folder): iFold writes plain files");
+        }
         Path temp;
         synchronized (IN_FLIGHT) {
             if (shuttingDown) {

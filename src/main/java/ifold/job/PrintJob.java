@@ -3,12 +3,14 @@ package ifold.job;
 import ifold.foldfile.FoldFile;
 import ifold.geom.Triangle;
 import ifold.print.CreasePatternPages;
+import ifold.print.Page;
 import ifold.print.PdfCanvas;
 import ifold.print.StepDiagrams;
 import ifold.print.SvgCanvas;
 import ifold.scene.Animation;
 import ifold.scene.Scene;
 import ifold.sheet.HostFrame;
+import ifold.sheet.Sheet;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -53,17 +55,20 @@ public final class PrintJob {
 
     /**
      * The zig-zag demo's triangle as a template to print beside its strip: {@code shape}'s corners
-     * A, B, C in the plane of {@code frame} (the host the strip was folded on).
+     * A, B, C in the plane of {@code frame} (the host the strip was folded on), and where the
+     * strip's first piece lies on it.
      */
-    public static CreasePatternPages.Template triangle(Triangle shape, HostFrame frame) {
+    public static CreasePatternPages.Template triangle(Triangle shape, HostFrame frame, Sheet strip) {
         double[] xy = new double[6];
         for (int k = 0; k < 3; k++) {
             double[] p = {shape.corner(k).x(), shape.corner(k).y(), shape.corner(k).z()};
             xy[2 * k] = frame.localX(p);
             xy[2 * k + 1] = frame.localY(p);
         }
+        // The strip's first face, as it lies on the triangle: where piece 1 goes, and which side up.
+        boolean faceUp = !strip.pose(0).mirrors();
         return new CreasePatternPages.Template("the triangle the strip wraps, at the same scale: cut it out of card, top side up",
-                xy, new String[] {"A", "B", "C"});
+                xy, new String[] {"A", "B", "C"}, strip.placed(0), "piece 1 starts here, printed side " + (faceUp ? "up" : "down"));
     }
 
     /** What was printed: the files written, the pages and the pieces. */
@@ -102,6 +107,12 @@ public final class PrintJob {
         watcher.stage("laying out the crease pattern");
         CreasePatternPages pages = CreasePatternPages.of(request.title(), request.method(), FoldFile.creases(request.sheets()),
                 request.options(), request.template());
+        String name = request.file().getFileName() == null ? "" : request.file().getFileName().toString().toLowerCase(Locale.ROOT);
+        if (name.endsWith(".pdf") && pages.longestSide() > PdfCanvas.LONGEST_SIDE_MM) {
+            throw new IllegalArgumentException(String.format(Locale.ROOT, "--page none makes one page %.1f m long, and a PDF page is at most"
+                    + " %.2f m (200 in), the most PDF readers open: print on pages (--page a4) or as SVG", pages.longestSide() / 1000,
+                    PdfCanvas.LONGEST_SIDE_MM / 1000));
+        }
         watcher.stopIfAsked();
         return pages;
     }
@@ -132,7 +143,7 @@ public final class PrintJob {
                 int count = pages.pageCount();
                 String name = file.getFileName().toString();
                 String stem = name.substring(0, name.length() - 4);
-                String digits = "%0" + Integer.toString(count).length() + "d";
+                String digits = "%0" + Math.max(2, Integer.toString(count).length()) + "d"; // cube-01.svg, as the README says
                 SvgCanvas svg = new SvgCanvas(p -> count == 1 ? file
                         : file.resolveSibling(stem + "-" + String.format(Locale.ROOT, digits, p + 1) + name.substring(name.length() - 4)));
                 try {
@@ -154,19 +165,20 @@ public final class PrintJob {
 
     /**
      * Step diagrams of {@code animation} in {@code scene} (the movie's own, made afresh for them):
-     * a title page and a panel a fold, as one PDF written to {@code file}, whole or not at all.
+     * a title page and a panel a fold, as one PDF of pages of {@code page}'s size written to
+     * {@code file}, whole or not at all.
      *
      * @return the file, its pages and the folds drawn (as {@link Printed#pieces})
      */
-    public static Printed diagrams(String title, String method, Scene scene, Animation animation, Path file, JobWatcher watcher)
+    public static Printed diagrams(String title, String method, Scene scene, Animation animation, Path file, Page page, JobWatcher watcher)
             throws IOException {
         watcher.stage("drawing the step diagrams");
-        int folds;
+        int pages;
         try (PdfCanvas pdf = new PdfCanvas()) {
-            folds = StepDiagrams.draw(title, method, scene, animation, pdf);
+            pages = StepDiagrams.draw(title, method, scene, animation, pdf, page);
             watcher.stopIfAsked();
             pdf.save(file);
         }
-        return new Printed(List.of(file), StepDiagrams.pageCount(folds), folds);
+        return new Printed(List.of(file), pages, animation.foldCount());
     }
 }

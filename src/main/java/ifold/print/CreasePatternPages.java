@@ -57,8 +57,14 @@ public final class CreasePatternPages {
      * @param label what it is, printed above it
      * @param xy its corners in its own plane, in the model's units (x, y pairs)
      * @param names each corner's name, printed inside it
+     * @param start where the strip's first piece lies on it (x, y pairs in the same plane), or null
+     * @param startLabel what to say of it ("piece 1 starts here, printed side up")
      */
-    public record Template(String label, double[] xy, String[] names) {
+    public record Template(String label, double[] xy, String[] names, double[] start, String startLabel) {
+        /** A shape alone, without where the strip starts on it. */
+        public Template(String label, double[] xy, String[] names) {
+            this(label, xy, names, null, null);
+        }
     }
 
     /** Strip {@code strip}'s paper from u0 to u1, its top left corner at (x, y) on its page. */
@@ -136,6 +142,11 @@ public final class CreasePatternPages {
         double down = (on.height() - 2 * MARGIN - HEADER - FOOTER) / strips.size() - LABEL - GAP;
         double fits = Math.min(down, across * width / longest);
         return Math.max(STRIP_WIDTH_MM, 10 * Math.floor(fits / 10));
+    }
+
+    /** The longest side of any page, in millimetres: one long page (--page none) is as long as the strip. */
+    public double longestSide() {
+        return pages.stream().mapToDouble(page -> Math.max(page.width(), page.height())).max().orElse(0);
     }
 
     public int pageCount() {
@@ -259,6 +270,21 @@ public final class CreasePatternPages {
         }
         canvas.text(templateX, templateY - 1.4, 2.6, template.label(), false);
         canvas.outline(at, Ink.CUT);
+        if (template.start() != null) {
+            // Where the strip starts: its first piece's outline, dotted, and what to do there.
+            int m = template.start().length / 2;
+            double[] start = new double[2 * m];
+            double sx = 0;
+            double sy = 0;
+            for (int k = 0; k < m; k++) {
+                start[2 * k] = templateX + (template.start()[2 * k] - box[0]) * scale;
+                start[2 * k + 1] = templateY + (box[3] - template.start()[2 * k + 1]) * scale;
+                sx += start[2 * k] / m;
+                sy += start[2 * k + 1] / m;
+            }
+            canvas.outline(start, Ink.TAB);
+            canvas.text(sx - 12, sy + 1, 2.6, template.startLabel(), false);
+        }
         for (int k = 0; k < n && k < template.names().length; k++) {
             // Each name a little way in from its corner, towards the middle.
             double x = at[2 * k] + 0.12 * (cx - at[2 * k]);
@@ -346,7 +372,7 @@ public final class CreasePatternPages {
         }
         canvas.text(x0, top - 1.4, 2.6, label.toString(), false);
         // The creases and flat edges within the piece.
-        Map<Integer, double[]> numberAt = new TreeMap<>();
+        Map<Integer, List<double[]>> numberAt = new TreeMap<>();
         Integer[] order = byU.get(piece.strip());
         double[] uv = strip.uv();
         int start = lowerBound(order, strip, piece.u0() - longestSpan[piece.strip()]);
@@ -377,22 +403,20 @@ public final class CreasePatternPages {
             canvas.line(ax, ay, bx, by, ink);
             int step = strip.steps()[e];
             if (step > 0) {
-                double length = Math.hypot(bx - ax, by - ay);
-                double[] best = numberAt.get(step);
-                if (best == null || length > best[4]) {
-                    numberAt.put(step, new double[] {ax, ay, bx, by, length});
-                }
+                numberAt.computeIfAbsent(step, k -> new ArrayList<>()).add(new double[] {ax, ay, bx, by});
             }
         }
-        // Each crease's number beside its longest piece here, in folding order, none over another.
+        // Each crease of a fold numbered beside its longest piece here (a fold through several
+        // layers leaves several creases apart), in folding order, none over another.
         double size = Math.min(2.4, 0.3 * h);
         NumberPlaces places = new NumberPlaces(x0, top, x1, bottom, size);
-        for (Map.Entry<Integer, double[]> entry : numberAt.entrySet()) {
-            double[] at = entry.getValue();
-            if (at[4] > 0.5) {
-                String number = Integer.toString(entry.getKey());
-                double[] place = places.place(number, at[0], at[1], at[2], at[3]);
-                canvas.text(place[0], place[1], size, number, false);
+        for (Map.Entry<Integer, List<double[]>> entry : numberAt.entrySet()) {
+            String number = Integer.toString(entry.getKey());
+            for (double[] at : CreaseRuns.longestOfEach(entry.getValue())) {
+                if (Math.hypot(at[2] - at[0], at[3] - at[1]) > 0.5) {
+                    double[] place = places.place(number, at[0], at[1], at[2], at[3]);
+                    canvas.text(place[0], place[1], size, number, false);
+                }
             }
         }
         // The outline: cut all round; where a tab follows, round the tab instead, its base a fold.
@@ -458,8 +482,13 @@ public final class CreasePatternPages {
             canvas.text(x + 12, y, 2.8, words[i], false);
             x += 16 + 2.8 * 0.5 * words[i].length();
         }
-        canvas.text(MARGIN, y + 5, 2.6, "Numbers: the order of the folds. Printed side: the strip's top side, so valleys fold towards you."
-                + " Glue each piece's start on the tab before it, mark on mark.", false);
+        boolean sheet = strips.stream().mapToDouble(SheetCreases::length).max().orElse(0) <= SHEET_ASPECT * strips.get(0).width();
+        boolean glued = pieceCount() > strips.size();
+        canvas.text(MARGIN, y + 5, 2.6, "Numbers: the order of the folds, as the step diagrams number them. Printed side: the "
+                + (sheet ? "sheet's" : "strip's") + " top side, so its valleys fold towards you" + (glued ? "; glue each piece's start on the"
+                + " tab before it, mark on mark." : "."), false);
+        canvas.text(MARGIN, y + 8.6, 2.6, "Where a fold has turned the paper over, its printed valleys fold away from you: the step diagrams"
+                + " show each fold as it is seen.", false);
         // The scale bar: 5 cm, a tick each centimetre.
         double bar = page.height() - MARGIN - 1.5;
         canvas.line(MARGIN, bar, MARGIN + 50, bar, Ink.SCALE);

@@ -28,6 +28,9 @@ public final class Lengths {
         } else if (t.endsWith("cm")) {
             factor = 10;
             number = t.substring(0, t.length() - 2);
+        } else if (t.endsWith("m")) {
+            factor = 1000;
+            number = t.substring(0, t.length() - 1);
         } else if (t.endsWith("in")) {
             factor = 25.4;
             number = t.substring(0, t.length() - 2);

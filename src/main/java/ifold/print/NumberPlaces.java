@@ -36,28 +36,33 @@ final class NumberPlaces {
     }
 
     /**
-     * The baseline's start for {@code text} beside the crease (ax, ay) to (bx, by): the first
-     * place free of the numbers placed so far and inside the rectangle; the middle, to its right,
-     * where none is.
+     * The baseline's start for {@code text} beside the crease (ax, ay) to (bx, by), clear of it:
+     * the first place free of the numbers placed so far and inside the rectangle, to the
+     * crease's right first (above a crease drawn left to right), then its left; where none is,
+     * beside its middle, moved inside the rectangle.
      */
     double[] place(String text, double ax, double ay, double bx, double by) {
-        double width = DIGIT * size * text.length();
-        double height = CAP * size;
-        for (int side = 0; side < 2; side++) {
+        double halfWidth = DIGIT * size * text.length() / 2;
+        double halfHeight = CAP * size / 2;
+        double length = Math.hypot(bx - ax, by - ay);
+        double nx = length > 0 ? (by - ay) / length : 1;
+        double ny = length > 0 ? -(bx - ax) / length : 0;
+        // How far the box's centre stands off the line so that its nearest corner clears it.
+        double off = Math.abs(nx) * halfWidth + Math.abs(ny) * halfHeight + GAP;
+        for (int side = 1; side >= -1; side -= 2) {
             for (double t : ALONG) {
-                double x = ax + t * (bx - ax);
-                double y = ay + t * (by - ay);
-                double[] box = side == 0 ? new double[] {x + GAP, y - GAP - height, x + GAP + width, y - GAP}
-                        : new double[] {x - GAP - width, y + GAP, x - GAP, y + GAP + height};
+                double cx = ax + t * (bx - ax) + side * nx * off;
+                double cy = ay + t * (by - ay) + side * ny * off;
+                double[] box = {cx - halfWidth, cy - halfHeight, cx + halfWidth, cy + halfHeight};
                 if (inside(box) && free(box)) {
                     taken.add(box);
                     return new double[] {box[0], box[3]};
                 }
             }
         }
-        double x = (ax + bx) / 2;
-        double y = (ay + by) / 2;
-        double[] box = {x + GAP, y - GAP - height, x + GAP + width, y - GAP};
+        double cx = Math.max(left + halfWidth, Math.min(right - halfWidth, (ax + bx) / 2 + nx * off));
+        double cy = Math.max(top + halfHeight, Math.min(bottom - halfHeight, (ay + by) / 2 + ny * off));
+        double[] box = {cx - halfWidth, cy - halfHeight, cx + halfWidth, cy + halfHeight};
         taken.add(box);
         return new double[] {box[0], box[3]};
     }

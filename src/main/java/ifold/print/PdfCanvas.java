@@ -17,6 +17,8 @@ import org.apache.pdfbox.pdmodel.font.Standard14Fonts;
  */
 public final class PdfCanvas implements Canvas, AutoCloseable {
     private static final float POINTS_A_MM = (float) (72 / 25.4);
+    /** The longest side of a page PDF readers open: 14,400 units of a point, 200 inches (PDF 1.7, Annex C). */
+    public static final double LONGEST_SIDE_MM = 200 * 25.4;
 
     static {
         // PDFBox logs through commons-logging: its notes on fonts (the standard fonts' stand-ins,

@@ -40,6 +40,13 @@ final class SceneDrawing {
         for (Flat flat : flats) {
             canvas.fill(flat.xy(), flat.color());
         }
+        // The scene's labels (the triangle's corners A, B, C, which the captions name) over it all.
+        for (Scene.Label label : scene.labels()) {
+            double[] at = project(scene, x, y, width, height, new double[] {label.x(), label.y(), label.z()});
+            if (at != null && at[0] >= x && at[0] <= x + width && at[1] >= y && at[1] <= y + height) {
+                canvas.text(at[0] + 0.8, at[1] - 0.8, 3.2, label.text(), true);
+            }
+        }
         canvas.endClip();
     }
 

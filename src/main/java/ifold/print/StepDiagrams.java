@@ -17,14 +17,13 @@ import org.joml.Vector3d;
  * animation, as vectors.
  */
 public final class StepDiagrams {
-    private static final double WIDTH = 210;
-    private static final double HEIGHT = 297;
     private static final double MARGIN = 12;
     private static final double HEADER = 14;
     private static final int COLUMNS = 2;
     private static final int ROWS = 3;
     private static final double GUTTER = 6;
-    private static final double CAPTION = 9;
+    /** Room above a panel for its number and up to three lines of caption. */
+    private static final double CAPTION = 11.5;
     /** How little before its end a panel of many folds shows them: all made, its camera still on them. */
     private static final double DONE = 1e-6;
     /**
@@ -32,67 +31,77 @@ public final class StepDiagrams {
      * the paper's other side: it gets the turn-over symbol.
      */
     private static final double TURNED_OVER = -0.3;
+    /** A fold spanning less of its panel than this is brought closer. */
+    private static final double SMALL_FOLD = 1.0 / 3;
     /** How many times a panel's camera may move to show its fold whole. */
     private static final int FITTING = 6;
 
     private StepDiagrams() {
     }
 
-    /** The pages {@code folds} panels take, the title page included. */
-    public static int pageCount(int folds) {
-        return 1 + (folds + COLUMNS * ROWS - 1) / (COLUMNS * ROWS);
+    /** A line of the list of steps: where on which page of the list, and its words. */
+    private record Entry(int page, double x, double y, String text) {
     }
 
     /**
-     * Draws the title page and the panels of {@code animation}'s folds in {@code scene}, which it
-     * moves through them.
+     * Draws the title page (the paper folded, the list of steps, continued on pages of its own
+     * where it is long) and the panels of {@code animation}'s folds in {@code scene}, which it
+     * moves through them, on pages of {@code page}'s size (A4 for {@link Page#NONE}): two panels
+     * across and three down, or three across and two down on a page on its side.
      *
-     * @return the folds drawn
+     * @return the pages drawn
      */
-    public static int draw(String title, String method, Scene scene, Animation animation, Canvas canvas) throws IOException {
+    public static int draw(String title, String method, Scene scene, Animation animation, Canvas canvas, Page page) throws IOException {
+        Page sheet = page == Page.NONE ? Page.A4 : page;
+        double width = sheet.width();
+        double height = sheet.height();
+        boolean wide = width > height;
+        int columns = wide ? ROWS : COLUMNS;
+        int rows = wide ? COLUMNS : ROWS;
         int folds = animation.foldCount();
-        int pages = pageCount(folds);
+        double pictureHeight = wide ? 80 : 110;
+        List<Entry> contents = contents(animation, width, height, MARGIN + 18 + pictureHeight + 13);
+        int listPages = contents.isEmpty() ? 1 : contents.get(contents.size() - 1).page() + 1;
+        int pages = listPages + (folds + columns * rows - 1) / (columns * rows);
         // The title page: the paper folded, and the steps listed.
-        canvas.beginPage(WIDTH, HEIGHT);
+        canvas.beginPage(width, height);
         canvas.text(MARGIN, MARGIN + 6, 6, "iFold: " + title, true);
         canvas.text(MARGIN, MARGIN + 13, 3.2, String.format(Locale.ROOT, "%s: step diagrams, %d %s, page 1 of %d", method, folds,
                 folds == 1 ? "step" : "steps", pages), false);
         animation.apply(animation.stepCount());
-        double pictureHeight = 110;
-        SceneDrawing.draw(scene, canvas, MARGIN, MARGIN + 18, WIDTH - 2 * MARGIN, pictureHeight);
-        double y = MARGIN + 18 + pictureHeight + 8;
-        canvas.text(MARGIN, y, 3.6, "The steps", true);
-        y += 5;
-        double column = MARGIN;
-        for (int k = 0; k < folds; k++) {
-            if (y > HEIGHT - MARGIN) {
-                if (column > MARGIN) {
-                    canvas.text(column, y, 2.6, "...", false);
-                    break;
-                }
-                column = WIDTH / 2;
-                y = MARGIN + 18 + pictureHeight + 13;
+        SceneDrawing.draw(scene, canvas, MARGIN, MARGIN + 18, width - 2 * MARGIN, pictureHeight);
+        canvas.text(MARGIN, MARGIN + 18 + pictureHeight + 8, 3.6, "The steps", true);
+        canvas.text(MARGIN + 24, MARGIN + 18 + pictureHeight + 8, 2.4, "A valley or mountain as its panel sees it: the print marks each"
+                + " as its printed side sees it, and a strip turned over folds a printed valley as a mountain.", false);
+        int listPage = 0;
+        for (Entry entry : contents) {
+            while (entry.page() > listPage) {
+                canvas.endPage();
+                canvas.beginPage(width, height);
+                listPage++;
+                canvas.text(MARGIN, MARGIN + 6, 4, "iFold: " + title, true);
+                canvas.text(MARGIN, MARGIN + 11, 2.8, String.format(Locale.ROOT, "%s; the steps, continued; page %d of %d", method, listPage + 1,
+                        pages), false);
             }
-            canvas.text(column, y, 2.6, shortened(String.format(Locale.ROOT, "%d. %s", k + 1, caption(animation, k)), 70), false);
-            y += 3.6;
+            canvas.text(entry.x(), entry.y(), 2.6, entry.text(), false);
         }
         canvas.endPage();
         Vector3d lookedBefore = null;
-        double panelWidth = (WIDTH - 2 * MARGIN - (COLUMNS - 1) * GUTTER) / COLUMNS;
-        double panelHeight = (HEIGHT - 2 * MARGIN - HEADER - (ROWS - 1) * GUTTER) / ROWS;
+        double panelWidth = (width - 2 * MARGIN - (columns - 1) * GUTTER) / columns;
+        double panelHeight = (height - 2 * MARGIN - HEADER - (rows - 1) * GUTTER) / rows;
         for (int k = 0; k < folds; k++) {
-            int slot = k % (COLUMNS * ROWS);
+            int slot = k % (columns * rows);
             if (slot == 0) {
                 if (k > 0) {
                     canvas.endPage();
                 }
-                canvas.beginPage(WIDTH, HEIGHT);
+                canvas.beginPage(width, height);
                 canvas.text(MARGIN, MARGIN + 6, 4, "iFold: " + title, true);
-                canvas.text(MARGIN, MARGIN + 11, 2.8, String.format(Locale.ROOT, "%s; page %d of %d", method, 2 + k / (COLUMNS * ROWS), pages),
-                        false);
+                canvas.text(MARGIN, MARGIN + 11, 2.8, String.format(Locale.ROOT, "%s; page %d of %d", method, listPages + 1 + k / (columns * rows),
+                        pages), false);
             }
-            double x = MARGIN + (slot % COLUMNS) * (panelWidth + GUTTER);
-            double top = MARGIN + HEADER + (slot / COLUMNS) * (panelHeight + GUTTER);
+            double x = MARGIN + (slot % columns) * (panelWidth + GUTTER);
+            double top = MARGIN + HEADER + (slot / columns) * (panelHeight + GUTTER);
             double start = animation.foldStart(k);
             double end = animation.foldStart(k + 1);
             Animation.FoldLine crease = animation.foldLine(k);
@@ -121,22 +130,54 @@ public final class StepDiagrams {
             camera.setDistance(distance);
             canvas.outline(new double[] {x, top + CAPTION, x + panelWidth, top + CAPTION, x + panelWidth, top + panelHeight, x,
                 top + panelHeight}, Ink.FLAT);
-            canvas.text(x, top + 4.2, 4.2, Integer.toString(k + 1), true);
-            List<String> lines = wrapped(caption(animation, k), 58);
-            for (int i = 0; i < Math.min(2, lines.size()); i++) {
+            canvas.text(x, top + 4.2, 4.2, animation.foldLabel(k), true);
+            // Helvetica's letters average about half their height across.
+            List<String> lines = wrapped(caption(animation, k), (int) ((panelWidth - 9) / (0.5 * 2.7)));
+            for (int i = 0; i < Math.min(3, lines.size()); i++) {
                 canvas.text(x + 8, top + 3.2 + 3.4 * i, 2.7, lines.get(i), false);
             }
         }
         if (folds > 0) {
             canvas.endPage();
         }
-        return folds;
+        return pages;
     }
 
     /**
-     * Moves the camera back, and towards them, until the fold's crease and the way its flap
-     * travels lie inside the panel, a tenth of it clear of the border: a wrap's view follows its
-     * triangle, and a fold at its edge would fall outside.
+     * The list of steps, each "label. caption" wrapped to its column, two columns a page: on the
+     * title page from {@code firstTop} down, then on pages of their own from under their header.
+     */
+    private static List<Entry> contents(Animation animation, double width, double height, double firstTop) {
+        List<Entry> entries = new ArrayList<>();
+        double columnWidth = (width - 2 * MARGIN - GUTTER) / 2;
+        // Helvetica's letters average about half their height across.
+        int characters = (int) Math.floor(columnWidth / (0.5 * 2.6));
+        int page = 0;
+        int column = 0;
+        double y = firstTop;
+        for (int k = 0; k < animation.foldCount(); k++) {
+            String label = animation.foldLabel(k);
+            List<String> lines = wrapped((label.isEmpty() ? "" : label + ". ") + caption(animation, k), characters);
+            if (y + 3.6 * (lines.size() - 1) > height - MARGIN) {
+                column++;
+                if (column == 2) {
+                    column = 0;
+                    page++;
+                }
+                y = page == 0 ? firstTop : MARGIN + HEADER + 4;
+            }
+            for (int i = 0; i < lines.size(); i++) {
+                entries.add(new Entry(page, MARGIN + column * (columnWidth + GUTTER) + (i > 0 ? 4 : 0), y, lines.get(i)));
+                y += 3.6;
+            }
+        }
+        return entries;
+    }
+
+    /**
+     * Moves the camera closer where the fold's crease and the way its flap travels span little
+     * of the panel, and back, towards them, until they lie inside it, a tenth of it clear of the
+     * border: a wrap's view follows its triangle, and a fold at its edge would fall outside.
      */
     static void fit(Scene scene, double width, double height, Animation.FoldLine crease, double[][] path) {
         List<double[]> points = new ArrayList<>();
@@ -151,6 +192,18 @@ public final class StepDiagrams {
             return;
         }
         Camera camera = scene.camera();
+        // A fold small in its view (a pleat at the end of a long strip, a tuck's flap) is brought
+        // closer, up to four times, until it spans a third of the panel.
+        double[] extent = extent(scene, width, height, points);
+        double span = Math.max(extent[2] - extent[0], (extent[3] - extent[1]) * width / height) / width;
+        if (span > 0 && span < SMALL_FOLD && inside(scene, width, height, points)) {
+            Vector3d centre = new Vector3d();
+            for (double[] p : points) {
+                centre.add(p[0], p[1], p[2]);
+            }
+            camera.setTarget(centre.div(points.size()));
+            camera.setDistance(camera.distance() * Math.max(0.25, span / SMALL_FOLD));
+        }
         for (int tries = 0; tries < FITTING && !inside(scene, width, height, points); tries++) {
             if (tries == 0) {
                 Vector3d centre = new Vector3d();
@@ -163,6 +216,21 @@ public final class StepDiagrams {
                 camera.setDistance(1.3 * camera.distance());
             }
         }
+    }
+
+    /** The box the points take on the panel: x0, y0, x1, y1 (millimetres from its corner). */
+    private static double[] extent(Scene scene, double width, double height, List<double[]> points) {
+        double[] box = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        for (double[] point : points) {
+            double[] p = SceneDrawing.project(scene, 0, 0, width, height, point);
+            if (p != null) {
+                box[0] = Math.min(box[0], p[0]);
+                box[1] = Math.min(box[1], p[1]);
+                box[2] = Math.max(box[2], p[0]);
+                box[3] = Math.max(box[3], p[1]);
+            }
+        }
+        return box;
     }
 
     private static boolean inside(Scene scene, double width, double height, List<double[]> points) {
@@ -202,10 +270,6 @@ public final class StepDiagrams {
     /** Fold k's caption, as the movie says it while the fold is made. */
     static String caption(Animation animation, int k) {
         return animation.foldCaption(k).replaceAll(" \\(\\d+ %\\)", "");
-    }
-
-    private static String shortened(String text, int most) {
-        return text.length() <= most ? text : text.substring(0, most - 3) + "...";
     }
 
     /** Words in lines of at most {@code most} characters. */

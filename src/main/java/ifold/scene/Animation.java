@@ -56,6 +56,15 @@ public interface Animation {
         return false;
     }
 
+    /**
+     * What panel {@code k} is called: the number of the crease it folds as the printed crease
+     * pattern numbers it (its steps' numbers unless it says otherwise); blank for a step that
+     * folds nothing.
+     */
+    default String foldLabel(int k) {
+        return Integer.toString(k + 1);
+    }
+
     /** How many points a {@link #foldPath} has. */
     int PATH_POINTS = 9;
 

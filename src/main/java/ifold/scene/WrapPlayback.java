@@ -84,6 +84,9 @@ public final class WrapPlayback implements Animation {
     int[] panelFirst;
 
     boolean[] panelIsStep;
+
+    /** For each step, the number of the printed crease it makes (the creasing steps so far, counted from 1). */
+    int[] printNumber;
     /** The paper being folded, as it stands at each moment. */
     final PlaybackMesh meshes = new PlaybackMesh(this);
     /** Where the camera looks as the wrap plays. */
@@ -158,6 +161,12 @@ public final class WrapPlayback implements Animation {
             endStep[triangleOf[j]] = j + 1;
         }
         layOutPanels();
+        printNumber = new int[steps.size()];
+        int creasing = 0;
+        for (int j = 0; j < steps.size(); j++) {
+            creasing += steps.get(j).kind().crease() == null ? 0 : 1;
+            printNumber[j] = creasing;
+        }
         pace(WrapView.DEFAULT_SECONDS);
     }
 
@@ -323,6 +332,20 @@ public final class WrapPlayback implements Animation {
         return k >= panelFirst.length ? stepStart[steps.size()] : stepStart[panelFirst[k]];
     }
 
+    /**
+     * A panel of one fold: the number the printed crease pattern gives its crease (the creasing
+     * folds counted in order, as the FOLD file's foldStep); blank where it folds nothing (the
+     * strip's end). A panel of a triangle: "T" and the triangle's number on its path.
+     */
+    @Override
+    public String foldLabel(int k) {
+        int alone = stepOfPanel(k);
+        if (alone >= 0) {
+            return steps.get(alone).kind().crease() == null ? "" : Integer.toString(printNumber[alone]);
+        }
+        return "T" + (triangleOf[panelFirst[k]] + 1);
+    }
+
     @Override
     public boolean foldIsGroup(int k) {
         return k >= 0 && k < panelFirst.length && !panelIsStep[k];
@@ -425,7 +448,8 @@ public final class WrapPlayback implements Animation {
             return String.format(java.util.Locale.ROOT, "%s (fold %d of %d)", describeStep(alone), alone - firstStep[t] + 1,
                     endStep[t] - firstStep[t]);
         }
-        k = triangleOf[panelFirst[k]];
+        int first = panelFirst[k];
+        k = triangleOf[first];
         int[] kinds = new int[Wrap.Kind.values().length];
         for (int j = firstStep[k]; j < endStep[k]; j++) {
             kinds[steps.get(j).kind().ordinal()]++;
@@ -446,6 +470,13 @@ public final class WrapPlayback implements Animation {
                 text.append(separator).append(n).append(' ').append(word);
                 separator = ", ";
             }
+        }
+        // Which of the printed creases they are: the triangle's creasing folds run one after another.
+        int low = firstStep[k] > 0 ? printNumber[firstStep[k] - 1] + 1 : 1;
+        int high = printNumber[endStep[k] - 1];
+        if (high >= low) {
+            text.append(low == high ? String.format(java.util.Locale.ROOT, " (crease %d on the print)", low)
+                    : String.format(java.util.Locale.ROOT, " (creases %d\u2013%d on the print)", low, high));
         }
         return text.toString();
     }

@@ -90,6 +90,11 @@ class PrintCommandTest {
             {new String[] {"--paper-width", "1mm"}, "option --paper-width: must be from 2 mm to 1 m"},
             {new String[] {"--page", "a5"}, "option --page: expected a4, a4-landscape, letter, letter-landscape or none"},
             {new String[] {"--paper-width", "30cm"}, "option --paper-width: a strip 300.0 mm wide does not fit the page (a4): at most"},
+            // One page as long as the strip: 48.4 units at 100 mm a unit is 4.8 m, within PDF's 5.08 m; at 1 m wide, 30 m.
+            {new String[] {"--page", "none", "--paper-width", "1m"}, "option --page: --page none makes one page 30.3 m long, and a PDF page"
+                + " is at most 5.08 m"},
+            // Two outputs into one file: the second would overwrite the first.
+            {new String[] {"--export-diagrams", pdf.toString()}, "option --export-diagrams: " + pdf + " is the file --export-pdf writes too"},
         };
         for (Object[] c : cases) {
             String[] extra = (String[]) c[0];
@@ -103,6 +108,18 @@ class PrintCommandTest {
             CliTest.assertOneLineError(run, (String) c[1]);
             assertFalse(Files.exists(pdf), "nothing written for " + String.join(" ", extra));
         }
+        // Print options with nothing to print would be ignored without a word.
+        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--no-view", "--page", "letter"), "option --page: only with");
+        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--no-view", "--paper-width", "3cm", "--export-diagrams",
+                dir.resolve("d.pdf").toString()), "option --paper-width: only with --export-pdf or --export-svg");
+        // A device, or a pipe, is not replaced by a file (a link to /dev/full became a PDF).
+        Path device = dir.resolve("full.pdf");
+        Files.createSymbolicLink(device, Path.of("/dev/null"));
+        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--no-view", "--export-pdf", device.toString()),
+                "option --export-pdf: " + device + " is not a regular file");
+        assertTrue(Files.isSymbolicLink(device) && !Files.isRegularFile(device), "the link and its device stay as they were");
+        CliTest.assertOneLineError(CliTest.run("demo", "zigzag", "--no-view", "--export-pdf", dir.toString()), "option --export-pdf: "
+                + dir + " is a folder");
         CliTest.Run wrongName = CliTest.run("demo", "zigzag", "--no-view", "--export-pdf", dir.resolve("out.png").toString());
         CliTest.assertOneLineError(wrongName, "--export-pdf");
         CliTest.Run wrongSvg = CliTest.run("demo", "zigzag", "--no-view", "--export-svg", dir.resolve("out.pdf").toString());
@@ -182,20 +199,22 @@ class PrintCommandTest {
         Path pdf = dir.resolve("cube-steps.pdf");
         CliTest.Run run = CliTest.run("wrap", "models/cube.off", "--no-view", "--export-diagrams", pdf.toString());
         assertEquals(0, run.code(), run.err());
-        // The first triangle fold by fold (14 panels), then the 57 others a panel each.
-        assertTrue(run.out().contains("wrote " + pdf + ": 13 pages, 71 steps"), run.out());
+        // The first triangle fold by fold (14 panels), then the 57 others a panel each; the list of
+        // steps on the title page and one more.
+        assertTrue(run.out().contains("wrote " + pdf + ": 14 pages, 71 steps"), run.out());
         assertTrue(Files.size(pdf) < 5_000_000, "the paper outside each panel left out: " + Files.size(pdf) + " bytes");
         if (!tool("pdftotext")) {
             return;
         }
         Path text = dir.resolve("cube-steps.txt");
-        assertEquals(0, new ProcessBuilder("pdftotext", "-f", "2", "-l", "2", pdf.toString(), text.toString()).start().waitFor());
+        assertEquals(0, new ProcessBuilder("pdftotext", "-f", "3", "-l", "3", pdf.toString(), text.toString()).start().waitFor());
         String words = Files.readString(text).replaceAll("\\s+", " ");
         assertTrue(words.contains("triangle 1 of 58: pass 1 of 5: turn, 45° valley fold (fold 1 of 14)"), words);
         Path later = dir.resolve("cube-later.txt");
-        assertEquals(0, new ProcessBuilder("pdftotext", "-f", "4", "-l", "4", pdf.toString(), later.toString()).start().waitFor());
+        assertEquals(0, new ProcessBuilder("pdftotext", "-f", "5", "-l", "5", pdf.toString(), later.toString()).start().waitFor());
         words = Files.readString(later).replaceAll("\\s+", " ");
-        assertTrue(words.contains("triangle 2 of 58: 4 turn folds, 2 gadget folds"), words);
+        // Its panel says which printed creases it makes: those after the first triangle's 14.
+        assertTrue(words.contains("triangle 2 of 58: 4 turn folds, 2 gadget folds (creases 15–20 on the print)"), words);
     }
 
     /** The pixels of a valley's blue (or a mountain's red) in a panel of the top row, from x0 to x1 mm across, at {@code dpi}. */

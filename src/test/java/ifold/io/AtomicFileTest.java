@@ -39,6 +39,19 @@ class AtomicFileTest {
         assertEquals(1, Files.size(dir.resolve("out.off")));
     }
 
+    /** A device or a pipe, or a link to one, is not replaced by a plain file: the window writes here without the command line's checks. */
+    @Test
+    void aDeviceOrAPipeIsRefusedAndLeftAsItWas() throws Exception {
+        Path device = Files.createSymbolicLink(dir.resolve("null.pdf"), Path.of("/dev/null"));
+        java.io.IOException refused = assertThrows(java.io.IOException.class, () -> AtomicFile.write(device, out -> out.write(1), true));
+        assertTrue(refused.getMessage().contains("not a regular file"), refused.getMessage());
+        assertTrue(Files.isSymbolicLink(device));
+        assertFalse(Files.isRegularFile(Path.of("/dev/null")), "/dev/null is still a device");
+        try (var left = Files.list(dir)) {
+            assertEquals(List.of(device), left.toList(), "no temporary file left");
+        }
+    }
+
     /**
      * A file written through a symbolic link lands where the link points, and the link stays
      * (the rename put a plain file in the link's place, and the file it pointed to kept its old

@@ -197,6 +197,25 @@ class CreasePatternPagesTest {
         assertTrue(Double.isNaN(Lengths.millimetres("auto")));
     }
 
+    /**
+     * A fold through two layers leaves two creases apart: each is numbered. A crease cut into
+     * edges by a flat edge across it is still one crease, numbered once.
+     */
+    @Test
+    void eachCreaseOfAFoldIsNumberedButACreaseCutInEdgesOnce() throws Exception {
+        // Fold 1 creases at u = 5 (cut in two at v = 0.5 by a flat edge) and at u = 7, both on the first piece.
+        double[] uv = {0, 0, 60, 0, 60, 1, 0, 1, 5, 0, 5, 0.5, 5, 1, 7, 0, 7, 1, 0, 0.5};
+        int[][] edges = {{0, 4}, {4, 7}, {7, 1}, {1, 2}, {2, 8}, {8, 6}, {6, 3}, {3, 9}, {9, 0}, {4, 5}, {5, 6}, {7, 8}, {9, 5}};
+        char[] kinds = "BBBBBBBBBVVMF".toCharArray();
+        int[] steps = {0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 0};
+        CreasePatternPages pages = CreasePatternPages.of("test", "by hand", List.of(new SheetCreases(60, 1, uv, edges, kinds, steps)),
+                new CreasePatternPages.Options(20, Page.A4));
+        Recording canvas = new Recording();
+        pages.draw(canvas);
+        long ones = canvas.texts.stream().flatMap(List::stream).filter("1"::equals).count();
+        assertEquals(2, ones, "the crease at u = 5 (two edges) and the one at u = 7: " + canvas.texts);
+    }
+
     @Test
     void lengthsAndPagesAreReadAsWritten() {
         assertEquals(20, Lengths.millimetres("2cm"), 1e-12);

@@ -116,7 +116,8 @@ class StepDiagramsTest {
         Scene scene = new Scene();
         Animation playback = Scenes.zigzag(scene, shape, result, List.of(PaperInSpace.of(result.strips().get(0).sheet(), result.frames())));
         Panels canvas = new Panels();
-        int folds = StepDiagrams.draw("a triangle", "zig-zag", scene, playback, canvas);
+        StepDiagrams.draw("a triangle", "zig-zag", scene, playback, canvas, Page.A4);
+        int folds = playback.foldCount();
 
         assertEquals(result.steps().size(), folds);
         assertEquals(folds, canvas.panels.size());

@@ -221,7 +221,8 @@ public final class Exports {
         requirePaper(plan);
         try {
             CreasePatternPages.Template template = plan.job() instanceof Job.ZigZag zigzag && !plan.sheets().isEmpty()
-                    ? PrintJob.triangle(TriangleText.parse(zigzag.triangle()), plan.sheets().get(0).frames()[0]) : null;
+                    ? PrintJob.triangle(TriangleText.parse(zigzag.triangle()), plan.sheets().get(0).frames()[0],
+                            plan.sheets().get(0).sheet()) : null;
             return PrintJob.run(new PrintJob.Request(plan.sheets(), plan.source(), printedMethod(plan.job()), options, file, template),
                     progress.watcher());
         } catch (IllegalArgumentException e) {
@@ -233,13 +234,15 @@ public final class Exports {
 
     /**
      * Draws step diagrams of the plan, as {@code --export-diagrams} does: a title page and a panel
-     * a fold (a wrap's: a triangle of its path), from a new scene of the result.
+     * a fold (a wrap's: a triangle of its path), from a new scene of the result, on pages of
+     * {@code page}'s size.
      */
-    public static PrintJob.Printed diagrams(Plan plan, Path file, Progress progress) throws JobFailure {
+    public static PrintJob.Printed diagrams(Plan plan, Path file, ifold.print.Page page, Progress progress) throws JobFailure {
         requirePaper(plan);
         Plan.Shown shown = plan.newScene();
         try {
-            return PrintJob.diagrams(plan.source(), printedMethod(plan.job()), shown.scene(), shown.animation(), file, progress.watcher());
+            return PrintJob.diagrams(plan.source(), printedMethod(plan.job()), shown.scene(), shown.animation(), file, page,
+                    progress.watcher());
         } catch (IOException e) {
             throw new JobFailure("cannot write " + file + ": " + e.getMessage());
         }

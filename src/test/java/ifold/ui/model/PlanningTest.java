@@ -346,7 +346,7 @@ class PlanningTest {
     @Test
     void stepDiagramsAreDrawnAsTheCommandLineDrawsThem() throws Exception {
         Plan plan = Planning.plan(Job.ZigZag.DEMO, Progress.NONE);
-        ifold.job.PrintJob.Printed printed = Exports.diagrams(plan, dir.resolve("steps.pdf"), Progress.NONE);
+        ifold.job.PrintJob.Printed printed = Exports.diagrams(plan, dir.resolve("steps.pdf"), ifold.print.Page.A4, Progress.NONE);
         assertEquals(4, printed.pages());
         assertEquals(13, printed.pieces(), "a panel a fold");
         assertTrue(Files.size(dir.resolve("steps.pdf")) > 10_000);
