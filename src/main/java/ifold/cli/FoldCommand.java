@@ -31,7 +31,11 @@ import picocli.CommandLine.Model.CommandSpec;
 @Command(name = "fold", mixinStandardHelpOptions = true,
         // One paragraph: the list of commands shows a description's first element alone.
         description = {"Plays a fold script (docs/fold-scripts.md) or a FOLD file (JSON, as written by "
-            + "--export-fold), whose crease pattern is folded one crease line at a time. "
+            + "--export-fold or another tool). A crease pattern on a rectangle whose creases run from border to border folds "
+            + "one crease line at a time, in its order; any other FOLD file folds every crease at once: any outline, fold "
+            + "angles in 3D (a box's net; every cycle of creases must close), a pattern folded flat without a layer order "
+            + "(each vertex checked by Maekawa's and Kawasaki's theorems, its layer order found), a folded form alone "
+            + "(unfolded onto one sheet, as the FOLD repository's box), and iFold's own files with their folded state. "
             + "Each fold swings from 0 to its angle. "
             + "Without --frames it plays in the viewer (space plays, arrows step through the folds). "
             + "The animation takes ten seconds unless --seconds says otherwise."})
@@ -40,7 +44,7 @@ final class FoldCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "SCRIPT", description = "a fold script, or a FOLD file of a crease pattern on a rectangle")
+    @Parameters(index = "0", paramLabel = "SCRIPT", description = "a fold script, or a FOLD file: a crease pattern, a folded form, or both")
     Path script;
 
     @Option(names = "--max-faces", paramLabel = "N", defaultValue = "10000",
@@ -78,7 +82,6 @@ final class FoldCommand implements Callable<Integer> {
         } catch (ScriptJob.Refused e) {
             throw new UserError(e.getMessage());
         }
-        FoldScript parsed = folding.script();
         ScriptFolding.Result result = folding.result();
         long[] nanosPerFold = folding.nanosPerFold();
         PaperInSpace folded = folding.folded();
@@ -87,27 +90,23 @@ final class FoldCommand implements Callable<Integer> {
         figures.put("timing", timing(nanosPerFold, result.steps()));
         // The FOLD file's folded state folds the script again on paper of no thickness: only where a
         // FOLD file is written or the layer order checked (from the same FOLD text, made in memory).
-        List<FoldFile.Folded> sheets = outputs.checksLayerOrder() || outputs.prints()
-                ? List.of(FoldFile.Folded.ofScript(parsed, result, maxFaces)) : List.of();
+        List<FoldFile.Folded> sheets = outputs.checksLayerOrder() || outputs.prints() ? folding.sheets(maxFaces) : List.of();
         outputs.exportFold(sheets, "ifold fold " + script, figures);
         outputs.exportPrint(sheets, script.getFileName().toString(), PrintJob.SCRIPT);
-        diagrams.write(outputs, script.getFileName().toString(), PrintJob.SCRIPT, in -> Scenes.script(in, result, folded));
-        outputs.write(List.of(folded), result.sheet().thickness(), "iFold fold script " + script + ": " + result.steps().size() + " folds, thickness "
+        diagrams.write(outputs, script.getFileName().toString(), PrintJob.SCRIPT, folding::play);
+        outputs.write(List.of(folded), result.sheet().thickness(), "iFold fold script " + script + ": " + folding.folds() + ", thickness "
                 + result.sheet().thickness(), figures);
-        int folds = result.steps().size();
         int creases = ((Number) figures.get("creases")).intValue();
         int layers = ((Number) figures.get("maxLayers")).intValue();
-        out.printf(Locale.ROOT, "%s: %d %s, %d %s at most, %d %s, isometry error %.1e%n", script.getFileName(), folds,
-                folds == 1 ? "fold" : "folds", layers, layers == 1 ? "layer" : "layers", creases, creases == 1 ? "crease" : "creases",
-                (Double) figures.get("isometryError"));
+        out.printf(Locale.ROOT, "%s: %s, %d %s at most, %d %s, isometry error %.1e%n", script.getFileName(), folding.folds(), layers,
+                layers == 1 ? "layer" : "layers", creases, creases == 1 ? "crease" : "creases", (Double) figures.get("isometryError"));
         outputs.printChecksAndFiles(out);
         out.flush();
 
         Scene scene = new Scene();
         // The camera frames the paper as it stands, folding up.
-        Animation animation = Scenes.script(scene, result, folded);
-        outputs.show(scene, animation, script.getFileName() + ": " + folds + (folds == 1 ? " fold" : " folds"),
-                outputs.frameOptions.seconds, false, spec);
+        Animation animation = folding.play(scene);
+        outputs.show(scene, animation, script.getFileName() + ": " + folding.folds(), outputs.frameOptions.seconds, false, spec);
         out.flush();
         return 0;
     }

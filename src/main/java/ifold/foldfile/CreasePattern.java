@@ -46,10 +46,19 @@ public record CreasePattern(double length, double width, FoldScript script, List
     static final double SMALLEST_SHEET = Tolerance.SMALLEST_SIZE;
 
     /** A crease pattern that cannot be read, or cannot be folded as iFold folds. */
-    public static final class Refused extends Exception {
+    public static class Refused extends Exception {
         private static final long serialVersionUID = 1L;
 
         public Refused(String message) {
+            super(message);
+        }
+    }
+
+    /** A pattern whose lines, folded one at a time in its order, do not come out as it says: it may fold all at once. */
+    public static final class NotInOrder extends Refused {
+        private static final long serialVersionUID = 1L;
+
+        NotInOrder(String message) {
             super(message);
         }
     }
@@ -64,7 +73,11 @@ public record CreasePattern(double length, double width, FoldScript script, List
      * @throws Refused naming the edge or the key, where the file is not such a crease pattern
      */
     public static CreasePattern read(Path file) throws IOException, Refused {
-        Map<String, Object> fold = FoldJson.read(file);
+        return of(FoldJson.read(file));
+    }
+
+    /** As {@link #read(Path)}, from the file's content already read. */
+    public static CreasePattern of(Map<String, Object> fold) throws Refused {
         List<double[]> vertices = points(fold, "vertices_coords");
         List<double[]> edges = points(fold, "edges_vertices");
         Object assignmentsValue = fold.get("edges_assignment");
@@ -303,7 +316,7 @@ public record CreasePattern(double length, double width, FoldScript script, List
     private Refused refusal(ScriptFolding.Result result, int k) {
         double[] c = creases.get(k);
         double found = new Creased(result, lines.size()).angle(k);
-        return new Refused(String.format(Locale.ROOT, "cannot be folded one crease line at a time in this order: the crease"
+        return new NotInOrder(String.format(Locale.ROOT, "cannot be folded one crease line at a time in this order: the crease"
                 + " (%.6g, %.6g)-(%.6g, %.6g) comes out %s, the file says %s", c[0], c[1], c[2], c[3],
                 Double.isNaN(found) || found == 0 ? "flat" : found > 0 ? "a valley" : "a mountain", c[4] > 0 ? "valley" : "mountain"));
     }

@@ -50,7 +50,7 @@ public final class FoldJson {
      * @throws CreasePattern.Refused if it is not one JSON object, naming the line where it goes wrong
      */
     @SuppressWarnings("unchecked")
-    static Map<String, Object> read(Path file) throws IOException, CreasePattern.Refused {
+    public static Map<String, Object> read(Path file) throws IOException, CreasePattern.Refused {
         // A key given twice is refused rather than the last one taken: the file says two things.
         try (JsonParser parser = new JsonFactory().enable(JsonParser.Feature.STRICT_DUPLICATE_DETECTION).createParser(file.toFile())) {
             if (parser.nextToken() != JsonToken.START_OBJECT) {

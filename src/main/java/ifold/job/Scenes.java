@@ -215,6 +215,17 @@ public final class Scenes {
         return animation;
     }
 
+    /** A FOLD file's paper folded all at once, every crease together, the camera framing it as it stands. */
+    public static Animation form(Scene scene, ifold.foldfile.FoldedForm.Result result, PaperInSpace folded) {
+        Geometry geometry = new Geometry("paper", PaperView.mesh(folded, result.sheet()), PaperView.MATERIAL);
+        scene.root().attach(geometry);
+        scene.camera().setOrientation(new Quaterniond().rotateX(-0.75).rotateZ(-0.35));
+        Animation animation = PaperView.formFolding(geometry, new PaperView.Motion(result.sheet(), result.frames(), result::motionAt,
+                result.creases(), result.kind().words()), folded, scene.camera());
+        animation.apply(0);
+        return animation;
+    }
+
     private static WrapPlayback paper(Scene scene, Wrap.Result result, List<PaperInSpace> geometries, String ending) {
         // White paper on a white background would not be seen where it leaves the triangle.
         scene.setBackground(BACKGROUND);

@@ -1,13 +1,18 @@
 package ifold.job;
 
 import ifold.foldfile.CreasePattern;
+import ifold.foldfile.FoldFile;
+import ifold.foldfile.FoldedForm;
 import ifold.foldfile.FoldJson;
+import ifold.scene.Animation;
+import ifold.scene.Scene;
 import ifold.script.FoldScript;
 import ifold.script.FoldScriptException;
 import ifold.script.ScriptFolding;
 import ifold.wrap.PaperInSpace;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Map;
 
 /**
@@ -32,7 +37,29 @@ public final class ScriptJob {
      * @param fromFoldFile whether the file was a FOLD crease pattern
      */
     public record Outcome(FoldScript script, ScriptFolding.Result result, PaperInSpace folded, Map<String, Object> figures,
-            long[] nanosPerFold, boolean fromFoldFile) {
+            long[] nanosPerFold, boolean fromFoldFile, FoldedForm.Result form) {
+        /**
+         * The folded sheet as a FOLD file, a print or the layer-order check read it: a script's
+         * folded again on paper of no thickness where it has some (FOLD's folded state is of
+         * ideal paper); a FOLD file folded all at once, as it is (its hosts are the planes).
+         */
+        public List<FoldFile.Folded> sheets(int maxFaces) {
+            return List.of(form != null ? new FoldFile.Folded(form.sheet(), form.frames()) : FoldFile.Folded.ofScript(script, result, maxFaces));
+        }
+
+        /** The folding, played in {@code scene}: fold by fold, or every crease at once. */
+        public Animation play(Scene scene) {
+            return form != null ? Scenes.form(scene, form, folded) : Scenes.script(scene, result, folded);
+        }
+
+        /** What was folded, in a few words: "20 folds", or "12 creases folded at once (its fold angles)". */
+        public String folds() {
+            if (form != null) {
+                return form.creases() + (form.creases() == 1 ? " crease" : " creases") + " folded at once (" + form.kind().words() + ")";
+            }
+            int folds = result.steps().size();
+            return folds + (folds == 1 ? " fold" : " folds");
+        }
     }
 
     /** The file holds no folds iFold can play: the line or the key, and why, after the file's name. */
@@ -56,9 +83,16 @@ public final class ScriptJob {
         FoldScript parsed;
         ScriptFolding.Result result;
         long[] nanosPerFold;
+        Map<String, Object> fold = null;
         try {
             if (FoldJson.isFoldFile(file)) {
-                pattern = CreasePattern.read(file);
+                fold = FoldJson.read(file);
+                try {
+                    pattern = CreasePattern.of(fold);
+                } catch (CreasePattern.Refused e) {
+                    // Not a rectangle creased from border to border: folded all at once instead.
+                    return allAtOnce(file, fold, stage);
+                }
                 parsed = pattern.script();
             } else {
                 parsed = FoldScript.read(file);
@@ -66,7 +100,12 @@ public final class ScriptJob {
             nanosPerFold = new long[parsed.steps().size()];
             stage.accept("folding " + parsed.steps().size() + " folds");
             if (pattern != null) {
-                CreasePattern.Folding folding = pattern.fold(nanosPerFold, maxFaces);
+                CreasePattern.Folding folding;
+                try {
+                    folding = pattern.fold(nanosPerFold, maxFaces);
+                } catch (CreasePattern.NotInOrder e) {
+                    return allAtOnce(file, fold, stage);
+                }
                 parsed = folding.script(); // some lines may have been folded the other way
                 result = folding.result();
             } else {
@@ -76,11 +115,30 @@ public final class ScriptJob {
             throw new Refused(file + ": " + e.getMessage());
         } catch (FoldScriptException e) {
             if (pattern != null) {
-                throw new Refused(file + ": cannot be folded one crease line at a time in this order: " + e.getMessage());
+                // Its lines cannot be folded one at a time in its order: all at once, then.
+                return allAtOnce(file, fold, stage);
             }
             throw new Refused(file + (e.line() > 0 ? ":" + e.getMessage().replaceFirst("^line ", "") : ": " + e.getMessage()));
         }
         PaperInSpace folded = PaperInSpace.of(result.sheet(), result.frames());
-        return new Outcome(parsed, result, folded, Reports.script(result, folded), nanosPerFold, pattern != null);
+        return new Outcome(parsed, result, folded, Reports.script(result, folded), nanosPerFold, pattern != null, null);
+    }
+
+    /** A FOLD file folded with every crease at once ({@link FoldedForm}). */
+    private static Outcome allAtOnce(Path file, Map<String, Object> fold, java.util.function.Consumer<String> stage) throws Refused {
+        stage.accept("folding every crease at once");
+        long start = System.nanoTime();
+        FoldedForm.Result form;
+        try {
+            form = FoldedForm.fold(fold);
+        } catch (CreasePattern.Refused e) {
+            throw new Refused(file + ": " + e.getMessage());
+        }
+        ScriptFolding.Result result = new ScriptFolding.Result(form.sheet(), form.frames(), List.of());
+        PaperInSpace folded = PaperInSpace.of(form.sheet(), form.frames());
+        Map<String, Object> figures = Reports.script(result, folded);
+        figures.put("folding", "all at once: " + form.kind().words());
+        figures.put("foldedCreases", form.creases());
+        return new Outcome(null, result, folded, figures, new long[] {System.nanoTime() - start}, true, form);
     }
 }

@@ -70,6 +70,121 @@ public final class PaperView {
         return new Playback(geometry, result, folded, camera);
     }
 
+    /**
+     * Plays a crease pattern folded all at once, as Origami Simulator folds: every crease turning
+     * together from flat to its fold angle, each face carried by the hinges from the first, its
+     * layer rising with it; at the end, the folded paper as written. The camera frames the paper
+     * as it stands.
+     */
+    public static Animation formFolding(Geometry geometry, Motion motion, PaperInSpace folded, Camera camera) {
+        return new FormPlayback(geometry, motion, folded, camera);
+    }
+
+    /**
+     * A sheet folded all at once, as the scene plays it: the sheet folded, the planes its hosts
+     * are, each face's motion part way, and what to call it.
+     *
+     * @param motionAt for t from 0 (flat) to 1 (folded without thickness), each face's motion:
+     *     12 numbers, R (3 × 3, rows first) then t, taking paper (u, v, 0) into space
+     * @param creases how many creases turn
+     * @param how how its folded state was found, in words
+     */
+    public record Motion(Sheet sheet, HostFrame[] frames, java.util.function.DoubleFunction<double[][]> motionAt, int creases, String how) {
+    }
+
+    private static final class FormPlayback implements Animation {
+        private final Geometry geometry;
+        private final Motion motion;
+        private final SceneMesh end;
+        private final int[] levels;
+        private final Camera camera;
+        private double shown = Double.NaN;
+        private double sceneRadius;
+
+        FormPlayback(Geometry geometry, Motion motion, PaperInSpace folded, Camera camera) {
+            this.geometry = geometry;
+            this.motion = motion;
+            this.end = mesh(folded, motion.sheet());
+            this.levels = motion.sheet().levels();
+            this.camera = camera;
+        }
+
+        @Override
+        public int stepCount() {
+            return 1;
+        }
+
+        @Override
+        public void apply(double position) {
+            if (position == shown) {
+                return;
+            }
+            shown = position;
+            if (position >= 1) {
+                sceneRadius = frameCamera(camera, end, sceneRadius);
+                geometry.setMesh(end);
+                return;
+            }
+            double t = Math.max(0, position);
+            Sheet sheet = motion.sheet();
+            double[][] placed = motion.motionAt().apply(t);
+            Mesh mesh = new Mesh();
+            for (int f = 0; f < sheet.faceCount(); f++) {
+                double[] m = placed[f];
+                double[] normal = motion.frames()[sheet.host(f)].normal();
+                // The layer rises with the fold: by its level's height once folded.
+                double lift = t * (levels[f] + 0.5) * sheet.thickness();
+                int[] loop = sheet.loop(f);
+                int[] corners = new int[loop.length];
+                for (int c = 0; c < loop.length; c++) {
+                    double u = sheet.u(loop[c]);
+                    double v = sheet.v(loop[c]);
+                    corners[c] = mesh.point(new double[] {m[0] * u + m[1] * v + m[9] + lift * normal[0],
+                        m[3] * u + m[4] * v + m[10] + lift * normal[1], m[6] * u + m[7] * v + m[11] + lift * normal[2]});
+                }
+                mesh.face(corners, PAPER);
+                mesh.outline(corners, loop, sheet);
+            }
+            SceneMesh built = mesh.build();
+            sceneRadius = frameCamera(camera, built, sceneRadius);
+            geometry.setMesh(built);
+        }
+
+        @Override
+        public String describe(double position) {
+            if (position >= 1) {
+                return "folded: " + motion.sheet().faceCount() + " faces, " + motion.how();
+            }
+            return String.format(java.util.Locale.ROOT, "all %d creases folding at once (%.0f %%)", motion.creases(), 100 * Math.max(0, position));
+        }
+    }
+
+    /**
+     * Frames {@code camera} (where there is one) on the paper as it stands, its direction kept,
+     * the clipping planes set for the largest the paper has been so far ({@code sceneRadius},
+     * returned grown), so that they do not hop.
+     */
+    static double frameCamera(Camera camera, SceneMesh mesh, double sceneRadius) {
+        if (camera == null || mesh.vertexCount() == 0) {
+            return sceneRadius;
+        }
+        double[] p = mesh.positions();
+        double[] min = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
+        double[] max = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        for (int i = 0; i < p.length; i += 3) {
+            for (int axis = 0; axis < 3; axis++) {
+                min[axis] = Math.min(min[axis], p[i + axis]);
+                max[axis] = Math.max(max[axis], p[i + axis]);
+            }
+        }
+        org.joml.Vector3d centre = new org.joml.Vector3d((min[0] + max[0]) / 2, (min[1] + max[1]) / 2, (min[2] + max[2]) / 2);
+        double radius = Math.max(1e-9, Math.hypot(max[0] - min[0], Math.hypot(max[1] - min[1], max[2] - min[2])) / 2);
+        camera.frame(centre, radius);
+        double grown = Math.max(sceneRadius, 4 * radius);
+        camera.setSceneRadius(grown);
+        return grown;
+    }
+
     private static final class Playback implements Animation {
         private final Geometry geometry;
         private final ScriptFolding.Result result;
@@ -191,24 +306,7 @@ public final class PaperView {
 
         private void show(SceneMesh mesh) {
             geometry.setMesh(mesh);
-            if (camera == null || mesh.vertexCount() == 0) {
-                return;
-            }
-            double[] p = mesh.positions();
-            double[] min = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
-            double[] max = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
-            for (int i = 0; i < p.length; i += 3) {
-                for (int axis = 0; axis < 3; axis++) {
-                    min[axis] = Math.min(min[axis], p[i + axis]);
-                    max[axis] = Math.max(max[axis], p[i + axis]);
-                }
-            }
-            org.joml.Vector3d centre = new org.joml.Vector3d((min[0] + max[0]) / 2, (min[1] + max[1]) / 2, (min[2] + max[2]) / 2);
-            double radius = Math.max(1e-9, Math.hypot(max[0] - min[0], Math.hypot(max[1] - min[1], max[2] - min[2])) / 2);
-            camera.frame(centre, radius);
-            // Clipping planes for the largest the paper gets (the flat sheet), so that they do not hop.
-            sceneRadius = Math.max(sceneRadius, 4 * radius);
-            camera.setSceneRadius(sceneRadius);
+            sceneRadius = frameCamera(camera, mesh, sceneRadius);
         }
 
         /**

@@ -72,6 +72,23 @@ public final class Isometry2 {
         return new Isometry2(c, -s, s, c, ax, ay, a2x, a2y);
     }
 
+    /**
+     * The motion with linear part [m00 m01; m10 m11] (orthogonal up to rounding: renormalised as
+     * {@link #after} does) taking the anchor (au, av) to (ax, ay): a face placed by where its
+     * corner lands and how its axes turn.
+     */
+    public static Isometry2 anchored(double m00, double m01, double m10, double m11, double au, double av, double ax, double ay) {
+        double length = Math.hypot(m00, m10);
+        if (!(length > 0) || !Double.isFinite(length)) {
+            throw new IllegalArgumentException("an isometry needs a linear part that turns the plane, got " + m00 + " " + m01 + "; " + m10
+                    + " " + m11);
+        }
+        double a = m00 / length;
+        double c = m10 / length;
+        boolean mirror = m00 * m11 - m01 * m10 < 0;
+        return new Isometry2(a, mirror ? c : -c, c, mirror ? -a : a, au, av, ax, ay);
+    }
+
     public double x(double u, double v) {
         return ax + m00 * (u - au) + m01 * (v - av);
     }

@@ -290,15 +290,14 @@ public final class Planning {
             throw new JobFailure(e.getMessage());
         }
         progress.check();
-        FoldScript parsed = folding.script();
         ScriptFolding.Result result = folding.result();
         PaperInSpace folded = folding.folded();
         Map<String, Object> figures = folding.figures();
         // Folded once more on ideal paper where thick (ofScript): once, for the check and the export.
-        List<FoldFile.Folded> sheets = List.of(FoldFile.Folded.ofScript(parsed, result, ScriptFolding.DEFAULT_MAX_FACES));
+        List<FoldFile.Folded> sheets = folding.sheets(ScriptFolding.DEFAULT_MAX_FACES);
         LayerOrders.addTo(figures, sheets, "script");
         Collisions.addTo(figures, List.of(folded), result.sheet().thickness(), null);
-        Plan.Shown shown = scriptScene(result, folded);
+        Plan.Shown shown = scriptScene(folding);
         List<Fold> folds = new ArrayList<>();
         for (int k = 0; k < result.steps().size(); k++) {
             FoldScript.Step fold = result.steps().get(k).fold();
@@ -306,9 +305,12 @@ public final class Planning {
             folds.add(new Fold(String.format(Locale.ROOT, "fold %d: %s %.4g°%s", k + 1, kind, fold.degrees(),
                     fold.line() > 0 ? ", line " + fold.line() : ""), kind, k));
         }
-        String header = "iFold fold script " + file + ": " + result.steps().size() + " folds, thickness " + result.sheet().thickness();
-        return new Plan(job, file.getFileName() + ": " + result.steps().size() + " folds", shown, List.copyOf(folds), figures, 10,
-                () -> scriptScene(result, folded), out -> WrapExport.writeObj(out, header, List.of(folded)),
+        if (folding.form() != null) {
+            folds.add(new Fold(folding.folds(), "all at once", 0));
+        }
+        String header = "iFold fold script " + file + ": " + folding.folds() + ", thickness " + result.sheet().thickness();
+        return new Plan(job, file.getFileName() + ": " + folding.folds(), shown, List.copyOf(folds), figures, 10,
+                () -> scriptScene(folding), out -> WrapExport.writeObj(out, header, List.of(folded)),
                 sheets, "ifold fold " + file, null);
     }
 
@@ -365,9 +367,9 @@ public final class Planning {
         return List.copyOf(parts);
     }
 
-    private static Plan.Shown scriptScene(ScriptFolding.Result result, PaperInSpace folded) {
+    private static Plan.Shown scriptScene(ScriptJob.Outcome folding) {
         Scene scene = new Scene();
-        Animation animation = Scenes.script(scene, result, folded);
+        Animation animation = folding.play(scene);
         return new Plan.Shown(scene, animation);
     }
 

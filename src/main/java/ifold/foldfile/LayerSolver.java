@@ -1,0 +1,501 @@
+package ifold.foldfile;
+
+import ifold.sheet.Polygons2;
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+
+/**
+ * A layer order for a crease pattern folded flat, where the file gives none: which of every two
+ * faces that overlap lies above, such that paper could be folded so. The conditions are those of
+ * flat folding (as Jason Ku's Flat-Folder states them): the two faces of a crease lie as its
+ * valley or mountain says; a face through which a crease's line runs lies above both of its
+ * faces or below both (taco–tortilla); two creases on one line whose flaps lie on one side nest
+ * or lie apart, never interleave (taco–taco); and no three faces over one point lie in a cycle
+ * (transitivity). Each condition is propagated as soon as all its pairs but one are decided;
+ * what propagation leaves open is searched, depth first.
+ */
+final class LayerSolver {
+    /** The most choices the search makes before it gives up on an order. */
+    static final long MOST_CHOICES = 2_000_000;
+
+    /**
+     * A crease folded flat between faces f and g along the segment (x1, y1)-(x2, y2) of the
+     * folded state, a valley or a mountain seen from the paper's top side.
+     */
+    record FlatCrease(int f, int g, boolean valley, double x1, double y1, double x2, double y2) {
+    }
+
+    /** One condition on up to four pairs: the pairs (a, b) it reads, and the kind that says how. */
+    private record Condition(int kind, int[] faces) {
+    }
+
+    private static final int FIXED = 0;
+    private static final int SAME_SIDE = 1;
+    private static final int NESTED = 2;
+    private static final int NO_CYCLE = 3;
+
+    private final double[][] polygons;
+    private final Map<Long, Integer> variable = new HashMap<>();
+    private final List<long[]> pairs = new ArrayList<>();
+    private byte[] value;
+    private final List<Condition> conditions = new ArrayList<>();
+    private List<List<Integer>> watching;
+    private long choices;
+
+    private LayerSolver(double[][] polygons) {
+        this.polygons = polygons;
+    }
+
+    /**
+     * The faces bottom up (each face above every face before it that it overlaps).
+     *
+     * @param polygons each face in the folded state's plane (x, y pairs, convex)
+     * @param faceUp whether each face shows its top side up (+z)
+     * @throws CreasePattern.Refused naming the faces where no order satisfies the conditions
+     */
+    static int[] order(double[][] polygons, boolean[] faceUp, List<FlatCrease> creases, double tolerance) throws CreasePattern.Refused {
+        LayerSolver solver = new LayerSolver(polygons);
+        solver.findPairs(tolerance);
+        solver.value = new byte[solver.pairs.size()];
+        for (FlatCrease crease : creases) {
+            // A valley lays g on f's top side: above f where f shows its top side up.
+            boolean gAbove = crease.valley() == faceUp[crease.f()];
+            if (solver.variable.containsKey(key(crease.f(), crease.g()))) {
+                solver.conditions.add(new Condition(FIXED, gAbove ? new int[] {crease.g(), crease.f()} : new int[] {crease.f(), crease.g()}));
+            }
+        }
+        solver.tacos(creases, tolerance);
+        solver.cycles(tolerance);
+        solver.watch();
+        if (!solver.solve()) {
+            throw new CreasePattern.Refused(solver.conflict == null ? String.format(Locale.ROOT, "no layer order found in %,d choices:"
+                    + " the crease pattern may not fold flat", MOST_CHOICES) : solver.conflict);
+        }
+        return solver.bottomUp();
+    }
+
+    private String conflict;
+
+    private static long key(int a, int b) {
+        return ((long) Math.min(a, b) << 32) | Math.max(a, b);
+    }
+
+    private void findPairs(double tolerance) {
+        int n = polygons.length;
+        double[][] boxes = new double[n][];
+        Integer[] byX = new Integer[n];
+        for (int f = 0; f < n; f++) {
+            boxes[f] = Polygons2.bounds(polygons[f]);
+            byX[f] = f;
+        }
+        Arrays.sort(byX, (a, b) -> Double.compare(boxes[a][0], boxes[b][0]));
+        for (int i = 0; i < n; i++) {
+            int f = byX[i];
+            for (int j = i + 1; j < n && boxes[byX[j]][0] < boxes[f][2] - tolerance; j++) {
+                int g = byX[j];
+                if (boxes[g][1] < boxes[f][3] - tolerance && boxes[f][1] < boxes[g][3] - tolerance
+                        && Polygons2.overlap(polygons[f], polygons[f].length / 2, polygons[g], polygons[g].length / 2, tolerance)) {
+                    variable.put(key(f, g), pairs.size());
+                    pairs.add(new long[] {Math.min(f, g), Math.max(f, g)});
+                }
+            }
+        }
+    }
+
+    private boolean overlaps(int a, int b) {
+        return variable.containsKey(key(a, b));
+    }
+
+    /** Taco–tortilla and taco–taco conditions of each crease. */
+    private void tacos(List<FlatCrease> creases, double tolerance) {
+        for (int i = 0; i < creases.size(); i++) {
+            FlatCrease c = creases.get(i);
+            if (!overlaps(c.f(), c.g())) {
+                continue;
+            }
+            for (int h = 0; h < polygons.length; h++) {
+                if (h != c.f() && h != c.g() && overlaps(h, c.f()) && overlaps(h, c.g()) && crosses(h, c, tolerance)) {
+                    conditions.add(new Condition(SAME_SIDE, new int[] {h, c.f(), c.g()}));
+                }
+            }
+            for (int j = i + 1; j < creases.size(); j++) {
+                FlatCrease d = creases.get(j);
+                if (!overlaps(d.f(), d.g()) || !collinearOverlap(c, d, tolerance) || side(c, c.f()) != side(c, d.f())) {
+                    continue;
+                }
+                if (overlaps(c.f(), d.f()) && overlaps(c.f(), d.g()) && overlaps(c.g(), d.f()) && overlaps(c.g(), d.g())) {
+                    conditions.add(new Condition(NESTED, new int[] {c.f(), c.g(), d.f(), d.g()}));
+                }
+            }
+        }
+    }
+
+    /** Whether the crease's segment runs through face h's inside, not only along its edge. */
+    private boolean crosses(int h, FlatCrease c, double tolerance) {
+        double[] polygon = polygons[h];
+        int n = polygon.length / 2;
+        // Clip the segment to the polygon (convex; either winding), then ask that what is left
+        // stands off every edge of it.
+        double t0 = 0;
+        double t1 = 1;
+        double dx = c.x2() - c.x1();
+        double dy = c.y2() - c.y1();
+        double orientation = Math.signum(Polygons2.twiceArea(polygon, n));
+        for (int i = 0, j = n - 1; i < n; j = i++) {
+            // Inward normal of edge j → i.
+            double ex = polygon[2 * i] - polygon[2 * j];
+            double ey = polygon[2 * i + 1] - polygon[2 * j + 1];
+            double length = Math.hypot(ex, ey);
+            if (!(length > 0)) {
+                continue;
+            }
+            double nx = -ey / length * orientation;
+            double ny = ex / length * orientation;
+            // Inside by more than the tolerance: n · (p - a) > tolerance.
+            double start = nx * (c.x1() - polygon[2 * j]) + ny * (c.y1() - polygon[2 * j + 1]) - tolerance;
+            double rate = nx * dx + ny * dy;
+            if (Math.abs(rate) < 1e-300) {
+                if (start <= 0) {
+                    return false;
+                }
+                continue;
+            }
+            double t = -start / rate;
+            if (rate > 0) {
+                t0 = Math.max(t0, t);
+            } else {
+                t1 = Math.min(t1, t);
+            }
+        }
+        return (t1 - t0) * Math.hypot(dx, dy) > tolerance;
+    }
+
+    private static boolean collinearOverlap(FlatCrease a, FlatCrease b, double tolerance) {
+        double dx = a.x2() - a.x1();
+        double dy = a.y2() - a.y1();
+        double length = Math.hypot(dx, dy);
+        double ux = dx / length;
+        double uy = dy / length;
+        double off1 = Math.abs(-uy * (b.x1() - a.x1()) + ux * (b.y1() - a.y1()));
+        double off2 = Math.abs(-uy * (b.x2() - a.x1()) + ux * (b.y2() - a.y1()));
+        if (off1 > tolerance || off2 > tolerance) {
+            return false;
+        }
+        double s1 = ux * (b.x1() - a.x1()) + uy * (b.y1() - a.y1());
+        double s2 = ux * (b.x2() - a.x1()) + uy * (b.y2() - a.y1());
+        return Math.min(length, Math.max(s1, s2)) - Math.max(0, Math.min(s1, s2)) > tolerance;
+    }
+
+    /** Which side of the crease's line face f's middle lies on. */
+    private double side(FlatCrease c, int f) {
+        double[] polygon = polygons[f];
+        int n = polygon.length / 2;
+        double cx = 0;
+        double cy = 0;
+        for (int i = 0; i < n; i++) {
+            cx += polygon[2 * i] / n;
+            cy += polygon[2 * i + 1] / n;
+        }
+        return Math.signum((c.x2() - c.x1()) * (cy - c.y1()) - (c.y2() - c.y1()) * (cx - c.x1()));
+    }
+
+    /** No cycle among three faces over one point: for each two that overlap, each third over their common part. */
+    private void cycles(double tolerance) {
+        Map<Integer, List<Integer>> neighbours = new HashMap<>();
+        for (long[] pair : pairs) {
+            neighbours.computeIfAbsent((int) pair[0], k -> new ArrayList<>()).add((int) pair[1]);
+            neighbours.computeIfAbsent((int) pair[1], k -> new ArrayList<>()).add((int) pair[0]);
+        }
+        for (long[] pair : pairs) {
+            int a = (int) pair[0];
+            int b = (int) pair[1];
+            double[] common = intersection(polygons[a], polygons[b], tolerance);
+            if (common == null) {
+                continue;
+            }
+            for (int c : neighbours.getOrDefault(b, List.of())) {
+                if (c > b && overlaps(a, c) && intersection(common, polygons[c], tolerance) != null) {
+                    conditions.add(new Condition(NO_CYCLE, new int[] {a, b, c}));
+                }
+            }
+        }
+    }
+
+    /** The common part of two convex polygons, or null where it has no area beyond the tolerance. */
+    static double[] intersection(double[] a, double[] b, double tolerance) {
+        double[] part = a;
+        int n = b.length / 2;
+        double orientation = Math.signum(Polygons2.twiceArea(b, n));
+        for (int i = 0, j = n - 1; i < n && part != null; j = i++) {
+            double ex = b[2 * i] - b[2 * j];
+            double ey = b[2 * i + 1] - b[2 * j + 1];
+            // Keep the side of edge j → i that b lies on: outward normal · p <= c.
+            double nx = ey * orientation;
+            double ny = -ex * orientation;
+            double c = nx * b[2 * j] + ny * b[2 * j + 1];
+            double length = Math.hypot(nx, ny);
+            if (length > 0) {
+                part = Polygons2.clip(part, part.length / 2, nx / length, ny / length, c / length - tolerance, tolerance);
+            }
+        }
+        return part;
+    }
+
+    /** Whether face a lies above face b, as decided: +1 yes, -1 no, 0 not yet. */
+    private int above(int a, int b) {
+        int v = value[variable.get(key(a, b))];
+        return a < b ? v : -v;
+    }
+
+    /** Whether the condition can still hold: 1 it holds, 0 undecided, -1 broken. */
+    private int holds(Condition c) {
+        int[] f = c.faces();
+        switch (c.kind()) {
+            case FIXED -> {
+                return above(f[0], f[1]);
+            }
+            case SAME_SIDE -> {
+                int x = above(f[0], f[1]);
+                int y = above(f[0], f[2]);
+                return x == 0 || y == 0 ? 0 : x == y ? 1 : -1;
+            }
+            case NESTED -> {
+                int ca = above(f[2], f[0]);
+                int cb = above(f[2], f[1]);
+                int da = above(f[3], f[0]);
+                int db = above(f[3], f[1]);
+                if (ca == 0 || cb == 0 || da == 0 || db == 0) {
+                    return 0;
+                }
+                return (ca != cb) == (da != db) ? 1 : -1;
+            }
+            default -> {
+                int ab = above(f[0], f[1]);
+                int bc = above(f[1], f[2]);
+                int ca = above(f[2], f[0]);
+                if (ab == 0 || bc == 0 || ca == 0) {
+                    return 0;
+                }
+                return ab == bc && bc == ca ? -1 : 1;
+            }
+        }
+    }
+
+    private void watch() {
+        watching = new ArrayList<>();
+        for (int v = 0; v < pairs.size(); v++) {
+            watching.add(new ArrayList<>());
+        }
+        for (int k = 0; k < conditions.size(); k++) {
+            for (int v : variables(conditions.get(k))) {
+                watching.get(v).add(k);
+            }
+        }
+    }
+
+    /** The pairs a condition reads. */
+    private int[] variables(Condition c) {
+        int[] f = c.faces();
+        return switch (c.kind()) {
+            case FIXED -> new int[] {variable.get(key(f[0], f[1]))};
+            case SAME_SIDE -> new int[] {variable.get(key(f[0], f[1])), variable.get(key(f[0], f[2]))};
+            case NESTED -> new int[] {variable.get(key(f[2], f[0])), variable.get(key(f[2], f[1])), variable.get(key(f[3], f[0])),
+                variable.get(key(f[3], f[1]))};
+            default -> new int[] {variable.get(key(f[0], f[1])), variable.get(key(f[1], f[2])), variable.get(key(f[2], f[0]))};
+        };
+    }
+
+    /**
+     * Decides what the conditions force from the pairs on {@code trail} onwards, adding each pair
+     * it decides to the trail; false where a condition breaks.
+     */
+    private boolean propagate(ArrayDeque<Integer> queue, List<Integer> trail) {
+        while (!queue.isEmpty()) {
+            int v = queue.poll();
+            for (int k : watching.get(v)) {
+                Condition c = conditions.get(k);
+                int state = holds(c);
+                if (state == -1) {
+                    conflict = describe(c);
+                    return false;
+                }
+                if (state == 1) {
+                    continue;
+                }
+                int open = -1;
+                int count = 0;
+                for (int w : variables(c)) {
+                    if (value[w] == 0) {
+                        open = w;
+                        count++;
+                    }
+                }
+                if (count != 1) {
+                    continue;
+                }
+                value[open] = 1;
+                boolean up = holds(c) != -1;
+                value[open] = -1;
+                boolean down = holds(c) != -1;
+                if (!up && !down) {
+                    value[open] = 0;
+                    conflict = describe(c);
+                    return false;
+                }
+                if (up && down) {
+                    value[open] = 0;
+                    continue;
+                }
+                value[open] = (byte) (up ? 1 : -1);
+                trail.add(open);
+                queue.add(open);
+            }
+        }
+        return true;
+    }
+
+    private boolean solve() {
+        List<Integer> trail = new ArrayList<>();
+        ArrayDeque<Integer> queue = new ArrayDeque<>();
+        // The fixed pairs first: the creases' own.
+        for (Condition c : conditions) {
+            if (c.kind() == FIXED) {
+                int v = variable.get(key(c.faces()[0], c.faces()[1]));
+                byte want = (byte) (c.faces()[0] < c.faces()[1] ? 1 : -1);
+                if (value[v] == -want) {
+                    conflict = describe(c);
+                    return false;
+                }
+                if (value[v] == 0) {
+                    value[v] = want;
+                    trail.add(v);
+                    queue.add(v);
+                }
+            }
+        }
+        if (!propagate(queue, trail)) {
+            return false;
+        }
+        conflict = null;
+        return search();
+    }
+
+    /**
+     * Decides the open pairs, depth first: each choice propagated, a dead end undone back to the
+     * latest choice that has its other value left. Kept on explicit stacks: a pattern of
+     * thousands of faces may choose thousands of times.
+     */
+    private boolean search() {
+        ArrayDeque<int[]> decisions = new ArrayDeque<>();
+        ArrayDeque<List<Integer>> trails = new ArrayDeque<>();
+        int next = open(0);
+        byte choice = 1;
+        while (true) {
+            if (next == value.length) {
+                return true;
+            }
+            if (++choices > MOST_CHOICES) {
+                return false;
+            }
+            List<Integer> trail = new ArrayList<>();
+            ArrayDeque<Integer> queue = new ArrayDeque<>();
+            value[next] = choice;
+            trail.add(next);
+            queue.add(next);
+            if (propagate(queue, trail)) {
+                decisions.push(new int[] {next, choice});
+                trails.push(trail);
+                next = open(next + 1);
+                choice = 1;
+                continue;
+            }
+            undo(trail);
+            if (choice == 1) {
+                choice = -1;
+                continue;
+            }
+            while (true) {
+                if (decisions.isEmpty()) {
+                    return false;
+                }
+                int[] decision = decisions.pop();
+                undo(trails.pop());
+                if (decision[1] == 1) {
+                    next = decision[0];
+                    choice = -1;
+                    break;
+                }
+            }
+        }
+    }
+
+    private int open(int from) {
+        int v = from;
+        while (v < value.length && value[v] != 0) {
+            v++;
+        }
+        return v;
+    }
+
+    private void undo(List<Integer> trail) {
+        for (int v : trail) {
+            value[v] = 0;
+        }
+    }
+
+    private String describe(Condition c) {
+        int[] f = c.faces();
+        return switch (c.kind()) {
+            case FIXED -> String.format(Locale.ROOT, "faces %d and %d cannot lie as their crease says", f[0], f[1]);
+            case SAME_SIDE -> String.format(Locale.ROOT, "no layer order: the crease between faces %d and %d runs through face %d, which"
+                    + " must then lie above both or below both, and cannot", f[1], f[2], f[0]);
+            case NESTED -> String.format(Locale.ROOT, "no layer order: the creases between faces %d and %d and between faces %d and %d lie"
+                    + " on one line and would have to interleave", f[0], f[1], f[2], f[3]);
+            default -> String.format(Locale.ROOT, "no layer order: faces %d, %d and %d would have to lie in a cycle", f[0], f[1], f[2]);
+        };
+    }
+
+    /** The faces bottom up: each after every face it lies above (Kahn's order of the decided pairs). */
+    private int[] bottomUp() throws CreasePattern.Refused {
+        int n = polygons.length;
+        List<List<Integer>> over = new ArrayList<>();
+        int[] below = new int[n];
+        for (int f = 0; f < n; f++) {
+            over.add(new ArrayList<>());
+        }
+        for (int v = 0; v < pairs.size(); v++) {
+            int a = (int) pairs.get(v)[0];
+            int b = (int) pairs.get(v)[1];
+            int lower = value[v] > 0 ? b : a;
+            int upper = value[v] > 0 ? a : b;
+            over.get(lower).add(upper);
+            below[upper]++;
+        }
+        ArrayDeque<Integer> ready = new ArrayDeque<>();
+        for (int f = 0; f < n; f++) {
+            if (below[f] == 0) {
+                ready.add(f);
+            }
+        }
+        int[] order = new int[n];
+        int count = 0;
+        while (!ready.isEmpty()) {
+            int f = ready.poll();
+            order[count++] = f;
+            for (int g : over.get(f)) {
+                if (--below[g] == 0) {
+                    ready.add(g);
+                }
+            }
+        }
+        if (count < n) {
+            throw new CreasePattern.Refused("the layers found lie in a cycle over no one point, which iFold's stacks cannot hold");
+        }
+        return order;
+    }
+}
