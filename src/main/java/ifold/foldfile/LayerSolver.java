@@ -70,14 +70,34 @@ final class LayerSolver {
             }
         }
         solver.tacos(creases, tolerance);
-        solver.cycles(tolerance);
-        solver.watch();
-        if (!solver.solve()) {
-            throw new CreasePattern.Refused(solver.conflict == null ? String.format(Locale.ROOT, "no layer order found in %,d choices:"
-                    + " the crease pattern may not fold flat", MOST_CHOICES) : solver.conflict);
+        // Transitivity is asked for lazily: a condition for every three faces over one point
+        // would number the cube of the faces (a pleat of 400 creases, ten million). The order
+        // found is searched for a cycle of three, whose condition is then added, until none is.
+        for (int round = 0;; round++) {
+            solver.watch();
+            java.util.Arrays.fill(solver.value, (byte) 0);
+            solver.choices = 0;
+            if (!solver.solve()) {
+                throw new CreasePattern.Refused(solver.conflict == null ? String.format(Locale.ROOT, "no layer order found in %,d choices:"
+                        + " the crease pattern may not fold flat", MOST_CHOICES) : solver.conflict);
+            }
+            int[] cycle = solver.threeCycle();
+            if (cycle == null) {
+                return solver.bottomUp();
+            }
+            // Three faces in a cycle over no one point is a true layer order, which a stack cannot hold.
+            double[] two = intersection(polygons[cycle[0]], polygons[cycle[1]], tolerance);
+            boolean overOnePoint = two != null && intersection(two, polygons[cycle[2]], tolerance) != null;
+            if (round >= MOST_ROUNDS || !overOnePoint) {
+                throw new CreasePattern.Refused(String.format(Locale.ROOT, "the layers found put faces %d, %d and %d in a cycle, which"
+                        + " iFold's stacks cannot hold", cycle[0], cycle[1], cycle[2]));
+            }
+            solver.conditions.add(new Condition(NO_CYCLE, cycle));
         }
-        return solver.bottomUp();
     }
+
+    /** How many times a cycle of three may be found and forbidden before the search gives up. */
+    static final int MOST_ROUNDS = 2_000;
 
     private String conflict;
 
@@ -202,28 +222,6 @@ final class LayerSolver {
             cy += polygon[2 * i + 1] / n;
         }
         return Math.signum((c.x2() - c.x1()) * (cy - c.y1()) - (c.y2() - c.y1()) * (cx - c.x1()));
-    }
-
-    /** No cycle among three faces over one point: for each two that overlap, each third over their common part. */
-    private void cycles(double tolerance) {
-        Map<Integer, List<Integer>> neighbours = new HashMap<>();
-        for (long[] pair : pairs) {
-            neighbours.computeIfAbsent((int) pair[0], k -> new ArrayList<>()).add((int) pair[1]);
-            neighbours.computeIfAbsent((int) pair[1], k -> new ArrayList<>()).add((int) pair[0]);
-        }
-        for (long[] pair : pairs) {
-            int a = (int) pair[0];
-            int b = (int) pair[1];
-            double[] common = intersection(polygons[a], polygons[b], tolerance);
-            if (common == null) {
-                continue;
-            }
-            for (int c : neighbours.getOrDefault(b, List.of())) {
-                if (c > b && overlaps(a, c) && intersection(common, polygons[c], tolerance) != null) {
-                    conditions.add(new Condition(NO_CYCLE, new int[] {a, b, c}));
-                }
-            }
-        }
     }
 
     /** The common part of two convex polygons, or null where it has no area beyond the tolerance. */
@@ -382,7 +380,160 @@ final class LayerSolver {
             return false;
         }
         conflict = null;
+        // Most patterns are decided by one order: the faces ranked by what is decided (each above
+        // what it lies on), every open pair set as the ranks say. It holds no cycle; where it
+        // breaks no condition, it is the answer without a search.
+        rank = ranks();
+        List<Integer> guessed = new ArrayList<>();
+        for (int v = 0; v < value.length; v++) {
+            if (value[v] == 0) {
+                value[v] = preferred(v);
+                guessed.add(v);
+            }
+        }
+        boolean holds = true;
+        for (Condition c : conditions) {
+            if (holds(c) == -1) {
+                holds = false;
+                break;
+            }
+        }
+        if (holds) {
+            return true;
+        }
+        undo(guessed);
         return search();
+    }
+
+    /** Each face's place in an order of the pairs decided so far (Kahn's; faces in a cycle last, in their numbers' order). */
+    private int[] rank;
+
+    private int[] ranks() {
+        int n = polygons.length;
+        List<List<Integer>> over = new ArrayList<>();
+        int[] below = new int[n];
+        for (int f = 0; f < n; f++) {
+            over.add(new ArrayList<>());
+        }
+        for (int v = 0; v < pairs.size(); v++) {
+            if (value[v] == 0) {
+                continue;
+            }
+            int a = (int) pairs.get(v)[0];
+            int b = (int) pairs.get(v)[1];
+            int lower = value[v] > 0 ? b : a;
+            int upper = value[v] > 0 ? a : b;
+            over.get(lower).add(upper);
+            below[upper]++;
+        }
+        int[] ranks = new int[n];
+        java.util.Arrays.fill(ranks, -1);
+        ArrayDeque<Integer> ready = new ArrayDeque<>();
+        for (int f = 0; f < n; f++) {
+            if (below[f] == 0) {
+                ready.add(f);
+            }
+        }
+        int next = 0;
+        while (!ready.isEmpty()) {
+            int f = ready.poll();
+            ranks[f] = next++;
+            for (int g : over.get(f)) {
+                if (--below[g] == 0) {
+                    ready.add(g);
+                }
+            }
+        }
+        for (int f = 0; f < n; f++) {
+            if (ranks[f] < 0) {
+                ranks[f] = next++;
+            }
+        }
+        return ranks;
+    }
+
+    /** The value the ranks prefer for pair v: its lower-numbered face above where it ranks higher. */
+    private byte preferred(int v) {
+        return (byte) (rank[(int) pairs.get(v)[0]] > rank[(int) pairs.get(v)[1]] ? 1 : -1);
+    }
+
+    /**
+     * Three faces that overlap pairwise and lie in a cycle as decided, or null where the pairs
+     * hold no cycle: a cycle's first face compared with its third, shortening it until three
+     * remain.
+     */
+    private int[] threeCycle() {
+        int n = polygons.length;
+        List<List<Integer>> over = new ArrayList<>();
+        for (int f = 0; f < n; f++) {
+            over.add(new ArrayList<>());
+        }
+        for (int v = 0; v < pairs.size(); v++) {
+            int a = (int) pairs.get(v)[0];
+            int b = (int) pairs.get(v)[1];
+            over.get(value[v] > 0 ? b : a).add(value[v] > 0 ? a : b);
+        }
+        // A cycle by depth-first search (colours: 0 new, 1 on the path, 2 done).
+        int[] colour = new int[n];
+        int[] parent = new int[n];
+        for (int start = 0; start < n; start++) {
+            if (colour[start] != 0) {
+                continue;
+            }
+            ArrayDeque<int[]> stack = new ArrayDeque<>();
+            stack.push(new int[] {start, 0});
+            colour[start] = 1;
+            parent[start] = -1;
+            while (!stack.isEmpty()) {
+                int[] top = stack.peek();
+                int f = top[0];
+                if (top[1] < over.get(f).size()) {
+                    int g = over.get(f).get(top[1]++);
+                    if (colour[g] == 0) {
+                        colour[g] = 1;
+                        parent[g] = f;
+                        stack.push(new int[] {g, 0});
+                    } else if (colour[g] == 1) {
+                        List<Integer> cycle = new ArrayList<>();
+                        for (int x = f; x != g; x = parent[x]) {
+                            cycle.add(x);
+                        }
+                        cycle.add(g);
+                        java.util.Collections.reverse(cycle); // g below ... below f below g
+                        return shortened(cycle);
+                    }
+                } else {
+                    colour[f] = 2;
+                    stack.pop();
+                }
+            }
+        }
+        return null;
+    }
+
+    /** A cycle (each face below the next, the last below the first) cut down to three faces, or the first three where it cannot be. */
+    private int[] shortened(List<Integer> cycle) {
+        List<Integer> c = new ArrayList<>(cycle);
+        while (c.size() > 3) {
+            boolean cut = false;
+            for (int i = 0; i < c.size() && !cut; i++) {
+                int a = c.get(i);
+                int b = c.get((i + 1) % c.size());
+                int d = c.get((i + 2) % c.size());
+                if (!overlaps(a, d)) {
+                    continue;
+                }
+                if (above(a, d) > 0) {
+                    return new int[] {a, b, d}; // a below b below d below a
+                }
+                c.remove((i + 1) % c.size()); // a below d: the cycle without b
+                cut = true;
+            }
+            if (!cut) {
+                break;
+            }
+        }
+        return new int[] {c.get(0), c.get(1), c.get(2)};
     }
 
     /**
@@ -394,7 +545,7 @@ final class LayerSolver {
         ArrayDeque<int[]> decisions = new ArrayDeque<>();
         ArrayDeque<List<Integer>> trails = new ArrayDeque<>();
         int next = open(0);
-        byte choice = 1;
+        byte choice = next < value.length ? preferred(next) : 1;
         while (true) {
             if (next == value.length) {
                 return true;
@@ -411,12 +562,12 @@ final class LayerSolver {
                 decisions.push(new int[] {next, choice});
                 trails.push(trail);
                 next = open(next + 1);
-                choice = 1;
+                choice = next < value.length ? preferred(next) : 1;
                 continue;
             }
             undo(trail);
-            if (choice == 1) {
-                choice = -1;
+            if (choice == preferred(next)) {
+                choice = (byte) -choice;
                 continue;
             }
             while (true) {
@@ -425,9 +576,9 @@ final class LayerSolver {
                 }
                 int[] decision = decisions.pop();
                 undo(trails.pop());
-                if (decision[1] == 1) {
+                if (decision[1] == preferred(decision[0])) {
                     next = decision[0];
-                    choice = -1;
+                    choice = (byte) -decision[1];
                     break;
                 }
             }
