@@ -108,7 +108,7 @@ public final class FoldedForm {
                     Tolerance.LARGEST_SIZE, size > 1 ? "down" : "up"));
         }
         // Files hold their numbers to a few digits (Mathematica's square twist, to about seven):
-        // points a millionth of the paper apart are one.
+        // points a millionth of the paper apart agree, where the file's data must agree.
         double tolerance = 1e-6 * size;
         Map<Long, Integer> edgeOf = new HashMap<>();
         for (int e = 0; e < in.edges().length; e++) {
@@ -223,8 +223,12 @@ public final class FoldedForm {
             }
         }
         double thickness = !Double.isNaN(in.thickness()) ? in.thickness() : size / 1000;
+        // The sheet measures its faces as the folds do, against the folded paper's size: a
+        // long strip's crease pattern is thousands of times the wrap it folds into, and overlaps
+        // a millionth of that across are real layers.
+        double sheetTolerance = Tolerance.ON_PLANE * foldedSize(uv, faces, motion);
         Sheet sheet = FoldedStateSheet.of(flatUv, faces, hostOf, poses, bottomUp, creases.toArray(new int[0][]),
-                creaseFolds.stream().mapToInt(Integer::intValue).toArray(), thickness, tolerance);
+                creaseFolds.stream().mapToInt(Integer::intValue).toArray(), thickness, sheetTolerance);
         int[] number = FoldedStateSheet.faceNumbers(bottomUp);
         List<Hinge> motionHinges = new ArrayList<>();
         motionHinges.add(new Hinge(number[0], -1, 0, 0, 1, 0, 0));
@@ -245,6 +249,22 @@ public final class FoldedForm {
             side = Math.abs(cross) > Math.abs(side) ? cross : side;
         }
         return side > 0 ? 1 : -1;
+    }
+
+    /** The diagonal of the box the folded faces take in space. */
+    private static double foldedSize(double[][] uv, int[][] faces, FacePlacement.Rigid[] motion) {
+        double[] min = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
+        double[] max = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        for (int f = 0; f < faces.length; f++) {
+            for (int v : faces[f]) {
+                double[] p = motion[f].apply(uv[v][0], uv[v][1], 0);
+                for (int k = 0; k < 3; k++) {
+                    min[k] = Math.min(min[k], p[k]);
+                    max[k] = Math.max(max[k], p[k]);
+                }
+            }
+        }
+        return Math.hypot(max[0] - min[0], Math.hypot(max[1] - min[1], max[2] - min[2]));
     }
 
     private static double diagonal(double[][] vertices) {
