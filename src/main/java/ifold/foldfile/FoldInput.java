@@ -24,9 +24,14 @@ import java.util.Map;
  * @param foldedOrders the folded state's face orders, or an empty list
  * @param levels each face's level in its stack ({@code faces_ifold:level}), or null
  * @param thickness the paper's ({@code frame_ifold:thickness}), or NaN
+ * @param foldedForm whether the key frame says it is a folded form ({@code frame_classes}), its
+ *     vertices where the paper lies folded even where they are 2D (a flat folded state)
+ * @param unfolded the key frame's {@code vertices_flatUnfoldCoords} (where a folded form's
+ *     vertices lie on the paper), or null
  */
 record FoldInput(double[][] vertices, boolean flat, int[][] edges, char[] assignments, double[] angles, int[][] faces,
-        List<int[]> faceOrders, double[][] folded, List<int[]> foldedOrders, int[] levels, double thickness) {
+        List<int[]> faceOrders, double[][] folded, List<int[]> foldedOrders, int[] levels, double thickness, boolean foldedForm,
+        double[][] unfolded) {
 
     /** The most vertices, edges or faces read: beyond, a file is refused before it fills memory. */
     static final int MOST_ITEMS = 2_000_000;
@@ -112,7 +117,17 @@ record FoldInput(double[][] vertices, boolean flat, int[][] edges, char[] assign
                 }
             }
         }
-        return new FoldInput(vertices, flat, edges, assignments, angles, faces, faceOrders, folded, foldedOrders, levels, thickness);
+        boolean foldedForm = fold.get("frame_classes") instanceof List<?> classes && classes.contains("foldedForm");
+        double[][] unfolded = null;
+        if (foldedForm && fold.containsKey("vertices_flatUnfoldCoords")) {
+            unfolded = numbers(fold, "vertices_flatUnfoldCoords", 2, 3, true);
+            if (unfolded.length != n) {
+                throw new CreasePattern.Refused(String.format(Locale.ROOT, "vertices_flatUnfoldCoords has %d vertices for %d", unfolded.length,
+                        n));
+            }
+        }
+        return new FoldInput(vertices, flat, edges, assignments, angles, faces, faceOrders, folded, foldedOrders, levels, thickness,
+                foldedForm, unfolded);
     }
 
     private static List<?> list(Map<String, Object> fold, String key, int size) throws CreasePattern.Refused {

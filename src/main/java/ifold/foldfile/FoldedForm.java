@@ -133,7 +133,48 @@ public final class FoldedForm {
         List<int[]> orders;
         Kind kind;
         int[] bottomUp = null;
-        if (in.flat()) {
+        if (in.foldedForm() || !in.flat()) {
+            // A folded form: its vertices where the paper lies folded (2D: a flat folded state).
+            if (in.faces() == null) {
+                for (int v = 0; v < n; v++) {
+                    if (vertices[v].length > 2 && vertices[v][2] != 0) {
+                        throw new CreasePattern.Refused(String.format(Locale.ROOT, "vertex %d is (%s, %s, %s): a crease pattern lies flat,"
+                                + " its vertices 2D points (or with z = 0); a folded form in 3D needs faces_vertices", v,
+                                CreasePattern.fmt(vertices[v][0]), CreasePattern.fmt(vertices[v][1]), CreasePattern.fmt(vertices[v][2])));
+                    }
+                }
+                throw new CreasePattern.Refused("a folded form needs faces_vertices to be unfolded");
+            }
+            double[][] xyz = new double[n][];
+            for (int v = 0; v < n; v++) {
+                xyz[v] = new double[] {vertices[v][0], vertices[v][1], vertices[v].length > 2 ? vertices[v][2] : 0};
+            }
+            kind = Kind.UNFOLDED;
+            if (in.unfolded() != null) {
+                // Where the file says each vertex lies on the paper (fold-convert --flat-fold writes it).
+                uv = new double[n][];
+                for (int v = 0; v < n; v++) {
+                    uv[v] = new double[] {in.unfolded()[v][0], in.unfolded()[v][1]};
+                }
+                faces = counterClockwise(uv, in.faces());
+            } else {
+                faces = in.faces();
+                // A folded form's faces are as isometric to the sheet as its numbers' digits allow:
+                // Mathematica's square twist, to about a millionth of its size.
+                uv = FacePlacement.develop(xyz, faces, 1e-5 * size);
+            }
+            motion = FacePlacement.fromPlaces(uv, xyz, faces);
+            hinges = FacePlacement.hingesOf(uv, faces, motion, edgeOf, hingeable, flatSign);
+            orders = in.faceOrders();
+            if (orders.isEmpty() && allFlat(motion)) {
+                // Folded flat with no order given: found as a crease pattern's would be.
+                double[] angles = new double[in.edges().length];
+                for (int e = 0; e < angles.length; e++) {
+                    angles[e] = in.assignments()[e] == 'V' ? Math.PI : in.assignments()[e] == 'M' ? -Math.PI : 0;
+                }
+                bottomUp = flatOrder(uv, faces, motion, in, edgeOf, angles, tolerance);
+            }
+        } else {
             uv = new double[n][];
             for (int v = 0; v < n; v++) {
                 uv[v] = new double[] {vertices[v][0], vertices[v][1]};
@@ -167,7 +208,10 @@ public final class FoldedForm {
                 if (flat) {
                     FlatVertices.check(uv, in.edges(), angles, hingeable);
                 }
-                FacePlacement.Placed placed = FacePlacement.byAngles(uv, faces, edgeOf, angles, hingeable, tolerance);
+                // A flat pattern's vertices pass Kawasaki to the file's digits (a thousandth of a
+                // radian at worst, in designs of curved creases): its faces meet again to as much.
+                FacePlacement.Placed placed = FacePlacement.byAngles(uv, faces, edgeOf, angles, hingeable,
+                        flat ? FlatVertices.ANGLE_TOLERANCE * size : tolerance);
                 motion = placed.faces();
                 hinges = placed.hinges();
                 orders = List.of();
@@ -176,24 +220,6 @@ public final class FoldedForm {
                     bottomUp = flatOrder(uv, faces, motion, in, edgeOf, angles, tolerance);
                 }
             }
-        } else {
-            if (in.faces() == null) {
-                for (int v = 0; v < n; v++) {
-                    if (vertices[v].length > 2 && vertices[v][2] != 0) {
-                        throw new CreasePattern.Refused(String.format(Locale.ROOT, "vertex %d is (%s, %s, %s): a crease pattern lies flat,"
-                                + " its vertices 2D points (or with z = 0); a folded form in 3D needs faces_vertices", v,
-                                CreasePattern.fmt(vertices[v][0]), CreasePattern.fmt(vertices[v][1]), CreasePattern.fmt(vertices[v][2])));
-                    }
-                }
-            }
-            faces = in.faces();
-            kind = Kind.UNFOLDED;
-            // A folded form's faces are as isometric to the sheet as its numbers' digits allow:
-            // Mathematica's square twist, to about a millionth of its size.
-            uv = FacePlacement.develop(vertices, faces, 1e-5 * size);
-            motion = FacePlacement.fromPlaces(uv, vertices, faces);
-            hinges = FacePlacement.hingesOf(uv, faces, motion, edgeOf, hingeable, flatSign);
-            orders = in.faceOrders();
         }
         // The planes the faces lie on, each a host.
         List<HostFrame> frames = new ArrayList<>();
@@ -249,6 +275,16 @@ public final class FoldedForm {
             side = Math.abs(cross) > Math.abs(side) ? cross : side;
         }
         return side > 0 ? 1 : -1;
+    }
+
+    /** Whether every face lies in the plane z = 0 (a flat folded state). */
+    private static boolean allFlat(FacePlacement.Rigid[] motion) {
+        for (FacePlacement.Rigid m : motion) {
+            if (Math.abs(m.turn(new double[] {0, 0, 1})[2]) < 1 - 1e-9 || Math.abs(m.t()[2]) > 1e-9) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** The diagonal of the box the folded faces take in space. */
@@ -419,16 +455,31 @@ public final class FoldedForm {
         for (Map.Entry<Long, int[]> entry : sides.entrySet()) {
             int[] pair = entry.getValue();
             Integer e = edgeOf.get(entry.getKey());
-            if (pair[0] < 0 || pair[1] < 0 || e == null || Math.abs(angles[e]) < 1) {
+            if (pair[0] < 0 || pair[1] < 0) {
                 continue;
             }
-            int a = in.edges()[e][0];
-            int b = in.edges()[e][1];
+            long key = entry.getKey();
+            int a = (int) (key >>> 32);
+            int b = (int) key;
             double[] p = motion[pair[0]].apply(uv[a][0], uv[a][1], 0);
             double[] q = motion[pair[0]].apply(uv[b][0], uv[b][1], 0);
-            creases.add(new LayerSolver.FlatCrease(pair[0], pair[1], angles[e] > 0, p[0], p[1], q[0], q[1]));
+            if (e != null && Math.abs(angles[e]) >= 1) {
+                creases.add(new LayerSolver.FlatCrease(pair[0], pair[1], angles[e] > 0, p[0], p[1], q[0], q[1]));
+            } else {
+                creases.add(LayerSolver.FlatCrease.join(pair[0], pair[1], p[0], p[1], q[0], q[1]));
+            }
         }
-        return LayerSolver.order(polygons, faceUp, creases, tolerance);
+        // Overlaps as the layer-order check counts them (a billionth of the folded paper); lines
+        // as the file's digits allow.
+        double[] box = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        for (double[] polygon : polygons) {
+            double[] b = ifold.sheet.Polygons2.bounds(polygon);
+            box[0] = Math.min(box[0], b[0]);
+            box[1] = Math.min(box[1], b[1]);
+            box[2] = Math.max(box[2], b[2]);
+            box[3] = Math.max(box[3], b[3]);
+        }
+        return LayerSolver.order(polygons, faceUp, creases, Tolerance.ON_PLANE * Math.hypot(box[2] - box[0], box[3] - box[1]), tolerance);
     }
 
     static String describe(Result result) {

@@ -21,13 +21,23 @@ import java.util.Map;
  */
 final class LayerSolver {
     /** The most choices the search makes before it gives up on an order. */
-    static final long MOST_CHOICES = 2_000_000;
+    static final long MOST_CHOICES = 500_000;
 
     /**
      * A crease folded flat between faces f and g along the segment (x1, y1)-(x2, y2) of the
-     * folded state, a valley or a mountain seen from the paper's top side.
+     * folded state, a valley or a mountain seen from the paper's top side; or, not {@code
+     * folded}, a flat edge, across which the paper runs on (a tortilla's seam).
      */
-    record FlatCrease(int f, int g, boolean valley, double x1, double y1, double x2, double y2) {
+    record FlatCrease(int f, int g, boolean valley, double x1, double y1, double x2, double y2, boolean folded) {
+        /** A crease folded flat, a valley or a mountain. */
+        FlatCrease(int f, int g, boolean valley, double x1, double y1, double x2, double y2) {
+            this(f, g, valley, x1, y1, x2, y2, true);
+        }
+
+        /** A flat edge between f and g (F): the paper goes on across it unfolded. */
+        static FlatCrease join(int f, int g, double x1, double y1, double x2, double y2) {
+            return new FlatCrease(f, g, false, x1, y1, x2, y2, false);
+        }
     }
 
     /** One condition on up to four pairs: the pairs (a, b) it reads, and the kind that says how. */
@@ -38,6 +48,7 @@ final class LayerSolver {
     private static final int SAME_SIDE = 1;
     private static final int NESTED = 2;
     private static final int NO_CYCLE = 3;
+    private static final int SAME_ORDER = 4;
 
     private final double[][] polygons;
     private final Map<Long, Integer> variable = new HashMap<>();
@@ -56,41 +67,52 @@ final class LayerSolver {
      *
      * @param polygons each face in the folded state's plane (x, y pairs, convex)
      * @param faceUp whether each face shows its top side up (+z)
+     * @param tolerance overlaps thinner than this are none (as the layer-order check counts them)
+     * @param lineTolerance creases this close lie on one line, and a crease this close to a face's
+     *     edge runs along it, not through the face: the file's rounding
      * @throws CreasePattern.Refused naming the faces where no order satisfies the conditions
      */
-    static int[] order(double[][] polygons, boolean[] faceUp, List<FlatCrease> creases, double tolerance) throws CreasePattern.Refused {
+    static int[] order(double[][] polygons, boolean[] faceUp, List<FlatCrease> creases, double tolerance, double lineTolerance)
+            throws CreasePattern.Refused {
         LayerSolver solver = new LayerSolver(polygons);
         solver.findPairs(tolerance);
         solver.value = new byte[solver.pairs.size()];
         for (FlatCrease crease : creases) {
+            if (!crease.folded()) {
+                continue;
+            }
             // A valley lays g on f's top side: above f where f shows its top side up.
             boolean gAbove = crease.valley() == faceUp[crease.f()];
             if (solver.variable.containsKey(key(crease.f(), crease.g()))) {
                 solver.conditions.add(new Condition(FIXED, gAbove ? new int[] {crease.g(), crease.f()} : new int[] {crease.f(), crease.g()}));
             }
         }
-        solver.tacos(creases, tolerance);
-        // Transitivity is asked for lazily: a condition for every three faces over one point
-        // would number the cube of the faces (a pleat of 400 creases, ten million). The order
-        // found is searched for a cycle of three, whose condition is then added, until none is.
+        solver.tacos(creases, lineTolerance);
+        // Transitivity: a condition for each three faces over one point, where they are not too
+        // many (they guide the search: without them it wanders among orders with cycles); where
+        // they are (a pleat of 400 creases has ten million), asked for lazily. Either way, the
+        // order found is searched for a cycle, whose condition is then added, until none is.
+        solver.transitivity(tolerance);
         for (int round = 0;; round++) {
             solver.watch();
             java.util.Arrays.fill(solver.value, (byte) 0);
             solver.choices = 0;
+            solver.gaveUp = false;
             if (!solver.solve()) {
-                throw new CreasePattern.Refused(solver.conflict == null ? String.format(Locale.ROOT, "no layer order found in %,d choices:"
-                        + " the crease pattern may not fold flat", MOST_CHOICES) : solver.conflict);
+                throw new CreasePattern.Refused(solver.gaveUp || solver.conflict == null ? String.format(Locale.ROOT, "no layer order found"
+                        + " in %,d choices: iFold's search gives up here (the pattern may fold flat all the same)", MOST_CHOICES)
+                        : solver.conflict);
             }
-            int[] cycle = solver.threeCycle();
+            int[] cycle = solver.cycle();
             if (cycle == null) {
                 return solver.bottomUp();
             }
-            // Three faces in a cycle over no one point is a true layer order, which a stack cannot hold.
-            double[] two = intersection(polygons[cycle[0]], polygons[cycle[1]], tolerance);
-            boolean overOnePoint = two != null && intersection(two, polygons[cycle[2]], tolerance) != null;
-            if (round >= MOST_ROUNDS || !overOnePoint) {
-                throw new CreasePattern.Refused(String.format(Locale.ROOT, "the layers found put faces %d, %d and %d in a cycle, which"
-                        + " iFold's stacks cannot hold", cycle[0], cycle[1], cycle[2]));
+            // A cycle over one point breaks transitivity; one over none (a pinwheel's) is a true
+            // layer order, but a stack of layers cannot hold it either: both are forbidden, and
+            // the search goes on for an order without.
+            if (round >= MOST_ROUNDS) {
+                throw new CreasePattern.Refused(String.format(Locale.ROOT, "no layer order without a cycle found in %,d rounds: the last"
+                        + " put faces %s in a cycle, which iFold's stacks cannot hold", MOST_ROUNDS, java.util.Arrays.toString(cycle)));
             }
             solver.conditions.add(new Condition(NO_CYCLE, cycle));
         }
@@ -131,25 +153,50 @@ final class LayerSolver {
         return variable.containsKey(key(a, b));
     }
 
-    /** Taco–tortilla and taco–taco conditions of each crease. */
+    /**
+     * The conditions of creases that meet on one line or run through a face: taco–tortilla
+     * (a face the crease's line runs through, or the face of a flat edge on the line on the
+     * crease's side, lies above both of its faces or below both), taco–taco (two creases on one
+     * line, their flaps on one side, nest or lie apart) and tortilla–tortilla (paper running on
+     * across two flat edges on one line keeps its order on both sides).
+     */
     private void tacos(List<FlatCrease> creases, double tolerance) {
         for (int i = 0; i < creases.size(); i++) {
             FlatCrease c = creases.get(i);
-            if (!overlaps(c.f(), c.g())) {
-                continue;
-            }
-            for (int h = 0; h < polygons.length; h++) {
-                if (h != c.f() && h != c.g() && overlaps(h, c.f()) && overlaps(h, c.g()) && crosses(h, c, tolerance)) {
-                    conditions.add(new Condition(SAME_SIDE, new int[] {h, c.f(), c.g()}));
+            if (c.folded() && overlaps(c.f(), c.g())) {
+                for (int h = 0; h < polygons.length; h++) {
+                    if (h != c.f() && h != c.g() && overlaps(h, c.f()) && overlaps(h, c.g()) && crosses(h, c, tolerance)) {
+                        conditions.add(new Condition(SAME_SIDE, new int[] {h, c.f(), c.g()}));
+                    }
                 }
             }
             for (int j = i + 1; j < creases.size(); j++) {
                 FlatCrease d = creases.get(j);
-                if (!overlaps(d.f(), d.g()) || !collinearOverlap(c, d, tolerance) || side(c, c.f()) != side(c, d.f())) {
+                if (!collinearOverlap(c, d, tolerance)) {
                     continue;
                 }
-                if (overlaps(c.f(), d.f()) && overlaps(c.f(), d.g()) && overlaps(c.g(), d.f()) && overlaps(c.g(), d.g())) {
-                    conditions.add(new Condition(NESTED, new int[] {c.f(), c.g(), d.f(), d.g()}));
+                if (c.folded() && d.folded()) {
+                    if (overlaps(c.f(), c.g()) && overlaps(d.f(), d.g()) && side(c, c.f()) == side(c, d.f()) && overlaps(c.f(), d.f())
+                            && overlaps(c.f(), d.g()) && overlaps(c.g(), d.f()) && overlaps(c.g(), d.g())) {
+                        conditions.add(new Condition(NESTED, new int[] {c.f(), c.g(), d.f(), d.g()}));
+                    }
+                } else if (c.folded() != d.folded()) {
+                    FlatCrease taco = c.folded() ? c : d;
+                    FlatCrease seam = c.folded() ? d : c;
+                    // The seam's face on the taco's side is a face the taco's line runs along.
+                    int h = side(taco, seam.f()) == side(taco, taco.f()) ? seam.f() : seam.g();
+                    if (h != taco.f() && h != taco.g() && overlaps(h, taco.f()) && overlaps(h, taco.g())) {
+                        conditions.add(new Condition(SAME_SIDE, new int[] {h, taco.f(), taco.g()}));
+                    }
+                } else {
+                    double sideOfCf = side(c, c.f());
+                    int a = c.f();
+                    int b = c.g();
+                    int e = side(c, d.f()) == sideOfCf ? d.f() : d.g();
+                    int g = e == d.f() ? d.g() : d.f();
+                    if (a != e && b != g && overlaps(a, e) && overlaps(b, g)) {
+                        conditions.add(new Condition(SAME_ORDER, new int[] {a, e, b, g}));
+                    }
                 }
             }
         }
@@ -224,6 +271,44 @@ final class LayerSolver {
         return Math.signum((c.x2() - c.x1()) * (cy - c.y1()) - (c.y2() - c.y1()) * (cx - c.x1()));
     }
 
+    /** The most conditions of three faces over one point set before the search; beyond, transitivity is asked for lazily. */
+    static final int MOST_TRIPLES = 400_000;
+
+    /** For each two faces that overlap, each third over their common part: no cycle among the three; none where they are too many. */
+    private void transitivity(double tolerance) {
+        List<List<Integer>> neighbours = new ArrayList<>();
+        for (int f = 0; f < polygons.length; f++) {
+            neighbours.add(new ArrayList<>());
+        }
+        for (long[] pair : pairs) {
+            neighbours.get((int) pair[0]).add((int) pair[1]);
+            neighbours.get((int) pair[1]).add((int) pair[0]);
+        }
+        long candidates = 0;
+        for (long[] pair : pairs) {
+            for (int c : neighbours.get((int) pair[1])) {
+                candidates += c > pair[1] && overlaps((int) pair[0], c) ? 1 : 0;
+            }
+            if (candidates > MOST_TRIPLES) {
+                return;
+            }
+        }
+        for (long[] pair : pairs) {
+            int a = (int) pair[0];
+            int b = (int) pair[1];
+            double[] common = null;
+            for (int c : neighbours.get(b)) {
+                if (c > b && overlaps(a, c)) {
+                    common = common != null ? common : intersection(polygons[a], polygons[b], tolerance);
+                    if (common != null && intersection(common, polygons[c], tolerance) != null) {
+                        conditions.add(new Condition(NO_CYCLE, new int[] {a, b, c}));
+                        conditions.add(new Condition(NO_CYCLE, new int[] {a, c, b}));
+                    }
+                }
+            }
+        }
+    }
+
     /** The common part of two convex polygons, or null where it has no area beyond the tolerance. */
     static double[] intersection(double[] a, double[] b, double tolerance) {
         double[] part = a;
@@ -272,14 +357,22 @@ final class LayerSolver {
                 }
                 return (ca != cb) == (da != db) ? 1 : -1;
             }
+            case SAME_ORDER -> {
+                int x = above(f[0], f[1]);
+                int y = above(f[2], f[3]);
+                return x == 0 || y == 0 ? 0 : x == y ? 1 : -1;
+            }
             default -> {
-                int ab = above(f[0], f[1]);
-                int bc = above(f[1], f[2]);
-                int ca = above(f[2], f[0]);
-                if (ab == 0 || bc == 0 || ca == 0) {
-                    return 0;
+                // A cycle, each face below the next and the last below the first: broken where all are so.
+                boolean open = false;
+                for (int i = 0; i < f.length; i++) {
+                    int up = above(f[(i + 1) % f.length], f[i]);
+                    if (up == -1) {
+                        return 1;
+                    }
+                    open |= up == 0;
                 }
-                return ab == bc && bc == ca ? -1 : 1;
+                return open ? 0 : -1;
             }
         }
     }
@@ -304,7 +397,14 @@ final class LayerSolver {
             case SAME_SIDE -> new int[] {variable.get(key(f[0], f[1])), variable.get(key(f[0], f[2]))};
             case NESTED -> new int[] {variable.get(key(f[2], f[0])), variable.get(key(f[2], f[1])), variable.get(key(f[3], f[0])),
                 variable.get(key(f[3], f[1]))};
-            default -> new int[] {variable.get(key(f[0], f[1])), variable.get(key(f[1], f[2])), variable.get(key(f[2], f[0]))};
+            case SAME_ORDER -> new int[] {variable.get(key(f[0], f[1])), variable.get(key(f[2], f[3]))};
+            default -> {
+                int[] vars = new int[f.length];
+                for (int i = 0; i < f.length; i++) {
+                    vars[i] = variable.get(key(f[i], f[(i + 1) % f.length]));
+                }
+                yield vars;
+            }
         };
     }
 
@@ -458,11 +558,10 @@ final class LayerSolver {
     }
 
     /**
-     * Three faces that overlap pairwise and lie in a cycle as decided, or null where the pairs
-     * hold no cycle: a cycle's first face compared with its third, shortening it until three
-     * remain.
+     * Faces that lie in a cycle as decided (each below the next, the last below the first), as
+     * few as the pairs between them allow, or null where the pairs hold no cycle.
      */
-    private int[] threeCycle() {
+    private int[] cycle() {
         int n = polygons.length;
         List<List<Integer>> over = new ArrayList<>();
         for (int f = 0; f < n; f++) {
@@ -511,7 +610,11 @@ final class LayerSolver {
         return null;
     }
 
-    /** A cycle (each face below the next, the last below the first) cut down to three faces, or the first three where it cannot be. */
+    /**
+     * A cycle (each face below the next, the last below the first) shortened where a face and
+     * the one two after it overlap: to three where they lie against it, else without the face
+     * between.
+     */
     private int[] shortened(List<Integer> cycle) {
         List<Integer> c = new ArrayList<>(cycle);
         while (c.size() > 3) {
@@ -533,36 +636,77 @@ final class LayerSolver {
                 break;
             }
         }
-        return new int[] {c.get(0), c.get(1), c.get(2)};
+        return c.stream().mapToInt(Integer::intValue).toArray();
     }
 
+    /** Whether the last search stopped at {@link #MOST_CHOICES} rather than finding no order. */
+    private boolean gaveUp;
+
     /**
-     * Decides the open pairs, depth first: each choice propagated, a dead end undone back to the
-     * latest choice that has its other value left. Kept on explicit stacks: a pattern of
-     * thousands of faces may choose thousands of times.
+     * Decides the open pairs, each group that conditions join on its own (a choice in one
+     * cannot undo another's: searching them together would try every combination of their dead
+     * ends), depth first within a group, in the order conditions reach its pairs from its first.
      */
     private boolean search() {
+        int[] group = new int[value.length];
+        java.util.Arrays.fill(group, -1);
+        for (int start = 0; start < value.length; start++) {
+            if (value[start] != 0 || group[start] >= 0) {
+                continue;
+            }
+            // The group: the open pairs reached from this one through conditions not yet met.
+            List<Integer> pairsInGroup = new ArrayList<>();
+            ArrayDeque<Integer> reach = new ArrayDeque<>();
+            group[start] = start;
+            reach.add(start);
+            while (!reach.isEmpty()) {
+                int v = reach.poll();
+                pairsInGroup.add(v);
+                for (int k : watching.get(v)) {
+                    Condition c = conditions.get(k);
+                    if (holds(c) == 1) {
+                        continue;
+                    }
+                    for (int w : variables(c)) {
+                        if (value[w] == 0 && group[w] < 0) {
+                            group[w] = start;
+                            reach.add(w);
+                        }
+                    }
+                }
+            }
+            if (!searchGroup(pairsInGroup)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** Decides the open pairs of one group, depth first, undoing a dead end back to the latest choice with its other value left. */
+    private boolean searchGroup(List<Integer> order) {
         ArrayDeque<int[]> decisions = new ArrayDeque<>();
         ArrayDeque<List<Integer>> trails = new ArrayDeque<>();
-        int next = open(0);
-        byte choice = next < value.length ? preferred(next) : 1;
+        int at = nextOpen(order, 0);
+        byte choice = at < order.size() ? preferred(order.get(at)) : 1;
         while (true) {
-            if (next == value.length) {
+            if (at == order.size()) {
                 return true;
             }
             if (++choices > MOST_CHOICES) {
+                gaveUp = true;
                 return false;
             }
+            int next = order.get(at);
             List<Integer> trail = new ArrayList<>();
             ArrayDeque<Integer> queue = new ArrayDeque<>();
             value[next] = choice;
             trail.add(next);
             queue.add(next);
             if (propagate(queue, trail)) {
-                decisions.push(new int[] {next, choice});
+                decisions.push(new int[] {at, choice});
                 trails.push(trail);
-                next = open(next + 1);
-                choice = next < value.length ? preferred(next) : 1;
+                at = nextOpen(order, at + 1);
+                choice = at < order.size() ? preferred(order.get(at)) : 1;
                 continue;
             }
             undo(trail);
@@ -576,8 +720,8 @@ final class LayerSolver {
                 }
                 int[] decision = decisions.pop();
                 undo(trails.pop());
-                if (decision[1] == preferred(decision[0])) {
-                    next = decision[0];
+                if (decision[1] == preferred(order.get(decision[0]))) {
+                    at = decision[0];
                     choice = (byte) -decision[1];
                     break;
                 }
@@ -585,12 +729,12 @@ final class LayerSolver {
         }
     }
 
-    private int open(int from) {
-        int v = from;
-        while (v < value.length && value[v] != 0) {
-            v++;
+    private int nextOpen(List<Integer> order, int from) {
+        int at = from;
+        while (at < order.size() && value[order.get(at)] != 0) {
+            at++;
         }
-        return v;
+        return at;
     }
 
     private void undo(List<Integer> trail) {
@@ -607,7 +751,10 @@ final class LayerSolver {
                     + " must then lie above both or below both, and cannot", f[1], f[2], f[0]);
             case NESTED -> String.format(Locale.ROOT, "no layer order: the creases between faces %d and %d and between faces %d and %d lie"
                     + " on one line and would have to interleave", f[0], f[1], f[2], f[3]);
-            default -> String.format(Locale.ROOT, "no layer order: faces %d, %d and %d would have to lie in a cycle", f[0], f[1], f[2]);
+            case SAME_ORDER -> String.format(Locale.ROOT, "no layer order: faces %d and %d run on across a flat edge as faces %d and %d"
+                    + " do, and would have to change their order there", f[0], f[2], f[1], f[3]);
+            default -> "no layer order without a cycle: faces " + java.util.Arrays.toString(f) + " would have to lie in one (a pinwheel's"
+                    + " layers do), which iFold's stacks cannot hold";
         };
     }
 

@@ -204,6 +204,56 @@ class FoldAnyPatternTest {
         CliTest.assertOneLineError(closed, "closed-corner.fold: the folded form does not unfold onto one flat sheet");
     }
 
+    /**
+     * The FOLD repository's own examples (MIT; src/test/resources/fold-examples): folded forms
+     * unfolded onto one sheet and folded back, a flat folded form with its paper coordinates,
+     * and a crease pattern folded line by line; each with its layer order checked valid.
+     */
+    @Test
+    void theFoldRepositorysExamplesFold() {
+        String[][] cases = {
+            {"box", "58 creases folded at once (a folded form, unfolded onto one sheet), 16 layers at most"},
+            {"simple", "3 creases folded at once (a folded form, unfolded onto one sheet), 2 layers at most"},
+            {"squaretwist", "12 creases folded at once (a folded form, unfolded onto one sheet), 1 layer at most"},
+            {"diagonal-folded", "1 crease folded at once (a folded form, unfolded onto one sheet), 2 layers at most"},
+            {"diagonal-cp", "1 fold, 2 layers at most"},
+        };
+        for (String[] c : cases) {
+            CliTest.Run run = CliTest.run("fold", "src/test/resources/fold-examples/" + c[0] + ".fold", "--no-view", "--export-fold",
+                    dir.resolve(c[0] + "-out.fold").toString());
+            assertEquals(0, run.code(), c[0] + ": " + run.err());
+            assertTrue(run.out().contains(c[0] + ".fold: " + c[1]), run.out());
+            assertTrue(run.out().contains("layer order: valid"), run.out());
+        }
+    }
+
+    /**
+     * Traditional models from Flat-Folder's examples (MIT; src/test/resources/flat-folder-examples),
+     * their mountains and valleys only: each folded flat with the layer order found, which the
+     * independent check finds valid; a pinwheel, whose layers lie in a cycle, refused.
+     */
+    @Test
+    void traditionalModelsFoldFlatWithTheirLayerOrderFound() {
+        String[][] cases = {
+            {"001_traditional_Sailboat", "28 creases folded at once (folded flat, its layer order found), 16 layers at most",
+                "layer order: valid (20 faces on 1 plane"},
+            {"002_traditional_Kabuto", "20 creases folded at once (folded flat, its layer order found), 12 layers at most",
+                "layer order: valid (18 faces on 1 plane"},
+            {"004_traditional_Crane", "99 creases folded at once (folded flat, its layer order found), 24 layers at most",
+                "layer order: valid (72 faces on 1 plane"},
+            {"038_traditionaloripa_Yakko", "53 creases folded at once (folded flat, its layer order found), 8 layers at most",
+                "layer order: valid (38 faces on 1 plane"},
+        };
+        for (String[] c : cases) {
+            CliTest.Run run = CliTest.run("fold", "src/test/resources/flat-folder-examples/" + c[0] + ".fold", "--no-view", "--export-fold",
+                    dir.resolve(c[0] + "-out.fold").toString());
+            assertEquals(0, run.code(), c[0] + ": " + run.err());
+            assertTrue(run.out().contains(c[1]) && run.out().contains(c[2]), run.out());
+        }
+        CliTest.Run pinwheel = CliTest.run("fold", "src/test/resources/flat-folder-examples/006_ku_Thirds_Pinwheel.fold", "--no-view");
+        CliTest.assertOneLineError(pinwheel, "no layer order without a cycle", "which iFold's stacks cannot hold");
+    }
+
     /** Hostile files: indices out of range, the wrong kinds of value, refused in one line. */
     @Test
     void hostileFilesAreRefusedInOneLine() throws Exception {
