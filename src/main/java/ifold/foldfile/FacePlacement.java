@@ -96,6 +96,58 @@ final class FacePlacement {
         return ((long) Math.min(a, b) << 32) | Math.max(a, b);
     }
 
+    /** What a walk over the hinges from face 0 meets. */
+    interface Walk {
+        /** Face g reached for the first time, from f across paper edge (a, b) (the file's {@code edge}, or -1). */
+        void reached(int g, int f, int a, int b, int edge) throws CreasePattern.Refused;
+
+        /** A hinge between faces f and g, both reached already (f the lower): one the tree leaves out, or a tree's seen again. */
+        default void joins(int f, int g, int a, int b) {
+        }
+    }
+
+    /**
+     * Walks the hinges breadth first from face 0: across each paper edge two faces share, unless
+     * the file makes it a border or a cut.
+     *
+     * @throws CreasePattern.Refused naming a face no hinge reaches: iFold folds one piece of paper
+     */
+    static void walk(int[][] faces, Map<Long, Integer> edgeOf, boolean[] hingeable, Walk walk) throws CreasePattern.Refused {
+        Map<Long, int[]> sides = sides(faces);
+        boolean[] reached = new boolean[faces.length];
+        ArrayDeque<Integer> queue = new ArrayDeque<>();
+        reached[0] = true;
+        queue.add(0);
+        while (!queue.isEmpty()) {
+            int f = queue.poll();
+            int[] loop = faces[f];
+            for (int i = 0; i < loop.length; i++) {
+                int a = loop[i];
+                int b = loop[(i + 1) % loop.length];
+                int g = sides.get(key(a, b))[a < b ? 1 : 0];
+                Integer edge = edgeOf.get(key(a, b));
+                if (g < 0 || (edge != null && !hingeable[edge])) {
+                    continue;
+                }
+                if (reached[g]) {
+                    if (f < g) {
+                        walk.joins(f, g, a, b);
+                    }
+                    continue;
+                }
+                reached[g] = true;
+                walk.reached(g, f, a, b, edge == null ? -1 : edge);
+                queue.add(g);
+            }
+        }
+        for (int f = 0; f < faces.length; f++) {
+            if (!reached[f]) {
+                throw new CreasePattern.Refused("face " + f + " is joined to face 0 by no crease or flat edge: iFold folds one piece of"
+                        + " paper");
+            }
+        }
+    }
+
     /**
      * The faces placed by their hinges' angles (radians, by edge; an edge the file does not list
      * is flat), from face 0 left where the paper lies.
@@ -108,43 +160,23 @@ final class FacePlacement {
      */
     static Placed byAngles(double[][] uv, int[][] faces, Map<Long, Integer> edgeOf, double[] angles, boolean[] hingeable, double tolerance)
             throws CreasePattern.Refused {
-        Map<Long, int[]> sides = sides(faces);
         Rigid[] motion = new Rigid[faces.length];
         List<Hinge> hinges = new ArrayList<>();
         List<long[]> closing = new ArrayList<>(); // {f, g, a, b} of hinges not in the tree
-        ArrayDeque<Integer> queue = new ArrayDeque<>();
         motion[0] = Rigid.IDENTITY;
-        queue.add(0);
-        while (!queue.isEmpty()) {
-            int f = queue.poll();
-            int[] loop = faces[f];
-            for (int i = 0; i < loop.length; i++) {
-                int a = loop[i];
-                int b = loop[(i + 1) % loop.length];
-                int[] pair = sides.get(key(a, b));
-                int g = pair[a < b ? 1 : 0];
-                Integer edge = edgeOf.get(key(a, b));
-                if (g < 0 || (edge != null && !hingeable[edge])) {
-                    continue;
-                }
-                if (motion[g] != null) {
-                    if (f < g) {
-                        closing.add(new long[] {f, g, a, b});
-                    }
-                    continue;
-                }
-                double angle = edge == null ? 0 : angles[edge];
+        walk(faces, edgeOf, hingeable, new Walk() {
+            @Override
+            public void reached(int g, int f, int a, int b, int edge) {
+                double angle = edge < 0 ? 0 : angles[edge];
                 motion[g] = motion[f].after(hinge(uv, faces[g], a, b, angle));
-                hinges.add(new Hinge(g, f, a, b, angle, edge == null ? -1 : edge));
-                queue.add(g);
+                hinges.add(new Hinge(g, f, a, b, angle, edge));
             }
-        }
-        for (int f = 0; f < faces.length; f++) {
-            if (motion[f] == null) {
-                throw new CreasePattern.Refused("face " + f + " is joined to face 0 by no crease or flat edge: iFold folds one piece of"
-                        + " paper");
+
+            @Override
+            public void joins(int f, int g, int a, int b) {
+                closing.add(new long[] {f, g, a, b});
             }
-        }
+        });
         for (long[] c : closing) {
             int f = (int) c[0];
             int g = (int) c[1];
@@ -248,49 +280,24 @@ final class FacePlacement {
      */
     static List<Hinge> hingesOf(double[][] uv, int[][] faces, Rigid[] motion, Map<Long, Integer> edgeOf, boolean[] hingeable,
             int[] flatSign) throws CreasePattern.Refused {
-        Map<Long, int[]> sides = sides(faces);
-        boolean[] reached = new boolean[faces.length];
         List<Hinge> hinges = new ArrayList<>();
-        ArrayDeque<Integer> queue = new ArrayDeque<>();
-        reached[0] = true;
-        queue.add(0);
-        while (!queue.isEmpty()) {
-            int f = queue.poll();
-            int[] loop = faces[f];
-            for (int i = 0; i < loop.length; i++) {
-                int a = loop[i];
-                int b = loop[(i + 1) % loop.length];
-                int g = sides.get(key(a, b))[a < b ? 1 : 0];
-                Integer edge = edgeOf.get(key(a, b));
-                if (g < 0 || reached[g] || (edge != null && !hingeable[edge])) {
-                    continue;
-                }
-                reached[g] = true;
-                // The paper's normal as each face carries it: the turn between them about the edge.
-                double[] up = {0, 0, 1};
-                double[] nf = motion[f].turn(up);
-                double[] ng = motion[g].turn(up);
-                double[] axisPaper = unit(new double[] {uv[b][0] - uv[a][0], uv[b][1] - uv[a][1], 0});
-                double[] axis = motion[f].turn(axisPaper);
-                double angle = Math.atan2(dot(cross(nf, ng), axis), dot(nf, ng));
-                // The sense about the edge as the hinge turns the face (its side of the edge).
-                Rigid probe = hinge(uv, faces[g], a, b, 1e-3);
-                double[] lifted = probe.turn(up);
-                double sense = Math.signum(dot(cross(up, lifted), axisPaper));
-                angle *= sense;
-                if (Math.PI - Math.abs(angle) < 1e-9) {
-                    angle = (edge != null && flatSign[edge] < 0) ? -Math.PI : Math.PI;
-                }
-                hinges.add(new Hinge(g, f, a, b, angle, edge == null ? -1 : edge));
-                queue.add(g);
+        walk(faces, edgeOf, hingeable, (g, f, a, b, edge) -> {
+            // The paper's normal as each face carries it: the turn between them about the edge.
+            double[] up = {0, 0, 1};
+            double[] nf = motion[f].turn(up);
+            double[] ng = motion[g].turn(up);
+            double[] axisPaper = unit(new double[] {uv[b][0] - uv[a][0], uv[b][1] - uv[a][1], 0});
+            double[] axis = motion[f].turn(axisPaper);
+            double angle = Math.atan2(dot(cross(nf, ng), axis), dot(nf, ng));
+            // The sense about the edge as the hinge turns the face (its side of the edge).
+            Rigid probe = hinge(uv, faces[g], a, b, 1e-3);
+            double[] lifted = probe.turn(up);
+            angle *= Math.signum(dot(cross(up, lifted), axisPaper));
+            if (Math.PI - Math.abs(angle) < 1e-9) {
+                angle = (edge >= 0 && flatSign[edge] < 0) ? -Math.PI : Math.PI;
             }
-        }
-        for (int f = 0; f < faces.length; f++) {
-            if (!reached[f]) {
-                throw new CreasePattern.Refused("face " + f + " is joined to face 0 by no crease or flat edge: iFold folds one piece of"
-                        + " paper");
-            }
-        }
+            hinges.add(new Hinge(g, f, a, b, angle, edge));
+        });
         return hinges;
     }
 
@@ -300,11 +307,9 @@ final class FacePlacement {
      * shares with its parent. A vertex shared by faces that unfold to different places is
      * refused: the form does not come from one flat sheet.
      */
-    static double[][] develop(double[][] xyz, int[][] faces, double tolerance) throws CreasePattern.Refused {
-        Map<Long, int[]> sides = sides(faces);
+    static double[][] develop(double[][] xyz, int[][] faces, Map<Long, Integer> edgeOf, boolean[] hingeable, double tolerance)
+            throws CreasePattern.Refused {
         double[][] uv = new double[xyz.length][];
-        boolean[] done = new boolean[faces.length];
-        ArrayDeque<Integer> queue = new ArrayDeque<>();
         int[] first = faces[0];
         double[] o = xyz[first[0]];
         double[] ex = unit(sub(xyz[first[1]], o));
@@ -314,49 +319,30 @@ final class FacePlacement {
             double[] d = sub(xyz[v], o);
             uv[v] = new double[] {dot(d, ex), dot(d, ey)};
         }
-        done[0] = true;
-        queue.add(0);
-        while (!queue.isEmpty()) {
-            int f = queue.poll();
-            int[] loop = faces[f];
-            for (int i = 0; i < loop.length; i++) {
-                int a = loop[i];
-                int b = loop[(i + 1) % loop.length];
-                int g = sides.get(key(a, b))[a < b ? 1 : 0];
-                if (g < 0 || done[g]) {
-                    continue;
+        walk(faces, edgeOf, hingeable, (g, f, a, b, edge) -> {
+            // g runs b → a; laid on the paper to the left of b → a, as f lies left of a → b.
+            double[] axis3 = unit(sub(xyz[b], xyz[a]));
+            double[] ng = faceNormal(xyz, faces[g]);
+            double[] inward = cross(ng, scale(axis3, -1)); // left of b → a within g's plane
+            double du = uv[b][0] - uv[a][0];
+            double dv = uv[b][1] - uv[a][1];
+            double length = Math.hypot(du, dv);
+            double[] axis2 = {du / length, dv / length};
+            double[] left2 = {axis2[1], -axis2[0]}; // left of b → a on the paper
+            for (int v : faces[g]) {
+                double[] d = sub(xyz[v], xyz[a]);
+                double along = dot(d, axis3);
+                double across = dot(d, inward);
+                double[] place = {uv[a][0] + along * axis2[0] + across * left2[0], uv[a][1] + along * axis2[1] + across * left2[1]};
+                if (uv[v] == null) {
+                    uv[v] = place;
+                } else if (Math.hypot(uv[v][0] - place[0], uv[v][1] - place[1]) > tolerance) {
+                    throw new CreasePattern.Refused(String.format(Locale.ROOT, "the folded form does not unfold onto one flat sheet:"
+                            + " vertex %d unfolds to two places %.3g apart (faces %d and %d)", v,
+                            Math.hypot(uv[v][0] - place[0], uv[v][1] - place[1]), f, g));
                 }
-                done[g] = true;
-                // g runs b → a; laid on the paper to the left of b → a, as f lies left of a → b.
-                double[] axis3 = unit(sub(xyz[b], xyz[a]));
-                double[] ng = faceNormal(xyz, faces[g]);
-                double[] inward = cross(ng, scale(axis3, -1)); // left of b → a within g's plane
-                double du = uv[b][0] - uv[a][0];
-                double dv = uv[b][1] - uv[a][1];
-                double length = Math.hypot(du, dv);
-                double[] axis2 = {du / length, dv / length};
-                double[] left2 = {axis2[1], -axis2[0]}; // left of b → a on the paper
-                for (int v : faces[g]) {
-                    double[] d = sub(xyz[v], xyz[a]);
-                    double along = dot(d, axis3);
-                    double across = dot(d, inward);
-                    double[] place = {uv[a][0] + along * axis2[0] + across * left2[0], uv[a][1] + along * axis2[1] + across * left2[1]};
-                    if (uv[v] == null) {
-                        uv[v] = place;
-                    } else if (Math.hypot(uv[v][0] - place[0], uv[v][1] - place[1]) > tolerance) {
-                        throw new CreasePattern.Refused(String.format(Locale.ROOT, "the folded form does not unfold onto one flat sheet:"
-                                + " vertex %d unfolds to two places %.3g apart (faces %d and %d)", v,
-                                Math.hypot(uv[v][0] - place[0], uv[v][1] - place[1]), f, g));
-                    }
-                }
-                queue.add(g);
             }
-        }
-        for (int f = 0; f < faces.length; f++) {
-            if (!done[f]) {
-                throw new CreasePattern.Refused("face " + f + " shares no edge with the rest: iFold folds one piece of paper");
-            }
-        }
+        });
         return uv;
     }
 

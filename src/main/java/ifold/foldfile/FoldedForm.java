@@ -161,7 +161,7 @@ public final class FoldedForm {
                 faces = in.faces();
                 // A folded form's faces are as isometric to the sheet as its numbers' digits allow:
                 // Mathematica's square twist, to about a millionth of its size.
-                uv = FacePlacement.develop(xyz, faces, 1e-5 * size);
+                uv = FacePlacement.develop(xyz, faces, edgeOf, hingeable, 1e-5 * size);
             }
             motion = FacePlacement.fromPlaces(uv, xyz, faces);
             hinges = FacePlacement.hingesOf(uv, faces, motion, edgeOf, hingeable, flatSign);
@@ -396,7 +396,6 @@ public final class FoldedForm {
     private static int[] orderFromFile(int count, List<int[]> orders, FacePlacement.Rigid[] motion, int[] hostOf, List<HostFrame> frames)
             throws CreasePattern.Refused {
         List<List<Integer>> over = new ArrayList<>();
-        int[] below = new int[count];
         for (int f = 0; f < count; f++) {
             over.add(new ArrayList<>());
         }
@@ -408,29 +407,10 @@ public final class FoldedForm {
             }
             double[] ng = motion[g].turn(new double[] {0, 0, 1});
             boolean fAbove = order[2] * FacePlacement.dot(ng, frames.get(hostOf[g]).normal()) > 0;
-            int lower = fAbove ? g : f;
-            int upper = fAbove ? f : g;
-            over.get(lower).add(upper);
-            below[upper]++;
+            over.get(fAbove ? g : f).add(fAbove ? f : g);
         }
-        ArrayDeque<Integer> ready = new ArrayDeque<>();
-        for (int f = 0; f < count; f++) {
-            if (below[f] == 0) {
-                ready.add(f);
-            }
-        }
-        int[] bottomUp = new int[count];
-        int k = 0;
-        while (!ready.isEmpty()) {
-            int f = ready.poll();
-            bottomUp[k++] = f;
-            for (int g : over.get(f)) {
-                if (--below[g] == 0) {
-                    ready.add(g);
-                }
-            }
-        }
-        if (k < count) {
+        int[] bottomUp = LayerSolver.kahn(count, over);
+        if (count > 0 && bottomUp[count - 1] < 0) {
             throw new CreasePattern.Refused("faceOrders put faces in a cycle: no stack of layers is so ordered");
         }
         return bottomUp;

@@ -510,38 +510,13 @@ final class LayerSolver {
 
     private int[] ranks() {
         int n = polygons.length;
-        List<List<Integer>> over = new ArrayList<>();
-        int[] below = new int[n];
-        for (int f = 0; f < n; f++) {
-            over.add(new ArrayList<>());
-        }
-        for (int v = 0; v < pairs.size(); v++) {
-            if (value[v] == 0) {
-                continue;
-            }
-            int a = (int) pairs.get(v)[0];
-            int b = (int) pairs.get(v)[1];
-            int lower = value[v] > 0 ? b : a;
-            int upper = value[v] > 0 ? a : b;
-            over.get(lower).add(upper);
-            below[upper]++;
-        }
+        int[] order = kahn(n, decidedOver());
         int[] ranks = new int[n];
         java.util.Arrays.fill(ranks, -1);
-        ArrayDeque<Integer> ready = new ArrayDeque<>();
-        for (int f = 0; f < n; f++) {
-            if (below[f] == 0) {
-                ready.add(f);
-            }
-        }
         int next = 0;
-        while (!ready.isEmpty()) {
-            int f = ready.poll();
-            ranks[f] = next++;
-            for (int g : over.get(f)) {
-                if (--below[g] == 0) {
-                    ready.add(g);
-                }
+        for (int f : order) {
+            if (f >= 0) {
+                ranks[f] = next++;
             }
         }
         for (int f = 0; f < n; f++) {
@@ -550,6 +525,55 @@ final class LayerSolver {
             }
         }
         return ranks;
+    }
+
+    /** For each face, the faces decided to lie above it. */
+    private List<List<Integer>> decidedOver() {
+        List<List<Integer>> over = new ArrayList<>();
+        for (int f = 0; f < polygons.length; f++) {
+            over.add(new ArrayList<>());
+        }
+        for (int v = 0; v < pairs.size(); v++) {
+            if (value[v] != 0) {
+                int a = (int) pairs.get(v)[0];
+                int b = (int) pairs.get(v)[1];
+                over.get(value[v] > 0 ? b : a).add(value[v] > 0 ? a : b);
+            }
+        }
+        return over;
+    }
+
+    /**
+     * The faces bottom up by {@code over} (each face's list of those above it): Kahn's order, each
+     * face after all below it; the faces a cycle holds back are left out, their places -1 at the
+     * end.
+     */
+    static int[] kahn(int n, List<List<Integer>> over) {
+        int[] below = new int[n];
+        for (List<Integer> above : over) {
+            for (int g : above) {
+                below[g]++;
+            }
+        }
+        ArrayDeque<Integer> ready = new ArrayDeque<>();
+        for (int f = 0; f < n; f++) {
+            if (below[f] == 0) {
+                ready.add(f);
+            }
+        }
+        int[] order = new int[n];
+        java.util.Arrays.fill(order, -1);
+        int count = 0;
+        while (!ready.isEmpty()) {
+            int f = ready.poll();
+            order[count++] = f;
+            for (int g : over.get(f)) {
+                if (--below[g] == 0) {
+                    ready.add(g);
+                }
+            }
+        }
+        return order;
     }
 
     /** The value the ranks prefer for pair v: its lower-numbered face above where it ranks higher. */
@@ -563,15 +587,7 @@ final class LayerSolver {
      */
     private int[] cycle() {
         int n = polygons.length;
-        List<List<Integer>> over = new ArrayList<>();
-        for (int f = 0; f < n; f++) {
-            over.add(new ArrayList<>());
-        }
-        for (int v = 0; v < pairs.size(); v++) {
-            int a = (int) pairs.get(v)[0];
-            int b = (int) pairs.get(v)[1];
-            over.get(value[v] > 0 ? b : a).add(value[v] > 0 ? a : b);
-        }
+        List<List<Integer>> over = decidedOver();
         // A cycle by depth-first search (colours: 0 new, 1 on the path, 2 done).
         int[] colour = new int[n];
         int[] parent = new int[n];
@@ -760,38 +776,8 @@ final class LayerSolver {
 
     /** The faces bottom up: each after every face it lies above (Kahn's order of the decided pairs). */
     private int[] bottomUp() throws CreasePattern.Refused {
-        int n = polygons.length;
-        List<List<Integer>> over = new ArrayList<>();
-        int[] below = new int[n];
-        for (int f = 0; f < n; f++) {
-            over.add(new ArrayList<>());
-        }
-        for (int v = 0; v < pairs.size(); v++) {
-            int a = (int) pairs.get(v)[0];
-            int b = (int) pairs.get(v)[1];
-            int lower = value[v] > 0 ? b : a;
-            int upper = value[v] > 0 ? a : b;
-            over.get(lower).add(upper);
-            below[upper]++;
-        }
-        ArrayDeque<Integer> ready = new ArrayDeque<>();
-        for (int f = 0; f < n; f++) {
-            if (below[f] == 0) {
-                ready.add(f);
-            }
-        }
-        int[] order = new int[n];
-        int count = 0;
-        while (!ready.isEmpty()) {
-            int f = ready.poll();
-            order[count++] = f;
-            for (int g : over.get(f)) {
-                if (--below[g] == 0) {
-                    ready.add(g);
-                }
-            }
-        }
-        if (count < n) {
+        int[] order = kahn(polygons.length, decidedOver());
+        if (order.length > 0 && order[order.length - 1] < 0) {
             throw new CreasePattern.Refused("the layers found lie in a cycle over no one point, which iFold's stacks cannot hold");
         }
         return order;

@@ -26,13 +26,7 @@ public final class FoldedStateSheet {
      */
     public static Sheet of(double[] uv, int[][] loops, int[] hosts, Isometry2[] poses, int[] bottomUp, int[][] creases, int[] creaseFolds,
             double thickness, double tolerance) {
-        double[] box = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
-        for (int i = 0; i < uv.length; i += 2) {
-            box[0] = Math.min(box[0], uv[i]);
-            box[1] = Math.min(box[1], uv[i + 1]);
-            box[2] = Math.max(box[2], uv[i]);
-            box[3] = Math.max(box[3], uv[i + 1]);
-        }
+        double[] box = Polygons2.bounds(uv);
         Sheet sheet = new Sheet(box[3] - box[1], thickness, tolerance, 0, Isometry2.IDENTITY);
         // A strip's constructor makes the two corners of its tail: a folded state has no tail.
         sheet.vertexCount = 0;
