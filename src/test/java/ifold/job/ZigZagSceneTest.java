@@ -5,7 +5,6 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import ifold.geom.Triangle;
-import ifold.mesh.PolygonSoup;
 import ifold.scene.Scene;
 import ifold.scene.WrapPlayback;
 import ifold.scene.WrapView;
@@ -18,14 +17,8 @@ import org.junit.jupiter.api.Test;
 class ZigZagSceneTest {
     @Test
     void theCornersAreLabelledTheColoursExplainedAndTheTucksSeenFromBelow() throws Exception {
-        Triangle shape = TriangleText.parse("0,0,10,0,3.5,8");
-        PolygonSoup soup = new PolygonSoup();
-        for (int i = 0; i < 3; i++) {
-            soup.addVertex(shape.corner(i).x(), shape.corner(i).y(), shape.corner(i).z());
-        }
-        soup.addTriangle(0, 1, 2);
-        Wrap.Result result = Wrap.wrap(soup, new int[] {0, 1},
-                Wrap.Options.loneTriangle(shape, new Wrap.Ends(2, 0, -1), Double.NaN, Double.NaN));
+        Triangle shape = ZigZagFixture.SHAPE;
+        Wrap.Result result = ZigZagFixture.wrapped();
         Scene scene = new Scene();
         WrapPlayback playback = Scenes.zigzag(scene, shape, result,
                 List.of(PaperInSpace.of(result.strips().get(0).sheet(), result.frames())));

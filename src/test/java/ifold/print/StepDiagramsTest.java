@@ -8,10 +8,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import ifold.geom.Triangle;
 import ifold.job.Scenes;
-import ifold.job.TriangleText;
 import ifold.job.WrapJob;
+import ifold.job.ZigZagFixture;
 import ifold.mesh.MeshBuilder;
-import ifold.mesh.PolygonSoup;
 import ifold.scene.Animation;
 import ifold.scene.Scene;
 import ifold.wrap.PaperInSpace;
@@ -105,14 +104,8 @@ class StepDiagramsTest {
 
     @Test
     void eachFoldOfTheZigZagHasItsArrowAcrossItsCreaseAndTheTucksBeginWithTurnOver() throws Exception {
-        Triangle shape = TriangleText.parse("0,0,10,0,3.5,8");
-        PolygonSoup soup = new PolygonSoup();
-        for (int i = 0; i < 3; i++) {
-            soup.addVertex(shape.corner(i).x(), shape.corner(i).y(), shape.corner(i).z());
-        }
-        soup.addTriangle(0, 1, 2);
-        Wrap.Result result = Wrap.wrap(soup, new int[] {0, 1},
-                Wrap.Options.loneTriangle(shape, new Wrap.Ends(2, 0, -1), Double.NaN, Double.NaN));
+        Triangle shape = ZigZagFixture.SHAPE;
+        Wrap.Result result = ZigZagFixture.wrapped();
         Scene scene = new Scene();
         Animation playback = Scenes.zigzag(scene, shape, result, List.of(PaperInSpace.of(result.strips().get(0).sheet(), result.frames())));
         Panels canvas = new Panels();
