@@ -1,12 +1,12 @@
 package ifold.cli;
 
 import ifold.foldfile.FoldFile;
+import ifold.foldfile.FoldSteps;
 import ifold.job.PrintJob;
-import ifold.job.Scenes;
 import ifold.job.ScriptJob;
 import ifold.scene.Animation;
 import ifold.scene.Scene;
-import ifold.script.FoldScript;
+import ifold.script.FoldScriptException;
 import ifold.script.ScriptFolding;
 import ifold.wrap.PaperInSpace;
 import java.io.IOException;
@@ -51,6 +51,10 @@ final class FoldCommand implements Callable<Integer> {
             description = "the most faces the folds may cut the paper into (default ${DEFAULT-VALUE}): a fold that would make more is refused")
     int maxFaces;
 
+    @Option(names = "--fold-frames", description = "with --export-fold: a frame after each fold in its file_frames (its faces,"
+            + " vertices in space, fold angles and face orders, on paper of no thickness), the folding sequence other tools play")
+    boolean foldFrames;
+
     @Mixin
     PaperOutputs outputs = new PaperOutputs();
 
@@ -66,6 +70,9 @@ final class FoldCommand implements Callable<Integer> {
         // wanted, as the demos and the wrap do.
         outputs.check("fold", spec.commandLine().getErr(), true);
         diagrams.check(outputs);
+        if (foldFrames && outputs.exportFold == null) {
+            throw UserError.usage("option --fold-frames: only with --export-fold, whose file holds the frames");
+        }
         if (Files.isDirectory(script)) {
             throw new UserError(script + ": is a folder, expected a fold script");
         }
@@ -91,7 +98,7 @@ final class FoldCommand implements Callable<Integer> {
         // The FOLD file's folded state folds the script again on paper of no thickness: only where a
         // FOLD file is written or the layer order checked (from the same FOLD text, made in memory).
         List<FoldFile.Folded> sheets = outputs.checksLayerOrder() || outputs.prints() ? folding.sheets(maxFaces) : List.of();
-        outputs.exportFold(sheets, "ifold fold " + script, figures);
+        outputs.exportFold(sheets, "ifold fold " + script, figures, foldFrames ? steps(folding) : null);
         outputs.exportPrint(sheets, script.getFileName().toString(), PrintJob.SCRIPT);
         diagrams.write(outputs, script.getFileName().toString(), PrintJob.SCRIPT, folding::play);
         outputs.write(List.of(folded), result.sheet().thickness(), "iFold fold script " + script + ": " + folding.folds() + ", thickness "
@@ -109,6 +116,19 @@ final class FoldCommand implements Callable<Integer> {
         outputs.show(scene, animation, script.getFileName() + ": " + folding.folds(), outputs.frameOptions.seconds, false, spec);
         out.flush();
         return 0;
+    }
+
+    /** The frame after each fold, for --fold-frames: the script folded again on paper of no thickness. */
+    private FoldSteps steps(ScriptJob.Outcome folding) {
+        if (folding.form() != null) {
+            throw UserError.usage("option --fold-frames: " + script.getFileName() + " folds every crease at once, in one step: --export-fold"
+                    + " writes its crease pattern and its folded state");
+        }
+        try {
+            return FoldSteps.of(folding.script(), maxFaces);
+        } catch (FoldScriptException e) {
+            throw new UserError(script + ": cannot be folded again without thickness for --fold-frames: " + e.getMessage());
+        }
     }
 
     /**

@@ -195,7 +195,12 @@ final class PaperOutputs {
      * {@code layerOrder}.
      */
     void exportFold(List<FoldFile.Folded> sheets, String title, Map<String, Object> figures) {
-        writeFold(sheets, title, figures);
+        exportFold(sheets, title, figures, null);
+    }
+
+    /** As {@link #exportFold(List, String, Map)}, with a frame after each fold ({@code --fold-frames}), or none. */
+    void exportFold(List<FoldFile.Folded> sheets, String title, Map<String, Object> figures, ifold.foldfile.FoldSteps steps) {
+        writeFold(sheets, title, figures, steps);
         if (!checksLayerOrder()) {
             return;
         }
@@ -266,12 +271,12 @@ final class PaperOutputs {
     /** The seconds the layer-order check took, 0 where none was made. */
     double layerOrderSeconds;
 
-    private void writeFold(List<FoldFile.Folded> sheets, String title, Map<String, Object> figures) {
+    private void writeFold(List<FoldFile.Folded> sheets, String title, Map<String, Object> figures, ifold.foldfile.FoldSteps steps) {
         if (exportFold == null) {
             return;
         }
         try {
-            FoldFile.Counts counts = FoldFile.write(exportFold, title, sheets);
+            FoldFile.Counts counts = FoldFile.write(exportFold, title, sheets, steps);
             wrote(exportFold);
             Map<String, Object> pattern = new java.util.LinkedHashMap<>();
             pattern.put("vertices", counts.vertices());
@@ -282,6 +287,9 @@ final class PaperOutputs {
             pattern.put("flat", counts.flat());
             pattern.put("border", counts.border());
             pattern.put("faceOrders", counts.faceOrders());
+            if (steps != null) {
+                pattern.put("stepFrames", steps.size());
+            }
             figures.put("creasePattern", pattern);
         } catch (IOException e) {
             discardWritten();

@@ -119,7 +119,13 @@ public final class FoldFile {
      * @param title the frame's title (what was folded)
      */
     public static Counts write(Path file, String title, List<Folded> sheets) throws IOException {
+        return write(file, title, sheets, null);
+    }
+
+    /** As {@link #write(Path, String, List)}, with {@code steps} (or none) as frames after the folded state, a frame a fold. */
+    public static Counts write(Path file, String title, List<Folded> sheets, FoldSteps steps) throws IOException {
         Pattern pattern = new Pattern(sheets);
+        pattern.steps = steps;
         AtomicFile.write(file, stream -> {
             try (JsonGenerator json = JSON.createGenerator(stream)) {
                 pattern.writeTo(json, title);
@@ -177,7 +183,7 @@ public final class FoldFile {
     }
 
     /** The crease pattern and folded state, found once and written after. */
-    private static final class Pattern {
+    static final class Pattern {
         final List<Folded> sheets;
         final int[] vertexBase;
         final int[] faceBase;
@@ -189,6 +195,8 @@ public final class FoldFile {
         final List<Double> angles = new ArrayList<>();
         final List<int[]> orders = new ArrayList<>();
         final List<int[]> levels = new ArrayList<>();
+        /** The frames a fold, written after the folded state; null where none were asked for. */
+        FoldSteps steps;
         /**
          * Each edge's fold step, from 1, sheet by sheet, fold by fold: the fold that made the
          * crease (the creases of one fold share it); null for the border and flat edges.
@@ -438,11 +446,14 @@ public final class FoldFile {
             }
             json.writeEndArray();
             json.writeEndObject();
+            if (steps != null) {
+                steps.writeTo(json);
+            }
             json.writeEndArray();
             json.writeEndObject();
         }
 
-        private static void stringArray(JsonGenerator json, String field, String value) throws IOException {
+        static void stringArray(JsonGenerator json, String field, String value) throws IOException {
             json.writeFieldName(field);
             json.writeStartArray();
             json.writeString(value);

@@ -97,6 +97,11 @@ public final class FoldScript {
         return ScriptFolding.play(this, nanosPerFold, maxFaces);
     }
 
+    /** Like {@link #play(long[], int)}, telling {@code after} the paper as it stands after each fold. */
+    public ScriptFolding.Result play(long[] nanosPerFold, int maxFaces, ScriptFolding.AfterFold after) throws FoldScriptException {
+        return ScriptFolding.play(this, nanosPerFold, maxFaces, after);
+    }
+
     private static String fmt(double value) {
         // Whole numbers without ".0"; beyond a long's range, as doubles are written.
         return value == Math.rint(value) && Math.abs(value) < 1e15 ? Long.toString((long) value) : Double.toString(value);

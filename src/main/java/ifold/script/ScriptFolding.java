@@ -106,6 +106,16 @@ public final class ScriptFolding {
      * at most twice those before).
      */
     static Result play(FoldScript script, long[] nanosPerFold, int maxFaces) throws FoldScriptException {
+        return play(script, nanosPerFold, maxFaces, null);
+    }
+
+    /** Told the paper as it stands after each fold, while the folds go on (the sheet changes after). */
+    public interface AfterFold {
+        void folded(int fold, Sheet sheet, HostFrame[] frames);
+    }
+
+    /** As {@link #play(FoldScript, long[], int)}, telling {@code after} (or nobody) the paper after each fold. */
+    static Result play(FoldScript script, long[] nanosPerFold, int maxFaces, AfterFold after) throws FoldScriptException {
         ScriptFolding folding = new ScriptFolding(script.length(), script.width(), script.thickness());
         folding.maxFaces = maxFaces;
         List<FoldScript.Step> folds = script.steps();
@@ -118,6 +128,9 @@ public final class ScriptFolding {
                 throw new FoldScriptException(fold.line(), "fold " + (i + 1) + ": " + e.getMessage());
             }
             nanosPerFold[i] = System.nanoTime() - start;
+            if (after != null) {
+                after.folded(i, folding.sheet, folding.frames.toArray(new HostFrame[0]));
+            }
         }
         return new Result(folding.sheet, folding.frames.toArray(new HostFrame[0]), List.copyOf(folding.steps));
     }

@@ -278,6 +278,37 @@ class FoldCommandTest {
         }
     }
 
+    /**
+     * {@code --fold-frames}: a frame after each fold, each with its own faces (as many as that fold
+     * has cut), the last the folded state itself (the same vertices and face orders); the file
+     * still folds back; refused without --export-fold, and for a file folded all at once.
+     */
+    @Test
+    void foldFramesHoldAFrameAfterEachFold() throws Exception {
+        Path file = dir.resolve("pleat.fold");
+        CliTest.Run run = CliTest.run("fold", "models/scripts/pleat20.fold", "--no-view", "--export-fold", file.toString(), "--fold-frames");
+        assertEquals(0, run.code(), run.err());
+        Map<String, Object> fold = ifold.foldfile.FoldJson.read(file);
+        List<?> frames = (List<?>) fold.get("file_frames");
+        assertEquals(1 + 20, frames.size(), "the folded state, then a frame a fold");
+        for (int k = 1; k <= 20; k++) {
+            Map<?, ?> frame = (Map<?, ?>) frames.get(k);
+            assertEquals("after fold " + k + " of 20", frame.get("frame_title"));
+            assertEquals(k + 1, ((List<?>) frame.get("faces_vertices")).size(), "fold " + k + " cuts one face more");
+            assertEquals(((List<?>) frame.get("edges_vertices")).size(), ((List<?>) frame.get("edges_foldAngle")).size());
+        }
+        Map<?, ?> last = (Map<?, ?>) frames.get(20);
+        assertEquals(folded(fold).get("vertices_coords"), last.get("vertices_coords"), "the last frame is the folded state");
+        assertEquals(((List<?>) folded(fold).get("faceOrders")).size(), ((List<?>) last.get("faceOrders")).size());
+        assertEquals(0, CliTest.run("fold", file.toString(), "--no-view").code(), "a file with frames folds back");
+        CliTest.assertOneLineError(CliTest.run("fold", "models/scripts/pleat20.fold", "--no-view", "--fold-frames"),
+                "option --fold-frames: only with --export-fold");
+        CliTest.Run once = CliTest.run("fold", "src/test/resources/fold-examples/simple.fold", "--no-view", "--export-fold",
+                dir.resolve("simple-out.fold").toString(), "--fold-frames");
+        CliTest.assertOneLineError(once, "option --fold-frames: simple.fold folds every crease at once, in one step");
+        assertTrue(!Files.exists(dir.resolve("simple-out.fold")), "nothing written");
+    }
+
     private static Map<String, Object> folded(Map<String, Object> fold) {
         for (Object frame : (List<?>) fold.get("file_frames")) {
             @SuppressWarnings("unchecked")
