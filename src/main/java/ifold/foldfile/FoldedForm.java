@@ -5,9 +5,7 @@ import ifold.sheet.FoldedStateSheet;
 import ifold.sheet.HostFrame;
 import ifold.sheet.Isometry2;
 import ifold.sheet.Sheet;
-import java.util.ArrayDeque;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
@@ -460,15 +458,5 @@ public final class FoldedForm {
             box[3] = Math.max(box[3], b[3]);
         }
         return LayerSolver.order(polygons, faceUp, creases, Tolerance.ON_PLANE * Math.hypot(box[2] - box[0], box[3] - box[1]), tolerance);
-    }
-
-    static String describe(Result result) {
-        return String.format(Locale.ROOT, "%d faces, %d creases, %s", result.sheet().faceCount(), result.creases(), result.kind().words());
-    }
-
-    static int[] identity(int n) {
-        int[] order = new int[n];
-        Arrays.setAll(order, i -> i);
-        return order;
     }
 }

@@ -21,8 +21,6 @@ import ifold.script.ScriptFolding;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapExport;
 import ifold.wrap.PaperInSpace;
-import java.io.IOException;
-import java.io.UncheckedIOException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
