@@ -124,6 +124,22 @@ class PlanningTest {
         assertEquals(1.0, script.folds().get(1).position(), "and the second once it is made");
     }
 
+    /**
+     * A FOLD file folded every crease at once plays in the window as on the command line: one
+     * motion, listed as one entry, its end the folded form, its FOLD export the same state.
+     */
+    @Test
+    void aFoldFileFoldedAtOncePlaysAsOneMotion() throws Exception {
+        Plan plan = Planning.plan(new Job.Script(Path.of("src", "test", "resources", "fold-examples", "simple.fold")), Progress.NONE);
+        assertEquals(1, plan.stepCount(), "every crease together: one step");
+        assertEquals(1, plan.folds().size(), plan.folds().toString());
+        assertEquals("3 creases folded at once (a folded form, unfolded onto one sheet)", plan.folds().get(0).name());
+        Animation motion = plan.shown().animation();
+        assertEquals("folded: 4 faces, a folded form, unfolded onto one sheet", motion.describe(1));
+        assertTrue(motion.describe(0.5).startsWith("all 3 creases folding at once (50 %)"), motion.describe(0.5));
+        assertEquals("all at once: a folded form, unfolded onto one sheet", plan.figures().get("folding"));
+    }
+
     /** A FOLD file that begins with a UTF-8 byte order mark is still a FOLD file, as on the command line. */
     @Test
     void aFoldFileWithAByteOrderMarkIsFoldedAsOne() throws Exception {
