@@ -7,7 +7,6 @@ import ifold.geom.ParameterException;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
-import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -16,7 +15,9 @@ import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code ifold generate SHAPE -o OUT}: the models iFold makes itself (those in models/, and big tori for benchmarks). */
 @Command(name = "generate", mixinStandardHelpOptions = true,
-        description = "Writes one of the built-in models: tetrahedron, cube, octahedron, icosahedron, icosphere, torus, triangle, figure3.")
+        description = "Writes one of the built-in models: tetrahedron, cube, octahedron, icosahedron, icosphere, torus, triangle,"
+            + " figure3; or a polycube (unit cubes on the grid, its surface of unit squares): box (--size), the l, t and plus"
+            + " shapes, a staircase, or a random polycube (--cubes, --seed).")
 final class GenerateCommand implements Callable<Integer> {
 
     @Spec
@@ -40,17 +41,38 @@ final class GenerateCommand implements Callable<Integer> {
     @Option(names = "--subdivisions", paramLabel = "N", defaultValue = "" + BuiltInModels.DEFAULT_SUBDIVISIONS, description = "icosphere: times each triangle is cut in four (default ${DEFAULT-VALUE}: 1,280 triangles)")
     int subdivisions;
 
+    @Option(names = "--size", paramLabel = "AxBxC", defaultValue = "2x1x1", description = "box: its sides in unit cubes (default ${DEFAULT-VALUE})")
+    String size;
+
+    @Option(names = "--cubes", paramLabel = "N", defaultValue = "50", description = "polycube: how many unit cubes, grown at random so"
+            + " that its surface stays a sphere (default ${DEFAULT-VALUE}, at most " + BuiltInModels.MOST_RANDOM_CUBES + ")")
+    int cubes;
+
+    @Option(names = "--seed", paramLabel = "S", defaultValue = "1", description = "polycube: the seed it grows from; the same seed, the"
+            + " same polycube (default ${DEFAULT-VALUE})")
+    long seed;
+
     @Override
     public Integer call() {
         OutputFiles.checkWritableFile(output, "-o", ".off", ".obj", ".ply", ".stl");
+        String[] sides = size.strip().toLowerCase(java.util.Locale.ROOT).split("x", -1);
+        int[] box = new int[sides.length];
+        try {
+            for (int k = 0; k < sides.length; k++) {
+                box[k] = Integer.parseInt(sides[k].strip());
+            }
+        } catch (NumberFormatException e) {
+            throw UserError.usage("option --size: expected three whole numbers AxBxC, such as 3x2x1, got '" + size + "'");
+        }
         GenerateJob.Made made;
         try {
-            made = GenerateJob.run(new GenerateJob.Request(shape, around, across, subdivisions, output, ascii), JobWatcher.NONE);
+            made = GenerateJob.run(new GenerateJob.Request(shape, around, across, subdivisions, new BuiltInModels.Grid(box, cubes, seed), output,
+                    ascii), JobWatcher.NONE);
         } catch (ParameterException e) {
             if (e.parameter().equals(BuiltInModels.SEGMENTS)) {
                 throw UserError.usage("options --around and --across: " + e.getMessage());
             }
-            throw new CommandLine.ParameterException(spec.commandLine(), "option --" + e.parameter() + ": " + e.getMessage());
+            throw UserError.usage("option --" + e.parameter() + ": " + e.getMessage());
         } catch (IOException e) {
             throw new UserError(output + ": cannot write: " + e.getMessage());
         }

@@ -1,6 +1,7 @@
 package ifold.job;
 
 import ifold.mesh.PolygonSoup;
+import ifold.mesh.Polycubes;
 import ifold.mesh.Solids;
 import ifold.geom.ParameterException;
 import java.util.Locale;
@@ -31,7 +32,19 @@ public final class BuiltInModels {
      * The shapes, named as the command line takes them ({@code ifold generate cube}): picocli
      * lists and matches an enum by its constants' names, hence lower case.
      */
-    public enum Shape { tetrahedron, cube, octahedron, icosahedron, icosphere, torus, triangle, figure3 }
+    public enum Shape { tetrahedron, cube, octahedron, icosahedron, icosphere, torus, triangle, figure3, box, l, t, plus, staircase, polycube }
+
+    /** The most cubes of a random polycube: each cube grown checks the whole surface, so n cubes cost n² squares. */
+    public static final int MOST_RANDOM_CUBES = 5_000;
+
+    /**
+     * A polycube's parameters: a box's sides in cubes (a × b × c), and a random polycube's cubes
+     * and the seed that grows it.
+     */
+    public record Grid(int[] size, int cubes, long seed) {
+        /** A 2 × 1 × 1 box; 50 cubes from seed 1. */
+        public static final Grid DEFAULT = new Grid(new int[] {2, 1, 1}, 50, 1);
+    }
 
     private BuiltInModels() {
     }
@@ -46,6 +59,30 @@ public final class BuiltInModels {
      * @throws ParameterException naming {@link #SEGMENTS} (the torus) or {@code subdivisions}
      */
     public static void check(Shape shape, int around, int across, int subdivisions) {
+        check(shape, around, across, subdivisions, Grid.DEFAULT);
+    }
+
+    /**
+     * As {@link #check(Shape, int, int, int)}, and a polycube's {@code grid}.
+     *
+     * @throws ParameterException naming {@code size} (a box), or {@code cubes} (a random polycube)
+     */
+    public static void check(Shape shape, int around, int across, int subdivisions, Grid grid) {
+        if (shape == Shape.box) {
+            int[] size = grid.size();
+            if (size.length != 3 || size[0] < 1 || size[1] < 1 || size[2] < 1
+                    || (long) size[0] * size[1] * size[2] > ifold.mesh.Polycubes.MOST_CUBES) {
+                throw new ParameterException("size", "must be three whole numbers AxBxC, each at least 1, at most "
+                        + ifold.mesh.Polycubes.MOST_CUBES + " cubes in all");
+            }
+        }
+        if (shape == Shape.polycube && (grid.cubes() < 1 || grid.cubes() > MOST_RANDOM_CUBES)) {
+            throw new ParameterException("cubes", "must be 1 to " + MOST_RANDOM_CUBES + ", got " + grid.cubes());
+        }
+        checkCounts(shape, around, across, subdivisions);
+    }
+
+    private static void checkCounts(Shape shape, int around, int across, int subdivisions) {
         if (shape == Shape.torus && (around < 3 || across < 3 || (long) around * across > MAX_TORUS_SEGMENTS)) {
             throw new ParameterException(SEGMENTS, "each must be at least 3, and their product at most " + MAX_TORUS_SEGMENTS);
         }
@@ -60,8 +97,23 @@ public final class BuiltInModels {
      * @throws ParameterException as {@link #check} does
      */
     public static PolygonSoup make(Shape shape, int around, int across, int subdivisions) {
-        check(shape, around, across, subdivisions);
+        return make(shape, around, across, subdivisions, Grid.DEFAULT);
+    }
+
+    /**
+     * As {@link #make(Shape, int, int, int)}; a polycube's squares from {@code grid}: a box of
+     * unit cubes, the L (four cubes), the T (four), the plus (five), a staircase of three steps
+     * (six), or {@code grid.cubes()} grown at random from {@code grid.seed()}, its surface a sphere.
+     */
+    public static PolygonSoup make(Shape shape, int around, int across, int subdivisions, Grid grid) {
+        check(shape, around, across, subdivisions, grid);
         return switch (shape) {
+            case box -> Polycubes.surface(Polycubes.box(grid.size()[0], grid.size()[1], grid.size()[2]));
+            case l -> Polycubes.surface(Polycubes.l());
+            case t -> Polycubes.surface(Polycubes.t());
+            case plus -> Polycubes.surface(Polycubes.plus());
+            case staircase -> Polycubes.surface(Polycubes.staircase());
+            case polycube -> Polycubes.surface(Polycubes.random(grid.cubes(), grid.seed()));
             case tetrahedron -> Solids.tetrahedron();
             case cube -> Solids.cube();
             case octahedron -> Solids.octahedron();
@@ -75,9 +127,16 @@ public final class BuiltInModels {
 
     /** A file name for the shape: {@code torus-24x12}, {@code icosphere-3}, {@code cube}. */
     public static String name(Shape shape, int around, int across, int subdivisions) {
+        return name(shape, around, across, subdivisions, Grid.DEFAULT);
+    }
+
+    /** As {@link #name(Shape, int, int, int)}: {@code box-3x2x1}, {@code polycube-50-seed1}. */
+    public static String name(Shape shape, int around, int across, int subdivisions, Grid grid) {
         return switch (shape) {
             case torus -> String.format(Locale.ROOT, "torus-%dx%d", around, across);
             case icosphere -> "icosphere-" + subdivisions;
+            case box -> String.format(Locale.ROOT, "box-%dx%dx%d", grid.size()[0], grid.size()[1], grid.size()[2]);
+            case polycube -> String.format(Locale.ROOT, "polycube-%d-seed%d", grid.cubes(), grid.seed());
             default -> shape.name();
         };
     }

@@ -19,10 +19,16 @@ public final class GenerateJob {
      * @param around the torus's segments around the ring
      * @param across the torus's segments around the tube
      * @param subdivisions the times each of the icosphere's triangles is cut in four
+     * @param grid a polycube's sides, cubes and seed
      * @param output the file (.off, .obj, .ply or .stl)
      * @param ascii PLY and STL as text rather than binary
      */
-    public record Request(BuiltInModels.Shape shape, int around, int across, int subdivisions, Path output, boolean ascii) {
+    public record Request(BuiltInModels.Shape shape, int around, int across, int subdivisions, BuiltInModels.Grid grid, Path output,
+            boolean ascii) {
+        /** A shape that is no polycube, or one of the defaults. */
+        public Request(BuiltInModels.Shape shape, int around, int across, int subdivisions, Path output, boolean ascii) {
+            this(shape, around, across, subdivisions, BuiltInModels.Grid.DEFAULT, output, ascii);
+        }
     }
 
     /** A model made: its file and counts. */
@@ -38,7 +44,7 @@ public final class GenerateJob {
      */
     public static Made run(Request request, JobWatcher watcher) throws IOException {
         watcher.stage("making the " + request.shape());
-        PolygonSoup soup = BuiltInModels.make(request.shape(), request.around(), request.across(), request.subdivisions());
+        PolygonSoup soup = BuiltInModels.make(request.shape(), request.around(), request.across(), request.subdivisions(), request.grid());
         watcher.stopIfAsked();
         watcher.stage("writing " + request.output().getFileName());
         MeshWriters.write(new CancellableMesh(soup, watcher), request.output(), request.ascii());

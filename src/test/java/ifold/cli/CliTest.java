@@ -227,7 +227,7 @@ class CliTest {
     void generateHelpNamesItsValues() {
         Run help = run("help", "generate");
         assertEquals(0, help.code(), help.err());
-        for (String option : new String[] {"--around=N", "--across=N", "--subdivisions=N"}) {
+        for (String option : new String[] {"--around=N", "--across=N", "--subdivisions=N", "--size=AxBxC", "--cubes=N", "--seed=S"}) {
             assertTrue(help.out().contains(option), option + " in " + help.out());
         }
         assertFalse(help.out().contains("<"), "no placeholder: " + help.out());
@@ -235,8 +235,10 @@ class CliTest {
 
     @Test
     void generateWritesEveryShape() throws Exception {
-        Map<String, Integer> faces = Map.of("tetrahedron", 4, "cube", 6, "octahedron", 8, "icosahedron", 20,
-                "triangle", 1, "figure3", 12, "torus", 2 * 24 * 12, "icosphere", 20 * 64);
+        Map<String, Integer> faces = new java.util.HashMap<>(Map.of("tetrahedron", 4, "cube", 6, "octahedron", 8, "icosahedron", 20,
+                "triangle", 1, "figure3", 12, "torus", 2 * 24 * 12, "icosphere", 20 * 64));
+        // The polycubes, their unit squares: a 2 x 1 x 1 box, the l and t (four cubes), the plus (five), a staircase (six).
+        faces.putAll(Map.of("box", 10, "l", 18, "t", 18, "plus", 22, "staircase", 24));
         for (Map.Entry<String, Integer> shape : faces.entrySet()) {
             Path out = dir.resolve(shape.getKey() + ".off");
             assertEquals(0, run("generate", shape.getKey(), "-o", out.toString()).code());
@@ -250,6 +252,20 @@ class CliTest {
         assertEquals(2, tooFine.code(), tooFine.err());
         assertTrue(tooFine.err().startsWith("ifold: option --subdivisions: must be 0 to 8"), tooFine.err());
         assertFalse(Files.exists(dir.resolve("fine.off")));
+        // A box of any size; a random polycube, its surface a sphere of genus 0, the same from the same seed.
+        Path box = dir.resolve("box.off");
+        assertEquals(0, run("generate", "box", "--size", "3x2x1", "-o", box.toString()).code());
+        assertEquals(22, MeshReaders.read(box).faceCount());
+        Path one = dir.resolve("one.off");
+        Path two = dir.resolve("two.off");
+        assertEquals(0, run("generate", "polycube", "--cubes", "40", "--seed", "5", "-o", one.toString()).code());
+        assertEquals(0, run("generate", "polycube", "--cubes", "40", "--seed", "5", "-o", two.toString()).code());
+        assertEquals(Files.readString(one), Files.readString(two), "the same seed, the same polycube");
+        Run info = run("info", one.toString());
+        assertTrue(info.out().contains("genus: 0") || info.out().contains("genus 0"), info.out());
+        assertOneLineError(run("generate", "box", "--size", "2x1", "-o", dir.resolve("b.off").toString()), "option --size");
+        assertOneLineError(run("generate", "box", "--size", "ax1x1", "-o", dir.resolve("b.off").toString()), "option --size");
+        assertFalse(Files.exists(dir.resolve("b.off")));
     }
 
     static Stream<String> invalid() {
