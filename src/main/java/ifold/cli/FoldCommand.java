@@ -99,8 +99,9 @@ final class FoldCommand implements Callable<Integer> {
         // FOLD file is written or the layer order checked (from the same FOLD text, made in memory).
         List<FoldFile.Folded> sheets = outputs.checksLayerOrder() || outputs.prints() ? folding.sheets(maxFaces) : List.of();
         outputs.exportFold(sheets, "ifold fold " + script, figures, foldFrames ? steps(folding) : null);
-        outputs.exportPrint(sheets, script.getFileName().toString(), PrintJob.SCRIPT);
-        diagrams.write(outputs, script.getFileName().toString(), PrintJob.SCRIPT, folding::play);
+        String method = folding.fromFoldFile() ? PrintJob.FOLD : PrintJob.SCRIPT;
+        outputs.exportPrint(sheets, script.getFileName().toString(), method);
+        diagrams.write(outputs, script.getFileName().toString(), method, folding::play);
         outputs.write(List.of(folded), result.sheet().thickness(), "iFold fold script " + script + ": " + folding.folds() + ", thickness "
                 + result.sheet().thickness(), figures);
         int creases = ((Number) figures.get("creases")).intValue();

@@ -164,6 +164,13 @@ public final class FoldFile {
                 uv[2 * v] = sheet.u(v);
                 uv[2 * v + 1] = sheet.v(v);
             }
+            // A sheet of another tool's crease pattern lies where its file puts it: drawn from its
+            // corner, as a strip is from (0, 0).
+            double[] box = ifold.sheet.Polygons2.bounds(uv);
+            for (int i = 0; i < uv.length; i += 2) {
+                uv[i] -= box[0];
+                uv[i + 1] -= box[1];
+            }
             List<int[]> edges = new ArrayList<>();
             StringBuilder assignments = new StringBuilder();
             List<Integer> steps = new ArrayList<>();

@@ -59,6 +59,10 @@ record FoldInput(double[][] vertices, boolean flat, int[][] edges, char[] assign
                             + ", not one of B, M, V, F, U, C or J");
                 }
                 assignments[e] = Character.toUpperCase(((String) given.get(e)).charAt(0));
+                if (assignments[e] == 'C') {
+                    throw new CreasePattern.Refused("edge " + e + " is C, a cut: iFold folds paper in one piece, its outline B; a cut"
+                            + " is two border edges, one a side, with vertices of their own");
+                }
             }
         }
         double[] angles = new double[edges.length];
@@ -82,7 +86,14 @@ record FoldInput(double[][] vertices, boolean flat, int[][] edges, char[] assign
         double[][] folded = null;
         List<int[]> foldedOrders = List.of();
         int[] levels = null;
-        double thickness = fold.get("frame_ifold:thickness") instanceof Number t && t.doubleValue() >= 0 ? t.doubleValue() : Double.NaN;
+        double thickness = Double.NaN;
+        if (fold.containsKey("frame_ifold:thickness")) {
+            if (!(fold.get("frame_ifold:thickness") instanceof Number t) || !(t.doubleValue() >= 0) || !Double.isFinite(t.doubleValue())) {
+                throw new CreasePattern.Refused("frame_ifold:thickness gives " + text(fold.get("frame_ifold:thickness"))
+                        + ", not a thickness of zero or more");
+            }
+            thickness = t.doubleValue();
+        }
         if (fold.get("file_frames") instanceof List<?> frames) {
             for (Object item : frames) {
                 if (item instanceof Map<?, ?> frame && frame.get("frame_classes") instanceof List<?> classes && classes.contains("foldedForm")

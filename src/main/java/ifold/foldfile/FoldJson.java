@@ -29,7 +29,8 @@ public final class FoldJson {
 
     /**
      * Whether the file is FOLD (JSON) rather than a fold script: its first character that is
-     * not white space, after a byte order mark if there is one, is '{'.
+     * not white space, after a byte order mark if there is one, begins JSON ('{', or '[' of a
+     * list, which is then refused as no FOLD object rather than read as a script).
      */
     public static boolean isFoldFile(Path file) throws IOException {
         try (InputStream in = Files.newInputStream(file)) {
@@ -37,7 +38,7 @@ public final class FoldJson {
             int start = head.length >= 3 && (head[0] & 0xFF) == BOM_1 && (head[1] & 0xFF) == BOM_2 && (head[2] & 0xFF) == BOM_3 ? 3 : 0;
             for (int i = start; i < head.length; i++) {
                 if (!Character.isWhitespace(head[i])) {
-                    return head[i] == '{';
+                    return head[i] == '{' || head[i] == '[';
                 }
             }
             return false;

@@ -96,7 +96,7 @@ public final class FoldedForm {
      * @throws CreasePattern.Refused naming the vertex, edge or faces where it cannot be folded
      */
     public static Result fold(Map<String, Object> file) throws CreasePattern.Refused {
-        FoldInput in = FoldInput.read(file);
+        FoldInput in = checked(file);
         double[][] vertices = in.vertices();
         int n = vertices.length;
         double size = diagonal(vertices);
@@ -273,6 +273,45 @@ public final class FoldedForm {
             side = Math.abs(cross) > Math.abs(side) ? cross : side;
         }
         return side > 0 ? 1 : -1;
+    }
+
+    /**
+     * Checks a FOLD file whichever way it is then folded: every key and index ({@link FoldInput}),
+     * no two edges of a crease pattern crossing or touching but at a shared vertex, and every
+     * crease a side of a face where faces are given.
+     *
+     * @throws CreasePattern.Refused naming the key, the edges or the crease
+     */
+    public static void check(Map<String, Object> file) throws CreasePattern.Refused {
+        checked(file);
+    }
+
+    private static FoldInput checked(Map<String, Object> file) throws CreasePattern.Refused {
+        FoldInput in = FoldInput.read(file);
+        if (in.flat() && !in.foldedForm()) {
+            EdgeCrossings.refuse(in.vertices(), in.edges(), in.assignments());
+        }
+        if (in.faces() != null) {
+            java.util.Set<Long> sides = new java.util.HashSet<>();
+            for (int[] face : in.faces()) {
+                for (int i = 0; i < face.length; i++) {
+                    sides.add(FacePlacement.key(face[i], face[(i + 1) % face.length]));
+                }
+            }
+            for (int e = 0; e < in.edges().length; e++) {
+                char a = in.assignments()[e];
+                if ((a == 'M' || a == 'V') && !sides.contains(FacePlacement.key(in.edges()[e][0], in.edges()[e][1]))) {
+                    throw new CreasePattern.Refused("edge " + e + " is " + a + ", but no face of faces_vertices has it as a side: the"
+                            + " faces must be cut by the creases");
+                }
+            }
+        }
+        if (!file.containsKey("edges_assignment") && !file.containsKey("edges_foldAngle") && in.folded() == null && in.flat()
+                && !in.foldedForm()) {
+            throw new CreasePattern.Refused("no edges_assignment: a crease pattern says which edges are the border (B), mountains (M),"
+                    + " valleys (V) or flat (F)");
+        }
+        return in;
     }
 
     /** Whether every face lies in the plane z = 0 (a flat folded state). */

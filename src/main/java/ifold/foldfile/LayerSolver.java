@@ -127,7 +127,10 @@ final class LayerSolver {
         return ((long) Math.min(a, b) << 32) | Math.max(a, b);
     }
 
-    private void findPairs(double tolerance) {
+    /** The most pairs of overlapping faces ordered: a pleat of 2,000 layers has two million, at about half a kilobyte each. */
+    static final int MOST_PAIRS = 2_000_000;
+
+    private void findPairs(double tolerance) throws CreasePattern.Refused {
         int n = polygons.length;
         double[][] boxes = new double[n][];
         Integer[] byX = new Integer[n];
@@ -144,6 +147,11 @@ final class LayerSolver {
                         && Polygons2.overlap(polygons[f], polygons[f].length / 2, polygons[g], polygons[g].length / 2, tolerance)) {
                     variable.put(key(f, g), pairs.size());
                     pairs.add(new long[] {Math.min(f, g), Math.max(f, g)});
+                    if (pairs.size() > MOST_PAIRS) {
+                        throw new CreasePattern.Refused(String.format(Locale.ROOT, "folded flat, its faces overlap in more than %,d pairs,"
+                                + " more than iFold orders at once (a pleat of 2,000 layers has as many): fold it line by line, as a"
+                                + " rectangle creased from border to border", MOST_PAIRS));
+                    }
                 }
             }
         }
@@ -763,13 +771,13 @@ final class LayerSolver {
         int[] f = c.faces();
         return switch (c.kind()) {
             case FIXED -> String.format(Locale.ROOT, "faces %d and %d cannot lie as their crease says", f[0], f[1]);
-            case SAME_SIDE -> String.format(Locale.ROOT, "no layer order: the crease between faces %d and %d runs through face %d, which"
-                    + " must then lie above both or below both, and cannot", f[1], f[2], f[0]);
-            case NESTED -> String.format(Locale.ROOT, "no layer order: the creases between faces %d and %d and between faces %d and %d lie"
-                    + " on one line and would have to interleave", f[0], f[1], f[2], f[3]);
-            case SAME_ORDER -> String.format(Locale.ROOT, "no layer order: faces %d and %d run on across a flat edge as faces %d and %d"
-                    + " do, and would have to change their order there", f[0], f[2], f[1], f[3]);
-            default -> "no layer order without a cycle: faces " + java.util.Arrays.toString(f) + " would have to lie in one (a pinwheel's"
+            case SAME_SIDE -> String.format(Locale.ROOT, "no layer order found: the crease between faces %d and %d runs through face %d,"
+                    + " which must then lie above both or below both, and the order found so far cannot", f[1], f[2], f[0]);
+            case NESTED -> String.format(Locale.ROOT, "no layer order found: the creases between faces %d and %d and between faces %d"
+                    + " and %d lie on one line and the order found so far interleaves them", f[0], f[1], f[2], f[3]);
+            case SAME_ORDER -> String.format(Locale.ROOT, "no layer order found: faces %d and %d run on across a flat edge as faces %d"
+                    + " and %d do, and the order found so far changes there", f[0], f[2], f[1], f[3]);
+            default -> "no layer order without a cycle found: faces " + java.util.Arrays.toString(f) + " lay in one in every order tried (a pinwheel's"
                     + " layers do), which iFold's stacks cannot hold";
         };
     }

@@ -35,6 +35,7 @@ public final class PrintJob {
     public static final String WRAP = "the zig-zag wrap (Demaine, Demaine and Mitchell)";
     /** See {@link #ZIGZAG}. */
     public static final String SCRIPT = "a fold script's sheet";
+    public static final String FOLD = "a FOLD file's crease pattern";
 
     /**
      * What to print.

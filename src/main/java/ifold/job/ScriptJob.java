@@ -87,6 +87,8 @@ public final class ScriptJob {
         try {
             if (FoldJson.isFoldFile(file)) {
                 fold = FoldJson.read(file);
+                // Checked whole whichever way it folds: its keys, indices and edges.
+                FoldedForm.check(fold);
                 try {
                     pattern = CreasePattern.of(fold);
                 } catch (CreasePattern.Refused e) {
@@ -108,6 +110,15 @@ public final class ScriptJob {
                 }
                 parsed = folding.script(); // some lines may have been folded the other way
                 result = folding.result();
+                if (!layersHold(parsed, result, maxFaces)) {
+                    // Folded line by line its layers cross (a flap through the paper): all at once,
+                    // its order found from the pattern, where that finds one.
+                    try {
+                        return allAtOnce(file, fold, stage);
+                    } catch (Refused notAtOnce) {
+                        // keep the line-by-line folding: its report says what is wrong
+                    }
+                }
             } else {
                 result = parsed.play(nanosPerFold, maxFaces);
             }
@@ -122,6 +133,22 @@ public final class ScriptJob {
         }
         PaperInSpace folded = PaperInSpace.of(result.sheet(), result.frames());
         return new Outcome(parsed, result, folded, Reports.script(result, folded), nanosPerFold, pattern != null, null);
+    }
+
+    /** The most faces whose layer order is checked after a line-by-line folding, to fall back on folding at once. */
+    static final int MOST_CHECKED_FACES = 20_000;
+
+    /** Whether a FOLD crease pattern folded line by line has a valid layer order, as the independent check reads its FOLD text. */
+    private static boolean layersHold(FoldScript script, ScriptFolding.Result result, int maxFaces) {
+        if (result.sheet().faceCount() > MOST_CHECKED_FACES) {
+            return true;
+        }
+        try {
+            String text = FoldFile.text("check", List.of(FoldFile.Folded.ofScript(script, result, maxFaces)));
+            return ifold.check.LayerOrder.check(text).valid();
+        } catch (java.io.IOException e) {
+            return true; // made in memory: cannot fail to be read
+        }
     }
 
     /** A FOLD file folded with every crease at once ({@link FoldedForm}). */

@@ -89,6 +89,8 @@ public final class CreasePatternPages {
     /** Each strip's edges sorted by their smallest u, and the longest any spans along u. */
     private final List<Integer[]> byU = new ArrayList<>();
     private final double[] longestSpan;
+    /** For each strip, whether its border is the rectangle it spans (else its border edges are cut, not the rectangle). */
+    private final boolean[] rectangular;
 
     private CreasePatternPages(String title, String method, List<SheetCreases> strips, double scale, double paperWidth) {
         this.title = title;
@@ -97,6 +99,31 @@ public final class CreasePatternPages {
         this.scale = scale;
         this.paperWidth = paperWidth;
         this.longestSpan = new double[strips.size()];
+        this.rectangular = new boolean[strips.size()];
+        for (int k = 0; k < strips.size(); k++) {
+            rectangular[k] = onItsRectangle(strips.get(k));
+        }
+    }
+
+    /** Whether every border edge of the sheet runs along the rectangle it spans: a strip, a fold script's sheet. */
+    private static boolean onItsRectangle(SheetCreases sheet) {
+        double tolerance = 1e-9 * Math.max(sheet.length(), sheet.width());
+        double[] uv = sheet.uv();
+        for (int e = 0; e < sheet.edges().length; e++) {
+            if (sheet.assignments()[e] != 'B') {
+                continue;
+            }
+            double ua = uv[2 * sheet.edges()[e][0]];
+            double va = uv[2 * sheet.edges()[e][0] + 1];
+            double ub = uv[2 * sheet.edges()[e][1]];
+            double vb = uv[2 * sheet.edges()[e][1] + 1];
+            boolean alongU = Math.abs(va - vb) <= tolerance && (Math.abs(va) <= tolerance || Math.abs(va - sheet.width()) <= tolerance);
+            boolean alongV = Math.abs(ua - ub) <= tolerance && (Math.abs(ua) <= tolerance || Math.abs(ua - sheet.length()) <= tolerance);
+            if (!alongU && !alongV) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /**
@@ -388,7 +415,7 @@ public final class CreasePatternPages {
                 break;
             }
             char kind = strip.assignments()[e];
-            if (kind == 'B') {
+            if (kind == 'B' && rectangular[piece.strip()]) {
                 continue; // the outline is drawn whole below
             }
             double[] clipped = clip(ua, va, ub, vb, piece.u0(), piece.u1());
@@ -399,7 +426,7 @@ public final class CreasePatternPages {
             double ay = bottom - clipped[1] * scale;
             double bx = x0 + (clipped[2] - piece.u0()) * scale;
             double by = bottom - clipped[3] * scale;
-            Ink ink = kind == 'V' ? Ink.VALLEY : kind == 'M' ? Ink.MOUNTAIN : Ink.FLAT;
+            Ink ink = kind == 'V' ? Ink.VALLEY : kind == 'M' ? Ink.MOUNTAIN : kind == 'B' ? Ink.CUT : Ink.FLAT;
             canvas.line(ax, ay, bx, by, ink);
             int step = strip.steps()[e];
             if (step > 0) {
@@ -420,6 +447,10 @@ public final class CreasePatternPages {
             }
         }
         // The outline: cut all round; where a tab follows, round the tab instead, its base a fold.
+        // A sheet of another outline (an L, a box's net) has its border edges cut instead.
+        if (!rectangular[piece.strip()] && piece.markOut() == null && piece.markIn() == null) {
+            return;
+        }
         if (piece.markOut() == null) {
             canvas.outline(new double[] {x0, top, x1, top, x1, bottom, x0, bottom}, Ink.CUT);
         } else {

@@ -250,14 +250,46 @@ class FoldAnyPatternTest {
             assertEquals(0, run.code(), c[0] + ": " + run.err());
             assertTrue(run.out().contains(c[1]) && run.out().contains(c[2]), run.out());
         }
+        // A rectangle creased border to border whose lines, folded one at a time, put a flap
+        // through the paper: folded at once instead, its order found and valid.
+        CliTest.Run grid = CliTest.run("fold", "src/test/resources/flat-folder-examples/003_brown_3x3_A2.fold", "--no-view", "--export-fold",
+                dir.resolve("grid-out.fold").toString());
+        assertEquals(0, grid.code(), grid.err());
+        assertTrue(grid.out().contains("8 creases folded at once (folded flat, its layer order found)")
+                && grid.out().contains("layer order: valid"), grid.out());
         CliTest.Run pinwheel = CliTest.run("fold", "src/test/resources/flat-folder-examples/006_ku_Thirds_Pinwheel.fold", "--no-view");
         CliTest.assertOneLineError(pinwheel, "no layer order without a cycle", "which iFold's stacks cannot hold");
+    }
+
+    /** A box's net is printed with its own outline cut, not the rectangle it spans, and named as a FOLD file's. */
+    @Test
+    void aSheetOfAnotherOutlineIsPrintedWithItsOwnOutline() throws Exception {
+        Pattern net = new Pattern();
+        // An L of three unit squares, one crease between each two.
+        net.edge(0, 0, 1, 0, "B", null).edge(1, 0, 1, 1, "V", null).edge(1, 1, 0, 1, "V", null).edge(0, 1, 0, 0, "B", null);
+        net.edge(1, 0, 2, 0, "B", null).edge(2, 0, 2, 1, "B", null).edge(2, 1, 1, 1, "B", null);
+        net.edge(0, 1, 0, 2, "B", null).edge(0, 2, 1, 2, "B", null).edge(1, 2, 1, 1, "B", null);
+        Path svg = dir.resolve("l.svg");
+        CliTest.Run run = fold("l-sheet", net.json(), "--export-svg", svg.toString());
+        assertEquals(0, run.code(), run.err());
+        String page = Files.readString(svg);
+        assertTrue(page.contains("a FOLD file's crease pattern"), page);
+        assertTrue(!page.contains("<polygon class=\"cut\""), "no rectangle round the L");
+        assertEquals(8 + 1, page.split("<line class=\"cut\"", -1).length - 1, "its eight border edges cut, and the legend's sample");
     }
 
     /** Hostile files: indices out of range, the wrong kinds of value, refused in one line. */
     @Test
     void hostileFilesAreRefusedInOneLine() throws Exception {
         String[][] cases = {
+            {"crossing", Pattern.square().edge(0, 0, 2, 2, "V", null).edge(2, 0, 0, 2, "V", null).json(),
+                "edges 8 and 9 cross with no vertex where they meet"},
+            {"cut", Pattern.square().edge(1, 0, 1, 2, "C", null).json(), "edge 8 is C, a cut"},
+            {"a-list", "[{\"vertices_coords\": [[0, 0]]}]", "not a FOLD file"},
+            {"bad-face-on-a-rectangle", Pattern.square().edge(1, 0, 1, 2, "V", null).json().replace("}\n",
+                ", \"faces_vertices\": [[0, 1, 9]]}\n"), "face 0: faces_vertices names 9"},
+            {"thick", Pattern.square().edge(1, 0, 1, 2, "V", null).json().replace("}\n", ", \"frame_ifold:thickness\": -1}\n"),
+                "frame_ifold:thickness gives -1"},
             {"out-of-range", "{\"vertices_coords\": [[0,0],[1,0],[1,1]], \"edges_vertices\": [[0,1],[1,2],[2,99]],"
                 + " \"edges_assignment\": [\"B\",\"B\",\"B\"], \"faces_vertices\": [[0,1,2]]}", "edge 2: edges_vertices names 99, not one of the 3 vertices"},
             {"face-out-of-range", "{\"vertices_coords\": [[0,0],[1,0],[1,1]], \"edges_vertices\": [[0,1],[1,2],[2,0]],"
