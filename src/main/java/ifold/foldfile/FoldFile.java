@@ -422,18 +422,11 @@ public final class FoldFile {
             stringArray(json, "frame_attributes", "3D");
             json.writeNumberField("frame_parent", 0);
             json.writeBooleanField("frame_inherit", true);
-            json.writeFieldName("vertices_coords");
-            json.writeStartArray();
-            for (int k = 0; k < sheets.size(); k++) {
-                for (double[] p : foldedVertices(sheets.get(k))) {
-                    json.writeStartArray();
-                    json.writeNumber(p[0]);
-                    json.writeNumber(p[1]);
-                    json.writeNumber(p[2]);
-                    json.writeEndArray();
-                }
+            List<double[]> placed = new ArrayList<>();
+            for (Folded folded : sheets) {
+                placed.addAll(foldedVertices(folded));
             }
-            json.writeEndArray();
+            points(json, "vertices_coords", placed);
             json.writeFieldName("faceOrders");
             json.writeStartArray();
             for (int[] order : orders) {
@@ -458,6 +451,20 @@ public final class FoldFile {
             }
             json.writeEndArray();
             json.writeEndObject();
+        }
+
+        /** Writes {@code field}: the points, each a list of x, y, z. */
+        static void points(JsonGenerator json, String field, List<double[]> points) throws IOException {
+            json.writeFieldName(field);
+            json.writeStartArray();
+            for (double[] p : points) {
+                json.writeStartArray();
+                json.writeNumber(p[0]);
+                json.writeNumber(p[1]);
+                json.writeNumber(p[2]);
+                json.writeEndArray();
+            }
+            json.writeEndArray();
         }
 
         static void stringArray(JsonGenerator json, String field, String value) throws IOException {

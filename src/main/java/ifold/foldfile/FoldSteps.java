@@ -72,16 +72,7 @@ public final class FoldSteps {
             FoldFile.Pattern.stringArray(json, "frame_attributes", "3D");
             json.writeNumberField("frame_parent", 0);
             json.writeBooleanField("frame_inherit", false);
-            json.writeFieldName("vertices_coords");
-            json.writeStartArray();
-            for (double[] p : frame.vertices()) {
-                json.writeStartArray();
-                json.writeNumber(p[0]);
-                json.writeNumber(p[1]);
-                json.writeNumber(p[2]);
-                json.writeEndArray();
-            }
-            json.writeEndArray();
+            FoldFile.Pattern.points(json, "vertices_coords", frame.vertices());
             writeLists(json, "edges_vertices", frame.edges());
             json.writeFieldName("edges_assignment");
             json.writeStartArray();
