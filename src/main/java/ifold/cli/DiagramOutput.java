@@ -14,8 +14,8 @@ import picocli.CommandLine.Option;
 final class DiagramOutput {
     @Option(names = "--export-diagrams", paramLabel = "FILE.pdf", description = "draw step diagrams as PDF: a title page with"
             + " the folded paper and the steps listed, then a panel a fold (a wrap's: a triangle of its path), six to a"
-            + " page (--page letter, a4-landscape, ...), each showing the paper as the fold begins, its crease and an arrow for its motion in origami's notation,"
-            + " numbered and captioned as the movie captions it")
+            + " page (--page letter, a4-landscape, ...), each showing the paper as the fold begins, its crease and an arrow"
+            + " for its motion in origami's notation, numbered and captioned as the movie captions it")
     Path file;
 
     /** Checks the file, and that no other output of {@code outputs} names it (the second would overwrite the first). */

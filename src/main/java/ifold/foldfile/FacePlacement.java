@@ -210,19 +210,27 @@ final class FacePlacement {
      * its sense chosen so that a positive angle lifts the face to the paper's top side (+z).
      */
     static Rigid hinge(double[][] uv, int[] face, int a, int b, double angle) {
-        double[] pa = {uv[a][0], uv[a][1], 0};
         double dx = uv[b][0] - uv[a][0];
         double dy = uv[b][1] - uv[a][1];
         double length = Math.hypot(dx, dy);
-        double[] axis = {dx / length, dy / length, 0};
-        // The face's side of the edge: its corner farthest from the line.
+        return Rigid.turnAbout(new double[] {uv[a][0], uv[a][1], 0}, new double[] {dx / length, dy / length, 0},
+                sense(uv, face, a, b) * angle);
+    }
+
+    /**
+     * The sense of a hinge's turn about paper edge a → b that lifts its face to the paper's top
+     * side: +1 where the face lies left of the edge (its corner farthest from the line), else -1.
+     * Turning by +angle about the axis lifts points on its left to +z.
+     */
+    static double sense(double[][] uv, int[] face, int a, int b) {
+        double dx = uv[b][0] - uv[a][0];
+        double dy = uv[b][1] - uv[a][1];
         double side = 0;
         for (int v : face) {
-            double cross = axis[0] * (uv[v][1] - uv[a][1]) - axis[1] * (uv[v][0] - uv[a][0]);
+            double cross = dx * (uv[v][1] - uv[a][1]) - dy * (uv[v][0] - uv[a][0]);
             side = Math.abs(cross) > Math.abs(side) ? cross : side;
         }
-        // Turning by +angle about the axis lifts points on its left (cross > 0) to +z.
-        return Rigid.turnAbout(pa, axis, side > 0 ? angle : -angle);
+        return side > 0 ? 1 : -1;
     }
 
     /**
@@ -290,9 +298,7 @@ final class FacePlacement {
             double[] axis = motion[f].turn(axisPaper);
             double angle = Math.atan2(dot(cross(nf, ng), axis), dot(nf, ng));
             // The sense about the edge as the hinge turns the face (its side of the edge).
-            Rigid probe = hinge(uv, faces[g], a, b, 1e-3);
-            double[] lifted = probe.turn(up);
-            angle *= Math.signum(dot(cross(up, lifted), axisPaper));
+            angle *= sense(uv, faces[g], a, b);
             if (Math.PI - Math.abs(angle) < 1e-9) {
                 angle = (edge >= 0 && flatSign[edge] < 0) ? -Math.PI : Math.PI;
             }

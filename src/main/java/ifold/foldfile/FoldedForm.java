@@ -258,21 +258,9 @@ public final class FoldedForm {
         motionHinges.add(new Hinge(number[0], -1, 0, 0, 1, 0, 0));
         for (FacePlacement.Hinge h : hinges) {
             motionHinges.add(new Hinge(number[h.face()], number[h.parent()], uv[h.a()][0], uv[h.a()][1], uv[h.b()][0] - uv[h.a()][0],
-                    uv[h.b()][1] - uv[h.a()][1], h.angle() * hingeSense(uv, faces[h.face()], h.a(), h.b())));
+                    uv[h.b()][1] - uv[h.a()][1], h.angle() * FacePlacement.sense(uv, faces[h.face()], h.a(), h.b())));
         }
         return new Result(sheet, frames.toArray(new HostFrame[0]), motionHinges, kind, creases.size());
-    }
-
-    /** +1 where a positive turn about a → b lifts the face to +z (it lies left of the line), else -1: as {@link FacePlacement#hinge} turns it. */
-    private static double hingeSense(double[][] uv, int[] face, int a, int b) {
-        double side = 0;
-        double dx = uv[b][0] - uv[a][0];
-        double dy = uv[b][1] - uv[a][1];
-        for (int v : face) {
-            double cross = dx * (uv[v][1] - uv[a][1]) - dy * (uv[v][0] - uv[a][0]);
-            side = Math.abs(cross) > Math.abs(side) ? cross : side;
-        }
-        return side > 0 ? 1 : -1;
     }
 
     /**
@@ -326,26 +314,22 @@ public final class FoldedForm {
 
     /** The diagonal of the box the folded faces take in space. */
     private static double foldedSize(double[][] uv, int[][] faces, FacePlacement.Rigid[] motion) {
-        double[] min = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
-        double[] max = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        List<double[]> placed = new ArrayList<>();
         for (int f = 0; f < faces.length; f++) {
             for (int v : faces[f]) {
-                double[] p = motion[f].apply(uv[v][0], uv[v][1], 0);
-                for (int k = 0; k < 3; k++) {
-                    min[k] = Math.min(min[k], p[k]);
-                    max[k] = Math.max(max[k], p[k]);
-                }
+                placed.add(motion[f].apply(uv[v][0], uv[v][1], 0));
             }
         }
-        return Math.hypot(max[0] - min[0], Math.hypot(max[1] - min[1], max[2] - min[2]));
+        return diagonal(placed.toArray(new double[0][]));
     }
 
-    private static double diagonal(double[][] vertices) {
+    /** The diagonal of the box the points take (2D points lie at z = 0). */
+    private static double diagonal(double[][] points) {
         double[] min = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
         double[] max = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
-        for (double[] v : vertices) {
+        for (double[] p : points) {
             for (int k = 0; k < 3; k++) {
-                double c = k < v.length ? v[k] : 0;
+                double c = k < p.length ? p[k] : 0;
                 min[k] = Math.min(min[k], c);
                 max[k] = Math.max(max[k], c);
             }
@@ -488,14 +472,6 @@ public final class FoldedForm {
         }
         // Overlaps as the layer-order check counts them (a billionth of the folded paper); lines
         // as the file's digits allow.
-        double[] box = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
-        for (double[] polygon : polygons) {
-            double[] b = ifold.sheet.Polygons2.bounds(polygon);
-            box[0] = Math.min(box[0], b[0]);
-            box[1] = Math.min(box[1], b[1]);
-            box[2] = Math.max(box[2], b[2]);
-            box[3] = Math.max(box[3], b[3]);
-        }
-        return LayerSolver.order(polygons, faceUp, creases, Tolerance.ON_PLANE * Math.hypot(box[2] - box[0], box[3] - box[1]), tolerance);
+        return LayerSolver.order(polygons, faceUp, creases, Tolerance.ON_PLANE * foldedSize(uv, faces, motion), tolerance);
     }
 }

@@ -57,6 +57,12 @@ final class LayerSolver {
     private final List<Condition> conditions = new ArrayList<>();
     private List<List<Integer>> watching;
     private long choices;
+    /** What the last broken condition says, for the refusal. */
+    private String conflict;
+    /** Each face's place in an order of the pairs decided so far (Kahn's; faces in a cycle last, in their numbers' order). */
+    private int[] rank;
+    /** Whether the last search stopped at {@link #MOST_CHOICES} rather than finding no order. */
+    private boolean gaveUp;
 
     private LayerSolver(double[][] polygons) {
         this.polygons = polygons;
@@ -120,8 +126,6 @@ final class LayerSolver {
 
     /** How many times a cycle of three may be found and forbidden before the search gives up. */
     static final int MOST_ROUNDS = 2_000;
-
-    private String conflict;
 
     private static long key(int a, int b) {
         return ((long) Math.min(a, b) << 32) | Math.max(a, b);
@@ -513,9 +517,6 @@ final class LayerSolver {
         return search();
     }
 
-    /** Each face's place in an order of the pairs decided so far (Kahn's; faces in a cycle last, in their numbers' order). */
-    private int[] rank;
-
     private int[] ranks() {
         int n = polygons.length;
         int[] order = kahn(n, decidedOver());
@@ -662,9 +663,6 @@ final class LayerSolver {
         }
         return c.stream().mapToInt(Integer::intValue).toArray();
     }
-
-    /** Whether the last search stopped at {@link #MOST_CHOICES} rather than finding no order. */
-    private boolean gaveUp;
 
     /**
      * Decides the open pairs, each group that conditions join on its own (a choice in one

@@ -1,5 +1,6 @@
 package ifold.mesh;
 
+import ifold.geom.UnionFind;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.LinkedHashSet;
@@ -122,18 +123,15 @@ public final class Polycubes {
                 facesAt.computeIfAbsent(a, v -> new ArrayList<>()).add(f);
             }
         }
-        int[] piece = new int[faces];
-        for (int f = 0; f < faces; f++) {
-            piece[f] = f;
-        }
+        int[] piece = UnionFind.pieces(faces);
         for (int[] use : edges.values()) {
             if (use[0] != 2) {
                 return false; // an open edge
             }
-            union(piece, use[1], use[2]);
+            UnionFind.union(piece, use[1], use[2]);
         }
         for (int f = 1; f < faces; f++) {
-            if (find(piece, f) != find(piece, 0)) {
+            if (UnionFind.find(piece, f) != UnionFind.find(piece, 0)) {
                 return false;
             }
         }
@@ -141,10 +139,9 @@ public final class Polycubes {
         for (Map.Entry<Integer, List<Integer>> corner : facesAt.entrySet()) {
             List<Integer> around = corner.getValue();
             Map<Integer, Integer> local = new HashMap<>();
-            int[] fan = new int[around.size()];
+            int[] fan = UnionFind.pieces(around.size());
             for (int i = 0; i < around.size(); i++) {
                 local.put(around.get(i), i);
-                fan[i] = i;
             }
             int v = corner.getKey();
             for (int f : around) {
@@ -154,12 +151,12 @@ public final class Polycubes {
                     int b = loop[(i + 1) % loop.length];
                     if (a == v || b == v) {
                         int[] use = edges.get(((long) Math.min(a, b) << 32) | Math.max(a, b));
-                        union(fan, local.get(use[1]), local.get(use[2]));
+                        UnionFind.union(fan, local.get(use[1]), local.get(use[2]));
                     }
                 }
             }
             for (int i = 1; i < fan.length; i++) {
-                if (find(fan, i) != find(fan, 0)) {
+                if (UnionFind.find(fan, i) != UnionFind.find(fan, 0)) {
                     return false;
                 }
             }
@@ -173,18 +170,6 @@ public final class Polycubes {
             loop[k] = soup.faceVertex(f, k);
         }
         return loop;
-    }
-
-    private static int find(int[] parent, int i) {
-        while (parent[i] != i) {
-            parent[i] = parent[parent[i]];
-            i = parent[i];
-        }
-        return i;
-    }
-
-    private static void union(int[] parent, int i, int j) {
-        parent[find(parent, i)] = find(parent, j);
     }
 
     /** The surface of the cubes: a unit square for each face of a cube against an empty cell, counter-clockwise seen from outside. */

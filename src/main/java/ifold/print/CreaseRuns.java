@@ -1,5 +1,6 @@
 package ifold.print;
 
+import ifold.geom.UnionFind;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -20,14 +21,11 @@ final class CreaseRuns {
     /** The longest edge of each run of {@code edges} (x1, y1, x2, y2 each). */
     static List<double[]> longestOfEach(List<double[]> edges) {
         int n = edges.size();
-        int[] run = new int[n];
-        for (int i = 0; i < n; i++) {
-            run[i] = i;
-        }
+        int[] run = UnionFind.pieces(n);
         for (int i = 0; i < n; i++) {
             for (int j = i + 1; j < n; j++) {
                 if (meet(edges.get(i), edges.get(j))) {
-                    union(run, i, j);
+                    UnionFind.union(run, i, j);
                 }
             }
         }
@@ -35,7 +33,7 @@ final class CreaseRuns {
         int[] best = new int[n];
         java.util.Arrays.fill(best, -1);
         for (int i = 0; i < n; i++) {
-            int r = find(run, i);
+            int r = UnionFind.find(run, i);
             if (best[r] < 0 || length(edges.get(i)) > length(edges.get(best[r]))) {
                 best[r] = i;
             }
@@ -64,17 +62,5 @@ final class CreaseRuns {
 
     private static double length(double[] e) {
         return Math.hypot(e[2] - e[0], e[3] - e[1]);
-    }
-
-    private static int find(int[] run, int i) {
-        while (run[i] != i) {
-            run[i] = run[run[i]];
-            i = run[i];
-        }
-        return i;
-    }
-
-    private static void union(int[] run, int i, int j) {
-        run[find(run, i)] = find(run, j);
     }
 }

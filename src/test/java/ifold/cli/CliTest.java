@@ -265,6 +265,11 @@ class CliTest {
         assertTrue(info.out().contains("genus: 0") || info.out().contains("genus 0"), info.out());
         assertOneLineError(run("generate", "box", "--size", "2x1", "-o", dir.resolve("b.off").toString()), "option --size");
         assertOneLineError(run("generate", "box", "--size", "ax1x1", "-o", dir.resolve("b.off").toString()), "option --size");
+        assertOneLineError(run("generate", "polycube", "--cubes", "0", "-o", dir.resolve("b.off").toString()),
+                "option --cubes: must be 1 to 5000, got 0");
+        Run seed = run("generate", "polycube", "--seed", "abc", "-o", dir.resolve("b.off").toString());
+        assertEquals(2, seed.code(), seed.err());
+        assertTrue(seed.err().startsWith("ifold: option --seed: 'abc' is not a whole number"), seed.err());
         assertFalse(Files.exists(dir.resolve("b.off")));
     }
 
