@@ -46,7 +46,11 @@ import picocli.CommandLine.Model.CommandSpec;
             + "angle under 20 degrees are triangulated again, and followed where that makes less paper. An open surface is covered on the side "
             + "its faces face. The animation plays the folds with the camera following the strip, then turns once around "
             + "the model; it takes two minutes unless --seconds says otherwise. In a window where there is a display; as "
-            + "one movie, wrap.mp4, where there is none (--frames DIR for PNGs). The OBJ holds each strip as an object strip-K."})
+            + "one movie, wrap.mp4, where there is none (--frames DIR for PNGs). The OBJ holds each strip as an object strip-K. "
+            + "With --method hinge, a grid polyhedron (every face square to the axes, every corner on a lattice of cubes: a "
+            + "polycube, a box) is wrapped by the hinge strip instead (Benbernou, Demaine, Demaine and Lubiw): a strip of squares "
+            + "as wide as the lattice's, folded along the squares' sides and diagonals, twice the surface's area, two layers "
+            + "everywhere."})
 final class WrapCommand implements Callable<Integer> {
 
     @Spec
@@ -55,8 +59,13 @@ final class WrapCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "MODEL", description = "an .off, .obj, .ply or .stl model")
     Path model;
 
+    @Option(names = "--method", paramLabel = "METHOD", defaultValue = "zigzag",
+            description = "zigzag (any polyhedron; the default) or hinge (a grid polyhedron)")
+    String method;
+
     @Option(names = "--width", paramLabel = "W",
-            description = "the strip's width (default: a third of the widest every triangle of the path takes, its smallest altitude from the corner the strip enters by)")
+            description = "the strip's width (default: a third of the widest every triangle of the path takes, its smallest altitude "
+                + "from the corner the strip enters by; for the hinge strip, the lattice's square, or that over a whole number)")
     Double width;
 
     @Option(names = "--thickness", paramLabel = "T", description = "the paper's thickness (default: the width / " + Wrap.WIDTHS_A_THICKNESS + ")")
@@ -77,6 +86,12 @@ final class WrapCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
+        Wrap.Method how = switch (method) {
+            case "zigzag" -> Wrap.Method.ZIGZAG;
+            case "hinge" -> Wrap.Method.HINGE;
+            default -> throw new CommandLine.ParameterException(spec.commandLine(),
+                    "Invalid value for option '--method': '" + method + "' (zigzag or hinge)");
+        };
         Wrap.Options options;
         try { // checked before the model is read: what can be checked without it
             options = new Wrap.Options(Defaults.orDefault(width, "width"), Defaults.orDefault(thickness, "thickness"), null, maxFaces);
@@ -86,14 +101,14 @@ final class WrapCommand implements Callable<Integer> {
         outputs.check("wrap", spec.commandLine().getErr(), true);
         diagrams.check(outputs);
         try {
-            return wrap(options);
+            return wrap(options, how);
         } catch (UserError | CommandLine.ParameterException e) {
             outputs.discardWritten(); // the frames folder check() made, or files written before the failure
             throw e;
         }
     }
 
-    private int wrap(Wrap.Options options) {
+    private int wrap(Wrap.Options options, Wrap.Method how) {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         Path exportObj = outputs.exportObj;
@@ -101,7 +116,7 @@ final class WrapCommand implements Callable<Integer> {
         WrapJob.Outcome wrapped;
         ProgressBar.WrapBar bar = ProgressBar.wrapping(err);
         try {
-            wrapped = WrapJob.run(new WrapJob.Request(model, new MeshBuilder.Options(strict, true), options), new WrapJob.Watcher() {
+            wrapped = WrapJob.run(new WrapJob.Request(model, new MeshBuilder.Options(strict, true), options, how), new WrapJob.Watcher() {
                 @Override
                 public void wrapped(int done, int total) {
                     bar.wrapped(done, total);
@@ -199,7 +214,18 @@ final class WrapCommand implements Callable<Integer> {
         outputs.show(scene, animation, model.getFileName() + ": " + result.strips().size() + (result.strips().size() == 1 ? " strip" : " strips"), 120, true, spec, 0);
     }
 
-    static String summary(Path model, HalfedgeMesh mesh, WrapPath path, Wrap.Result result, WrapAnalysis analysis) {
+    /** The hinge strip's line: squares and passes, the strip, its folds by kind, layers, efficiency, coverage. */
+    static String hingeSummary(Path model, HalfedgeMesh mesh, WrapPath path, Wrap.Result result, WrapAnalysis analysis) {
+        return String.format(Locale.ROOT, "%s: %d %s -> %d squares of side %.4g, %d passes (%d turning), %s, "
+                + "%d diagonal turns, %d edge crossings, %d layers at most (a stack of %d), paper efficiency %.3f, coverage %.3f, "
+                + "isometry error %.1e", model, mesh.faceCount(), mesh.faceCount() == 1 ? "triangle" : "triangles",
+                path.squares().count(), path.squares().spacing(), path.tour().passes(), path.tour().turnCount(), paper(result),
+                result.count(Wrap.Kind.DIAGONAL_TURN), result.count(Wrap.Kind.EDGE_CROSSING), analysis.maxLayers(),
+                analysis.stackLevels(), analysis.surfaceArea() / analysis.paperArea(), analysis.coverage(), analysis.isometryError());
+    }
+
+    /** The strips' sizes: one as its size, several as their width and lengths, not as one strip as long as all. */
+    private static String paper(Wrap.Result result) {
         double length = 0;
         double longest = 0;
         for (Wrap.Strip strip : result.strips()) {
@@ -207,11 +233,17 @@ final class WrapCommand implements Callable<Integer> {
             longest = Math.max(longest, strip.sheet().length());
         }
         int strips = result.strips().size();
-        // One strip reads as its size; several as their width and lengths, not as one strip as long as all.
-        String paper = strips == 1
+        return strips == 1
                 ? String.format(Locale.ROOT, "1 strip %.4g x %.4g (L/w %.1f)", length, result.width(), length / result.width())
                 : String.format(Locale.ROOT, "%d strips %.4g wide, %.4g long in all (the longest %.4g, L/w %.1f)", strips,
                         result.width(), length, longest, longest / result.width());
+    }
+
+    static String summary(Path model, HalfedgeMesh mesh, WrapPath path, Wrap.Result result, WrapAnalysis analysis) {
+        if (path.hinge()) {
+            return hingeSummary(model, mesh, path, result, analysis);
+        }
+        String paper = paper(result);
         // Faces triangulated again say so: the path's triangles then come from those.
         String prepared = !path.prepared() ? "" : String.format(Locale.ROOT, " -> %d prepared (%d of %d planar regions)",
                 path.preparation().trianglesAfter(), path.preparation().prepared(), path.preparation().regions());

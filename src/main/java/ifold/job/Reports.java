@@ -3,7 +3,6 @@ package ifold.job;
 import ifold.geom.Tolerance;
 import ifold.geom.Triangle;
 import ifold.mesh.Defect;
-import ifold.refine.HamiltonianRefinement;
 import ifold.script.ScriptFolding;
 import ifold.sheet.Sheet;
 import ifold.wrap.LayerFloor;
@@ -145,14 +144,14 @@ public final class Reports {
      */
     public static Map<String, Object> wrap(String model, int inputTriangles, Map<Defect, Integer> repairs,
             WrapPath path, Wrap.Result result, WrapAnalysis analysis) {
-        HamiltonianRefinement.Result refinement = path.refinement();
         Map<String, Object> figures = new LinkedHashMap<>();
         figures.put("model", model);
+        figures.put("method", path.hinge() ? "hinge" : "zigzag");
         figures.put("inputTriangles", inputTriangles);
-        figures.put("preparation", path.figures());
-        figures.put("refinedTriangles", refinement.mesh().faceCount());
+        figures.put(path.hinge() ? "tour" : "preparation", path.figures());
+        figures.put("refinedTriangles", path.pathTriangles());
         figures.put("hosts", result.frames().length);
-        figures.put("components", refinement.componentCount());
+        figures.put("components", path.components());
         figures.put("repairs", repairs(repairs));
         figures.put("width", result.width());
         figures.put("widestWidth", result.widest());
@@ -176,6 +175,7 @@ public final class Reports {
         folds.put("turnGadgets", result.count(Wrap.Kind.TURN_GADGET));
         folds.put("edgeCrossings", result.count(Wrap.Kind.EDGE_CROSSING));
         folds.put("tucks", result.count(Wrap.Kind.TUCK));
+        folds.put("diagonalTurns", result.count(Wrap.Kind.DIAGONAL_TURN));
         figures.put("folds", folds);
         figures.put("maxLayers", analysis.maxLayers());
         figures.put("stackLayers", analysis.stackLevels());

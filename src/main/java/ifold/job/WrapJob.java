@@ -1,9 +1,12 @@
 package ifold.job;
 
+import ifold.mesh.GridSquares;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.SelfCrossings;
 import ifold.refine.HamiltonianRefinement;
+import ifold.wrap.HingeStrip;
+import ifold.wrap.HingeTour;
 import ifold.wrap.PlacedWrap;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapAnalysis;
@@ -23,8 +26,12 @@ public final class WrapJob {
     private WrapJob() {
     }
 
-    /** What to wrap and how: the model file, how strictly it is built, the strip. */
-    public record Request(Path model, MeshBuilder.Options build, Wrap.Options options) {
+    /** What to wrap and how: the model file, how strictly it is built, the strip, the method. */
+    public record Request(Path model, MeshBuilder.Options build, Wrap.Options options, Wrap.Method method) {
+        /** The zig-zag's wrap. */
+        public Request(Path model, MeshBuilder.Options build, Wrap.Options options) {
+            this(model, build, options, Wrap.Method.ZIGZAG);
+        }
     }
 
     /**
@@ -54,6 +61,7 @@ public final class WrapJob {
      */
     public record Outcome(ModelFiles.Loaded loaded, HalfedgeMesh mesh, double[] movedBy, WrapPath path, Wrap.Result result,
             List<PaperInSpace> geometries, WrapAnalysis analysis, Map<String, Object> figures, Seconds seconds) {
+        /** The zig-zag's refinement; null for the hinge strip. */
         public HamiltonianRefinement.Result refinement() {
             return path.refinement();
         }
@@ -120,16 +128,28 @@ public final class WrapJob {
                     + Wrap.cornersText(mesh, crossing[1]) + ") cross or overlap, and paper laid on them would too; repair the model");
         }
         long loadedAt = System.nanoTime();
-        watcher.stage("preparing and refining " + mesh.faceCount() + " triangles");
-        WrapPath path = WrapPath.of(mesh);
-        String kept = path.keptNote(model.toString());
-        if (kept != null) {
-            watcher.note(kept);
+        WrapPath path;
+        long refinedAt;
+        Wrap.Result result;
+        if (request.method() == Wrap.Method.HINGE) {
+            watcher.stage("finding the squares of " + mesh.faceCount() + " triangles");
+            path = hingePath(model, mesh, request.options());
+            refinedAt = System.nanoTime();
+            watcher.stage("wrapping " + path.squares().count() + " squares");
+            result = HingeStrip.wrap(path.squares(), path.tour(), thickness(request.options(), path.squares().spacing()),
+                    request.options().maxFaces(), watcher);
+        } else {
+            watcher.stage("preparing and refining " + mesh.faceCount() + " triangles");
+            path = WrapPath.of(mesh);
+            String kept = path.keptNote(model.toString());
+            if (kept != null) {
+                watcher.note(kept);
+            }
+            stopIfAsked(watcher);
+            refinedAt = System.nanoTime();
+            watcher.stage("wrapping " + path.refinement().mesh().faceCount() + " triangles");
+            result = Wrap.wrap(path.refinement(), request.options(), watcher);
         }
-        stopIfAsked(watcher);
-        long refinedAt = System.nanoTime();
-        watcher.stage("wrapping " + path.refinement().mesh().faceCount() + " triangles");
-        Wrap.Result result = Wrap.wrap(path.refinement(), request.options(), watcher);
         long wrappedAt = System.nanoTime();
         stopIfAsked(watcher);
         watcher.stage("analysing");
@@ -147,6 +167,39 @@ public final class WrapJob {
         return new Outcome(loaded, mesh, movedBy, path, result, placed.geometries(), analysis, figures,
                 new Seconds((loadedAt - started) * 1e-9, (refinedAt - loadedAt) * 1e-9, (wrappedAt - refinedAt) * 1e-9,
                         (analysedAt - wrappedAt) * 1e-9));
+    }
+
+    /**
+     * The hinge strip's path: the model's squares, as wide as its lattice's unless a width is
+     * given (which must divide it), and their tour.
+     *
+     * @throws Refused where the model is not a closed grid polyhedron
+     */
+    private static WrapPath hingePath(Path model, HalfedgeMesh mesh, Wrap.Options options) throws Refused {
+        GridSquares squares;
+        try {
+            squares = GridSquares.of(mesh, Double.NaN);
+            if (!Double.isNaN(options.width())) {
+                double squaresAcross = squares.spacing() / options.width();
+                if (!(Math.abs(squaresAcross - Math.rint(squaresAcross)) <= 1e-9 * squaresAcross) || Math.rint(squaresAcross) < 1) {
+                    throw new ifold.geom.ParameterException("width", String.format(java.util.Locale.ROOT, "the hinge strip is as wide as the "
+                            + "model's lattice square, %s, or that over a whole number; got %s", squares.spacing(), options.width()));
+                }
+                squares = GridSquares.of(mesh, options.width());
+            }
+        } catch (GridSquares.NotGrid e) {
+            throw new Refused(e.getMessage());
+        }
+        return WrapPath.hinge(squares, HingeTour.of(squares));
+    }
+
+    /** The thickness asked for, or the default for the width; at most a quarter of the width. */
+    private static double thickness(Wrap.Options options, double width) {
+        double thickness = Double.isNaN(options.thickness()) ? Wrap.defaultThickness(width) : options.thickness();
+        if (thickness > width / 4) {
+            throw new ifold.geom.ParameterException("thickness", "must be at most a quarter of the width " + width + ", got " + thickness);
+        }
+        return thickness;
     }
 
     private static void stopIfAsked(Watcher watcher) {

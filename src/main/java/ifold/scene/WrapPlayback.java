@@ -466,6 +466,7 @@ public final class WrapPlayback implements Animation {
                     case OVERLAP -> n == 1 ? "overlap" : "overlaps";
                     case TUCK -> n == 1 ? "tuck" : "tucks";
                     case END -> "end of the strip";
+                    case DIAGONAL_TURN -> n == 1 ? "diagonal turn" : "diagonal turns";
                 };
                 text.append(separator).append(n).append(' ').append(word);
                 separator = ", ";

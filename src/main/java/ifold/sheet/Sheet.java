@@ -197,12 +197,16 @@ public final class Sheet {
         double end = Math.max(at[0], at[1]);
         double startA = u(tailA);
         double startB = u(tailB);
-        if (!(end > Math.max(startA, startB) + tolerance)) {
+        // The end may meet the last crease at one side of the strip (a hinge strip ending just
+        // after a turn along a square's diagonal): its last face is then a triangle.
+        boolean sameA = Math.abs(end - startA) <= tolerance;
+        boolean sameB = Math.abs(end - startB) <= tolerance;
+        if (!(end > Math.max(startA, startB) + tolerance) && !(sameA != sameB && end > Math.min(startA, startB) + tolerance)) {
             throw new FoldException("the strip's end lies behind its last crease");
         }
-        int a = addVertex(end, 0);
-        int b = addVertex(end, width);
-        int[] loop = {tailA, a, b, tailB};
+        int a = sameA ? tailA : addVertex(end, 0);
+        int b = sameB ? tailB : addVertex(end, width);
+        int[] loop = sameA ? new int[] {tailA, b, tailB} : sameB ? new int[] {tailA, a, tailB} : new int[] {tailA, a, b, tailB};
         int face = landing.addFace(loop, tailHost, tailPose, tailPlacement, tailHinge(loop));
         originOf[face] = (byte) (lastTailCrease == null ? 0 : lastTailCrease.ordinal() + 1);
         length = end;

@@ -204,6 +204,19 @@ public final class Wrap {
     }
 
     /**
+     * How a model is wrapped: the zig-zag way along the Hamiltonian path of its refinement (any
+     * polyhedron), or by the hinge strip along a tour of its squares (a grid polyhedron).
+     */
+    public enum Method {
+        ZIGZAG, HINGE;
+
+        /** Its name as the command line takes it: zigzag, hinge. */
+        public String word() {
+            return name().toLowerCase(Locale.ROOT);
+        }
+    }
+
+    /**
      * What a step of the wrap does, and the crease it leaves on the sheet ({@link Sheet.Crease}:
      * why the paper is creased there, which the sheet keeps for each crease): a step's kind
      * names the work, the crease its mark, so an overlap leaves a turn's crease and the strip's
@@ -211,7 +224,9 @@ public final class Wrap {
      */
     public enum Kind {
         ZIGZAG_TURN(Sheet.Crease.TURN), TURN_GADGET(Sheet.Crease.GADGET), EDGE_CROSSING(Sheet.Crease.CROSSING),
-        OVERLAP(Sheet.Crease.TURN), TUCK(Sheet.Crease.TUCK), END(null);
+        OVERLAP(Sheet.Crease.TURN), TUCK(Sheet.Crease.TUCK), END(null),
+        /** The hinge strip's turn: a flat fold along a square's diagonal ({@link HingeStrip}). */
+        DIAGONAL_TURN(Sheet.Crease.TURN);
 
         private final Sheet.Crease crease;
 
@@ -250,10 +265,15 @@ public final class Wrap {
                 case OVERLAP -> "overlap: the last pass laid back over itself";
                 case TUCK -> "tuck: excess folded under";
                 case END -> "the strip ends";
+                case DIAGONAL_TURN -> "turn along the square's diagonal";
             };
-            String where = pathLength > 1 ? String.format(Locale.ROOT, "triangle %d of %d: ", pathIndex + 1, pathLength) : "";
+            String where = pathLength > 1 ? String.format(Locale.ROOT, "%s %d of %d: ",
+                    HingeStrip.hinge(detail) ? "pass" : "triangle", pathIndex + 1, pathLength) : "";
             if ((kind == Kind.TUCK || kind == Kind.ZIGZAG_TURN) && detail != null && !detail.isEmpty()) {
                 return where + detail; // "tuck 2: excess folded under along edge CA", "pass 3 of 5: turn, 45° valley fold"
+            }
+            if (HingeStrip.hinge(detail)) {
+                return where + detail; // "pass 7 of 12: turn left: fold along the square's diagonal"
             }
             return where + what + (detail == null || detail.isEmpty() ? "" : ", " + detail);
         }

@@ -416,6 +416,7 @@ public final class Planning {
             case OVERLAP -> "overlap";
             case TUCK -> "tuck";
             case END -> "the strip ends";
+            case DIAGONAL_TURN -> "diagonal turn";
         };
     }
 
