@@ -201,7 +201,21 @@ public final class WrapPlayback implements Animation {
                 withSteps.add(t);
             }
         }
-        if (withSteps.size() == 1) {
+        if (result.method() == Wrap.Method.HINGE) {
+            // The hinge strip's passes fold once or twice each: every fold its own beat where there
+            // is time, else runs of passes, each said by its folds.
+            if (n <= most) {
+                for (int j = 0; j < n; j++) {
+                    beats.add(new int[] {-1, j, j + 1});
+                    captions.add(null);
+                }
+            } else {
+                for (List<Integer> run : runs(withSteps, most)) {
+                    beats.add(new int[] {run.get(0), run.get(run.size() - 1)});
+                    captions.add(describeRun(run, true));
+                }
+            }
+        } else if (withSteps.size() == 1) {
             int per = (n + most - 1) / most;
             for (int j = 0; j < n; j += per) {
                 int end = Math.min(n, j + per);
@@ -293,11 +307,42 @@ public final class WrapPlayback implements Animation {
         Wrap.Step first = steps.get(firstStep[run.get(0)]);
         Wrap.Step last = steps.get(firstStep[run.get(run.size() - 1)]);
         String strip = result.strips().size() > 1 ? "strip " + (first.strip() + 1) + ", " : "";
-        String which = run.size() == 1 ? "triangle " + (first.pathIndex() + 1)
-                : "triangles " + (first.pathIndex() + 1) + "\u2013" + (last.pathIndex() + 1);
+        String which = run.size() == 1 ? result.unit() + " " + (first.pathIndex() + 1)
+                : result.units() + " " + (first.pathIndex() + 1) + "\u2013" + (last.pathIndex() + 1);
+        if (result.method() == Wrap.Method.HINGE) {
+            return strip + which + " of " + first.pathLength() + ":" + kinds(firstStep[run.get(0)], endStep[run.get(run.size() - 1)]);
+        }
         String how = !afterDetail ? "zig-zag passes, turns and tucks"
                 : (run.size() == 1 ? "wrapped as triangle 1" : "each wrapped as triangle 1") + (result.strips().size() > 1 ? " of strip 1" : "");
         return strip + which + " of " + first.pathLength() + ": " + how;
+    }
+
+    /** The folds of steps {@code from} to {@code to} by kind: " 3 turn folds, 2 tucks". */
+    private String kinds(int from, int to) {
+        int[] kinds = new int[Wrap.Kind.values().length];
+        for (int j = from; j < to; j++) {
+            kinds[steps.get(j).kind().ordinal()]++;
+        }
+        StringBuilder text = new StringBuilder();
+        String separator = " ";
+        for (Wrap.Kind kind : Wrap.Kind.values()) {
+            int n = kinds[kind.ordinal()];
+            if (n > 0) {
+                String word = switch (kind) {
+                    case ZIGZAG_TURN -> n == 1 ? "turn fold" : "turn folds";
+                    case TURN_GADGET -> n == 1 ? "gadget fold" : "gadget folds";
+                    case EDGE_CROSSING -> result.method() == Wrap.Method.HINGE ? (n == 1 ? "fold over an edge" : "folds over edges")
+                            : n == 1 ? "crossing to the next triangle" : "crossings to the next triangle";
+                    case OVERLAP -> n == 1 ? "overlap" : "overlaps";
+                    case TUCK -> n == 1 ? "tuck" : "tucks";
+                    case END -> "end of the strip";
+                    case DIAGONAL_TURN -> n == 1 ? "turn along a square's diagonal" : "turns along squares' diagonals";
+                };
+                text.append(separator).append(n).append(' ').append(word);
+                separator = ", ";
+            }
+        }
+        return text.toString();
     }
 
     String describeStep(int j) {
@@ -343,7 +388,7 @@ public final class WrapPlayback implements Animation {
         if (alone >= 0) {
             return steps.get(alone).kind().crease() == null ? "" : Integer.toString(printNumber[alone]);
         }
-        return "T" + (triangleOf[panelFirst[k]] + 1);
+        return (result.method() == Wrap.Method.HINGE ? "P" : "T") + (triangleOf[panelFirst[k]] + 1);
     }
 
     @Override
@@ -450,28 +495,8 @@ public final class WrapPlayback implements Animation {
         }
         int first = panelFirst[k];
         k = triangleOf[first];
-        int[] kinds = new int[Wrap.Kind.values().length];
-        for (int j = firstStep[k]; j < endStep[k]; j++) {
-            kinds[steps.get(j).kind().ordinal()]++;
-        }
-        StringBuilder text = new StringBuilder(String.format(java.util.Locale.ROOT, "triangle %d of %d:", k + 1, triangles));
-        String separator = " ";
-        for (Wrap.Kind kind : Wrap.Kind.values()) {
-            int n = kinds[kind.ordinal()];
-            if (n > 0) {
-                String word = switch (kind) {
-                    case ZIGZAG_TURN -> n == 1 ? "turn fold" : "turn folds";
-                    case TURN_GADGET -> n == 1 ? "gadget fold" : "gadget folds";
-                    case EDGE_CROSSING -> "crossing to the next triangle";
-                    case OVERLAP -> n == 1 ? "overlap" : "overlaps";
-                    case TUCK -> n == 1 ? "tuck" : "tucks";
-                    case END -> "end of the strip";
-                    case DIAGONAL_TURN -> n == 1 ? "diagonal turn" : "diagonal turns";
-                };
-                text.append(separator).append(n).append(' ').append(word);
-                separator = ", ";
-            }
-        }
+        StringBuilder text = new StringBuilder(String.format(java.util.Locale.ROOT, "%s %d of %d:", result.unit(), k + 1, triangles));
+        text.append(kinds(firstStep[k], endStep[k]));
         // Which of the printed creases they are: the triangle's creasing folds run one after another.
         int low = firstStep[k] > 0 ? printNumber[firstStep[k] - 1] + 1 : 1;
         int high = printNumber[endStep[k] - 1];

@@ -45,6 +45,8 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
     static final String[] ENTRIES = {"(either side)", "A", "B", "C"};
     /** The view's choices, in the order of {@link Scenes.Show} and {@link PathView.Colors}. */
     static final String[] SHOWS = {"Model", "Refinement", "Hamiltonian path"};
+    /** The wrap's methods, in the order of {@link Wrap.Method}. */
+    static final String[] METHODS = {"Zig-zag", "Hinge strip"};
     static final String[] COLOURS = {"darkness", "rainbow"};
 
     private final CardLayout cards = new CardLayout();
@@ -76,6 +78,7 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
     final JTextField wrapThickness = new JTextField();
     final JTextField wrapMaxFaces = new JTextField();
     final JCheckBox wrapStrict = new JCheckBox("refuse defective input");
+    final JComboBox<String> wrapMethod = new JComboBox<>(METHODS);
     // The view, of the wrap's model.
     private final JLabel viewModelName = new JLabel("no model");
     final JComboBox<String> viewShow = new JComboBox<>(SHOWS);
@@ -119,7 +122,9 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
         chooseModelButton.addActionListener(e -> chooseModel.run());
         wrap.row("model", "Model", modelName, null);
         wrap.wide(chooseModelButton);
-        wrap.row("width", "Width", wrapWidth, "blank: a third of the widest possible");
+        wrap.row("method", "Method", wrapMethod, "the hinge strip: grid polyhedra (--method hinge)");
+        wrapMethod.addActionListener(e -> edited());
+        wrap.row("width", "Width", wrapWidth, "blank: a third of the widest possible; the hinge strip's square");
         wrap.row("thickness", "Thickness", wrapThickness, "blank: the width / " + Wrap.WIDTHS_A_THICKNESS);
         wrap.row("maxFaces", "Max faces", wrapMaxFaces, String.format(java.util.Locale.ROOT, "blank: %,d, a gibibyte's worth (about %,d bytes each)", Wrap.DEFAULT_MAX_FACES,
                 Wrap.BYTES_PER_FACE));
@@ -290,7 +295,8 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
 
     /** A wrap of {@code file} with the wrap's fields as they now stand, whichever card is shown. */
     Job.WrapModel wrap(Path file) {
-        return new Job.WrapModel(file, wrapWidth.getText(), wrapThickness.getText(), wrapMaxFaces.getText(), wrapStrict.isSelected());
+        return new Job.WrapModel(file, wrapWidth.getText(), wrapThickness.getText(), wrapMaxFaces.getText(), wrapStrict.isSelected(),
+                Wrap.Method.values()[wrapMethod.getSelectedIndex()]);
     }
 
     /** A view of {@code file} with the view's fields as they now stand, whichever card is shown. */
@@ -337,6 +343,7 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
                 wrapThickness.setText(w.thickness());
                 wrapMaxFaces.setText(w.maxFaces());
                 wrapStrict.setSelected(w.strict());
+                wrapMethod.setSelectedIndex(w.method().ordinal());
                 card = "wrap";
             } else if (job instanceof Job.Script s) {
                 script = s.file();

@@ -35,6 +35,7 @@ final class WindowSettings {
             window.settings.put("wrap.thickness", w.thickness());
             window.settings.put("wrap.maxFaces", w.maxFaces());
             window.settings.put("wrap.strict", Boolean.toString(w.strict()));
+            window.settings.put("wrap.method", w.method().word());
         } else if (job instanceof Job.View v) {
             window.settings.put("view.show", v.show().name());
             window.settings.put("view.colors", v.colors().name());
@@ -63,6 +64,8 @@ final class WindowSettings {
         window.parameters.wrapThickness.setText(window.settings.get("wrap.thickness", ""));
         window.parameters.wrapMaxFaces.setText(window.settings.get("wrap.maxFaces", ""));
         window.parameters.wrapStrict.setSelected(Boolean.parseBoolean(window.settings.get("wrap.strict", "false")));
+        window.parameters.wrapMethod.setSelectedIndex(
+                window.settings.get("wrap.method", "zigzag").equals(ifold.wrap.Wrap.Method.HINGE.word()) ? 1 : 0);
         window.parameters.viewShow.setSelectedIndex(enumIndex(Scenes.Show.values(), window.settings.get("view.show", Scenes.Show.PATH.name())));
         window.parameters.viewColours.setSelectedIndex(enumIndex(PathView.Colors.values(), window.settings.get("view.colors", PathView.Colors.DARKNESS.name())));
         window.parameters.viewStrict.setSelected(Boolean.parseBoolean(window.settings.get("view.strict", "false")));

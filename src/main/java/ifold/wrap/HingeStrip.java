@@ -78,7 +78,7 @@ public final class HingeStrip {
                 throw new Wrap.WrapException(folding.where() + ": " + e.getMessage());
             }
         }
-        return new Wrap.Result(layout.mesh, frames, layout.hostOf, List.copyOf(strips), List.copyOf(steps), w, t, w);
+        return new Wrap.Result(layout.mesh, frames, layout.hostOf, List.copyOf(strips), List.copyOf(steps), w, t, w, Wrap.Method.HINGE);
     }
 
     /** What the hinge strip's folds are, as its steps' details say: a step with one of them is a pass's, not a triangle's. */

@@ -223,10 +223,10 @@ public final class Wrap {
      * end none.
      */
     public enum Kind {
-        ZIGZAG_TURN(Sheet.Crease.TURN), TURN_GADGET(Sheet.Crease.GADGET), EDGE_CROSSING(Sheet.Crease.CROSSING),
-        OVERLAP(Sheet.Crease.TURN), TUCK(Sheet.Crease.TUCK), END(null),
+        ZIGZAG_TURN(Sheet.Crease.TURN),
         /** The hinge strip's turn: a flat fold along a square's diagonal ({@link HingeStrip}). */
-        DIAGONAL_TURN(Sheet.Crease.TURN);
+        DIAGONAL_TURN(Sheet.Crease.TURN), TURN_GADGET(Sheet.Crease.GADGET), EDGE_CROSSING(Sheet.Crease.CROSSING),
+        OVERLAP(Sheet.Crease.TURN), TUCK(Sheet.Crease.TUCK), END(null);
 
         private final Sheet.Crease crease;
 
@@ -318,9 +318,26 @@ public final class Wrap {
      * @param width the strip width
      * @param thickness the paper thickness
      * @param widest the widest strip the path takes
+     * @param method how it was wrapped: for the hinge strip, the path's triangles are the passes of its tour
      */
     public record Result(IndexedPolygons mesh, HostFrame[] frames, int[] hostOf, List<Strip> strips, List<Step> steps, double width,
-            double thickness, double widest) {
+            double thickness, double widest, Method method) {
+        /** A zig-zag wrap. */
+        public Result(IndexedPolygons mesh, HostFrame[] frames, int[] hostOf, List<Strip> strips, List<Step> steps, double width,
+                double thickness, double widest) {
+            this(mesh, frames, hostOf, strips, steps, width, thickness, widest, Method.ZIGZAG);
+        }
+
+        /** What one place of the path is called: a triangle of the zig-zag's, a pass of the hinge strip's tour. */
+        public String unit() {
+            return method == Method.HINGE ? "pass" : "triangle";
+        }
+
+        /** Its plural. */
+        public String units() {
+            return method == Method.HINGE ? "passes" : "triangles";
+        }
+
         public int count(Kind kind) {
             int n = 0;
             for (Step step : steps) {

@@ -1,5 +1,7 @@
 package ifold.ui.model;
 
+import ifold.wrap.Wrap;
+
 import ifold.job.Scenes;
 import ifold.scene.PathView;
 import java.nio.file.Path;
@@ -35,7 +37,15 @@ public sealed interface Job {
      * @param maxFaces the most faces of paper the wrap may make; blank for the command line's default
      * @param strict refuse defective input instead of repairing it, as {@code --strict}
      */
-    record WrapModel(Path model, String width, String thickness, String maxFaces, boolean strict) implements Job {
+    record WrapModel(Path model, String width, String thickness, String maxFaces, boolean strict, Wrap.Method method) implements Job {
+        public WrapModel {
+            method = method == null ? Wrap.Method.ZIGZAG : method;
+        }
+
+        public WrapModel(Path model, String width, String thickness, String maxFaces, boolean strict) {
+            this(model, width, thickness, maxFaces, strict, Wrap.Method.ZIGZAG);
+        }
+
         public WrapModel(Path model, String width, String thickness) {
             this(model, width, thickness, "", false);
         }

@@ -225,7 +225,8 @@ public final class Planning {
         WrapJob.Outcome wrapped;
         try {
             Wrap.Watcher folds = watcher(progress);
-            wrapped = WrapJob.run(new WrapJob.Request(model, new MeshBuilder.Options(job.strict(), true), options), new WrapJob.Watcher() {
+            wrapped = WrapJob.run(new WrapJob.Request(model, new MeshBuilder.Options(job.strict(), true), options, job.method()),
+                    new WrapJob.Watcher() {
                 @Override
                 public void wrapped(int done, int total) {
                     folds.wrapped(done, total);
@@ -269,7 +270,9 @@ public final class Planning {
         return paperPlan(job, model.getFileName() + ": " + result.strips().size() + (result.strips().size() == 1 ? " strip, " : " strips, ") + folds + " folds",
                 result, geometries, figures, 120, "ifold wrap " + model, wrapped.movedBy(), scene -> {
                     WrapPlayback playback = Scenes.wrap(scene, mesh, result, geometries);
-                    Scenes.refinement(scene, refinement);
+                    if (refinement != null) { // the zig-zag's path; the hinge strip's tour is its strip
+                        Scenes.refinement(scene, refinement);
+                    }
                     Scenes.collisions(scene, geometries, collisions);
                     return playback;
                 });

@@ -178,6 +178,31 @@ class PlanningTest {
     }
 
     @Test
+    void theWrapsMethodIsAChoiceOfItsCard() throws Exception {
+        Path cube = Path.of("models", "cube.off");
+        Plan hinge = Planning.plan(new Job.WrapModel(cube, "", "", "", false, ifold.wrap.Wrap.Method.HINGE), Progress.NONE);
+        assertEquals("hinge", hinge.figures().get("method"));
+        assertEquals(2, hinge.figures().get("maxLayers"));
+        assertEquals(0.5, (Double) hinge.figures().get("paperEfficiency"), 1e-9);
+        // Its folds listed as the command line says them, pass by pass.
+        assertTrue(hinge.folds().get(0).name().startsWith("pass 1 of 12: "), hinge.folds().get(0).name());
+        // A width that does not divide the lattice's square marks the width, in the command line's words.
+        JobFailure thirds = assertThrows(JobFailure.class,
+                () -> Planning.plan(new Job.WrapModel(cube, "0.3", "", "", false, ifold.wrap.Wrap.Method.HINGE), Progress.NONE));
+        assertEquals("width", thirds.problem().field());
+        Run run = cli("wrap", cube.toString(), "--no-view", "--method", "hinge", "--width", "0.3");
+        assertEquals(2, run.code());
+        assertEquals("ifold: option --width: " + thirds.problem().message(), run.err().strip());
+        // A model that is no grid polyhedron is refused in one line naming its face.
+        JobFailure slanted = assertThrows(JobFailure.class, () -> Planning.plan(new Job.WrapModel(Path.of("models", "tetrahedron.off"),
+                "", "", "", false, ifold.wrap.Wrap.Method.HINGE), Progress.NONE));
+        assertTrue(slanted.getMessage().contains("is not square to the axes"), slanted.getMessage());
+        Run refused = cli("wrap", "models/tetrahedron.off", "--no-view", "--method", "hinge");
+        assertEquals(1, refused.code());
+        assertEquals("ifold: " + slanted.getMessage(), refused.err().strip());
+    }
+
+    @Test
     void theWindowsWrapIsPacedForItsSecondsAsTheCommandLinesMovie() throws Exception {
         Plan cube = Planning.plan(new Job.WrapModel(Path.of("models", "cube.off"), "", ""), Progress.NONE);
         for (Animation animation : new Animation[] {cube.shown().animation(), cube.newScene().animation()}) {
