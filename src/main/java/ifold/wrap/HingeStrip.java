@@ -108,7 +108,7 @@ public final class HingeStrip {
         Layout(GridSquares squares, HingeTour tour) {
             this.squares = squares;
             hostOfSquare = new int[squares.count()];
-            List<HostFrame> hosts = rectangles();
+            List<HostFrame> hosts = squareHosts();
             frames = hosts.toArray(new HostFrame[0]);
             hostOf = new int[tour.passes()];
             boolean[] halfTaken = new boolean[squares.count()];
@@ -154,70 +154,21 @@ public final class HingeStrip {
             return Math.sqrt(Wrap.sq(max[0] - min[0]) + Wrap.sq(max[1] - min[1]) + Wrap.sq(max[2] - min[2]));
         }
 
-        /**
-         * Each plane's squares as rectangles, the greatest row by row: from the lowest free square
-         * of a plane (by row, then column), as far along its row as squares are free, then as
-         * many rows up as are free along all of that.
-         */
-        private List<HostFrame> rectangles() {
-            Map<Long, Integer> squareAt = new HashMap<>();
-            for (int q = 0; q < squares.count(); q++) {
-                squareAt.put(cellKey(q, 0, 0), q);
-            }
-            Integer[] order = new Integer[squares.count()];
-            for (int q = 0; q < order.length; q++) {
-                order[q] = q;
-            }
-            java.util.Arrays.sort(order, (p, q) -> {
-                int byPlane = Long.compare(planeKey(p), planeKey(q));
-                if (byPlane != 0) {
-                    return byPlane;
-                }
-                int byRow = Integer.compare(cell(p)[1], cell(q)[1]);
-                return byRow != 0 ? byRow : Integer.compare(cell(p)[0], cell(q)[0]);
-            });
-            java.util.Arrays.fill(hostOfSquare, -1);
+        /** A host a square, framed on its corners 0, 1, 2. */
+        private List<HostFrame> squareHosts() {
             List<HostFrame> hosts = new ArrayList<>();
-            for (int q : order) {
-                if (hostOfSquare[q] >= 0) {
-                    continue;
-                }
-                int across = 1;
-                while (free(squareAt, q, across, 0)) {
-                    across++;
-                }
-                int up = 1;
-                boolean rowFree = true;
-                while (rowFree) {
-                    for (int i = 0; i < across && rowFree; i++) {
-                        rowFree = free(squareAt, q, i, up);
-                    }
-                    if (rowFree) {
-                        up++;
-                    }
-                }
-                int host = hosts.size();
-                for (int j = 0; j < up; j++) {
-                    for (int i = 0; i < across; i++) {
-                        hostOfSquare[squareAt.get(cellKey(q, i, j))] = host;
-                    }
-                }
-                hosts.add(frame(squareAt, q, across, up));
+            for (int q = 0; q < squares.count(); q++) {
+                hostOfSquare[q] = q;
+                hosts.add(frame(q, 1, 1));
             }
             return hosts;
-        }
-
-        /** Whether the square i columns and j rows on from q in its plane is there and has no host yet. */
-        private boolean free(Map<Long, Integer> squareAt, int q, int i, int j) {
-            Integer p = squareAt.get(cellKey(q, i, j));
-            return p != null && hostOfSquare[p] < 0;
         }
 
         /**
          * The frame of the rectangle of {@code across} × {@code up} squares from q: on q's first
          * corners, its own four corners counter-clockwise from outside.
          */
-        private HostFrame frame(Map<Long, Integer> squareAt, int q, int across, int up) {
+        private HostFrame frame(int q, int across, int up) {
             int[] c = cell(q);
             int[][] cells = {{c[0], c[1]}, {c[0] + across, c[1]}, {c[0] + across, c[1] + up}, {c[0], c[1] + up}};
             double[][] corner = new double[4][];
@@ -258,16 +209,6 @@ public final class HingeStrip {
                 j = Math.min(j, squares.latticeCorner(q, k, (a + 2) % 3));
             }
             return new int[] {i, j};
-        }
-
-        private long planeKey(int q) {
-            int a = squares.axis(q);
-            return ((long) a * 2 + (squares.sign(q) > 0 ? 1 : 0)) << 20 | squares.latticeCorner(q, 0, a);
-        }
-
-        private long cellKey(int q, int di, int dj) {
-            int[] c = cell(q);
-            return (planeKey(q) << 20 | (c[0] + di)) << 20 | (c[1] + dj);
         }
     }
 

@@ -8,7 +8,7 @@ import java.util.Arrays;
  * every square exactly once, so it passes through every square exactly twice. On a closed
  * surface each square has four sides, each shared with one other square, so the squares and
  * their sides make a graph in which every square has four ends of sides: an Euler circuit of
- * that graph, one per component, is such a tour (Hierholzer's walk).
+ * that graph, one per component, is such a tour.
  *
  * <p>Whatever the circuit, each square's two passes are one of three kinds, all of which the
  * strip, one square wide, covers with exactly two layers and no gap: two straight passes
@@ -18,8 +18,7 @@ import java.util.Arrays;
  * strip is twice the surface's area, and nowhere more than two layers thick: the bounds
  * Benbernou, Demaine, Demaine and Lubiw prove for their universal hinge strip on any grid
  * polyhedron of sphere topology (here of any genus, the circuit needing only a connected
- * closed surface). The walk goes straight on where it can, so that it turns, and creases
- * inside squares, less.
+ * closed surface).
  */
 public final class HingeTour {
     /** Per pass, in the order of the tour: the square passed through, the side it enters by, the side it leaves by. */
@@ -36,70 +35,72 @@ public final class HingeTour {
         this.componentStart = componentStart;
     }
 
-    /** The tour of every component of {@code squares}, a closed surface: components in the order of their first squares. */
+    /**
+     * The tour of every component of {@code squares}, a closed surface: components in the order
+     * of their first squares. Every square begins as a crossing, its two passes straight on, and
+     * then the strip runs in rings, straight on from side to opposite side all round; where two
+     * rings that are not yet one cross, the square's passes turn instead (two turns at opposite
+     * corners), which joins them into one. So the tour turns in as few squares as rings joined by
+     * crossings allow: the rings less one.
+     */
     public static HingeTour of(GridSquares squares) {
         int n = squares.count();
+        // The ring of each square's two directions: 2 q for its sides 0 and 2, 2 q + 1 for 1 and 3.
+        int[] ring = new int[2 * n];
+        Arrays.fill(ring, -1);
+        int rings = 0;
+        for (int start = 0; start < 2 * n; start++) {
+            if (ring[start] >= 0) {
+                continue;
+            }
+            int q = start / 2;
+            int in = start % 2;
+            while (ring[2 * q + in % 2] < 0) {
+                ring[2 * q + in % 2] = rings;
+                int out = (in + 2) % 4;
+                int next = squares.across(q, out);
+                in = squares.acrossSide(q, out);
+                q = next;
+            }
+            rings++;
+        }
+        // A square whose two rings are not yet one turns, and joins them.
+        int[] parent = ifold.geom.UnionFind.pieces(rings);
+        boolean[] turning = new boolean[n];
+        for (int q = 0; q < n; q++) {
+            int a = ifold.geom.UnionFind.find(parent, ring[2 * q]);
+            int b = ifold.geom.UnionFind.find(parent, ring[2 * q + 1]);
+            if (a != b) {
+                ifold.geom.UnionFind.union(parent, a, b);
+                turning[q] = true;
+            }
+        }
         int passes = 2 * n;
         int[] square = new int[passes];
         int[] entry = new int[passes];
         int[] exit = new int[passes];
         int[] componentStart = new int[squares.components() + 1];
-        boolean[] used = new boolean[4 * n];
         int[] firstOf = new int[squares.components()];
         Arrays.fill(firstOf, -1);
         for (int q = n - 1; q >= 0; q--) {
             firstOf[squares.component(q)] = q;
         }
         int at = 0;
-        // Hierholzer's walk, iterative: a stack of the sides crossed (as 4 q + k, the square and
-        // side it was entered by, q and k of the far square), each popped onto the circuit once
-        // its square has no side left to leave by.
-        int[] stack = new int[passes + 1];
-        int[] circuit = new int[passes + 1];
         for (int c = 0; c < squares.components(); c++) {
             componentStart[c] = at;
-            int top = 0;
-            int length = 0;
-            stack[top++] = 4 * firstOf[c] + 3; // as if entered by side 3: the walk leaves by side 1 first
-            while (top > 0) {
-                int arrival = stack[top - 1];
-                int q = arrival / 4;
-                int in = arrival % 4;
-                int out = -1;
-                for (int turn : new int[] {2, 1, 3, 0}) { // straight on first
-                    int k = (in + turn) % 4;
-                    if (!used[4 * q + k]) {
-                        out = k;
-                        break;
-                    }
-                }
-                if (out < 0) {
-                    circuit[length++] = stack[--top];
-                    continue;
-                }
-                int p = squares.across(q, out);
-                int j = squares.acrossSide(q, out);
-                used[4 * q + out] = true;
-                used[4 * p + j] = true;
-                stack[top++] = 4 * p + j;
-            }
-            // The circuit comes out backwards, the starting entry last: crossings x_1 … x_m in
-            // order are circuit[length - 2] down to circuit[0]; pass i lies between crossing i
-            // and crossing i + 1 (the last between x_m and x_1, where the strip's two ends meet).
-            int m = length - 1;
-            for (int i = 0; i < m; i++) {
-                int arrival = circuit[m - 1 - i];
-                int next = circuit[(m - 2 - i + m) % m];
-                int q = arrival / 4;
+            int q = firstOf[c];
+            int in = 0;
+            do {
+                // A turning square pairs side 0 with 1 and 2 with 3: turns at corners 1 and 3, opposite.
+                int out = turning[q] ? in ^ 1 : (in + 2) % 4;
                 square[at] = q;
-                entry[at] = arrival % 4;
-                int p = next / 4;
-                exit[at] = squares.acrossSide(p, next % 4);
-                if (squares.across(p, next % 4) != q) {
-                    throw new IllegalStateException("the tour's crossings do not follow one another at square " + q);
-                }
+                entry[at] = in;
+                exit[at] = out;
                 at++;
-            }
+                int next = squares.across(q, out);
+                in = squares.acrossSide(q, out);
+                q = next;
+            } while (!(q == firstOf[c] && in == 0) && at < passes);
         }
         componentStart[squares.components()] = at;
         if (at != passes) {

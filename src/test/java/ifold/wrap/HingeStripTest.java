@@ -25,11 +25,6 @@ class HingeStripTest {
     @TempDir
     Path dir;
 
-    /** The polycubes whose paper the truths are checked on: all of {@link #polycubes} but the random one, whose corners where a concave edge ends are not yet mitred. */
-    static Stream<Object[]> mitred() {
-        return polycubes().filter(c -> !((String) c[0]).contains("random"));
-    }
-
     static Stream<Object[]> polycubes() {
         return Stream.of(new Object[] {"cube", Polycubes.box(1, 1, 1)}, new Object[] {"2 x 1 x 1 box", Polycubes.box(2, 1, 1)},
                 new Object[] {"3 x 2 x 2 box", Polycubes.box(3, 2, 2)}, new Object[] {"L", Polycubes.l()},
@@ -64,7 +59,7 @@ class HingeStripTest {
     }
 
     @ParameterizedTest(name = "{0}")
-    @MethodSource("mitred")
+    @MethodSource("polycubes")
     void thePaperCoversEverySquareWithTwoLayersInAValidOrder(String name, List<int[]> cubes) throws Exception {
         HalfedgeMesh mesh = mesh(cubes);
         GridSquares squares = GridSquares.of(mesh, Double.NaN);
@@ -96,7 +91,13 @@ class HingeStripTest {
             }
             triangles.add(t);
         }
-        List<WrapTruths.Violation> violations = truths.check(triangles, result.thickness(), analysis.stackLevels(), 2000, 7);
+        List<WrapTruths.Violation> all = truths.check(triangles, result.thickness(), analysis.stackLevels(), 2000, 7);
+        // The random polycube has vertices where an edge of the surface runs on from convex to
+        // concave (x = 2, y = 2 of seed 1, round z = -2): there corners of thick paper come nearer
+        // a concave edge's end than its mitre (docs/wrap.md, The hinge strip). Every other truth holds there.
+        List<WrapTruths.Violation> violations = all.stream()
+                .filter(v -> !(name.contains("random") && v.truth().equals(WrapTruths.ISOMETRIC) && v.message().contains("nearer than its mitre")))
+                .toList();
         assertTrue(violations.isEmpty(), () -> name + ": " + violations.size() + " violations, the first: "
                 + violations.subList(0, Math.min(5, violations.size())));
         assertEquals(strip.sheet().length(), truths.length(0), 1e-9);
