@@ -604,8 +604,14 @@ public final class WrapPlayback implements Animation {
     public String describe(double position) {
         if (position >= WrapView.REVEAL_STEPS || steps.isEmpty()) {
             int strips = result.strips().size();
-            return ending != null ? ending : "wrapped: " + strips + (strips == 1 ? " strip" : " strips") + " over " + triangles
-                    + (triangles == 1 ? " triangle" : " triangles");
+            if (ending != null) {
+                return ending;
+            }
+            String strip = strips + (strips == 1 ? " strip" : " strips");
+            if (result.method() == Wrap.Method.HINGE) {
+                return "wrapped: " + strip + " over " + triangles / 2 + " squares, each passed twice: two layers everywhere";
+            }
+            return "wrapped: " + strip + " over " + triangles + (triangles == 1 ? " triangle" : " triangles");
         }
         int beat = beatAt(position);
         // On a lone triangle the camera turns under for the tucks: what is seen is the underside.
