@@ -201,8 +201,18 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
      */
     public boolean keepFrom(int k, double keep, double[] point) {
         double[] edge = edge(k);
-        double nx = -edge[3] / edge[4]; // inwards: left of the edge, the polygon running counter-clockwise
-        double ny = edge[2] / edge[4];
+        // Inwards: left of the edge, the polygon running counter-clockwise.
+        return keepFromLine(edge[0], edge[1], -edge[3] / edge[4], edge[2] / edge[4], k, keep, point);
+    }
+
+    /**
+     * {@link #keepFrom} for any line: through (px, py), {@code keep} from it towards the unit
+     * normal (nx, ny), sliding along an edge of the polygon where straight would leave it; edge
+     * {@code skip} (the line's own, or -1) is not slid along.
+     */
+    public boolean keepFromLine(double px, double py, double nx, double ny, int skip, double keep, double[] point) {
+        double[] edge = {px, py};
+        int k = skip;
         double need = keep - ((point[0] - edge[0]) * nx + (point[1] - edge[1]) * ny);
         if (!(need > keep * 1e-12)) {
             return false;

@@ -38,16 +38,28 @@ final class ConcaveWalls {
     private record Wall(int edge, double from, double to, int low, int high, double in, double[] line) {
     }
 
+    /**
+     * A fold standing back to back with another on its crease line ({@link NestedBends#backToBack}):
+     * from (ax, ay) to (bx, by) on its host, its layers {@code low} to {@code high} on the side
+     * away from (nx, ny), the way it would stand out.
+     */
+    private record BackWall(double ax, double ay, double bx, double by, double nx, double ny, int low, int high) {
+    }
+
     private final double thickness;
     private final double tolerance;
     /** The walls on each host, by host (null where none). */
     private final List<List<Wall>> wallsOf;
+    /** The folds back to back on each host, by host (null where none). */
+    private final Map<Integer, List<BackWall>> backWallsOf;
     private final boolean[] along;
 
-    private ConcaveWalls(double thickness, double tolerance, List<List<Wall>> wallsOf, boolean[] along) {
+    private ConcaveWalls(double thickness, double tolerance, List<List<Wall>> wallsOf, Map<Integer, List<BackWall>> backWallsOf,
+            boolean[] along) {
         this.thickness = thickness;
         this.tolerance = tolerance;
         this.wallsOf = wallsOf;
+        this.backWallsOf = backWallsOf;
         this.along = along;
     }
 
@@ -55,7 +67,8 @@ final class ConcaveWalls {
      * The walls of {@code bends} that lie along a concave edge of their host, with the
      * {@code ranks} NestedBends gave them.
      */
-    static ConcaveWalls of(List<NestedBends.Bend> bends, int[] ranks, HostFrame[] frames, double thickness, double tolerance) {
+    static ConcaveWalls of(List<NestedBends.Bend> bends, int[] ranks, int[] backToBack, HostFrame[] frames, double thickness,
+            double tolerance) {
         boolean[] along = new boolean[bends.size()];
         int[] edgeOf = new int[bends.size()];
         // The most any fold along an edge needs, by host and edge: its upper layer's mitre plus its rank.
@@ -87,7 +100,28 @@ final class ConcaveWalls {
             }
             wallsOf.get(bend.host()).add(new Wall(edgeOf[k], Math.min(sa, sb), Math.max(sa, sb), bend.low(), bend.high(), in, edge));
         }
-        return new ConcaveWalls(thickness, tolerance, wallsOf, along);
+        // Two folds back to back on one crease line cannot both stand on it: each stands back half
+        // a thickness, its layers ending on its own side (where it does not already stand on a wall).
+        Map<Integer, List<BackWall>> backWallsOf = new HashMap<>();
+        for (int k = 0; k < bends.size(); k++) {
+            if (backToBack[k] < 0 || along[k] || along[backToBack[k]]) {
+                continue;
+            }
+            NestedBends.Bend bend = bends.get(k);
+            backWallsOf.computeIfAbsent(bend.host(), h -> new ArrayList<>())
+                    .add(new BackWall(bend.ax(), bend.ay(), bend.bx(), bend.by(), bend.nx(), bend.ny(), bend.low(), bend.high()));
+        }
+        return new ConcaveWalls(thickness, tolerance, wallsOf, backWallsOf, along);
+    }
+
+    /** Whether bend k stands back from its crease, back to back with another ({@link #place}). */
+    static boolean standsBack(int[] backToBack, boolean[] alongWall, int k) {
+        return backToBack[k] >= 0 && !alongWall[k] && !alongWall[backToBack[k]];
+    }
+
+    /** Which bends stand on a wall at a concave edge. */
+    boolean[] along() {
+        return along.clone();
     }
 
     /** Whether bend k (in the list it was made of) stands on a wall at a concave edge. */
@@ -101,13 +135,35 @@ final class ConcaveWalls {
      * would reach nearer a concave edge; into {@code out} (x, y).
      */
     void place(int host, HostFrame frame, double x, double y, double height, double[] out) {
-        frame.mitred(x, y, height, out);
-        List<Wall> walls = wallsOf.get(host);
-        if (walls == null || !(thickness > 0)) {
+        place(host, frame, x, y, height, Double.NaN, Double.NaN, out);
+    }
+
+    /**
+     * {@link #place} for a corner of a face of paper whose middle is (cx, cy): a fold back to back
+     * with another moves its own layers' corners half a thickness back from the crease, on its
+     * side of it (a corner on the crease belongs to the side its face lies on), before and after
+     * the mitres; where a mitre then brings one back nearer the crease, it slides along the
+     * mitre's line to where the two meet.
+     */
+    void place(int host, HostFrame frame, double x, double y, double height, double cx, double cy, double[] out) {
+        out[0] = x;
+        out[1] = y;
+        List<BackWall> backs = thickness > 0 ? backWallsOf.get(host) : null;
+        double level = height / thickness - 0.5;
+        if (backs != null) {
+            for (BackWall back : backs) {
+                if (holds(back, level, cx, cy, x, y)) {
+                    frame.keepFromLine(back.ax(), back.ay(), -back.nx(), -back.ny(), -1, thickness / 2, out);
+                }
+            }
+        }
+        double[] laid = {out[0], out[1]};
+        frame.mitred(laid[0], laid[1], height, out);
+        if (!(thickness > 0)) {
             return; // paper of no thickness stands nowhere but on its creases
         }
-        double level = height / thickness - 0.5;
-        for (Wall wall : walls) {
+        List<Wall> walls = wallsOf.get(host);
+        for (Wall wall : walls == null ? List.<Wall>of() : walls) {
             if (level < wall.low() - Tolerance.RELATIVE_EQUALITY || level > wall.high() + Tolerance.RELATIVE_EQUALITY) {
                 continue;
             }
@@ -119,6 +175,89 @@ final class ConcaveWalls {
                 frame.keepFrom(wall.edge(), wall.in(), out);
             }
         }
+        if (backs != null) {
+            for (BackWall back : backs) {
+                if (holds(back, level, cx, cy, x, y)) {
+                    slideAlongMitre(frame, back, height, thickness / 2, out);
+                }
+            }
+        }
+    }
+
+    /**
+     * Where a bend back to back with another has its apex: on its crease, halfway up (at
+     * {@code height}), mitred by a concave edge and slid along the mitre's line back onto the
+     * crease, where the other's apex is.
+     */
+    void apex(int host, HostFrame frame, double x, double y, double height, double[] out) {
+        frame.mitred(x, y, height, out);
+        List<BackWall> backs = thickness > 0 ? backWallsOf.get(host) : null;
+        if (backs == null) {
+            return;
+        }
+        for (BackWall back : backs) {
+            double dx = back.bx() - back.ax();
+            double dy = back.by() - back.ay();
+            double length = Math.sqrt(dx * dx + dy * dy);
+            double s = ((x - back.ax()) * dx + (y - back.ay()) * dy) / length;
+            double off = (x - back.ax()) * back.nx() + (y - back.ay()) * back.ny();
+            if (Math.abs(off) <= tolerance && s >= -tolerance && s <= length + tolerance) {
+                slideAlongMitre(frame, back, height, 0, out);
+                return;
+            }
+        }
+    }
+
+    /**
+     * Whether the back-to-back fold's layers hold the paper point (x, y) as laid: its level, beside
+     * its crease within half a thickness, of a face on its side.
+     */
+    private boolean holds(BackWall back, double level, double cx, double cy, double x, double y) {
+        if (level < back.low() - Tolerance.RELATIVE_EQUALITY || level > back.high() + Tolerance.RELATIVE_EQUALITY) {
+            return false;
+        }
+        double dx = back.bx() - back.ax();
+        double dy = back.by() - back.ay();
+        double length = Math.sqrt(dx * dx + dy * dy);
+        double s = ((x - back.ax()) * dx + (y - back.ay()) * dy) / length;
+        double inside = -((x - back.ax()) * back.nx() + (y - back.ay()) * back.ny());
+        double middle = -((cx - back.ax()) * back.nx() + (cy - back.ay()) * back.ny());
+        return middle > tolerance && s >= -tolerance && s <= length + tolerance && inside >= -tolerance && inside < thickness / 2;
+    }
+
+    /**
+     * Moves a point that a concave edge's mitre holds along that mitre's line until it lies
+     * {@code keep} in from the back-to-back fold's crease on its side (the mitre and the fold's
+     * wall both kept); a point no mitre holds, straight there.
+     */
+    private void slideAlongMitre(HostFrame frame, BackWall back, double height, double keep, double[] point) {
+        double inside = -((point[0] - back.ax()) * back.nx() + (point[1] - back.ay()) * back.ny());
+        double need = keep - inside;
+        if (Math.abs(need) <= tolerance) {
+            return;
+        }
+        int corners = frame.corners().length / 2;
+        for (int k = 0; k < corners; k++) {
+            double tan = frame.mitreAt(k, point[0], point[1]);
+            if (!(tan > 0)) {
+                continue;
+            }
+            double[] edge = frame.edge(k);
+            double in = ((point[0] - edge[0]) * -edge[3] + (point[1] - edge[1]) * edge[2]) / edge[4];
+            if (Math.abs(in - height * tan) > tolerance + Tolerance.RELATIVE_EQUALITY * height) {
+                continue; // not on this edge's mitre
+            }
+            double tx = edge[2] / edge[4];
+            double ty = edge[3] / edge[4];
+            double towards = -(tx * back.nx() + ty * back.ny());
+            if (Math.abs(towards) > 1e-3) {
+                point[0] += need / towards * tx;
+                point[1] += need / towards * ty;
+                return;
+            }
+        }
+        point[0] -= need * back.nx();
+        point[1] -= need * back.ny();
     }
 
     /** The concave edge of the frame's polygon that the bend's crease lies along, sharing more than the tolerance of it; -1 if none. */

@@ -61,6 +61,8 @@ final class NestedBends {
     private final double[] from;
     private final double[] to;
     private final int[] ranks;
+    /** Each bend's partner back to back on its line (a fold on the other side of it, overlapping it along the line and in levels), or -1. */
+    private final int[] backToBack;
 
     private NestedBends(List<Bend> bends, double tolerance) {
         this.bends = bends;
@@ -69,6 +71,8 @@ final class NestedBends {
         this.from = new double[bends.size()];
         this.to = new double[bends.size()];
         this.ranks = new int[bends.size()];
+        this.backToBack = new int[bends.size()];
+        Arrays.fill(backToBack, -1);
     }
 
     /**
@@ -97,7 +101,7 @@ final class NestedBends {
             }
             List<Integer> onHost = Arrays.asList(byHost).subList(from, to);
             from = to;
-            for (List<Integer> line : lines(bends, onHost, tolerance)) {
+            for (List<Integer> line : lines(bends, onHost, tolerance, true)) {
                 for (int k : line) {
                     nested.lineOf[k] = nested.lines.size();
                 }
@@ -105,9 +109,54 @@ final class NestedBends {
                 nested.span(line);
                 nested.rank(line);
             }
+            for (List<Integer> both : lines(bends, onHost, tolerance, false)) {
+                nested.backToBack(both);
+            }
         }
         return nested;
     }
+
+    /**
+     * Each bend's partner back to back with it, or -1: a fold on the same crease line facing it
+     * from the other side, overlapping it along the line and in levels, both of rank 0 (a hinge
+     * strip's two turns in one square fold along its one diagonal). Their walls would stand on
+     * the one line; thick, each stands back half a thickness ({@link ConcaveWalls}).
+     */
+    int[] backToBack() {
+        return backToBack.clone();
+    }
+
+    /** Finds the bends back to back among those of one line, both sides. */
+    private void backToBack(List<Integer> line) {
+        if (line.size() < 2 || line.size() > MOST_BACK_TO_BACK) {
+            return;
+        }
+        Bend first = bends.get(line.get(0));
+        double dx = first.bx() - first.ax();
+        double dy = first.by() - first.ay();
+        double length = Polygons2.length(dx, dy);
+        for (int i : line) {
+            for (int j : line) {
+                Bend a = bends.get(i);
+                Bend b = bends.get(j);
+                if (i >= j || ranks[i] != 0 || ranks[j] != 0 || a.nx() * b.nx() + a.ny() * b.ny() > -0.5
+                        || Math.max(a.low(), b.low()) >= Math.min(a.high(), b.high())) {
+                    continue;
+                }
+                double ai = ((a.ax() - first.ax()) * dx + (a.ay() - first.ay()) * dy) / length;
+                double bi = ((a.bx() - first.ax()) * dx + (a.by() - first.ay()) * dy) / length;
+                double aj = ((b.ax() - first.ax()) * dx + (b.ay() - first.ay()) * dy) / length;
+                double bj = ((b.bx() - first.ax()) * dx + (b.by() - first.ay()) * dy) / length;
+                if (Math.min(Math.max(ai, bi), Math.max(aj, bj)) - Math.max(Math.min(ai, bi), Math.min(aj, bj)) > tolerance) {
+                    backToBack[i] = j;
+                    backToBack[j] = i;
+                }
+            }
+        }
+    }
+
+    /** Lines with more bends than this are not searched for bends back to back (each pair is tried). */
+    private static final int MOST_BACK_TO_BACK = 64;
 
     /** Each bend's rank: 0 where it wraps no fold of its line, else one more than the highest rank it wraps. */
     int[] ranks() {
@@ -118,14 +167,14 @@ final class NestedBends {
     private static final double DIRECTION_BUCKET = 1e-4;
 
     /**
-     * The bends of one host grouped by line and side. A line's direction is its longest crease's,
+     * The bends of one host grouped by line, and by side where {@code oneSide}. A line's direction is its longest crease's,
      * good to rounding (a short crease's is not: the ends of a crease a thousandth of the host
      * long, each good to 1e-12, turn it by 1e-9); so the longest come first, each line is filed
      * under its direction, in buckets {@link #DIRECTION_BUCKET} wide, by its offset across that
      * direction, and a crease joins the line its ends lie within {@code tolerance} of, looked
      * for among the lines of its bucket and the two beside it whose offsets are near its own.
      */
-    private static List<List<Integer>> lines(List<Bend> bends, List<Integer> onHost, double tolerance) {
+    private static List<List<Integer>> lines(List<Bend> bends, List<Integer> onHost, double tolerance, boolean oneSide) {
         // Longest first: by length, packed with the place in onHost in a long (lengths are not negative).
         long[] keyed = new long[onHost.size()];
         for (int i = 0; i < keyed.length; i++) {
@@ -168,7 +217,7 @@ final class NestedBends {
                 for (List<Integer> near : lines.subMap(offset - window, true, offset + window, true).values()) {
                     for (int g : near) {
                         Bend line = bends.get(groups.get(g).get(0));
-                        if (bend.nx() * line.nx() + bend.ny() * line.ny() > 0 && distanceToLine(bend.ax(), bend.ay(), line) <= tolerance
+                        if ((!oneSide || bend.nx() * line.nx() + bend.ny() * line.ny() > 0) && distanceToLine(bend.ax(), bend.ay(), line) <= tolerance
                                 && distanceToLine(bend.bx(), bend.by(), line) <= tolerance) {
                             found = g;
                             break;

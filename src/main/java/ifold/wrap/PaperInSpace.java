@@ -143,7 +143,9 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             });
             NestedBends nested = NestedBends.of(bends, sheet.thickness() * NEST_TOLERANCE);
             int[] ranks = nested.ranks();
-            walls = ConcaveWalls.of(bends, ranks, frames, sheet.thickness(), sheet.tolerance());
+            int[] backToBack = nested.backToBack();
+            walls = ConcaveWalls.of(bends, ranks, backToBack, frames, sheet.thickness(), sheet.tolerance());
+            boolean[] onWall = walls.along();
 
             List<int[]> paper = new ArrayList<>(faces);
             int[] hosts = new int[faces];
@@ -214,6 +216,18 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 double out = outs[k];
                 if ((c[4] == c[6] || samePlace(c[4], c[6])) && (c[5] == c[7] || samePlace(c[5], c[7]))) {
                     continue; // paper of no thickness folded flat: nothing to bridge
+                }
+                if (out == 0 && ConcaveWalls.standsBack(backToBack, onWall, k)) {
+                    // Back to back with another fold: its layers stand back half a thickness, and its
+                    // bend reaches the crease halfway up, where the other's meets it.
+                    double middle = (height(f) + height(g)) / 2;
+                    int apexA = apex(f, c[2], middle);
+                    int apexB = apex(f, c[3], middle);
+                    caps.add(new int[] {c[4], c[5], apexB, apexA});
+                    caps.add(new int[] {apexA, apexB, c[7], c[6]});
+                    capAfter.add(g);
+                    capAfter.add(g);
+                    continue;
                 }
                 if (out == 0) {
                     caps.add(new int[] {c[4], c[5], c[7], c[6]});
@@ -294,7 +308,14 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             int host = sheet.host(f);
             double x = pose.x(sheet.u(p), sheet.v(p));
             double y = pose.y(sheet.u(p), sheet.v(p));
-            walls.place(host, frame, x, y, height(f), xy);
+            int[] loop = sheet.loop(f);
+            double cx = 0;
+            double cy = 0;
+            for (int q : loop) {
+                cx += pose.x(sheet.u(q), sheet.v(q)) / loop.length;
+                cy += pose.y(sheet.u(q), sheet.v(q)) / loop.length;
+            }
+            walls.place(host, frame, x, y, height(f), cx, cy, xy);
             boolean crept = xy[0] != x || xy[1] != y;
             frame.toSpace(xy[0], xy[1], height(f), point, 0);
             for (int copy : copies.get(p)) {
@@ -378,6 +399,25 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             return v;
         }
 
+
+        /**
+         * The crease's point at paper vertex p (of face f's pose) at {@code height}: a bend's apex,
+         * on the crease line where no fold back to back moves it, mitred by a concave edge.
+         */
+        private int apex(int f, int p, double height) {
+            Isometry2 pose = sheet.pose(f);
+            double[] point = new double[3];
+            double[] xy = new double[2];
+            walls.apex(sheet.host(f), frames[sheet.host(f)], pose.x(sheet.u(p), sheet.v(p)), pose.y(sheet.u(p), sheet.v(p)), height, xy);
+            frames[sheet.host(f)].toSpace(xy[0], xy[1], height, point, 0);
+            int v = add(point, sheet.u(p), sheet.v(p));
+            if (v >= copyHost.length) {
+                copyHost = java.util.Arrays.copyOf(copyHost, 2 * v + 2);
+                copyLevel = java.util.Arrays.copyOf(copyLevel, 2 * v + 2);
+            }
+            copyHost[v] = -1;
+            return v;
+        }
 
         private boolean closer(int copy, double[] point, double distance) {
             double dx = xyz[3 * copy] - point[0];

@@ -48,11 +48,12 @@ final class TruthCoverage {
      * of the model's concave edges of a crept face on its plane (one truth 2 let stand back from
      * a concave edge): where layers joined at a crease creep by different amounts, the crease
      * opens a sliver no wider than that, which can run from the edge along the crease; a gap
-     * any wider, or beside paper that did not creep, is a hole.
+     * any wider, or beside paper that did not creep, is a hole. Folds back to back on one
+     * crease stand back from it by {@code foldCreep} (a thickness) at most: under their bends.
      */
     static boolean nearPaper(double[] p, double[] n, Faces geometry, List<TruthIsometry.ConcaveSide> concave, double top, double eps,
-            Ints candidates, boolean[] crept) {
-        double widest = 0;
+            Ints candidates, boolean[] crept, double foldCreep) {
+        double widest = foldCreep;
         for (TruthIsometry.ConcaveSide side : concave) {
             widest = Math.max(widest, top * (side.mitre() + 1));
         }
@@ -91,7 +92,7 @@ final class TruthCoverage {
     }
 
     void checkCovered(TruthReport report, TruthModel model, Faces geometry, double eps, double top, int samples, long seed,
-            List<TruthIsometry.ConcaveSide> concave, boolean[] crept) {
+            List<TruthIsometry.ConcaveSide> concave, boolean[] crept, double foldCreep) {
         SplittableRandom random = new SplittableRandom(seed);
         double[] p = new double[3];
         Ints candidates = new Ints();
@@ -114,7 +115,7 @@ final class TruthCoverage {
             for (int k = 0; k < candidates.size() && !covered; k++) {
                 covered = depthOver(geometry, geometry.paper[candidates.get(k)], p, n, top, eps) >= -eps;
             }
-            if (!covered && !inCreepZone(p, n, concave, top, eps) && !nearPaper(p, n, geometry, concave, top, eps, candidates, crept)) {
+            if (!covered && !inCreepZone(p, n, concave, top, eps) && !nearPaper(p, n, geometry, concave, top, eps, candidates, crept, foldCreep)) {
                 uncovered++;
                 report.add(WrapTruths.COVERED, "model point " + WrapTruths.point(p) + " of triangle " + (t + 1) + " lies under no paper face");
             }

@@ -9,7 +9,8 @@ import java.util.Map;
 /**
  * Truth 2 of {@link WrapTruths}: every paper face congruent to its paper polygon, but for thick
  * paper's corners that creep within the zone of a concave edge of the model, none nearer such an
- * edge than its mitre.
+ * edge than its mitre, and corners of two folds back to back on one crease line, whose bends
+ * meet there (each stands back from the crease by no more than a thickness).
  */
 final class TruthIsometry {
     private final WrapTruths wrap;
@@ -63,9 +64,62 @@ final class TruthIsometry {
         return concave;
     }
 
-    /** Truth 2; {@code crept} gets the faces let stand back from a concave edge. */
+    /**
+     * The vertices of paper where two folds stand back to back: two caps (bends) that share no
+     * vertex but run along one segment in space (their apexes, where the bends meet on the
+     * crease), and the other vertices of those caps (the corners of the folds' layers, which
+     * may stand back from the crease by up to a thickness).
+     */
+    java.util.Set<Integer> backToBackCorners(double eps) {
+        Map<String, List<Integer>> capsAlong = new HashMap<>();
+        for (int f = 0; f < wrap.faces(); f++) {
+            if (!wrap.faceCap[f]) {
+                continue;
+            }
+            int start = wrap.faceStart[f];
+            int end = wrap.faceStart[f + 1];
+            for (int c = start; c < end; c++) {
+                String a = rounded(wrap.cornerV[c], eps);
+                String b = rounded(wrap.cornerV[c + 1 < end ? c + 1 : start], eps);
+                capsAlong.computeIfAbsent(a.compareTo(b) < 0 ? a + b : b + a, k -> new ArrayList<>()).add(f);
+            }
+        }
+        java.util.Set<Integer> corners = new java.util.HashSet<>();
+        for (List<Integer> caps : capsAlong.values()) {
+            for (int i = 0; i < caps.size(); i++) {
+                for (int j = i + 1; j < caps.size(); j++) {
+                    if (!shareVertex(caps.get(i), caps.get(j))) {
+                        for (int f : new int[] {caps.get(i), caps.get(j)}) {
+                            for (int c = wrap.faceStart[f]; c < wrap.faceStart[f + 1]; c++) {
+                                corners.add(wrap.cornerV[c]);
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        return corners;
+    }
+
+    private String rounded(int v, double eps) {
+        return Math.round(wrap.xyz[3 * v] / eps) + "," + Math.round(wrap.xyz[3 * v + 1] / eps) + "," + Math.round(wrap.xyz[3 * v + 2] / eps) + ";";
+    }
+
+    private boolean shareVertex(int f, int g) {
+        for (int a = wrap.faceStart[f]; a < wrap.faceStart[f + 1]; a++) {
+            for (int b = wrap.faceStart[g]; b < wrap.faceStart[g + 1]; b++) {
+                if (wrap.cornerV[a] == wrap.cornerV[b]) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    /** Truth 2; {@code crept} gets the faces let stand back from a concave edge, or from a crease where two folds stand back to back. */
     void checkIsometry(TruthReport report, List<ConcaveSide> concave, double thickness, int maxStack, double eps, boolean[] crept) {
         StringBuilder why = new StringBuilder();
+        java.util.Set<Integer> backToBack = thickness > 0 ? backToBackCorners(1e-3 * thickness) : java.util.Set.of();
         for (int f = 0; f < wrap.faces(); f++) {
             if (!wrap.faceCap[f]) {
                 why.setLength(0);
@@ -75,6 +129,7 @@ final class TruthIsometry {
                     report.add(WrapTruths.ISOMETRIC, wrap.face(f) + ": " + zones.nearer());
                 }
                 if (!(error <= WrapTruths.RELATIVE)) {
+                    zones = atFolds(f, zones, backToBack, thickness);
                     crept[f] = zones != null && creptOnly(f, zones);
                     if (!crept[f]) {
                         report.add(WrapTruths.ISOMETRIC, wrap.face(f) + " is stretched: " + why + (zones == null || zones.widest() == 0 ? ""
@@ -170,6 +225,24 @@ final class TruthIsometry {
             nearer = nearer == null ? onPlane : nearer;
         }
         return new Zones(inZone, widest, nearer);
+    }
+
+    /** Face f's zones with its corners at folds back to back in a zone a thickness wide too; null where it has neither. */
+    private Zones atFolds(int f, Zones zones, java.util.Set<Integer> backToBack, double thickness) {
+        int start = wrap.faceStart[f];
+        int end = wrap.faceStart[f + 1];
+        boolean[] inZone = zones == null ? new boolean[end - start] : zones.inZone().clone();
+        boolean any = false;
+        for (int c = start; c < end; c++) {
+            if (backToBack.contains(wrap.cornerV[c])) {
+                inZone[c - start] = true;
+                any = true;
+            }
+        }
+        if (!any) {
+            return zones;
+        }
+        return new Zones(inZone, Math.max(zones == null ? 0 : zones.widest(), thickness), zones == null ? null : zones.nearer());
     }
 
     /**

@@ -352,7 +352,12 @@ public final class WrapTruths {
         boolean[] crept = new boolean[faces()];
         isometry.checkIsometry(report, concave, thickness, maxStack, eps, crept);
         neighbours.checkNotTorn(report, eps, 2 * top);
-        coverage.checkCovered(report, model, geometry, eps, top, coverageSamples, seed, thickness > 0 ? concave : List.of(), crept);
+        boolean foldsCrept = false;
+        for (int f = 0; f < faces() && !foldsCrept; f++) {
+            foldsCrept = crept[f];
+        }
+        coverage.checkCovered(report, model, geometry, eps, top, coverageSamples, seed, thickness > 0 ? concave : List.of(), crept,
+                foldsCrept ? thickness : 0);
         surface.checkOnSurface(report, model, geometry, eps, top);
         return report.finish();
     }
