@@ -169,9 +169,9 @@ final class WrapCommand implements Callable<Integer> {
             if (outputs.exportFold != null) {
                 written.add(outputs.exportFold);
             }
-            outputs.exportPrint(sheets, model.getFileName().toString(), PrintJob.WRAP + ", "
+            outputs.exportPrint(sheets, model.getFileName().toString(), PrintJob.wrap(result.method()) + ", "
                     + result.strips().size() + (result.strips().size() == 1 ? " strip" : " strips"));
-            diagrams.write(outputs, model.getFileName().toString(), PrintJob.WRAP, in -> Scenes.wrap(in, mesh, result, geometries));
+            diagrams.write(outputs, model.getFileName().toString(), PrintJob.wrap(result.method()), in -> Scenes.wrap(in, mesh, result, geometries));
             long exportedAt = System.nanoTime();
             outputs.checkCollisions(geometries, result.thickness(), mesh, figures);
             long writtenAt = System.nanoTime();

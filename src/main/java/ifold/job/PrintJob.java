@@ -34,6 +34,13 @@ public final class PrintJob {
     /** See {@link #ZIGZAG}. */
     public static final String WRAP = "the zig-zag wrap (Demaine, Demaine and Mitchell)";
     /** See {@link #ZIGZAG}. */
+    public static final String HINGE = "the hinge strip (Benbernou, Demaine, Demaine and Lubiw)";
+
+    /** The header's words for a wrap by {@code method}. */
+    public static String wrap(ifold.wrap.Wrap.Method method) {
+        return method == ifold.wrap.Wrap.Method.HINGE ? HINGE : WRAP;
+    }
+    /** See {@link #ZIGZAG}. */
     public static final String SCRIPT = "a fold script's sheet";
     public static final String FOLD = "a FOLD file's crease pattern";
 

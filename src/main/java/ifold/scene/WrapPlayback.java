@@ -360,9 +360,9 @@ public final class WrapPlayback implements Animation {
     }
 
     /**
-     * The folds of step diagrams: each fold of a path of one or two triangles (the demos); for a
-     * longer path, each fold of its first triangle, then each later triangle, its passes, gadgets,
-     * crossing and tucks in one panel.
+     * The folds of step diagrams: each fold of a path of one or two triangles (the demos) and of
+     * the hinge strip; for a longer zig-zag path, each fold of its first triangle, then each
+     * later triangle, its passes, gadgets, crossing and tucks in one panel.
      */
     @Override
     public int foldCount() {
@@ -413,7 +413,8 @@ public final class WrapPlayback implements Animation {
             if (endStep[t] <= firstStep[t]) {
                 continue;
             }
-            boolean byFold = triangles <= 2 || !detailed;
+            // The hinge strip folds once or twice a pass, each fold worth a panel of its own.
+            boolean byFold = triangles <= 2 || !detailed || result.method() == Wrap.Method.HINGE;
             detailed = true;
             if (byFold) {
                 for (int j = firstStep[t]; j < endStep[t]; j++) {

@@ -256,8 +256,8 @@ public final class Exports {
         if (job instanceof Job.Turn) {
             return PrintJob.TURN;
         }
-        if (job instanceof Job.WrapModel) {
-            return PrintJob.WRAP;
+        if (job instanceof Job.WrapModel w) {
+            return PrintJob.wrap(w.method());
         }
         return PrintJob.SCRIPT;
     }
