@@ -85,8 +85,16 @@ final class PlaybackCamera {
         }
         double tan = Math.tan(fovY / 2);
         double distance = Math.max((top - bottom) / (2 * WrapView.CLOSE_FILL * tan), (right - left) / (2 * 0.7 * tan * 16 / 9.0));
+        if (playback.result.method() == Wrap.Method.HINGE) {
+            // A pass's half square fills the frame with one face: the square and those round it
+            // show where the strip comes from and goes.
+            distance *= HINGE_CONTEXT;
+        }
         return Math.max(distance, 1e-9 * playback.modelRadius);
     }
+
+    /** How much farther the camera stands from a hinge strip's pass than from a zig-zag's triangle. */
+    static final double HINGE_CONTEXT = 3;
 
     /** The refined mesh's face of path triangle t (strips one after another). */
     private int triangleFace(int t) {

@@ -228,6 +228,14 @@ final class PlaybackMesh {
             Vector3d up = new Vector3d(before.normal()[0], before.normal()[1], before.normal()[2]);
             double sign = new Vector3d(axis).cross(out0).dot(up) > 0 ? 1 : -1;
             angle = move.over() ? sign * Math.PI : -sign * Math.PI;
+        } else if (move.hostAfter() != move.hostBefore() && after.height(from[1]) < 0) {
+            // Over a concave edge, the tail running on would lie inside the solid, and swinging from
+            // there would sweep through it: it comes from laid back over the paper instead (a half
+            // turn about the crease), and swings up through the air onto the face across.
+            for (int c = 0; c < 4; c++) {
+                from[c] = WrapView.rotate(from[c], a, axis, Math.PI);
+            }
+            angle -= Math.signum(angle) * Math.PI;
         }
         return new Swing(from, a, axis, angle);
     }
