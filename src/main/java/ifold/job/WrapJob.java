@@ -182,8 +182,17 @@ public final class WrapJob {
             if (!Double.isNaN(options.width())) {
                 double squaresAcross = squares.spacing() / options.width();
                 if (!(Math.abs(squaresAcross - Math.rint(squaresAcross)) <= 1e-9 * squaresAcross) || Math.rint(squaresAcross) < 1) {
+                    long whole = Math.max(1, Math.round(squaresAcross));
                     throw new ifold.geom.ParameterException("width", String.format(java.util.Locale.ROOT, "the hinge strip is as wide as the "
-                            + "model's lattice square, %s, or that over a whole number; got %s", squares.spacing(), options.width()));
+                            + "model's lattice square, %s, or that over a whole number (the nearest: %s, the square cut in %d); got %s", squares.spacing(),
+                            squares.spacing() / whole, whole, options.width()));
+                }
+                double across = Math.rint(squaresAcross);
+                if (squares.count() * across * across > GridSquares.MOST_SQUARES) {
+                    throw new ifold.geom.ParameterException("width", String.format(java.util.Locale.ROOT, "a hinge strip %s wide cuts the "
+                            + "surface into %.0f squares, more than %d: the narrowest it takes is %s", options.width(),
+                            squares.count() * across * across, GridSquares.MOST_SQUARES,
+                            squares.spacing() / Math.floor(Math.sqrt((double) GridSquares.MOST_SQUARES / squares.count()))));
                 }
                 squares = GridSquares.of(mesh, options.width());
             }

@@ -96,8 +96,8 @@ public final class GridSquares {
             double length = Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
             int a = Math.abs(n[0]) >= Math.abs(n[1]) && Math.abs(n[0]) >= Math.abs(n[2]) ? 0 : Math.abs(n[1]) >= Math.abs(n[2]) ? 1 : 2;
             if (!(length > 0) || Math.abs(n[(a + 1) % 3]) > OFF_LATTICE * length || Math.abs(n[(a + 2) % 3]) > OFF_LATTICE * length) {
-                throw new NotGrid(String.format(Locale.ROOT, "face %d (%s) is not square to the axes: the hinge strip wraps grid "
-                        + "polyhedra, whose faces all are", f + 1, corners(mesh, f)));
+                throw new NotGrid(String.format(Locale.ROOT, "the face through (%s) is not square to the axes: the hinge strip "
+                        + "wraps grid polyhedra, every face of which is", corners(mesh, f)));
             }
             normalAxis[f] = a;
             normalSign[f] = n[a] > 0 ? 1 : -1;
@@ -250,7 +250,7 @@ public final class GridSquares {
                         count++;
                         long key = key(a, normalSign[f], plane, i, j);
                         if (squareAt.containsKey(key)) {
-                            throw new NotGrid(String.format(Locale.ROOT, "face %d (%s) lies over another face", f + 1, GridSquares.corners(mesh, f)));
+                            throw new NotGrid(String.format(Locale.ROOT, "the face through (%s) lies over another face", GridSquares.corners(mesh, f)));
                         }
                         squareAt.put(key, axis.size());
                         if (axis.size() >= MOST_SQUARES) {
@@ -282,8 +282,8 @@ public final class GridSquares {
             for (double[] tally : byPlane.values()) {
                 if (Math.abs(tally[1] - tally[0]) > 1e-6 * Math.max(1, tally[0])) {
                     int f = (int) tally[2];
-                    throw new NotGrid(String.format(Locale.ROOT, "face %d (%s) and those in its plane do not cover whole squares of side "
-                            + "%s (%.4g squares' area): the hinge strip wraps closed surfaces of squares", f + 1,
+                    throw new NotGrid(String.format(Locale.ROOT, "the face through (%s) and those in its plane do not cover whole "
+                            + "squares of side %s (%.4g squares' area): the hinge strip wraps closed surfaces of squares",
                             GridSquares.corners(mesh, f), s, tally[0]));
                 }
             }
@@ -296,11 +296,18 @@ public final class GridSquares {
             int[] acrossSide = new int[4 * n];
             Arrays.fill(across, -1);
             Map<Long, Integer> sideAt = new HashMap<>();
+            Map<Long, Integer> squaresOn = new HashMap<>();
             for (int q = 0; q < n; q++) {
                 for (int k = 0; k < 4; k++) {
                     int from = 12 * q + 3 * k;
                     int to = 12 * q + 3 * ((k + 1) % 4);
                     long key = sideKey(corners, from, to);
+                    if (squaresOn.merge(key, 1, Integer::sum) > 2) {
+                        // Cubes meeting along an edge alone: the squares on it pair any way, and paper
+                        // wrapping both would pass through itself there.
+                        throw new NotGrid("an edge of the surface at " + side(corners, from, to) + " has more than two squares on it "
+                                + "(solids meeting along an edge alone)");
+                    }
                     Integer other = sideAt.remove(key);
                     if (other == null) {
                         sideAt.put(key, 4 * q + k);
@@ -327,6 +334,36 @@ public final class GridSquares {
                 int k = open.getValue() % 4;
                 throw new NotGrid("the surface is open at " + side(corners, 12 * q + 3 * k, 12 * q + 3 * ((k + 1) % 4))
                         + ": the hinge strip wraps closed surfaces, where two squares meet at every edge");
+            }
+            // Round each corner the squares make one fan, side to side: solids meeting at a corner
+            // alone make two, and paper wrapping both would pass through itself there.
+            Map<Long, Integer> atCorner = new HashMap<>();
+            for (int q = 0; q < n; q++) {
+                for (int k = 0; k < 4; k++) {
+                    atCorner.merge(pointKey(corners, 12 * q + 3 * k), 1, Integer::sum);
+                }
+            }
+            java.util.Set<Long> walked = new java.util.HashSet<>();
+            for (int q = 0; q < n; q++) {
+                for (int k = 0; k < 4; k++) {
+                    long key = pointKey(corners, 12 * q + 3 * k);
+                    if (!walked.add(key)) {
+                        continue;
+                    }
+                    int fan = 0;
+                    int p = q;
+                    int c = k;
+                    do {
+                        fan++;
+                        int next = across[4 * p + c];
+                        c = (acrossSide[4 * p + c] + 1) % 4;
+                        p = next;
+                    } while (!(p == q && c == k) && fan <= 4 * n);
+                    if (fan != atCorner.get(key)) {
+                        throw new NotGrid("the squares round the corner (" + point(corners, 12 * q + 3 * k) + ") make more than one fan "
+                                + "(solids meeting at a corner alone)");
+                    }
+                }
             }
             int[] parent = UnionFind.pieces(n);
             for (int q = 0; q < n; q++) {

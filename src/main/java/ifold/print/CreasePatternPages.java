@@ -515,11 +515,12 @@ public final class CreasePatternPages {
         }
         boolean sheet = strips.stream().mapToDouble(SheetCreases::length).max().orElse(0) <= SHEET_ASPECT * strips.get(0).width();
         boolean glued = pieceCount() > strips.size();
-        canvas.text(MARGIN, y + 5, 2.6, "Numbers: the order of the folds, as the step diagrams number them. Printed side: the "
-                + (sheet ? "sheet's" : "strip's") + " top side, so its valleys fold towards you" + (glued ? "; glue each piece's start on the"
-                + " tab before it, mark on mark." : "."), false);
-        canvas.text(MARGIN, y + 8.6, 2.6, "Where a fold has turned the paper over, its printed valleys fold away from you: the step diagrams"
-                + " show each fold as it is seen.", false);
+        // Two lines of about equal length, small enough to fit an A4 page upright between its margins.
+        canvas.text(MARGIN, y + 5, 2.4, "Numbers: the order of the folds, as the step diagrams number them. Printed side: the "
+                + (sheet ? "sheet's" : "strip's") + " top side, so its valleys fold towards you.", false);
+        canvas.text(MARGIN, y + 8.6, 2.4, (glued ? "Glue each piece's start on the tab before it, mark on mark. " : "")
+                + "Where a fold has turned the paper over, its printed valleys fold away from you: the step diagrams show each fold as it"
+                + " is seen.", false);
         // The scale bar: 5 cm, a tick each centimetre.
         double bar = page.height() - MARGIN - 1.5;
         canvas.line(MARGIN, bar, MARGIN + 50, bar, Ink.SCALE);

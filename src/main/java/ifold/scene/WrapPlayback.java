@@ -82,6 +82,8 @@ public final class WrapPlayback implements Animation {
 
     /** For each panel of the step diagrams, its first step, and whether it shows that step alone. */
     int[] panelFirst;
+    /** Each panel's last path triangle, where it shows triangles' folds together (a run of them past {@link #MOST_PANELS}). */
+    int[] panelLastTriangle;
 
     boolean[] panelIsStep;
 
@@ -164,7 +166,7 @@ public final class WrapPlayback implements Animation {
         printNumber = new int[steps.size()];
         int creasing = 0;
         for (int j = 0; j < steps.size(); j++) {
-            creasing += steps.get(j).kind().crease() == null ? 0 : 1;
+            creasing += creases(steps.get(j)) ? 1 : 0;
             printNumber[j] = creasing;
         }
         pace(WrapView.DEFAULT_SECONDS);
@@ -317,14 +319,41 @@ public final class WrapPlayback implements Animation {
         return strip + which + " of " + first.pathLength() + ": " + how;
     }
 
+    /**
+     * Whether a step leaves a crease the printed pattern numbers: not the strip's end, nor a
+     * crossing onto another host in the same plane (the paper runs on flat there: the print draws
+     * it as the edge of a face, no fold).
+     */
+    private boolean creases(Wrap.Step step) {
+        if (step.kind().crease() == null) {
+            return false;
+        }
+        if (step.kind() == Wrap.Kind.EDGE_CROSSING && step.tail() != null) {
+            double[] a = result.frames()[step.tail().hostBefore()].normal();
+            double[] b = result.frames()[step.tail().hostAfter()].normal();
+            return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] < 1 - 1e-12;
+        }
+        return true;
+    }
+
     /** The folds of steps {@code from} to {@code to} by kind: " 3 turn folds, 2 tucks". */
     private String kinds(int from, int to) {
         int[] kinds = new int[Wrap.Kind.values().length];
+        int flat = 0;
         for (int j = from; j < to; j++) {
-            kinds[steps.get(j).kind().ordinal()]++;
+            Wrap.Step step = steps.get(j);
+            if (step.kind() == Wrap.Kind.EDGE_CROSSING && !creases(step)) {
+                flat++; // on over a side into the next piece of a face: no fold
+            } else {
+                kinds[step.kind().ordinal()]++;
+            }
         }
         StringBuilder text = new StringBuilder();
         String separator = " ";
+        if (flat > 0) {
+            text.append(separator).append(flat).append(flat == 1 ? " time on flat over a side" : " times on flat over a side");
+            separator = ", ";
+        }
         for (Wrap.Kind kind : Wrap.Kind.values()) {
             int n = kinds[kind.ordinal()];
             if (n > 0) {
@@ -386,8 +415,9 @@ public final class WrapPlayback implements Animation {
     public String foldLabel(int k) {
         int alone = stepOfPanel(k);
         if (alone >= 0) {
-            return steps.get(alone).kind().crease() == null ? "" : Integer.toString(printNumber[alone]);
+            return !creases(steps.get(alone)) ? "" : Integer.toString(printNumber[alone]);
         }
+        // A run's first; its caption says where it ends.
         return (result.method() == Wrap.Method.HINGE ? "P" : "T") + (triangleOf[panelFirst[k]] + 1);
     }
 
@@ -408,30 +438,55 @@ public final class WrapPlayback implements Animation {
     private void layOutPanels() {
         List<Integer> first = new ArrayList<>();
         List<Boolean> alone = new ArrayList<>();
-        boolean detailed = false;
+        List<Integer> last = new ArrayList<>();
+        List<Integer> withSteps = new ArrayList<>();
         for (int t = 0; t < triangles; t++) {
-            if (endStep[t] <= firstStep[t]) {
-                continue;
+            if (endStep[t] > firstStep[t]) {
+                withSteps.add(t);
             }
-            // The hinge strip folds once or twice a pass, each fold worth a panel of its own.
-            boolean byFold = triangles <= 2 || !detailed || result.method() == Wrap.Method.HINGE;
-            detailed = true;
-            if (byFold) {
+        }
+        // The hinge strip folds once or twice a pass, each fold worth a panel of its own where
+        // they are few enough to print; the zig-zag's first triangle fold by fold, then a panel a
+        // triangle; past MOST_PANELS, the rest in runs of triangles (a 1,000-page book helps no one).
+        boolean everyFold = triangles <= 2 || result.method() == Wrap.Method.HINGE && steps.size() <= MOST_PANELS;
+        int from = 0;
+        if (!everyFold && !withSteps.isEmpty() && result.method() != Wrap.Method.HINGE) {
+            int t = withSteps.get(0);
+            for (int j = firstStep[t]; j < endStep[t]; j++) {
+                first.add(j);
+                alone.add(true);
+                last.add(t);
+            }
+            from = 1;
+        }
+        if (everyFold) {
+            for (int t : withSteps) {
                 for (int j = firstStep[t]; j < endStep[t]; j++) {
                     first.add(j);
                     alone.add(true);
+                    last.add(t);
                 }
-            } else {
-                first.add(firstStep[t]);
+            }
+        } else {
+            int rest = withSteps.size() - from;
+            int room = Math.max(1, MOST_PANELS - first.size());
+            int per = (rest + room - 1) / room;
+            for (int i = from; i < withSteps.size(); i += per) {
+                first.add(firstStep[withSteps.get(i)]);
                 alone.add(false);
+                last.add(withSteps.get(Math.min(withSteps.size(), i + per) - 1));
             }
         }
         panelFirst = first.stream().mapToInt(Integer::intValue).toArray();
+        panelLastTriangle = last.stream().mapToInt(Integer::intValue).toArray();
         panelIsStep = new boolean[alone.size()];
         for (int k = 0; k < panelIsStep.length; k++) {
             panelIsStep[k] = alone.get(k);
         }
     }
+
+    /** The most panels a wrap's step diagrams get: 40 pages of six. */
+    static final int MOST_PANELS = 240;
 
     /**
      * A fold's crease, where its panel shows one fold: a fold of the tail across the strip where
@@ -495,12 +550,17 @@ public final class WrapPlayback implements Animation {
                     endStep[t] - firstStep[t]);
         }
         int first = panelFirst[k];
-        k = triangleOf[first];
-        StringBuilder text = new StringBuilder(String.format(java.util.Locale.ROOT, "%s %d of %d:", result.unit(), k + 1, triangles));
-        text.append(kinds(firstStep[k], endStep[k]));
-        // Which of the printed creases they are: the triangle's creasing folds run one after another.
-        int low = firstStep[k] > 0 ? printNumber[firstStep[k] - 1] + 1 : 1;
-        int high = printNumber[endStep[k] - 1];
+        int t = triangleOf[first];
+        int lastTriangle = panelLastTriangle[k];
+        StringBuilder text = new StringBuilder(t == lastTriangle
+                ? String.format(java.util.Locale.ROOT, "%s %d of %d:", result.unit(), t + 1, triangles)
+                : String.format(java.util.Locale.ROOT, "%s %d\u2013%d of %d:", result.units(), t + 1, lastTriangle + 1, triangles));
+        int from = firstStep[t];
+        int to = endStep[lastTriangle];
+        text.append(kinds(from, to));
+        // Which of the printed creases they are: the triangles' creasing folds run one after another.
+        int low = from > 0 ? printNumber[from - 1] + 1 : 1;
+        int high = printNumber[to - 1];
         if (high >= low) {
             text.append(low == high ? String.format(java.util.Locale.ROOT, " (crease %d on the print)", low)
                     : String.format(java.util.Locale.ROOT, " (creases %d\u2013%d on the print)", low, high));

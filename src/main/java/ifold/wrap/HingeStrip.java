@@ -54,15 +54,18 @@ public final class HingeStrip {
         double t = Double.isNaN(thickness) ? Wrap.defaultThickness(w) : thickness;
         Layout layout = new Layout(squares, tour);
         // Each fold lays one face, and the end one more: known before any fold.
-        long faces = tour.components();
-        for (int i = 0; i < tour.passes(); i++) {
-            int q = tour.square(i);
-            faces += tour.turns(i) ? 1 : 0;
-            faces += layout.hostOfSquare[squares.across(q, tour.exit(i))] != layout.hostOfSquare[q] ? 1 : 0;
+        long faces = tour.components(); // each strip's end
+        for (int c = 0; c < tour.components(); c++) {
+            for (int i = tour.componentStart(c); i < tour.componentStart(c + 1); i++) {
+                int q = tour.square(i);
+                faces += tour.turns(i) ? 1 : 0;
+                boolean last = i + 1 == tour.componentStart(c + 1);
+                faces += !last && layout.hostOfSquare[squares.across(q, tour.exit(i))] != layout.hostOfSquare[q] ? 1 : 0;
+            }
         }
         if (faces > maxFaces) {
             throw new Wrap.FaceLimitException(String.format(Locale.ROOT, "the hinge strip passes %d times through %d squares and "
-                    + "makes about %d faces of paper, more than the limit of %d faces", tour.passes(), squares.count(), faces,
+                    + "makes %d faces of paper, more than the limit of %d", tour.passes(), squares.count(), faces,
                     maxFaces));
         }
         double size = layout.size();

@@ -92,6 +92,19 @@ class GridSquaresTest {
         assertTrue(thirds.getMessage().contains("must divide"), thirds.getMessage());
     }
 
+    @Test
+    void solidsMeetingAlongAnEdgeOrAtACornerAloneAreRefused() throws Exception {
+        // Paper wrapping both would pass through itself where they meet.
+        GridSquares.NotGrid edge = assertThrows(GridSquares.NotGrid.class,
+                () -> GridSquares.of(polycube(List.of(new int[] {0, 0, 0}, new int[] {1, 1, 0})), Double.NaN));
+        assertTrue(edge.getMessage().contains("more than two squares on it"), edge.getMessage());
+        GridSquares.NotGrid corner = assertThrows(GridSquares.NotGrid.class,
+                () -> GridSquares.of(polycube(List.of(new int[] {0, 0, 0}, new int[] {1, 1, 1})), Double.NaN));
+        assertTrue(corner.getMessage().contains("more than one fan"), corner.getMessage());
+        // Setup: joined by a face, the same cubes make one closed surface.
+        assertEquals(10, GridSquares.of(polycube(List.of(new int[] {0, 0, 0}, new int[] {1, 0, 0})), Double.NaN).count());
+    }
+
     /** Every side is shared with one other square, which runs along it the other way. */
     static void assertPaired(GridSquares squares) {
         for (int q = 0; q < squares.count(); q++) {
