@@ -210,9 +210,10 @@ public final class GridSquares {
         }
 
         GridSquares cut() throws NotGrid {
-            IntList axis = new IntList();
-            IntList sign = new IntList();
-            IntList corners = new IntList();
+            java.util.stream.IntStream.Builder axis = java.util.stream.IntStream.builder();
+            java.util.stream.IntStream.Builder sign = java.util.stream.IntStream.builder();
+            java.util.stream.IntStream.Builder corners = java.util.stream.IntStream.builder();
+            int made = 0;
             Map<Long, Integer> squareAt = new HashMap<>();
             // Per plane (as the key of its cell 0, 0): its faces' area, its squares, its first face.
             Map<Long, double[]> byPlane = new java.util.LinkedHashMap<>();
@@ -252,8 +253,8 @@ public final class GridSquares {
                         if (squareAt.containsKey(key)) {
                             throw new NotGrid(String.format(Locale.ROOT, "the face through (%s) lies over another face", GridSquares.corners(mesh, f)));
                         }
-                        squareAt.put(key, axis.size());
-                        if (axis.size() >= MOST_SQUARES) {
+                        squareAt.put(key, made++);
+                        if (made > MOST_SQUARES) {
                             throw new NotGrid(String.format(Locale.ROOT, "the surface makes more than %d squares of side %s", MOST_SQUARES, s));
                         }
                         axis.add(a);
@@ -287,7 +288,7 @@ public final class GridSquares {
                             GridSquares.corners(mesh, f), s, tally[0]));
                 }
             }
-            return pair(axis.toArray(), sign.toArray(), corners.toArray());
+            return pair(axis.build().toArray(), sign.build().toArray(), corners.build().toArray());
         }
 
         private GridSquares pair(int[] axis, int[] sign, int[] corners) throws NotGrid {
@@ -436,27 +437,6 @@ public final class GridSquares {
 
     private static String point(IndexedPolygons mesh, int v) {
         return String.format(Locale.ROOT, "%.6g %.6g %.6g", mesh.coordinate(v, 0), mesh.coordinate(v, 1), mesh.coordinate(v, 2));
-    }
-
-    /** A growing list of ints. */
-    private static final class IntList {
-        private int[] values = new int[64];
-        private int size;
-
-        void add(int value) {
-            if (size == values.length) {
-                values = Arrays.copyOf(values, 2 * size);
-            }
-            values[size++] = value;
-        }
-
-        int size() {
-            return size;
-        }
-
-        int[] toArray() {
-            return Arrays.copyOf(values, size);
-        }
     }
 
     /** How many squares. */

@@ -390,13 +390,18 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             double[] xy = new double[2];
             walls.place(sheet.host(f), frames[sheet.host(f)], px, py, height, xy);
             frames[sheet.host(f)].toSpace(xy[0], xy[1], height, point, 0);
-            int v = add(point, sheet.u(p), sheet.v(p));
-            if (v >= copyHost.length) {
-                copyHost = java.util.Arrays.copyOf(copyHost, 2 * v + 2);
-                copyLevel = java.util.Arrays.copyOf(copyLevel, 2 * v + 2);
+            return capVertex(point, sheet.u(p), sheet.v(p));
+        }
+
+        /** A vertex of a cap's middle rows, made for no face's layer: shared with none. */
+        private int capVertex(double[] point, double u, double v) {
+            int made = add(point, u, v);
+            if (made >= copyHost.length) {
+                copyHost = java.util.Arrays.copyOf(copyHost, 2 * made + 2);
+                copyLevel = java.util.Arrays.copyOf(copyLevel, 2 * made + 2);
             }
-            copyHost[v] = -1;
-            return v;
+            copyHost[made] = -1;
+            return made;
         }
 
 
@@ -410,13 +415,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             double[] xy = new double[2];
             walls.apex(sheet.host(f), frames[sheet.host(f)], pose.x(sheet.u(p), sheet.v(p)), pose.y(sheet.u(p), sheet.v(p)), height, xy);
             frames[sheet.host(f)].toSpace(xy[0], xy[1], height, point, 0);
-            int v = add(point, sheet.u(p), sheet.v(p));
-            if (v >= copyHost.length) {
-                copyHost = java.util.Arrays.copyOf(copyHost, 2 * v + 2);
-                copyLevel = java.util.Arrays.copyOf(copyLevel, 2 * v + 2);
-            }
-            copyHost[v] = -1;
-            return v;
+            return capVertex(point, sheet.u(p), sheet.v(p));
         }
 
         private boolean closer(int copy, double[] point, double distance) {

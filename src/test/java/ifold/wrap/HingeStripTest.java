@@ -94,16 +94,7 @@ class HingeStripTest {
         Path obj = dir.resolve("hinge.obj");
         WrapExport.writeObj(obj, "test", result, geometries);
         WrapTruths truths = WrapTruths.read(Files.readString(obj));
-        List<double[]> triangles = new ArrayList<>();
-        for (int f = 0; f < mesh.faceCount(); f++) {
-            double[] t = new double[9];
-            for (int k = 0; k < 3; k++) {
-                for (int axis = 0; axis < 3; axis++) {
-                    t[3 * k + axis] = mesh.coordinate(mesh.faceVertex(f, k), axis);
-                }
-            }
-            triangles.add(t);
-        }
+        List<double[]> triangles = triangles(mesh);
         List<WrapTruths.Violation> all = truths.check(triangles, result.thickness(), analysis.stackLevels(), 2000, 7);
         // The random polycube has vertices where an edge of the surface runs on from convex to
         // concave (x = 2, y = 2 of seed 1, round z = -2): there corners of thick paper come nearer
