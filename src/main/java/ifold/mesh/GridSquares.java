@@ -96,7 +96,7 @@ public final class GridSquares {
             double length = Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
             int a = Math.abs(n[0]) >= Math.abs(n[1]) && Math.abs(n[0]) >= Math.abs(n[2]) ? 0 : Math.abs(n[1]) >= Math.abs(n[2]) ? 1 : 2;
             if (!(length > 0) || Math.abs(n[(a + 1) % 3]) > OFF_LATTICE * length || Math.abs(n[(a + 2) % 3]) > OFF_LATTICE * length) {
-                throw new NotGrid(String.format(Locale.ROOT, "the face through (%s) is not square to the axes: the hinge strip "
+                throw new NotGrid(String.format(Locale.ROOT, "the face through %s is not square to the axes: the hinge strip "
                         + "wraps grid polyhedra, every face of which is", corners(mesh, f)));
             }
             normalAxis[f] = a;
@@ -104,9 +104,24 @@ public final class GridSquares {
         }
         double found = spacing(mesh, min, tolerance);
         if (Double.isNaN(found)) {
-            int v = offLattice(mesh, min, smallestGap(mesh, min, tolerance) / FINEST_DIVISION, tolerance);
-            throw new NotGrid(String.format(Locale.ROOT, "the corners lie on no lattice of cubes: corner %s is off every lattice "
-                    + "as fine as a %dth of the smallest gap between corners", point(mesh, v), FINEST_DIVISION));
+            // Name the corner farthest off the lattice of the smallest gap, and by how much: a model
+            // written with few decimals (0.333333 for a third) is off by its rounding.
+            double gap = smallestGap(mesh, min, tolerance);
+            int worst = -1;
+            double off = 0;
+            for (int v = 0; v < mesh.vertexCount(); v++) {
+                for (int a = 0; a < 3; a++) {
+                    double steps = (mesh.coordinate(v, a) - min[a]) / gap;
+                    double by = Math.abs(steps - Math.rint(steps)) * gap;
+                    if (by > off) {
+                        off = by;
+                        worst = v;
+                    }
+                }
+            }
+            throw new NotGrid(String.format(Locale.ROOT, "the corners lie on no lattice of cubes to a billionth of the model's size: "
+                    + "corner %s is %.3g off the lattice of the smallest gap between corners, %.6g, and off every lattice as fine as "
+                    + "a %dth of it", point(mesh, worst), off, gap, FINEST_DIVISION));
         }
         double s = Double.isNaN(spacing) ? found : spacing;
         if (!Double.isNaN(spacing)) {
@@ -251,7 +266,7 @@ public final class GridSquares {
                         count++;
                         long key = key(a, normalSign[f], plane, i, j);
                         if (squareAt.containsKey(key)) {
-                            throw new NotGrid(String.format(Locale.ROOT, "the face through (%s) lies over another face", GridSquares.corners(mesh, f)));
+                            throw new NotGrid(String.format(Locale.ROOT, "the face through %s lies over another face", GridSquares.corners(mesh, f)));
                         }
                         squareAt.put(key, made++);
                         if (made > MOST_SQUARES) {
@@ -283,7 +298,7 @@ public final class GridSquares {
             for (double[] tally : byPlane.values()) {
                 if (Math.abs(tally[1] - tally[0]) > 1e-6 * Math.max(1, tally[0])) {
                     int f = (int) tally[2];
-                    throw new NotGrid(String.format(Locale.ROOT, "the face through (%s) and those in its plane do not cover whole "
+                    throw new NotGrid(String.format(Locale.ROOT, "the face through %s and those in its plane do not cover whole "
                             + "squares of side %s (%.4g squares' area): the hinge strip wraps closed surfaces of squares",
                             GridSquares.corners(mesh, f), s, tally[0]));
                 }
