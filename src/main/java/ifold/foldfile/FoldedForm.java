@@ -270,6 +270,23 @@ public final class FoldedForm {
      *
      * @throws CreasePattern.Refused naming the key, the edges or the crease
      */
+    /**
+     * How many levels the file's own folded state stacks its paper in ({@code faces_ifold:level}
+     * of its {@code foldedForm} frame, the highest plus one), or -1 where it states none: what a
+     * folding of its crease pattern must come back to.
+     */
+    public static int statedStack(Map<String, Object> file) throws CreasePattern.Refused {
+        FoldInput in = FoldInput.read(file);
+        if (in.levels() == null) {
+            return -1;
+        }
+        int most = -1;
+        for (int level : in.levels()) {
+            most = Math.max(most, level);
+        }
+        return most + 1;
+    }
+
     public static void check(Map<String, Object> file) throws CreasePattern.Refused {
         checked(file);
     }

@@ -110,6 +110,16 @@ public final class ScriptJob {
                 }
                 parsed = folding.script(); // some lines may have been folded the other way
                 result = folding.result();
+                int stated = FoldedForm.statedStack(fold);
+                if (stated > 0 && result.sheet().stackLevels() > stated) {
+                    // The file's own folded state stacks its paper lower than its lines folded one
+                    // at a time do (a hinge strip's on some polycubes): fold it as the file has it.
+                    try {
+                        return allAtOnce(file, fold, stage);
+                    } catch (Refused notAtOnce) {
+                        // keep the line-by-line folding
+                    }
+                }
                 if (!layersHold(parsed, result, maxFaces)) {
                     // Folded line by line its layers cross (a flap through the paper): all at once,
                     // its order found from the pattern, where that finds one.

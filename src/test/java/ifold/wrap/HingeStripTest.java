@@ -126,6 +126,10 @@ class HingeStripTest {
         }
         assertTrue(order.layered() > 0, "setup: layers were found");
         assertTrue(order.valid(), order::summary);
+        // Its FOLD file folds back to its two layers (line by line, or as the file has it where
+        // its lines folded one at a time would stack the paper higher).
+        ifold.job.ScriptJob.Outcome back = ifold.job.ScriptJob.run(fold, Wrap.DEFAULT_MAX_FACES, stage -> { });
+        assertEquals(2, back.figures().get("maxLayers"), name + " folded back: " + back.figures());
     }
 
     /**
