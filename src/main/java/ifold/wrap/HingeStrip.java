@@ -32,10 +32,11 @@ import java.util.Map;
  * turning pass has the half of its square at its corner, where its paper lies twice; a straight
  * pass one half, the other pass through that square the other (both cover it whole).
  *
- * <p><b>Hosts.</b> The paper rests on rectangles of whole squares, the greatest a plane's squares
- * make row by row: a box's faces each one, an L's top two. Within one the strip runs on flat;
- * over a side between two it folds (by nothing, between two rectangles of one plane). Each piece
- * of the strip laid lands over all the paper it overlaps: the tour lays paper only on top.
+ * <p><b>Hosts.</b> The paper rests on its square, a host each: every layer then lies on the
+ * surface (rectangles of several squares stacked paper up to 9 levels over 2 layers, floating
+ * over squares it did not cover), a stack of at most 2. Over a side to a square of the same
+ * plane the strip folds by nothing, over an edge by the surface's angle. Each piece of the strip
+ * laid lands over all the paper it overlaps: the tour lays paper only on top.
  */
 public final class HingeStrip {
     private HingeStrip() {
@@ -97,7 +98,7 @@ public final class HingeStrip {
                 || END.equals(detail);
     }
 
-    /** The path's triangles, a pass each, and the hosts: rectangles of whole squares. */
+    /** The path's triangles, a pass each, and the hosts: a square each. */
     static final class Layout {
         final PolygonSoup mesh = new PolygonSoup();
         /** Per triangle (pass): its host. */
@@ -157,61 +158,20 @@ public final class HingeStrip {
             return Math.sqrt(Wrap.sq(max[0] - min[0]) + Wrap.sq(max[1] - min[1]) + Wrap.sq(max[2] - min[2]));
         }
 
-        /** A host a square, framed on its corners 0, 1, 2. */
+        /** A host a square, framed on its corners 0, 1, 2, its four corners counter-clockwise from outside. */
         private List<HostFrame> squareHosts() {
             List<HostFrame> hosts = new ArrayList<>();
             for (int q = 0; q < squares.count(); q++) {
                 hostOfSquare[q] = q;
-                hosts.add(frame(q, 1, 1));
+                HostFrame onEdge = HostFrame.onEdge(point(q, 0), point(q, 1), point(q, 2));
+                double[] xy = new double[8];
+                for (int k = 0; k < 4; k++) {
+                    xy[2 * k] = onEdge.localX(point(q, k));
+                    xy[2 * k + 1] = onEdge.localY(point(q, k));
+                }
+                hosts.add(new HostFrame(onEdge.origin(), onEdge.ex(), onEdge.ey(), onEdge.normal(), xy));
             }
             return hosts;
-        }
-
-        /**
-         * The frame of the rectangle of {@code across} × {@code up} squares from q: on q's first
-         * corners, its own four corners counter-clockwise from outside.
-         */
-        private HostFrame frame(int q, int across, int up) {
-            int[] c = cell(q);
-            int[][] cells = {{c[0], c[1]}, {c[0] + across, c[1]}, {c[0] + across, c[1] + up}, {c[0], c[1] + up}};
-            double[][] corner = new double[4][];
-            for (int k = 0; k < 4; k++) {
-                corner[k] = space(q, cells[squares.sign(q) > 0 ? k : 3 - k]);
-            }
-            HostFrame onEdge = HostFrame.onEdge(corner[0], corner[1], corner[2]);
-            double[] xy = new double[8];
-            for (int k = 0; k < 4; k++) {
-                xy[2 * k] = onEdge.localX(corner[k]);
-                xy[2 * k + 1] = onEdge.localY(corner[k]);
-            }
-            return new HostFrame(onEdge.origin(), onEdge.ex(), onEdge.ey(), onEdge.normal(), xy);
-        }
-
-        /** The point of q's plane at lattice cell coordinates (i, j) along its plane's two axes. */
-        private double[] space(int q, int[] ij) {
-            int a = squares.axis(q);
-            int u = (a + 1) % 3;
-            int v = (a + 2) % 3;
-            double spacing = squares.spacing();
-            double[] p = point(q, 0);
-            p[u] += (ij[0] - squares.latticeCorner(q, 0, u)) * spacing;
-            p[v] += (ij[1] - squares.latticeCorner(q, 0, v)) * spacing;
-            return p;
-        }
-
-        /**
-         * Square q's cell in its plane: its smallest lattice coordinates along the plane's two
-         * axes (after its normal's axis, in turn).
-         */
-        private int[] cell(int q) {
-            int a = squares.axis(q);
-            int i = Integer.MAX_VALUE;
-            int j = Integer.MAX_VALUE;
-            for (int k = 0; k < 4; k++) {
-                i = Math.min(i, squares.latticeCorner(q, k, (a + 1) % 3));
-                j = Math.min(j, squares.latticeCorner(q, k, (a + 2) % 3));
-            }
-            return new int[] {i, j};
         }
     }
 
