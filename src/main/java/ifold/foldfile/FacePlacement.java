@@ -104,6 +104,15 @@ final class FacePlacement {
         /** A hinge between faces f and g, both reached already (f the lower): one the tree leaves out, or a tree's seen again. */
         default void joins(int f, int g, int a, int b) {
         }
+
+        /**
+         * Face g starts another piece of paper, which no hinge joins to those before (a wrap's
+         * second strip): refused, unless the walk places pieces apart.
+         */
+        default void root(int g) throws CreasePattern.Refused {
+            throw new CreasePattern.Refused("face " + g + " is joined to face 0 by no crease or flat edge: iFold folds one piece of"
+                    + " paper here");
+        }
     }
 
     /**
@@ -116,8 +125,22 @@ final class FacePlacement {
         Map<Long, int[]> sides = sides(faces);
         boolean[] reached = new boolean[faces.length];
         ArrayDeque<Integer> queue = new ArrayDeque<>();
-        reached[0] = true;
-        queue.add(0);
+        for (int root = 0; root < faces.length; root++) {
+            if (reached[root]) {
+                continue;
+            }
+            if (root > 0) {
+                walk.root(root);
+            }
+            reached[root] = true;
+            queue.add(root);
+            walkFrom(faces, edgeOf, hingeable, walk, sides, reached, queue);
+        }
+    }
+
+    /** The breadth-first walk from the faces queued, over the hinges, to every face they reach. */
+    private static void walkFrom(int[][] faces, Map<Long, Integer> edgeOf, boolean[] hingeable, Walk walk, Map<Long, int[]> sides,
+            boolean[] reached, ArrayDeque<Integer> queue) throws CreasePattern.Refused {
         while (!queue.isEmpty()) {
             int f = queue.poll();
             int[] loop = faces[f];
@@ -138,12 +161,6 @@ final class FacePlacement {
                 reached[g] = true;
                 walk.reached(g, f, a, b, edge == null ? -1 : edge);
                 queue.add(g);
-            }
-        }
-        for (int f = 0; f < faces.length; f++) {
-            if (!reached[f]) {
-                throw new CreasePattern.Refused("face " + f + " is joined to face 0 by no crease or flat edge: iFold folds one piece of"
-                        + " paper");
             }
         }
     }
@@ -289,22 +306,36 @@ final class FacePlacement {
     static List<Hinge> hingesOf(double[][] uv, int[][] faces, Rigid[] motion, Map<Long, Integer> edgeOf, boolean[] hingeable,
             int[] flatSign) throws CreasePattern.Refused {
         List<Hinge> hinges = new ArrayList<>();
-        walk(faces, edgeOf, hingeable, (g, f, a, b, edge) -> {
-            // The paper's normal as each face carries it: the turn between them about the edge.
-            double[] up = {0, 0, 1};
-            double[] nf = motion[f].turn(up);
-            double[] ng = motion[g].turn(up);
-            double[] axisPaper = unit(new double[] {uv[b][0] - uv[a][0], uv[b][1] - uv[a][1], 0});
-            double[] axis = motion[f].turn(axisPaper);
-            double angle = Math.atan2(dot(cross(nf, ng), axis), dot(nf, ng));
-            // The sense about the edge as the hinge turns the face (its side of the edge).
-            angle *= sense(uv, faces[g], a, b);
-            if (Math.PI - Math.abs(angle) < 1e-9) {
-                angle = (edge >= 0 && flatSign[edge] < 0) ? -Math.PI : Math.PI;
+        walk(faces, edgeOf, hingeable, new Walk() {
+            @Override
+            public void root(int g) {
+                // Another piece (a wrap's next strip): where the folded state puts it, a root of its own.
+                hinges.add(new Hinge(g, -1, -1, -1, 0, -1));
             }
-            hinges.add(new Hinge(g, f, a, b, angle, edge));
+
+            @Override
+            public void reached(int g, int f, int a, int b, int edge) {
+                hinges.add(hingeOf(uv, faces, motion, flatSign, g, f, a, b, edge));
+            }
         });
         return hinges;
+    }
+
+    /** The hinge by which face g is reached from face f across paper edge (a, b): the turn between their placements about it. */
+    private static Hinge hingeOf(double[][] uv, int[][] faces, Rigid[] motion, int[] flatSign, int g, int f, int a, int b, int edge) {
+        // The paper's normal as each face carries it: the turn between them about the edge.
+        double[] up = {0, 0, 1};
+        double[] nf = motion[f].turn(up);
+        double[] ng = motion[g].turn(up);
+        double[] axisPaper = unit(new double[] {uv[b][0] - uv[a][0], uv[b][1] - uv[a][1], 0});
+        double[] axis = motion[f].turn(axisPaper);
+        double angle = Math.atan2(dot(cross(nf, ng), axis), dot(nf, ng));
+        // The sense about the edge as the hinge turns the face (its side of the edge).
+        angle *= sense(uv, faces[g], a, b);
+        if (Math.PI - Math.abs(angle) < 1e-9) {
+            angle = (edge >= 0 && flatSign[edge] < 0) ? -Math.PI : Math.PI;
+        }
+        return new Hinge(g, f, a, b, angle, edge);
     }
 
     /**

@@ -257,6 +257,10 @@ public final class FoldedForm {
         List<Hinge> motionHinges = new ArrayList<>();
         motionHinges.add(new Hinge(number[0], -1, 0, 0, 1, 0, 0));
         for (FacePlacement.Hinge h : hinges) {
+            if (h.parent() < 0) {
+                motionHinges.add(new Hinge(number[h.face()], -1, 0, 0, 1, 0, 0)); // another piece's first face
+                continue;
+            }
             motionHinges.add(new Hinge(number[h.face()], number[h.parent()], uv[h.a()][0], uv[h.a()][1], uv[h.b()][0] - uv[h.a()][0],
                     uv[h.b()][1] - uv[h.a()][1], h.angle() * FacePlacement.sense(uv, faces[h.face()], h.a(), h.b())));
         }

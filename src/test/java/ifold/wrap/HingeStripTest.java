@@ -64,6 +64,27 @@ class HingeStripTest {
         check(name, mesh(cubes));
     }
 
+    /** Two solids apart: a strip each, and their FOLD file, two pieces of paper, folds back (it had been refused as one piece). */
+    @org.junit.jupiter.api.Test
+    void twoSolidsTakeAStripEachAndTheirFileFoldsBack() throws Exception {
+        HalfedgeMesh mesh = mesh(List.of(new int[] {0, 0, 0}, new int[] {3, 0, 0}));
+        GridSquares squares = GridSquares.of(mesh, Double.NaN);
+        assertEquals(2, squares.components(), "setup: two pieces");
+        Wrap.Result result = HingeStrip.wrap(squares, HingeTour.of(squares), Double.NaN, Wrap.DEFAULT_MAX_FACES, Wrap.Watcher.NONE);
+        assertEquals(2, result.strips().size());
+        List<ifold.foldfile.FoldFile.Folded> sheets = new ArrayList<>();
+        int faces = 0;
+        for (Wrap.Strip strip : result.strips()) {
+            sheets.add(new ifold.foldfile.FoldFile.Folded(strip.sheet(), result.frames()));
+            faces += strip.sheet().faceCount();
+        }
+        Path fold = dir.resolve("two.fold");
+        ifold.foldfile.FoldFile.write(fold, "test", sheets);
+        ifold.job.ScriptJob.Outcome back = ifold.job.ScriptJob.run(fold, Wrap.DEFAULT_MAX_FACES, stage -> { });
+        assertEquals(faces, back.figures().get("faces"));
+        assertEquals(2, back.figures().get("maxLayers"));
+    }
+
     /** A surface of genus 1 (the shared square frame, 720 squares of 0.2): the tour needs only a closed surface. */
     @org.junit.jupiter.api.Test
     void aFrameOfGenusOneIsWrappedToo() throws Exception {
