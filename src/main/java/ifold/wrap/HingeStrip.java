@@ -69,8 +69,7 @@ public final class HingeStrip {
                     + "makes %d faces of paper, more than the limit of %d", tour.passes(), squares.count(), faces,
                     maxFaces));
         }
-        double size = layout.size();
-        double tolerance = Tolerance.ON_PLANE * size;
+        double tolerance = Tolerance.ON_PLANE * Wrap.modelSize(layout.mesh);
         HostFrame[] frames = BendRoom.of(layout.mesh, layout.hostOf, layout.frames, tolerance);
         List<Strip> strips = new ArrayList<>();
         List<Step> steps = new ArrayList<>();
@@ -143,19 +142,6 @@ public final class HingeStrip {
         double[] point(int q, int k) {
             int corner = k % 4;
             return new double[] {squares.corner(q, corner, 0), squares.corner(q, corner, 1), squares.corner(q, corner, 2)};
-        }
-
-        /** The model's size: its bounding box's diagonal. */
-        double size() {
-            double[] min = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
-            double[] max = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
-            for (int v = 0; v < mesh.vertexCount(); v++) {
-                for (int a = 0; a < 3; a++) {
-                    min[a] = Math.min(min[a], mesh.coordinate(v, a));
-                    max[a] = Math.max(max[a], mesh.coordinate(v, a));
-                }
-            }
-            return Math.sqrt(Wrap.sq(max[0] - min[0]) + Wrap.sq(max[1] - min[1]) + Wrap.sq(max[2] - min[2]));
         }
 
         /** A host a square, framed on its corners 0, 1, 2, its four corners counter-clockwise from outside. */

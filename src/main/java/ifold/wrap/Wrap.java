@@ -607,7 +607,8 @@ public final class Wrap {
         return across;
     }
 
-    private static double modelSize(IndexedPolygons mesh) {
+    /** The model's size: its bounding box's diagonal (at least 1e-300). */
+    static double modelSize(IndexedPolygons mesh) {
         double[] min = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
         double[] max = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
         for (int v = 0; v < mesh.vertexCount(); v++) {
