@@ -37,14 +37,54 @@ public final class Main implements Runnable {
     /** Set once main has its exit code: a shutdown before that is a signal's (Ctrl-C, SIGTERM, SIGHUP). */
     private static volatile boolean ended;
 
+    /** The status a signal stops the JVM with (128 + its number), once one has; else 0. */
+    private static volatile int stopStatus;
+
+    /** How long the shutdown hooks of a signalled run may take before the process halts anyway. */
+    private static final long HANG_MILLIS = 5_000;
+
     /**
      * Ctrl-C, SIGTERM or SIGHUP stop the JVM with 130, 143 or 129 and run the shutdown hooks,
      * which take back every unfinished file ({@link AtomicFile}): one line then says what was
      * left. The launcher execs the JVM, so that the signal reaches it as sent.
      */
     private static void sayWhenInterrupted(PrintWriter err) {
+        // A signal stops the JVM while the command's thread runs on: what then fails under it
+        // (a renderer whose display its own shutdown hook closed) is the signal's doing, and says
+        // nothing; one line says what was left. Failures outside a shutdown are reported as ever.
+        Thread.setDefaultUncaughtExceptionHandler((thread, failure) -> {
+            if (shuttingDown()) {
+                return;
+            }
+            System.err.print("Exception in thread \"" + thread.getName() + "\" ");
+            failure.printStackTrace();
+        });
+        // The signals handled as the JVM would (exit with 128 + the signal's number, running the
+        // shutdown hooks), but with their number known: where a hook hangs (JOGL's, when the signal
+        // comes while OpenGL starts up, waits for ever on its own shared-resource thread), the
+        // process still ends, with that status, a few seconds on.
+        for (String name : new String[] {"INT", "TERM", "HUP"}) {
+            try {
+                sun.misc.Signal.handle(new sun.misc.Signal(name), signal -> {
+                    stopStatus = 128 + signal.getNumber();
+                    System.exit(stopStatus);
+                });
+            } catch (IllegalArgumentException e) {
+                // Ignored where the process was started (nohup's SIGHUP): the JVM leaves it so too.
+            }
+        }
         Runtime.getRuntime().addShutdownHook(new Thread(() -> {
             if (!ended) {
+                Thread halt = new Thread(() -> {
+                    try {
+                        Thread.sleep(HANG_MILLIS);
+                    } catch (InterruptedException e) {
+                        return;
+                    }
+                    Runtime.getRuntime().halt(stopStatus > 0 ? stopStatus : 1);
+                }, "halt a hung shutdown");
+                halt.setDaemon(true);
+                halt.start();
                 List<java.nio.file.Path> kept = AtomicFile.written();
                 // Whole frames of a sequence stay (each was renamed into place whole): say how many, not each.
                 err.println("ifold: interrupted: " + (kept.isEmpty() ? "nothing written"
@@ -53,6 +93,18 @@ public final class Main implements Runnable {
                 err.flush();
             }
         }, "say interrupted"));
+    }
+
+    /** Whether the JVM is shutting down: it then refuses a new shutdown hook. */
+    private static boolean shuttingDown() {
+        Thread probe = new Thread(() -> { });
+        try {
+            Runtime.getRuntime().addShutdownHook(probe);
+            Runtime.getRuntime().removeShutdownHook(probe);
+            return false;
+        } catch (IllegalStateException e) {
+            return true;
+        }
     }
 
     /** The subcommands, by name, in the order help lists them. */

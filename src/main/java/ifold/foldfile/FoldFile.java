@@ -46,7 +46,9 @@ import java.util.Map;
  * place: FOLD orders them by {@code faceOrders}, [f, g, s] with
  * s = +1 where face f lies on the side g's normal points to); the paper's thickness in
  * {@code frame_ifold:thickness} and each face's level in its stack in {@code faces_ifold:level},
- * from which its height above its plane is (level + ½) × thickness.
+ * from which its height above its plane is (level + ½) × thickness, on the side of each face that
+ * {@code faces_ifold:facing} says is out (+1: the side its own normal points to, its corners
+ * counter-clockwise on the paper; -1: the other).
  *
  * <p>Written with jackson-core's streaming generator: every number is the shortest decimal that
  * reads back as the same double. Written under a temporary name and renamed when whole.
@@ -442,6 +444,16 @@ public final class FoldFile {
             for (int[] level : levels) {
                 for (int l : level) {
                     json.writeNumber(l);
+                }
+            }
+            json.writeEndArray();
+            // Which side of each face is out, away from what it rests on: a folded state without
+            // thickness cannot say (paper turned over, and paper on two sides of one plane, look alike).
+            json.writeFieldName("faces_ifold:facing");
+            json.writeStartArray();
+            for (Folded folded : sheets) {
+                for (int f = 0; f < folded.sheet().faceCount(); f++) {
+                    json.writeNumber(folded.sheet().pose(f).mirrors() ? -1 : 1);
                 }
             }
             json.writeEndArray();

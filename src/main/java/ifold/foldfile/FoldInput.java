@@ -23,6 +23,9 @@ import java.util.Map;
  * @param folded the folded state's vertices (3 numbers each), or null where the file holds none
  * @param foldedOrders the folded state's face orders, or an empty list
  * @param levels each face's level in its stack ({@code faces_ifold:level}), or null
+ * @param facing each face's side out, +1 where its own normal (its corners counter-clockwise on
+ *     the paper) points away from the surface it rests on, -1 where towards
+ *     ({@code faces_ifold:facing}), or null
  * @param thickness the paper's ({@code frame_ifold:thickness}), or NaN
  * @param foldedForm whether the key frame says it is a folded form ({@code frame_classes}), its
  *     vertices where the paper lies folded even where they are 2D (a flat folded state)
@@ -30,8 +33,8 @@ import java.util.Map;
  *     vertices lie on the paper), or null
  */
 record FoldInput(double[][] vertices, boolean flat, int[][] edges, char[] assignments, double[] angles, int[][] faces,
-        List<int[]> faceOrders, double[][] folded, List<int[]> foldedOrders, int[] levels, double thickness, boolean foldedForm,
-        double[][] unfolded) {
+        List<int[]> faceOrders, double[][] folded, List<int[]> foldedOrders, int[] levels, int[] facing, double thickness,
+        boolean foldedForm, double[][] unfolded) {
 
     /** The most vertices, edges or faces read: beyond, a file is refused before it fills memory. */
     static final int MOST_ITEMS = 2_000_000;
@@ -86,6 +89,7 @@ record FoldInput(double[][] vertices, boolean flat, int[][] edges, char[] assign
         double[][] folded = null;
         List<int[]> foldedOrders = List.of();
         int[] levels = null;
+        int[] facing = null;
         double thickness = Double.NaN;
         if (fold.containsKey("frame_ifold:thickness")) {
             if (!(fold.get("frame_ifold:thickness") instanceof Number t) || !(t.doubleValue() >= 0) || !Double.isFinite(t.doubleValue())) {
@@ -113,6 +117,16 @@ record FoldInput(double[][] vertices, boolean flat, int[][] edges, char[] assign
                         }
                     }
                     foldedOrders = orders(state, faces.length);
+                    if (state.get("faces_ifold:facing") instanceof List<?> sides && sides.size() == faces.length) {
+                        facing = new int[faces.length];
+                        for (int f = 0; f < facing.length; f++) {
+                            if (!(sides.get(f) instanceof Number side) || Math.abs(side.doubleValue()) != 1) {
+                                throw new CreasePattern.Refused("file_frames: faces_ifold:facing gives face " + f + " " + text(sides.get(f))
+                                        + ", not 1 or -1");
+                            }
+                            facing[f] = side.intValue();
+                        }
+                    }
                     if (state.get("faces_ifold:level") instanceof List<?> given && given.size() == faces.length) {
                         levels = new int[faces.length];
                         for (int f = 0; f < levels.length; f++) {
@@ -137,8 +151,8 @@ record FoldInput(double[][] vertices, boolean flat, int[][] edges, char[] assign
                         n));
             }
         }
-        return new FoldInput(vertices, flat, edges, assignments, angles, faces, faceOrders, folded, foldedOrders, levels, thickness,
-                foldedForm, unfolded);
+        return new FoldInput(vertices, flat, edges, assignments, angles, faces, faceOrders, folded, foldedOrders, levels, facing,
+                thickness, foldedForm, unfolded);
     }
 
     private static List<?> list(Map<String, Object> fold, String key, int size) throws CreasePattern.Refused {

@@ -221,7 +221,7 @@ public final class FoldedForm {
         }
         // The planes the faces lie on, each a host.
         List<HostFrame> frames = new ArrayList<>();
-        int[] hostOf = hosts(uv, faces, motion, frames, tolerance);
+        int[] hostOf = hosts(uv, faces, motion, in.facing(), frames, tolerance);
         if (bottomUp == null) {
             bottomUp = orderFromFile(faces.length, orders, motion, hostOf, frames);
         }
@@ -383,12 +383,20 @@ public final class FoldedForm {
      * whichever way a face on it looks, in a grid of cells a thousand tolerances wide, each face
      * compared with the planes in its cell and the cells around.
      */
-    private static int[] hosts(double[][] uv, int[][] faces, FacePlacement.Rigid[] motion, List<HostFrame> frames, double tolerance) {
+    private static int[] hosts(double[][] uv, int[][] faces, FacePlacement.Rigid[] motion, int[] facing, List<HostFrame> frames,
+            double tolerance) {
         int[] hostOf = new int[faces.length];
         Map<List<Long>, List<Integer>> cells = new HashMap<>();
         double cell = 1000 * tolerance;
         for (int f = 0; f < faces.length; f++) {
             double[] normal = motion[f].turn(new double[] {0, 0, 1});
+            // Where the file says which side is out, faces of one plane looking out opposite ways
+            // (under an overhang and on a column's top of one height) rest on two hosts, each with
+            // its layers on its own side; without, on one, whichever way its first face looks.
+            boolean sided = facing != null;
+            if (sided && facing[f] < 0) {
+                normal = FacePlacement.scale(normal, -1);
+            }
             double[] origin = motion[f].apply(uv[faces[f][0]][0], uv[faces[f][0]][1], 0);
             double[] nearest = FacePlacement.scale(normal, FacePlacement.dot(normal, origin));
             long[] at = {(long) Math.floor(nearest[0] / cell), (long) Math.floor(nearest[1] / cell), (long) Math.floor(nearest[2] / cell)};
@@ -399,7 +407,8 @@ public final class FoldedForm {
                     for (long dz = -1; dz <= 1; dz++) {
                         for (int h : cells.getOrDefault(List.of(at[0] + dx, at[1] + dy, at[2] + dz), List.of())) {
                             HostFrame frame = frames.get(h);
-                            if (Math.abs(FacePlacement.dot(frame.normal(), normal)) > 1 - 1e-9
+                            double along = FacePlacement.dot(frame.normal(), normal);
+                            if ((sided ? along : Math.abs(along)) > 1 - 1e-9
                                     && Math.abs(FacePlacement.dot(frame.normal(), FacePlacement.sub(origin, frame.origin()))) <= tolerance) {
                                 host = h;
                                 break search;
@@ -410,8 +419,8 @@ public final class FoldedForm {
             }
             if (host < 0) {
                 host = frames.size();
-                frames.add(new HostFrame(origin, motion[f].turn(new double[] {1, 0, 0}), motion[f].turn(new double[] {0, 1, 0}), normal,
-                        new double[6]));
+                double[] ex = motion[f].turn(new double[] {1, 0, 0});
+                frames.add(new HostFrame(origin, ex, FacePlacement.cross(normal, ex), normal, new double[6]));
                 cells.computeIfAbsent(List.of(at[0], at[1], at[2]), k -> new ArrayList<>()).add(host);
             }
             hostOf[f] = host;

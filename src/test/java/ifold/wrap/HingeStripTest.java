@@ -83,6 +83,11 @@ class HingeStripTest {
         ifold.job.ScriptJob.Outcome back = ifold.job.ScriptJob.run(fold, Wrap.DEFAULT_MAX_FACES, stage -> { });
         assertEquals(faces, back.figures().get("faces"));
         assertEquals(2, back.figures().get("maxLayers"));
+        // Its thick layers on the side the file says is out (faces_ifold:facing): none crosses
+        // (without it, each plane's layers stood on its first face's side, 180 pairs crossing).
+        ifold.check.PaperCollisions.Result collisions = ifold.job.Collisions.forScene(List.of(back.folded()), result.thickness(),
+                new ifold.mesh.PolygonSoup());
+        assertTrue(collisions.isClean(), collisions.summary());
     }
 
     /** A surface of genus 1 (the shared square frame, 720 squares of 0.2): the tour needs only a closed surface. */
