@@ -120,7 +120,7 @@ class HingeStripTest {
         Path obj = dir.resolve("hinge.obj");
         WrapExport.writeObj(obj, "test", result, geometries);
         WrapTruths truths = WrapTruths.read(Files.readString(obj));
-        List<double[]> triangles = triangles(mesh);
+        List<double[]> triangles = WrapTest.triangles(mesh);
         List<WrapTruths.Violation> all = truths.check(triangles, result.thickness(), analysis.stackLevels(), 2000, 7);
         // The random polycube has vertices where an edge of the surface runs on from convex to
         // concave (x = 2, y = 2 of seed 1, round z = -2): there corners of thick paper come nearer
@@ -173,7 +173,7 @@ class HingeStripTest {
         Path obj = dir.resolve("cube.obj");
         WrapExport.writeObj(obj, "test", result, geometries);
         String text = Files.readString(obj);
-        List<double[]> triangles = triangles(mesh);
+        List<double[]> triangles = WrapTest.triangles(mesh);
         double t = result.thickness();
         assertTrue(WrapTruths.read(text).check(triangles, t, 2, 2000, 7).isEmpty(), "setup: the wrap keeps every truth");
         // The apex of a bend: a cap's edge that another cap, sharing no vertex, runs along too.
@@ -263,20 +263,6 @@ class HingeStripTest {
 
     private static boolean near(double[] a, double[] b) {
         return Math.abs(a[0] - b[0]) + Math.abs(a[1] - b[1]) + Math.abs(a[2] - b[2]) < 1e-9;
-    }
-
-    private static List<double[]> triangles(HalfedgeMesh mesh) {
-        List<double[]> triangles = new ArrayList<>();
-        for (int f = 0; f < mesh.faceCount(); f++) {
-            double[] t = new double[9];
-            for (int k = 0; k < 3; k++) {
-                for (int axis = 0; axis < 3; axis++) {
-                    t[3 * k + axis] = mesh.coordinate(mesh.faceVertex(f, k), axis);
-                }
-            }
-            triangles.add(t);
-        }
-        return triangles;
     }
 
     static HalfedgeMesh mesh(List<int[]> cubes) throws Exception {

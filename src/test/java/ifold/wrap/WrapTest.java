@@ -65,16 +65,7 @@ public class WrapTest {
         Path obj = dir.resolve("wrap.obj");
         WrapExport.writeObj(obj, "test", result, geometries);
         WrapTruths truths = WrapTruths.read(Files.readString(obj));
-        List<double[]> triangles = new ArrayList<>();
-        for (int f = 0; f < model.faceCount(); f++) {
-            double[] t = new double[9];
-            for (int k = 0; k < 3; k++) {
-                for (int axis = 0; axis < 3; axis++) {
-                    t[3 * k + axis] = model.coordinate(model.faceVertex(f, k), axis);
-                }
-            }
-            triangles.add(t);
-        }
+        List<double[]> triangles = triangles(model);
         List<WrapTruths.Violation> violations = truths.check(triangles, result.thickness(), analysis.stackLevels(), samples, 7);
         assertTrue(violations.isEmpty(), () -> violations.size() + " violations, the first: " + violations.subList(0, Math.min(5, violations.size())));
         // The report agrees with the file.
@@ -123,6 +114,21 @@ public class WrapTest {
         }
         assertTrue(order.layered() > 0 || truths.strips() == 0, "setup: layers were found");
         assertTrue(order.valid(), order::summary);
+    }
+
+    /** The model's triangles, nine numbers each, as the checker takes them. */
+    static List<double[]> triangles(IndexedPolygons model) {
+        List<double[]> triangles = new ArrayList<>();
+        for (int f = 0; f < model.faceCount(); f++) {
+            double[] t = new double[9];
+            for (int k = 0; k < 3; k++) {
+                for (int axis = 0; axis < 3; axis++) {
+                    t[3 * k + axis] = model.coordinate(model.faceVertex(f, k), axis);
+                }
+            }
+            triangles.add(t);
+        }
+        return triangles;
     }
 
     private static HalfedgeMesh build(PolygonSoup soup) throws Exception {

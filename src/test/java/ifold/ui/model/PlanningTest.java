@@ -197,6 +197,9 @@ class PlanningTest {
         JobFailure slanted = assertThrows(JobFailure.class, () -> Planning.plan(new Job.WrapModel(Path.of("models", "tetrahedron.off"),
                 "", "", "", false, ifold.wrap.Wrap.Method.HINGE), Progress.NONE));
         assertTrue(slanted.getMessage().contains("is not square to the axes"), slanted.getMessage());
+        Run typo = cli("wrap", cube.toString(), "--no-view", "--method", "hing");
+        assertEquals(2, typo.code());
+        assertTrue(typo.err().startsWith("ifold: invalid value for option '--method': 'hing' (zigzag or hinge)"), typo.err());
         Run refused = cli("wrap", "models/tetrahedron.off", "--no-view", "--method", "hinge");
         assertEquals(1, refused.code());
         assertEquals("ifold: " + slanted.getMessage(), refused.err().strip());
