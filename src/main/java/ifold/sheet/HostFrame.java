@@ -27,8 +27,29 @@ import ifold.geom.Tolerance;
  *     line, on this side of the plane that halves the wedge of air above the edge (the mitre),
  *     where the paper of the host across keeps to the other side. An edge of a host can be
  *     concave in part only (a low block beside a tall one). Null where no edge is concave.
+ * @param stops where a convex stretch of an edge ends at a corner of the surface with a face
+ *     across it that rises in the way of paper bent over the edge ({@link Stop}); null where none
  */
-public record HostFrame(double[] origin, double[] ex, double[] ey, double[] normal, double[] corners, double[] room, double[][] mitre) {
+public record HostFrame(double[] origin, double[] ex, double[] ey, double[] normal, double[] corners, double[] room, double[][] mitre,
+        Stop[] stops) {
+
+    /**
+     * The end of a convex stretch of edge {@code edge} at a corner of the surface where a face
+     * across the corner (host {@code wall}) lies in the wedge of air over the edge: where a convex
+     * edge of a polycube runs on as a concave one, or runs into a wall. Paper bent over the edge
+     * there would run into that face's layers; so paper on the edge's line keeps from the corner,
+     * along the edge, as far as that face's stack is high times {@code slope} (1 where the edge
+     * leaves the face square to it; 1/cos of the angle between the edge and the face's normal).
+     *
+     * @param edge the edge of the corners' polygon
+     * @param at where the stretch ends: its distance along the edge from the edge's first corner
+     * @param toward +1 where the stretch runs on from there towards the edge's second corner, -1
+     *     towards its first
+     * @param wall the host of the face across the corner
+     * @param slope how far along the edge paper keeps per height of that face's stack
+     */
+    public record Stop(int edge, double at, double toward, int wall, double slope) {
+    }
 
     /*
      * A wrap's path triangle has a frame of its own: its exit edge from the origin along the x
@@ -55,7 +76,7 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
 
     /** A frame whose edges limit no bend. */
     public HostFrame(double[] origin, double[] ex, double[] ey, double[] normal, double[] corners) {
-        this(origin, ex, ey, normal, corners, null, null);
+        this(origin, ex, ey, normal, corners, null, null, null);
     }
 
     /** This frame with {@code room} beyond its edges and the {@code mitre} of each (see the record's description; either may be null). */
@@ -64,7 +85,63 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
             throw new IllegalArgumentException("edges given for " + (room != null ? room.length : mitre.length) + " edges, the polygon has "
                     + corners.length / 2);
         }
-        return new HostFrame(origin, ex, ey, normal, corners, room, mitre);
+        return new HostFrame(origin, ex, ey, normal, corners, room, mitre, stops);
+    }
+
+    /** This frame with the {@code stops} of its edges (see {@link Stop}; null for none). */
+    public HostFrame withStops(Stop[] stops) {
+        for (Stop stop : stops == null ? new Stop[0] : stops) {
+            if (stop.edge() < 0 || stop.edge() >= corners.length / 2) {
+                throw new IllegalArgumentException("a stop on edge " + stop.edge() + " of a polygon of " + corners.length / 2 + " edges");
+            }
+        }
+        return new HostFrame(origin, ex, ey, normal, corners, room, mitre, stops);
+    }
+
+    /**
+     * Moves frame point {@code point} (x, y), an end of a crease over an edge (its paper running
+     * on to the points {@code over}, x, y pairs, across it), along the edge to where a {@link
+     * Stop} keeps such paper, where it lies on the edge's line within {@code tolerance} nearer
+     * the stop than that: {@code wallTop[h]} is how high the stack of host h stands. Paper on the
+     * edge that does not go over it (its crease runs along another edge) stays.
+     *
+     * @return whether it moved
+     */
+    public boolean stopped(double[] wallTop, double tolerance, double[] over, double[] point) {
+        if (stops == null || over == null) {
+            return false;
+        }
+        boolean moved = false;
+        for (Stop stop : stops) {
+            double keep = wallTop[stop.wall()] * stop.slope();
+            if (!(keep > 0)) {
+                continue;
+            }
+            double[] edge = edge(stop.edge());
+            double tx = edge[2] / edge[4];
+            double ty = edge[3] / edge[4];
+            double off = (point[0] - edge[0]) * -ty + (point[1] - edge[1]) * tx;
+            double s = (point[0] - edge[0]) * tx + (point[1] - edge[1]) * ty;
+            double from = (s - stop.at()) * stop.toward();
+            if (Math.abs(off) > tolerance || from < -tolerance || from >= keep || !anyOnLine(over, edge, tolerance)) {
+                continue;
+            }
+            double to = stop.at() + stop.toward() * keep;
+            point[0] += (to - s) * tx;
+            point[1] += (to - s) * ty;
+            moved = true;
+        }
+        return moved;
+    }
+
+    /** Whether any of the points (x, y pairs) lies on the line of {@code edge} ({@link #edge}) within {@code tolerance}. */
+    private static boolean anyOnLine(double[] points, double[] edge, double tolerance) {
+        for (int i = 0; i + 1 < points.length; i += 2) {
+            if (Math.abs((points[i] - edge[0]) * edge[3] - (points[i + 1] - edge[1]) * edge[2]) / edge[4] <= tolerance) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /**

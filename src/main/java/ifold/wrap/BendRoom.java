@@ -22,6 +22,12 @@ import java.util.Map;
  * neighbour's surface rises towards the paper, and this limit does not apply (mitred concave
  * edges are a matter of the flat paper itself): the bend keeps its 45 degrees there, as it does
  * where no host lies across (the border of an open surface).
+ *
+ * <p>Where a convex edge ends at a corner of the surface that has a face across it in the wedge
+ * of air over the edge (a polycube's convex edge running on as a concave one, or into a wall),
+ * paper bent over the edge would run into that face's layers: the edge's hosts get a {@link
+ * HostFrame.Stop} there, and the paper on the edge keeps from the corner as far as that face's
+ * stack is high.
  */
 final class BendRoom {
     private BendRoom() {
@@ -51,6 +57,11 @@ final class BendRoom {
             mitre.add(edges);
         }
         Map<Long, Integer> firstSide = new HashMap<>();
+        List<List<HostFrame.Stop>> stops = new ArrayList<>();
+        for (int h = 0; h < frames.length; h++) {
+            stops.add(new ArrayList<>());
+        }
+        List<List<Integer>> facesAt = facesAt(mesh);
         for (int t = 0; t < mesh.faceCount(); t++) {
             int n = mesh.faceSize(t);
             for (int k = 0; k < n; k++) {
@@ -63,6 +74,10 @@ final class BendRoom {
                 } else if (hostOf[other] != hostOf[t]) {
                     limit(mesh, u, v, other, t, hostOf, frames, room, mitre, tolerance);
                     limit(mesh, u, v, t, other, hostOf, frames, room, mitre, tolerance);
+                    if (convex(frames[hostOf[other]], mesh, t, tolerance)) {
+                        stop(mesh, facesAt, u, v, other, t, hostOf, frames, stops, tolerance);
+                        stop(mesh, facesAt, v, u, other, t, hostOf, frames, stops, tolerance);
+                    }
                 }
             }
         }
@@ -77,9 +92,134 @@ final class BendRoom {
                     concave = true;
                 }
             }
-            limited[h] = frames[h].withEdges(room[h], concave ? stretches : null);
+            limited[h] = frames[h].withEdges(room[h], concave ? stretches : null)
+                    .withStops(stops.get(h).isEmpty() ? null : stops.get(h).toArray(new HostFrame.Stop[0]));
         }
         return limited;
+    }
+
+    /** The faces round each vertex of the mesh. */
+    private static List<List<Integer>> facesAt(IndexedPolygons mesh) {
+        List<List<Integer>> at = new ArrayList<>();
+        for (int v = 0; v < mesh.vertexCount(); v++) {
+            at.add(new ArrayList<>(6));
+        }
+        for (int t = 0; t < mesh.faceCount(); t++) {
+            for (int k = 0; k < mesh.faceSize(t); k++) {
+                at.get(mesh.faceVertex(t, k)).add(t);
+            }
+        }
+        return at;
+    }
+
+    /** Whether triangle {@code far} turns away below the plane of {@code near}: a convex edge between them, not a flat one. */
+    private static boolean convex(HostFrame near, IndexedPolygons mesh, int far, double tolerance) {
+        boolean below = false;
+        for (int k = 0; k < mesh.faceSize(far); k++) {
+            double height = near.height(position(mesh, mesh.faceVertex(far, k)));
+            if (height > tolerance) {
+                return false;
+            }
+            below |= height < -tolerance;
+        }
+        return below;
+    }
+
+    /** The least cosine between a convex edge and the normal of a face it leaves that stops paper on it: steeper faces need no stop. */
+    private static final double LEAST_COSINE = 0.1;
+
+    /**
+     * The stops at corner {@code at} of the convex mesh edge from there to {@code to} between
+     * triangles {@code a} and {@code b}: a face round the corner, of a third host, whose plane
+     * the edge leaves on its outer side, and over which the wedge of air above the edge lies
+     * (the point a little out from the corner between the two faces' normals falls on it).
+     */
+    private static void stop(IndexedPolygons mesh, List<List<Integer>> facesAt, int at, int to, int a, int b, int[] hostOf,
+            HostFrame[] frames, List<List<HostFrame.Stop>> stops, double tolerance) {
+        double[] corner = position(mesh, at);
+        double[] end = position(mesh, to);
+        double[] along = new double[3];
+        double length = 0;
+        for (int i = 0; i < 3; i++) {
+            along[i] = end[i] - corner[i];
+            length += along[i] * along[i];
+        }
+        length = Math.sqrt(length);
+        double[] na = frames[hostOf[a]].normal();
+        double[] nb = frames[hostOf[b]].normal();
+        double[] out = new double[3];
+        for (int i = 0; i < 3; i++) {
+            along[i] /= length;
+            out[i] = na[i] + nb[i];
+        }
+        for (int w : facesAt.get(at)) {
+            int wall = hostOf[w];
+            if (wall == hostOf[a] || wall == hostOf[b]) {
+                continue;
+            }
+            HostFrame frame = frames[wall];
+            double[] n = frame.normal();
+            double cos = along[0] * n[0] + along[1] * n[1] + along[2] * n[2];
+            if (cos < LEAST_COSINE) {
+                continue;
+            }
+            // A point a little out over the edge, dropped onto the face's plane.
+            double reach = 1e-3 * length;
+            double[] p = new double[3];
+            for (int i = 0; i < 3; i++) {
+                p[i] = corner[i] + reach * out[i];
+            }
+            // On the face, or on its border (a diagonal of a square face cut in two may run just there).
+            if (!inside(mesh, w, frame, p, reach * 1e-3)) {
+                continue;
+            }
+            for (int host : new int[] {hostOf[a], hostOf[b]}) {
+                HostFrame near = frames[host];
+                double cx = near.localX(corner);
+                double cy = near.localY(corner);
+                double ex = near.localX(end);
+                double ey = near.localY(end);
+                for (int k = 0; k < near.corners().length / 2; k++) {
+                    if (near.along(k, cx, cy, ex, ey, tolerance)) {
+                        double[] edge = near.edge(k);
+                        double s = ((cx - edge[0]) * edge[2] + (cy - edge[1]) * edge[3]) / edge[4];
+                        double toward = Math.signum((ex - cx) * edge[2] + (ey - cy) * edge[3]);
+                        HostFrame.Stop stop = new HostFrame.Stop(k, s, toward, wall, 1 / cos);
+                        if (!stops.get(host).contains(stop)) {
+                            stops.get(host).add(stop);
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    /** Whether point p, dropped onto the plane of triangle t (framed by {@code frame}), lies on it, or off it by no more than {@code margin}. */
+    private static boolean inside(IndexedPolygons mesh, int t, HostFrame frame, double[] p, double margin) {
+        double px = frame.localX(p);
+        double py = frame.localY(p);
+        int n = mesh.faceSize(t);
+        double[] xs = new double[n];
+        double[] ys = new double[n];
+        double area = 0;
+        for (int k = 0; k < n; k++) {
+            double[] q = position(mesh, mesh.faceVertex(t, k));
+            xs[k] = frame.localX(q);
+            ys[k] = frame.localY(q);
+        }
+        for (int k = 0; k < n; k++) {
+            area += xs[k] * ys[(k + 1) % n] - xs[(k + 1) % n] * ys[k];
+        }
+        double sign = Math.signum(area);
+        for (int k = 0; k < n; k++) {
+            double dx = xs[(k + 1) % n] - xs[k];
+            double dy = ys[(k + 1) % n] - ys[k];
+            double side = sign * (dx * (py - ys[k]) - dy * (px - xs[k])) / Math.hypot(dx, dy);
+            if (side < -margin) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** Limits the room of the edge of {@code near}'s host that mesh edge (u, v) lies along, by the turn to {@code far}'s host. */

@@ -53,22 +53,25 @@ final class ConcaveWalls {
     /** The folds back to back on each host, by host (null where none). */
     private final Map<Integer, List<BackWall>> backWallsOf;
     private final boolean[] along;
+    /** How high each host's stack stands: the top of its highest layer (for the stops of convex edges, {@link HostFrame.Stop}). */
+    private final double[] stackTop;
 
     private ConcaveWalls(double thickness, double tolerance, List<List<Wall>> wallsOf, Map<Integer, List<BackWall>> backWallsOf,
-            boolean[] along) {
+            boolean[] along, double[] stackTop) {
         this.thickness = thickness;
         this.tolerance = tolerance;
         this.wallsOf = wallsOf;
         this.backWallsOf = backWallsOf;
         this.along = along;
+        this.stackTop = stackTop;
     }
 
     /**
      * The walls of {@code bends} that lie along a concave edge of their host, with the
-     * {@code ranks} NestedBends gave them.
+     * {@code ranks} NestedBends gave them; {@code stackTop} is how high each host's stack stands.
      */
     static ConcaveWalls of(List<NestedBends.Bend> bends, int[] ranks, int[] backToBack, HostFrame[] frames, double thickness,
-            double tolerance) {
+            double tolerance, double[] stackTop) {
         boolean[] along = new boolean[bends.size()];
         int[] edgeOf = new int[bends.size()];
         // The most any fold along an edge needs, by host and edge: its upper layer's mitre plus its rank.
@@ -111,7 +114,7 @@ final class ConcaveWalls {
             backWallsOf.computeIfAbsent(bend.host(), h -> new ArrayList<>())
                     .add(new BackWall(bend.ax(), bend.ay(), bend.bx(), bend.by(), bend.nx(), bend.ny(), bend.low(), bend.high()));
         }
-        return new ConcaveWalls(thickness, tolerance, wallsOf, backWallsOf, along);
+        return new ConcaveWalls(thickness, tolerance, wallsOf, backWallsOf, along, stackTop);
     }
 
     /** Whether bend k stands back from its crease, back to back with another ({@link #place}). */
@@ -135,7 +138,7 @@ final class ConcaveWalls {
      * would reach nearer a concave edge; into {@code out} (x, y).
      */
     void place(int host, HostFrame frame, double x, double y, double height, double[] out) {
-        place(host, frame, x, y, height, Double.NaN, Double.NaN, out);
+        place(host, frame, x, y, height, Double.NaN, Double.NaN, null, out);
     }
 
     /**
@@ -143,11 +146,19 @@ final class ConcaveWalls {
      * with another moves its own layers' corners half a thickness back from the crease, on its
      * side of it (a corner on the crease belongs to the side its face lies on), before and after
      * the mitres; where a mitre then brings one back nearer the crease, it slides along the
-     * mitre's line to where the two meet.
+     * mitre's line to where the two meet. A corner where the face goes over an edge to another host
+     * ({@code over}: the other ends of its sheet edges that do, x, y pairs; null where none) first
+     * keeps from the end of a convex edge that a face across the corner stops ({@link HostFrame#stopped}).
      */
-    void place(int host, HostFrame frame, double x, double y, double height, double cx, double cy, double[] out) {
+    void place(int host, HostFrame frame, double x, double y, double height, double cx, double cy, double[] over, double[] out) {
         out[0] = x;
         out[1] = y;
+        if (thickness > 0) {
+            // Paper going over a convex edge keeps from its end where a face across the corner rises (HostFrame.Stop).
+            frame.stopped(stackTop, tolerance, over, out);
+            x = out[0];
+            y = out[1];
+        }
         List<BackWall> backs = thickness > 0 ? backWallsOf.get(host) : null;
         double level = height / thickness - 0.5;
         if (backs != null) {
@@ -228,15 +239,19 @@ final class ConcaveWalls {
     /**
      * Moves a point that a concave edge's mitre holds along that mitre's line until it lies
      * {@code keep} in from the back-to-back fold's crease on its side (the mitre and the fold's
-     * wall both kept); a point no mitre holds, straight there.
+     * wall both kept); a point no mitre holds, straight there. A layer's corner on a side of its
+     * host that stands farther back stays there: slid back towards the crease it would leave the
+     * side, and the paper across that side would be joined to it over the gap.
      */
     private void slideAlongMitre(HostFrame frame, BackWall back, double height, double keep, double[] point) {
         double inside = -((point[0] - back.ax()) * back.nx() + (point[1] - back.ay()) * back.ny());
         double need = keep - inside;
-        if (Math.abs(need) <= tolerance) {
+        if (Math.abs(need) <= tolerance || keep > 0 && need < 0 && onSide(frame, point)) {
             return;
         }
         int corners = frame.corners().length / 2;
+        double[] slid = null;
+        double[] kept = new double[2];
         for (int k = 0; k < corners; k++) {
             double tan = frame.mitreAt(k, point[0], point[1]);
             if (!(tan > 0)) {
@@ -251,13 +266,36 @@ final class ConcaveWalls {
             double ty = edge[3] / edge[4];
             double towards = -(tx * back.nx() + ty * back.ny());
             if (Math.abs(towards) > 1e-3) {
-                point[0] += need / towards * tx;
-                point[1] += need / towards * ty;
-                return;
+                double[] along = {point[0] + need / towards * tx, point[1] + need / towards * ty};
+                // Where two concave edges meet at the corner, slide along the mitre that keeps the other's.
+                if (!frame.mitred(along[0], along[1], height, kept) || Math.hypot(kept[0] - along[0], kept[1] - along[1]) <= tolerance) {
+                    point[0] = along[0];
+                    point[1] = along[1];
+                    return;
+                }
+                slid = slid == null ? along : slid;
             }
+        }
+        if (slid != null) {
+            point[0] = slid[0];
+            point[1] = slid[1];
+            return;
         }
         point[0] -= need * back.nx();
         point[1] -= need * back.ny();
+    }
+
+    /** Whether frame point p lies on a side of the frame's polygon, within the tolerance. */
+    private boolean onSide(HostFrame frame, double[] p) {
+        for (int k = 0; k < frame.corners().length / 2; k++) {
+            double[] edge = frame.edge(k);
+            double s = ((p[0] - edge[0]) * edge[2] + (p[1] - edge[1]) * edge[3]) / edge[4];
+            double off = ((p[0] - edge[0]) * edge[3] - (p[1] - edge[1]) * edge[2]) / edge[4];
+            if (Math.abs(off) <= tolerance && s >= -tolerance && s <= edge[4] + tolerance) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** The concave edge of the frame's polygon that the bend's crease lies along, sharing more than the tolerance of it; -1 if none. */

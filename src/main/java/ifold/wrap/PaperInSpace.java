@@ -144,7 +144,11 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             NestedBends nested = NestedBends.of(bends, sheet.thickness() * NEST_TOLERANCE);
             int[] ranks = nested.ranks();
             int[] backToBack = nested.backToBack();
-            walls = ConcaveWalls.of(bends, ranks, backToBack, frames, sheet.thickness(), sheet.tolerance());
+            double[] stackTop = new double[frames.length];
+            for (int f = 0; f < faces; f++) {
+                stackTop[sheet.host(f)] = Math.max(stackTop[sheet.host(f)], (levels[f] + 1) * sheet.thickness());
+            }
+            walls = ConcaveWalls.of(bends, ranks, backToBack, frames, sheet.thickness(), sheet.tolerance(), stackTop);
             boolean[] onWall = walls.along();
 
             List<int[]> paper = new ArrayList<>(faces);
@@ -315,7 +319,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 cx += pose.x(sheet.u(q), sheet.v(q)) / loop.length;
                 cy += pose.y(sheet.u(q), sheet.v(q)) / loop.length;
             }
-            walls.place(host, frame, x, y, height(f), cx, cy, xy);
+            walls.place(host, frame, x, y, height(f), cx, cy, over(f, p, pose), xy);
             boolean crept = xy[0] != x || xy[1] != y;
             frame.toSpace(xy[0], xy[1], height(f), point, 0);
             for (int copy : copies.get(p)) {
@@ -351,6 +355,33 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             longer[list.length] = v;
             copies.set(p, longer);
             return v;
+        }
+
+        /**
+         * Where face f's paper goes on from paper vertex p over an edge to another host: the other
+         * ends of its sheet edges at p whose face across lies on another host, in f's host frame
+         * (x, y pairs); null where none does.
+         */
+        private double[] over(int f, int p, Isometry2 pose) {
+            int[] loop = sheet.loop(f);
+            double[] over = null;
+            for (int i = 0; i < loop.length; i++) {
+                if (loop[i] != p) {
+                    continue;
+                }
+                int next = loop[(i + 1) % loop.length];
+                int previous = loop[(i + loop.length - 1) % loop.length];
+                for (int q : new int[] {next, previous}) {
+                    int g = q == next ? sheet.faceAcross(p, next) : sheet.faceAcross(previous, p);
+                    if (g >= 0 && sheet.host(g) != sheet.host(f)) {
+                        double[] longer = over == null ? new double[2] : java.util.Arrays.copyOf(over, over.length + 2);
+                        longer[longer.length - 2] = pose.x(sheet.u(q), sheet.v(q));
+                        longer[longer.length - 1] = pose.y(sheet.u(q), sheet.v(q));
+                        over = longer;
+                    }
+                }
+            }
+            return over;
         }
 
         /**

@@ -2,6 +2,7 @@ package ifold.sheet;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
@@ -76,5 +77,37 @@ class HostFrameTest {
         double fromBase = at[1];
         double fromSide = (at[0] * t - at[1]) * Math.cos(Math.toRadians(30));
         assertTrue(fromBase >= 0.05 - 1e-12 && fromSide >= 0.05 - 1e-12, "0.05 from both edges: " + fromBase + ", " + fromSide);
+    }
+
+    /**
+     * A stop at the corner (1, 0) of the unit square, on its edge y = 0 (edge 0) running back
+     * towards (0, 0), for a face across the corner (host 7) whose stack stands 0.02 high, leaving
+     * the edge at 60 degrees to its normal (slope 2): paper going over the edge keeps 0.04 from
+     * the corner along it; paper on the edge that does not go over it, paper beyond the stop, and
+     * paper off the edge stay.
+     */
+    @Test
+    void paperOverAConvexEdgeKeepsFromAStopAsFarAsTheWallStandsHigh() {
+        HostFrame stopped = SQUARE.withStops(new HostFrame.Stop[] {new HostFrame.Stop(0, 1, -1, 7, 2)});
+        double[] tops = new double[8];
+        tops[7] = 0.02;
+        double[] over = {0.5, 0};
+        double[] at = {1, 0};
+        assertTrue(stopped.stopped(tops, 1e-12, over, at), "the crease's end at the corner");
+        assertArrayEquals(new double[] {0.96, 0}, at, 1e-15);
+        at = new double[] {0.99, 0};
+        assertTrue(stopped.stopped(tops, 1e-12, over, at), "a crease point nearer the corner than the stop keeps it");
+        assertArrayEquals(new double[] {0.96, 0}, at, 1e-15);
+        at = new double[] {0.9, 0};
+        assertFalse(stopped.stopped(tops, 1e-12, over, at), "beyond the stop's reach");
+        at = new double[] {1, 0};
+        assertFalse(stopped.stopped(tops, 1e-12, new double[] {1, 0.5}, at), "paper going over the other edge at the corner");
+        assertFalse(stopped.stopped(tops, 1e-12, null, at), "paper going over no edge");
+        at = new double[] {1, 0.01};
+        assertFalse(stopped.stopped(tops, 1e-12, over, at), "off the edge");
+        tops[7] = 0;
+        at = new double[] {1, 0};
+        assertFalse(stopped.stopped(tops, 1e-12, over, at), "a face across with no paper on it stops nothing");
+        assertThrows(IllegalArgumentException.class, () -> SQUARE.withStops(new HostFrame.Stop[] {new HostFrame.Stop(4, 0, 1, 0, 1)}));
     }
 }

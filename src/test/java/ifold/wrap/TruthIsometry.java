@@ -186,6 +186,13 @@ final class TruthIsometry {
                 continue; // not on this side's plane (so not planar there), or not near its edge
             }
             String here = null;
+            double[] middle = new double[3];
+            for (int c = start; c < end; c++) {
+                for (int d = 0; d < 3; d++) {
+                    middle[d] += wrap.xyz[3 * wrap.cornerV[c] + d] / (end - start);
+                }
+            }
+            double middleS = times(minus(middle, side.a()), along);
             for (int c = start; c < end; c++) {
                 int v = wrap.cornerV[c];
                 double[] p = minus(new double[] {wrap.xyz[3 * v], wrap.xyz[3 * v + 1], wrap.xyz[3 * v + 2]}, side.a());
@@ -197,8 +204,12 @@ final class TruthIsometry {
                 inZone[c - start] = true;
                 widest = Math.max(widest, width);
                 double height = times(p, m);
-                // The mitre stands beside the edge: round its ends the paper across turns away.
-                if (here == null && s >= 0 && s <= length && inside < height * side.mitre() - eps - 1e-6 * thickness) {
+                // The mitre stands beside the edge: round its ends the paper across turns away. A
+                // face beyond an end that only touches it with a corner (from there into the face,
+                // the paper runs on beyond the end) is not beside it.
+                double into = s + 1e-3 * (middleS - s);
+                boolean beside = s >= 0 && s <= length && into > 0 && into < length;
+                if (here == null && beside && inside < height * side.mitre() - eps - 1e-6 * thickness) {
                     here = "vertex " + (v + 1) + " is " + inside + " in from a concave edge of the model, nearer than its mitre ("
                             + height + " high: " + height * side.mitre() + " in), running into the layers across";
                 }

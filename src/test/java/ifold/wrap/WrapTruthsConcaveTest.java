@@ -163,4 +163,67 @@ class WrapTruthsConcaveTest {
         assertTrue(holed.stream().allMatch(v -> !v.message().contains("model point (") || v.message().contains("of triangle 1 ")
                 || v.message().contains("of triangle 2 ")), "only the floor's gap is bare: " + holed);
     }
+
+    /** A floor z = 0 two long (y from 0 to 2) with a wall x = 0 rising beside its first half only: a concave edge from (0, 0) to (0, 1). */
+    private static final List<double[]> HALF_WALL = List.of(
+            new double[] {0, 0, 0, 1, 0, 0, 1, 1, 0},
+            new double[] {0, 0, 0, 1, 1, 0, 0, 1, 0},
+            new double[] {0, 1, 0, 1, 1, 0, 1, 2, 0},
+            new double[] {0, 1, 0, 1, 2, 0, 0, 2, 0},
+            new double[] {0, 0, 0, 0, 1, 0, 0, 1, 1},
+            new double[] {0, 0, 0, 0, 1, 1, 0, 0, 1});
+
+    /**
+     * The floor's paper beside the wall, the wall's, and the floor's beyond the wall's end from
+     * {@code beyondFrom} in y to 2, running up to x = 0.
+     */
+    private static String halfWall(double beyondFrom) {
+        return String.format(java.util.Locale.ROOT, """
+                o strip-1
+                v 0.005 0 0.005
+                vt 0 0
+                v 1 0 0.005
+                vt 0.995 0
+                v 1 1 0.005
+                vt 0.995 1
+                v 0.005 1 0.005
+                vt 0 1
+                g paper
+                f 1/1 2/2 3/3 4/4
+                o strip-2
+                v 0.005 0 0.005
+                vt 0 0
+                v 0.005 1 0.005
+                vt 1 0
+                v 0.005 1 1
+                vt 1 0.995
+                v 0.005 0 1
+                vt 0 0.995
+                g paper
+                f 5/5 6/6 7/7 8/8
+                o strip-3
+                v 0 %1$s 0.005
+                vt 0 0
+                v 1 %1$s 0.005
+                vt 1 0
+                v 1 2 0.005
+                vt 1 %2$s
+                v 0 2 0.005
+                vt 0 %2$s
+                g paper
+                f 9/9 10/10 11/11 12/12
+                """, beyondFrom, 2 - beyondFrom);
+    }
+
+    /**
+     * The mitre stands beside the edge: paper beyond the wall's end, which only touches the
+     * concave edge's end with a corner, keeps no mitre (nothing across rises there); the same
+     * paper reaching back beside the wall, a corner on the edge, runs into the wall's layers.
+     */
+    @Test
+    void paperBeyondAConcaveEdgesEndKeepsNoMitre() {
+        List<Violation> beyond = check(halfWall(1), HALF_WALL, T);
+        assertTrue(beyond.stream().noneMatch(v -> v.truth().equals(WrapTruths.ISOMETRIC)), beyond.toString());
+        assertBroken(check(halfWall(0.5), HALF_WALL, T), WrapTruths.ISOMETRIC, "face 3", "vertex 9 is 0.0 in", "nearer than its mitre");
+    }
 }
