@@ -3,8 +3,10 @@ package ifold.scene;
 import ifold.mesh.IndexedPolygons;
 import ifold.sheet.HostFrame;
 import ifold.sheet.Isometry2;
+import ifold.sheet.Polygons2;
 import ifold.sheet.Sheet;
 import ifold.sheet.Tuck;
+import ifold.wrap.PaperInSpace;
 import ifold.wrap.Wrap;
 import java.util.ArrayList;
 import java.util.List;
@@ -41,12 +43,30 @@ final class PlaybackMesh {
         List<Integer> colors = new ArrayList<>();
         List<Integer> edges = new ArrayList<>();
         HostFrame frame = shownTuck != null ? playback.result.frames()[shownTuck.host()] : null;
+        PaperInSpace placed = playback.strips.geometries().get(step.strip());
         for (int f = firstFace; f < end; f++) {
             int[] loop = loops[f - firstFace];
             Isometry2 pose = poses[f - firstFace];
             double height = (levels[f] + 0.5) * thickness;
             HostFrame on = playback.result.frames()[sheet.host(f)];
             double[][] corners = new double[loop.length][];
+            if (!turning.contains(f) && f < placed.paperFaces().size() && pose == sheet.pose(f)
+                    && java.util.Arrays.equals(loop, sheet.loop(f))) {
+                // As it finally lies (no tuck after this step cuts or moves it): where thick layers
+                // stand back from a concave edge it does too, as the paper laid round it is drawn.
+                int[] corner = placed.paperFaces().get(f);
+                corners = new double[corner.length][];
+                for (int c = 0; c < corner.length; c++) {
+                    corners[c] = java.util.Arrays.copyOfRange(placed.xyz(), 3 * corner[c], 3 * corner[c] + 3);
+                }
+                int base = points.size();
+                WrapView.addPolygon(corners, PaperView.PAPER, points, triangles, colors);
+                for (int c = 0; c < corners.length; c++) {
+                    edges.add(base + c);
+                    edges.add(base + (c + 1) % corners.length);
+                }
+                continue;
+            }
             for (int c = 0; c < loop.length; c++) {
                 double u = sheet.u(loop[c]);
                 double v = sheet.v(loop[c]);
@@ -144,10 +164,16 @@ final class PlaybackMesh {
         if (step.tail() != null && step.kind() != Wrap.Kind.END) {
             Swing swing = swing(sheet, step.strip(), step.tail());
             // The tail piece's far end, two widths beyond the crease: the flap's tip, where a
-            // diagram's arrow starts.
+            // diagram's arrow starts; the middle of a piece cut to the host it lands on.
             double[] centre = new double[3];
             for (int axis = 0; axis < 3; axis++) {
-                centre[axis] = (swing.from()[1][axis] + swing.from()[2][axis]) / 2;
+                if (swing.piece() == swing.from()) {
+                    centre[axis] = (swing.from()[1][axis] + swing.from()[2][axis]) / 2;
+                } else {
+                    for (double[] corner : swing.piece()) {
+                        centre[axis] += corner[axis] / swing.piece().length;
+                    }
+                }
             }
             for (int p = 0; p < path.length; p++) {
                 path[p] = WrapView.rotate(centre, swing.origin(), swing.axis(), swing.angle() * p / (path.length - 1));
@@ -184,20 +210,27 @@ final class PlaybackMesh {
         return path;
     }
 
-    /** A tail's swing: its piece's corners before, and the turn about its crease that lays it where the fold does. */
-    private record Swing(double[][] from, Vector3d origin, Vector3d axis, double angle) {
+    /**
+     * A tail's swing: its piece's corners before (two widths beyond the crease), the turn about
+     * its crease that lays it where the fold does, and the corners of the piece drawn (the same
+     * corners, or of the part of it that lands on the host it folds onto).
+     */
+    private record Swing(double[][] from, Vector3d origin, Vector3d axis, double angle, double[][] piece) {
     }
 
     /**
-     * The tail beyond its new crease, two widths of it, swinging from where it would run on
-     * unfolded to where the fold lays it: a turn about the crease line in space.
+     * The tail beyond its new crease swinging from where it would run on unfolded to where the
+     * fold lays it: a turn about the crease line in space. The piece is two widths of it; a hinge
+     * strip's is cut to the square it folds onto, so it turns within the cube of air over that
+     * square (or the one beyond the edge it folds over) and never into the solid or a wall
+     * beside it.
      */
     private void addTail(Sheet sheet, int strip, Wrap.TailMove move, double fraction, List<double[]> points, List<int[]> triangles,
             List<Integer> colors) {
         Swing swing = swing(sheet, strip, move);
-        double[][] corners = new double[4][];
-        for (int c = 0; c < 4; c++) {
-            corners[c] = WrapView.rotate(swing.from()[c], swing.origin(), swing.axis(), swing.angle() * fraction);
+        double[][] corners = new double[swing.piece().length][];
+        for (int c = 0; c < corners.length; c++) {
+            corners[c] = WrapView.rotate(swing.piece()[c], swing.origin(), swing.axis(), swing.angle() * fraction);
         }
         WrapView.addPolygon(corners, PaperView.CAP, points, triangles, colors);
     }
@@ -213,6 +246,17 @@ final class PlaybackMesh {
         for (int c = 0; c < 4; c++) {
             before.toSpace(move.before().x(paper[c][0], paper[c][1]), move.before().y(paper[c][0], paper[c][1]), height, from[c], 0);
             after.toSpace(move.after().x(paper[c][0], paper[c][1]), move.after().y(paper[c][0], paper[c][1]), height, to[c], 0);
+        }
+        // A hinge strip's piece is cut to its square (a zig-zag's host, a flat piece of the
+        // surface, is mostly wider than two widths of strip: its piece swings whole).
+        boolean squares = playback.result.method() == Wrap.Method.HINGE;
+        double[][] landing = squares ? landing(paper, move, after, height, sheet.tolerance()) : null;
+        double[][] piece = from;
+        if (landing != null) {
+            piece = new double[landing.length][3];
+            for (int c = 0; c < landing.length; c++) {
+                before.toSpace(move.before().x(landing[c][0], landing[c][1]), move.before().y(landing[c][0], landing[c][1]), height, piece[c], 0);
+            }
         }
         // The axis: the crease, where both placements agree; the angle: between the tail piece's
         // direction across the axis before and after.
@@ -235,9 +279,113 @@ final class PlaybackMesh {
             for (int c = 0; c < 4; c++) {
                 from[c] = WrapView.rotate(from[c], a, axis, Math.PI);
             }
+            if (piece != from) {
+                for (int c = 0; c < piece.length; c++) {
+                    piece[c] = WrapView.rotate(piece[c], a, axis, Math.PI);
+                }
+            }
             angle -= Math.signum(angle) * Math.PI;
         }
-        return new Swing(from, a, axis, angle);
+        if (squares && move.hostAfter() != move.hostBefore()) {
+            // Over an edge of the surface the piece turns about the line where its layer's plane
+            // before meets its plane after, not about the crease on the surface: so it ends on top
+            // of the paper on the face across rather than under it.
+            Vector3d[] turn = meeting(from, to);
+            if (turn != null) {
+                Vector3d out2 = new Vector3d(from[1][0], from[1][1], from[1][2]).sub(turn[0]);
+                out2.fma(-out2.dot(turn[1]), turn[1]);
+                Vector3d in2 = new Vector3d(to[1][0], to[1][1], to[1][2]).sub(turn[0]);
+                in2.fma(-in2.dot(turn[1]), turn[1]);
+                if (out2.lengthSquared() > 0 && in2.lengthSquared() > 0) {
+                    double about = Math.atan2(new Vector3d(out2).cross(in2).dot(turn[1]), out2.dot(in2));
+                    if (Math.abs(about - angle) < Math.PI / 2) {
+                        return new Swing(from, turn[0], turn[1], about, landing == null ? from : piece);
+                    }
+                }
+            }
+        }
+        return new Swing(from, a, axis, angle, landing == null ? from : piece);
+    }
+
+    /**
+     * The line where the plane of quadrilateral {@code a} meets that of {@code b}: a point on it
+     * and its unit direction; null where the planes are parallel.
+     */
+    private static Vector3d[] meeting(double[][] a, double[][] b) {
+        Vector3d n1 = normal(a);
+        Vector3d n2 = normal(b);
+        Vector3d d = new Vector3d(n1).cross(n2);
+        if (d.length() < 1e-6) {
+            return null;
+        }
+        d.normalize();
+        double c1 = n1.dot(a[0][0], a[0][1], a[0][2]);
+        double c2 = n2.dot(b[0][0], b[0][1], b[0][2]);
+        // The point of the line nearest the origin: (c1 (n2 × d) + c2 (d × n1)) / ((n1 × n2) · d).
+        double det = new Vector3d(n1).cross(n2).dot(d);
+        Vector3d point = new Vector3d(n2).cross(d).mul(c1).add(new Vector3d(d).cross(n1).mul(c2)).div(det);
+        return new Vector3d[] {point, d};
+    }
+
+    /** The unit normal of quadrilateral q (corners 0, 1 and 3 span it). */
+    private static Vector3d normal(double[][] q) {
+        Vector3d u = new Vector3d(q[1][0] - q[0][0], q[1][1] - q[0][1], q[1][2] - q[0][2]);
+        Vector3d v = new Vector3d(q[3][0] - q[0][0], q[3][1] - q[0][1], q[3][2] - q[0][2]);
+        return u.cross(v).normalize();
+    }
+
+    /**
+     * The part of the tail piece {@code paper} (sheet corners) that the fold lays on its host's
+     * polygon, {@code height} above it, as sheet points: in from a concave edge by its mitre, as
+     * the layers there stand (the wall's layers across), and from every other edge by the
+     * tolerance; null where it all lands there, or none of it does.
+     */
+    private static double[][] landing(double[][] paper, Wrap.TailMove move, HostFrame after, double height, double tolerance) {
+        double[] xy = new double[2 * paper.length];
+        for (int c = 0; c < paper.length; c++) {
+            xy[2 * c] = move.after().x(paper[c][0], paper[c][1]);
+            xy[2 * c + 1] = move.after().y(paper[c][0], paper[c][1]);
+        }
+        if (Polygons2.twiceArea(xy, paper.length) < 0) {
+            // Laid mirrored: the same corners run clockwise in the host's frame.
+            for (int c = 0; c < paper.length / 2; c++) {
+                int d = paper.length - 1 - c;
+                double x = xy[2 * c];
+                double y = xy[2 * c + 1];
+                xy[2 * c] = xy[2 * d];
+                xy[2 * c + 1] = xy[2 * d + 1];
+                xy[2 * d] = x;
+                xy[2 * d + 1] = y;
+            }
+        }
+        double[] corners = after.corners();
+        int n = corners.length / 2;
+        double[] cut = xy;
+        boolean cutAny = false;
+        for (int k = 0; k < n && cut != null; k++) {
+            double[] edge = after.edge(k);
+            // Outward normal of a counter-clockwise polygon's edge: (dy, -dx).
+            double nx = edge[3] / edge[4];
+            double ny = -edge[2] / edge[4];
+            double in = tolerance;
+            for (int i = 0; after.mitre() != null && after.mitre()[k] != null && i + 2 < after.mitre()[k].length; i += 3) {
+                in = Math.max(in, height * after.mitre()[k][i + 2]);
+            }
+            double c = nx * edge[0] + ny * edge[1] - in;
+            int count = cut.length / 2;
+            double[] next = Polygons2.clip(cut, count, nx, ny, c, tolerance);
+            cutAny |= next == null || next.length != cut.length || !java.util.Arrays.equals(next, cut);
+            cut = next;
+        }
+        if (cut == null || !cutAny) {
+            return null;
+        }
+        Isometry2 back = move.after().inverse();
+        double[][] landing = new double[cut.length / 2][];
+        for (int c = 0; c < landing.length; c++) {
+            landing[c] = new double[] {back.x(cut[2 * c], cut[2 * c + 1]), back.y(cut[2 * c], cut[2 * c + 1])};
+        }
+        return landing;
     }
 
     /** The area of triangle t of the mesh. */

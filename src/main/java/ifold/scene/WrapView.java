@@ -44,7 +44,12 @@ public final class WrapView {
     static final int FACE_EDGE = 0xFF6F7B88;
 
     /** The wrap's strips and, for each strip and path triangle, how many of the mesh's triangles exist once it is wrapped. */
-    public record Strips(SceneMesh mesh, int[][] trianglesAfter) {
+    /**
+     * The strips' paper drawn as one mesh, the triangles of it laid by the end of each path
+     * triangle of each strip, and the paper in space it was drawn from (a face as it finally
+     * lies, crept back from concave edges as thick layers must be).
+     */
+    public record Strips(SceneMesh mesh, int[][] trianglesAfter, List<PaperInSpace> geometries) {
     }
 
     public static Strips strips(Wrap.Result result, List<PaperInSpace> geometries) {
@@ -115,7 +120,7 @@ public final class WrapView {
         }
         int[] colorArray = colors.stream().mapToInt(Integer::intValue).toArray();
         SceneMesh.Layers layers = patches.layers(hiddenFrom.toArray(), seams, patchOf.toArray());
-        return new Strips(new SceneMesh(positions, flat, colorArray, new int[0], new int[0], layers), after);
+        return new Strips(new SceneMesh(positions, flat, colorArray, new int[0], new int[0], layers), after, List.copyOf(geometries));
     }
 
     /**
