@@ -319,7 +319,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 cx += pose.x(sheet.u(q), sheet.v(q)) / loop.length;
                 cy += pose.y(sheet.u(q), sheet.v(q)) / loop.length;
             }
-            walls.place(host, frame, x, y, height(f), cx, cy, over(f, p, pose), xy);
+            walls.place(host, frame, x, y, height(f), cx, cy, frame.stops() == null ? null : over(f, p, pose), xy);
             boolean crept = xy[0] != x || xy[1] != y;
             frame.toSpace(xy[0], xy[1], height(f), point, 0);
             for (int copy : copies.get(p)) {
