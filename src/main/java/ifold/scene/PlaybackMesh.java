@@ -49,7 +49,7 @@ final class PlaybackMesh {
             Isometry2 pose = poses[f - firstFace];
             double height = (levels[f] + 0.5) * thickness;
             HostFrame on = playback.result.frames()[sheet.host(f)];
-            double[][] corners = new double[loop.length][];
+            double[][] corners;
             if (!turning.contains(f) && f < placed.paperFaces().size() && pose == sheet.pose(f)
                     && java.util.Arrays.equals(loop, sheet.loop(f))) {
                 // As it finally lies (no tuck after this step cuts or moves it): where thick layers
@@ -59,23 +59,19 @@ final class PlaybackMesh {
                 for (int c = 0; c < corner.length; c++) {
                     corners[c] = java.util.Arrays.copyOfRange(placed.xyz(), 3 * corner[c], 3 * corner[c] + 3);
                 }
-                int base = points.size();
-                WrapView.addPolygon(corners, PaperView.PAPER, points, triangles, colors);
-                for (int c = 0; c < corners.length; c++) {
-                    edges.add(base + c);
-                    edges.add(base + (c + 1) % corners.length);
+            } else {
+                corners = new double[loop.length][];
+                for (int c = 0; c < loop.length; c++) {
+                    double u = sheet.u(loop[c]);
+                    double v = sheet.v(loop[c]);
+                    double[] point = new double[3];
+                    on.toSpace(pose.x(u, v), pose.y(u, v), height, point, 0);
+                    if (turning.contains(f)) {
+                        point = WrapView.turnAbout(point, frame, shownTuck.px(), shownTuck.py(), shownTuck.dx(), shownTuck.dy(),
+                                Math.PI * fraction);
+                    }
+                    corners[c] = point;
                 }
-                continue;
-            }
-            for (int c = 0; c < loop.length; c++) {
-                double u = sheet.u(loop[c]);
-                double v = sheet.v(loop[c]);
-                double[] point = new double[3];
-                on.toSpace(pose.x(u, v), pose.y(u, v), height, point, 0);
-                if (turning.contains(f)) {
-                    point = WrapView.turnAbout(point, frame, shownTuck.px(), shownTuck.py(), shownTuck.dx(), shownTuck.dy(), Math.PI * fraction);
-                }
-                corners[c] = point;
             }
             // Counter-clockwise on the sheet; a mirrored pose shows its underside, drawn as such.
             int base = points.size();
