@@ -31,15 +31,19 @@ public final class PaperView {
         for (int v = 0; v < geometry.vertexCount(); v++) {
             index[v] = mesh.point(new double[] {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]});
         }
-        for (int f = 0; f < geometry.paperFaces().size(); f++) {
-            int[] face = geometry.paperFaces().get(f);
+        for (int f = 0; f < geometry.sheetFaceCount(); f++) {
             int[] loop = sheet.loop(f);
-            int[] corners = new int[face.length];
-            for (int i = 0; i < face.length; i++) {
-                corners[i] = index[face[i]];
+            for (int piece = geometry.pieceStart()[f]; piece < geometry.pieceStart()[f + 1]; piece++) {
+                int[] face = geometry.paperFaces().get(piece);
+                int[] corners = new int[face.length];
+                for (int i = 0; i < face.length; i++) {
+                    corners[i] = index[face[i]];
+                }
+                mesh.face(corners, PAPER);
+                if (face.length == loop.length) {
+                    mesh.outline(corners, loop, sheet); // a face placed whole: its sides, creases in red
+                }
             }
-            mesh.face(corners, PAPER);
-            mesh.outline(corners, loop, sheet);
         }
         for (int[] cap : geometry.caps()) {
             int[] corners = new int[cap.length];

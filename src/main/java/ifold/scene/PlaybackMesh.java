@@ -49,18 +49,21 @@ final class PlaybackMesh {
             Isometry2 pose = poses[f - firstFace];
             double height = (levels[f] + 0.5) * thickness;
             HostFrame on = playback.result.frames()[sheet.host(f)];
-            double[][] corners;
-            if (!turning.contains(f) && f < placed.paperFaces().size() && pose == sheet.pose(f)
+            List<double[][]> shapes = new ArrayList<>(1);
+            if (!turning.contains(f) && f < placed.sheetFaceCount() && pose == sheet.pose(f)
                     && java.util.Arrays.equals(loop, sheet.loop(f))) {
                 // As it finally lies (no tuck after this step cuts or moves it): where thick layers
-                // stand back from a concave edge it does too, as the paper laid round it is drawn.
-                int[] corner = placed.paperFaces().get(f);
-                corners = new double[corner.length][];
-                for (int c = 0; c < corner.length; c++) {
-                    corners[c] = java.util.Arrays.copyOfRange(placed.xyz(), 3 * corner[c], 3 * corner[c] + 3);
+                // stand back from a concave edge it does too, in the pieces the paper laid round it is drawn in.
+                for (int piece = placed.pieceStart()[f]; piece < placed.pieceStart()[f + 1]; piece++) {
+                    int[] corner = placed.paperFaces().get(piece);
+                    double[][] corners = new double[corner.length][];
+                    for (int c = 0; c < corner.length; c++) {
+                        corners[c] = java.util.Arrays.copyOfRange(placed.xyz(), 3 * corner[c], 3 * corner[c] + 3);
+                    }
+                    shapes.add(corners);
                 }
             } else {
-                corners = new double[loop.length][];
+                double[][] corners = new double[loop.length][];
                 for (int c = 0; c < loop.length; c++) {
                     double u = sheet.u(loop[c]);
                     double v = sheet.v(loop[c]);
@@ -72,13 +75,16 @@ final class PlaybackMesh {
                     }
                     corners[c] = point;
                 }
+                shapes.add(corners);
             }
-            // Counter-clockwise on the sheet; a mirrored pose shows its underside, drawn as such.
-            int base = points.size();
-            WrapView.addPolygon(corners, PaperView.PAPER, points, triangles, colors);
-            for (int c = 0; c < corners.length; c++) {
-                edges.add(base + c);
-                edges.add(base + (c + 1) % corners.length);
+            for (double[][] corners : shapes) {
+                // Counter-clockwise on the sheet; a mirrored pose shows its underside, drawn as such.
+                int base = points.size();
+                WrapView.addPolygon(corners, PaperView.PAPER, points, triangles, colors);
+                for (int c = 0; c < corners.length; c++) {
+                    edges.add(base + c);
+                    edges.add(base + (c + 1) % corners.length);
+                }
             }
         }
         if (step.tail() != null && step.kind() != Wrap.Kind.END) {

@@ -91,7 +91,7 @@ public final class WrapView {
                 if (!covered.face(f)) {
                     patches.add(host, covered.undersideOut().get(f) ? PAPER.back() : PAPER.front(), covered.areas()[f]);
                 }
-                patches.layer(host, (levels[f] + 0.5) * strip.sheet().thickness(), triangles.size());
+                patches.layer(host, (levels[g.sheetFace(f)] + 0.5) * strip.sheet().thickness(), triangles.size());
                 patchOf.add(host, triangles.size() - from);
                 for (int c : capsAfter.get(f)) {
                     from = triangles.size();
@@ -110,7 +110,7 @@ public final class WrapView {
             }
             after[k] = new int[strip.triangles()];
             for (int i = 0; i < strip.triangles(); i++) {
-                after[k][i] = trianglesAtFace[strip.facesAfter()[i]];
+                after[k][i] = trianglesAtFace[g.pieceStart()[strip.facesAfter()[i]]];
             }
             base += g.vertexCount();
         }

@@ -156,17 +156,28 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
      * @return whether the point moved
      */
     public boolean mitred(double x, double y, double height, double[] out) {
+        return mitred(x, y, Double.NaN, Double.NaN, height, out);
+    }
+
+    /**
+     * {@link #mitred(double, double, double, double[])} for a corner of a piece of paper that
+     * lies wholly beside the same stretches of concave edges as its point (bx, by) does (NaN:
+     * the corner's own place, as it moves): a corner on the line where a stretch ends belongs to
+     * the piece on its side, mitred or not as the piece is.
+     */
+    public boolean mitred(double x, double y, double bx, double by, double height, double[] out) {
         out[0] = x;
         out[1] = y;
         if (mitre == null || !(height > 0)) {
             return false;
         }
+        boolean own = Double.isNaN(bx);
         int n = corners.length / 2;
         boolean moved = false;
         for (int round = 0; round < 4; round++) {
             boolean again = false;
             for (int k = 0; k < n; k++) {
-                double tan = mitreAt(k, out[0], out[1]);
+                double tan = mitreAt(k, own ? out[0] : bx, own ? out[1] : by);
                 if (tan > 0 && keepFrom(k, height * tan, out)) {
                     again = moved = true;
                 }
@@ -178,8 +189,8 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
         // Two concave edges at a corner sharper than 90 degrees: straight to where their mitres meet.
         for (int k = 0; k < n; k++) {
             for (int j = k + 1; j < n; j++) {
-                double tk = mitreAt(k, out[0], out[1]);
-                double tj = mitreAt(j, out[0], out[1]);
+                double tk = mitreAt(k, own ? out[0] : bx, own ? out[1] : by);
+                double tj = mitreAt(j, own ? out[0] : bx, own ? out[1] : by);
                 if (tk > 0 && tj > 0 && (inside(k, out) < height * tk * (1 - 1e-9) || inside(j, out) < height * tj * (1 - 1e-9))) {
                     meet(k, height * tk, j, height * tj, out);
                 }

@@ -117,6 +117,47 @@ final class ConcaveWalls {
         return new ConcaveWalls(thickness, tolerance, wallsOf, backWallsOf, along, stackTop);
     }
 
+    /**
+     * The walls on {@code host} along edge {@code edge} of its polygon that hold paper at
+     * {@code level}: for each, how far in, and from where to where along the edge (three numbers
+     * a wall, into {@code out}).
+     */
+    void wallsAt(int host, int edge, double level, List<double[]> out) {
+        List<Wall> walls = wallsOf.get(host);
+        for (Wall wall : walls == null || !(thickness > 0) ? List.<Wall>of() : walls) {
+            if (wall.edge() == edge && level >= wall.low() - Tolerance.RELATIVE_EQUALITY && level <= wall.high() + Tolerance.RELATIVE_EQUALITY) {
+                out.add(new double[] {wall.in(), wall.from() - tolerance, wall.to() + tolerance});
+            }
+        }
+    }
+
+    /** How far in from edge {@code edge} of {@code host}'s polygon its farthest wall stands (0 where none does). */
+    double farthestWall(int host, int edge) {
+        List<Wall> walls = wallsOf.get(host);
+        double farthest = 0;
+        for (Wall wall : walls == null ? List.<Wall>of() : walls) {
+            if (wall.edge() == edge) {
+                farthest = Math.max(farthest, wall.in());
+            }
+        }
+        return farthest;
+    }
+
+    /**
+     * Whether a fold back to back with another on {@code host} holds paper at {@code level} of a
+     * face whose middle is (cx, cy): the face lies on the side the fold's layers end on.
+     */
+    boolean holdsBack(int host, double level, double cx, double cy) {
+        List<BackWall> backs = thickness > 0 ? backWallsOf.get(host) : null;
+        for (BackWall back : backs == null ? List.<BackWall>of() : backs) {
+            double middle = -((cx - back.ax()) * back.nx() + (cy - back.ay()) * back.ny());
+            if (level >= back.low() - Tolerance.RELATIVE_EQUALITY && level <= back.high() + Tolerance.RELATIVE_EQUALITY && middle > tolerance) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     /** Whether bend k stands back from its crease, back to back with another ({@link #place}). */
     static boolean standsBack(int[] backToBack, boolean[] alongWall, int k) {
         return backToBack[k] >= 0 && !alongWall[k] && !alongWall[backToBack[k]];
@@ -151,6 +192,17 @@ final class ConcaveWalls {
      * keeps from the end of a convex edge that a face across the corner stops ({@link HostFrame#stopped}).
      */
     void place(int host, HostFrame frame, double x, double y, double height, double cx, double cy, double[] over, double[] out) {
+        place(host, frame, x, y, height, cx, cy, over, Double.NaN, Double.NaN, out);
+    }
+
+    /**
+     * {@link #place(int, HostFrame, double, double, double, double, double, double[], double[])}
+     * for a corner of a piece of a face that lies wholly beside the same walls and stretches of
+     * concave edges as its point (bx, by) (NaN: the corner's own place): a corner on the line
+     * where a wall or a stretch ends is placed as the piece on its side is.
+     */
+    void place(int host, HostFrame frame, double x, double y, double height, double cx, double cy, double[] over, double bx, double by,
+            double[] out) {
         out[0] = x;
         out[1] = y;
         if (thickness > 0) {
@@ -169,7 +221,8 @@ final class ConcaveWalls {
             }
         }
         double[] laid = {out[0], out[1]};
-        frame.mitred(laid[0], laid[1], height, out);
+        boolean own = Double.isNaN(bx);
+        frame.mitred(laid[0], laid[1], bx, by, height, out);
         if (!(thickness > 0)) {
             return; // paper of no thickness stands nowhere but on its creases
         }
@@ -179,10 +232,12 @@ final class ConcaveWalls {
                 continue;
             }
             double[] edge = wall.line();
-            double s = ((out[0] - edge[0]) * edge[2] + (out[1] - edge[1]) * edge[3]) / edge[4];
+            double wx = own ? out[0] : bx;
+            double wy = own ? out[1] : by;
+            double s = ((wx - edge[0]) * edge[2] + (wy - edge[1]) * edge[3]) / edge[4];
             // Beside the wall, and beside a concave stretch of the edge: a fold along the whole of
             // a host's edge that is concave in part stands back only where the edge is concave.
-            if (s >= wall.from() - tolerance && s <= wall.to() + tolerance && frame.mitreAt(wall.edge(), out[0], out[1]) > 0) {
+            if (s >= wall.from() - tolerance && s <= wall.to() + tolerance && frame.mitreAt(wall.edge(), wx, wy) > 0) {
                 frame.keepFrom(wall.edge(), wall.in(), out);
             }
         }

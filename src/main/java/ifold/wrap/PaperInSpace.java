@@ -27,20 +27,52 @@ import java.util.List;
  * HostFrame#lean}), and those it wraps then less far still. Its rows stop on the line of a bend
  * they would run through where two creases meet at a corner.
  *
+ * <p>Where thick layers stand back from a concave edge (on its mitre, or on the wall of a fold
+ * made along it: {@link ConcaveWalls}), a face is cut where the paper begins to stand back, and
+ * each piece is placed as it lies: whole, or squashed onto the line where its layer ends.
+ *
  * @param xyz x, y, z of each vertex
  * @param uv the paper coordinates of each vertex
- * @param paperFaces the faces of the sheet, as vertex loops (counter-clockwise on the sheet)
+ * @param paperFaces the faces of the sheet, as vertex loops (counter-clockwise on the sheet): one
+ *     for each face, or the pieces it is cut into where its paper stands back from a concave edge
  * @param paperHosts the triangle each paper face rests on
  * @param caps the cap facets
  * @param capAfter for each cap, the later of the two faces it joins (index in paperFaces): it exists from then on
  * @param creep the paper vertices that stand back from a concave edge, and where they stood
+ * @param pieceStart the paper faces of the sheet's face f are {@code pieceStart[f]} to {@code
+ *     pieceStart[f + 1] - 1}
  */
 public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, int[] paperHosts, List<int[]> caps, int[] capAfter,
-        Creep creep) {
+        Creep creep, int[] pieceStart) {
 
-    /** Paper that stands where it was laid: nothing creeps. */
+    /** Paper that stands where it was laid: nothing creeps, every face whole. */
     public PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, int[] paperHosts, List<int[]> caps, int[] capAfter) {
-        this(xyz, uv, paperFaces, paperHosts, caps, capAfter, Creep.NONE);
+        this(xyz, uv, paperFaces, paperHosts, caps, capAfter, Creep.NONE, wholeFaces(paperFaces.size()));
+    }
+
+    private static int[] wholeFaces(int count) {
+        int[] start = new int[count + 1];
+        for (int f = 0; f <= count; f++) {
+            start[f] = f;
+        }
+        return start;
+    }
+
+    /** The sheet's faces. */
+    public int sheetFaceCount() {
+        return pieceStart.length - 1;
+    }
+
+    /** The sheet face that paper face (piece) {@code piece} is of. */
+    public int sheetFace(int piece) {
+        int k = java.util.Arrays.binarySearch(pieceStart, piece);
+        if (k < 0) {
+            return -k - 2;
+        }
+        while (k + 1 < pieceStart.length && pieceStart[k + 1] == piece) {
+            k++; // past faces of no piece
+        }
+        return k;
     }
 
     public int vertexCount() {
@@ -105,12 +137,20 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         /** The triangle and level each space vertex was made for (caps' middle rows: -1). */
         private int[] copyHost = new int[64];
         private int[] copyLevel = new int[64];
+        /** Each face's corners as placed whole (null for a face placed in pieces). */
+        private int[][] corners;
+        /** For a face placed in pieces, along each side of its loop: the pieces' edges there, from, to (along the side), and their two vertices. */
+        private java.util.Map<Integer, List<List<double[]>>> sides;
+        /** The pieces of face f are paper faces pieceStart[f] to pieceStart[f + 1] - 1. */
+        private int[] pieceStart;
         /** Where paper ends at the concave edges of its host. */
         private ConcaveWalls walls;
         /** The vertices made moved in from a concave edge (in the order made, so increasing), and where the paper put them. */
         private int[] creptVertices = new int[0];
         private double[] creptFrom = new double[0];
         private int creptCount;
+        /** The vertices made that crept ({@link #creptVertices} as a set). */
+        private final java.util.BitSet creptSet = new java.util.BitSet();
 
         Builder(Sheet sheet, HostFrame[] frames) {
             this.sheet = sheet;
@@ -152,44 +192,52 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             boolean[] onWall = walls.along();
 
             List<int[]> paper = new ArrayList<>(faces);
-            int[] hosts = new int[faces];
-            int[][] corners = new int[faces][];
-            for (int f = 0; f < faces; f++) {
-                int[] loop = sheet.loop(f);
-                int[] placed = new int[loop.length];
-                for (int i = 0; i < loop.length; i++) {
-                    placed[i] = vertex(f, loop[i]);
-                }
-                corners[f] = placed;
-                paper.add(placed);
-                hosts[f] = sheet.host(f);
-            }
+            List<Integer> hostList = new ArrayList<>(faces);
             List<int[]> caps = new ArrayList<>();
             List<Integer> capAfter = new ArrayList<>();
+            corners = new int[faces][];
+            sides = new java.util.HashMap<>();
+            pieceStart = new int[faces + 1];
+            for (int f = 0; f < faces; f++) {
+                List<List<Corner>> pieces = pieces(f);
+                if (pieces == null) {
+                    int[] loop = sheet.loop(f);
+                    int[] placed = new int[loop.length];
+                    for (int i = 0; i < loop.length; i++) {
+                        placed[i] = vertex(f, loop[i]);
+                    }
+                    corners[f] = placed;
+                    paper.add(placed);
+                    hostList.add(sheet.host(f));
+                } else {
+                    placePieces(f, pieces, paper, hostList, caps, capAfter);
+                }
+                pieceStart[f + 1] = paper.size();
+            }
+            for (int c = 0; c < capAfter.size(); c++) {
+                capAfter.set(c, pieceStart[capAfter.get(c) + 1] - 1); // tears come after the last piece of their face
+            }
+            int[] hosts = hostList.stream().mapToInt(Integer::intValue).toArray();
             forEachJoin((f, i, g, a, b) -> {
                 if (isBend(f, g)) {
                     return; // below, once every bend is known
                 }
-                int fa = corners[f][i];
-                int fb = corners[f][(i + 1) % corners[f].length];
-                int ga = cornerOf(g, a, corners[g]);
-                int gb = cornerOf(g, b, corners[g]);
-                if ((fa == ga || samePlace(fa, ga)) && (fb == gb || samePlace(fb, gb))) {
-                    return; // the paper runs on flat, or bends over an edge with no thickness
-                }
-                caps.add(new int[] {fa, fb, gb, ga});
-                capAfter.add(g);
+                // the paper runs on flat, or bends over an edge with no thickness where the two sides meet
+                addCap(chain(f, i, a, b), chain(g, side(g, a, b), a, b), a, b, pieceStart[g + 1] - 1, true, false, caps, capAfter);
             });
             List<int[]> bendCorners = new ArrayList<>();
+            List<double[][][]> bendChains = new ArrayList<>();
             for (int[] edge : bendEdges) {
                 int f = edge[0];
                 int i = edge[1];
                 int g = edge[2];
                 int a = edge[3];
                 int b = edge[4];
-                int length = sheet.loop(f).length;
-                bendCorners.add(new int[] {f, g, a, b, corners[f][i], corners[f][(i + 1) % length], cornerOf(g, a, corners[g]),
-                        cornerOf(g, b, corners[g])});
+                double[][] fChain = chain(f, i, a, b);
+                double[][] gChain = chain(g, side(g, a, b), a, b);
+                bendChains.add(new double[][][] {fChain, gChain});
+                bendCorners.add(new int[] {f, g, a, b, (int) fChain[0][2], (int) fChain[fChain.length - 1][3], (int) gChain[0][2],
+                        (int) gChain[gChain.length - 1][3]});
             }
             double[] outs = new double[bends.size()];
             double[] slopes = new double[bends.size()];
@@ -221,42 +269,69 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 if ((c[4] == c[6] || samePlace(c[4], c[6])) && (c[5] == c[7] || samePlace(c[5], c[7]))) {
                     continue; // paper of no thickness folded flat: nothing to bridge
                 }
-                if (out == 0 && ConcaveWalls.standsBack(backToBack, onWall, k)) {
-                    // Back to back with another fold: its layers stand back half a thickness, and its
-                    // bend reaches the crease halfway up, where the other's meets it.
-                    double middle = (height(f) + height(g)) / 2;
-                    int apexA = apex(f, c[2], middle);
-                    int apexB = apex(f, c[3], middle);
-                    caps.add(new int[] {c[4], c[5], apexB, apexA});
-                    caps.add(new int[] {apexA, apexB, c[7], c[6]});
-                    capAfter.add(g);
-                    capAfter.add(g);
+                int after = pieceStart[g + 1] - 1;
+                double[][] fChain = bendChains.get(k)[0];
+                double[][] gChain = bendChains.get(k)[1];
+                if (out == 0 && !ConcaveWalls.standsBack(backToBack, onWall, k)) {
+                    addCap(fChain, gChain, c[2], c[3], after, false, !onWall[k], caps, capAfter);
                     continue;
                 }
-                if (out == 0) {
-                    caps.add(new int[] {c[4], c[5], c[7], c[6]});
-                    capAfter.add(g);
+                if (fChain.length == 1 && gChain.length == 1) {
+                    wholeBend(k, c, bend, out, slopes[k], past, after, caps, capAfter);
                     continue;
                 }
-                // Out beyond the crease from each layer, and straight across between.
+                // Where its faces are placed in pieces, the bend goes from piece to piece as they meet the crease.
+                boolean backs = out == 0;
+                double middle = (height(f) + height(g)) / 2;
                 boolean fLower = height(f) < height(g);
-                double lower = Math.min(height(f), height(g)) + out / slopes[k];
+                double lower = Math.min(height(f), height(g)) + (backs ? 0 : out / slopes[k]);
                 double upper = Math.max(height(f), height(g)) - out;
-                int fma = row(f, bend, c[2], out, -past[2 * k], fLower ? lower : upper);
-                int fmb = row(f, bend, c[3], out, past[2 * k + 1], fLower ? lower : upper);
-                int gma = row(f, bend, c[2], out, -past[2 * k], fLower ? upper : lower);
-                int gmb = row(f, bend, c[3], out, past[2 * k + 1], fLower ? upper : lower);
-                caps.add(new int[] {c[4], c[5], fmb, fma});
-                caps.add(new int[] {fma, fmb, gmb, gma});
-                caps.add(new int[] {gma, gmb, c[7], c[6]});
-                capAfter.add(g);
-                capAfter.add(g);
-                capAfter.add(g);
+                double[] cuts = cutsAlong(fChain, gChain);
+                int a = c[2];
+                int b = c[3];
+                int fFrom = -1;
+                int gFrom = -1;
+                int[] rowFrom = null;
+                for (int j = 0; j < cuts.length; j++) {
+                    double t = cuts[j];
+                    double u = along(sheet.u(a), sheet.u(b), t);
+                    double v = along(sheet.v(a), sheet.v(b), t);
+                    int fAt = pointAt(fChain, t, u, v);
+                    int gAt = pointAt(gChain, t, u, v);
+                    int[] rowAt;
+                    if (backs) {
+                        int apex = j == 0 ? apex(f, a, middle) : j == cuts.length - 1 ? apex(f, b, middle) : apex(f, u, v, middle);
+                        rowAt = new int[] {apex};
+                    } else {
+                        double beyond = j == 0 ? -past[2 * k] : j == cuts.length - 1 ? past[2 * k + 1] : 0;
+                        rowAt = new int[] {row(f, bend, u, v, out, beyond, fLower ? lower : upper), row(f, bend, u, v, out, beyond,
+                                fLower ? upper : lower)};
+                    }
+                    double between = j > 0 ? (cuts[j - 1] + t) / 2 : 0;
+                    boolean squashed = j > 0 && !backs && !onWall[k] && insideAt(fChain, between) && insideAt(gChain, between);
+                    if (rowFrom != null && !squashed) {
+                        int fm0 = rowFrom[0];
+                        int fm1 = rowAt[0];
+                        int gm0 = rowFrom[rowFrom.length - 1];
+                        int gm1 = rowAt[rowAt.length - 1];
+                        caps.add(new int[] {fFrom, fAt, fm1, fm0});
+                        capAfter.add(after);
+                        if (!backs) {
+                            caps.add(new int[] {fm0, fm1, gm1, gm0});
+                            capAfter.add(after);
+                        }
+                        caps.add(new int[] {gm0, gm1, gAt, gFrom});
+                        capAfter.add(after);
+                    }
+                    fFrom = fAt;
+                    gFrom = gAt;
+                    rowFrom = rowAt;
+                }
             }
             Creep creep = creptCount == 0 ? Creep.NONE
                     : new Creep(java.util.Arrays.copyOf(creptVertices, creptCount), java.util.Arrays.copyOf(creptFrom, 3 * creptCount));
             return new PaperInSpace(java.util.Arrays.copyOf(xyz, 3 * vertices), java.util.Arrays.copyOf(uv, 2 * vertices), paper,
-                    hosts, caps, capAfter.stream().mapToInt(Integer::intValue).toArray(), creep);
+                    hosts, caps, capAfter.stream().mapToInt(Integer::intValue).toArray(), creep, pieceStart);
         }
 
         /** What is done with two faces f and g (g > f) joined along paper edge a → b, edge i of f. */
@@ -305,13 +380,87 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          * without thickness, with faces on the next triangle over an edge where the point lies.
          */
         private int vertex(int f, int p) {
+            return vertex(f, p, Double.NaN, Double.NaN);
+        }
+
+        /**
+         * {@link #vertex(int, int)} for a corner of a piece of face f ({@link Pieces}) that lies
+         * wholly beside the same walls and mitres as its point (bx, by).
+         */
+        private int vertex(int f, int p, double bx, double by) {
             Isometry2 pose = sheet.pose(f);
+            HostFrame frame = frames[sheet.host(f)];
+            double x = pose.x(sheet.u(p), sheet.v(p));
+            double y = pose.y(sheet.u(p), sheet.v(p));
+            int[] list = copies.get(p);
+            int v = placed(f, x, y, sheet.u(p), sheet.v(p), frame.stops() == null ? null : over(f, p, pose), bx, by, list);
+            if (!contains(list, v)) {
+                int[] longer = java.util.Arrays.copyOf(list, list.length + 1);
+                longer[list.length] = v;
+                copies.set(p, longer);
+            }
+            return v;
+        }
+
+        private static boolean contains(int[] list, int v) {
+            for (int w : list) {
+                if (w == v) {
+                    return true;
+                }
+            }
+            return false;
+        }
+
+        /**
+         * The space vertex of face f's paper at frame point (x, y), sheet point (u, v), as the
+         * walls and mitres place it (for a corner of a piece, as the piece's point (bx, by) lies;
+         * NaN: as the point itself does): one of {@code known} (the copies already made of that
+         * point) where it lands on it at the same level of the same host, or a new one.
+         */
+        private int placed(int f, double x, double y, double u, double v, double[] over, double bx, double by, int[] known) {
             HostFrame frame = frames[sheet.host(f)];
             double[] point = new double[3];
             double[] xy = new double[2];
             int host = sheet.host(f);
-            double x = pose.x(sheet.u(p), sheet.v(p));
-            double y = pose.y(sheet.u(p), sheet.v(p));
+            double[] middle = middle(f);
+            walls.place(host, frame, x, y, height(f), middle[0], middle[1], over, bx, by, xy);
+            boolean crept = xy[0] != x || xy[1] != y;
+            frame.toSpace(xy[0], xy[1], height(f), point, 0);
+            for (int copy : known) {
+                if (copyHost[copy] == host && copyLevel[copy] == levels[f] && closer(copy, point, exact)) {
+                    return copy;
+                }
+            }
+            if (sheet.thickness() == 0) {
+                for (int copy : known) {
+                    if (closer(copy, point, merge)) {
+                        return copy;
+                    }
+                }
+            }
+            int made = add(point, u, v);
+            if (made >= copyHost.length) {
+                copyHost = java.util.Arrays.copyOf(copyHost, 2 * made + 2);
+                copyLevel = java.util.Arrays.copyOf(copyLevel, 2 * made + 2);
+            }
+            copyHost[made] = host;
+            copyLevel[made] = levels[f];
+            if (crept) {
+                if (creptCount == creptVertices.length) {
+                    creptVertices = java.util.Arrays.copyOf(creptVertices, 2 * creptCount + 8);
+                    creptFrom = java.util.Arrays.copyOf(creptFrom, 3 * creptVertices.length);
+                }
+                creptVertices[creptCount] = made;
+                creptSet.set(made);
+                frame.toSpace(x, y, height(f), creptFrom, 3 * creptCount);
+                creptCount++;
+            }
+            return made;
+        }
+
+        /** The middle of face f's polygon on its host's frame, as laid. */
+        private double[] middle(int f) {
+            Isometry2 pose = sheet.pose(f);
             int[] loop = sheet.loop(f);
             double cx = 0;
             double cy = 0;
@@ -319,42 +468,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 cx += pose.x(sheet.u(q), sheet.v(q)) / loop.length;
                 cy += pose.y(sheet.u(q), sheet.v(q)) / loop.length;
             }
-            walls.place(host, frame, x, y, height(f), cx, cy, frame.stops() == null ? null : over(f, p, pose), xy);
-            boolean crept = xy[0] != x || xy[1] != y;
-            frame.toSpace(xy[0], xy[1], height(f), point, 0);
-            for (int copy : copies.get(p)) {
-                if (copyHost[copy] == host && copyLevel[copy] == levels[f] && closer(copy, point, exact)) {
-                    return copy;
-                }
-            }
-            if (sheet.thickness() == 0) {
-                for (int copy : copies.get(p)) {
-                    if (closer(copy, point, merge)) {
-                        return copy;
-                    }
-                }
-            }
-            int v = add(point, sheet.u(p), sheet.v(p));
-            if (v >= copyHost.length) {
-                copyHost = java.util.Arrays.copyOf(copyHost, 2 * v + 2);
-                copyLevel = java.util.Arrays.copyOf(copyLevel, 2 * v + 2);
-            }
-            copyHost[v] = host;
-            copyLevel[v] = levels[f];
-            if (crept) {
-                if (creptCount == creptVertices.length) {
-                    creptVertices = java.util.Arrays.copyOf(creptVertices, 2 * creptCount + 8);
-                    creptFrom = java.util.Arrays.copyOf(creptFrom, 3 * creptVertices.length);
-                }
-                creptVertices[creptCount] = v;
-                frame.toSpace(x, y, height(f), creptFrom, 3 * creptCount);
-                creptCount++;
-            }
-            int[] list = copies.get(p);
-            int[] longer = java.util.Arrays.copyOf(list, list.length + 1);
-            longer[list.length] = v;
-            copies.set(p, longer);
-            return v;
+            return new double[] {cx, cy};
         }
 
         /**
@@ -413,15 +527,754 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          * moved {@code along} it (from its end a towards b), at {@code height}.
          */
         private int row(int f, NestedBends.Bend bend, int p, double out, double along, double height) {
+            return row(f, bend, sheet.u(p), sheet.v(p), out, along, height);
+        }
+
+        /** {@link #row(int, NestedBends.Bend, int, double, double, double)} at paper point (u, v) of the crease. */
+        private int row(int f, NestedBends.Bend bend, double u, double v, double out, double along, double height) {
             Isometry2 pose = sheet.pose(f);
             double length = Polygons2.length(bend.bx() - bend.ax(), bend.by() - bend.ay());
-            double px = pose.x(sheet.u(p), sheet.v(p)) + bend.nx() * out + (bend.bx() - bend.ax()) / length * along;
-            double py = pose.y(sheet.u(p), sheet.v(p)) + bend.ny() * out + (bend.by() - bend.ay()) / length * along;
+            double px = pose.x(u, v) + bend.nx() * out + (bend.bx() - bend.ax()) / length * along;
+            double py = pose.y(u, v) + bend.ny() * out + (bend.by() - bend.ay()) / length * along;
             double[] point = new double[3];
             double[] xy = new double[2];
             walls.place(sheet.host(f), frames[sheet.host(f)], px, py, height, xy);
             frames[sheet.host(f)].toSpace(xy[0], xy[1], height, point, 0);
-            return capVertex(point, sheet.u(p), sheet.v(p));
+            return capVertex(point, u, v);
+        }
+
+        /**
+         * A corner of a piece of a face: where it lies on the host's frame and on the sheet, which
+         * point it is (a paper vertex, at least 0, or a point where a line cut an edge, -1 - its
+         * index in {@link #cutPoints}), and the side of the face's loop that the piece's edge from
+         * it to the next corner lies along (-1: along a cut).
+         */
+        private static final class Corner {
+            final double x;
+            final double y;
+            final double u;
+            final double v;
+            final int id;
+            int side;
+
+            Corner(double x, double y, double u, double v, int id, int side) {
+                this.x = x;
+                this.y = y;
+                this.u = u;
+                this.v = v;
+                this.id = id;
+                this.side = side;
+            }
+        }
+
+        /** A piece cut in two: the part on the line's positive side and on its negative side (null where none). */
+        private record Parts(List<Corner> plus, List<Corner> minus) {
+        }
+
+        /** A line where a face is cut: a·x + b·y = c on its host's frame. */
+        private record Cut(double a, double b, double c) {
+            double value(Corner p) {
+                return a * p.x + b * p.y - c;
+            }
+        }
+
+        /** For each piece of the face last cut that lies in a region, the region it was cut to (by identity). */
+        private final java.util.Map<List<Corner>, double[]> holding = new java.util.IdentityHashMap<>();
+
+        /**
+         * Whether paper within region {@code outer} lies within region {@code region} only where
+         * {@code outer} holds it anyway: both along one line, {@code outer} reaching as far in or
+         * farther, from no later and to no sooner.
+         */
+        private static boolean covers(double[] outer, double[] region) {
+            return outer != null && outer[0] == region[0] && outer[1] == region[1] && outer[2] == region[2] && outer[3] == region[3]
+                    && outer[4] >= region[4] && outer[5] <= region[5] && outer[6] >= region[6];
+        }
+
+        /** The pieces of the face last cut ({@link #pieces}) that lie in a region where paper creeps: placed on its line. */
+        private final java.util.Set<List<Corner>> inside = java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>());
+        /**
+         * Where lines cut edges: x, y, u, v each, the two paper vertices of the sheet edge it lies
+         * on (-1 where it lies on none), its host and level.
+         */
+        private final List<double[]> cutPoints = new ArrayList<>();
+        /** The space vertices made of each cut point. */
+        private final List<int[]> cutCopies = new ArrayList<>();
+
+        /**
+         * Where face f's paper creeps (is placed elsewhere than it lies), along the concave edges
+         * of its host that it comes near: by each concave stretch, nearer the edge than its mitre;
+         * by each wall holding its level, nearer than the wall, beside it ({@link #edgeRegion}).
+         */
+        private List<double[]> regions(int f, List<Corner> face, double tiny) {
+            int host = sheet.host(f);
+            HostFrame frame = frames[host];
+            List<double[]> regions = new ArrayList<>();
+            if (frame.mitre() == null) {
+                return regions;
+            }
+            double height = height(f);
+            for (int k = 0; k < frame.mitre().length; k++) {
+                double[] stretches = frame.mitre()[k];
+                if (stretches == null) {
+                    continue;
+                }
+                double[] edge = frame.edge(k);
+                double most = walls.farthestWall(host, k);
+                for (int i = 0; i + 2 < stretches.length; i += 3) {
+                    most = Math.max(most, height * stretches[i + 2]);
+                }
+                if (!nearLine(face, edgeRegion(edge, 0, 0, 0), most, tiny)) {
+                    continue; // the face comes nowhere near this edge's mitres and walls
+                }
+                double near = ifold.geom.Tolerance.ON_PLANE * edge[4];
+                for (int i = 0; i + 2 < stretches.length; i += 3) {
+                    if (stretches[i + 2] > 0) {
+                        // A stretch that runs to an end of the edge holds paper beyond it too (HostFrame.mitreAt).
+                        regions.add(edgeRegion(edge, height * stretches[i + 2], stretches[i] <= near ? Double.NEGATIVE_INFINITY : stretches[i],
+                                stretches[i + 1] >= edge[4] - near ? Double.POSITIVE_INFINITY : stretches[i + 1]));
+                    }
+                }
+                List<double[]> wallsHere = new ArrayList<>();
+                walls.wallsAt(host, k, levels[f], wallsHere);
+                for (double[] wall : wallsHere) {
+                    regions.add(edgeRegion(edge, wall[0], wall[1], wall[2]));
+                }
+            }
+            return regions;
+        }
+
+        /** Whether some corner of the face lies nearer the region's line than {@code reach} (on its inner side, or beyond it). */
+        private static boolean nearLine(List<Corner> face, double[] region, double reach, double tiny) {
+            for (Corner c : face) {
+                if (-region[3] * (c.x - region[0]) + region[2] * (c.y - region[1]) < reach - tiny) {
+                    return true;
+                }
+            }
+            return false;
+        }
+
+        /**
+         * A region along edge {@code edge} of a host's polygon ({@link HostFrame#edge}): nearer it
+         * than {@code keep}, from {@code from} to {@code to} along it; as a line (x, y of a point,
+         * the unit direction, the host inside on its left), how far in, from and to.
+         */
+        private static double[] edgeRegion(double[] edge, double keep, double from, double to) {
+            return new double[] {edge[0], edge[1], edge[2] / edge[4], edge[3] / edge[4], keep, from, to};
+        }
+
+        /**
+         * Face f cut into pieces each of which lies wholly in or wholly out of each region where
+         * its paper creeps ({@link #regions}); null where the face meets none (it is placed whole).
+         *
+         * <p>Paper in such a region is placed on the region's line (a mitre, a fold's wall): it
+         * ends there. A face placed by its corners alone, some crept and some not, is drawn as if
+         * the creep ran straight between them: an edge from a corner that stays to one that crept
+         * turns about the first and sweeps across the paper and bends beside it (the long edge of a
+         * face nearly along a crease crossing that crease's bend), and a face that runs past the
+         * end of a wall keeps the corners beyond the end where they were and runs through the wall.
+         * Cut where the regions begin and end, each piece is placed as it lies: whole, or squashed
+         * onto its region's line (where the paper ends, it has no area).
+         */
+        private List<List<Corner>> pieces(int f) {
+            int host = sheet.host(f);
+            if (!(sheet.thickness() > 0) || walls == null) {
+                return null;
+            }
+            if (frames[host].mitre() == null) {
+                return null;
+            }
+            // A face a fold back to back holds (the hinge strip's turning squares) is placed whole: its
+            // corners by the crease stand back half a thickness, where the mitre's pieces would not
+            // meet them (cut there too, pieces of the two overlapped at the corners of concave edges).
+            double[] middle = middle(f);
+            if (walls.holdsBack(host, levels[f], middle[0], middle[1])) {
+                return null;
+            }
+            Isometry2 pose = sheet.pose(f);
+            int[] loop = sheet.loop(f);
+            List<Corner> whole = new ArrayList<>(loop.length);
+            for (int i = 0; i < loop.length; i++) {
+                double u = sheet.u(loop[i]);
+                double v = sheet.v(loop[i]);
+                whole.add(new Corner(pose.x(u, v), pose.y(u, v), u, v, loop[i], i));
+            }
+            // A corner this near a line lies on it: no piece thinner than a millionth of the face.
+            double size = 0;
+            for (Corner p : whole) {
+                for (Corner q : whole) {
+                    size = Math.max(size, Math.abs(p.x - q.x) + Math.abs(p.y - q.y));
+                }
+            }
+            double tiny = Math.max(sheet.tolerance() * 1e-3, 1e-6 * size);
+            List<double[]> regions = regions(f, whole, tiny);
+            if (regions.isEmpty()) {
+                return null;
+            }
+            List<List<Corner>> pieces = new ArrayList<>();
+            pieces.add(whole);
+            inside.clear();
+            holding.clear();
+            // Outermost first along each line: a piece already squashed onto a wall farther in is
+            // not cut again by the walls nearer the edge that it lies within.
+            regions.sort((p, q) -> Double.compare(q[4], p[4]));
+            for (int r = 0; r < regions.size(); r++) {
+                double[] region = regions.get(r);
+                double px = region[0];
+                double py = region[1];
+                double tx = region[2];
+                double ty = region[3];
+                // Inwards: left of the line.
+                Cut band = new Cut(-ty, tx, -ty * px + tx * py + region[4]);
+                Cut from = Double.isFinite(region[5]) ? new Cut(tx, ty, tx * px + ty * py + region[5]) : null;
+                Cut to = Double.isFinite(region[6]) ? new Cut(tx, ty, tx * px + ty * py + region[6]) : null;
+                List<List<Corner>> next = new ArrayList<>();
+                for (List<Corner> piece : pieces) {
+                    double[] within = holding.get(piece);
+                    if (!meets(piece, band, from, to, tiny) || covers(within, region)) {
+                        next.add(piece);
+                        continue;
+                    }
+                    boolean wasInside = inside.remove(piece);
+                    holding.remove(piece);
+                    int before = next.size();
+                    Parts byBand = cut(f, piece, band, tiny);
+                    add(next, byBand.plus());
+                    List<Corner> near = byBand.minus();
+                    if (near != null && from != null) {
+                        Parts byFrom = cut(f, near, from, tiny);
+                        add(next, byFrom.minus());
+                        near = byFrom.plus();
+                    }
+                    if (near != null && to != null) {
+                        Parts byTo = cut(f, near, to, tiny);
+                        add(next, byTo.plus());
+                        near = byTo.minus();
+                    }
+                    add(next, near);
+                    if (near != null) {
+                        inside.add(near);
+                        holding.put(near, region);
+                    }
+                    for (int k = before; wasInside && k < next.size(); k++) {
+                        inside.add(next.get(k));
+                        if (within != null) {
+                            holding.putIfAbsent(next.get(k), within);
+                        }
+                    }
+                }
+                pieces = next;
+            }
+            if (pieces.size() <= 1) {
+                return null;
+            }
+            joinCuts(pieces, tiny);
+            return pieces;
+        }
+
+        /**
+         * Gives each piece's edge along a cut the corners that the piece across it got there (a
+         * line that cut one of two pieces but not the other put a corner on one side only): so
+         * that the two are joined corner to corner, where a cap closes any gap between them.
+         */
+        private static void joinCuts(List<List<Corner>> pieces, double tiny) {
+            java.util.Map<Integer, Corner> byId = new java.util.LinkedHashMap<>();
+            for (List<Corner> piece : pieces) {
+                for (Corner c : piece) {
+                    if (c.id < 0) {
+                        byId.putIfAbsent(c.id, c);
+                    }
+                }
+            }
+            List<Corner> cuts = new ArrayList<>(byId.values());
+            for (int p = 0; p < pieces.size(); p++) {
+                List<Corner> piece = pieces.get(p);
+                List<Corner> joined = new ArrayList<>(piece.size());
+                for (int k = 0; k < piece.size(); k++) {
+                    Corner here = piece.get(k);
+                    Corner there = piece.get((k + 1) % piece.size());
+                    joined.add(here);
+                    if (here.side >= 0) {
+                        continue; // along the face's own side: the caps there pair the pieces by where they meet it
+                    }
+                    double dx = there.x - here.x;
+                    double dy = there.y - here.y;
+                    double length2 = dx * dx + dy * dy;
+                    List<double[]> between = new ArrayList<>();
+                    for (int i = 0; i < cuts.size(); i++) {
+                        Corner c = cuts.get(i);
+                        if (c.id == here.id || c.id == there.id || !(length2 > 0)) {
+                            continue;
+                        }
+                        double t = ((c.x - here.x) * dx + (c.y - here.y) * dy) / length2;
+                        double off = Math.abs((c.x - here.x) * dy - (c.y - here.y) * dx) / Math.sqrt(length2);
+                        // On the edge to rounding (a crossing of it), not merely near it.
+                        if (off <= 1e-6 * tiny && t * Math.sqrt(length2) > tiny && (1 - t) * Math.sqrt(length2) > tiny) {
+                            between.add(new double[] {t, i});
+                        }
+                    }
+                    between.sort((a, b) -> Double.compare(a[0], b[0]));
+                    for (double[] at : between) {
+                        Corner c = cuts.get((int) at[1]);
+                        joined.add(new Corner(c.x, c.y, c.u, c.v, c.id, -1));
+                    }
+                }
+                piece.clear(); // the same list: which pieces lie in a region is known by the list
+                piece.addAll(joined);
+            }
+        }
+
+        private static void add(List<List<Corner>> pieces, List<Corner> piece) {
+            if (piece != null && piece.size() >= 3) {
+                pieces.add(piece);
+            }
+        }
+
+        /** Whether a piece reaches into the region nearer the edge than {@code band} and between {@code from} and {@code to}. */
+        private static boolean meets(List<Corner> piece, Cut band, Cut from, Cut to, double tiny) {
+            boolean nearer = false;
+            boolean after = from == null;
+            boolean before = to == null;
+            for (Corner p : piece) {
+                nearer |= band.value(p) < -tiny;
+                after |= from != null && from.value(p) > tiny;
+                before |= to != null && to.value(p) < -tiny;
+            }
+            return nearer && after && before;
+        }
+
+        /**
+         * The piece cut by the line: the part on its positive side and the part on its negative
+         * side (null where there is none); the corners where the line crosses an edge are the same
+         * for every face of the layer along that edge.
+         */
+        private Parts cut(int f, List<Corner> piece, Cut line, double tiny) {
+            int n = piece.size();
+            double[] values = new double[n];
+            double most = 0;
+            double least = 0;
+            for (int i = 0; i < n; i++) {
+                values[i] = line.value(piece.get(i));
+                most = Math.max(most, values[i]);
+                least = Math.min(least, values[i]);
+            }
+            // A part reaching less than ten times the least cut past the line is not cut off:
+            // the piece goes whole to the side it reaches farther into (its corners that far past
+            // the line are placed as the rest of it, a ten-thousandth of a thickness from where they lie).
+            if (!(most > 10 * tiny) || !(least < -10 * tiny)) {
+                return most >= -least ? new Parts(piece, null) : new Parts(null, piece);
+            }
+            // Each corner of the two parts, with the input edge it starts (a corner) or lies on (a cut, -1 - edge).
+            List<Corner> plus = new ArrayList<>();
+            List<Corner> minus = new ArrayList<>();
+            List<Integer> plusAt = new ArrayList<>();
+            List<Integer> minusAt = new ArrayList<>();
+            for (int i = 0; i < n; i++) {
+                Corner here = piece.get(i);
+                Corner there = piece.get((i + 1) % n);
+                double a = values[i];
+                double b = values[(i + 1) % n];
+                if (a >= -tiny) {
+                    plus.add(here);
+                    plusAt.add(i);
+                }
+                if (a <= tiny) {
+                    minus.add(here);
+                    minusAt.add(i);
+                }
+                if (a > tiny && b < -tiny || a < -tiny && b > tiny) {
+                    Corner crossing = crossing(f, here, there, a / (a - b));
+                    plus.add(crossing);
+                    plusAt.add(-1 - i);
+                    minus.add(crossing);
+                    minusAt.add(-1 - i);
+                }
+            }
+            return new Parts(sided(piece, plus, plusAt), sided(piece, minus, minusAt));
+        }
+
+        /** The part's corners with the side each edge lies along: a side of the input where it runs along one of its edges, else the cut. */
+        private static List<Corner> sided(List<Corner> piece, List<Corner> part, List<Integer> at) {
+            int n = piece.size();
+            List<Corner> sided = new ArrayList<>(part.size());
+            for (int k = 0; k < part.size(); k++) {
+                int here = at.get(k);
+                int there = at.get((k + 1) % part.size());
+                int edge = -1;
+                if (here >= 0 && (there == (here + 1) % n || there == -1 - here)) {
+                    edge = here; // along the input's edge from this corner
+                } else if (here < 0 && there == (-1 - here + 1) % n) {
+                    edge = -1 - here; // from a cut on an input edge to that edge's end
+                }
+                Corner c = part.get(k);
+                sided.add(new Corner(c.x, c.y, c.u, c.v, c.id, edge >= 0 ? piece.get(edge).side : -1));
+            }
+            return sided;
+        }
+
+        /**
+         * Where {@code line} crosses the edge from {@code a} to {@code b} of a piece of face f, at
+         * {@code t} along it: one point for every face of the layer that cuts that edge there.
+         */
+        private Corner crossing(int f, Corner a, Corner b, double t) {
+            // The side of the face the edge lies along, as its two paper vertices (none for a cut).
+            int[] loop = sheet.loop(f);
+            int one = a.side >= 0 ? loop[a.side] : -1;
+            int two = a.side >= 0 ? loop[(a.side + 1) % loop.length] : -1;
+            double u = a.u + t * (b.u - a.u);
+            double v = a.v + t * (b.v - a.v);
+            // One point for every face of the layer whose edge the line crosses there (and for two
+            // lines crossing an edge at one point, where a wall ends on a mitre).
+            int known = cutAt(sheet.host(f), levels[f], u, v);
+            if (known < 0) {
+                known = cutPoints.size();
+                // And the sheet edge it lies on (its two paper vertices), where it lies on one.
+                cutPoints.add(new double[] {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), u, v, one, two,
+                    sheet.host(f), levels[f]});
+                cutCopies.add(new int[0]);
+                long cell = cell(sheet.host(f), levels[f], Math.round(u / SAME_POINT), Math.round(v / SAME_POINT));
+                if (known >= cutNext.length) {
+                    cutNext = java.util.Arrays.copyOf(cutNext, 2 * known + 16);
+                }
+                cutNext[known] = cutCells.get(cell, -1);
+                cutCells.put(cell, known);
+            }
+            double[] p = cutPoints.get(known);
+            return new Corner(p[0], p[1], p[2], p[3], -1 - known, -1);
+        }
+
+        /** Cut points closer than this on the sheet are one. */
+        private static final double SAME_POINT = 1e-9;
+        /** The last cut point made in each cell of the sheet {@link #SAME_POINT} across, by host and level ({@link #cell}). */
+        private final ifold.sheet.LongIntMap cutCells = new ifold.sheet.LongIntMap();
+        /** For each cut point, the one made before it in its cell (-1: none). */
+        private int[] cutNext = new int[16];
+
+        /** A cell's key: its host, level and place, mixed (cells that share a key are told apart by their points). */
+        private static long cell(int host, int level, long cu, long cv) {
+            long h = host * 0x9E3779B97F4A7C15L + level;
+            h = h * 0xC2B2AE3D27D4EB4FL + cu;
+            h = h * 0x165667B19E3779F9L + cv;
+            return (h ^ (h >>> 29)) & Long.MAX_VALUE; // the map takes keys of no sign
+        }
+
+        /** The cut point made on {@code host} at {@code level} at sheet point (u, v), within {@link #SAME_POINT}; -1 if none. */
+        private int cutAt(int host, int level, double u, double v) {
+            long cu = Math.round(u / SAME_POINT);
+            long cv = Math.round(v / SAME_POINT);
+            for (long du = -1; du <= 1; du++) {
+                for (long dv = -1; dv <= 1; dv++) {
+                    for (int k = cutCells.get(cell(host, level, cu + du, cv + dv), -1); k >= 0; k = cutNext[k]) {
+                        double[] p = cutPoints.get(k);
+                        if (p[6] == host && p[7] == level && Math.abs(p[2] - u) <= SAME_POINT && Math.abs(p[3] - v) <= SAME_POINT) {
+                            return k;
+                        }
+                    }
+                }
+            }
+            return -1;
+        }
+
+        /** The space vertex of a piece's corner, as the piece's point (bx, by) is placed. */
+        private int vertexOf(int f, Corner c, double bx, double by) {
+            if (c.id >= 0) {
+                return vertex(f, c.id, bx, by);
+            }
+            int index = -1 - c.id;
+            int[] known = cutCopies.get(index);
+            double[] cut = cutPoints.get(index);
+            // On a sheet edge that goes over an edge of the surface to another host, it is kept from
+            // the end of that edge as the edge's ends are (HostFrame.Stop).
+            double[] over = null;
+            if (cut[4] >= 0 && frames[sheet.host(f)].stops() != null) {
+                int g = sheet.faceAcross((int) cut[4], (int) cut[5]);
+                if (g < 0) {
+                    g = sheet.faceAcross((int) cut[5], (int) cut[4]);
+                }
+                if (g >= 0 && sheet.host(g) != sheet.host(f)) {
+                    Isometry2 pose = sheet.pose(f);
+                    int p = (int) cut[4];
+                    int q = (int) cut[5];
+                    over = new double[] {pose.x(sheet.u(p), sheet.v(p)), pose.y(sheet.u(p), sheet.v(p)), pose.x(sheet.u(q), sheet.v(q)),
+                        pose.y(sheet.u(q), sheet.v(q))};
+                }
+            }
+            int v = placed(f, c.x, c.y, c.u, c.v, over, bx, by, known);
+            if (!contains(known, v)) {
+                int[] longer = java.util.Arrays.copyOf(known, known.length + 1);
+                longer[known.length] = v;
+                cutCopies.set(index, longer);
+            }
+            return v;
+        }
+
+
+        /**
+         * Places face f's pieces: each corner as its piece lies ({@link #pieces}), the pieces'
+         * edges along the face's sides recorded for the caps, and where two pieces of the face
+         * are placed apart along the cut between them (the end of a wall, where the paper on one
+         * side ends on the wall and on the other runs on to its mitre) a cap across, of no area.
+         */
+        private void placePieces(int f, List<List<Corner>> pieces, List<int[]> paper, List<Integer> hostList, List<int[]> caps,
+                List<Integer> capAfter) {
+            int[] loop = sheet.loop(f);
+            List<List<double[]>> along = new ArrayList<>();
+            for (int i = 0; i < loop.length; i++) {
+                along.add(new ArrayList<>());
+            }
+            java.util.Map<List<Integer>, int[]> cuts = new java.util.HashMap<>();
+            for (List<Corner> piece : pieces) {
+                double bx = 0;
+                double by = 0;
+                for (Corner c : piece) {
+                    bx += c.x / piece.size();
+                    by += c.y / piece.size();
+                }
+                int n = piece.size();
+                int[] placed = new int[n];
+                for (int k = 0; k < n; k++) {
+                    placed[k] = vertexOf(f, piece.get(k), bx, by);
+                }
+                paper.add(placed);
+                hostList.add(sheet.host(f));
+                // A piece in a region where paper creeps, pressed onto the line where its layer ends.
+                boolean squashed = inside.contains(piece) && spaceArea(placed) <= 1e-6 * sheetArea(piece);
+                for (int k = 0; k < n; k++) {
+                    Corner here = piece.get(k);
+                    Corner there = piece.get((k + 1) % n);
+                    if (here.side >= 0) {
+                        double from = alongSide(f, here.side, here);
+                        double to = alongSide(f, here.side, there);
+                        double in = squashed ? 1 : 0;
+                        along.get(here.side).add(from <= to ? new double[] {from, to, placed[k], placed[(k + 1) % n], in}
+                                : new double[] {to, from, placed[(k + 1) % n], placed[k], in});
+                    } else {
+                        List<Integer> key = List.of(Math.min(here.id, there.id), Math.max(here.id, there.id));
+                        int[] ends = here.id < there.id ? new int[] {placed[k], placed[(k + 1) % n]} : new int[] {placed[(k + 1) % n], placed[k]};
+                        int[] other = cuts.putIfAbsent(key, ends);
+                        if (other != null && !(sameOrAt(other[0], ends[0]) && sameOrAt(other[1], ends[1]))) {
+                            caps.add(new int[] {other[0], other[1], ends[1], ends[0]});
+                            capAfter.add(f);
+                        }
+                    }
+                }
+            }
+            for (List<double[]> segments : along) {
+                segments.sort((p, q) -> Double.compare(p[0], q[0]));
+            }
+            sides.put(f, along);
+        }
+
+        /** The area of a polygon of space vertices. */
+        private double spaceArea(int[] polygon) {
+            double[] n = new double[3];
+            for (int k = 0; k < polygon.length; k++) {
+                int i = 3 * polygon[k];
+                int j = 3 * polygon[(k + 1) % polygon.length];
+                n[0] += (xyz[i + 1] - xyz[j + 1]) * (xyz[i + 2] + xyz[j + 2]);
+                n[1] += (xyz[i + 2] - xyz[j + 2]) * (xyz[i] + xyz[j]);
+                n[2] += (xyz[i] - xyz[j]) * (xyz[i + 1] + xyz[j + 1]);
+            }
+            return Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) / 2;
+        }
+
+        /** The area of a piece on the sheet. */
+        private static double sheetArea(List<Corner> piece) {
+            double twice = 0;
+            Corner first = piece.get(0);
+            for (int k = 0; k < piece.size(); k++) {
+                Corner a = piece.get(k);
+                Corner b = piece.get((k + 1) % piece.size());
+                twice += (a.u - first.u) * (b.v - first.v) - (b.u - first.u) * (a.v - first.v);
+            }
+            return Math.abs(twice) / 2;
+        }
+
+        private boolean sameOrAt(int a, int b) {
+            return a == b || samePlace(a, b);
+        }
+
+        /** How far along side {@code side} of face f's loop (0 at its first corner, 1 at its second) the piece corner lies. */
+        private double alongSide(int f, int side, Corner c) {
+            int[] loop = sheet.loop(f);
+            int a = loop[side];
+            int b = loop[(side + 1) % loop.length];
+            double du = sheet.u(b) - sheet.u(a);
+            double dv = sheet.v(b) - sheet.v(a);
+            return ((c.u - sheet.u(a)) * du + (c.v - sheet.v(a)) * dv) / (du * du + dv * dv);
+        }
+
+        /** The side of face g's loop from paper vertex a to b, or b to a. */
+        private int side(int g, int a, int b) {
+            int[] loop = sheet.loop(g);
+            for (int j = 0; j < loop.length; j++) {
+                int next = loop[(j + 1) % loop.length];
+                if (loop[j] == a && next == b || loop[j] == b && next == a) {
+                    return j;
+                }
+            }
+            throw new IllegalStateException("faces across an edge do not share its vertices");
+        }
+
+        /**
+         * Face f's paper along side i of its loop, which joins paper vertices a and b, from a to
+         * b: the edges of its pieces there in order, each as how far along from a it runs from
+         * and to (0 at a, 1 at b) and its vertex towards a and towards b.
+         */
+        private double[][] chain(int f, int i, int a, int b) {
+            int[] loop = sheet.loop(f);
+            boolean forward = loop[i] == a;
+            if (!sides.containsKey(f)) {
+                int first = corners[f][i];
+                int second = corners[f][(i + 1) % loop.length];
+                return new double[][] {forward ? new double[] {0, 1, first, second, 0} : new double[] {0, 1, second, first, 0}};
+            }
+            List<double[]> segments = sides.get(f).get(i);
+            double[][] chain = new double[segments.size()][];
+            for (int k = 0; k < chain.length; k++) {
+                double[] segment = segments.get(forward ? k : chain.length - 1 - k);
+                chain[k] = forward ? segment.clone() : new double[] {1 - segment[1], 1 - segment[0], segment[3], segment[2], segment[4]};
+            }
+            return chain;
+        }
+
+        /**
+         * The cap between two layers' paper along one crease (or edge), each given as its chain
+         * from a to b ({@link #chain}): a quad between the two for each stretch where neither is
+         * cut (where one is cut and the other not, a point on the other's edge there, as it
+         * lies); where {@code flat}, none where the two lie on each other.
+         */
+        private void addCap(double[][] f, double[][] g, int a, int b, int after, boolean flat, boolean dropSquashed, List<int[]> caps,
+                List<Integer> capAfter) {
+            double[] cuts = cutsAlong(f, g);
+            int fromF = -1;
+            int fromG = -1;
+            for (int k = 0; k < cuts.length; k++) {
+                double t = cuts[k];
+                double u = along(sheet.u(a), sheet.u(b), t);
+                double v = along(sheet.v(a), sheet.v(b), t);
+                int toF = pointAt(f, t, u, v);
+                int toG = pointAt(g, t, u, v);
+                if (k > 0) {
+                    double middle = (cuts[k - 1] + t) / 2;
+                    // Paper of both layers squashed where it ends (a fold inside a wall's, or running
+                    // into a mitre): the bend is not there, where the paper across has the room.
+                    boolean squashed = dropSquashed && insideAt(f, middle) && insideAt(g, middle);
+                    if (!squashed && !(flat && sameOrAt(fromF, fromG) && sameOrAt(toF, toG))) {
+                        caps.add(new int[] {fromF, toF, toG, fromG});
+                        capAfter.add(after);
+                    }
+                }
+                fromF = toF;
+                fromG = toG;
+            }
+        }
+
+        /** Where either chain's edges begin or end along the crease (0 to 1), in order, each once. */
+        private static double[] cutsAlong(double[][] f, double[][] g) {
+            double[] all = new double[2 * (f.length + g.length)];
+            int n = 0;
+            for (double[][] chain : List.of(f, g)) {
+                for (double[] edge : chain) {
+                    all[n++] = edge[0];
+                    all[n++] = edge[1];
+                }
+            }
+            java.util.Arrays.sort(all, 0, n);
+            double[] cuts = new double[n];
+            int count = 0;
+            for (int k = 0; k < n; k++) {
+                if (count == 0 || all[k] - cuts[count - 1] > SAME_CUT) {
+                    cuts[count++] = all[k];
+                }
+            }
+            cuts[0] = 0;
+            cuts[count - 1] = 1;
+            return java.util.Arrays.copyOf(cuts, count);
+        }
+
+        /** From a to b, t of the way (a and b themselves at the ends). */
+        private static double along(double a, double b, double t) {
+            return t == 0 ? a : t == 1 ? b : a + t * (b - a);
+        }
+
+        /**
+         * The bend of flat fold k (its corners c, as {@code bendCorners}) between two faces placed
+         * whole: back to back with another fold, its layers stand back half a thickness, and its
+         * bend reaches the crease halfway up, where the other's meets it; else out beyond the
+         * crease from each layer, and straight across between.
+         */
+        private void wholeBend(int k, int[] c, NestedBends.Bend bend, double out, double slope, double[] past, int after, List<int[]> caps,
+                List<Integer> capAfter) {
+            int f = c[0];
+            int g = c[1];
+            if (out == 0) {
+                double middle = (height(f) + height(g)) / 2;
+                int apexA = apex(f, c[2], middle);
+                int apexB = apex(f, c[3], middle);
+                caps.add(new int[] {c[4], c[5], apexB, apexA});
+                caps.add(new int[] {apexA, apexB, c[7], c[6]});
+                capAfter.add(after);
+                capAfter.add(after);
+                return;
+            }
+            boolean fLower = height(f) < height(g);
+            double lower = Math.min(height(f), height(g)) + out / slope;
+            double upper = Math.max(height(f), height(g)) - out;
+            int fma = row(f, bend, c[2], out, -past[2 * k], fLower ? lower : upper);
+            int fmb = row(f, bend, c[3], out, past[2 * k + 1], fLower ? lower : upper);
+            int gma = row(f, bend, c[2], out, -past[2 * k], fLower ? upper : lower);
+            int gmb = row(f, bend, c[3], out, past[2 * k + 1], fLower ? upper : lower);
+            caps.add(new int[] {c[4], c[5], fmb, fma});
+            caps.add(new int[] {fma, fmb, gmb, gma});
+            caps.add(new int[] {gma, gmb, c[7], c[6]});
+            capAfter.add(after);
+            capAfter.add(after);
+            capAfter.add(after);
+        }
+
+        /** Cuts along a crease closer than this (of its length) are one. */
+        private static final double SAME_CUT = 1e-9;
+
+        /** Whether the chain's paper at {@code t} along it lies in a region where it creeps ({@link #pieces}). */
+        private static boolean insideAt(double[][] chain, double t) {
+            for (double[] edge : chain) {
+                if (edge[0] <= t && t <= edge[1]) {
+                    return edge[4] > 0;
+                }
+            }
+            return false;
+        }
+
+        /**
+         * The vertex of a chain at {@code t} along it, the crease's paper point (u, v) there: an
+         * edge's end, or a point made on the edge that runs past it, between its two ends as they
+         * lie.
+         */
+        private int pointAt(double[][] chain, double t, double u, double v) {
+            double[] nearest = chain[0];
+            for (double[] edge : chain) {
+                if (Math.abs(edge[0] - t) <= SAME_CUT) {
+                    return (int) edge[2];
+                }
+                if (Math.abs(edge[1] - t) <= SAME_CUT) {
+                    return (int) edge[3];
+                }
+                if (edge[0] < t && t < edge[1]) {
+                    double w = (t - edge[0]) / (edge[1] - edge[0]);
+                    int a = (int) edge[2];
+                    int b = (int) edge[3];
+                    double[] point = new double[3];
+                    for (int d = 0; d < 3; d++) {
+                        point[d] = xyz[3 * a + d] + w * (xyz[3 * b + d] - xyz[3 * a + d]);
+                    }
+                    return capVertex(point, u, v);
+                }
+                if (Math.min(Math.abs(edge[0] - t), Math.abs(edge[1] - t)) < Math.min(Math.abs(nearest[0] - t), Math.abs(nearest[1] - t))) {
+                    nearest = edge;
+                }
+            }
+            return (int) (Math.abs(nearest[0] - t) < Math.abs(nearest[1] - t) ? nearest[2] : nearest[3]);
         }
 
         /** A vertex of a cap's middle rows, made for no face's layer: shared with none. */
@@ -441,12 +1294,17 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          * on the crease line where no fold back to back moves it, mitred by a concave edge.
          */
         private int apex(int f, int p, double height) {
+            return apex(f, sheet.u(p), sheet.v(p), height);
+        }
+
+        /** {@link #apex(int, int, double)} at paper point (u, v) of the crease. */
+        private int apex(int f, double u, double v, double height) {
             Isometry2 pose = sheet.pose(f);
             double[] point = new double[3];
             double[] xy = new double[2];
-            walls.apex(sheet.host(f), frames[sheet.host(f)], pose.x(sheet.u(p), sheet.v(p)), pose.y(sheet.u(p), sheet.v(p)), height, xy);
+            walls.apex(sheet.host(f), frames[sheet.host(f)], pose.x(u, v), pose.y(u, v), height, xy);
             frames[sheet.host(f)].toSpace(xy[0], xy[1], height, point, 0);
-            return capVertex(point, sheet.u(p), sheet.v(p));
+            return capVertex(point, u, v);
         }
 
         private boolean closer(int copy, double[] point, double distance) {

@@ -60,6 +60,9 @@ final class TruthNeighbours {
                     if (g <= e || h == f || !sharedSegment(f, edgeCorner.get(e), h, edgeCorner.get(g), tol, shared)) {
                         continue;
                     }
+                    if (wrap.squashed(f) && wrap.squashed(h)) {
+                        continue; // paper pressed to no area where two layers end by a concave edge: no bend between
+                    }
                     for (int end = 0; end < 2; end++) {
                         double u = shared[2 * end];
                         double v = shared[2 * end + 1];

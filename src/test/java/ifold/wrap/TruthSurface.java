@@ -257,11 +257,16 @@ final class TruthSurface {
 
     /** Face f's signed area on the sheet (positive counter-clockwise in u, v). */
     double sheetArea(int f) {
+        // From the first corner: far along a long strip, products of whole coordinates would lose
+        // the area of a small face in their rounding.
+        int first = wrap.cornerT[wrap.faceStart[f]];
+        double u0 = wrap.uv[2 * first];
+        double v0 = wrap.uv[2 * first + 1];
         double twice = 0;
         for (int c = wrap.faceStart[f]; c < wrap.faceStart[f + 1]; c++) {
             int a = wrap.cornerT[c];
             int b = wrap.cornerT[wrap.neighbours.nextCorner(f, c)];
-            twice += wrap.uv[2 * a] * wrap.uv[2 * b + 1] - wrap.uv[2 * b] * wrap.uv[2 * a + 1];
+            twice += (wrap.uv[2 * a] - u0) * (wrap.uv[2 * b + 1] - v0) - (wrap.uv[2 * b] - u0) * (wrap.uv[2 * a + 1] - v0);
         }
         return twice / 2;
     }

@@ -72,9 +72,12 @@ final class TruthTiling {
             report.add(WrapTruths.TILED, strip + "'s paper faces have area " + area + " on the sheet, not L * w = " + length + " * " + width
                     + " = " + length * width);
         }
+        // A cap's corners lie on one crease of the sheet, each good to about 1e-16 of the strip's
+        // length: a short cap far along a long strip has that much area across its length.
+        double rounding = 1e-13 * Math.hypot(length, width);
         for (int f : wrap.stripCaps.get(s)) {
             double faceSize = wrap.surface.sheetSize(f);
-            if (Math.abs(wrap.surface.sheetArea(f)) > WrapTruths.RELATIVE * Math.max(faceSize * faceSize, tol * tol)) {
+            if (Math.abs(wrap.surface.sheetArea(f)) > WrapTruths.RELATIVE * Math.max(faceSize * faceSize, tol * tol) + rounding * faceSize) {
                 report.add(WrapTruths.TILED, "cap " + wrap.face(f) + " has area " + Math.abs(wrap.surface.sheetArea(f)) + " on the sheet, not 0");
             }
         }
@@ -135,6 +138,7 @@ final class TruthTiling {
         double sign = Math.signum(wrap.surface.sheetArea(f));
         double turning = 0;
         double tol = WrapTruths.RELATIVE * wrap.surface.sheetSize(f);
+        double rounding = 1e-15 * Math.hypot(wrap.stripL[wrap.faceStrip[f]], wrap.stripW[wrap.faceStrip[f]]);
         for (int k = 0; k < n; k++) {
             int a = wrap.cornerT[start + k];
             int b = wrap.cornerT[start + (k + 1) % n];
@@ -149,7 +153,8 @@ final class TruthTiling {
             }
             double cross = e1u * e2v - e1v * e2u;
             double dot = e1u * e2u + e1v * e2v;
-            if (sign * cross < -WrapTruths.RELATIVE * Math.hypot(e1u, e1v) * Math.hypot(e2u, e2v)) {
+            // A corner good to about 1e-16 of the strip's length turns a short side by that much.
+            if (sign * cross < -WrapTruths.RELATIVE * Math.hypot(e1u, e1v) * Math.hypot(e2u, e2v) - rounding * (Math.hypot(e1u, e1v) + Math.hypot(e2u, e2v))) {
                 return false;
             }
             turning += Math.atan2(sign * cross, dot);

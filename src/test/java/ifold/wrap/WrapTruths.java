@@ -24,7 +24,9 @@ import java.util.List;
  * its height times tan(φ/2) in from it (the plane halving the wedge of air above the edge,
  * which the layers of the face across keep to from the other side);</li>
  * <li>{@link #NOT_TORN}: faces that are neighbours on the sheet are neighbours in space (or
- * joined by a cap across at most a few thicknesses);</li>
+ * joined by a cap across at most a few thicknesses), but for two pressed to no area in space
+ * (paper whose layer ends by a concave edge, squashed onto the line where it ends: truth 2 holds
+ * their corners to the creep zone);</li>
  * <li>{@link #COVERED}: random points of the model lie under paper (but within the creep zone
  * of a concave edge, truth 2, where thick paper stands back from the edge);</li>
  * <li>{@link #ON_SURFACE}: every paper face lies flat on the model, outside the solid and at most
@@ -382,6 +384,27 @@ public final class WrapTruths {
                 return;
             }
         }
+        // A point on a side lies on that side as drawn, between its two corners: where the face's
+        // corners stand back from a concave edge, the map below would put it elsewhere.
+        for (int c = start; c < end; c++) {
+            int n = c + 1 < end ? c + 1 : start;
+            double au = uv[2 * cornerT[c]];
+            double av = uv[2 * cornerT[c] + 1];
+            double su = uv[2 * cornerT[n]] - au;
+            double sv = uv[2 * cornerT[n] + 1] - av;
+            double length = Math.hypot(su, sv);
+            if (!(length > near)) {
+                continue;
+            }
+            double along = ((u - au) * su + (v - av) * sv) / (length * length);
+            double off = Math.abs((u - au) * sv - (v - av) * su) / length;
+            if (off <= near && along > 0 && along < 1) {
+                for (int d = 0; d < 3; d++) {
+                    out[d] = xyz[3 * cornerV[c] + d] + along * (xyz[3 * cornerV[n] + d] - xyz[3 * cornerV[c] + d]);
+                }
+                return;
+            }
+        }
         // The best-shaped corner triangle: the corner farthest from the first, then the one farthest from their line.
         int c0 = start;
         int c1 = start + 1;
@@ -437,6 +460,28 @@ public final class WrapTruths {
             n[d] /= length;
         }
         return n;
+    }
+
+    /** Face f's area in space (half the length of its Newell sum). */
+    double spaceArea(int f) {
+        double[] n = new double[3];
+        for (int c = faceStart[f]; c < faceStart[f + 1]; c++) {
+            int i = 3 * cornerV[c];
+            int j = 3 * cornerV[neighbours.nextCorner(f, c)];
+            n[0] += (xyz[i + 1] - xyz[j + 1]) * (xyz[i + 2] + xyz[j + 2]);
+            n[1] += (xyz[i + 2] - xyz[j + 2]) * (xyz[i] + xyz[j]);
+            n[2] += (xyz[i] - xyz[j]) * (xyz[i + 1] + xyz[j + 1]);
+        }
+        return Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) / 2;
+    }
+
+    /**
+     * Whether paper face f is squashed in space to no area where it has some on the sheet: paper
+     * thick layers hold back from a concave edge, pressed onto the line where its layer ends
+     * (truth 2 holds every such face's corners to a creep zone).
+     */
+    boolean squashed(int f) {
+        return !faceCap[f] && spaceArea(f) <= 1e-6 * Math.abs(surface.sheetArea(f));
     }
 
     double[] centroid(int f) {
