@@ -354,11 +354,7 @@ final class PaperOutputs {
             return;
         }
         PaperCollisions.Result result = Collisions.addTo(figures, strips, thickness, model, exportObj);
-        if (result != null) {
-            collisions = result.summary();
-        } else if (thickness > 0) {
-            collisions = "collisions: not checked: " + Collisions.notChecked(strips, thickness);
-        }
+        collisions = result != null ? result.summary() : "collisions: not checked: " + Collisions.notChecked(strips, thickness);
     }
 
     /**

@@ -29,10 +29,17 @@ public final class Collisions {
      */
     public static final int MOST_FACES = 600_000;
 
-    /** Why {@code strips} are not checked, or null where they are: paper of no thickness, or more than {@link #MOST_FACES} faces. */
+    /** Why paper of no thickness is not checked, as both front ends say it. */
+    public static final String NO_THICKNESS = "paper of no thickness (every layer lies in its plane: the layer order is the check)";
+
+    /**
+     * Why {@code strips} are not checked, or null where they are: paper of no thickness (its
+     * layers all lie in their planes, where every pair would touch: whether they are stacked as
+     * paper can be is the layer order's question), or more than {@link #MOST_FACES} faces.
+     */
     public static String notChecked(List<PaperInSpace> strips, double thickness) {
         if (!(thickness > 0)) {
-            return "paper of no thickness";
+            return NO_THICKNESS;
         }
         long faces = 0;
         for (PaperInSpace strip : strips) {
@@ -65,18 +72,15 @@ public final class Collisions {
 
     /**
      * Checks the strips as {@link #check} does and adds the figures to a report's as
-     * {@code collisions}, where there is a check: what both front ends report.
+     * {@code collisions}, or where there is no check {@code collisions.notChecked} saying why:
+     * what both front ends report.
      *
-     * @return the check, or null where {@link #notChecked} says why not (too many faces are reported as such)
+     * @return the check, or null where {@link #notChecked} says why not (reported as such)
      */
     public static PaperCollisions.Result addTo(Map<String, Object> figures, List<PaperInSpace> strips, double thickness,
             IndexedPolygons model, Path exported) throws IOException {
         PaperCollisions.Result result = check(strips, thickness, model, exported);
-        if (result != null) {
-            figures.put("collisions", figures(result));
-        } else if (thickness > 0) {
-            figures.put("collisions", Map.of("notChecked", notChecked(strips, thickness)));
-        }
+        put(figures, result, strips, thickness);
         return result;
     }
 
@@ -100,7 +104,7 @@ public final class Collisions {
     public static void put(Map<String, Object> figures, PaperCollisions.Result result, List<PaperInSpace> strips, double thickness) {
         if (result != null) {
             figures.put("collisions", figures(result));
-        } else if (thickness > 0) {
+        } else {
             figures.put("collisions", Map.of("notChecked", notChecked(strips, thickness)));
         }
     }

@@ -63,6 +63,7 @@ class ReportsTest {
     private Map<String, String> reports() throws Exception {
         Map<String, String[]> runs = new LinkedHashMap<>();
         runs.put("wrap", new String[] {"wrap", "models/cube.off", "--no-view", "--export-fold", dir.resolve("a.fold").toString(), "--report", "R"});
+        runs.put("wrap#thin", new String[] {"wrap", "models/cube.off", "--thickness", "0", "--no-view", "--report", "R"});
         runs.put("wrap#hinge", new String[] {"wrap", "models/cube.off", "--method", "hinge", "--no-view", "--report", "R"});
         runs.put("demo zigzag", new String[] {"demo", "zigzag", "--no-view", "--export-fold", dir.resolve("b.fold").toString(), "--report", "R"});
         runs.put("demo turn", new String[] {"demo", "turn", "--angle", "70", "--no-view", "--report", "R"});
@@ -157,5 +158,6 @@ class ReportsTest {
         assertTrue(packaged.meaning("demo zigzag", "paperOutsideArea").orElseThrow().startsWith("paper area whose shadow falls outside the triangle"));
         assertEquals(packaged.meaning("wrap", "isometryError"), packaged.meaning("demo zigzag", "isometryError"), "as above: the shared row");
         assertTrue(packaged.meaning("wrap", "collisions.pairs").orElseThrow().contains("cross deeper than"));
+        assertTrue(packaged.meaning("wrap", "collisions.notChecked").orElseThrow().startsWith("why the paper was not checked"));
     }
 }

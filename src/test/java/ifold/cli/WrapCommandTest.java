@@ -50,6 +50,25 @@ class WrapCommandTest {
     }
 
     /**
+     * Paper of no thickness is not checked for collisions (its layers lie in their planes), and
+     * the run says so, on its line and in the report, rather than leaving the line out.
+     */
+    @Test
+    void paperOfNoThicknessSaysWhyItsCollisionsAreNotChecked() throws Exception {
+        Path obj = dir.resolve("thin.obj");
+        Path report = dir.resolve("thin.json");
+        CliTest.Run run = CliTest.run("wrap", "models/cube.off", "--no-view", "--thickness", "0", "--export-obj", obj.toString(),
+                "--report", report.toString());
+        assertEquals(0, run.code(), run.err());
+        String[] lines = run.out().split("\n");
+        assertTrue(lines[1].startsWith("layer order: "), run.out());
+        assertEquals("collisions: not checked: " + ifold.job.Collisions.NO_THICKNESS, lines[2], run.out());
+        String json = Files.readString(report);
+        assertTrue(java.util.regex.Pattern.compile("\"collisions\"\\s*:\\s*\\{\\s*\"notChecked\"\\s*:\\s*\"paper of no thickness")
+                .matcher(json).find(), json);
+    }
+
+    /**
      * --export-mesh writes the same paper and caps as the OBJ, as one mesh: as binary PLY the
      * same vertices and faces; as STL the same triangles, fanned, with the layers' corners
      * welded where they coincide.
