@@ -55,12 +55,12 @@ class FoldCommandTest {
         assertTrue(badOption.err().contains("--export-obj"), badOption.err());
     }
 
-    @Test
-    void foldsThatHalveThePaperAgainAndAgainStopAtTheLimitOfFaces() throws Exception {
+    /** A script of {@code folds} folds through every layer, each halving the square left: 2^folds faces. */
+    private static String halvings(int folds) {
         StringBuilder script = new StringBuilder("paper square 1024\nthickness 0.0001\n");
         double x = 1024;
         double y = 1024;
-        for (int k = 0; k < 25; k++) {
+        for (int k = 0; k < folds; k++) {
             if (k % 2 == 0) {
                 x /= 2;
                 script.append("fold valley 180 points ").append(x).append(" 0 0 ").append(x).append(" 1 0 right\n");
@@ -69,7 +69,12 @@ class FoldCommandTest {
                 script.append("fold valley 180 points 0 ").append(y).append(" 0 1 ").append(y).append(" 0 left\n");
             }
         }
-        Path file = Files.writeString(dir.resolve("halve.fold"), script.toString());
+        return script.toString();
+    }
+
+    @Test
+    void foldsThatHalveThePaperAgainAndAgainStopAtTheLimitOfFaces() throws Exception {
+        Path file = Files.writeString(dir.resolve("halve.fold"), halvings(25));
         Path obj = dir.resolve("out.obj");
         long start = System.nanoTime();
         CliTest.Run run = CliTest.run("fold", file.toString(), "--no-view", "--max-faces", "1000", "--export-obj", obj.toString());
@@ -77,6 +82,27 @@ class FoldCommandTest {
         assertTrue((System.nanoTime() - start) * 1e-9 < 30, "refused in bounded time");
         assertFalse(Files.exists(obj));
         CliTest.assertOneLineError(CliTest.run("fold", file.toString(), "--no-view", "--max-faces", "0"), "--max-faces");
+    }
+
+    /**
+     * fold's limit on faces is its own, set for time (a fold through a pile costs the square of
+     * its layers), not the wrap's, set for memory; its help says so, and a low limit still
+     * refuses in one line.
+     */
+    @Test
+    void theLimitOnFacesIsSetForTimeAndTheHelpSaysSo() throws Exception {
+        CliTest.Run help = CliTest.run("fold", "--help");
+        assertEquals(0, help.code(), help.err());
+        String text = help.out().replaceAll("\\s+", " ");
+        assertTrue(text.contains("(default " + ifold.script.ScriptFolding.DEFAULT_MAX_FACES + "): a fold that would make more is refused."
+                + " Set for time, not memory as the wrap's is"), text);
+        assertTrue(ifold.script.ScriptFolding.DEFAULT_MAX_FACES < ifold.wrap.Wrap.DEFAULT_MAX_FACES, "the wrap's limit is not the fold's");
+        Path file = Files.writeString(dir.resolve("halve6.fold"), halvings(6));
+        Path obj = dir.resolve("out.obj");
+        CliTest.assertOneLineError(CliTest.run("fold", file.toString(), "--no-view", "--max-faces", "16", "--export-obj", obj.toString()),
+                "halve6.fold:7: fold 5", "32 faces, more than the 16 allowed", "--max-faces raises the limit");
+        assertFalse(Files.exists(obj));
+        assertEquals(0, CliTest.run("fold", file.toString(), "--no-view", "--max-faces", "64").code(), "64 faces fold");
     }
 
     @Test
