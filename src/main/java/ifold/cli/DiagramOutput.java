@@ -6,7 +6,6 @@ import ifold.scene.Animation;
 import ifold.scene.Scene;
 import java.io.IOException;
 import java.nio.file.Path;
-import java.util.Locale;
 import java.util.function.Function;
 import picocli.CommandLine.Option;
 
@@ -39,8 +38,7 @@ final class DiagramOutput {
             Scene scene = new Scene();
             Animation animation = animationIn.apply(scene);
             PrintJob.Printed printed = PrintJob.diagrams(title, method, scene, animation, file, outputs.printPage(), JobWatcher.NONE);
-            outputs.wrote(file, String.format(Locale.ROOT, "wrote %s: %d pages, %d step%s", file, printed.pages(), printed.pieces(),
-                    printed.pieces() == 1 ? "" : "s"));
+            outputs.wrote(file, printed.stepsSummary());
         } catch (IOException e) {
             outputs.discardWritten();
             throw new UserError("cannot draw the step diagrams: " + e.getMessage());

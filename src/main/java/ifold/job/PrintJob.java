@@ -87,6 +87,12 @@ public final class PrintJob {
             return String.format(Locale.ROOT, "wrote %s: %d page%s, %d piece%s", where, pages, pages == 1 ? "" : "s", pieces,
                     pieces == 1 ? "" : "s");
         }
+
+        /** Step diagrams' line, their pieces being steps: "wrote steps.pdf: 4 pages, 12 steps". */
+        public String stepsSummary() {
+            return String.format(Locale.ROOT, "wrote %s: %d page%s, %d step%s", files.get(0), pages, pages == 1 ? "" : "s", pieces,
+                    pieces == 1 ? "" : "s");
+        }
     }
 
     /** Whether iFold prints to {@code file}: its name ends in .pdf or .svg, in any case. */
@@ -176,7 +182,7 @@ public final class PrintJob {
      * a title page and a panel a fold, as one PDF of pages of {@code page}'s size written to
      * {@code file}, whole or not at all.
      *
-     * @return the file, its pages and the folds drawn (as {@link Printed#pieces})
+     * @return the file, its pages and its steps, the numbered panels (as {@link Printed#pieces}: {@link StepDiagrams#stepCount})
      */
     public static Printed diagrams(String title, String method, Scene scene, Animation animation, Path file, Page page, JobWatcher watcher)
             throws IOException {
@@ -187,6 +193,6 @@ public final class PrintJob {
             watcher.stopIfAsked();
             pdf.save(file);
         }
-        return new Printed(List.of(file), pages, animation.foldCount());
+        return new Printed(List.of(file), pages, StepDiagrams.stepCount(animation));
     }
 }

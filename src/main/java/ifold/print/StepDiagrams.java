@@ -59,6 +59,7 @@ public final class StepDiagrams {
         int columns = wide ? ROWS : COLUMNS;
         int rows = wide ? COLUMNS : ROWS;
         int folds = animation.foldCount();
+        int numbered = stepCount(animation);
         double pictureHeight = wide ? 80 : 110;
         List<Entry> contents = contents(animation, width, height, MARGIN + 18 + pictureHeight + 13);
         int listPages = contents.isEmpty() ? 1 : contents.get(contents.size() - 1).page() + 1;
@@ -66,8 +67,8 @@ public final class StepDiagrams {
         // The title page: the paper folded, and the steps listed.
         canvas.beginPage(width, height);
         canvas.text(MARGIN, MARGIN + 6, 6, "iFold: " + title, true);
-        canvas.text(MARGIN, MARGIN + 13, 3.2, String.format(Locale.ROOT, "%s: step diagrams, %d %s, page 1 of %d", method, folds,
-                folds == 1 ? "step" : "steps", pages), false);
+        canvas.text(MARGIN, MARGIN + 13, 3.2, String.format(Locale.ROOT, "%s: step diagrams, %d %s, page 1 of %d", method, numbered,
+                numbered == 1 ? "step" : "steps", pages), false);
         animation.apply(animation.stepCount());
         SceneDrawing.draw(scene, canvas, MARGIN, MARGIN + 18, width - 2 * MARGIN, pictureHeight);
         canvas.text(MARGIN, MARGIN + 18 + pictureHeight + 8, 3.6, "The steps", true);
@@ -141,6 +142,19 @@ public final class StepDiagrams {
             canvas.endPage();
         }
         return pages;
+    }
+
+    /**
+     * The steps a reader counts: the numbered panels. A panel of a step that folds nothing (the
+     * strip's end, paper running on flat into the next piece of a face) is drawn, unnumbered, to
+     * show where the paper goes, but is not one of the steps to make.
+     */
+    public static int stepCount(Animation animation) {
+        int steps = 0;
+        for (int k = 0; k < animation.foldCount(); k++) {
+            steps += animation.foldLabel(k).isEmpty() ? 0 : 1;
+        }
+        return steps;
     }
 
     /**

@@ -356,7 +356,11 @@ public final class WrapPlayback implements Animation {
         }
         for (Wrap.Kind kind : Wrap.Kind.values()) {
             int n = kinds[kind.ordinal()];
-            if (n > 0) {
+            if (kind == Wrap.Kind.END && n > 0) {
+                // Not a fold to count: where the strip stops.
+                text.append(separator).append(n == 1 ? "the strip's end" : n + " ends of strips");
+                separator = ", ";
+            } else if (n > 0) {
                 String word = switch (kind) {
                     case ZIGZAG_TURN -> n == 1 ? "turn fold" : "turn folds";
                     case TURN_GADGET -> n == 1 ? "gadget fold" : "gadget folds";
@@ -364,7 +368,7 @@ public final class WrapPlayback implements Animation {
                             : n == 1 ? "crossing to the next triangle" : "crossings to the next triangle";
                     case OVERLAP -> n == 1 ? "overlap" : "overlaps";
                     case TUCK -> n == 1 ? "tuck" : "tucks";
-                    case END -> "end of the strip";
+                    case END -> throw new AssertionError("said above");
                     case DIAGONAL_TURN -> n == 1 ? "turn along a square's diagonal" : "turns along squares' diagonals";
                 };
                 text.append(separator).append(n).append(' ').append(word);
@@ -545,9 +549,14 @@ public final class WrapPlayback implements Animation {
         }
         int alone = stepOfPanel(k);
         if (alone >= 0) {
+            if (!creases(steps.get(alone))) {
+                return describeStep(alone); // it folds nothing: not one of its triangle's folds
+            }
+            // Its place among its triangle's folds, counted as the print numbers them.
             int t = triangleOf[alone];
-            return String.format(java.util.Locale.ROOT, "%s (fold %d of %d)", describeStep(alone), alone - firstStep[t] + 1,
-                    endStep[t] - firstStep[t]);
+            int before = firstStep[t] > 0 ? printNumber[firstStep[t] - 1] : 0;
+            return String.format(java.util.Locale.ROOT, "%s (fold %d of %d)", describeStep(alone), printNumber[alone] - before,
+                    printNumber[endStep[t] - 1] - before);
         }
         int first = panelFirst[k];
         int t = triangleOf[first];

@@ -205,8 +205,7 @@ final class ExportDialogs {
     /** Draws the plan's step diagrams to {@code file}, in the background. */
     void diagrams(Path file) {
         plan("step diagrams", file, (shown, progress) -> {
-            PrintJob.Printed printed = Exports.diagrams(shown, file, printPage, progress);
-            return String.format(Locale.ROOT, "wrote %s: %d pages, %d steps", file, printed.pages(), printed.pieces());
+            return Exports.diagrams(shown, file, printPage, progress).stepsSummary();
         });
     }
 

@@ -127,7 +127,7 @@ class PrintCommandTest {
     }
 
     /**
-     * Step diagrams: a title page, then the zig-zag's 13 folds six to a page, each captioned as the
+     * Step diagrams: a title page, then the zig-zag's 12 folds and its end six to a page, each captioned as the
      * movie captions it; a fold script's 20 folds likewise. Their text read back by pdftotext and
      * their panels' paper by pixels (pdftoppm), where poppler-utils is installed.
      */
@@ -136,11 +136,16 @@ class PrintCommandTest {
         Path pdf = dir.resolve("steps.pdf");
         CliTest.Run run = CliTest.run("demo", "zigzag", "--no-view", "--export-diagrams", pdf.toString());
         assertEquals(0, run.code(), run.err());
-        assertTrue(run.out().contains("wrote " + pdf + ": 4 pages, 13 steps"), run.out());
+        // 12 folds, numbered, and the strip's end, drawn but no step.
+        assertTrue(run.out().contains("wrote " + pdf + ": 4 pages, 12 steps"), run.out());
         Path script = dir.resolve("script.pdf");
         CliTest.Run folded = CliTest.run("fold", "models/scripts/pleat20.fold", "--no-view", "--export-diagrams", script.toString());
         assertEquals(0, folded.code(), folded.err());
         assertTrue(folded.out().contains("wrote " + script + ": 5 pages, 20 steps"), folded.out());
+        Path none = dir.resolve("none.pdf");
+        CliTest.Run unfolded = CliTest.run("fold", Files.writeString(dir.resolve("flat.fold"), "paper square 4\n").toString(), "--no-view",
+                "--export-diagrams", none.toString());
+        assertTrue(unfolded.out().contains("wrote " + none + ": 1 page, 0 steps"), unfolded.out());
         CliTest.Run wrong = CliTest.run("demo", "zigzag", "--no-view", "--export-diagrams", dir.resolve("steps.png").toString());
         CliTest.assertOneLineError(wrong, "--export-diagrams");
         if (!tool("pdftotext") || !tool("pdftoppm")) {
@@ -151,6 +156,9 @@ class PrintCommandTest {
         String words = Files.readString(text);
         assertTrue(words.contains("The steps") && words.contains("1. pass 1 of 5: turn, 45° valley fold"), words);
         assertTrue(words.contains("tuck 1: excess folded under along edge"), words);
+        // The title page counts the steps its list numbers: the strip's end is listed without a number.
+        assertTrue(words.contains("step diagrams, 12 steps, page 1 of 4") && words.contains("\n12. tuck 4")
+                && !words.contains("13.") && words.contains("\nthe strip ends"), words);
         assertEquals(0, new ProcessBuilder("pdftoppm", "-r", "50", "-png", "-f", "2", "-l", "2", pdf.toString(), dir.resolve("page").toString())
                 .start().waitFor());
         Path png;

@@ -43,6 +43,8 @@ class StepDiagramsTest {
      */
     static final class Panels implements Canvas {
         final List<Panel> panels = new ArrayList<>();
+        /** The title page's line under the title. */
+        String title = "";
         Panel drawing = new Panel();
         Panel captioned;
 
@@ -72,7 +74,9 @@ class StepDiagramsTest {
 
         @Override
         public void text(double x, double y, double size, String text, boolean bold) {
-            if (bold && size == 4.2) {
+            if (size == 3.2 && title.isEmpty()) {
+                title = text;
+            } else if (bold && size == 4.2) {
                 panels.add(drawing);
                 captioned = drawing;
                 drawing = new Panel();
@@ -114,6 +118,10 @@ class StepDiagramsTest {
 
         assertEquals(result.steps().size(), folds);
         assertEquals(folds, canvas.panels.size());
+        // The steps a reader counts are the numbered ones: the strip's end is drawn, unnumbered, and is no step.
+        assertEquals(1, result.count(Wrap.Kind.END), "setup: the strip ends once");
+        assertEquals(folds - 1, StepDiagrams.stepCount(playback));
+        assertTrue(canvas.title.contains("step diagrams, " + (folds - 1) + " steps, page 1 of"), canvas.title);
         int turnedOver = 0;
         boolean below = false;
         for (int k = 0; k < folds; k++) {
@@ -145,6 +153,49 @@ class StepDiagramsTest {
             below = nowBelow;
         }
         assertEquals(1, turnedOver, "the tucks are seen from below, together at the end");
+    }
+
+    /**
+     * The hinge strip's diagrams, a panel a fold: the strip's end has a panel, unnumbered, and is
+     * not one of its pass's folds; each numbered panel is fold k of its pass's n creasing folds.
+     */
+    @Test
+    void theHingeStripsEndIsNoFold() throws Exception {
+        WrapJob.Outcome wrapped = WrapJob.run(new WrapJob.Request(Path.of("models/cube.off"), new MeshBuilder.Options(false, true),
+                new Wrap.Options(Double.NaN, Double.NaN, null), Wrap.Method.HINGE), new WrapJob.Watcher() {
+                    @Override
+                    public void wrapped(int done, int total) {
+                    }
+
+                    @Override
+                    public boolean stopped() {
+                        return false;
+                    }
+                });
+        Wrap.Result result = wrapped.result();
+        Scene scene = new Scene();
+        Animation playback = Scenes.wrap(scene, wrapped.mesh(), result, wrapped.geometries());
+        assertEquals(result.steps().size(), playback.foldCount(), "setup: a panel a fold");
+        int ends = 0;
+        for (int k = 0; k < playback.foldCount(); k++) {
+            String caption = playback.foldCaption(k);
+            if (result.steps().get(k).kind() == Wrap.Kind.END) {
+                ends++;
+                assertEquals("", playback.foldLabel(k), caption);
+                assertFalse(caption.contains("(fold "), caption);
+            } else if (!playback.foldLabel(k).isEmpty()) {
+                java.util.regex.Matcher fold = java.util.regex.Pattern.compile("\\(fold (\\d+) of (\\d+)\\)$").matcher(caption);
+                assertTrue(fold.find(), caption);
+                assertTrue(Integer.parseInt(fold.group(1)) <= Integer.parseInt(fold.group(2)), caption);
+            }
+        }
+        assertEquals(1, ends, "setup: one strip, one end");
+        assertTrue(playback.foldCaption(playback.foldCount() - 1).startsWith("pass "), "setup: the end last");
+        Panels canvas = new Panels();
+        StepDiagrams.draw("cube", "hinge", scene, playback, canvas, Page.A4);
+        int numbered = StepDiagrams.stepCount(playback);
+        assertEquals(playback.foldCount() - 1, numbered, "every fold of the cube's hinge strip creases");
+        assertTrue(canvas.title.contains(numbered + " steps"), canvas.title);
     }
 
     /** A wrap's first triangle fold by fold, each with its crease; then a panel a triangle, without. */
@@ -182,6 +233,9 @@ class StepDiagramsTest {
             }
         }
         assertNotNull(playback.foldPath(0), "the first fold swings its tail");
+        // The last triangle's panel counts its folds by kind, and says the strip ends there without counting it as one.
+        String last = playback.foldCaption(playback.foldCount() - 1);
+        assertTrue(last.contains(", the strip's end (creases ") && !last.contains("1 end"), last);
         assertFalse(playback.foldCaption(first - 1).isEmpty());
     }
 }
