@@ -296,8 +296,9 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     double t = cuts[j];
                     double u = along(sheet.u(a), sheet.u(b), t);
                     double v = along(sheet.v(a), sheet.v(b), t);
-                    int fAt = pointAt(fChain, t, u, v);
-                    int gAt = pointAt(gChain, t, u, v);
+                    int[] at = pointsAt(fChain, gChain, t, u, v);
+                    int fAt = at[0];
+                    int gAt = at[1];
                     int[] rowAt;
                     if (backs) {
                         int apex = j == 0 ? apex(f, a, middle) : j == cuts.length - 1 ? apex(f, b, middle) : apex(f, u, v, middle);
@@ -1151,10 +1152,9 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             int fromG = -1;
             for (int k = 0; k < cuts.length; k++) {
                 double t = cuts[k];
-                double u = along(sheet.u(a), sheet.u(b), t);
-                double v = along(sheet.v(a), sheet.v(b), t);
-                int toF = pointAt(f, t, u, v);
-                int toG = pointAt(g, t, u, v);
+                int[] at = pointsAt(f, g, t, along(sheet.u(a), sheet.u(b), t), along(sheet.v(a), sheet.v(b), t));
+                int toF = at[0];
+                int toG = at[1];
                 if (k > 0) {
                     double middle = (cuts[k - 1] + t) / 2;
                     // Paper of both layers squashed where it ends (a fold inside a wall's, or running
@@ -1235,6 +1235,11 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
 
         /** Cuts along a crease closer than this (of its length) are one. */
         private static final double SAME_CUT = 1e-9;
+
+        /** The vertices of both layers' chains at {@code t} along their crease, its paper point (u, v) there ({@link #pointAt}). */
+        private int[] pointsAt(double[][] f, double[][] g, double t, double u, double v) {
+            return new int[] {pointAt(f, t, u, v), pointAt(g, t, u, v)};
+        }
 
         /** Whether the chain's paper at {@code t} along it lies in a region where it creeps ({@link #pieces}). */
         private static boolean insideAt(double[][] chain, double t) {

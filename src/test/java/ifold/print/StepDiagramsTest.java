@@ -161,17 +161,7 @@ class StepDiagramsTest {
      */
     @Test
     void theHingeStripsEndIsNoFold() throws Exception {
-        WrapJob.Outcome wrapped = WrapJob.run(new WrapJob.Request(Path.of("models/cube.off"), new MeshBuilder.Options(false, true),
-                new Wrap.Options(Double.NaN, Double.NaN, null), Wrap.Method.HINGE), new WrapJob.Watcher() {
-                    @Override
-                    public void wrapped(int done, int total) {
-                    }
-
-                    @Override
-                    public boolean stopped() {
-                        return false;
-                    }
-                });
+        WrapJob.Outcome wrapped = cubeWrapped(Wrap.Method.HINGE);
         Wrap.Result result = wrapped.result();
         Scene scene = new Scene();
         Animation playback = Scenes.wrap(scene, wrapped.mesh(), result, wrapped.geometries());
@@ -198,11 +188,10 @@ class StepDiagramsTest {
         assertTrue(canvas.title.contains(numbered + " steps"), canvas.title);
     }
 
-    /** A wrap's first triangle fold by fold, each with its crease; then a panel a triangle, without. */
-    @Test
-    void aWrapsFirstTriangleIsDrawnFoldByFold() throws Exception {
-        WrapJob.Outcome wrapped = WrapJob.run(new WrapJob.Request(Path.of("models/cube.off"), new MeshBuilder.Options(false, true),
-                new Wrap.Options(Double.NaN, Double.NaN, null)), new WrapJob.Watcher() {
+    /** The cube of models/ wrapped by {@code method} at the defaults. */
+    private static WrapJob.Outcome cubeWrapped(Wrap.Method method) throws Exception {
+        return WrapJob.run(new WrapJob.Request(Path.of("models/cube.off"), new MeshBuilder.Options(false, true),
+                new Wrap.Options(Double.NaN, Double.NaN, null), method), new WrapJob.Watcher() {
                     @Override
                     public void wrapped(int done, int total) {
                     }
@@ -212,6 +201,12 @@ class StepDiagramsTest {
                         return false;
                     }
                 });
+    }
+
+    /** A wrap's first triangle fold by fold, each with its crease; then a panel a triangle, without. */
+    @Test
+    void aWrapsFirstTriangleIsDrawnFoldByFold() throws Exception {
+        WrapJob.Outcome wrapped = cubeWrapped(Wrap.Method.ZIGZAG);
         Wrap.Result result = wrapped.result();
         Scene scene = new Scene();
         Animation playback = Scenes.wrap(scene, wrapped.mesh(), result, wrapped.geometries());

@@ -447,14 +447,7 @@ public final class WrapTruths {
     // ---- Geometry of the file's faces ----
 
     double[] newellNormal(int f) {
-        double[] n = new double[3];
-        for (int c = faceStart[f]; c < faceStart[f + 1]; c++) {
-            int i = 3 * cornerV[c];
-            int j = 3 * cornerV[neighbours.nextCorner(f, c)];
-            n[0] += (xyz[i + 1] - xyz[j + 1]) * (xyz[i + 2] + xyz[j + 2]);
-            n[1] += (xyz[i + 2] - xyz[j + 2]) * (xyz[i] + xyz[j]);
-            n[2] += (xyz[i] - xyz[j]) * (xyz[i + 1] + xyz[j + 1]);
-        }
+        double[] n = newellSum(f);
         double length = Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
         for (int d = 0; d < 3; d++) {
             n[d] /= length;
@@ -464,6 +457,12 @@ public final class WrapTruths {
 
     /** Face f's area in space (half the length of its Newell sum). */
     double spaceArea(int f) {
+        double[] n = newellSum(f);
+        return Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) / 2;
+    }
+
+    /** Newell's sum over face f's corners: its normal times twice its area. */
+    private double[] newellSum(int f) {
         double[] n = new double[3];
         for (int c = faceStart[f]; c < faceStart[f + 1]; c++) {
             int i = 3 * cornerV[c];
@@ -472,7 +471,7 @@ public final class WrapTruths {
             n[1] += (xyz[i + 2] - xyz[j + 2]) * (xyz[i] + xyz[j]);
             n[2] += (xyz[i] - xyz[j]) * (xyz[i + 1] + xyz[j + 1]);
         }
-        return Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) / 2;
+        return n;
     }
 
     /**
