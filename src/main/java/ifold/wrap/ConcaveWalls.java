@@ -50,6 +50,8 @@ final class ConcaveWalls {
     private final double tolerance;
     /** The walls on each host, by host (null where none). */
     private final List<List<Wall>> wallsOf;
+    /** The walls on each host along each edge of its polygon, by {@link #key} (for the pieces of paper, {@link #wallsAt}). */
+    private final Map<Long, List<Wall>> wallsAlong = new HashMap<>();
     /** The folds back to back on each host, by host (null where none). */
     private final Map<Integer, List<BackWall>> backWallsOf;
     private final boolean[] along;
@@ -64,6 +66,11 @@ final class ConcaveWalls {
         this.backWallsOf = backWallsOf;
         this.along = along;
         this.stackTop = stackTop;
+        for (int h = 0; h < wallsOf.size(); h++) {
+            for (Wall wall : wallsOf.get(h) == null ? List.<Wall>of() : wallsOf.get(h)) {
+                wallsAlong.computeIfAbsent(key(h, wall.edge()), k -> new ArrayList<>()).add(wall);
+            }
+        }
     }
 
     /**
@@ -123,9 +130,8 @@ final class ConcaveWalls {
      * a wall, into {@code out}).
      */
     void wallsAt(int host, int edge, double level, List<double[]> out) {
-        List<Wall> walls = wallsOf.get(host);
-        for (Wall wall : walls == null || !(thickness > 0) ? List.<Wall>of() : walls) {
-            if (wall.edge() == edge && level >= wall.low() - Tolerance.RELATIVE_EQUALITY && level <= wall.high() + Tolerance.RELATIVE_EQUALITY) {
+        for (Wall wall : thickness > 0 ? wallsAlong.getOrDefault(key(host, edge), List.of()) : List.<Wall>of()) {
+            if (level >= wall.low() - Tolerance.RELATIVE_EQUALITY && level <= wall.high() + Tolerance.RELATIVE_EQUALITY) {
                 out.add(new double[] {wall.in(), wall.from() - tolerance, wall.to() + tolerance});
             }
         }
@@ -133,12 +139,9 @@ final class ConcaveWalls {
 
     /** How far in from edge {@code edge} of {@code host}'s polygon its farthest wall stands (0 where none does). */
     double farthestWall(int host, int edge) {
-        List<Wall> walls = wallsOf.get(host);
         double farthest = 0;
-        for (Wall wall : walls == null ? List.<Wall>of() : walls) {
-            if (wall.edge() == edge) {
-                farthest = Math.max(farthest, wall.in());
-            }
+        for (Wall wall : wallsAlong.getOrDefault(key(host, edge), List.of())) {
+            farthest = Math.max(farthest, wall.in());
         }
         return farthest;
     }

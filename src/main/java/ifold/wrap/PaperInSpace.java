@@ -214,9 +214,6 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 }
                 pieceStart[f + 1] = paper.size();
             }
-            for (int c = 0; c < capAfter.size(); c++) {
-                capAfter.set(c, pieceStart[capAfter.get(c) + 1] - 1); // tears come after the last piece of their face
-            }
             int[] hosts = hostList.stream().mapToInt(Integer::intValue).toArray();
             forEachJoin((f, i, g, a, b) -> {
                 if (isBend(f, g)) {
@@ -556,7 +553,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             final double u;
             final double v;
             final int id;
-            int side;
+            final int side;
 
             Corner(double x, double y, double u, double v, int id, int side) {
                 this.x = x;
@@ -1024,6 +1021,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 along.add(new ArrayList<>());
             }
             java.util.Map<List<Integer>, int[]> cuts = new java.util.HashMap<>();
+            List<int[]> tears = new ArrayList<>();
             for (List<Corner> piece : pieces) {
                 double bx = 0;
                 double by = 0;
@@ -1054,11 +1052,14 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                         int[] ends = here.id < there.id ? new int[] {placed[k], placed[(k + 1) % n]} : new int[] {placed[(k + 1) % n], placed[k]};
                         int[] other = cuts.putIfAbsent(key, ends);
                         if (other != null && !(sameOrAt(other[0], ends[0]) && sameOrAt(other[1], ends[1]))) {
-                            caps.add(new int[] {other[0], other[1], ends[1], ends[0]});
-                            capAfter.add(f);
+                            tears.add(new int[] {other[0], other[1], ends[1], ends[0]});
                         }
                     }
                 }
+            }
+            for (int[] tear : tears) {
+                caps.add(tear);
+                capAfter.add(paper.size() - 1); // after the face's last piece
             }
             for (List<double[]> segments : along) {
                 segments.sort((p, q) -> Double.compare(p[0], q[0]));

@@ -60,8 +60,8 @@ final class TruthNeighbours {
                     if (g <= e || h == f || !sharedSegment(f, edgeCorner.get(e), h, edgeCorner.get(g), tol, shared)) {
                         continue;
                     }
-                    if (wrap.squashed(f) && wrap.squashed(h)) {
-                        continue; // paper pressed to no area where two layers end by a concave edge: no bend between
+                    if (wrap.surface.squashed(f) && wrap.surface.squashed(h)) {
+                        continue; // paper squashed where two layers end by a concave edge: no bend between
                     }
                     for (int end = 0; end < 2; end++) {
                         double u = shared[2 * end];

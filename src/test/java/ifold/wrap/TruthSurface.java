@@ -310,7 +310,6 @@ final class TruthSurface {
         return depth;
     }
 
-    /** Face f's unit normal in space by the right-hand rule of its corners (Newell's sum, for any planar polygon). */
     /**
      * Whether face f is squashed in space to far less than its area on the sheet: crept to a
      * sliver at a concave edge (truth 2 holds such a face to its creep zone), its own normal

@@ -24,8 +24,8 @@ import java.util.List;
  * its height times tan(φ/2) in from it (the plane halving the wedge of air above the edge,
  * which the layers of the face across keep to from the other side);</li>
  * <li>{@link #NOT_TORN}: faces that are neighbours on the sheet are neighbours in space (or
- * joined by a cap across at most a few thicknesses), but for two pressed to no area in space
- * (paper whose layer ends by a concave edge, squashed onto the line where it ends: truth 2 holds
+ * joined by a cap across at most a few thicknesses), but for two squashed to a sliver in space
+ * (paper whose layer ends by a concave edge, pressed onto the line where it ends: truth 2 holds
  * their corners to the creep zone);</li>
  * <li>{@link #COVERED}: random points of the model lie under paper (but within the creep zone
  * of a concave edge, truth 2, where thick paper stands back from the edge);</li>
@@ -447,22 +447,6 @@ public final class WrapTruths {
     // ---- Geometry of the file's faces ----
 
     double[] newellNormal(int f) {
-        double[] n = newellSum(f);
-        double length = Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-        for (int d = 0; d < 3; d++) {
-            n[d] /= length;
-        }
-        return n;
-    }
-
-    /** Face f's area in space (half the length of its Newell sum). */
-    double spaceArea(int f) {
-        double[] n = newellSum(f);
-        return Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) / 2;
-    }
-
-    /** Newell's sum over face f's corners: its normal times twice its area. */
-    private double[] newellSum(int f) {
         double[] n = new double[3];
         for (int c = faceStart[f]; c < faceStart[f + 1]; c++) {
             int i = 3 * cornerV[c];
@@ -471,16 +455,11 @@ public final class WrapTruths {
             n[1] += (xyz[i + 2] - xyz[j + 2]) * (xyz[i] + xyz[j]);
             n[2] += (xyz[i] - xyz[j]) * (xyz[i + 1] + xyz[j + 1]);
         }
+        double length = Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        for (int d = 0; d < 3; d++) {
+            n[d] /= length;
+        }
         return n;
-    }
-
-    /**
-     * Whether paper face f is squashed in space to no area where it has some on the sheet: paper
-     * thick layers hold back from a concave edge, pressed onto the line where its layer ends
-     * (truth 2 holds every such face's corners to a creep zone).
-     */
-    boolean squashed(int f) {
-        return !faceCap[f] && spaceArea(f) <= 1e-6 * Math.abs(surface.sheetArea(f));
     }
 
     double[] centroid(int f) {
