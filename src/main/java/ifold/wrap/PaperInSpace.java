@@ -223,7 +223,6 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 addCap(chain(f, i, a, b), chain(g, side(g, a, b), a, b), a, b, pieceStart[g + 1] - 1, true, false, caps, capAfter);
             });
             List<int[]> bendCorners = new ArrayList<>();
-            List<double[][][]> bendChains = new ArrayList<>();
             for (int[] edge : bendEdges) {
                 int f = edge[0];
                 int i = edge[1];
@@ -232,7 +231,6 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 int b = edge[4];
                 double[][] fChain = chain(f, i, a, b);
                 double[][] gChain = chain(g, side(g, a, b), a, b);
-                bendChains.add(new double[][][] {fChain, gChain});
                 bendCorners.add(new int[] {f, g, a, b, (int) fChain[0][2], (int) fChain[fChain.length - 1][3], (int) gChain[0][2],
                         (int) gChain[gChain.length - 1][3]});
             }
@@ -267,8 +265,10 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     continue; // paper of no thickness folded flat: nothing to bridge
                 }
                 int after = pieceStart[g + 1] - 1;
-                double[][] fChain = bendChains.get(k)[0];
-                double[][] gChain = bendChains.get(k)[1];
+                // The two layers' chains along the crease, made again rather than kept for every bend.
+                int[] edge = bendEdges.get(k);
+                double[][] fChain = chain(f, edge[1], edge[3], edge[4]);
+                double[][] gChain = chain(g, side(g, edge[3], edge[4]), edge[3], edge[4]);
                 if (out == 0 && !ConcaveWalls.standsBack(backToBack, onWall, k)) {
                     addCap(fChain, gChain, c[2], c[3], after, false, !onWall[k], caps, capAfter);
                     continue;
