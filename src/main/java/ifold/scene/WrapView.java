@@ -1,5 +1,6 @@
 package ifold.scene;
 
+import ifold.geom.IntList;
 import ifold.mesh.IndexedPolygons;
 import ifold.sheet.HostFrame;
 import ifold.wrap.CoveredPaper;
@@ -217,33 +218,6 @@ public final class WrapView {
             }
             SceneMesh patches = new SceneMesh(xyz, triangles, colors, new int[0], new int[0]);
             return new SceneMesh.Layers(hiddenFrom, seams, patchOf, settled, patches, start);
-        }
-    }
-
-    /** A growing list of ints. */
-    static final class IntList {
-        private int[] values = new int[1024];
-        private int size;
-
-        /** {@code times} copies of {@code value}. */
-        void add(int value, int times) {
-            if (size + times > values.length) {
-                values = java.util.Arrays.copyOf(values, Math.max(2 * values.length, size + times));
-            }
-            java.util.Arrays.fill(values, size, size + times, value);
-            size += times;
-        }
-
-        int get(int i) {
-            return values[i];
-        }
-
-        void set(int i, int value) {
-            values[i] = value;
-        }
-
-        int[] toArray() {
-            return java.util.Arrays.copyOf(values, size);
         }
     }
 

@@ -48,8 +48,11 @@ final class ConcaveWalls {
 
     private final double thickness;
     private final double tolerance;
-    /** The walls on each host, by host (null where none). */
-    private final List<List<Wall>> wallsOf;
+    /**
+     * The walls on each host that hold each level, in the order they were made: a host of a
+     * big torus has hundreds of walls, and each point of paper placed looked through them all.
+     */
+    private final Wall[][][] wallsByLevel;
     /** The walls on each host along each edge of its polygon, by {@link #key} (for the pieces of paper, {@link #wallsAt}). */
     private final Map<Long, List<Wall>> wallsAlong = new HashMap<>();
     /** The folds back to back on each host, by host (null where none). */
@@ -62,16 +65,45 @@ final class ConcaveWalls {
             boolean[] along, double[] stackTop) {
         this.thickness = thickness;
         this.tolerance = tolerance;
-        this.wallsOf = wallsOf;
         this.backWallsOf = backWallsOf;
         this.along = along;
         this.stackTop = stackTop;
+        this.wallsByLevel = new Wall[wallsOf.size()][][];
         for (int h = 0; h < wallsOf.size(); h++) {
-            for (Wall wall : wallsOf.get(h) == null ? List.<Wall>of() : wallsOf.get(h)) {
+            List<Wall> walls = wallsOf.get(h) == null ? List.of() : wallsOf.get(h);
+            int top = -1;
+            for (Wall wall : walls) {
                 wallsAlong.computeIfAbsent(key(h, wall.edge()), k -> new ArrayList<>()).add(wall);
+                top = Math.max(top, wall.high());
+            }
+            List<List<Wall>> byLevel = new ArrayList<>();
+            for (int level = 0; level <= top; level++) {
+                byLevel.add(new ArrayList<>());
+            }
+            for (Wall wall : walls) {
+                for (int level = Math.max(0, wall.low()); level <= wall.high(); level++) {
+                    byLevel.get(level).add(wall);
+                }
+            }
+            wallsByLevel[h] = new Wall[top + 1][];
+            for (int level = 0; level <= top; level++) {
+                wallsByLevel[h][level] = byLevel.get(level).toArray(new Wall[0]);
             }
         }
     }
+
+    /**
+     * The walls of {@code host} that may hold paper at {@code level} (a layer's, or a height
+     * between two): those that hold the whole level nearest below it to rounding; a wall holds
+     * whole levels from its low to its high, so one holding a height between two holds both.
+     */
+    private Wall[] wallsNear(int host, double level) {
+        Wall[][] byLevel = wallsByLevel[host];
+        int k = (int) Math.floor(level + Tolerance.RELATIVE_EQUALITY);
+        return k < 0 || k >= byLevel.length ? NO_WALLS : byLevel[k];
+    }
+
+    private static final Wall[] NO_WALLS = new Wall[0];
 
     /**
      * The walls of {@code bends} that lie along a concave edge of their host, with the
@@ -229,8 +261,7 @@ final class ConcaveWalls {
         if (!(thickness > 0)) {
             return; // paper of no thickness stands nowhere but on its creases
         }
-        List<Wall> walls = wallsOf.get(host);
-        for (Wall wall : walls == null ? List.<Wall>of() : walls) {
+        for (Wall wall : wallsNear(host, level)) {
             if (level < wall.low() - Tolerance.RELATIVE_EQUALITY || level > wall.high() + Tolerance.RELATIVE_EQUALITY) {
                 continue;
             }

@@ -1,5 +1,7 @@
 package ifold.wrap;
 
+import ifold.geom.DoubleList;
+import ifold.geom.IntList;
 import ifold.sheet.HostFrame;
 import ifold.sheet.Isometry2;
 import ifold.sheet.Polygons2;
@@ -130,8 +132,14 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         private double[] xyz = new double[3 * 64];
         private double[] uv = new double[2 * 64];
         private int vertices;
-        /** For each paper vertex, the space vertices made for it (a short list: one per layer it is on). */
-        private final List<int[]> copies = new ArrayList<>();
+        /**
+         * For each paper vertex, the first space vertex made for it (-1: none); the others (one
+         * per layer it is on) follow it by {@link #nextCopy}. Chains through one array rather than
+         * an array a point: a big wrap makes millions of points, and the collector walked them all.
+         */
+        private final int[] firstCopy;
+        /** For each space vertex made for a paper vertex or a cut point, the next made for the same point (-1: none). */
+        private int[] nextCopy = new int[64];
         private final double merge;
         private final double exact;
         /** The triangle and level each space vertex was made for (caps' middle rows: -1). */
@@ -139,8 +147,16 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         private int[] copyLevel = new int[64];
         /** Each face's corners as placed whole (null for a face placed in pieces). */
         private int[][] corners;
-        /** For a face placed in pieces, along each side of its loop: the pieces' edges there, from, to (along the side), and their two vertices. */
-        private java.util.Map<Integer, List<List<double[]>>> sides;
+        /**
+         * For a face placed in pieces, where its sides begin in {@link #sideStarts} (-1 for a face
+         * placed whole): there, for each side of its loop and one past the last, where that side's
+         * edges of pieces begin in {@link #sideEdges}.
+         */
+        private int[] sidesOf;
+        private final IntList sideStarts = new IntList();
+        /** The pieces' edges along the sides of their faces, {@link #SIDE_EDGE} numbers each: from, to (along the side), their two vertices, and 1 where squashed. */
+        private final DoubleList sideEdges = new DoubleList();
+        private static final int SIDE_EDGE = 5;
         /** The pieces of face f are paper faces pieceStart[f] to pieceStart[f + 1] - 1. */
         private int[] pieceStart;
         /** Where paper ends at the concave edges of its host. */
@@ -162,9 +178,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             // vertex computed a little off its crease makes the two sides differ by more, and each
             // then keeps its own copy, so that no face is bent by a neighbour's rounding.
             this.exact = Math.min(sheet.tolerance() * 1e-3, sheet.width() * 1e-11);
-            for (int v = 0; v < sheet.vertexCount(); v++) {
-                copies.add(new int[0]);
-            }
+            this.firstCopy = new int[sheet.vertexCount()];
+            java.util.Arrays.fill(firstCopy, -1);
         }
 
         PaperInSpace build() {
@@ -174,11 +189,15 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             // crease line (NestedBends), and where one lies along a concave edge of its host, the
             // paper of its layers ends on its wall (ConcaveWalls), which places the vertices.
             List<NestedBends.Bend> bends = new ArrayList<>();
-            List<int[]> bendEdges = new ArrayList<>();
+            IntList bendEdges = new IntList(); // f, i, g, a, b each
             forEachJoin((f, i, g, a, b) -> {
                 if (isBend(f, g)) {
                     bends.add(bend(f, g, a, b));
-                    bendEdges.add(new int[] {f, i, g, a, b});
+                    bendEdges.add(f);
+                    bendEdges.add(i);
+                    bendEdges.add(g);
+                    bendEdges.add(a);
+                    bendEdges.add(b);
                 }
             });
             NestedBends nested = NestedBends.of(bends, sheet.thickness() * NEST_TOLERANCE);
@@ -192,14 +211,15 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             boolean[] onWall = walls.along();
 
             List<int[]> paper = new ArrayList<>(faces);
-            List<Integer> hostList = new ArrayList<>(faces);
+            IntList hostList = new IntList(faces);
             List<int[]> caps = new ArrayList<>();
-            List<Integer> capAfter = new ArrayList<>();
+            IntList capAfter = new IntList(faces);
             corners = new int[faces][];
-            sides = new java.util.HashMap<>();
+            sidesOf = new int[faces];
             pieceStart = new int[faces + 1];
             for (int f = 0; f < faces; f++) {
                 List<List<Corner>> pieces = pieces(f);
+                sidesOf[f] = -1;
                 if (pieces == null) {
                     int[] loop = sheet.loop(f);
                     int[] placed = new int[loop.length];
@@ -214,7 +234,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 }
                 pieceStart[f + 1] = paper.size();
             }
-            int[] hosts = hostList.stream().mapToInt(Integer::intValue).toArray();
+            int[] hosts = hostList.toArray();
             forEachJoin((f, i, g, a, b) -> {
                 if (isBend(f, g)) {
                     return; // below, once every bend is known
@@ -222,17 +242,18 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 // the paper runs on flat, or bends over an edge with no thickness where the two sides meet
                 addCap(chain(f, i, a, b), chain(g, side(g, a, b), a, b), a, b, pieceStart[g + 1] - 1, true, false, caps, capAfter);
             });
-            List<int[]> bendCorners = new ArrayList<>();
-            for (int[] edge : bendEdges) {
-                int f = edge[0];
-                int i = edge[1];
-                int g = edge[2];
-                int a = edge[3];
-                int b = edge[4];
+            // Each bend's faces f and g, its crease a, b, and where each face's paper begins and ends along it.
+            int[][] bendCorners = new int[bends.size()][];
+            for (int k = 0; k < bends.size(); k++) {
+                int f = bendEdges.get(5 * k);
+                int i = bendEdges.get(5 * k + 1);
+                int g = bendEdges.get(5 * k + 2);
+                int a = bendEdges.get(5 * k + 3);
+                int b = bendEdges.get(5 * k + 4);
                 double[][] fChain = chain(f, i, a, b);
                 double[][] gChain = chain(g, side(g, a, b), a, b);
-                bendCorners.add(new int[] {f, g, a, b, (int) fChain[0][2], (int) fChain[fChain.length - 1][3], (int) gChain[0][2],
-                        (int) gChain[gChain.length - 1][3]});
+                bendCorners[k] = new int[] {f, g, a, b, (int) fChain[0][2], (int) fChain[fChain.length - 1][3], (int) gChain[0][2],
+                    (int) gChain[gChain.length - 1][3]};
             }
             double[] outs = new double[bends.size()];
             double[] slopes = new double[bends.size()];
@@ -256,7 +277,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             double[] past = nested.mitres(outs);
 
             for (int k = 0; k < bends.size(); k++) {
-                int[] c = bendCorners.get(k);
+                int[] c = bendCorners[k];
                 int f = c[0];
                 int g = c[1];
                 NestedBends.Bend bend = bends.get(k);
@@ -266,9 +287,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 }
                 int after = pieceStart[g + 1] - 1;
                 // The two layers' chains along the crease, made again rather than kept for every bend.
-                int[] edge = bendEdges.get(k);
-                double[][] fChain = chain(f, edge[1], edge[3], edge[4]);
-                double[][] gChain = chain(g, side(g, edge[3], edge[4]), edge[3], edge[4]);
+                double[][] fChain = chain(f, bendEdges.get(5 * k + 1), c[2], c[3]);
+                double[][] gChain = chain(g, side(g, c[2], c[3]), c[2], c[3]);
                 if (out == 0 && !ConcaveWalls.standsBack(backToBack, onWall, k)) {
                     addCap(fChain, gChain, c[2], c[3], after, false, !onWall[k], caps, capAfter);
                     continue;
@@ -329,7 +349,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             Creep creep = creptCount == 0 ? Creep.NONE
                     : new Creep(java.util.Arrays.copyOf(creptVertices, creptCount), java.util.Arrays.copyOf(creptFrom, 3 * creptCount));
             return new PaperInSpace(java.util.Arrays.copyOf(xyz, 3 * vertices), java.util.Arrays.copyOf(uv, 2 * vertices), paper,
-                    hosts, caps, capAfter.stream().mapToInt(Integer::intValue).toArray(), creep, pieceStart);
+                    hosts, caps, capAfter.toArray(), creep, pieceStart);
         }
 
         /** What is done with two faces f and g (g > f) joined along paper edge a → b, edge i of f. */
@@ -390,32 +410,38 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             HostFrame frame = frames[sheet.host(f)];
             double x = pose.x(sheet.u(p), sheet.v(p));
             double y = pose.y(sheet.u(p), sheet.v(p));
-            int[] list = copies.get(p);
-            int v = placed(f, x, y, sheet.u(p), sheet.v(p), frame.stops() == null ? null : over(f, p, pose), bx, by, list);
-            if (!contains(list, v)) {
-                int[] longer = java.util.Arrays.copyOf(list, list.length + 1);
-                longer[list.length] = v;
-                copies.set(p, longer);
-            }
+            int v = placed(f, x, y, sheet.u(p), sheet.v(p), frame.stops() == null ? null : over(f, p, pose), bx, by, firstCopy[p]);
+            firstCopy[p] = linked(firstCopy[p], v);
             return v;
         }
 
-        private static boolean contains(int[] list, int v) {
-            for (int w : list) {
-                if (w == v) {
-                    return true;
-                }
+        /** The chain of copies that begins at {@code first} (-1: none) with v at its end, where it is not in it already: its first. */
+        private int linked(int first, int v) {
+            if (first < 0) {
+                return v;
             }
-            return false;
+            int last = first;
+            while (true) {
+                if (last == v) {
+                    return first;
+                }
+                if (nextCopy[last] < 0) {
+                    break;
+                }
+                last = nextCopy[last];
+            }
+            nextCopy[last] = v;
+            return first;
         }
 
         /**
          * The space vertex of face f's paper at frame point (x, y), sheet point (u, v), as the
          * walls and mitres place it (for a corner of a piece, as the piece's point (bx, by) lies;
-         * NaN: as the point itself does): one of {@code known} (the copies already made of that
-         * point) where it lands on it at the same level of the same host, or a new one.
+         * NaN: as the point itself does): one of the copies already made of that point (the chain
+         * from {@code first}, {@link #nextCopy}) where it lands on it at the same level of the same
+         * host, or a new one.
          */
-        private int placed(int f, double x, double y, double u, double v, double[] over, double bx, double by, int[] known) {
+        private int placed(int f, double x, double y, double u, double v, double[] over, double bx, double by, int first) {
             HostFrame frame = frames[sheet.host(f)];
             double[] point = new double[3];
             double[] xy = new double[2];
@@ -424,23 +450,19 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             walls.place(host, frame, x, y, height(f), middle[0], middle[1], over, bx, by, xy);
             boolean crept = xy[0] != x || xy[1] != y;
             frame.toSpace(xy[0], xy[1], height(f), point, 0);
-            for (int copy : known) {
+            for (int copy = first; copy >= 0; copy = nextCopy[copy]) {
                 if (copyHost[copy] == host && copyLevel[copy] == levels[f] && closer(copy, point, exact)) {
                     return copy;
                 }
             }
             if (sheet.thickness() == 0) {
-                for (int copy : known) {
+                for (int copy = first; copy >= 0; copy = nextCopy[copy]) {
                     if (closer(copy, point, merge)) {
                         return copy;
                     }
                 }
             }
             int made = add(point, u, v);
-            if (made >= copyHost.length) {
-                copyHost = java.util.Arrays.copyOf(copyHost, 2 * made + 2);
-                copyLevel = java.util.Arrays.copyOf(copyLevel, 2 * made + 2);
-            }
             copyHost[made] = host;
             copyLevel[made] = levels[f];
             if (crept) {
@@ -592,12 +614,13 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         /** The pieces of the face last cut ({@link #pieces}) that lie in a region where paper creeps: placed on its line. */
         private final java.util.Set<List<Corner>> inside = java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>());
         /**
-         * Where lines cut edges: x, y, u, v each, the two paper vertices of the sheet edge it lies
-         * on (-1 where it lies on none), its host and level.
+         * Where lines cut edges, {@link #CUT_POINT} numbers each: x, y, u, v, the two paper
+         * vertices of the sheet edge it lies on (-1 where it lies on none), its host and level.
          */
-        private final List<double[]> cutPoints = new ArrayList<>();
-        /** The space vertices made of each cut point. */
-        private final List<int[]> cutCopies = new ArrayList<>();
+        private final DoubleList cutPoints = new DoubleList();
+        private static final int CUT_POINT = 8;
+        /** The first space vertex made of each cut point (-1: none; the others by {@link #nextCopy}). */
+        private final IntList cutCopies = new IntList();
 
         /**
          * Where face f's paper creeps (is placed elsewhere than it lies), along the concave edges
@@ -925,11 +948,12 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             // lines crossing an edge at one point, where a wall ends on a mitre).
             int known = cutAt(sheet.host(f), levels[f], u, v);
             if (known < 0) {
-                known = cutPoints.size();
+                known = cutCopies.size();
                 // And the sheet edge it lies on (its two paper vertices), where it lies on one.
-                cutPoints.add(new double[] {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), u, v, one, two,
-                    sheet.host(f), levels[f]});
-                cutCopies.add(new int[0]);
+                for (double value : new double[] {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), u, v, one, two, sheet.host(f), levels[f]}) {
+                    cutPoints.add(value);
+                }
+                cutCopies.add(-1);
                 long cell = cell(sheet.host(f), levels[f], Math.round(u / SAME_POINT), Math.round(v / SAME_POINT));
                 if (known >= cutNext.length) {
                     cutNext = java.util.Arrays.copyOf(cutNext, 2 * known + 16);
@@ -937,8 +961,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 cutNext[known] = cutCells.get(cell, -1);
                 cutCells.put(cell, known);
             }
-            double[] p = cutPoints.get(known);
-            return new Corner(p[0], p[1], p[2], p[3], -1 - known, -1);
+            int p = CUT_POINT * known;
+            return new Corner(cutPoints.get(p), cutPoints.get(p + 1), cutPoints.get(p + 2), cutPoints.get(p + 3), -1 - known, -1);
         }
 
         /** Cut points closer than this on the sheet are one. */
@@ -963,8 +987,9 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             for (long du = -1; du <= 1; du++) {
                 for (long dv = -1; dv <= 1; dv++) {
                     for (int k = cutCells.get(cell(host, level, cu + du, cv + dv), -1); k >= 0; k = cutNext[k]) {
-                        double[] p = cutPoints.get(k);
-                        if (p[6] == host && p[7] == level && Math.abs(p[2] - u) <= SAME_POINT && Math.abs(p[3] - v) <= SAME_POINT) {
+                        int p = CUT_POINT * k;
+                        if (cutPoints.get(p + 6) == host && cutPoints.get(p + 7) == level && Math.abs(cutPoints.get(p + 2) - u) <= SAME_POINT
+                                && Math.abs(cutPoints.get(p + 3) - v) <= SAME_POINT) {
                             return k;
                         }
                     }
@@ -979,8 +1004,10 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 return vertex(f, c.id, bx, by);
             }
             int index = -1 - c.id;
-            int[] known = cutCopies.get(index);
-            double[] cut = cutPoints.get(index);
+            double[] cut = new double[CUT_POINT];
+            for (int k = 0; k < CUT_POINT; k++) {
+                cut[k] = cutPoints.get(CUT_POINT * index + k);
+            }
             // On a sheet edge that goes over an edge of the surface to another host, it is kept from
             // the end of that edge as the edge's ends are (HostFrame.Stop).
             double[] over = null;
@@ -997,12 +1024,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                         pose.y(sheet.u(q), sheet.v(q))};
                 }
             }
-            int v = placed(f, c.x, c.y, c.u, c.v, over, bx, by, known);
-            if (!contains(known, v)) {
-                int[] longer = java.util.Arrays.copyOf(known, known.length + 1);
-                longer[known.length] = v;
-                cutCopies.set(index, longer);
-            }
+            int v = placed(f, c.x, c.y, c.u, c.v, over, bx, by, cutCopies.get(index));
+            cutCopies.set(index, linked(cutCopies.get(index), v));
             return v;
         }
 
@@ -1013,8 +1036,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          * are placed apart along the cut between them (the end of a wall, where the paper on one
          * side ends on the wall and on the other runs on to its mitre) a cap across, of no area.
          */
-        private void placePieces(int f, List<List<Corner>> pieces, List<int[]> paper, List<Integer> hostList, List<int[]> caps,
-                List<Integer> capAfter) {
+        private void placePieces(int f, List<List<Corner>> pieces, List<int[]> paper, IntList hostList, List<int[]> caps,
+                IntList capAfter) {
             int[] loop = sheet.loop(f);
             List<List<double[]>> along = new ArrayList<>();
             for (int i = 0; i < loop.length; i++) {
@@ -1061,10 +1084,17 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 caps.add(tear);
                 capAfter.add(paper.size() - 1); // after the face's last piece
             }
+            sidesOf[f] = sideStarts.size();
             for (List<double[]> segments : along) {
                 segments.sort((p, q) -> Double.compare(p[0], q[0]));
+                sideStarts.add(sideEdges.size() / SIDE_EDGE);
+                for (double[] segment : segments) {
+                    for (double value : segment) {
+                        sideEdges.add(value);
+                    }
+                }
             }
-            sides.put(f, along);
+            sideStarts.add(sideEdges.size() / SIDE_EDGE);
         }
 
         /** The area of a polygon of space vertices. */
@@ -1126,16 +1156,20 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         private double[][] chain(int f, int i, int a, int b) {
             int[] loop = sheet.loop(f);
             boolean forward = loop[i] == a;
-            if (!sides.containsKey(f)) {
+            if (sidesOf[f] < 0) {
                 int first = corners[f][i];
                 int second = corners[f][(i + 1) % loop.length];
                 return new double[][] {forward ? new double[] {0, 1, first, second, 0} : new double[] {0, 1, second, first, 0}};
             }
-            List<double[]> segments = sides.get(f).get(i);
-            double[][] chain = new double[segments.size()][];
+            int from = sideStarts.get(sidesOf[f] + i);
+            int to = sideStarts.get(sidesOf[f] + i + 1);
+            double[][] chain = new double[to - from][];
             for (int k = 0; k < chain.length; k++) {
-                double[] segment = segments.get(forward ? k : chain.length - 1 - k);
-                chain[k] = forward ? segment.clone() : new double[] {1 - segment[1], 1 - segment[0], segment[3], segment[2], segment[4]};
+                double[] segment = new double[SIDE_EDGE];
+                for (int d = 0; d < SIDE_EDGE; d++) {
+                    segment[d] = sideEdges.get(SIDE_EDGE * (forward ? from + k : to - 1 - k) + d);
+                }
+                chain[k] = forward ? segment : new double[] {1 - segment[1], 1 - segment[0], segment[3], segment[2], segment[4]};
             }
             return chain;
         }
@@ -1147,7 +1181,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          * lies); where {@code flat}, none where the two lie on each other.
          */
         private void addCap(double[][] f, double[][] g, int a, int b, int after, boolean flat, boolean dropSquashed, List<int[]> caps,
-                List<Integer> capAfter) {
+                IntList capAfter) {
             double[] cuts = cutsAlong(f, g);
             int fromF = -1;
             int fromG = -1;
@@ -1206,7 +1240,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          * crease from each layer, and straight across between.
          */
         private void wholeBend(int k, int[] c, NestedBends.Bend bend, double out, double slope, double[] past, int after, List<int[]> caps,
-                List<Integer> capAfter) {
+                IntList capAfter) {
             int f = c[0];
             int g = c[1];
             if (out == 0) {
@@ -1286,10 +1320,6 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         /** A vertex of a cap's middle rows, made for no face's layer: shared with none. */
         private int capVertex(double[] point, double u, double v) {
             int made = add(point, u, v);
-            if (made >= copyHost.length) {
-                copyHost = java.util.Arrays.copyOf(copyHost, 2 * made + 2);
-                copyLevel = java.util.Arrays.copyOf(copyLevel, 2 * made + 2);
-            }
             copyHost[made] = -1;
             return made;
         }
@@ -1329,6 +1359,12 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 xyz = java.util.Arrays.copyOf(xyz, 2 * xyz.length);
                 uv = java.util.Arrays.copyOf(uv, 2 * uv.length);
             }
+            if (vertices == copyHost.length) {
+                copyHost = java.util.Arrays.copyOf(copyHost, 2 * vertices);
+                copyLevel = java.util.Arrays.copyOf(copyLevel, 2 * vertices);
+                nextCopy = java.util.Arrays.copyOf(nextCopy, 2 * vertices);
+            }
+            nextCopy[vertices] = -1;
             xyz[3 * vertices] = point[0];
             xyz[3 * vertices + 1] = point[1];
             xyz[3 * vertices + 2] = point[2];
