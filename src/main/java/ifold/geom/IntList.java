@@ -2,47 +2,49 @@ package ifold.geom;
 
 import java.util.Arrays;
 
-/** A growing list of {@code int}s without boxing: the indices a large wrap's paper is built from, millions of them. */
+/**
+ * A growing list of {@code int}s without boxing: the indices a large wrap's paper is built from,
+ * millions of them. Kept in blocks rather than one array doubled as it grows: a doubled array
+ * is up to twice the list, and three times while it is copied.
+ */
 public final class IntList {
-    private int[] values;
+    private static final int SHIFT = 12;
+    private static final int BLOCK = 1 << SHIFT;
+    private static final int MASK = BLOCK - 1;
+    private int[][] blocks = new int[4][];
     private int size;
 
-    public IntList() {
-        this(16);
-    }
-
-    public IntList(int capacity) {
-        values = new int[Math.max(1, capacity)];
-    }
-
     public void add(int value) {
-        if (size == values.length) {
-            values = Arrays.copyOf(values, 2 * size);
+        int block = size >>> SHIFT;
+        if (block == blocks.length) {
+            blocks = Arrays.copyOf(blocks, 2 * block);
         }
-        values[size++] = value;
+        if (blocks[block] == null) {
+            blocks[block] = new int[BLOCK];
+        }
+        blocks[block][size & MASK] = value;
+        size++;
     }
 
     /** {@code times} copies of {@code value}. */
     public void add(int value, int times) {
-        if (size + times > values.length) {
-            values = Arrays.copyOf(values, Math.max(2 * values.length, size + times));
+        for (int k = 0; k < times; k++) {
+            add(value);
         }
-        Arrays.fill(values, size, size + times, value);
-        size += times;
     }
 
     public int get(int i) {
-        if (i >= size) {
+        if (i < 0 || i >= size) {
             throw new IndexOutOfBoundsException(i + " of " + size);
         }
-        return values[i];
+        return blocks[i >>> SHIFT][i & MASK];
     }
 
     public void set(int i, int value) {
-        if (i >= size) {
+        if (i < 0 || i >= size) {
             throw new IndexOutOfBoundsException(i + " of " + size);
         }
-        values[i] = value;
+        blocks[i >>> SHIFT][i & MASK] = value;
     }
 
     public int size() {
@@ -50,6 +52,10 @@ public final class IntList {
     }
 
     public int[] toArray() {
-        return Arrays.copyOf(values, size);
+        int[] out = new int[size];
+        for (int at = 0; at < size; at += BLOCK) {
+            System.arraycopy(blocks[at >>> SHIFT], 0, out, at, Math.min(BLOCK, size - at));
+        }
+        return out;
     }
 }

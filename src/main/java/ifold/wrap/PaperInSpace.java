@@ -115,8 +115,16 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
 
     /** The strip placed in space. */
     public static PaperInSpace of(Sheet sheet, HostFrame[] frames) {
-        Builder builder = new Builder(sheet, frames);
-        return builder.build();
+        // The builder's working lists are garbage once it is done, before its vertices are cut
+        // to size: on the 5,000-triangle torus they and the two copies were the run's peak.
+        Built built = new Builder(sheet, frames).build();
+        return new PaperInSpace(built.xyz().toArray(), built.uv().toArray(), built.paper(), built.hosts(), built.caps(), built.capAfter(),
+                built.creep(), built.pieceStart());
+    }
+
+    /** What the builder made, its vertices still in lists. */
+    private record Built(DoubleList xyz, DoubleList uv, List<int[]> paper, int[] hosts, List<int[]> caps, int[] capAfter, Creep creep,
+            int[] pieceStart) {
     }
 
     /**
@@ -129,8 +137,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         private final Sheet sheet;
         private final HostFrame[] frames;
         private final int[] levels;
-        private double[] xyz = new double[3 * 64];
-        private double[] uv = new double[2 * 64];
+        private final DoubleList xyz = new DoubleList();
+        private final DoubleList uv = new DoubleList();
         private int vertices;
         /**
          * For each paper vertex, the first space vertex made for it (-1: none); the others (one
@@ -139,12 +147,12 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          */
         private final int[] firstCopy;
         /** For each space vertex made for a paper vertex or a cut point, the next made for the same point (-1: none). */
-        private int[] nextCopy = new int[64];
+        private final IntList nextCopy = new IntList();
         private final double merge;
         private final double exact;
         /** The triangle and level each space vertex was made for (caps' middle rows: -1). */
-        private int[] copyHost = new int[64];
-        private int[] copyLevel = new int[64];
+        private final IntList copyHost = new IntList();
+        private final IntList copyLevel = new IntList();
         /** Each face's corners as placed whole (null for a face placed in pieces). */
         private int[][] corners;
         /**
@@ -182,7 +190,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             java.util.Arrays.fill(firstCopy, -1);
         }
 
-        PaperInSpace build() {
+        Built build() {
             int faces = sheet.faceCount();
             // Flat folds first, from the sheet alone (two faces across a paper edge on one host at
             // two levels): how far each bend stands out depends on the folds nested about its
@@ -211,9 +219,9 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             boolean[] onWall = walls.along();
 
             List<int[]> paper = new ArrayList<>(faces);
-            IntList hostList = new IntList(faces);
+            IntList hostList = new IntList();
             List<int[]> caps = new ArrayList<>();
-            IntList capAfter = new IntList(faces);
+            IntList capAfter = new IntList();
             corners = new int[faces][];
             sidesOf = new int[faces];
             pieceStart = new int[faces + 1];
@@ -348,8 +356,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             }
             Creep creep = creptCount == 0 ? Creep.NONE
                     : new Creep(java.util.Arrays.copyOf(creptVertices, creptCount), java.util.Arrays.copyOf(creptFrom, 3 * creptCount));
-            return new PaperInSpace(java.util.Arrays.copyOf(xyz, 3 * vertices), java.util.Arrays.copyOf(uv, 2 * vertices), paper,
-                    hosts, caps, capAfter.toArray(), creep, pieceStart);
+            return new Built(xyz, uv, paper, hosts, caps, capAfter.toArray(), creep, pieceStart);
         }
 
         /** What is done with two faces f and g (g > f) joined along paper edge a → b, edge i of f. */
@@ -425,12 +432,12 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 if (last == v) {
                     return first;
                 }
-                if (nextCopy[last] < 0) {
+                if (nextCopy.get(last) < 0) {
                     break;
                 }
-                last = nextCopy[last];
+                last = nextCopy.get(last);
             }
-            nextCopy[last] = v;
+            nextCopy.set(last, v);
             return first;
         }
 
@@ -450,21 +457,21 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             walls.place(host, frame, x, y, height(f), middle[0], middle[1], over, bx, by, xy);
             boolean crept = xy[0] != x || xy[1] != y;
             frame.toSpace(xy[0], xy[1], height(f), point, 0);
-            for (int copy = first; copy >= 0; copy = nextCopy[copy]) {
-                if (copyHost[copy] == host && copyLevel[copy] == levels[f] && closer(copy, point, exact)) {
+            for (int copy = first; copy >= 0; copy = nextCopy.get(copy)) {
+                if (copyHost.get(copy) == host && copyLevel.get(copy) == levels[f] && closer(copy, point, exact)) {
                     return copy;
                 }
             }
             if (sheet.thickness() == 0) {
-                for (int copy = first; copy >= 0; copy = nextCopy[copy]) {
+                for (int copy = first; copy >= 0; copy = nextCopy.get(copy)) {
                     if (closer(copy, point, merge)) {
                         return copy;
                     }
                 }
             }
             int made = add(point, u, v);
-            copyHost[made] = host;
-            copyLevel[made] = levels[f];
+            copyHost.set(made, host);
+            copyLevel.set(made, levels[f]);
             if (crept) {
                 if (creptCount == creptVertices.length) {
                     creptVertices = java.util.Arrays.copyOf(creptVertices, 2 * creptCount + 8);
@@ -1103,9 +1110,9 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             for (int k = 0; k < polygon.length; k++) {
                 int i = 3 * polygon[k];
                 int j = 3 * polygon[(k + 1) % polygon.length];
-                n[0] += (xyz[i + 1] - xyz[j + 1]) * (xyz[i + 2] + xyz[j + 2]);
-                n[1] += (xyz[i + 2] - xyz[j + 2]) * (xyz[i] + xyz[j]);
-                n[2] += (xyz[i] - xyz[j]) * (xyz[i + 1] + xyz[j + 1]);
+                n[0] += (xyz.get(i + 1) - xyz.get(j + 1)) * (xyz.get(i + 2) + xyz.get(j + 2));
+                n[1] += (xyz.get(i + 2) - xyz.get(j + 2)) * (xyz.get(i) + xyz.get(j));
+                n[2] += (xyz.get(i) - xyz.get(j)) * (xyz.get(i + 1) + xyz.get(j + 1));
             }
             return Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) / 2;
         }
@@ -1306,7 +1313,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     int b = (int) edge[3];
                     double[] point = new double[3];
                     for (int d = 0; d < 3; d++) {
-                        point[d] = xyz[3 * a + d] + w * (xyz[3 * b + d] - xyz[3 * a + d]);
+                        point[d] = xyz.get(3 * a + d) + w * (xyz.get(3 * b + d) - xyz.get(3 * a + d));
                     }
                     return capVertex(point, u, v);
                 }
@@ -1320,7 +1327,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         /** A vertex of a cap's middle rows, made for no face's layer: shared with none. */
         private int capVertex(double[] point, double u, double v) {
             int made = add(point, u, v);
-            copyHost[made] = -1;
+            copyHost.set(made, -1);
             return made;
         }
 
@@ -1344,32 +1351,25 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         }
 
         private boolean closer(int copy, double[] point, double distance) {
-            double dx = xyz[3 * copy] - point[0];
-            double dy = xyz[3 * copy + 1] - point[1];
-            double dz = xyz[3 * copy + 2] - point[2];
+            double dx = xyz.get(3 * copy) - point[0];
+            double dy = xyz.get(3 * copy + 1) - point[1];
+            double dz = xyz.get(3 * copy + 2) - point[2];
             return dx * dx + dy * dy + dz * dz <= distance * distance;
         }
 
         private boolean samePlace(int a, int b) {
-            return closer(a, new double[] {xyz[3 * b], xyz[3 * b + 1], xyz[3 * b + 2]}, merge);
+            return closer(a, new double[] {xyz.get(3 * b), xyz.get(3 * b + 1), xyz.get(3 * b + 2)}, merge);
         }
 
         private int add(double[] point, double u, double v) {
-            if (3 * vertices + 3 > xyz.length) {
-                xyz = java.util.Arrays.copyOf(xyz, 2 * xyz.length);
-                uv = java.util.Arrays.copyOf(uv, 2 * uv.length);
-            }
-            if (vertices == copyHost.length) {
-                copyHost = java.util.Arrays.copyOf(copyHost, 2 * vertices);
-                copyLevel = java.util.Arrays.copyOf(copyLevel, 2 * vertices);
-                nextCopy = java.util.Arrays.copyOf(nextCopy, 2 * vertices);
-            }
-            nextCopy[vertices] = -1;
-            xyz[3 * vertices] = point[0];
-            xyz[3 * vertices + 1] = point[1];
-            xyz[3 * vertices + 2] = point[2];
-            uv[2 * vertices] = u;
-            uv[2 * vertices + 1] = v;
+            copyHost.add(-1);
+            copyLevel.add(-1);
+            nextCopy.add(-1);
+            xyz.add(point[0]);
+            xyz.add(point[1]);
+            xyz.add(point[2]);
+            uv.add(u);
+            uv.add(v);
             return vertices++;
         }
     }
