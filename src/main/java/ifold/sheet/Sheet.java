@@ -464,6 +464,20 @@ public final class Sheet {
         return stack == null ? new int[0] : Arrays.copyOf(stack.faces, stack.count);
     }
 
+    /** The faces on {@code host} that may overlap a polygon (x y each, on the host's frame): those near it in the stack's grid, or all. */
+    public int[] facesNear(int host, double[] polygon) {
+        Stack stack = stacks.get(host);
+        if (stack == null) {
+            return new int[0];
+        }
+        int[] slots = stack.near(polygon, -1);
+        int[] faces = new int[slots.length];
+        for (int i = 0; i < slots.length; i++) {
+            faces[i] = stack.faces[slots[i]];
+        }
+        return faces;
+    }
+
     // ---------------------------------------------------------------- reading
 
     public double width() {

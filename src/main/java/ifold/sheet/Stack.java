@@ -64,6 +64,14 @@ final class Stack {
      * grid cells its polygon meets): all of them while the stack is small.
      */
     int[] near(int f) {
+        return near(sheet.placedFaces.polygon(f), f);
+    }
+
+    /**
+     * The places in the stack, in order, of the faces that may overlap a polygon (x y each, on the
+     * host's frame), face {@code f} left out (-1: none).
+     */
+    int[] near(double[] polygon, int f) {
         if (grid != null && gridListed > 2 * count + GRID_FROM) {
             grid = null; // more listed faces gone or moved than there are faces
         }
@@ -78,7 +86,7 @@ final class Stack {
             }
             gridListed = count;
         }
-        int[] listed = grid == null ? null : grid.near(sheet.placedFaces.polygon(f));
+        int[] listed = grid == null ? null : grid.near(polygon);
         if (listed != null) {
             // Faces that left the stack stay listed: only those still in it, by their place.
             int[] slots = new int[listed.length];
@@ -93,10 +101,13 @@ final class Stack {
             return slots;
         }
         int[] all = new int[count];
+        int n = 0;
         for (int i = 0; i < count; i++) {
-            all[i] = i;
+            if (faces[i] != f) {
+                all[n++] = i;
+            }
         }
-        return all;
+        return n == count ? all : Arrays.copyOf(all, n);
     }
     Stack(Sheet sheet) {
         this.sheet = sheet;

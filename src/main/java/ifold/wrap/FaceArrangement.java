@@ -117,10 +117,21 @@ final class FaceArrangement {
         return cells.totals();
     }
 
-    /** Whether a convex polygon is nowhere wider than {@code tolerance}: twice its area at most the tolerance times its perimeter. */
-    private static boolean thinnerThan(double[] p, double tolerance) {
+    /**
+     * Whether a convex polygon is nowhere wider than {@code tolerance}: twice its area at most the
+     * tolerance times its perimeter, or no edge longer than the tolerance. The second, because the
+     * area of a polygon far smaller than its coordinates is rounding (a speck 1e-10 across at 0.9
+     * from the origin had 7e-18, more than the first test allows), and every edge of it is too
+     * short to cut a cell: each cell its box met was counted under it, a layer the torus did not have.
+     */
+    static boolean thinnerThan(double[] p, double tolerance) {
         int n = p.length / 2;
-        return !(Math.abs(Polygons2.twiceArea(p, n)) > tolerance * Polygons2.perimeter(p, n));
+        boolean edgeLonger = false;
+        for (int i = 0; i < n && !edgeLonger; i++) {
+            int j = (i + 1) % n;
+            edgeLonger = Polygons2.length(p[2 * j] - p[2 * i], p[2 * j + 1] - p[2 * i + 1]) > tolerance;
+        }
+        return !edgeLonger || !(Math.abs(Polygons2.twiceArea(p, n)) > tolerance * Polygons2.perimeter(p, n));
     }
 
     /**
@@ -293,7 +304,7 @@ final class FaceArrangement {
             return Math.max(0, Math.min(rows - 1, (int) Math.floor((y - minY) / cellHeight)));
         }
 
-        /** The area, the area covered, the most depth, and the centre of the largest cell of that depth. */
+        /** The area, the area covered, the most depth, the centre of the largest cell of that depth, and its corners (x y each). */
         double[] totals() {
             double area = 0;
             double covered = 0;
@@ -301,6 +312,7 @@ final class FaceArrangement {
             double largest = -1;
             double cx = Double.NaN;
             double cy = Double.NaN;
+            double[] deepest = new double[0];
             for (int id = 0; id < count; id++) {
                 if (depths[id] < 0) {
                     continue;
@@ -314,6 +326,7 @@ final class FaceArrangement {
                 if (depths[id] > most || depths[id] == most && a > largest) {
                     most = depths[id];
                     largest = a;
+                    deepest = cell;
                     // The mean of a convex cell's corners lies inside it.
                     cx = 0;
                     cy = 0;
@@ -323,7 +336,9 @@ final class FaceArrangement {
                     }
                 }
             }
-            return new double[] {area, covered, most, cx, cy};
+            double[] totals = java.util.Arrays.copyOf(new double[] {area, covered, most, cx, cy}, 5 + deepest.length);
+            System.arraycopy(deepest, 0, totals, 5, deepest.length);
+            return totals;
         }
     }
 }

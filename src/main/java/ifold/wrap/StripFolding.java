@@ -15,6 +15,7 @@ import ifold.mesh.IndexedPolygons;
 import ifold.sheet.FoldException;
 import ifold.sheet.HostFrame;
 import ifold.sheet.Isometry2;
+import ifold.sheet.Polygons2;
 import ifold.sheet.Sheet.Placement;
 import ifold.sheet.Sheet;
 import ifold.sheet.Tuck;
@@ -25,6 +26,7 @@ import ifold.wrap.Wrap.Strip;
 import ifold.wrap.Wrap.TailMove;
 import ifold.wrap.Wrap.Watcher;
 import ifold.wrap.Wrap.WrapException;
+import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
@@ -135,17 +137,23 @@ final class StripFolding {
         double h = edges.h();
         boolean last = i == plan.m - 1;
         int k = passes(h, w);
-        double[] bottom = new double[k];
-        for (int j = 0; j < k; j++) {
-            bottom[j] = h - (j + 1) * w;
-        }
-        if (!last) {
-            int shortTurn = shortTurn(edges, k, firstDirection(plan, i, w), hostFrames[hostOf(i)].corners());
-            for (int j = shortTurn + 1; j < k; j++) {
-                bottom[j] = (k - 1 - j) * w;
+        int d = firstDirection(plan, i, w);
+        double[] hostCorners = hostFrames[hostOf(i)].corners();
+        double[] bottom = last ? null : evenedUp(edges, k, d, i, hostCorners);
+        if (bottom != null) {
+            k = bottom.length;
+        } else {
+            bottom = new double[k];
+            for (int j = 0; j < k; j++) {
+                bottom[j] = h - (j + 1) * w;
+            }
+            if (!last) {
+                int shortTurn = shortTurn(edges, k, d, hostCorners);
+                for (int j = shortTurn + 1; j < k; j++) {
+                    bottom[j] = (k - 1 - j) * w;
+                }
             }
         }
-        int d = firstDirection(plan, i, w);
         int host = plan.first + i;
         if (i == 0) {
             double start = d > 0 ? edges.leftmost(bottom[0], bottom[0] + w) - margin : edges.rightmost(bottom[0], bottom[0] + w) + margin;
@@ -175,6 +183,112 @@ final class StripFolding {
         } else {
             leave(i, edges, d);
         }
+    }
+
+    /**
+     * The bottoms of the passes of triangle i when its k passes, the first running in direction
+     * d, would bring the last towards the end of its base the strip does not leave by, and the
+     * fold back there would lie off the host (tucked under, at a corner of the host often twice,
+     * with the fold backs of the triangles fanning there): k + 1 passes, two of their turns
+     * shifting by less than a width, each by half of what one short turn would, their gadgets
+     * lying flat on the host and on no other triangle's gadget. Null where the last pass runs the
+     * right way, where the fold back at the wrong end lies on the host anyway, or where no two
+     * turns have their gadgets so.
+     */
+    private double[] evenedUp(SlantedEdges edges, int k, int d, int i, double[] host) {
+        int towardsExit = plan.start[i + 1] == plan.baseTo[i] ? 1 : -1;
+        int lastDirection = k % 2 == 1 ? d : -d;
+        if (k < 2 || lastDirection == towardsExit || gadgetOnHost(edges, lastDirection, 0, w, host)) {
+            return null;
+        }
+        if (smallestAngle(host) < ifold.refine.FacePreparation.TARGET_ANGLE) {
+            // A true sharp corner of the solid, which no preparation widens: its tucks fold the
+            // paper about lines by its convex edges, where nested folds have no room to stand
+            // apart, and the turns moved put two of them on one line there (on the shared spike,
+            // a pair of caps lay on each other, a thousandth of a thickness wide). Left as it was.
+            return null;
+        }
+        double h = edges.h();
+        int passes = k + 1;
+        double half = (h - (k - 1) * w) / 2;
+        // The turns whose gadgets lie on the host as the passes would lie a width apart, and on no
+        // gadget of another triangle, nearest the middle first. Over another's gadget, a gadget's
+        // fold could have to land inside the other's fold and reach across its crease, which no
+        // order of the layers allows (the long boxes' end faces met that).
+        int middle = (passes - 2) / 2;
+        List<Integer> onHost = new ArrayList<>();
+        for (int j = 0; j + 1 < passes; j++) {
+            if (gadgetOnHost(edges, j % 2 == 0 ? d : -d, h - (j + 2) * w, h - j * w, host)) {
+                onHost.add(j);
+            }
+        }
+        onHost.sort((a, b) -> Integer.compare(Math.abs(a - middle), Math.abs(b - middle)));
+        List<Integer> chosen = new ArrayList<>();
+        for (int j : onHost) {
+            if (chosen.size() < 2 && clearOfGadgets(gadgetRegion(edges, j % 2 == 0 ? d : -d, h - (j + 2) * w, h - j * w), hostOf(i))) {
+                chosen.add(j);
+            }
+        }
+        if (chosen.size() < 2) {
+            return null;
+        }
+        int first = Math.min(chosen.get(0), chosen.get(1));
+        int second = Math.max(chosen.get(0), chosen.get(1));
+        double[] bottom = new double[passes];
+        for (int j = 0; j < passes; j++) {
+            bottom[j] = j <= first ? h - (j + 1) * w : j <= second ? h - j * w - half : (passes - 1 - j) * w;
+        }
+        // Where they lie with the passes so shifted.
+        for (int j : new int[] {first, second}) {
+            if (!gadgetOnHost(edges, j % 2 == 0 ? d : -d, bottom[j + 1], bottom[j] + w, host)
+                    || !clearOfGadgets(gadgetRegion(edges, j % 2 == 0 ? d : -d, bottom[j + 1], bottom[j] + w), hostOf(i))) {
+                return null;
+            }
+        }
+        return bottom;
+    }
+
+    /** The region a gadget beyond the slanted edge on {@code side}, from height {@code low} to {@code top}, takes, in the host's frame. */
+    private double[] gadgetRegion(SlantedEdges edges, int side, double low, double top) {
+        double bottom = Math.max(0, low);
+        double reach = margin + 2 * w;
+        double atBottom = side > 0 ? edges.right(bottom) : edges.left(bottom);
+        double atTop = side > 0 ? edges.right(top) : edges.left(top);
+        double[] triangleFrame = {atBottom, bottom, atBottom + side * reach, bottom, atTop + side * reach, top, atTop, top};
+        double[] region = new double[8];
+        for (int k = 0; k < 8; k += 2) {
+            region[k] = intoHost.x(triangleFrame[k], triangleFrame[k + 1]);
+            region[k + 1] = intoHost.y(triangleFrame[k], triangleFrame[k + 1]);
+        }
+        return region;
+    }
+
+    /** Whether a region of the host overlaps no face of a turn gadget there (none before the first triangle). */
+    private boolean clearOfGadgets(double[] region, int host) {
+        if (sheet == null) {
+            return true;
+        }
+        for (int f : sheet.facesNear(host, region)) {
+            if (sheet.laidAfter(f) == Sheet.Crease.GADGET) {
+                double[] gadget = sheet.placed(f);
+                if (Polygons2.overlap(region, 4, gadget, gadget.length / 2, sheet.tolerance())) {
+                    return false;
+                }
+            }
+        }
+        return true;
+    }
+
+    /** Whether a gadget beyond the slanted edge on {@code side}, from height {@code low} to {@code top}, lies on the host. */
+    private boolean gadgetOnHost(SlantedEdges edges, int side, double low, double top, double[] host) {
+        for (double y : new double[] {Math.max(0, low), top}) {
+            double x = side > 0 ? edges.right(y) : edges.left(y);
+            double beyond = x + side * (margin + 2 * w);
+            if (!insideConvex(host, intoHost.x(beyond, y), intoHost.y(beyond, y))) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /**

@@ -128,6 +128,7 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
             int deepestStrip = -1;
             int deepestTriangle = -1;
             double[] deepestPoint = null;
+            double[] deepestCell = null;
             try {
                 for (int k = 0; k < result.strips().size(); k++) {
                     Sheet sheet = result.strips().get(k).sheet();
@@ -147,6 +148,7 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
                                 deepestStrip = k;
                                 deepestTriangle = triangles.get(i);
                                 deepestPoint = new double[] {figures[3], figures[4]};
+                                deepestCell = java.util.Arrays.copyOfRange(figures, 5, figures.length);
                             }
                             maxLayers = Math.max(maxLayers, (int) figures[2]);
                         }
@@ -184,7 +186,7 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
                 creep = Math.max(creep, geometry.creep().most(geometry));
             }
             Deepest deepest = deepestStrip < 0 ? null
-                    : deepest(result.strips().get(deepestStrip).sheet(), deepestStrip, deepestTriangle, deepestPoint,
+                    : deepest(result.strips().get(deepestStrip).sheet(), deepestStrip, deepestTriangle, deepestPoint, deepestCell,
                             result.hostOf()[deepestTriangle], frames[result.hostOf()[deepestTriangle]]);
             return new WrapAnalysis(maxLayers, stackLevels, surface > 0 ? covered / surface : 0, surface, paper, outside, farthest,
                     isometry, creep, inside, insideLength, onEdges, onEdgesLength, deepest);
@@ -250,23 +252,39 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
             }
             double[] cells = FaceArrangement.depths(counterClockwise(turned(corners, along)), polygons, sheet.tolerance());
             // The point back in the host's frame.
-            figures[t] = new double[] {cells[0], cells[1], cells[2], along[0] * cells[3] - along[1] * cells[4],
-                    along[1] * cells[3] + along[0] * cells[4]};
+            // The point and the deepest cell's corners back in the host's frame.
+            figures[t] = new double[cells.length];
+            System.arraycopy(cells, 0, figures[t], 0, 3);
+            for (int k = 3; k + 1 < cells.length; k += 2) {
+                figures[t][k] = along[0] * cells[k] - along[1] * cells[k + 1];
+                figures[t][k + 1] = along[1] * cells[k] + along[0] * cells[k + 1];
+            }
         }
         return new HostCells(outside, farthest, figures);
     }
 
     /**
-     * Whether (x, y) lies strictly inside a convex counter-clockwise polygon: the centre of a
-     * cell of the arrangement lies strictly inside every face that holds the cell, and outside
-     * every other.
+     * Whether a convex counter-clockwise face holds a cell of the arrangement as {@link
+     * FaceArrangement} decides it: a face it does not leave out as too thin, every corner of the
+     * cell within {@code tolerance} inside each edge of the face longer than that.
      */
-    private static boolean strictlyInside(double[] p, double x, double y) {
-        int n = p.length / 2;
+    private static boolean holds(double[] face, double[] cell, double tolerance) {
+        if (FaceArrangement.thinnerThan(face, tolerance)) {
+            return false; // the arrangement leaves it out: it covers nothing
+        }
+        int n = face.length / 2;
         for (int i = 0; i < n; i++) {
             int j = (i + 1) % n;
-            if ((p[2 * j] - p[2 * i]) * (y - p[2 * i + 1]) - (p[2 * j + 1] - p[2 * i + 1]) * (x - p[2 * i]) <= 0) {
-                return false;
+            double dx = face[2 * j] - face[2 * i];
+            double dy = face[2 * j + 1] - face[2 * i + 1];
+            double length = Math.sqrt(dx * dx + dy * dy);
+            if (!(length > tolerance)) {
+                continue;
+            }
+            for (int k = 0; k + 1 < cell.length; k += 2) {
+                if ((dx * (cell[k + 1] - face[2 * i + 1]) - dy * (cell[k] - face[2 * i])) / length < -tolerance) {
+                    return false;
+                }
             }
         }
         return true;
@@ -334,15 +352,20 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
         return counterClockwise(xy);
     }
 
-    /** The faces of a sheet over a point (x, y) of one triangle, counted by where they came from. */
-    private static Deepest deepest(Sheet sheet, int strip, int triangle, double[] xy, int host, HostFrame frame) {
+    /**
+     * The faces of a sheet over the deepest cell of one triangle's arrangement (its corners x y
+     * each, its centre xy), counted by where they came from: the faces that hold the cell as the
+     * arrangement decided, every corner within the tolerance inside each of their edges (the
+     * centre alone, strictly inside, missed a face along whose edge a thin deepest cell lay).
+     */
+    private static Deepest deepest(Sheet sheet, int strip, int triangle, double[] xy, double[] cell, int host, HostFrame frame) {
         int layers = 0;
         int passes = 0;
         int gadgets = 0;
         int crossings = 0;
         int tucks = 0;
         for (int f : sheet.facesOn(host)) {
-            if (!strictlyInside(counterClockwise(sheet.placed(f)), xy[0], xy[1])) {
+            if (!holds(counterClockwise(sheet.placed(f)), cell, sheet.tolerance())) {
                 continue;
             }
             layers++;
