@@ -188,17 +188,23 @@ final class StripFolding {
     /**
      * The bottoms of the passes of triangle i when its k passes, the first running in direction
      * d, would bring the last towards the end of its base the strip does not leave by, and the
-     * fold back there would lie off the host (tucked under, at a corner of the host often twice,
-     * with the fold backs of the triangles fanning there): k + 1 passes, two of their turns
-     * shifting by less than a width, each by half of what one short turn would, their gadgets
-     * lying flat on the host and on no other triangle's gadget. Null where the last pass runs the
-     * right way, where the fold back at the wrong end lies on the host anyway, or where no two
-     * turns have their gadgets so.
+     * fold back there would lie off the host over other triangles' gadgets or tucked flaps (a
+     * pile of the fold backs of the triangles fanning at a corner, tucked under there): k + 1
+     * passes, two of their turns shifting by less than a width, each by half of what one short
+     * turn would, their gadgets lying flat on the host and on no other triangle's gadget. Null
+     * where the last pass runs the right way, where the fold back at the wrong end lies on the
+     * host or on no pile, on a host with a corner under 20°, or where no two turns have their
+     * gadgets so.
      */
     private double[] evenedUp(SlantedEdges edges, int k, int d, int i, double[] host) {
         int towardsExit = plan.start[i + 1] == plan.baseTo[i] ? 1 : -1;
         int lastDirection = k % 2 == 1 ? d : -d;
-        if (k < 2 || lastDirection == towardsExit || gadgetOnHost(edges, lastDirection, 0, w, host)) {
+        // Only where fold backs pile up: where the one at the wrong end would be tucked, over paper
+        // of other triangles' gadgets or tucks already there. Everywhere, the torus of 5,000
+        // triangles made 674,259 faces rather than 641,752 (more than the default limit) for no
+        // layer fewer: its small hosts have their fold backs apart.
+        if (k < 2 || lastDirection == towardsExit || gadgetOnHost(edges, lastDirection, 0, w, host)
+                || clearOf(gadgetRegion(edges, lastDirection, 0, w), hostOf(i), true)) {
             return null;
         }
         if (smallestAngle(host) < ifold.refine.FacePreparation.TARGET_ANGLE) {
@@ -225,7 +231,7 @@ final class StripFolding {
         onHost.sort((a, b) -> Integer.compare(Math.abs(a - middle), Math.abs(b - middle)));
         List<Integer> chosen = new ArrayList<>();
         for (int j : onHost) {
-            if (chosen.size() < 2 && clearOfGadgets(gadgetRegion(edges, j % 2 == 0 ? d : -d, h - (j + 2) * w, h - j * w), hostOf(i))) {
+            if (chosen.size() < 2 && clearOf(gadgetRegion(edges, j % 2 == 0 ? d : -d, h - (j + 2) * w, h - j * w), hostOf(i), false)) {
                 chosen.add(j);
             }
         }
@@ -241,7 +247,7 @@ final class StripFolding {
         // Where they lie with the passes so shifted.
         for (int j : new int[] {first, second}) {
             if (!gadgetOnHost(edges, j % 2 == 0 ? d : -d, bottom[j + 1], bottom[j] + w, host)
-                    || !clearOfGadgets(gadgetRegion(edges, j % 2 == 0 ? d : -d, bottom[j + 1], bottom[j] + w), hostOf(i))) {
+                    || !clearOf(gadgetRegion(edges, j % 2 == 0 ? d : -d, bottom[j + 1], bottom[j] + w), hostOf(i), false)) {
                 return null;
             }
         }
@@ -263,13 +269,16 @@ final class StripFolding {
         return region;
     }
 
-    /** Whether a region of the host overlaps no face of a turn gadget there (none before the first triangle). */
-    private boolean clearOfGadgets(double[] region, int host) {
+    /**
+     * Whether a region of the host overlaps no face of a turn gadget there, nor ({@code tucked})
+     * any tucked flap (none before the first triangle).
+     */
+    private boolean clearOf(double[] region, int host, boolean tucked) {
         if (sheet == null) {
             return true;
         }
         for (int f : sheet.facesNear(host, region)) {
-            if (sheet.laidAfter(f) == Sheet.Crease.GADGET) {
+            if (sheet.laidAfter(f) == Sheet.Crease.GADGET || tucked && sheet.tucked(f)) {
                 double[] gadget = sheet.placed(f);
                 if (Polygons2.overlap(region, 4, gadget, gadget.length / 2, sheet.tolerance())) {
                     return false;
