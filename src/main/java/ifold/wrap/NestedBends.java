@@ -299,11 +299,20 @@ final class NestedBends {
         }
     }
 
+    /**
+     * How much of their line two bends share, as a share of the tolerance, before one wraps the
+     * other: half a thousandth of a thickness, half the depth from which the collision check
+     * counts contact. At the tolerance's own hundredth of a thickness, two passes of the
+     * 100 × 1 × 1 box overlapping by 2.4e-6 (0.002 T) along one line stood at one rank, their
+     * bends on each other.
+     */
+    private static final double SHARED = 0.05;
+
     /** Whether bend {@code outer} wraps bend {@code inner} of its line: its layers strictly between, overlapping along it. */
     private boolean wraps(int outer, int inner) {
         Bend o = bends.get(outer);
         Bend i = bends.get(inner);
-        return o.low() < i.low() && i.high() < o.high() && Math.min(to[outer], to[inner]) - Math.max(from[outer], from[inner]) > tolerance;
+        return o.low() < i.low() && i.high() < o.high() && Math.min(to[outer], to[inner]) - Math.max(from[outer], from[inner]) > tolerance * SHARED;
     }
 
     /**
