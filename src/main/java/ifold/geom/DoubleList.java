@@ -38,6 +38,20 @@ public final class DoubleList {
         return size;
     }
 
+    /**
+     * The values in one array, the list left empty: its blocks let go as they are copied, so that
+     * a list of millions is not held twice over for longer than the copy.
+     */
+    public double[] drain() {
+        double[] out = new double[size];
+        for (int at = 0; at < size; at += BLOCK) {
+            System.arraycopy(blocks[at >>> SHIFT], 0, out, at, Math.min(BLOCK, size - at));
+            blocks[at >>> SHIFT] = null;
+        }
+        size = 0;
+        return out;
+    }
+
     public double[] toArray() {
         double[] out = new double[size];
         for (int at = 0; at < size; at += BLOCK) {

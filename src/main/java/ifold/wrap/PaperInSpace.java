@@ -118,8 +118,10 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         // The builder's working lists are garbage once it is done, before its vertices are cut
         // to size: on the 5,000-triangle torus they and the two copies were the run's peak.
         Built built = new Builder(sheet, frames).build();
-        return new PaperInSpace(built.xyz().toArray(), built.uv().toArray(), built.paper(), built.hosts(), built.caps(), built.capAfter(),
-                built.creep(), built.pieceStart());
+        // One list at a time, each let go as it is copied: the run's peak held both twice over.
+        double[] xyz = built.xyz().drain();
+        double[] uv = built.uv().drain();
+        return new PaperInSpace(xyz, uv, built.paper(), built.hosts(), built.caps(), built.capAfter(), built.creep(), built.pieceStart());
     }
 
     /** What the builder made, its vertices still in lists. */
