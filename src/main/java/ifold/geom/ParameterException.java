@@ -18,6 +18,17 @@ public final class ParameterException extends IllegalArgumentException {
         this.parameter = parameter;
     }
 
+    /**
+     * A number as a user would have typed it: a whole one without Java's ".0" ({@code --width -1}
+     * was echoed "got -1.0"), any other as Java writes it.
+     */
+    public static String shown(double value) {
+        if (value == Math.rint(value) && Math.abs(value) < 1e15) {
+            return Long.toString((long) value);
+        }
+        return Double.toString(value);
+    }
+
     /** The parameter's name: {@code width}, {@code thickness}, {@code maxFaces}, {@code start}, {@code end}, {@code enterFrom}, {@code angle}, {@code overhang}. */
     public String parameter() {
         return parameter;

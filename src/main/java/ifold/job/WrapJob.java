@@ -206,7 +206,8 @@ public final class WrapJob {
     private static double thickness(Wrap.Options options, double width) {
         double thickness = Double.isNaN(options.thickness()) ? Wrap.defaultThickness(width) : options.thickness();
         if (thickness > width / 4) {
-            throw new ifold.geom.ParameterException("thickness", "must be at most a quarter of the width " + width + ", got " + thickness);
+            throw new ifold.geom.ParameterException("thickness", "must be at most a quarter of the width " + ifold.geom.ParameterException.shown(width)
+                    + ", got " + ifold.geom.ParameterException.shown(thickness));
         }
         return thickness;
     }

@@ -58,16 +58,18 @@ public final class TurnGadget {
                         MIN_ANGLE, MAX_ANGLE, angle));
             }
             if (!(overhang >= 0 && overhang <= MAX_OVERHANG)) {
-                throw new ParameterException("overhang", "must be between 0 and " + (int) MAX_OVERHANG + " strip widths, got " + overhang);
+                throw new ParameterException("overhang", "must be between 0 and " + (int) MAX_OVERHANG + " strip widths, got "
+                        + ParameterException.shown(overhang));
             }
             if (!(width > 0) || !Double.isFinite(width)) {
-                throw new ParameterException("width", "must be a positive number, got " + width);
+                throw new ParameterException("width", "must be a positive number, got " + ParameterException.shown(width));
             }
             if (Double.isNaN(thickness)) {
                 thickness = width / WIDTHS_A_THICKNESS;
             }
             if (!(thickness >= 0) || !Double.isFinite(thickness) || thickness > width / 4) {
-                throw new ParameterException("thickness", "must be zero or more and at most a quarter of the width, got " + thickness);
+                throw new ParameterException("thickness", "must be zero or more and at most a quarter of the width, got "
+                        + ParameterException.shown(thickness));
             }
         }
     }

@@ -122,13 +122,14 @@ public final class Wrap {
 
         public Options {
             if (!Double.isNaN(width) && !(width > 0 && Double.isFinite(width))) {
-                throw new ParameterException("width", "must be a positive number, got " + width);
+                throw new ParameterException("width", "must be a positive number, got " + ParameterException.shown(width));
             }
             if (!Double.isNaN(thickness) && !(thickness >= 0 && Double.isFinite(thickness))) {
-                throw new ParameterException("thickness", "must be zero or more, got " + thickness);
+                throw new ParameterException("thickness", "must be zero or more, got " + ParameterException.shown(thickness));
             }
             if (!Double.isNaN(width) && thickness > width / 4) {
-                throw new ParameterException("thickness", "must be at most a quarter of the width " + width + ", got " + thickness);
+                throw new ParameterException("thickness", "must be at most a quarter of the width " + ParameterException.shown(width) + ", got "
+                        + ParameterException.shown(thickness));
             }
             if (maxFaces < 1) {
                 throw new ParameterException("maxFaces", "must be at least 1, got " + maxFaces);
@@ -155,7 +156,7 @@ public final class Wrap {
             double altitude = shape.height(ends.start());
             double w = Double.isNaN(width) ? altitude / 5 : width;
             if (!(w > 0) || !Double.isFinite(w)) {
-                throw new ParameterException("width", "must be a positive number, got " + w);
+                throw new ParameterException("width", "must be a positive number, got " + ParameterException.shown(w));
             }
             if (w > altitude * LONE_WIDEST) {
                 throw new ParameterException("width", String.format(Locale.ROOT, "%s is wider than the altitude %.4g from the start "
@@ -496,7 +497,8 @@ public final class Wrap {
         }
         double thickness = Double.isNaN(options.thickness()) ? defaultThickness(width) : options.thickness();
         if (thickness > width / 4) {
-            throw new ParameterException("thickness", "must be at most a quarter of the width " + width + ", got " + thickness);
+            throw new ParameterException("thickness", "must be at most a quarter of the width " + ParameterException.shown(width) + ", got "
+                        + ParameterException.shown(thickness));
         }
         if (!Double.isNaN(options.thickness()) && thickness > 0 && thickness < tolerance) {
             // Layers closer than the tolerance are one to every test of the wrap: the caps joining

@@ -176,7 +176,11 @@ class WrapCommandTest {
         Path report = dir.resolve("r.json");
         Path obj = dir.resolve("r.obj");
         String[] outputs = {"--no-view", "--report", report.toString(), "--export-obj", obj.toString()};
-        assertOptionError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--width", "-1"}, outputs)), "--width");
+        CliTest.Run negative = CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--width", "-1"}, outputs));
+        assertOptionError(negative, "--width");
+        // The value as it was typed, not as Java writes a double ("got -1.0").
+        CliTest.assertOneLineError(negative, "--width: must be a positive number, got -1");
+        assertFalse(negative.err().contains("-1.0"), negative.err());
         assertOptionError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--thickness", "-0.1"}, outputs)), "--thickness");
         // NaN stands for the default inside: typed, it is refused rather than taken for it.
         assertOptionError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--width", "NaN"}, outputs)), "--width");
