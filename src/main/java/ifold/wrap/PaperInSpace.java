@@ -115,10 +115,10 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
 
     /** The strip placed in space. */
     public static PaperInSpace of(Sheet sheet, HostFrame[] frames) {
-        // The builder's working lists are garbage once it is done, before its vertices are cut
-        // to size: on the 5,000-triangle torus they and the two copies were the run's peak.
+        // The builder's working lists are garbage once it is done, and its points are copied out
+        // one list at a time, each let go as it is copied: on the 5,000-triangle torus the lists,
+        // the points and their copies held at once were the run's peak.
         Built built = new Builder(sheet, frames).build();
-        // One list at a time, each let go as it is copied: the run's peak held both twice over.
         double[] xyz = built.xyz().drain();
         double[] uv = built.uv().drain();
         return new PaperInSpace(xyz, uv, built.paper(), built.hosts(), built.caps(), built.capAfter(), built.creep(), built.pieceStart());
@@ -141,7 +141,6 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         private final int[] levels;
         private final DoubleList xyz = new DoubleList();
         private final DoubleList uv = new DoubleList();
-        private int vertices;
         /**
          * For each paper vertex, the first space vertex made for it (-1: none); the others (one
          * per layer it is on) follow it by {@link #nextCopy}. Chains through one array rather than
@@ -1364,6 +1363,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         }
 
         private int add(double[] point, double u, double v) {
+            int made = nextCopy.size();
             copyHost.add(-1);
             copyLevel.add(-1);
             nextCopy.add(-1);
@@ -1372,7 +1372,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             xyz.add(point[2]);
             uv.add(u);
             uv.add(v);
-            return vertices++;
+            return made;
         }
     }
 }

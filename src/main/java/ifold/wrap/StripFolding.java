@@ -12,6 +12,7 @@ import static ifold.wrap.Wrap.position;
 import ifold.geom.SlantedEdges;
 import ifold.geom.Tolerance;
 import ifold.mesh.IndexedPolygons;
+import ifold.refine.FacePreparation;
 import ifold.sheet.FoldException;
 import ifold.sheet.HostFrame;
 import ifold.sheet.Isometry2;
@@ -207,7 +208,7 @@ final class StripFolding {
                 || clearOf(gadgetRegion(edges, lastDirection, 0, w), hostOf(i), true)) {
             return null;
         }
-        if (smallestAngle(host) < ifold.refine.FacePreparation.TARGET_ANGLE) {
+        if (smallestAngle(host) < FacePreparation.TARGET_ANGLE) {
             // A true sharp corner of the solid, which no preparation widens: its tucks fold the
             // paper about lines by its convex edges, where nested folds have no room to stand
             // apart, and the turns moved put two of them on one line there (on the shared spike,
@@ -224,14 +225,14 @@ final class StripFolding {
         int middle = (passes - 2) / 2;
         List<Integer> onHost = new ArrayList<>();
         for (int j = 0; j + 1 < passes; j++) {
-            if (gadgetOnHost(edges, j % 2 == 0 ? d : -d, h - (j + 2) * w, h - j * w, host)) {
+            if (gadgetOnHost(edges, turnSide(j, d), h - (j + 2) * w, h - j * w, host)) {
                 onHost.add(j);
             }
         }
         onHost.sort((a, b) -> Integer.compare(Math.abs(a - middle), Math.abs(b - middle)));
         List<Integer> chosen = new ArrayList<>();
         for (int j : onHost) {
-            if (chosen.size() < 2 && clearOf(gadgetRegion(edges, j % 2 == 0 ? d : -d, h - (j + 2) * w, h - j * w), hostOf(i), false)) {
+            if (chosen.size() < 2 && clearOf(gadgetRegion(edges, turnSide(j, d), h - (j + 2) * w, h - j * w), hostOf(i), false)) {
                 chosen.add(j);
             }
         }
@@ -246,8 +247,8 @@ final class StripFolding {
         }
         // Where they lie with the passes so shifted.
         for (int j : new int[] {first, second}) {
-            if (!gadgetOnHost(edges, j % 2 == 0 ? d : -d, bottom[j + 1], bottom[j] + w, host)
-                    || !clearOf(gadgetRegion(edges, j % 2 == 0 ? d : -d, bottom[j + 1], bottom[j] + w), hostOf(i), false)) {
+            if (!gadgetOnHost(edges, turnSide(j, d), bottom[j + 1], bottom[j] + w, host)
+                    || !clearOf(gadgetRegion(edges, turnSide(j, d), bottom[j + 1], bottom[j] + w), hostOf(i), false)) {
                 return null;
             }
         }
@@ -288,6 +289,11 @@ final class StripFolding {
         return true;
     }
 
+    /** The side (+1 along x, -1 against) of the slanted edge that turn j lies beyond, the first pass running in direction d. */
+    private static int turnSide(int j, int d) {
+        return j % 2 == 0 ? d : -d;
+    }
+
     /** Whether a gadget beyond the slanted edge on {@code side}, from height {@code low} to {@code top}, lies on the host. */
     private boolean gadgetOnHost(SlantedEdges edges, int side, double low, double top, double[] host) {
         for (double y : new double[] {Math.max(0, low), top}) {
@@ -314,15 +320,7 @@ final class StripFolding {
         int middle = (k - 2) / 2;
         int best = -1;
         for (int j = 0; j + 1 < k; j++) {
-            int side = (j % 2 == 0) ? d : -d;
-            double top = edges.h() - j * w;
-            double low = Math.max(0, (k - 2 - j) * w);
-            boolean onHost = true;
-            for (double y : new double[] {low, top}) {
-                double x = side > 0 ? edges.right(y) : edges.left(y);
-                double beyond = x + side * (margin + 2 * w);
-                onHost &= insideConvex(host, intoHost.x(beyond, y), intoHost.y(beyond, y));
-            }
+            boolean onHost = gadgetOnHost(edges, turnSide(j, d), (k - 2 - j) * w, edges.h() - j * w, host);
             if (onHost && (best < 0 || Math.abs(j - middle) < Math.abs(best - middle))) {
                 best = j;
             }

@@ -251,7 +251,6 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
                 }
             }
             double[] cells = FaceArrangement.depths(counterClockwise(turned(corners, along)), polygons, sheet.tolerance());
-            // The point back in the host's frame.
             // The point and the deepest cell's corners back in the host's frame.
             figures[t] = new double[cells.length];
             System.arraycopy(cells, 0, figures[t], 0, 3);
