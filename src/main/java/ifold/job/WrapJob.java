@@ -8,6 +8,7 @@ import ifold.refine.HamiltonianRefinement;
 import ifold.wrap.HingeStrip;
 import ifold.wrap.HingeTour;
 import ifold.wrap.PlacedWrap;
+import ifold.wrap.Seam;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapAnalysis;
 import ifold.wrap.PaperInSpace;
@@ -131,6 +132,7 @@ public final class WrapJob {
         WrapPath path;
         long refinedAt;
         Wrap.Result result;
+        Seam.Chosen seam = null;
         if (request.method() == Wrap.Method.HINGE) {
             watcher.stage("finding the squares of " + mesh.faceCount() + " triangles");
             path = hingePath(model, mesh, request.options());
@@ -147,26 +149,39 @@ public final class WrapJob {
             }
             stopIfAsked(watcher);
             refinedAt = System.nanoTime();
-            watcher.stage("wrapping " + path.refinement().mesh().faceCount() + " triangles");
-            result = Wrap.wrap(path.refinement(), request.options(), watcher);
+            int tries = Seam.tries(path.refinement());
+            watcher.stage("wrapping " + path.refinement().mesh().faceCount() + " triangles"
+                    + (tries > 1 ? ", begun at " + tries + " places round the path" : ""));
+            seam = Seam.wrap(path.refinement(), request.options(), watcher);
+            path = new WrapPath(path.preparation(), seam.refinement(), path.prepared());
+            result = seam.result();
         }
         long wrappedAt = System.nanoTime();
         stopIfAsked(watcher);
         watcher.stage("analysing");
-        PlacedWrap placed = PlacedWrap.of(result);
+        // The seam's tries each took their measures already: the one kept has its own.
+        PlacedWrap placed = seam != null ? seam.placed() : PlacedWrap.of(result);
         WrapAnalysis analysis = placed.analysis();
         String stretched = Reports.stretched(analysis);
         if (stretched != null) {
             throw new Refused(stretched);
         }
         Map<String, Object> figures = Reports.wrap(model.toString(), mesh.faceCount(), loaded.repairs(), path, result, analysis);
+        if (seam != null && !seam.layersTried().isEmpty()) {
+            Map<String, Object> begun = new java.util.LinkedHashMap<>();
+            begun.put("along", seam.along());
+            begun.put("layersTried", seam.layersTried());
+            figures.put("seam", begun);
+        }
         if (NearOrigin.moved(movedBy)) {
             figures.put("movedBy", List.of(movedBy[0], movedBy[1], movedBy[2]));
         }
         long analysedAt = System.nanoTime();
+        // The kept start's paper was placed and measured as it was tried: its time is the analysis's.
+        double measured = seam != null ? seam.measureSeconds() : 0;
         return new Outcome(loaded, mesh, movedBy, path, result, placed.geometries(), analysis, figures,
-                new Seconds((loadedAt - started) * 1e-9, (refinedAt - loadedAt) * 1e-9, (wrappedAt - refinedAt) * 1e-9,
-                        (analysedAt - wrappedAt) * 1e-9));
+                new Seconds((loadedAt - started) * 1e-9, (refinedAt - loadedAt) * 1e-9, (wrappedAt - refinedAt) * 1e-9 - measured,
+                        (analysedAt - wrappedAt) * 1e-9 + measured));
     }
 
     /**

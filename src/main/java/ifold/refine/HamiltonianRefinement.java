@@ -41,6 +41,41 @@ public final class HamiltonianRefinement {
         public int componentCount() {
             return componentStart.length - 1;
         }
+
+        /**
+         * Whether component c's path is a cycle: its last triangle shares an edge with its first
+         * (the walk round the tree ends where it began), so that a strip may begin anywhere on it.
+         */
+        public boolean cyclic(int c) {
+            int first = componentStart[c];
+            int last = componentStart[c + 1] - 1;
+            if (last - first < 2) {
+                return false;
+            }
+            int shared = 0;
+            for (int i = 0; i < 3; i++) {
+                for (int j = 0; j < 3; j++) {
+                    shared += mesh.faceVertex(first, i) == mesh.faceVertex(last, j) ? 1 : 0;
+                }
+            }
+            return shared == 2;
+        }
+
+        /**
+         * The same refinement with each cyclic component's path begun {@code along} of the way
+         * round it (0 to 1: the nearest triangle), its other components as they are.
+         */
+        public Result begunAt(double along) {
+            if (!(along >= 0 && along < 1)) {
+                throw new IllegalArgumentException("a path is begun from 0 to 1 of the way round it, not " + along);
+            }
+            int[] shift = new int[componentCount()];
+            for (int c = 0; c < shift.length; c++) {
+                int length = componentStart[c + 1] - componentStart[c];
+                shift[c] = cyclic(c) ? (int) (Math.round(along * length) % length) : 0;
+            }
+            return new Result(mesh.rotated(componentStart, shift), componentStart, treeEdge);
+        }
     }
 
     /**

@@ -38,6 +38,23 @@ public final class RefinedMesh implements IndexedPolygons {
         this.treeEdges = treeEdges;
     }
 
+    /**
+     * The same triangles with each component's path begun {@code shift[c]} triangles later and
+     * going on round to where it began: a path whose first and last triangles share an edge
+     * is a cycle, and may begin anywhere on it.
+     */
+    RefinedMesh rotated(int[] componentStart, int[] shift) {
+        int[] turned = new int[path.length];
+        for (int c = 0; c + 1 < componentStart.length; c++) {
+            int from = componentStart[c];
+            int length = componentStart[c + 1] - from;
+            for (int i = 0; i < length; i++) {
+                turned[from + i] = path[from + Math.floorMod(i + shift[c], length)];
+            }
+        }
+        return new RefinedMesh(original, turned, incentres, treeEdges);
+    }
+
     /** The mesh that was refined; its vertices are the first vertices of this one. */
     public HalfedgeMesh original() {
         return original;

@@ -207,9 +207,10 @@ class PrintCommandTest {
         Path pdf = dir.resolve("cube-steps.pdf");
         CliTest.Run run = CliTest.run("wrap", "models/cube.off", "--no-view", "--export-diagrams", pdf.toString());
         assertEquals(0, run.code(), run.err());
-        // The first triangle fold by fold (14 panels), then the 57 others a panel each; the list of
-        // steps on the title page and one more.
-        assertTrue(run.out().contains("wrote " + pdf + ": 14 pages, 71 steps"), run.out());
+        // The first triangle fold by fold (20 panels: the strip begins half way round the path,
+        // where the cube has fewest layers), then the 57 others a panel each; the list of steps on
+        // the title page and one more.
+        assertTrue(run.out().contains("wrote " + pdf + ": 15 pages, 77 steps"), run.out());
         assertTrue(Files.size(pdf) < 5_000_000, "the paper outside each panel left out: " + Files.size(pdf) + " bytes");
         if (!tool("pdftotext")) {
             return;
@@ -217,12 +218,12 @@ class PrintCommandTest {
         Path text = dir.resolve("cube-steps.txt");
         assertEquals(0, new ProcessBuilder("pdftotext", "-f", "3", "-l", "3", pdf.toString(), text.toString()).start().waitFor());
         String words = Files.readString(text).replaceAll("\\s+", " ");
-        assertTrue(words.contains("triangle 1 of 58: pass 1 of 5: turn, 45° valley fold (fold 1 of 14)"), words);
+        assertTrue(words.contains("triangle 1 of 58: pass 1 of 9: turn, 45° valley fold (fold 1 of 20)"), words);
         Path later = dir.resolve("cube-later.txt");
-        assertEquals(0, new ProcessBuilder("pdftotext", "-f", "5", "-l", "5", pdf.toString(), later.toString()).start().waitFor());
+        assertEquals(0, new ProcessBuilder("pdftotext", "-f", "6", "-l", "6", pdf.toString(), later.toString()).start().waitFor());
         words = Files.readString(later).replaceAll("\\s+", " ");
-        // Its panel says which printed creases it makes: those after the first triangle's 14.
-        assertTrue(words.contains("triangle 2 of 58: 4 turn folds, 2 gadget folds (creases 15–20 on the print)"), words);
+        // Its panel says which printed creases it makes: those after the first triangle's 20.
+        assertTrue(words.contains("triangle 2 of 58: 20 turn folds, 6 gadget folds (creases 21–46 on the print)"), words);
     }
 
     /** The pixels of a valley's blue (or a mountain's red) in a panel of the top row, from x0 to x1 mm across, at {@code dpi}. */

@@ -95,6 +95,50 @@ class HamiltonianRefinementTest {
         assertEquals(12 + 20 + 19, result.mesh().vertexCount());
     }
 
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("solids")
+    void everyPathIsACycleAndMayBeginAnywhereOnIt(String name, PolygonSoup soup, int expectedTriangles) {
+        HalfedgeMesh mesh = triangles(soup);
+        HamiltonianRefinement.Result result = HamiltonianRefinement.refine(mesh);
+        int n = result.mesh().faceCount();
+        assertTrue(result.cyclic(0), name + ": the walk round the tree ends beside where it began");
+        for (double along : new double[] {0.25, 0.5, 0.75}) {
+            HamiltonianRefinement.Result begun = result.begunAt(along);
+            assertEquals(List.of(), RefinementClaims.violations(mesh, begun), name + " begun at " + along);
+            int shift = (int) (Math.round(along * n) % n);
+            for (int t = 0; t < n; t++) {
+                for (int k = 0; k < 3; k++) {
+                    assertEquals(result.mesh().faceVertex((t + shift) % n, k), begun.mesh().faceVertex(t, k));
+                }
+                assertEquals(result.mesh().parentFace((t + shift) % n), begun.mesh().parentFace(t));
+            }
+        }
+    }
+
+    @Test
+    void eachComponentBeginsAnewOnItsOwnCycle() {
+        PolygonSoup two = Solids.tetrahedron();
+        PolygonSoup other = Solids.octahedron();
+        int offset = two.vertexCount();
+        for (int v = 0; v < other.vertexCount(); v++) {
+            two.addVertex(other.coordinate(v, 0) + 5, other.coordinate(v, 1), other.coordinate(v, 2));
+        }
+        for (int f = 0; f < other.faceCount(); f++) {
+            two.addTriangle(offset + other.faceVertex(f, 0), offset + other.faceVertex(f, 1), offset + other.faceVertex(f, 2));
+        }
+        HalfedgeMesh mesh = triangles(two);
+        HamiltonianRefinement.Result result = HamiltonianRefinement.refine(mesh);
+        HamiltonianRefinement.Result begun = result.begunAt(0.5);
+        assertEquals(List.of(), RefinementClaims.violations(mesh, begun));
+        // The tetrahedron's 18 begin at its 9th, the octahedron's 38 at its 19th: neither runs into the other.
+        assertEquals(result.mesh().parentFace(9), begun.mesh().parentFace(0));
+        assertEquals(result.mesh().parentFace(18 + 19), begun.mesh().parentFace(18));
+        assertEquals(result.mesh().parentFace(17), begun.mesh().parentFace(8));
+        assertThrows(IllegalArgumentException.class, () -> result.begunAt(1));
+        assertThrows(IllegalArgumentException.class, () -> result.begunAt(-0.25));
+        assertThrows(IllegalArgumentException.class, () -> result.begunAt(Double.NaN));
+    }
+
     @Test
     void eachComponentGetsItsOwnPath() {
         PolygonSoup two = Solids.tetrahedron();

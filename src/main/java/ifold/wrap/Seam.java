@@ -1,0 +1,116 @@
+package ifold.wrap;
+
+import ifold.refine.HamiltonianRefinement;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Where each strip begins and ends: the seam of a wrap.
+ *
+ * <p>The walk round the refinement's spanning tree ends where it began, so each component's path
+ * is a cycle, and its strip may begin at any triangle of it and run round to the one before.
+ * Where the strip begins its excess is tucked beside the last triangle's, and the sequence of
+ * tucks and turns after it follows from where that is: the most layers over a point moves with
+ * the seam, and by no rule seen on the triangles there (the shared {@code square_frame}'s 158
+ * starts give 24 or 25 in long runs along the path, 27 and 28 at four, with the seam's own
+ * triangles alike on both). So a short path is wrapped from a few places round it, a quarter
+ * of the way apart, and the wrap with the fewest layers is kept, the first tried where several
+ * tie: the refinement's own start is tried first. A long path is wrapped once: its layers are
+ * set far from the seam, by the triangles of its most crowded corner, and each try costs as
+ * much as the wrap.
+ */
+public final class Seam {
+    /** Paths of more triangles than this are wrapped from the refinement's own start alone. */
+    public static final int MOST_TRIANGLES = 1_000;
+
+    /** Where round each cyclic path the strip is tried beginning, as a share of the way round. */
+    static final double[] TRIED = {0, 0.25, 0.5, 0.75};
+
+    private Seam() {
+    }
+
+    /**
+     * A wrap begun where it has fewest layers.
+     *
+     * @param refinement the path wrapped: the refinement begun at {@code along}
+     * @param result the wrap along it
+     * @param placed its paper in space and its measures
+     * @param along where round the path it begins, from 0 (the refinement's own start) to 1
+     * @param layersTried the most layers of each start tried, in the order of {@link #TRIED}
+     *     (empty where one alone was)
+     * @param measureSeconds how long placing and measuring the wrap kept took (the other tries' count as wrapping)
+     */
+    public record Chosen(HamiltonianRefinement.Result refinement, Wrap.Result result, PlacedWrap placed, double along,
+            List<Integer> layersTried, double measureSeconds) {
+    }
+
+    /**
+     * Wraps the refinement from where it has fewest layers: from each start of {@link #TRIED}
+     * where the path is a cycle of at most {@link #MOST_TRIANGLES} triangles, else from its own.
+     * A start whose wrap fails (too many faces, a triangle the tucks cannot finish) is passed
+     * over, unless it is the first: its failure is the wrap's.
+     *
+     * @throws Wrap.WrapException as {@link Wrap#wrap(HamiltonianRefinement.Result, Wrap.Options, Wrap.Watcher)}, from the refinement's own start
+     */
+    public static Chosen wrap(HamiltonianRefinement.Result refinement, Wrap.Options options, Wrap.Watcher watcher) throws Wrap.WrapException {
+        int tries = tries(refinement);
+        Chosen best = null;
+        List<Integer> layers = new ArrayList<>();
+        for (int k = 0; k < tries; k++) {
+            HamiltonianRefinement.Result begun = k == 0 ? refinement : refinement.begunAt(TRIED[k]);
+            Wrap.Result result;
+            try {
+                result = Wrap.wrap(begun, options, share(watcher, k, tries));
+            } catch (Wrap.WrapException e) {
+                if (k == 0) {
+                    throw e;
+                }
+                continue;
+            }
+            long measuring = System.nanoTime();
+            PlacedWrap placed = PlacedWrap.of(result);
+            double seconds = (System.nanoTime() - measuring) * 1e-9;
+            int most = placed.analysis().maxLayers();
+            layers.add(most);
+            if (best == null || most < best.placed().analysis().maxLayers()) {
+                best = new Chosen(begun, result, placed, TRIED[k], null, seconds);
+            }
+        }
+        return new Chosen(best.refinement(), best.result(), best.placed(), best.along(), tries > 1 ? List.copyOf(layers) : List.of(),
+                best.measureSeconds());
+    }
+
+    /** How many starts are tried: all of {@link #TRIED} for a short path with a cyclic component, else one. */
+    public static int tries(HamiltonianRefinement.Result refinement) {
+        if (refinement.mesh().faceCount() > MOST_TRIANGLES) {
+            return 1;
+        }
+        for (int c = 0; c < refinement.componentCount(); c++) {
+            if (refinement.cyclic(c)) {
+                return TRIED.length;
+            }
+        }
+        return 1;
+    }
+
+    /**
+     * The watcher of try k of {@code tries}: its progress a share of the whole, in turn, counted
+     * out of the path's triangles still (a window says "of 58 triangles" of the cube's 58).
+     */
+    private static Wrap.Watcher share(Wrap.Watcher watcher, int k, int tries) {
+        if (tries == 1) {
+            return watcher;
+        }
+        return new Wrap.Watcher() {
+            @Override
+            public void wrapped(int done, int total) {
+                watcher.wrapped((int) (((long) k * total + done) / tries), total);
+            }
+
+            @Override
+            public boolean stopped() {
+                return watcher.stopped();
+            }
+        };
+    }
+}
