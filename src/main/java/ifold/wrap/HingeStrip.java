@@ -65,8 +65,8 @@ public final class HingeStrip {
             }
         }
         if (faces > maxFaces) {
-            throw new Wrap.FaceLimitException(String.format(Locale.ROOT, "the hinge strip passes %d times through %d squares and "
-                    + "makes %d faces of paper, more than the limit of %d", tour.passes(), squares.count(), faces,
+            throw new Wrap.FaceLimitException(String.format(Locale.ROOT, "the hinge strip passes %,d times through %,d squares and "
+                    + "makes %,d faces of paper, more than the limit of %d", tour.passes(), squares.count(), faces,
                     maxFaces));
         }
         double tolerance = Tolerance.ON_PLANE * Wrap.modelSize(layout.mesh);

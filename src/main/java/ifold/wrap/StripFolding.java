@@ -629,9 +629,9 @@ final class StripFolding {
             }
             long whole = (long) Math.ceil(sheet.faceCount() * all / done);
             long enough = (long) Math.ceil(whole * 1.1 / 1000) * 1000; // a tenth to spare, in thousands
-            throw new FaceLimitException(String.format(Locale.ROOT, "the strip has %d faces of paper on triangle %d of %d on the "
-                    + "path (%s), more than the limit of %d faces; at this rate the whole path makes about %d, and a limit "
-                    + "of %d (about %d MiB) would likely let it finish", sheet.faceCount(), pathIndex + 1, plan.m,
+            throw new FaceLimitException(String.format(Locale.ROOT, "the strip has %,d faces of paper on triangle %d of %d on the "
+                    + "path (%s), more than the limit of %d faces; at this rate the whole path makes about %,d, and a limit "
+                    + "of %d (about %,d MiB) would likely let it finish", sheet.faceCount(), pathIndex + 1, plan.m,
                     cornersText(mesh, plan.first + pathIndex), maxFaces, whole, enough, enough * BYTES_PER_FACE >> 20));
         }
     }

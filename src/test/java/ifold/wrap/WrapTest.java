@@ -476,15 +476,15 @@ public class WrapTest {
         Wrap.wrap(refinement, options.withMaxFaces(faces)); // exactly enough
         Wrap.FaceLimitException during = assertThrows(Wrap.FaceLimitException.class,
                 () -> Wrap.wrap(refinement, options.withMaxFaces(faces - 1)));
-        assertTrue(during.getMessage().matches("the strip has " + faces + " faces of paper on triangle \\d+ of 58 .*more than the "
+        assertTrue(during.getMessage().matches("the strip has " + String.format(java.util.Locale.ROOT, "%,d", faces) + " faces of paper on triangle \\d+ of 58 .*more than the "
                 + "limit of " + (faces - 1) + " faces; at this rate .*"), during.getMessage());
         // Stopped part way, it says about how many the whole makes, and a limit that lets it finish does.
         Wrap.FaceLimitException half = assertThrows(Wrap.FaceLimitException.class,
                 () -> Wrap.wrap(refinement, options.withMaxFaces(7 * faces / 10)));
-        java.util.regex.Matcher said = java.util.regex.Pattern.compile("the whole path makes about (\\d+), and a limit of (\\d+) \\(about \\d+ MiB\\) "
+        java.util.regex.Matcher said = java.util.regex.Pattern.compile("the whole path makes about ([\\d,]+), and a limit of (\\d+) \\(about \\d+ MiB\\) "
                 + "would likely let it finish").matcher(half.getMessage());
         assertTrue(said.find(), half.getMessage());
-        long estimate = Long.parseLong(said.group(1));
+        long estimate = Long.parseLong(said.group(1).replace(",", ""));
         assertTrue(Math.abs(estimate - faces) < 0.3 * faces, "about " + estimate + " of " + faces);
         Wrap.wrap(refinement, options.withMaxFaces(Math.max(faces, Integer.parseInt(said.group(2)))));
         Wrap.FaceLimitException before = assertThrows(Wrap.FaceLimitException.class,
