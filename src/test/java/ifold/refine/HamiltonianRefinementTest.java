@@ -115,8 +115,8 @@ class HamiltonianRefinementTest {
         }
     }
 
-    @Test
-    void eachComponentBeginsAnewOnItsOwnCycle() {
+    /** Two components: a tetrahedron, and an octahedron 5 along x from it. */
+    private static PolygonSoup tetrahedronBesideOctahedron() {
         PolygonSoup two = Solids.tetrahedron();
         PolygonSoup other = Solids.octahedron();
         int offset = two.vertexCount();
@@ -126,7 +126,12 @@ class HamiltonianRefinementTest {
         for (int f = 0; f < other.faceCount(); f++) {
             two.addTriangle(offset + other.faceVertex(f, 0), offset + other.faceVertex(f, 1), offset + other.faceVertex(f, 2));
         }
-        HalfedgeMesh mesh = triangles(two);
+        return two;
+    }
+
+    @Test
+    void eachComponentBeginsAnewOnItsOwnCycle() {
+        HalfedgeMesh mesh = triangles(tetrahedronBesideOctahedron());
         HamiltonianRefinement.Result result = HamiltonianRefinement.refine(mesh);
         HamiltonianRefinement.Result begun = result.begunAt(0.5);
         assertEquals(List.of(), RefinementClaims.violations(mesh, begun));
@@ -141,16 +146,7 @@ class HamiltonianRefinementTest {
 
     @Test
     void eachComponentGetsItsOwnPath() {
-        PolygonSoup two = Solids.tetrahedron();
-        PolygonSoup other = Solids.octahedron();
-        int offset = two.vertexCount();
-        for (int v = 0; v < other.vertexCount(); v++) {
-            two.addVertex(other.coordinate(v, 0) + 5, other.coordinate(v, 1), other.coordinate(v, 2));
-        }
-        for (int f = 0; f < other.faceCount(); f++) {
-            two.addTriangle(offset + other.faceVertex(f, 0), offset + other.faceVertex(f, 1), offset + other.faceVertex(f, 2));
-        }
-        HalfedgeMesh mesh = triangles(two);
+        HalfedgeMesh mesh = triangles(tetrahedronBesideOctahedron());
         HamiltonianRefinement.Result result = HamiltonianRefinement.refine(mesh);
         assertEquals(2, result.componentCount());
         assertEquals(5 * 12 - 4, result.mesh().faceCount());
