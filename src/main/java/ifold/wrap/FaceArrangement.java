@@ -54,6 +54,8 @@ final class FaceArrangement {
             for (int k = 0; k < found; k++) {
                 int cell = cells.found(k);
                 double[] rest = cells.polygon(cell);
+                double[] boxes = cells.boxes();
+                int at = 4 * cell;
                 int d = cells.depth(cell);
                 int bucket = cells.bucket(cell);
                 boolean cut = false;
@@ -72,6 +74,21 @@ final class FaceArrangement {
                     double nx = -(by - ay) / length;
                     double ny = (bx - ax) / length;
                     double c = nx * ax + ny * ay;
+                    // The cell's box first, while the cell is whole: a box more than the
+                    // tolerance inside the edge holds a cell that is too, a box more than it
+                    // outside one that is outside (the same answers as its corners give).
+                    if (!cut) {
+                        double boxLeast = nx * boxes[nx > 0 ? at : at + 2] + ny * boxes[ny > 0 ? at + 1 : at + 3] - c;
+                        if (boxLeast > tolerance) {
+                            continue; // inside this edge
+                        }
+                        double boxMost = nx * boxes[nx > 0 ? at + 2 : at] + ny * boxes[ny > 0 ? at + 3 : at + 1] - c;
+                        if (boxMost < -tolerance) {
+                            outside = true; // the cell outside the face, whole
+                            rest = null;
+                            break;
+                        }
+                    }
                     // Most cells lie wholly on one side of most edges: those are not clipped.
                     double least = Double.POSITIVE_INFINITY;
                     double most = Double.NEGATIVE_INFINITY;
@@ -281,6 +298,11 @@ final class FaceArrangement {
 
         double[] polygon(int id) {
             return polygons[id];
+        }
+
+        /** The cells' bounding boxes, min x, min y, max x, max y from 4 × a cell's id (the array as it is: adding cells may replace it). */
+        double[] boxes() {
+            return boxes;
         }
 
         int depth(int id) {
