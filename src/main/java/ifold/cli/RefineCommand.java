@@ -45,7 +45,8 @@ final class RefineCommand implements Callable<Integer> {
     boolean strict;
 
     @Option(names = "--prepare", description = "first triangulate again the faces whose triangles have an angle under "
-            + FacePreparation.TARGET_ANGLE + " degrees, as ifold wrap does: the refinement is then the path the wrap follows")
+            + FacePreparation.TARGET_ANGLE + " degrees, as ifold wrap does: the refinement is then the path the wrap follows (a cycle, which the wrap may begin "
+            + "at another of its triangles)")
     boolean prepare;
 
     @Override

@@ -20,7 +20,7 @@ import java.util.List;
  * much as the wrap.
  */
 public final class Seam {
-    /** Paths of more triangles than this are wrapped from the refinement's own start alone. */
+    /** Refinements of more triangles than this, all their components' together, are wrapped from their own start alone. */
     public static final int MOST_TRIANGLES = 1_000;
 
     /** Where round each cyclic path the strip is tried beginning, as a share of the way round. */
@@ -36,8 +36,8 @@ public final class Seam {
      * @param result the wrap along it
      * @param placed its paper in space and its measures
      * @param along where round the path it begins, from 0 (the refinement's own start) to 1
-     * @param layersTried the most layers of each start tried, in the order of {@link #TRIED}
-     *     (empty where one alone was)
+     * @param layersTried the most layers of each start tried, in the order of {@link #TRIED}, null
+     *     for a start whose wrap failed (empty where one alone was tried)
      * @param measureSeconds how long placing and measuring the wrap kept took (the other tries' count as wrapping)
      */
     public record Chosen(HamiltonianRefinement.Result refinement, Wrap.Result result, PlacedWrap placed, double along,
@@ -46,7 +46,10 @@ public final class Seam {
 
     /**
      * Wraps the refinement from where it has fewest layers: from each start of {@link #TRIED}
-     * where the path is a cycle of at most {@link #MOST_TRIANGLES} triangles, else from its own.
+     * where its paths have at most {@link #MOST_TRIANGLES} triangles in all and one is a cycle,
+     * else from its own. Every cyclic component begins the same share of the way round its path:
+     * one wrap's layers are its deepest strip's, and a start for each component would take a
+     * wrap more to put together.
      * A start whose wrap fails (too many faces, a triangle the tucks cannot finish) is passed
      * over, unless it is the first: its failure is the wrap's.
      *
@@ -65,6 +68,7 @@ public final class Seam {
                 if (k == 0) {
                     throw e;
                 }
+                layers.add(null); // kept in its place: the report lists the starts in order
                 continue;
             }
             long measuring = System.nanoTime();
@@ -76,7 +80,8 @@ public final class Seam {
                 best = new Chosen(begun, result, placed, TRIED[k], null, seconds);
             }
         }
-        return new Chosen(best.refinement(), best.result(), best.placed(), best.along(), tries > 1 ? List.copyOf(layers) : List.of(),
+        return new Chosen(best.refinement(), best.result(), best.placed(), best.along(),
+                tries > 1 ? java.util.Collections.unmodifiableList(layers) : List.of(),
                 best.measureSeconds());
     }
 

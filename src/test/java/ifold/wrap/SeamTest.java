@@ -73,6 +73,34 @@ class SeamTest {
     }
 
     @Test
+    void aStartPastTheLimitOfFacesIsPassedOverInItsPlace() throws Exception {
+        HamiltonianRefinement.Result refinement = ifold.job.WrapPath.of(mesh(Solids.cube())).refinement();
+        // Each start's faces and layers alone; the limit then the first start's faces, which some others pass.
+        int[] faces = new int[Seam.TRIED.length];
+        int[] layers = new int[Seam.TRIED.length];
+        for (int k = 0; k < Seam.TRIED.length; k++) {
+            Wrap.Result alone = Wrap.wrap(k == 0 ? refinement : refinement.begunAt(Seam.TRIED[k]), DEFAULTS);
+            faces[k] = alone.strips().get(0).sheet().faceCount();
+            layers[k] = PlacedWrap.of(alone).analysis().maxLayers();
+        }
+        int limit = faces[0];
+        List<Integer> expected = new ArrayList<>();
+        for (int k = 0; k < Seam.TRIED.length; k++) {
+            expected.add(faces[k] <= limit ? layers[k] : null);
+        }
+        assertTrue(expected.contains(null), "some start makes more faces than the first: " + java.util.Arrays.toString(faces));
+        Seam.Chosen chosen = Seam.wrap(refinement, DEFAULTS.withMaxFaces(limit), Wrap.Watcher.NONE);
+        assertEquals(expected, chosen.layersTried(), "each start in its place, null where it failed");
+        int fewest = expected.stream().filter(java.util.Objects::nonNull).min(Integer::compare).orElseThrow();
+        assertEquals(fewest, chosen.placed().analysis().maxLayers());
+        assertEquals(Seam.TRIED[expected.indexOf(fewest)], chosen.along());
+        // The first start failing is the wrap failing: its message, as a wrap from it alone gives.
+        Wrap.WrapException first = org.junit.jupiter.api.Assertions.assertThrows(Wrap.WrapException.class,
+                () -> Seam.wrap(refinement, DEFAULTS.withMaxFaces(limit - 1), Wrap.Watcher.NONE));
+        assertTrue(first.getMessage().contains("more than the limit of " + (limit - 1) + " faces"), first.getMessage());
+    }
+
+    @Test
     void progressRunsOnceThroughEveryStartTried() throws Exception {
         HamiltonianRefinement.Result refinement = ifold.job.WrapPath.of(mesh(Solids.octahedron())).refinement();
         List<int[]> told = new ArrayList<>();
