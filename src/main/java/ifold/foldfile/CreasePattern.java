@@ -270,7 +270,7 @@ public record CreasePattern(double length, double width, FoldScript script, List
         if (lines.size() + 1L > maxFaces) {
             // Each line is folded across the whole sheet and cuts it once at least: known before
             // any fold (10,000 parallel creases were refused at the last, after half a minute).
-            throw new Refused(String.format(Locale.ROOT, "its %d crease lines cut the paper into at least %d faces, more than the %d"
+            throw new Refused(String.format(Locale.ROOT, "its %,d crease lines cut the paper into at least %,d faces, more than the %d"
                     + " allowed (--max-faces raises the limit)", lines.size(), lines.size() + 1, maxFaces));
         }
         boolean[] turned = new boolean[lines.size()];

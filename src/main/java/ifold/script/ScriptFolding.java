@@ -216,7 +216,7 @@ public final class ScriptFolding {
             hanging(moving, host, from2, to2);
         }
         if (sheet.faceCount() > maxFaces) {
-            throw new FoldException(String.format(Locale.ROOT, "it cuts the paper into %d faces, more than the %d allowed"
+            throw new FoldException(String.format(Locale.ROOT, "it cuts the paper into %,d faces, more than the %d allowed"
                     + " (each fold through every layer can double them; --max-faces raises the limit)", sheet.faceCount(), maxFaces));
         }
         if (moving.isEmpty()) {
