@@ -15,9 +15,9 @@ import java.util.List;
  * starts give 24 or 25 in long runs along the path, 27 and 28 at four, with the seam's own
  * triangles alike on both). So a short path is wrapped from a few places round it, a quarter
  * of the way apart, and the wrap with the fewest layers is kept, the first tried where several
- * tie: the refinement's own start is tried first. A long path is wrapped once: its layers are
- * set far from the seam, by the triangles of its most crowded corner, and each try costs as
- * much as the wrap.
+ * tie: the refinement's own start is tried first. A long path is wrapped once: each try would
+ * cost as much as the wrap, and with thousands of triangles its most layers are the more likely
+ * to lie at a crowded corner far from where it begins.
  */
 public final class Seam {
     /** Refinements of more triangles than this, all their components' together, are wrapped from their own start alone. */
