@@ -50,6 +50,8 @@ final class ProgressBar implements FrameSink.Progress {
         private final LongSupplier clock;
         private final long start;
         private int lastFilled = -1;
+        /** The width of the last line drawn, bar or stage, which {@link #wipe()} clears; 0 for none. */
+        private int drawn;
 
         private WrapBar(PrintWriter out, boolean terminal, LongSupplier clock) {
             this.out = out;
@@ -65,8 +67,27 @@ final class ProgressBar implements FrameSink.Progress {
                 return;
             }
             lastFilled = filled;
-            out.printf(Locale.ROOT, "\r[%s%s] %d/%d triangles wrapped", "#".repeat(filled), " ".repeat(WIDTH - filled), done, total);
+            String line = String.format(Locale.ROOT, "[%s%s] %d/%d triangles wrapped", "#".repeat(filled), " ".repeat(WIDTH - filled), done, total);
+            draw(line);
+        }
+
+        /**
+         * A stage after the folds (placing and measuring the paper, checking it, writing the
+         * files), in place of the bar, once the run has taken {@link #LONG_WRAP_SECONDS}: after
+         * the bar a big model's wrap would otherwise sit silent for as long again.
+         */
+        void stage(String what) {
+            if (!terminal || clock.getAsLong() - start < LONG_WRAP_SECONDS * 1_000_000_000L) {
+                return;
+            }
+            draw(what + " ...");
+        }
+
+        private void draw(String line) {
+            // Spaces over what is left of a longer line before.
+            out.print("\r" + line + " ".repeat(Math.max(0, drawn - line.length())));
             out.flush();
+            drawn = line.length();
         }
 
         @Override
@@ -75,9 +96,10 @@ final class ProgressBar implements FrameSink.Progress {
         }
 
         void wipe() {
-            if (lastFilled >= 0) {
-                out.print("\r" + " ".repeat(WIDTH + 40) + "\r");
+            if (drawn > 0) {
+                out.print("\r" + " ".repeat(Math.max(WIDTH + 40, drawn)) + "\r");
                 out.flush();
+                drawn = 0;
             }
         }
     }

@@ -129,7 +129,13 @@ final class WrapCommand implements Callable<Integer> {
                 }
 
                 @Override
+                public void stage(String what) {
+                    bar.stage(what);
+                }
+
+                @Override
                 public void note(String line) {
+                    bar.wipe();
                     err.println("ifold: " + line);
                     err.flush();
                 }
@@ -152,12 +158,15 @@ final class WrapCommand implements Callable<Integer> {
         long analysedAt = System.nanoTime();
         List<Path> written = new ArrayList<>();
         try {
+            // Each stage in place of the bar where the run is long: a big model's checks take as long as its folds.
             if (exportObj != null) {
+                bar.stage("writing " + exportObj.getFileName());
                 WrapExport.writeObj(exportObj, WrapExport.aboutCentre(model.toString(), wrapped.movedBy()), result, geometries);
                 written.add(exportObj);
                 outputs.wrote(exportObj);
             }
             if (outputs.exportMesh != null) {
+                bar.stage("writing " + outputs.exportMesh.getFileName());
                 MeshWriters.write(WrapExport.paperMesh(geometries), outputs.exportMesh);
                 written.add(outputs.exportMesh);
                 outputs.wrote(outputs.exportMesh);
@@ -165,6 +174,9 @@ final class WrapCommand implements Callable<Integer> {
             List<FoldFile.Folded> sheets = new ArrayList<>();
             for (Wrap.Strip strip : result.strips()) {
                 sheets.add(new FoldFile.Folded(strip.sheet(), result.frames()));
+            }
+            if (outputs.checksLayerOrder()) {
+                bar.stage("checking the layer order");
             }
             outputs.exportFold(sheets, "ifold wrap " + model, figures);
             if (outputs.exportFold != null) {
@@ -174,6 +186,9 @@ final class WrapCommand implements Callable<Integer> {
                     + result.strips().size() + (result.strips().size() == 1 ? " strip" : " strips"));
             diagrams.write(outputs, model.getFileName().toString(), PrintJob.wrap(result.method()), in -> Scenes.wrap(in, mesh, result, geometries));
             long exportedAt = System.nanoTime();
+            if (exportObj != null || outputs.exportMesh != null || report != null) {
+                bar.stage("checking the paper for collisions");
+            }
             outputs.checkCollisions(geometries, result.thickness(), mesh, figures);
             long writtenAt = System.nanoTime();
             Map<String, Object> seconds = new LinkedHashMap<>();
@@ -193,6 +208,8 @@ final class WrapCommand implements Callable<Integer> {
             }
         } catch (IOException e) {
             throw new UserError("cannot write: " + e.getMessage());
+        } finally {
+            bar.wipe(); // before the summary or the error
         }
         out.println(summary(model, mesh, wrapped.path(), result, wrapped.analysis()));
         outputs.printChecksAndFiles(out);

@@ -32,6 +32,35 @@ class ProgressBarTest {
     }
 
     @Test
+    void theStagesAfterTheFoldsTakeTheBarsPlaceAndAreWiped() {
+        StringWriter text = new StringWriter();
+        long[] now = {0};
+        ProgressBar.WrapBar bar = ProgressBar.wrapping(new PrintWriter(text), true, () -> now[0]);
+        bar.stage("reading big.off");
+        assertEquals("", text.toString(), "nothing in the first seconds");
+        now[0] = (long) (ProgressBar.LONG_WRAP_SECONDS * 1e9);
+        bar.wrapped(500, 1000);
+        bar.stage("analysing");
+        bar.wipe();
+        bar.stage("checking the paper for collisions");
+        bar.wipe();
+        String[] draws = text.toString().split("\r", -1);
+        assertTrue(draws[1].startsWith("[" + "#".repeat(15) + " ".repeat(15) + "] 500/1000 triangles wrapped"), draws[1]);
+        // The stage over the bar, its line as long as the bar's (spaces over the rest), then wiped.
+        assertTrue(draws[2].startsWith("analysing ...") && draws[2].length() == draws[1].length(), "[" + draws[2] + "]");
+        assertTrue(draws[3].isBlank() && draws[4].isEmpty(), "wiped");
+        assertEquals("checking the paper for collisions ...", draws[5]);
+        assertTrue(draws[6].isBlank() && draws[6].length() >= draws[5].length() && draws[7].isEmpty(), "wiped again");
+        assertEquals(8, draws.length, text.toString());
+        // Off a terminal, no stage either: the summary line says it all.
+        StringWriter log = new StringWriter();
+        ProgressBar.WrapBar quiet = ProgressBar.wrapping(new PrintWriter(log), false, () -> now[0]);
+        quiet.stage("analysing");
+        quiet.wipe();
+        assertEquals("", log.toString());
+    }
+
+    @Test
     void noBarInALogNorForAShortWrap() {
         for (boolean terminal : new boolean[] {false, true}) {
             StringWriter text = new StringWriter();
