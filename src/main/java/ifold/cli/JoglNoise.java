@@ -8,22 +8,35 @@ import java.nio.charset.StandardCharsets;
 /**
  * Standard error without JOGL's own bookkeeping: stopped by Ctrl-C or SIGTERM while it renders,
  * JOGL's shutdown prints the X display connections it still holds ("X11Util.Display: Shutdown
- * ...", "X11Util: Open ..."), which say nothing to a user, under iFold's one line. Lines that
- * begin with {@code X11Util} go; everything else passes as written, a line at a time (a
- * progress bar's carriage returns and flushes pass at once).
+ * ...", "X11Util: Open ..."), which say nothing to a user, under iFold's one line; stopped while
+ * JOGL is still starting, it prints that it could not register its temporary files' cleanup
+ * ("Warning: Caught Exception due to initializing TmpRoot:", then the exception's trace), as
+ * the JVM was already shutting down. Lines that begin with {@code X11Util} go, and that warning
+ * with the lines of its trace after it (those that begin with a tab, "java." or "Caused by");
+ * everything else passes as written, a line at a time (a progress bar's carriage returns and
+ * flushes pass at once).
  */
 final class JoglNoise extends OutputStream {
-    private static final byte[] PREFIX = "X11Util".getBytes(StandardCharsets.US_ASCII);
+    /** The beginnings of JOGL's lines that go. */
+    private static final byte[][] DROPPED = {ascii("X11Util"), ascii("Warning: Caught Exception due to initializing TmpRoot")};
+    /** The beginnings of a trace's lines, which go after a dropped warning. */
+    private static final byte[][] TRACE = {ascii("\t"), ascii("java."), ascii("Caused by")};
 
     private final OutputStream out;
-    /** The line begun and not yet passed on: held only while it may still begin with the prefix. */
+    /** The line begun and not yet passed on: held only while it may still begin as one that goes. */
     private final ByteArrayOutputStream line = new ByteArrayOutputStream();
-    /** Whether the line begun is passed on as it comes (it cannot begin with the prefix), or dropped. */
+    /** Whether the line begun is passed on as it comes (it cannot begin as one that goes), or dropped. */
     private boolean passing;
     private boolean dropping;
+    /** Whether the lines just dropped were a warning's, whose trace's lines go too. */
+    private boolean inTrace;
 
     JoglNoise(OutputStream out) {
         this.out = out;
+    }
+
+    private static byte[] ascii(String text) {
+        return text.getBytes(StandardCharsets.US_ASCII);
     }
 
     @Override
@@ -39,17 +52,51 @@ final class JoglNoise extends OutputStream {
         }
         line.write(b);
         byte[] held = line.toByteArray();
-        int n = held.length;
-        if (n <= PREFIX.length && held[n - 1] == PREFIX[n - 1] && b != '\n') {
-            if (n == PREFIX.length) {
+        if (b != '\n' && b != '\r') {
+            boolean warning = matches(held, DROPPED[1]);
+            int state = Math.max(state(held, DROPPED), inTrace ? state(held, TRACE) : NO);
+            if (state == WHOLE) {
                 dropping = true;
+                inTrace = inTrace || warning || matchesAny(held, TRACE);
                 line.reset();
+                return;
             }
-            return; // may still be JOGL's: hold it
+            if (state == BEGUN) {
+                return; // may still be JOGL's: hold it
+            }
         }
+        inTrace = false;
         out.write(held);
         line.reset();
         passing = b != '\n' && b != '\r';
+    }
+
+    private static final int NO = 0;
+    private static final int BEGUN = 1;
+    private static final int WHOLE = 2;
+
+    /** Whether the held bytes are one of the beginnings whole (WHOLE), the start of one (BEGUN), or neither (NO). */
+    private static int state(byte[] held, byte[][] beginnings) {
+        int state = NO;
+        for (byte[] beginning : beginnings) {
+            if (held.length <= beginning.length && java.util.Arrays.equals(held, 0, held.length, beginning, 0, held.length)) {
+                state = Math.max(state, held.length == beginning.length ? WHOLE : BEGUN);
+            }
+        }
+        return state;
+    }
+
+    private static boolean matches(byte[] held, byte[] beginning) {
+        return held.length == beginning.length && java.util.Arrays.equals(held, beginning);
+    }
+
+    private static boolean matchesAny(byte[] held, byte[][] beginnings) {
+        for (byte[] beginning : beginnings) {
+            if (matches(held, beginning)) {
+                return true;
+            }
+        }
+        return false;
     }
 
     @Override

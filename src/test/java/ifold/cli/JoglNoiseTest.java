@@ -23,6 +23,23 @@ class JoglNoiseTest {
     }
 
     @Test
+    void joglsWarningOfAShutdownWhileItStartsGoesWithItsTrace() {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        PrintStream err = new PrintStream(new JoglNoise(bytes), true, StandardCharsets.UTF_8);
+        err.println("java.lang.Error: before any warning, a trace's first line passes");
+        err.println("Warning: Caught Exception due to initializing TmpRoot:");
+        err.println("java.lang.IllegalStateException: Shutdown in progress");
+        err.println("\tat java.base/java.lang.ApplicationShutdownHooks.add(ApplicationShutdownHooks.java:66)");
+        err.println("\tat com.jogamp.common.util.cache.TempFileCache.initTmpRoot(TempFileCache.java:242)");
+        err.println("Caused by: nothing");
+        err.println("ifold: interrupted: nothing written");
+        err.println("\tan indented line after the trace passes");
+        err.println("Warning: something else");
+        assertEquals("java.lang.Error: before any warning, a trace's first line passes\nifold: interrupted: nothing written\n"
+                + "\tan indented line after the trace passes\nWarning: something else\n", bytes.toString(StandardCharsets.UTF_8));
+    }
+
+    @Test
     void aProgressBarsCarriageReturnsPassAtOnce() {
         ByteArrayOutputStream bytes = new ByteArrayOutputStream();
         PrintStream err = new PrintStream(new JoglNoise(bytes), true, StandardCharsets.UTF_8);
