@@ -17,8 +17,10 @@ import java.nio.charset.StandardCharsets;
  * flushes pass at once).
  */
 final class JoglNoise extends OutputStream {
+    /** JOGL's warning that it could not register its temporary files' cleanup: the trace after it goes too. */
+    private static final byte[] WARNING = ascii("Warning: Caught Exception due to initializing TmpRoot");
     /** The beginnings of JOGL's lines that go. */
-    private static final byte[][] DROPPED = {ascii("X11Util"), ascii("Warning: Caught Exception due to initializing TmpRoot")};
+    private static final byte[][] DROPPED = {ascii("X11Util"), WARNING};
     /** The beginnings of a trace's lines, which go after a dropped warning. */
     private static final byte[][] TRACE = {ascii("\t"), ascii("java."), ascii("Caused by")};
 
@@ -53,11 +55,11 @@ final class JoglNoise extends OutputStream {
         line.write(b);
         byte[] held = line.toByteArray();
         if (b != '\n' && b != '\r') {
-            boolean warning = matches(held, DROPPED[1]);
             int state = Math.max(state(held, DROPPED), inTrace ? state(held, TRACE) : NO);
             if (state == WHOLE) {
                 dropping = true;
-                inTrace = inTrace || warning || matchesAny(held, TRACE);
+                // A trace's line matches only after the warning: the trace goes on.
+                inTrace = inTrace || java.util.Arrays.equals(held, WARNING);
                 line.reset();
                 return;
             }
@@ -84,19 +86,6 @@ final class JoglNoise extends OutputStream {
             }
         }
         return state;
-    }
-
-    private static boolean matches(byte[] held, byte[] beginning) {
-        return held.length == beginning.length && java.util.Arrays.equals(held, beginning);
-    }
-
-    private static boolean matchesAny(byte[] held, byte[][] beginnings) {
-        for (byte[] beginning : beginnings) {
-            if (matches(held, beginning)) {
-                return true;
-            }
-        }
-        return false;
     }
 
     @Override
