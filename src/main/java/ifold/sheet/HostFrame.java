@@ -16,10 +16,14 @@ import ifold.geom.Tolerance;
  * @param ey the frame's y axis
  * @param normal the outward normal
  * @param corners the triangle's corners in the frame, x0 y0 x1 y1 x2 y2, counter-clockwise
- * @param room for each edge of the corners' polygon (from corner k to corner k + 1), how far the
- *     bend of a flat fold along it may stand out beyond it before it meets paper on the host
- *     across, as a slope: the distance beyond the edge over the height above this host (1 where
- *     nothing across limits it); null where nothing limits any edge (a table, a plane in space)
+ * @param room for each edge of the corners' polygon (from corner k to corner k + 1), the stretches
+ *     of it beyond which the bend of a flat fold may stand out less than {@link #OPEN} before it
+ *     meets paper on the host across: from, to (distances along the edge from its first corner)
+ *     and the slope (the distance beyond the edge over the height above this host), three numbers
+ *     a stretch; null for an edge that limits nothing, and null where nothing limits any edge (a
+ *     table, a plane in space). One edge of a host can border a convex turn along part of it and
+ *     a coplanar host along the rest (a T-shaped face cut into convex pieces): a bend beside the
+ *     one has the room the other lacks.
  * @param mitre for each edge of the corners' polygon, the stretches of it along which the surface
  *     across turns up towards the paper (a concave edge) by φ: from, to (distances along the edge
  *     from its first corner) and tan(φ/2), three numbers a stretch (null for an edge with none).
@@ -30,7 +34,7 @@ import ifold.geom.Tolerance;
  * @param stops where a convex stretch of an edge ends at a corner of the surface with a face
  *     across it that rises in the way of paper bent over the edge ({@link Stop}); null where none
  */
-public record HostFrame(double[] origin, double[] ex, double[] ey, double[] normal, double[] corners, double[] room, double[][] mitre,
+public record HostFrame(double[] origin, double[] ex, double[] ey, double[] normal, double[] corners, double[][] room, double[][] mitre,
         Stop[] stops) {
 
     /**
@@ -80,7 +84,7 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
     }
 
     /** This frame with {@code room} beyond its edges and the {@code mitre} of each (see the record's description; either may be null). */
-    public HostFrame withEdges(double[] room, double[][] mitre) {
+    public HostFrame withEdges(double[][] room, double[][] mitre) {
         if (room != null && room.length != corners.length / 2 || mitre != null && mitre.length != corners.length / 2) {
             throw new IllegalArgumentException("edges given for " + (room != null ? room.length : mitre.length) + " edges, the polygon has "
                     + corners.length / 2);
@@ -354,9 +358,9 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
     }
 
     /**
-     * The room beyond the crease from (ax, ay) to (bx, by) in this frame: the least of the edges
-     * it lies along (its ends within {@code tolerance} of the edge's line, sharing more than
-     * {@code tolerance} of it), or {@link #OPEN} for a crease along no edge.
+     * The room beyond the crease from (ax, ay) to (bx, by) in this frame: the least of the
+     * stretches of edges it lies along (its ends within {@code tolerance} of the edge's line)
+     * that it shares more than {@code tolerance} of, or {@link #OPEN} for a crease along none.
      */
     public double roomBeyond(double ax, double ay, double bx, double by, double tolerance) {
         double least = OPEN;
@@ -365,20 +369,40 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
         }
         int n = corners.length / 2;
         for (int k = 0; k < n; k++) {
-            if (room[k] >= least || !along(k, ax, ay, bx, by, tolerance)) {
+            if (room[k] == null || !along(k, ax, ay, bx, by, tolerance)) {
                 continue;
             }
             double[] edge = edge(k);
-            double px = edge[0];
-            double py = edge[1];
-            double dx = edge[2];
-            double dy = edge[3];
-            double length = edge[4];
-            double ta = ((ax - px) * dx + (ay - py) * dy) / length;
-            double tb = ((bx - px) * dx + (by - py) * dy) / length;
-            double shared = Math.min(length, Math.max(ta, tb)) - Math.max(0, Math.min(ta, tb));
-            if (shared > tolerance) {
-                least = room[k];
+            double ta = ((ax - edge[0]) * edge[2] + (ay - edge[1]) * edge[3]) / edge[4];
+            double tb = ((bx - edge[0]) * edge[2] + (by - edge[1]) * edge[3]) / edge[4];
+            for (int i = 0; i + 2 < room[k].length; i += 3) {
+                double shared = Math.min(room[k][i + 1], Math.max(ta, tb)) - Math.max(room[k][i], Math.min(ta, tb));
+                if (shared > tolerance) {
+                    least = Math.min(least, room[k][i + 2]);
+                }
+            }
+        }
+        return least;
+    }
+
+    /**
+     * The room beyond edge k by frame point (x, y): the least of its stretches that the point's
+     * projection on the edge lies within {@code reach} of, or beyond the edge's end where the
+     * stretch runs to it; {@link #OPEN} where none does.
+     */
+    private double roomBy(int k, double x, double y, double reach) {
+        if (room[k] == null) {
+            return OPEN;
+        }
+        double[] edge = edge(k);
+        double s = ((x - edge[0]) * edge[2] + (y - edge[1]) * edge[3]) / edge[4];
+        double near = Tolerance.ON_PLANE * edge[4];
+        double least = OPEN;
+        for (int i = 0; i + 2 < room[k].length; i += 3) {
+            boolean fromStart = room[k][i] <= near;
+            boolean toEnd = room[k][i + 1] >= edge[4] - near;
+            if ((fromStart || s >= room[k][i] - reach) && (toEnd || s <= room[k][i + 1] + reach)) {
+                least = Math.min(least, room[k][i + 2]);
             }
         }
         return least;
@@ -446,9 +470,6 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
         double most = out;
         int n = corners.length / 2;
         for (int k = 0; k < n; k++) {
-            if (room[k] >= OPEN) {
-                continue;
-            }
             double[] edge = edge(k);
             double px = edge[0];
             double py = edge[1];
@@ -458,13 +479,19 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
             if (!(length > 0)) {
                 continue;
             }
+            // The stretches of the edge the bend could reach beside: as far along it as it leans.
+            double reach = Math.abs(nx * dx + ny * dy) / length * out + Tolerance.ON_PLANE * length;
+            double edgeRoom = roomBy(k, x, y, reach);
+            if (edgeRoom >= OPEN) {
+                continue;
+            }
             // The edge's outward normal: the corners run counter-clockwise.
             double mx = dy / length;
             double my = -dx / length;
             double beyond = (x - px) * mx + (y - py) * my;
-            double towards = nx * mx + ny * my - room[k] / slope;
+            double towards = nx * mx + ny * my - edgeRoom / slope;
             if (towards > 0) {
-                most = Math.min(most, Math.max(0, (height * room[k] - beyond) / towards));
+                most = Math.min(most, Math.max(0, (height * edgeRoom - beyond) / towards));
             }
         }
         return most;

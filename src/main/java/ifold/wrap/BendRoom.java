@@ -4,7 +4,6 @@ import ifold.geom.Tolerance;
 import ifold.mesh.IndexedPolygons;
 import ifold.sheet.HostFrame;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 import java.util.HashMap;
 import java.util.Map;
@@ -44,16 +43,18 @@ final class BendRoom {
      * @param tolerance how far off a polygon's edge a mesh edge may lie and still be on it
      */
     static HostFrame[] of(IndexedPolygons mesh, int[] hostOf, HostFrame[] frames, double tolerance) {
-        double[][] room = new double[frames.length][];
-        // Each host edge's concave stretches: from, to and tan(φ/2), three numbers a stretch.
+        // Each host edge's stretches that limit bends (from, to and the slope) and its concave
+        // stretches (from, to and tan(φ/2)), three numbers a stretch.
+        List<List<List<Double>>> room = new ArrayList<>();
         List<List<List<Double>>> mitre = new ArrayList<>();
         for (int h = 0; h < frames.length; h++) {
-            room[h] = new double[frames[h].corners().length / 2];
-            Arrays.fill(room[h], HostFrame.OPEN);
+            List<List<Double>> limits = new ArrayList<>();
             List<List<Double>> edges = new ArrayList<>();
-            for (int k = 0; k < room[h].length; k++) {
+            for (int k = 0; k < frames[h].corners().length / 2; k++) {
+                limits.add(new ArrayList<>());
                 edges.add(new ArrayList<>());
             }
+            room.add(limits);
             mitre.add(edges);
         }
         Map<Long, Integer> firstSide = new HashMap<>();
@@ -83,19 +84,24 @@ final class BendRoom {
         }
         HostFrame[] limited = new HostFrame[frames.length];
         for (int h = 0; h < frames.length; h++) {
-            double[][] stretches = new double[room[h].length][];
-            boolean concave = false;
-            for (int k = 0; k < stretches.length; k++) {
-                List<Double> edge = mitre.get(h).get(k);
-                if (!edge.isEmpty()) {
-                    stretches[k] = edge.stream().mapToDouble(Double::doubleValue).toArray();
-                    concave = true;
-                }
-            }
-            limited[h] = frames[h].withEdges(room[h], concave ? stretches : null)
+            double[][] stretches = stretches(mitre.get(h));
+            limited[h] = frames[h].withEdges(stretches(room.get(h)), stretches)
                     .withStops(stops.get(h).isEmpty() ? null : stops.get(h).toArray(new HostFrame.Stop[0]));
         }
         return limited;
+    }
+
+    /** Each edge's stretches as an array (null for an edge with none), or null where no edge has any. */
+    private static double[][] stretches(List<List<Double>> edges) {
+        double[][] stretches = new double[edges.size()][];
+        boolean any = false;
+        for (int k = 0; k < stretches.length; k++) {
+            if (!edges.get(k).isEmpty()) {
+                stretches[k] = edges.get(k).stream().mapToDouble(Double::doubleValue).toArray();
+                any = true;
+            }
+        }
+        return any ? stretches : null;
     }
 
     /** The faces round each vertex of the mesh. */
@@ -224,7 +230,7 @@ final class BendRoom {
 
     /** Limits the room of the edge of {@code near}'s host that mesh edge (u, v) lies along, by the turn to {@code far}'s host. */
     private static void limit(IndexedPolygons mesh, int u, int v, int near, int far, int[] hostOf, HostFrame[] frames,
-            double[][] room, List<List<List<Double>>> mitre, double tolerance) {
+            List<List<List<Double>>> room, List<List<List<Double>>> mitre, double tolerance) {
         HostFrame frame = frames[hostOf[near]];
         double slope = slope(frame, frames[hostOf[far]], mesh, far, tolerance);
         double concave = slope >= HostFrame.OPEN ? concaveTurn(frame, frames[hostOf[far]], mesh, far, tolerance) : 0;
@@ -237,20 +243,17 @@ final class BendRoom {
         double ay = frame.localY(a);
         double bx = frame.localX(b);
         double by = frame.localY(b);
-        double[] edges = room[hostOf[near]];
-        for (int k = 0; k < edges.length; k++) {
+        for (int k = 0; k < frame.corners().length / 2; k++) {
             if (frame.along(k, ax, ay, bx, by, tolerance)) {
-                edges[k] = Math.min(edges[k], slope);
-                if (concave > 0) {
-                    // Concave along this mesh edge only: the host's edge may go on convex beyond it.
-                    double[] edge = frame.edge(k);
-                    double sa = ((ax - edge[0]) * edge[2] + (ay - edge[1]) * edge[3]) / edge[4];
-                    double sb = ((bx - edge[0]) * edge[2] + (by - edge[1]) * edge[3]) / edge[4];
-                    List<Double> stretches = mitre.get(hostOf[near]).get(k);
-                    stretches.add(Math.min(sa, sb));
-                    stretches.add(Math.max(sa, sb));
-                    stretches.add(concave);
-                }
+                // Along this mesh edge only: the host's edge may go on beyond it with another turn
+                // (convex here, across a coplanar host there, concave further on).
+                double[] edge = frame.edge(k);
+                double sa = ((ax - edge[0]) * edge[2] + (ay - edge[1]) * edge[3]) / edge[4];
+                double sb = ((bx - edge[0]) * edge[2] + (by - edge[1]) * edge[3]) / edge[4];
+                List<Double> stretches = concave > 0 ? mitre.get(hostOf[near]).get(k) : room.get(hostOf[near]).get(k);
+                stretches.add(Math.min(sa, sb));
+                stretches.add(Math.max(sa, sb));
+                stretches.add(concave > 0 ? concave : slope);
             }
         }
     }

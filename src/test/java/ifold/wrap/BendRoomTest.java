@@ -86,4 +86,55 @@ class BendRoomTest {
         double[] c = {0.25, -0.1, 0};
         assertEquals(HostFrame.OPEN, f.roomBeyond(f.localX(a), f.localY(a), f.localX(c), f.localY(c), 1e-9));
     }
+
+    /**
+     * One edge of a host, (0,0,0)-(2,0,0), with a convex turn of {@code turn} across its first
+     * half and a coplanar host across its second (a T-shaped face cut into convex pieces).
+     */
+    private static HostFrame halfConvex(double turn) {
+        PolygonSoup mesh = new PolygonSoup();
+        mesh.addVertex(0, 0, 0);
+        mesh.addVertex(1, 0, 0);
+        mesh.addVertex(2, 0, 0);
+        mesh.addVertex(1, -1, 0);
+        mesh.addVertex(0.5, Math.cos(turn), -Math.sin(turn));
+        mesh.addVertex(1.5, 1, 0);
+        mesh.addFace(new int[] {0, 3, 1}, 3, 0);
+        mesh.addFace(new int[] {1, 3, 2}, 3, 0);
+        mesh.addFace(new int[] {0, 1, 4}, 3, 0);
+        mesh.addFace(new int[] {1, 2, 5}, 3, 0);
+        double[][] p = new double[6][];
+        for (int v = 0; v < 6; v++) {
+            p[v] = new double[] {mesh.coordinate(v, 0), mesh.coordinate(v, 1), mesh.coordinate(v, 2)};
+        }
+        HostFrame[] frames = {HostFrame.onEdge(p[0], p[3], p[2]), HostFrame.onEdge(p[0], p[1], p[4]), HostFrame.onEdge(p[1], p[2], p[5])};
+        return BendRoom.of(mesh, new int[] {0, 0, 1, 2}, frames, 1e-9)[0];
+    }
+
+    /** The room beyond the crease from a to b, points in space on host frame f. */
+    private static double roomBeyond(HostFrame f, double[] a, double[] b) {
+        return f.roomBeyond(f.localX(a), f.localY(a), f.localX(b), f.localY(b), 1e-9);
+    }
+
+    @Test
+    void anEdgeConvexAlongPartOfItHasItsRoomThereAndNoneBesideTheCoplanarHost() {
+        double turn = Math.toRadians(60);
+        HostFrame f = halfConvex(turn);
+        double[] a = {0.2, 0, 0};
+        double[] b = {0.8, 0, 0};
+        double[] c = {1.2, 0, 0};
+        double[] d = {1.8, 0, 0};
+        assertEquals(Math.tan(turn / 2), roomBeyond(f, a, b), 1e-12, "beside the convex turn");
+        assertEquals(0, roomBeyond(f, c, d), "beside the coplanar host");
+        assertEquals(0, roomBeyond(f, a, d), "a crease along both gets the least");
+        // A bend standing out from the crease at height 0.01: beside the convex turn as far as
+        // it asks, beside the coplanar host not at all. (The host lies at y < 0 in space, so out
+        // of it is +y, in the frame (ex·y, ey·y).)
+        double height = 0.01;
+        double slope = Math.tan(turn / 2);
+        double nx = f.ex()[1];
+        double ny = f.ey()[1];
+        assertEquals(0.005, f.lean(f.localX(a), f.localY(a), nx, ny, height, slope, 0.005), 1e-12);
+        assertEquals(0, f.lean(f.localX(d), f.localY(d), nx, ny, height, slope, 0.005), 1e-12);
+    }
 }
