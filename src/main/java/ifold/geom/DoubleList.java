@@ -38,6 +38,13 @@ public final class DoubleList {
         return size;
     }
 
+    public void set(int i, double value) {
+        if (i < 0 || i >= size) {
+            throw new IndexOutOfBoundsException(i + " of " + size);
+        }
+        blocks[i >>> SHIFT][i & MASK] = value;
+    }
+
     /**
      * The values in one array, the list left empty: its blocks let go as they are copied, so that
      * a list of millions is not held twice over for longer than the copy.

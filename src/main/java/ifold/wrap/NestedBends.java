@@ -350,11 +350,13 @@ final class NestedBends {
      * where a bend on another line of the same host ends at the same point, with layers
      * overlapping this one's, and its crease leaves that point into the band this bend's row
      * stands out over (between the crease and the direction it stands out in), the row stepped
-     * out whole would run through that bend's wall: it stops short on that one's line (moved out
-     * by its {@code out}), mitred as the edges of a picture frame are: the farthest short of the
-     * creases met, turning from its own, up to the first that stands on its crease (those beyond
-     * cross the row nearer its end). Entry 2k is how far bend k's row runs on past its end (ax, ay), along the
-     * crease and away from its other end (negative: it stops short of it), 2k + 1 the same at
+     * out whole would run through that bend's wall: it stops short where it would enter that
+     * bend, on that one's line moved out by its {@code out} where that bend stands out towards
+     * the row, on its crease where it stands out away from it, mitred as the edges of a picture
+     * frame are: the farthest short of the creases met, turning from its own, up to the first
+     * that stands on its crease (those beyond cross the row nearer its end). Entry 2k is how far
+     * bend k's row runs on past its end (ax, ay), along the crease and away from its other end
+     * (negative: it stops short of it), 2k + 1 the same at
      * (bx, by). Corners nearly in line, whose mitre lies far off, and creases too short to stop
      * half their length short, are left square.
      */
@@ -521,9 +523,16 @@ final class NestedBends {
         // The crease's direction away from its other end.
         double dx = (bend.bx() - bend.ax()) / length * (e % 2 == 0 ? -1 : 1);
         double dy = (bend.by() - bend.ay()) / length * (e % 2 == 0 ? -1 : 1);
-        // The row's end, x + out·n + t·d, on the other's row: (p - o)·m = out'.
+        // The other's bend fills the band from its crease out to its row: (p - o)·m from 0 to
+        // out'. The row's end, x + out·n + t·d, stops where the row, coming from its own crease's
+        // far end, enters that band: on the other's row where it comes from beyond it (across <
+        // 0), on its crease where it comes from the side its layers lie on (across > 0: the other
+        // stands out away from this row, and a row stopped on its row instead would cross the
+        // whole bend; on the torus such rows ran through the lower facet of a bend over a convex
+        // edge that stood out away from them).
         double across = dx * other.nx() + dy * other.ny();
-        double t = (out[f / 2] - out[e / 2] * (bend.nx() * other.nx() + bend.ny() * other.ny())
+        double enters = across > 0 ? 0 : out[f / 2];
+        double t = (enters - out[e / 2] * (bend.nx() * other.nx() + bend.ny() * other.ny())
                 - ((x(e) - x(f)) * other.nx() + (y(e) - y(f)) * other.ny())) / across;
         boolean taken = Math.abs(across) > MITRED_SINE && t < 0 && -t <= 4 * (out[e / 2] + out[f / 2]) && -t < length / 2;
         return taken ? t : 0;

@@ -163,9 +163,14 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          */
         private int[] sidesOf;
         private final IntList sideStarts = new IntList();
-        /** The pieces' edges along the sides of their faces, {@link #SIDE_EDGE} numbers each: from, to (along the side), their two vertices, and 1 where squashed. */
+        /**
+         * The pieces' edges along the sides of their faces, {@link #SIDE_EDGE} numbers each: from,
+         * to (along the side), their two vertices, 1 where squashed, and at each end the unit
+         * normal (x, y on the host's frame) of the line across its region that cut it there (where
+         * a wall or a concave stretch ends; NaN where none did).
+         */
         private final DoubleList sideEdges = new DoubleList();
-        private static final int SIDE_EDGE = 5;
+        private static final int SIDE_EDGE = 9;
         /** The pieces of face f are paper faces pieceStart[f] to pieceStart[f + 1] - 1. */
         private int[] pieceStart;
         /** Where paper ends at the concave edges of its host. */
@@ -315,31 +320,49 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 double[] cuts = cutsAlong(fChain, gChain);
                 int a = c[2];
                 int b = c[3];
-                int fFrom = -1;
-                int gFrom = -1;
+                // Stretch by stretch between the points where either layer's pieces meet the crease.
+                // Where a wall ends, the pieces on its two sides put one point of the crease in two
+                // places (on the wall, and out on the mitre): each stretch takes its ends from the
+                // pieces that run along it, and places its rows as it lies, beside the walls and
+                // mitres that its middle is. Taken from whichever piece came first along the chain,
+                // a stretch beyond a wall's end got a corner on the wall at one end, and its rows
+                // beside the wall there, while the layers it joined stood off it: on the torus the
+                // bend, and the bend it wraps, twisted through each other and through the walls.
                 int[] rowFrom = null;
-                for (int j = 0; j < cuts.length; j++) {
-                    double t = cuts[j];
-                    double u = along(sheet.u(a), sheet.u(b), t);
-                    double v = along(sheet.v(a), sheet.v(b), t);
-                    int[] at = pointsAt(fChain, gChain, t, u, v);
-                    int fAt = at[0];
-                    int gAt = at[1];
+                for (int j = 1; j < cuts.length; j++) {
+                    double t0 = cuts[j - 1];
+                    double t1 = cuts[j];
+                    double between = (t0 + t1) / 2;
+                    double u0 = along(sheet.u(a), sheet.u(b), t0);
+                    double v0 = along(sheet.v(a), sheet.v(b), t0);
+                    double u1 = along(sheet.u(a), sheet.u(b), t1);
+                    double v1 = along(sheet.v(a), sheet.v(b), t1);
+                    double uMid = along(sheet.u(a), sheet.u(b), between);
+                    double vMid = along(sheet.v(a), sheet.v(b), between);
+                    int fFrom = pointAt(fChain, t0, u0, v0, between);
+                    int fAt = pointAt(fChain, t1, u1, v1, between);
+                    int gFrom = pointAt(gChain, t0, u0, v0, between);
+                    int gAt = pointAt(gChain, t1, u1, v1, between);
                     int[] rowAt;
+                    int[] rowStart;
                     if (backs) {
-                        int apex = j == 0 ? apex(f, a, middle) : j == cuts.length - 1 ? apex(f, b, middle) : apex(f, u, v, middle);
-                        rowAt = new int[] {apex};
+                        rowStart = rowFrom != null ? new int[] {rowFrom[0]} : new int[] {apex(f, a, middle)};
+                        rowAt = new int[] {j == cuts.length - 1 ? apex(f, b, middle) : apex(f, u1, v1, middle)};
                     } else {
-                        double beyond = j == 0 ? -past[2 * k] : j == cuts.length - 1 ? past[2 * k + 1] : 0;
-                        rowAt = new int[] {row(f, bend, u, v, out, beyond, fLower ? lower : upper), row(f, bend, u, v, out, beyond,
-                                fLower ? upper : lower)};
+                        double beyond0 = j == 1 ? -past[2 * k] : onCut(bend, out, fChain, gChain, t0, between);
+                        double beyond1 = j == cuts.length - 1 ? past[2 * k + 1] : onCut(bend, out, fChain, gChain, t1, between);
+                        double lowRow = fLower ? lower : upper;
+                        double highRow = fLower ? upper : lower;
+                        rowStart = new int[] {row(f, bend, u0, v0, out, beyond0, lowRow, uMid, vMid, rowFrom == null ? -1 : rowFrom[0]),
+                            row(f, bend, u0, v0, out, beyond0, highRow, uMid, vMid, rowFrom == null ? -1 : rowFrom[1])};
+                        rowAt = new int[] {row(f, bend, u1, v1, out, beyond1, lowRow, uMid, vMid, -1),
+                            row(f, bend, u1, v1, out, beyond1, highRow, uMid, vMid, -1)};
                     }
-                    double between = j > 0 ? (cuts[j - 1] + t) / 2 : 0;
-                    boolean squashed = j > 0 && !backs && !onWall[k] && insideAt(fChain, between) && insideAt(gChain, between);
-                    if (rowFrom != null && !squashed) {
-                        int fm0 = rowFrom[0];
+                    boolean squashed = !backs && !onWall[k] && insideAt(fChain, between) && insideAt(gChain, between);
+                    if (!squashed) {
+                        int fm0 = rowStart[0];
                         int fm1 = rowAt[0];
-                        int gm0 = rowFrom[rowFrom.length - 1];
+                        int gm0 = rowStart[rowStart.length - 1];
                         int gm1 = rowAt[rowAt.length - 1];
                         caps.add(new int[] {fFrom, fAt, fm1, fm0});
                         capAfter.add(after);
@@ -350,8 +373,6 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                         caps.add(new int[] {gm0, gm1, gAt, gFrom});
                         capAfter.add(after);
                     }
-                    fFrom = fAt;
-                    gFrom = gAt;
                     rowFrom = rowAt;
                 }
             }
@@ -560,14 +581,31 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
 
         /** {@link #row(int, NestedBends.Bend, int, double, double, double)} at paper point (u, v) of the crease. */
         private int row(int f, NestedBends.Bend bend, double u, double v, double out, double along, double height) {
+            return row(f, bend, u, v, out, along, height, Double.NaN, Double.NaN, -1);
+        }
+
+        /**
+         * {@link #row(int, NestedBends.Bend, int, double, double, double)} at paper point (u, v)
+         * of the crease, for the stretch of the bend whose middle is at paper point (uMid, vMid)
+         * of the crease (NaN: the row point's own place): placed beside the walls and mitres that
+         * the stretch's row is. Where it lands where vertex {@code same} (-1: none) lies, that
+         * vertex: the stretch before ends there too.
+         */
+        private int row(int f, NestedBends.Bend bend, double u, double v, double out, double along, double height, double uMid,
+                double vMid, int same) {
             Isometry2 pose = sheet.pose(f);
             double length = Polygons2.length(bend.bx() - bend.ax(), bend.by() - bend.ay());
             double px = pose.x(u, v) + bend.nx() * out + (bend.bx() - bend.ax()) / length * along;
             double py = pose.y(u, v) + bend.ny() * out + (bend.by() - bend.ay()) / length * along;
+            double bx = Double.isNaN(uMid) ? Double.NaN : pose.x(uMid, vMid) + bend.nx() * out;
+            double by = Double.isNaN(uMid) ? Double.NaN : pose.y(uMid, vMid) + bend.ny() * out;
             double[] point = new double[3];
             double[] xy = new double[2];
-            walls.place(sheet.host(f), frames[sheet.host(f)], px, py, height, xy);
+            walls.place(sheet.host(f), frames[sheet.host(f)], px, py, height, Double.NaN, Double.NaN, null, bx, by, xy);
             frames[sheet.host(f)].toSpace(xy[0], xy[1], height, point, 0);
+            if (same >= 0 && closer(same, point, exact)) {
+                return same;
+            }
             return capVertex(point, u, v);
         }
 
@@ -599,8 +637,11 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         private record Parts(List<Corner> plus, List<Corner> minus) {
         }
 
-        /** A line where a face is cut: a·x + b·y = c on its host's frame. */
-        private record Cut(double a, double b, double c) {
+        /**
+         * A line where a face is cut: a·x + b·y = c on its host's frame; {@code across} where it
+         * runs across its region, where the region begins or ends along its edge.
+         */
+        private record Cut(double a, double b, double c, boolean across) {
             double value(Corner p) {
                 return a * p.x + b * p.y - c;
             }
@@ -623,10 +664,11 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         private final java.util.Set<List<Corner>> inside = java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>());
         /**
          * Where lines cut edges, {@link #CUT_POINT} numbers each: x, y, u, v, the two paper
-         * vertices of the sheet edge it lies on (-1 where it lies on none), its host and level.
+         * vertices of the sheet edge it lies on (-1 where it lies on none), its host and level,
+         * and the unit normal (x, y) of a line across a region that cut there (NaN: none did).
          */
         private final DoubleList cutPoints = new DoubleList();
-        private static final int CUT_POINT = 8;
+        private static final int CUT_POINT = 10;
         /** The first space vertex made of each cut point (-1: none; the others by {@link #nextCopy}). */
         private final IntList cutCopies = new IntList();
 
@@ -754,9 +796,9 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 double tx = region[2];
                 double ty = region[3];
                 // Inwards: left of the line.
-                Cut band = new Cut(-ty, tx, -ty * px + tx * py + region[4]);
-                Cut from = Double.isFinite(region[5]) ? new Cut(tx, ty, tx * px + ty * py + region[5]) : null;
-                Cut to = Double.isFinite(region[6]) ? new Cut(tx, ty, tx * px + ty * py + region[6]) : null;
+                Cut band = new Cut(-ty, tx, -ty * px + tx * py + region[4], false);
+                Cut from = Double.isFinite(region[5]) ? new Cut(tx, ty, tx * px + ty * py + region[5], true) : null;
+                Cut to = Double.isFinite(region[6]) ? new Cut(tx, ty, tx * px + ty * py + region[6], true) : null;
                 List<List<Corner>> next = new ArrayList<>();
                 for (List<Corner> piece : pieces) {
                     double[] within = holding.get(piece);
@@ -912,7 +954,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     minusAt.add(i);
                 }
                 if (a > tiny && b < -tiny || a < -tiny && b > tiny) {
-                    Corner crossing = crossing(f, here, there, a / (a - b));
+                    Corner crossing = crossing(f, here, there, a / (a - b), line);
                     plus.add(crossing);
                     plusAt.add(-1 - i);
                     minus.add(crossing);
@@ -945,7 +987,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          * Where {@code line} crosses the edge from {@code a} to {@code b} of a piece of face f, at
          * {@code t} along it: one point for every face of the layer that cuts that edge there.
          */
-        private Corner crossing(int f, Corner a, Corner b, double t) {
+        private Corner crossing(int f, Corner a, Corner b, double t, Cut line) {
             // The side of the face the edge lies along, as its two paper vertices (none for a cut).
             int[] loop = sheet.loop(f);
             int one = a.side >= 0 ? loop[a.side] : -1;
@@ -958,7 +1000,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             if (known < 0) {
                 known = cutCopies.size();
                 // And the sheet edge it lies on (its two paper vertices), where it lies on one.
-                for (double value : new double[] {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), u, v, one, two, sheet.host(f), levels[f]}) {
+                for (double value : new double[] {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), u, v, one, two, sheet.host(f), levels[f],
+                    Double.NaN, Double.NaN}) {
                     cutPoints.add(value);
                 }
                 cutCopies.add(-1);
@@ -970,6 +1013,10 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 cutCells.put(cell, known);
             }
             int p = CUT_POINT * known;
+            if (line.across() && Double.isNaN(cutPoints.get(p + 8))) {
+                cutPoints.set(p + 8, line.a());
+                cutPoints.set(p + 9, line.b());
+            }
             return new Corner(cutPoints.get(p), cutPoints.get(p + 1), cutPoints.get(p + 2), cutPoints.get(p + 3), -1 - known, -1);
         }
 
@@ -1076,8 +1123,11 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                         double from = alongSide(f, here.side, here);
                         double to = alongSide(f, here.side, there);
                         double in = squashed ? 1 : 0;
-                        along.get(here.side).add(from <= to ? new double[] {from, to, placed[k], placed[(k + 1) % n], in}
-                                : new double[] {to, from, placed[(k + 1) % n], placed[k], in});
+                        double[] lineHere = lineAcross(here);
+                        double[] lineThere = lineAcross(there);
+                        along.get(here.side).add(from <= to
+                                ? new double[] {from, to, placed[k], placed[(k + 1) % n], in, lineHere[0], lineHere[1], lineThere[0], lineThere[1]}
+                                : new double[] {to, from, placed[(k + 1) % n], placed[k], in, lineThere[0], lineThere[1], lineHere[0], lineHere[1]});
                     } else {
                         List<Integer> key = List.of(Math.min(here.id, there.id), Math.max(here.id, there.id));
                         int[] ends = here.id < there.id ? new int[] {placed[k], placed[(k + 1) % n]} : new int[] {placed[(k + 1) % n], placed[k]};
@@ -1103,6 +1153,15 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 }
             }
             sideStarts.add(sideEdges.size() / SIDE_EDGE);
+        }
+
+        /** The unit normal of the line across a region that cut a piece at corner c (NaN, NaN: none did). */
+        private double[] lineAcross(Corner c) {
+            if (c.id >= 0) {
+                return new double[] {Double.NaN, Double.NaN};
+            }
+            int p = CUT_POINT * (-1 - c.id);
+            return new double[] {cutPoints.get(p + 8), cutPoints.get(p + 9)};
         }
 
         /** The area of a polygon of space vertices. */
@@ -1167,7 +1226,9 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             if (sidesOf[f] < 0) {
                 int first = corners[f][i];
                 int second = corners[f][(i + 1) % loop.length];
-                return new double[][] {forward ? new double[] {0, 1, first, second, 0} : new double[] {0, 1, second, first, 0}};
+                double none = Double.NaN;
+                return new double[][] {forward ? new double[] {0, 1, first, second, 0, none, none, none, none}
+                        : new double[] {0, 1, second, first, 0, none, none, none, none}};
             }
             int from = sideStarts.get(sidesOf[f] + i);
             int to = sideStarts.get(sidesOf[f] + i + 1);
@@ -1177,7 +1238,9 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 for (int d = 0; d < SIDE_EDGE; d++) {
                     segment[d] = sideEdges.get(SIDE_EDGE * (forward ? from + k : to - 1 - k) + d);
                 }
-                chain[k] = forward ? segment : new double[] {1 - segment[1], 1 - segment[0], segment[3], segment[2], segment[4]};
+                chain[k] = forward ? segment
+                        : new double[] {1 - segment[1], 1 - segment[0], segment[3], segment[2], segment[4], segment[7], segment[8], segment[5],
+                            segment[6]};
             }
             return chain;
         }
@@ -1191,25 +1254,26 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         private void addCap(double[][] f, double[][] g, int a, int b, int after, boolean flat, boolean dropSquashed, List<int[]> caps,
                 IntList capAfter) {
             double[] cuts = cutsAlong(f, g);
-            int fromF = -1;
-            int fromG = -1;
-            for (int k = 0; k < cuts.length; k++) {
-                double t = cuts[k];
-                int[] at = pointsAt(f, g, t, along(sheet.u(a), sheet.u(b), t), along(sheet.v(a), sheet.v(b), t));
-                int toF = at[0];
-                int toG = at[1];
-                if (k > 0) {
-                    double middle = (cuts[k - 1] + t) / 2;
-                    // Paper of both layers squashed where it ends (a fold inside a wall's, or running
-                    // into a mitre): the bend is not there, where the paper across has the room.
-                    boolean squashed = dropSquashed && insideAt(f, middle) && insideAt(g, middle);
-                    if (!squashed && !(flat && sameOrAt(fromF, fromG) && sameOrAt(toF, toG))) {
-                        caps.add(new int[] {fromF, toF, toG, fromG});
-                        capAfter.add(after);
-                    }
+            // Stretch by stretch, each with its ends from the pieces that run along it (see the bends in pieces).
+            for (int k = 1; k < cuts.length; k++) {
+                double t0 = cuts[k - 1];
+                double t1 = cuts[k];
+                double middle = (t0 + t1) / 2;
+                double u0 = along(sheet.u(a), sheet.u(b), t0);
+                double v0 = along(sheet.v(a), sheet.v(b), t0);
+                double u1 = along(sheet.u(a), sheet.u(b), t1);
+                double v1 = along(sheet.v(a), sheet.v(b), t1);
+                int fromF = pointAt(f, t0, u0, v0, middle);
+                int toF = pointAt(f, t1, u1, v1, middle);
+                int fromG = pointAt(g, t0, u0, v0, middle);
+                int toG = pointAt(g, t1, u1, v1, middle);
+                // Paper of both layers squashed where it ends (a fold inside a wall's, or running
+                // into a mitre): the bend is not there, where the paper across has the room.
+                boolean squashed = dropSquashed && insideAt(f, middle) && insideAt(g, middle);
+                if (!squashed && !(flat && sameOrAt(fromF, fromG) && sameOrAt(toF, toG))) {
+                    caps.add(new int[] {fromF, toF, toG, fromG});
+                    capAfter.add(after);
                 }
-                fromF = toF;
-                fromG = toG;
             }
         }
 
@@ -1279,9 +1343,48 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         /** Cuts along a crease closer than this (of its length) are one. */
         private static final double SAME_CUT = 1e-9;
 
-        /** The vertices of both layers' chains at {@code t} along their crease, its paper point (u, v) there ({@link #pointAt}). */
-        private int[] pointsAt(double[][] f, double[][] g, double t, double u, double v) {
-            return new int[] {pointAt(f, t, u, v), pointAt(g, t, u, v)};
+        /**
+         * How far along its crease (from its end a towards b) a bend's row, {@code out} beyond
+         * the crease, moves at {@code t} to lie on the line that cut its layers' pieces there
+         * across a region (where a wall or a concave stretch of an edge ends: square to the edge),
+         * for the stretch whose middle is {@code middle}; 0 where no such line did, or where it
+         * runs within 45 degrees of the crease. Stepped out square to a crease that meets the edge
+         * at a slant, the row at the end of a stretch beyond a wall's end lay back beside the wall,
+         * and the bend there ran through it (on the torus, by up to 0.18 T, where a sliver of a
+         * pass folded inside walls at a concave corner).
+         */
+        private static double onCut(NestedBends.Bend bend, double out, double[][] f, double[][] g, double t, double middle) {
+            double[] normal = lineAcrossAt(f, t, middle);
+            if (normal == null) {
+                normal = lineAcrossAt(g, t, middle);
+            }
+            if (normal == null) {
+                return 0;
+            }
+            double length = Polygons2.length(bend.bx() - bend.ax(), bend.by() - bend.ay());
+            double along = ((bend.bx() - bend.ax()) * normal[0] + (bend.by() - bend.ay()) * normal[1]) / length;
+            double off = bend.nx() * normal[0] + bend.ny() * normal[1];
+            if (Math.abs(along) < Math.sqrt(0.5)) {
+                return 0;
+            }
+            // (out·n + s·d)·m = 0 for the line's normal m.
+            return -out * off / along;
+        }
+
+        /** The normal of the line across a region that cut the chain's edge along the stretch at {@code middle}, at its end {@code t}; null if none. */
+        private static double[] lineAcrossAt(double[][] chain, double t, double middle) {
+            for (double[] edge : chain) {
+                if (edge[0] <= middle && middle <= edge[1]) {
+                    if (Math.abs(edge[0] - t) <= SAME_CUT && !Double.isNaN(edge[5])) {
+                        return new double[] {edge[5], edge[6]};
+                    }
+                    if (Math.abs(edge[1] - t) <= SAME_CUT && !Double.isNaN(edge[7])) {
+                        return new double[] {edge[7], edge[8]};
+                    }
+                    return null;
+                }
+            }
+            return null;
         }
 
         /** Whether the chain's paper at {@code t} along it lies in a region where it creeps ({@link #pieces}). */
@@ -1295,9 +1398,25 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         }
 
         /**
+         * The vertex of a chain at {@code t} along it for the stretch of the crease whose middle is
+         * {@code middle}: the end, or a point made between the ends, of the chain's edge that runs
+         * along that stretch. Where a wall ends the pieces on its two sides end at one point of the
+         * crease in two places, and each stretch takes the one its own piece put there.
+         */
+        private int pointAt(double[][] chain, double t, double u, double v, double middle) {
+            // The chain's edge that runs along the stretch, where one does and reaches t.
+            for (double[] edge : chain) {
+                if (edge[0] <= middle && middle <= edge[1] && edge[0] - SAME_CUT <= t && t <= edge[1] + SAME_CUT) {
+                    return pointAt(new double[][] {edge}, t, u, v);
+                }
+            }
+            return pointAt(chain, t, u, v);
+        }
+
+        /**
          * The vertex of a chain at {@code t} along it, the crease's paper point (u, v) there: an
-         * edge's end, or a point made on the edge that runs past it, between its two ends as they
-         * lie.
+         * edge's end (of the first edge of the chain that reaches it), or a point made on the edge
+         * that runs past it, between its two ends as they lie.
          */
         private int pointAt(double[][] chain, double t, double u, double v) {
             double[] nearest = chain[0];

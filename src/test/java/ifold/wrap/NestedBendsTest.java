@@ -80,6 +80,23 @@ class NestedBendsTest {
     }
 
     @Test
+    void aRowThatComesToAFoldFromItsLayersSideStopsOnItsCrease() {
+        // As at a corner of the torus's outer half: B runs along the x axis to the corner and
+        // stands out 0.1 towards +y; A leaves the corner at 60 degrees, into B's band, and stands
+        // out 0.05 away from B, over the edge beyond it. B's row at y = 0.1 reaches A's crease
+        // first, at x = 0.1/tan(60°); run on to A's row it would cross the whole of A's bend.
+        double angle = Math.toRadians(60);
+        Bend b = new Bend(0, 1, 0, 0, 0, 0, 1, 0, 3);
+        Bend a = new Bend(0, 0, 0, Math.cos(angle), Math.sin(angle), -Math.sin(angle), Math.cos(angle), 0, 9);
+        NestedBends nested = NestedBends.of(List.of(b, a), TOLERANCE);
+        assertArrayEquals(new int[] {0, 0}, nested.ranks(), "check the setup: two lines, nothing nested");
+        double[] past = nested.mitres(new double[] {0.1, 0.05});
+        assertEquals(-0.1 / Math.tan(angle), past[1], 1e-12);
+        assertEquals(0, past[0], "B's other end is free");
+        assertArrayEquals(new double[2], new double[] {past[2], past[3]}, "A's band holds no crease: its row runs on square");
+    }
+
+    @Test
     void rowsWhoseBandNoCreaseEntersRunOnSquare() {
         // A square's corner: the rows stand out of each other's way.
         Bend a = alongX(0, 1, 0, 0, 5);
