@@ -11,12 +11,28 @@ import java.util.function.LongSupplier;
  * end into a log or a pipe. Also that of a long wrap ({@link #wrapping}).
  */
 final class ProgressBar implements FrameSink.Progress {
-    /** Whether stderr is a terminal: the JVM has a console (stdin and stdout are one), and stderr goes there too as a rule. */
-    private static final boolean ON_TERMINAL = System.console() != null;
+    /** Whether stderr is a terminal ({@link #stderrIsTerminal}). */
+    private static final boolean ON_TERMINAL = stderrIsTerminal(System.console() != null, java.nio.file.Path.of("/proc/self/fd/2"));
     private final PrintWriter out;
     private final boolean terminal;
     private final long start = System.nanoTime();
     private int lastPrinted = -1;
+
+    /**
+     * Whether stderr is a terminal, where a bar redrawn in place can be read: on Linux, what file
+     * descriptor 2 links to ({@code stderrLink}: a terminal's device, not a file, a pipe or a
+     * socket); elsewhere, whether the JVM has a console ({@code console}: stdin and stdout are a
+     * terminal, and stderr goes there too as a rule). The console alone drew the bar, carriage
+     * returns and all, into a log that {@code 2> log} sent stderr to.
+     */
+    static boolean stderrIsTerminal(boolean console, java.nio.file.Path stderrLink) {
+        try {
+            String target = java.nio.file.Files.readSymbolicLink(stderrLink).toString();
+            return target.startsWith("/dev/pts/") || target.startsWith("/dev/tty") || target.equals("/dev/console");
+        } catch (java.io.IOException | UnsupportedOperationException | SecurityException e) {
+            return console;
+        }
+    }
 
     ProgressBar(PrintWriter out) {
         this(out, ON_TERMINAL);

@@ -5,8 +5,11 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.io.StringWriter;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
 /** A long wrap's bar: redrawn in place on a terminal, wiped at the end, and absent elsewhere. */
 class ProgressBarTest {
@@ -94,5 +97,18 @@ class ProgressBarTest {
             onTerminal.framesDone(done, 100);
         }
         assertTrue(shown.toString().chars().filter(c -> c == '\r').count() > 50, "on a terminal the bar is redrawn in place");
+    }
+
+    @Test
+    void stderrIsATerminalOnlyWhereItLinksToOne(@TempDir Path dir) throws Exception {
+        Path toTerminal = Files.createSymbolicLink(dir.resolve("2"), Path.of("/dev/pts/3"));
+        Path toLog = Files.createSymbolicLink(dir.resolve("log"), dir.resolve("err.log"));
+        Path toPipe = Files.createSymbolicLink(dir.resolve("pipe"), Path.of("pipe:[123456]"));
+        assertTrue(ProgressBar.stderrIsTerminal(false, toTerminal), "a terminal's device, whatever the console");
+        assertFalse(ProgressBar.stderrIsTerminal(true, toLog), "2> err.log with a console: no bar in the log");
+        assertFalse(ProgressBar.stderrIsTerminal(true, toPipe), "a pipe");
+        // Where there is no link to read (not Linux), the console decides.
+        assertTrue(ProgressBar.stderrIsTerminal(true, dir.resolve("absent")));
+        assertFalse(ProgressBar.stderrIsTerminal(false, dir.resolve("absent")));
     }
 }
