@@ -50,7 +50,8 @@ final class FoldCommand implements Callable<Integer> {
     @Option(names = "--max-faces", paramLabel = "N", defaultValue = "" + ScriptFolding.DEFAULT_MAX_FACES,
             description = "the most faces the folds may cut the paper into (default ${DEFAULT-VALUE}): a fold that would make more is"
             + " refused. Set for time, not memory as the wrap's is: a fold through a pile costs about the square of its layers"
-            + " (14 folds halving a square, 16,384 faces, take 3.5 s; 17 take 4.5 minutes)")
+            + " (14 folds halving a square, 16,384 faces, take 3.5 s; 17 take 4.5 minutes). A FOLD file folded all at once"
+            + " keeps the faces its pattern has, whatever the limit")
     int maxFaces;
 
     @Option(names = "--fold-frames", description = "with --export-fold: a frame after each fold in its file_frames (its faces,"
