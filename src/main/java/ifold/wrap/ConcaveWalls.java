@@ -169,6 +169,22 @@ final class ConcaveWalls {
         }
     }
 
+    /**
+     * The walls of {@code host} that hold paper at {@code level} (a layer's, or a height between
+     * two, as {@link #place} takes them): for each, the edge of the host's polygon it stands
+     * along, from and to where along it, and how far in (four numbers a wall, into {@code out}).
+     */
+    void wallsHolding(int host, double level, List<double[]> out) {
+        if (!(thickness > 0)) {
+            return;
+        }
+        for (Wall wall : wallsNear(host, level)) {
+            if (level >= wall.low() - Tolerance.RELATIVE_EQUALITY && level <= wall.high() + Tolerance.RELATIVE_EQUALITY) {
+                out.add(new double[] {wall.edge(), wall.from(), wall.to(), wall.in()});
+            }
+        }
+    }
+
     /** How far in from edge {@code edge} of {@code host}'s polygon its farthest wall stands (0 where none does). */
     double farthestWall(int host, int edge) {
         double farthest = 0;

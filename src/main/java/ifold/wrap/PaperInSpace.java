@@ -317,7 +317,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 boolean fLower = height(f) < height(g);
                 double lower = Math.min(height(f), height(g)) + (backs ? 0 : out / slopes[k]);
                 double upper = Math.max(height(f), height(g)) - out;
-                double[] cuts = cutsAlong(fChain, gChain);
+                double[] cuts = backs ? cutsAlong(fChain, gChain) : withRowCuts(cutsAlong(fChain, gChain), bend, out, lower, upper);
                 int a = c[2];
                 int b = c[3];
                 // Stretch by stretch between the points where either layer's pieces meet the crease.
@@ -353,10 +353,12 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                         double beyond1 = j == cuts.length - 1 ? past[2 * k + 1] : onCut(bend, out, fChain, gChain, t1, between);
                         double lowRow = fLower ? lower : upper;
                         double highRow = fLower ? upper : lower;
-                        rowStart = new int[] {row(f, bend, u0, v0, out, beyond0, lowRow, uMid, vMid, rowFrom == null ? -1 : rowFrom[0]),
-                            row(f, bend, u0, v0, out, beyond0, highRow, uMid, vMid, rowFrom == null ? -1 : rowFrom[1])};
-                        rowAt = new int[] {row(f, bend, u1, v1, out, beyond1, lowRow, uMid, vMid, -1),
-                            row(f, bend, u1, v1, out, beyond1, highRow, uMid, vMid, -1)};
+                        // Each row leans from its own layer's crease as that layer is placed (f's row from f's).
+                        rowStart = new int[] {row(f, bend, u0, v0, out, beyond0, lowRow, uMid, vMid, rowFrom == null ? -1 : rowFrom[0],
+                                crept(f, fFrom, u0, v0)),
+                            row(f, bend, u0, v0, out, beyond0, highRow, uMid, vMid, rowFrom == null ? -1 : rowFrom[1], crept(f, gFrom, u0, v0))};
+                        rowAt = new int[] {row(f, bend, u1, v1, out, beyond1, lowRow, uMid, vMid, -1, crept(f, fAt, u1, v1)),
+                            row(f, bend, u1, v1, out, beyond1, highRow, uMid, vMid, -1, crept(f, gAt, u1, v1))};
                     }
                     boolean squashed = !backs && !onWall[k] && insideAt(fChain, between) && insideAt(gChain, between);
                     if (!squashed) {
@@ -581,22 +583,26 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
 
         /** {@link #row(int, NestedBends.Bend, int, double, double, double)} at paper point (u, v) of the crease. */
         private int row(int f, NestedBends.Bend bend, double u, double v, double out, double along, double height) {
-            return row(f, bend, u, v, out, along, height, Double.NaN, Double.NaN, -1);
+            return row(f, bend, u, v, out, along, height, Double.NaN, Double.NaN, -1, NOT_CREPT);
         }
+
+        /** No creep: a crease point where its paper lays it. */
+        private static final double[] NOT_CREPT = {0, 0};
 
         /**
          * {@link #row(int, NestedBends.Bend, int, double, double, double)} at paper point (u, v)
          * of the crease, for the stretch of the bend whose middle is at paper point (uMid, vMid)
          * of the crease (NaN: the row point's own place): placed beside the walls and mitres that
-         * the stretch's row is. Where it lands where vertex {@code same} (-1: none) lies, that
-         * vertex: the stretch before ends there too.
+         * the stretch's row is, and moved as far as the crease point of the layer it leans from
+         * crept ({@code creep}, x and y on the host's frame; {@link #crept}). Where it lands where
+         * vertex {@code same} (-1: none) lies, that vertex: the stretch before ends there too.
          */
         private int row(int f, NestedBends.Bend bend, double u, double v, double out, double along, double height, double uMid,
-                double vMid, int same) {
+                double vMid, int same, double[] creep) {
             Isometry2 pose = sheet.pose(f);
             double length = Polygons2.length(bend.bx() - bend.ax(), bend.by() - bend.ay());
-            double px = pose.x(u, v) + bend.nx() * out + (bend.bx() - bend.ax()) / length * along;
-            double py = pose.y(u, v) + bend.ny() * out + (bend.by() - bend.ay()) / length * along;
+            double px = pose.x(u, v) + creep[0] + bend.nx() * out + (bend.bx() - bend.ax()) / length * along;
+            double py = pose.y(u, v) + creep[1] + bend.ny() * out + (bend.by() - bend.ay()) / length * along;
             double bx = Double.isNaN(uMid) ? Double.NaN : pose.x(uMid, vMid) + bend.nx() * out;
             double by = Double.isNaN(uMid) ? Double.NaN : pose.y(uMid, vMid) + bend.ny() * out;
             double[] point = new double[3];
@@ -607,6 +613,25 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 return same;
             }
             return capVertex(point, u, v);
+        }
+
+        /**
+         * How far space vertex {@code placed}, a layer's point of a crease at paper point (u, v),
+         * stands from where face f (on its host) lays that point: x and y on the host's frame, 0
+         * where it did not creep. A bend's row leans from its layer's crease where that layer is
+         * placed: where the layer stands back from a concave edge (on its mitre, or on a fold's
+         * wall), the row stands back with it. Stepped out from the crease as laid, the row lay
+         * nearer the edge than the wall its own layer ended on: at a corner of the torus where a
+         * concave edge's walls meet a convex edge, a bend whose crease ran into the corner stood
+         * out over the convex edge, its layer on the wall and its row beyond the wall's end, and
+         * the facet between ran through that end (0.059 T); and rows pushed back onto a wall in
+         * its plane overlapped it there (the torus's pairs in one plane 990 -> 790).
+         */
+        private double[] crept(int f, int placed, double u, double v) {
+            Isometry2 pose = sheet.pose(f);
+            HostFrame frame = frames[sheet.host(f)];
+            double[] point = {xyz.get(3 * placed), xyz.get(3 * placed + 1), xyz.get(3 * placed + 2)};
+            return new double[] {frame.localX(point) - pose.x(u, v), frame.localY(point) - pose.y(u, v)};
         }
 
         /**
@@ -1298,6 +1323,67 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             cuts[0] = 0;
             cuts[count - 1] = 1;
             return java.util.Arrays.copyOf(cuts, count);
+        }
+
+        /**
+         * The cuts along a bend's crease ({@link #cutsAlong}), with those where its rows,
+         * {@code out} beyond it at heights {@code lower} and {@code upper}, pass the end of a wall
+         * that holds their height and that they come nearer the edge than somewhere. The rows
+         * stand between the bend's layers, where walls may hold them that hold neither layer, and
+         * no piece of either layer is cut there: a stretch whose middle lay beyond such a wall's
+         * end and whose end lay beside it placed its row at that end on the edge's side of the
+         * wall, and the bend ran through it (on the torus, a sliver of a pass folded between a
+         * concave edge and a crease 11 degrees off it, 0.012 T). Cut there, each stretch's rows lie
+         * wholly beside the wall or wholly beyond its end.
+         */
+        private double[] withRowCuts(double[] cuts, NestedBends.Bend bend, double out, double lower, double upper) {
+            HostFrame frame = frames[bend.host()];
+            if (frame.mitre() == null) {
+                return cuts;
+            }
+            double[] all = java.util.Arrays.copyOf(cuts, cuts.length + 4);
+            int n = cuts.length;
+            List<double[]> held = new ArrayList<>();
+            for (double height : new double[] {lower, upper}) {
+                held.clear();
+                walls.wallsHolding(bend.host(), height / sheet.thickness() - 0.5, held);
+                for (double[] wall : held) {
+                    // The row from the crease's end a to its end b: how far along the wall's edge and in from it.
+                    double[] edge = frame.edge((int) wall[0]);
+                    double ax = bend.ax() + bend.nx() * out - edge[0];
+                    double ay = bend.ay() + bend.ny() * out - edge[1];
+                    double bx = bend.bx() + bend.nx() * out - edge[0];
+                    double by = bend.by() + bend.ny() * out - edge[1];
+                    double alongA = (ax * edge[2] + ay * edge[3]) / edge[4];
+                    double alongB = (bx * edge[2] + by * edge[3]) / edge[4];
+                    double inA = (ay * edge[2] - ax * edge[3]) / edge[4];
+                    double inB = (by * edge[2] - bx * edge[3]) / edge[4];
+                    if (!(Math.min(inA, inB) < wall[3]) || alongA == alongB) {
+                        continue; // the row keeps beyond the wall's line, or runs square to its edge
+                    }
+                    for (double end : new double[] {wall[1], wall[2]}) {
+                        double t = (end - alongA) / (alongB - alongA);
+                        if (t > SAME_CUT && t < 1 - SAME_CUT) {
+                            if (n == all.length) {
+                                all = java.util.Arrays.copyOf(all, 2 * n);
+                            }
+                            all[n++] = t;
+                        }
+                    }
+                }
+            }
+            if (n == cuts.length) {
+                return cuts;
+            }
+            java.util.Arrays.sort(all, 0, n);
+            double[] merged = new double[n];
+            int count = 0;
+            for (int k = 0; k < n; k++) {
+                if (count == 0 || all[k] - merged[count - 1] > SAME_CUT) {
+                    merged[count++] = all[k];
+                }
+            }
+            return java.util.Arrays.copyOf(merged, count);
         }
 
         /** From a to b, t of the way (a and b themselves at the ends). */

@@ -149,15 +149,15 @@ class WrappedPaperCollisionsTest {
     /**
      * Concave edges: each layer stands back from the edge to its mitre, or to the wall of a fold
      * made along it (PaperInSpace, ConcaveWalls), so the layers of the two faces no longer run
-     * into each other: the torus's inner half crossed in 38,826 pairs (7.4 T deep), now in 3,181,
-     * all at bends near such an edge; counted, printed, not yet clean.
+     * into each other: the torus's inner half crossed in 38,826 pairs (7.4 T deep), then 3,181 at
+     * bends near such an edge, then 10 (0.059 T) where a bend's rows stood between walls at a
+     * sliver of a pass and at a corner; now none. Bends there still overlap in one plane.
      */
     @Test
-    void theTorusCollidesOnlyNearItsConcaveEdges() throws Exception {
+    void theTorusCrossesNothingAtItsConcaveEdges() throws Exception {
         Result result = wrapAndCheck(Path.of("models", "torus.off"));
         assertEquals(0, result.modelCrossings() + result.pointsInside(), result::summary);
-        assertTrue(result.crossingPairs() < 3_883, "a tenth of before the layers were mitred: " + result.summary());
-        assertEquals(result.crossingPairs(), result.capPairs(), "flat paper crosses no flat paper: " + result.summary());
+        assertEquals(0, result.crossingPairs(), result::summary);
     }
 
     /**
