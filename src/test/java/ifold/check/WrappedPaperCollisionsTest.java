@@ -163,7 +163,8 @@ class WrappedPaperCollisionsTest {
     /**
      * Paper kept out of the solid at concave edges of 90 degrees, where the layers of each face
      * ran into the solid across (the shared square_frame: 184 crossings of the model and 260
-     * points inside; t_prism 86 and 108) and into each other (4,112 and 2,206 crossing pairs).
+     * points inside; t_prism 86 and 108) and into each other (4,112 and 2,206 crossing pairs;
+     * none now, their walls along the cuts of their faces still overlapping in one plane).
      */
     @ParameterizedTest
     @ValueSource(strings = {"square_frame.off", "t_prism.off"})
@@ -172,16 +173,15 @@ class WrappedPaperCollisionsTest {
         assumeTrue(Files.isRegularFile(file), "../shared/meshes is absent");
         Result result = wrapAndCheck(file);
         assertEquals(0, result.modelCrossings() + result.pointsInside(), result::summary);
-        assertTrue(result.crossingPairs() < 200, result::summary);
-        assertEquals(result.crossingPairs(), result.capPairs(), "flat paper crosses no flat paper: " + result.summary());
+        assertEquals(0, result.crossingPairs(), result::summary);
     }
 
-    /** The L-prism of WrapTest, one concave edge of 90 degrees: nothing in the solid, flat paper clear of flat paper. */
+    /** The L-prism of WrapTest, one concave edge of 90 degrees: nothing in the solid, no paper crossing paper. */
     @Test
     void anLShapedPrismKeepsItsPaperOutOfTheSolid() throws Exception {
         Result result = wrapAndCheck(ifold.wrap.WrapTest.lPrism(), "l-prism");
         assertEquals(0, result.modelCrossings() + result.pointsInside(), result::summary);
-        assertEquals(result.crossingPairs(), result.capPairs(), "flat paper crosses no flat paper: " + result.summary());
+        assertEquals(0, result.crossingPairs(), result::summary);
     }
 
     static Stream<Path> scripts() throws Exception {
