@@ -204,7 +204,7 @@ final class MainWindow extends JFrame {
         if (another && parameters.resetModelParameters()) {
             say("width and thickness back to this model's defaults");
         }
-        Job job = !model ? new Job.Script(file) : parameters.card().equals("view") ? parameters.view(file) : parameters.wrap(file);
+        Job job = !model ? new Job.Script(file, parameters.scriptMaxFaces.getText()) : parameters.card().equals("view") ? parameters.view(file) : parameters.wrap(file);
         Path folder = file.toAbsolutePath().getParent();
         if (folder != null) {
             settings.put("folder", folder.toString());
@@ -262,7 +262,7 @@ final class MainWindow extends JFrame {
     void playScript() {
         for (Path file : settings.recent()) {
             if (!ModelFile.isModelName(file) && Files.isRegularFile(file)) {
-                parameters.show(new Job.Script(file));
+                parameters.show(new Job.Script(file, parameters.scriptMaxFaces.getText()));
                 return;
             }
         }

@@ -87,6 +87,7 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
     // The script.
     private Path script;
     private final JLabel scriptName = new JLabel("no script");
+    final JTextField scriptMaxFaces = new JTextField();
 
     /**
      * @param changed told on the event thread of the job as it now stands, 300 ms after the last change
@@ -137,6 +138,8 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
         chooseScriptButton.addActionListener(e -> chooseScript.run());
         play.row("script", "Script", scriptName, null);
         play.wide(chooseScriptButton);
+        play.row("maxFaces", "Max faces", scriptMaxFaces, String.format(java.util.Locale.ROOT,
+                "blank: %,d; a fold through a pile costs about the square of its layers", ifold.script.ScriptFolding.DEFAULT_MAX_FACES));
         deck.add(top(play.panel), "script");
 
         Card look = new Card("View a model", "view");
@@ -315,7 +318,7 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
         return switch (card) {
             case "turn" -> turn();
             case "wrap" -> wrap(model);
-            case "script" -> new Job.Script(script);
+            case "script" -> new Job.Script(script, scriptMaxFaces.getText());
             case "view" -> view(model);
             default -> zigzag();
         };
@@ -349,6 +352,7 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
                 script = s.file();
                 scriptName.setText(script == null ? "no script" : script.getFileName().toString());
                 scriptName.setToolTipText(script == null ? null : script.toString());
+                scriptMaxFaces.setText(s.maxFaces());
                 card = "script";
             } else if (job instanceof Job.View v) {
                 setModel(v.model());

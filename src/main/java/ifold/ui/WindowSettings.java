@@ -36,6 +36,8 @@ final class WindowSettings {
             window.settings.put("wrap.maxFaces", w.maxFaces());
             window.settings.put("wrap.strict", Boolean.toString(w.strict()));
             window.settings.put("wrap.method", w.method().word());
+        } else if (job instanceof Job.Script s) {
+            window.settings.put("script.maxFaces", s.maxFaces());
         } else if (job instanceof Job.View v) {
             window.settings.put("view.show", v.show().name());
             window.settings.put("view.colors", v.colors().name());
@@ -63,6 +65,7 @@ final class WindowSettings {
         window.parameters.wrapWidth.setText(window.settings.get("wrap.width", ""));
         window.parameters.wrapThickness.setText(window.settings.get("wrap.thickness", ""));
         window.parameters.wrapMaxFaces.setText(window.settings.get("wrap.maxFaces", ""));
+        window.parameters.scriptMaxFaces.setText(window.settings.get("script.maxFaces", ""));
         window.parameters.wrapStrict.setSelected(Boolean.parseBoolean(window.settings.get("wrap.strict", "false")));
         window.parameters.wrapMethod.setSelectedIndex(
                 window.settings.get("wrap.method", "zigzag").equals(ifold.wrap.Wrap.Method.HINGE.word()) ? 1 : 0);

@@ -55,8 +55,16 @@ public sealed interface Job {
         }
     }
 
-    /** A fold script, or a FOLD crease pattern folded one crease line at a time. */
-    record Script(Path file) implements Job {
+    /**
+     * A fold script, or a FOLD file.
+     *
+     * @param maxFaces the most faces the folds may cut the paper into; blank for the command line's default
+     */
+    record Script(Path file, String maxFaces) implements Job {
+        /** The script with the command line's limit on faces. */
+        public Script(Path file) {
+            this(file, "");
+        }
     }
 
     /**

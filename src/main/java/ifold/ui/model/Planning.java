@@ -61,7 +61,7 @@ public final class Planning {
             } else if (job instanceof Job.WrapModel w) {
                 wrapOptions(w, problems);
             } else if (job instanceof Job.Script s) {
-                requireFile(s.file(), "script", problems);
+                scriptMaxFaces(s, problems);
             } else if (job instanceof Job.View v) {
                 requireFile(v.model(), "model", problems);
             }
@@ -278,18 +278,48 @@ public final class Planning {
                 });
     }
 
+    /**
+     * The script's limit on faces (blank: the command line's default), checked as the command
+     * line checks {@code --max-faces}; -1 with a problem where it is not a whole number of at least 1.
+     */
+    private static int scriptMaxFaces(Job.Script job, List<Problem> problems) {
+        requireFile(job.file(), "script", problems);
+        String limit = job.maxFaces() == null ? "" : job.maxFaces().strip();
+        if (limit.isEmpty()) {
+            return ScriptFolding.DEFAULT_MAX_FACES;
+        }
+        try {
+            int maxFaces = Integer.parseInt(limit);
+            if (maxFaces >= 1) {
+                return maxFaces;
+            }
+            problems.add(new Problem("maxFaces", "must be at least 1, got " + maxFaces));
+        } catch (NumberFormatException e) {
+            problems.add(new Problem("maxFaces", "'" + limit + "' is not a whole number"));
+        }
+        return -1;
+    }
+
+    /** The command line's way to raise the limit on a script's faces, as its refusals name it. */
+    private static final String RAISE_ON_THE_COMMAND_LINE = "--max-faces raises the limit";
+
     private static Plan script(Job.Script job, Progress progress) throws JobFailure {
         Path file = job.file();
+        int maxFaces = scriptMaxFaces(job, new ArrayList<>());
         progress.stage("reading " + file.getFileName());
         ScriptJob.Outcome folding;
         try {
-            folding = ScriptJob.run(file, ScriptFolding.DEFAULT_MAX_FACES, what -> {
+            folding = ScriptJob.run(file, maxFaces, what -> {
                 progress.check();
                 progress.stage(what);
             });
         } catch (IOException e) {
             throw new JobFailure(new Problem("script", ModelFile.readError(file, e)));
         } catch (ScriptJob.Refused e) {
+            // Over the limit on faces: the window's field raises it, and is where the refusal shows.
+            if (e.getMessage().contains(RAISE_ON_THE_COMMAND_LINE)) {
+                throw new JobFailure(new Problem("maxFaces", e.getMessage().replace(RAISE_ON_THE_COMMAND_LINE, "Max faces raises the limit")));
+            }
             throw new JobFailure(e.getMessage());
         }
         progress.check();
@@ -297,7 +327,7 @@ public final class Planning {
         PaperInSpace folded = folding.folded();
         Map<String, Object> figures = folding.figures();
         // Folded once more on ideal paper where thick (ofScript): once, for the check and the export.
-        List<FoldFile.Folded> sheets = folding.sheets(ScriptFolding.DEFAULT_MAX_FACES);
+        List<FoldFile.Folded> sheets = folding.sheets(maxFaces);
         LayerOrders.addTo(figures, sheets, "script");
         Collisions.addTo(figures, List.of(folded), result.sheet().thickness(), null);
         Plan.Shown shown = scriptScene(folding);

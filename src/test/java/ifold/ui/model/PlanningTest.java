@@ -227,6 +227,29 @@ class PlanningTest {
     }
 
     @Test
+    void aScriptsLimitOnFacesIsItsFieldsProblemAndRaisesIt() throws Exception {
+        // Four folds halving a square: 32 faces at the fourth (the command line's FoldCommandTest, one fold fewer).
+        String script = "paper square 1024\nthickness 0.0001\n"
+                + "fold valley 180 points 512 0 0 512 1 0 right\n"
+                + "fold valley 180 points 0 512 0 1 512 0 left\n"
+                + "fold valley 180 points 256 0 0 256 1 0 right\n"
+                + "fold valley 180 points 0 256 0 1 256 0 left\n"
+                + "fold valley 180 points 128 0 0 128 1 0 right\n";
+        Path file = Files.writeString(dir.resolve("halve5.fold"), script);
+        Problem zero = Planning.check(new Job.Script(file, "0")).get(0);
+        assertEquals("maxFaces", zero.field());
+        Run run = cli("fold", file.toString(), "--no-view", "--max-faces", "0");
+        assertEquals("ifold: option --max-faces: " + zero.message(), run.err().strip(), "the command line's message");
+        assertEquals("maxFaces", Planning.check(new Job.Script(file, "many")).get(0).field());
+        JobFailure few = assertThrows(JobFailure.class, () -> Planning.plan(new Job.Script(file, "16"), Progress.NONE));
+        assertEquals("maxFaces", few.problem().field(), "a script refused at the limit marks the limit");
+        assertTrue(few.problem().message().contains("more than the 16 allowed") && few.problem().message().contains("Max faces raises the limit")
+                && !few.problem().message().contains("--max-faces"), few.problem().message());
+        assertFalse(Planning.plan(new Job.Script(file, "64"), Progress.NONE).folds().isEmpty(), "raised, it folds");
+        assertFalse(Planning.plan(new Job.Script(file), Progress.NONE).folds().isEmpty(), "blank: the command line's default");
+    }
+
+    @Test
     void theWrapsLimitOnFacesIsItsFieldsProblem() throws Exception {
         Path cube = Path.of("models", "cube.off");
         Problem zero = Planning.check(new Job.WrapModel(cube, "", "", "0")).get(0);
