@@ -254,7 +254,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     return; // below, once every bend is known
                 }
                 // the paper runs on flat, or bends over an edge with no thickness where the two sides meet
-                addCap(chain(f, i, a, b), chain(g, side(g, a, b), a, b), a, b, pieceStart[g + 1] - 1, true, false, caps, capAfter);
+                addCap(chain(f, i, a, b), chain(g, side(g, a, b), a, b), a, b, pieceStart[g + 1] - 1, -1, false, caps, capAfter);
             });
             // Each bend's faces f and g, its crease a, b, and where each face's paper begins and ends along it.
             int[][] bendCorners = new int[bends.size()][];
@@ -304,7 +304,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 double[][] fChain = chain(f, bendEdges.get(5 * k + 1), c[2], c[3]);
                 double[][] gChain = chain(g, side(g, c[2], c[3]), c[2], c[3]);
                 if (out == 0 && !ConcaveWalls.standsBack(backToBack, onWall, k)) {
-                    addCap(fChain, gChain, c[2], c[3], after, false, !onWall[k], caps, capAfter);
+                    addCap(fChain, gChain, c[2], c[3], after, bend.host(), !onWall[k], caps, capAfter);
                     continue;
                 }
                 if (fChain.length == 1 && gChain.length == 1) {
@@ -366,14 +366,11 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                         int fm1 = rowAt[0];
                         int gm0 = rowStart[rowStart.length - 1];
                         int gm1 = rowAt[rowAt.length - 1];
-                        caps.add(new int[] {fFrom, fAt, fm1, fm0});
-                        capAfter.add(after);
+                        addBendCap(bend.host(), new int[] {fFrom, fAt, fm1, fm0}, after, caps, capAfter);
                         if (!backs) {
-                            caps.add(new int[] {fm0, fm1, gm1, gm0});
-                            capAfter.add(after);
+                            addBendCap(bend.host(), new int[] {fm0, fm1, gm1, gm0}, after, caps, capAfter);
                         }
-                        caps.add(new int[] {gm0, gm1, gAt, gFrom});
-                        capAfter.add(after);
+                        addBendCap(bend.host(), new int[] {gm0, gm1, gAt, gFrom}, after, caps, capAfter);
                     }
                     rowFrom = rowAt;
                 }
@@ -1276,8 +1273,9 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          * cut (where one is cut and the other not, a point on the other's edge there, as it
          * lies); where {@code flat}, none where the two lie on each other.
          */
-        private void addCap(double[][] f, double[][] g, int a, int b, int after, boolean flat, boolean dropSquashed, List<int[]> caps,
+        private void addCap(double[][] f, double[][] g, int a, int b, int after, int bendHost, boolean dropSquashed, List<int[]> caps,
                 IntList capAfter) {
+            boolean flat = bendHost < 0;
             double[] cuts = cutsAlong(f, g);
             // Stretch by stretch, each with its ends from the pieces that run along it (see the bends in pieces).
             for (int k = 1; k < cuts.length; k++) {
@@ -1295,12 +1293,82 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 // Paper of both layers squashed where it ends (a fold inside a wall's, or running
                 // into a mitre): the bend is not there, where the paper across has the room.
                 boolean squashed = dropSquashed && insideAt(f, middle) && insideAt(g, middle);
-                if (!squashed && !(flat && sameOrAt(fromF, fromG) && sameOrAt(toF, toG))) {
+                if (flat && !(sameOrAt(fromF, fromG) && sameOrAt(toF, toG))) {
                     caps.add(new int[] {fromF, toF, toG, fromG});
                     capAfter.add(after);
+                } else if (!flat && !squashed) {
+                    addBendCap(bendHost, new int[] {fromF, toF, toG, fromG}, after, caps, capAfter);
                 }
             }
         }
+
+        /**
+         * Adds a facet of a bend on {@code host} (a quad, its corners in order), split so that no
+         * triangle of it lies on the mitre of a concave edge of the host where it need not: there a
+         * layer's paper ends (pressed onto the mitre's line where it would reach nearer the edge,
+         * no area), and the paper going over the edge, or the paper of the host across ending from
+         * the other side, lies in that plane too. A bend's stretch where one layer is pressed onto
+         * its mitre and the other is not joins the pressed layer's bit of the mitre's line to the
+         * other layer's crease, which meets the mitre at the stretch's end: three corners of its
+         * quad lie on the mitre, and the quad, drawn as triangles from its first corner, had one in
+         * the mitre's plane, a sliver as long as the bend is high. On the torus, beside the end of a
+         * 45 degree turn's crease, where two layers joined by it both run to a concave edge and go
+         * over it, such slivers lay on the paper going over the edge (its pairs in one plane 790 ->
+         * 249). Split along the diagonal from the corner off the mitre, both triangles leave its
+         * plane and touch it only along that diagonal's far side. A facet wholly on the mitre is
+         * kept as it is: left out, it left the pressed layer's corners with no cap, torn from the
+         * paper beside them on the sheet.
+         */
+        private void addBendCap(int host, int[] quad, int after, List<int[]> caps, IntList capAfter) {
+            HostFrame frame = frames[host];
+            if (frame.mitre() != null && sheet.thickness() > 0) {
+                for (int k = 0; k < frame.mitre().length; k++) {
+                    if (frame.mitre()[k] == null) {
+                        continue;
+                    }
+                    int off = -1;
+                    int offCount = 0;
+                    for (int c = 0; c < quad.length; c++) {
+                        if (!onMitre(frame, k, quad[c])) {
+                            off = c;
+                            offCount++;
+                        }
+                    }
+                    if (offCount == 1 && quad.length == 4) {
+                        // Split along the diagonal from the corner off the mitre: both triangles leave its plane.
+                        caps.add(new int[] {quad[off], quad[(off + 1) % 4], quad[(off + 2) % 4]});
+                        caps.add(new int[] {quad[off], quad[(off + 2) % 4], quad[(off + 3) % 4]});
+                        capAfter.add(after);
+                        capAfter.add(after);
+                        return;
+                    }
+                }
+            }
+            caps.add(quad);
+            capAfter.add(after);
+        }
+
+        /** Whether space vertex {@code vertex} lies on the mitre of concave edge k of the frame's host, within {@link #ON_MITRE}. */
+        private boolean onMitre(HostFrame frame, int k, int vertex) {
+            double[] point = {xyz.get(3 * vertex), xyz.get(3 * vertex + 1), xyz.get(3 * vertex + 2)};
+            double x = frame.localX(point);
+            double y = frame.localY(point);
+            double tan = frame.mitreAt(k, x, y);
+            if (!(tan > 0)) {
+                return false;
+            }
+            double[] edge = frame.edge(k);
+            double in = ((x - edge[0]) * -edge[3] + (y - edge[1]) * edge[2]) / edge[4];
+            return Math.abs(in - frame.height(point) * tan) <= ON_MITRE * sheet.thickness();
+        }
+
+        /**
+         * A point this near a mitre's plane, in thicknesses, lies on it: half a thousandth, half
+         * the depth from which the collision check counts contact (as {@link NestedBends} takes
+         * bends to overlap), so that a triangle whose corners all lie this near the plane is one
+         * the check finds in it.
+         */
+        private static final double ON_MITRE = 5e-4;
 
         /** Where either chain's edges begin or end along the crease (0 to 1), in order, each once. */
         private static double[] cutsAlong(double[][] f, double[][] g) {
