@@ -330,19 +330,20 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 // bend, and the bend it wraps, twisted through each other and through the walls.
                 int[] rowFrom = null;
                 for (int j = 1; j < cuts.length; j++) {
-                    double t0 = cuts[j - 1];
-                    double t1 = cuts[j];
-                    double between = (t0 + t1) / 2;
-                    double u0 = along(sheet.u(a), sheet.u(b), t0);
-                    double v0 = along(sheet.v(a), sheet.v(b), t0);
-                    double u1 = along(sheet.u(a), sheet.u(b), t1);
-                    double v1 = along(sheet.v(a), sheet.v(b), t1);
+                    Stretch stretch = stretch(fChain, gChain, a, b, cuts[j - 1], cuts[j]);
+                    double t0 = stretch.from();
+                    double t1 = stretch.to();
+                    double between = stretch.middle();
+                    double u0 = stretch.u0();
+                    double v0 = stretch.v0();
+                    double u1 = stretch.u1();
+                    double v1 = stretch.v1();
                     double uMid = along(sheet.u(a), sheet.u(b), between);
                     double vMid = along(sheet.v(a), sheet.v(b), between);
-                    int fFrom = pointAt(fChain, t0, u0, v0, between);
-                    int fAt = pointAt(fChain, t1, u1, v1, between);
-                    int gFrom = pointAt(gChain, t0, u0, v0, between);
-                    int gAt = pointAt(gChain, t1, u1, v1, between);
+                    int fFrom = stretch.fFrom();
+                    int fAt = stretch.fTo();
+                    int gFrom = stretch.gFrom();
+                    int gAt = stretch.gTo();
                     int[] rowAt;
                     int[] rowStart;
                     if (backs) {
@@ -1268,10 +1269,33 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         }
 
         /**
+         * One stretch of a crease from a to b, between two points where either layer's pieces meet
+         * it ({@code from} and {@code to} along it): its middle, its ends on the sheet, and the
+         * vertices each layer's chain has at its ends, taken from the pieces that run along it
+         * ({@link #pointAt}).
+         */
+        private record Stretch(double from, double to, double middle, double u0, double v0, double u1, double v1, int fFrom, int fTo,
+                int gFrom, int gTo) {
+        }
+
+        /** The stretch of crease a, b from {@code from} to {@code to} along it, between the layers' chains f and g. */
+        private Stretch stretch(double[][] f, double[][] g, int a, int b, double from, double to) {
+            double middle = (from + to) / 2;
+            double u0 = along(sheet.u(a), sheet.u(b), from);
+            double v0 = along(sheet.v(a), sheet.v(b), from);
+            double u1 = along(sheet.u(a), sheet.u(b), to);
+            double v1 = along(sheet.v(a), sheet.v(b), to);
+            return new Stretch(from, to, middle, u0, v0, u1, v1, pointAt(f, from, u0, v0, middle), pointAt(f, to, u1, v1, middle),
+                    pointAt(g, from, u0, v0, middle), pointAt(g, to, u1, v1, middle));
+        }
+
+        /**
          * The cap between two layers' paper along one crease (or edge), each given as its chain
          * from a to b ({@link #chain}): a quad between the two for each stretch where neither is
          * cut (where one is cut and the other not, a point on the other's edge there, as it
-         * lies); where {@code flat}, none where the two lie on each other.
+         * lies). For paper running on flat or over an edge ({@code bendHost} -1), none where the
+         * two lie on each other; for a bend, its facets as {@link #addBendCap} makes them on its
+         * host {@code bendHost}.
          */
         private void addCap(double[][] f, double[][] g, int a, int b, int after, int bendHost, boolean dropSquashed, List<int[]> caps,
                 IntList capAfter) {
@@ -1279,17 +1303,12 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             double[] cuts = cutsAlong(f, g);
             // Stretch by stretch, each with its ends from the pieces that run along it (see the bends in pieces).
             for (int k = 1; k < cuts.length; k++) {
-                double t0 = cuts[k - 1];
-                double t1 = cuts[k];
-                double middle = (t0 + t1) / 2;
-                double u0 = along(sheet.u(a), sheet.u(b), t0);
-                double v0 = along(sheet.v(a), sheet.v(b), t0);
-                double u1 = along(sheet.u(a), sheet.u(b), t1);
-                double v1 = along(sheet.v(a), sheet.v(b), t1);
-                int fromF = pointAt(f, t0, u0, v0, middle);
-                int toF = pointAt(f, t1, u1, v1, middle);
-                int fromG = pointAt(g, t0, u0, v0, middle);
-                int toG = pointAt(g, t1, u1, v1, middle);
+                Stretch stretch = stretch(f, g, a, b, cuts[k - 1], cuts[k]);
+                double middle = stretch.middle();
+                int fromF = stretch.fFrom();
+                int toF = stretch.fTo();
+                int fromG = stretch.gFrom();
+                int toG = stretch.gTo();
                 // Paper of both layers squashed where it ends (a fold inside a wall's, or running
                 // into a mitre): the bend is not there, where the paper across has the room.
                 boolean squashed = dropSquashed && insideAt(f, middle) && insideAt(g, middle);
