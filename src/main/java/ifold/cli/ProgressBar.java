@@ -2,7 +2,10 @@ package ifold.cli;
 
 import ifold.image.FrameSink;
 import ifold.wrap.Wrap;
+import java.io.IOException;
 import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.Locale;
 import java.util.function.LongSupplier;
 
@@ -12,7 +15,7 @@ import java.util.function.LongSupplier;
  */
 final class ProgressBar implements FrameSink.Progress {
     /** Whether stderr is a terminal ({@link #stderrIsTerminal}). */
-    private static final boolean ON_TERMINAL = stderrIsTerminal(System.console() != null, java.nio.file.Path.of("/proc/self/fd/2"));
+    private static final boolean ON_TERMINAL = stderrIsTerminal(System.console() != null, Path.of("/proc/self/fd/2"));
     private final PrintWriter out;
     private final boolean terminal;
     private final long start = System.nanoTime();
@@ -25,11 +28,11 @@ final class ProgressBar implements FrameSink.Progress {
      * terminal, and stderr goes there too as a rule). The console alone drew the bar, carriage
      * returns and all, into a log that {@code 2> log} sent stderr to.
      */
-    static boolean stderrIsTerminal(boolean console, java.nio.file.Path stderrLink) {
+    static boolean stderrIsTerminal(boolean console, Path stderrLink) {
         try {
-            String target = java.nio.file.Files.readSymbolicLink(stderrLink).toString();
+            String target = Files.readSymbolicLink(stderrLink).toString();
             return target.startsWith("/dev/pts/") || target.startsWith("/dev/tty") || target.equals("/dev/console");
-        } catch (java.io.IOException | UnsupportedOperationException | SecurityException e) {
+        } catch (IOException | UnsupportedOperationException | SecurityException e) {
             return console;
         }
     }
