@@ -33,6 +33,7 @@ final class ProgressBar implements FrameSink.Progress {
             String target = Files.readSymbolicLink(stderrLink).toString();
             return target.startsWith("/dev/pts/") || target.startsWith("/dev/tty") || target.equals("/dev/console");
         } catch (IOException | UnsupportedOperationException | SecurityException e) {
+            // No /proc (not Linux), descriptor 2 not a link, or not ours to read: the console decides.
             return console;
         }
     }

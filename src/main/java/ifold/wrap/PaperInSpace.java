@@ -1303,20 +1303,16 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             double[] cuts = cutsAlong(f, g);
             // Stretch by stretch, each with its ends from the pieces that run along it (see the bends in pieces).
             for (int k = 1; k < cuts.length; k++) {
-                Stretch stretch = stretch(f, g, a, b, cuts[k - 1], cuts[k]);
-                double middle = stretch.middle();
-                int fromF = stretch.fFrom();
-                int toF = stretch.fTo();
-                int fromG = stretch.gFrom();
-                int toG = stretch.gTo();
+                Stretch s = stretch(f, g, a, b, cuts[k - 1], cuts[k]);
+                int[] quad = {s.fFrom(), s.fTo(), s.gTo(), s.gFrom()};
                 // Paper of both layers squashed where it ends (a fold inside a wall's, or running
                 // into a mitre): the bend is not there, where the paper across has the room.
-                boolean squashed = dropSquashed && insideAt(f, middle) && insideAt(g, middle);
-                if (flat && !(sameOrAt(fromF, fromG) && sameOrAt(toF, toG))) {
-                    caps.add(new int[] {fromF, toF, toG, fromG});
+                boolean squashed = dropSquashed && insideAt(f, s.middle()) && insideAt(g, s.middle());
+                if (flat && !(sameOrAt(s.fFrom(), s.gFrom()) && sameOrAt(s.fTo(), s.gTo()))) {
+                    caps.add(quad);
                     capAfter.add(after);
                 } else if (!flat && !squashed) {
-                    addBendCap(bendHost, new int[] {fromF, toF, toG, fromG}, after, caps, capAfter);
+                    addBendCap(bendHost, quad, after, caps, capAfter);
                 }
             }
         }
