@@ -215,10 +215,10 @@ public final class SheetEdit {
     /**
      * As {@link #move(Set, int, Isometry2, Placement)}; with a {@code tuckPlace} (not null),
      * a tuck ({@link #tuckUnder}), placed as {@link TuckPlacement#placeTucked} says, with the stack's
-     * levels before the move {@code levelBefore}.
+     * levels before the move {@code levelBefore} (by face: read for the stack's faces only).
      */
     void move(Set<Integer> faces, int toHost, Isometry2 frameChange, Placement placement, TuckPlacement.TuckPlace tuckPlace,
-            Map<Integer, Integer> levelBefore) {
+            int[] levelBefore) {
         if (faces.isEmpty()) {
             return;
         }

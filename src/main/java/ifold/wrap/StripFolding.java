@@ -545,16 +545,7 @@ final class StripFolding {
         double dx = c[2 * to] - c[2 * from];
         double dy = c[2 * to + 1] - c[2 * from + 1];
         double length = Math.hypot(dx, dy);
-        double nx = dy / length;
-        double ny = -dx / length;
-        double farthest = Double.NEGATIVE_INFINITY;
-        for (int f : sheet.facesOn(host)) {
-            double[] xy = sheet.placed(f);
-            for (int k = 0; k < xy.length; k += 2) {
-                farthest = Math.max(farthest, nx * (xy[k] - c[2 * from]) + ny * (xy[k + 1] - c[2 * from + 1]));
-            }
-        }
-        return farthest;
+        return sheet.farthestBeyond(host, c[2 * from], c[2 * from + 1], dy / length, -dx / length);
     }
 
     /**
