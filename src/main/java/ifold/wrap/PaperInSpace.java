@@ -1331,8 +1331,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          * over it, such slivers lay on the paper going over the edge (its pairs in one plane 790 ->
          * 249). Split along the diagonal from the corner off the mitre, both triangles leave its
          * plane and touch it only along that diagonal's far side. A facet wholly on the mitre is
-         * kept as it is: left out, it left the pressed layer's corners with no cap, torn from the
-         * paper beside them on the sheet.
+         * pressed flat there, as the layer's paper is: {@link #addPressed}.
          */
         private void addBendCap(int host, int[] quad, int after, List<int[]> caps, IntList capAfter) {
             HostFrame frame = frames[host];
@@ -1349,6 +1348,10 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                             offCount++;
                         }
                     }
+                    if (offCount == 0 && quad.length == 4) {
+                        addPressed(quad, after, caps, capAfter);
+                        return;
+                    }
                     if (offCount == 1 && quad.length == 4) {
                         // Split along the diagonal from the corner off the mitre: both triangles leave its plane.
                         caps.add(new int[] {quad[off], quad[(off + 1) % 4], quad[(off + 2) % 4]});
@@ -1361,6 +1364,36 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             }
             caps.add(quad);
             capAfter.add(after);
+        }
+
+        /**
+         * A bend's facet whose every corner is pressed onto the mitre of a concave edge, drawn as
+         * the paper pressed there is, with no area: along each of its sides that runs on a layer's
+         * crease (corners 0 to 1, or 2 to 3, one of them made for a layer's paper), a cap of no
+         * area, which keeps that layer's corner joined to the bend; nothing for a side between the
+         * bend's rows. Drawn whole, such facets lay in the mitre's plane, where the host across
+         * presses its own paper from the other side: where a crease over a convex edge runs into a
+         * concave one, the upper layer of its bend and the rows leaning from it are pressed onto
+         * the mitre, and on the torus the bends of the two hosts beside each inner meridian edge,
+         * their creases over the one parallel through its end, overlapped there (228 of its 249
+         * pairs in one plane). Left out without these caps, the pressed layer's corner had no cap
+         * and was torn from the paper beside it on the sheet.
+         */
+        private void addPressed(int[] quad, int after, List<int[]> caps, IntList capAfter) {
+            for (int side = 0; side < 4; side += 2) {
+                int a = quad[side];
+                int b = quad[side + 1];
+                if (copyHost.get(a) < 0 && copyHost.get(b) < 0) {
+                    continue; // between the bend's rows, or points made on a crease between a layer's corners
+                }
+                double[] middle = new double[3];
+                for (int d = 0; d < 3; d++) {
+                    middle[d] = (xyz.get(3 * a + d) + xyz.get(3 * b + d)) / 2;
+                }
+                int m = capVertex(middle, (uv.get(2 * a) + uv.get(2 * b)) / 2, (uv.get(2 * a + 1) + uv.get(2 * b + 1)) / 2);
+                caps.add(new int[] {a, m, b});
+                capAfter.add(after);
+            }
         }
 
         /** Whether space vertex {@code vertex} lies on the mitre of concave edge k of the frame's host, within {@link #ON_MITRE}. */

@@ -151,13 +151,17 @@ class WrappedPaperCollisionsTest {
      * made along it (PaperInSpace, ConcaveWalls), so the layers of the two faces no longer run
      * into each other: the torus's inner half crossed in 38,826 pairs (7.4 T deep), then 3,181 at
      * bends near such an edge, then 10 (0.059 T) where a bend's rows stood between walls at a
-     * sliver of a pass and at a corner; now none. Bends there still overlap in one plane.
+     * sliver of a pass and at a corner; now none. Bends there overlapped in one plane in 249
+     * pairs, 228 of them facets pressed wholly onto a mitre from its two sides, now drawn with no
+     * area (PaperInSpace.addPressed); 21 are left, where two bends fan from one corner of their
+     * creases onto one stretch of a mitre's line (docs/wrap.md, Limits).
      */
     @Test
     void theTorusCrossesNothingAtItsConcaveEdges() throws Exception {
         Result result = wrapAndCheck(Path.of("models", "torus.off"));
         assertEquals(0, result.modelCrossings() + result.pointsInside(), result::summary);
         assertEquals(0, result.crossingPairs(), result::summary);
+        assertTrue(result.coplanarPairs() <= 21, result::summary);
     }
 
     /**
