@@ -51,6 +51,14 @@ final class NestedBends {
      */
     private static final double MITRED_SINE = 0.1;
 
+    /**
+     * How far past square a crease may leave a corner and still be taken as square to a row's
+     * crease: directions of creases are good to rounding over their length (3e-13 radians on the
+     * polycube L, whose creases meet square at the reflex corner of its top), and a crease square
+     * to the row's leaves into its band.
+     */
+    private static final double SQUARE_SLACK = 1e-9;
+
     private final List<Bend> bends;
     private final double tolerance;
     /** The bends of each line (one line and one side of it, on one host). */
@@ -347,8 +355,9 @@ final class NestedBends {
 
     /**
      * Where the rows of bends that stand out ({@code out} above 0) end, along their creases:
-     * where a bend on another line of the same host ends at the same point, with layers
-     * overlapping this one's, and its crease leaves that point into the band this bend's row
+     * where a bend on another line of the same host (or of the same plane: {@link
+     * #mitres(double[], CoplanarHosts)}) ends at the same point, with layers overlapping this
+     * one's, and its crease leaves that point into the band this bend's row
      * stands out over (between the crease and the direction it stands out in), the row stepped
      * out whole would run through that bend's wall: it stops short where it would enter that
      * bend, on that one's line moved out by its {@code out} where that bend stands out towards
@@ -361,6 +370,32 @@ final class NestedBends {
      * half their length short, are left square.
      */
     double[] mitres(double[] out) {
+        return mitres(out, null);
+    }
+
+    /**
+     * {@link #mitres(double[])} with the bends of coplanar hosts ({@code planes}; null: each host
+     * a plane of its own) met in their plane's frame: where a non-convex face is cut into convex
+     * hosts, the bends standing out over two hosts' convex edges that meet at a reflex corner of
+     * the face lean into the same notch (on the polycube L, 26 crossing pairs of caps, 1.95 T
+     * deep), and their rows stop on each other as rows of one host do. The lines and ranks stay
+     * each host's.
+     */
+    double[] mitres(double[] out, CoplanarHosts planes) {
+        if (planes == null || planes.eachAlone()) {
+            return mitresInFrames(out);
+        }
+        List<Bend> inPlanes = new ArrayList<>(bends.size());
+        for (Bend bend : bends) {
+            inPlanes.add(planes.inPlane(bend));
+        }
+        NestedBends met = new NestedBends(inPlanes, tolerance);
+        System.arraycopy(lineOf, 0, met.lineOf, 0, lineOf.length);
+        return met.mitresInFrames(out);
+    }
+
+    /** {@link #mitres(double[])} for the bends as framed: a corner's ends meet where their frame and coordinates agree. */
+    private double[] mitresInFrames(double[] out) {
         double[] past = new double[2 * bends.size()];
         if (!(tolerance > 0)) {
             return past;
@@ -466,7 +501,7 @@ final class NestedBends {
                 for (int step = 0; step < n; step++, k += side) {
                     int run = from + Math.floorMod(k, n);
                     double turn = side * wrap(runAngle[run] - own);
-                    if (turn < least || turn > Math.PI / 2) {
+                    if (turn < least || turn > Math.PI / 2 + SQUARE_SLACK) {
                         break; // out of the band (or round past it, back to the crease)
                     }
                     if (lineOf[ends[runStart[run]] / 2] == lineOf[e / 2] || runLow[run] >= bend.high() || bend.low() >= runHigh[run]) {

@@ -27,7 +27,8 @@ import java.util.List;
  * beyond the host's edge ({@link HostFrame#room}; 45 degrees where nothing limits it), and a
  * wall joins the two; less far where the room beyond a nearby edge is short ({@link
  * HostFrame#lean}), and those it wraps then less far still. Its rows stop on the line of a bend
- * they would run through where two creases meet at a corner.
+ * they would run through where two creases meet at a corner, of its host or of another host in
+ * its plane ({@link CoplanarHosts}).
  *
  * <p>Where thick layers stand back from a concave edge (on its mitre, or on the wall of a fold
  * made along it: {@link ConcaveWalls}), a face is cut where the paper begins to stand back, and
@@ -288,7 +289,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 outs[k] = frame.lean(bend.bx(), bend.by(), bend.nx(), bend.ny(), low, slopes[k], out);
             }
             nested.keepNested(outs);
-            double[] past = nested.mitres(outs);
+            double[] past = nested.mitres(outs, CoplanarHosts.of(frames, sheet.tolerance()));
 
             for (int k = 0; k < bends.size(); k++) {
                 int[] c = bendCorners[k];

@@ -3,6 +3,7 @@ package ifold.wrap;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
+import ifold.sheet.HostFrame;
 import ifold.wrap.NestedBends.Bend;
 import java.util.List;
 import org.junit.jupiter.api.Test;
@@ -94,6 +95,45 @@ class NestedBendsTest {
         assertEquals(-0.1 / Math.tan(angle), past[1], 1e-12);
         assertEquals(0, past[0], "B's other end is free");
         assertArrayEquals(new double[2], new double[] {past[2], past[3]}, "A's band holds no crease: its row runs on square");
+    }
+
+    @Test
+    void rowsOfCoplanarHostsMeetingAtAReflexCornerOfTheirFaceStopOnEachOther() {
+        // An L-shaped face cut into two convex hosts whose frames are turned a quarter apart, its
+        // reflex corner at (1, 1). Host 0 (the plane's frame) has A along y = 1, from x = 2 to the
+        // corner, standing out towards +y; host 1 (origin (5, 5), x axis along +y) has B along
+        // x = 1, from y = 2 to the corner, standing out towards +x: into the same notch.
+        HostFrame plane = frame(new double[] {0, 0, 0}, new double[] {1, 0, 0}, new double[] {0, 1, 0});
+        HostFrame turned = frame(new double[] {5, 5, 0}, new double[] {0, 1, 0}, new double[] {-1, 0, 0});
+        Bend a = new Bend(0, 2, 1, 1, 1, 0, 1, 6, 12);
+        Bend b = new Bend(1, -3, 4, -4, 4, 0, -1, 6, 12);
+        NestedBends nested = NestedBends.of(List.of(a, b), TOLERANCE);
+        double[] out = {0.1, 0.1};
+        assertArrayEquals(new double[4], nested.mitres(out), "check the setup: host by host, nothing meets");
+        // In the plane's frame the rows stop on each other, a picture frame's corner.
+        assertArrayEquals(new double[] {0, -0.1, 0, -0.1}, nested.mitres(out, CoplanarHosts.of(new HostFrame[] {plane, turned}, 1e-9)),
+                1e-12);
+        // The same host 1 a little above the plane: another plane, nothing to meet.
+        HostFrame above = frame(new double[] {5, 5, 0.01}, new double[] {0, 1, 0}, new double[] {-1, 0, 0});
+        assertArrayEquals(new double[4], nested.mitres(out, CoplanarHosts.of(new HostFrame[] {plane, above}, 1e-9)));
+    }
+
+    /** A frame in space with a unit square for its polygon, its normal ex × ey. */
+    private static HostFrame frame(double[] origin, double[] ex, double[] ey) {
+        double[] normal = {ex[1] * ey[2] - ex[2] * ey[1], ex[2] * ey[0] - ex[0] * ey[2], ex[0] * ey[1] - ex[1] * ey[0]};
+        return new HostFrame(origin, ex, ey, normal, new double[] {0, 0, 1, 0, 1, 1, 0, 1});
+    }
+
+    @Test
+    void aCreaseSquareToTheRowsToRoundingEntersItsBand() {
+        // As at the L's reflex corner: B leaves A's end square to A but for 1e-13 radians of
+        // rounding, turned away from A's band, and stands out towards A's row.
+        Bend a = new Bend(0, 1, 0, 0, 0, 0, 1, 6, 12);
+        double off = 1e-13;
+        Bend b = new Bend(0, -Math.sin(off), Math.cos(off), 0, 0, Math.cos(off), Math.sin(off), 6, 12);
+        double[] past = NestedBends.of(List.of(a, b), TOLERANCE).mitres(new double[] {0.1, 0.1});
+        assertEquals(-0.1, past[1], 1e-12);
+        assertEquals(-0.1, past[3], 1e-12);
     }
 
     @Test

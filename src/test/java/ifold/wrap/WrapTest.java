@@ -9,6 +9,7 @@ import ifold.geom.ParameterException;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.IndexedPolygons;
 import ifold.mesh.MeshBuilder;
+import ifold.mesh.Polycubes;
 import ifold.mesh.PolygonSoup;
 import ifold.mesh.Solids;
 import ifold.mesh.io.MeshReaders;
@@ -277,6 +278,18 @@ public class WrapTest {
         HalfedgeMesh mesh = build(lPrism());
         assertEquals(20, mesh.faceCount(), "setup: 2 hexagons of 4 triangles and 6 quads of 2");
         wrapAndCheck(mesh, new Wrap.Options(Double.NaN, Double.NaN), 2000);
+    }
+
+    /**
+     * The polycubes L and plus: their tops and bottoms are non-convex faces cut into convex
+     * hosts, whose bends over the convex edges meeting at a reflex corner are mitred against each
+     * other (their collisions: WrappedPaperCollisionsTest).
+     */
+    @ParameterizedTest
+    @ValueSource(strings = {"l", "plus"})
+    void wrapsPolycubesWithReflexCornersInTheirFaces(String shape) throws Exception {
+        List<int[]> cubes = shape.equals("l") ? Polycubes.l() : Polycubes.plus();
+        wrapAndCheck(build(Polycubes.surface(cubes)), new Wrap.Options(Double.NaN, Double.NaN), 2000);
     }
 
     /** A prism 0.7 high on an L of three unit squares: two non-convex hexagons and six quads. */
