@@ -121,6 +121,22 @@ final class CoplanarHosts {
         return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
     }
 
+    /** The hosts in each plane of more than one host, by the plane's first host. */
+    Map<Integer, List<Integer>> shared() {
+        Map<Integer, List<Integer>> hosts = new HashMap<>();
+        for (int h = 0; h < planeOf.length; h++) {
+            if (planeOf[h] != h) {
+                hosts.computeIfAbsent(planeOf[h], first -> new ArrayList<>(List.of(first))).add(h);
+            }
+        }
+        return hosts;
+    }
+
+    /** The plane of host h: its first host's index. */
+    int planeOf(int h) {
+        return planeOf[h];
+    }
+
     /** Whether every host is alone in its plane (a convex solid's faces): nothing to meet across hosts. */
     boolean eachAlone() {
         for (int h = 0; h < planeOf.length; h++) {

@@ -373,6 +373,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                             addBendCap(bend.host(), new int[] {fm0, fm1, gm1, gm0}, after, caps, capAfter);
                         }
                         addBendCap(bend.host(), new int[] {gm0, gm1, gAt, gFrom}, after, caps, capAfter);
+                    } else {
+                        joinSquashed(cornerNear(fChain, between, t0), cornerNear(gChain, between, t0), after, caps, capAfter);
                     }
                     rowFrom = rowAt;
                 }
@@ -1314,6 +1316,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     capAfter.add(after);
                 } else if (!flat && !squashed) {
                     addBendCap(bendHost, quad, after, caps, capAfter);
+                } else if (!flat) {
+                    joinSquashed(cornerNear(f, s.middle(), s.from()), cornerNear(g, s.middle(), s.from()), after, caps, capAfter);
                 }
             }
         }
@@ -1395,6 +1399,42 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 caps.add(new int[] {a, m, b});
                 capAfter.add(after);
             }
+        }
+
+        /**
+         * The corner of a piece that the chain's edge along the stretch whose middle is
+         * {@code middle} ends at, the end nearer {@code t}: a point of the paper as placed, where
+         * a point made between its ends ({@link #pointAt}) would belong to no piece.
+         */
+        private static int cornerNear(double[][] chain, double middle, double t) {
+            for (double[] edge : chain) {
+                if (edge[0] <= middle && middle <= edge[1]) {
+                    return (int) (Math.abs(edge[0] - t) <= Math.abs(edge[1] - t) ? edge[2] : edge[3]);
+                }
+            }
+            return (int) chain[0][2];
+        }
+
+        /**
+         * Joins the two layers of a bend's stretch that are both squashed where they end (a fold
+         * inside a wall's, or running into a mitre), with a cap of no area from a corner of one
+         * layer's piece along the stretch to a corner of the other's ({@link #cornerNear}). The bend itself is left out there (drawn, it would lie on
+         * the wall or the mitre, where the paper across has the room); but a face squashed whole
+         * whose every neighbour on the sheet is squashed with it was then joined to nothing: on a
+         * random polycube of 20 cubes (seed 4), two turns' corners folded under beside a tall wall
+         * by the corner of a hole in a face fell off the strip (truth 1: three pieces in space).
+         */
+        private void joinSquashed(int f, int g, int after, List<int[]> caps, IntList capAfter) {
+            if (f == g || closer(f, new double[] {xyz.get(3 * g), xyz.get(3 * g + 1), xyz.get(3 * g + 2)}, exact)) {
+                return;
+            }
+            double[] middle = new double[3];
+            for (int d = 0; d < 3; d++) {
+                middle[d] = (xyz.get(3 * f + d) + xyz.get(3 * g + d)) / 2;
+            }
+            int m = capVertex(middle, (uv.get(2 * f) + uv.get(2 * g)) / 2, (uv.get(2 * f + 1) + uv.get(2 * g + 1)) / 2);
+            caps.add(new int[] {f, m, g});
+            capAfter.add(after);
         }
 
         /** Whether space vertex {@code vertex} lies on the mitre of concave edge k of the frame's host, within {@link #ON_MITRE}. */

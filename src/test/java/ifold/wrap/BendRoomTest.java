@@ -1,6 +1,8 @@
 package ifold.wrap;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import ifold.mesh.PolygonSoup;
 import ifold.sheet.HostFrame;
@@ -136,5 +138,54 @@ class BendRoomTest {
         double ny = f.ey()[1];
         assertEquals(0.005, f.lean(f.localX(a), f.localY(a), nx, ny, height, slope, 0.005), 1e-12);
         assertEquals(0, f.lean(f.localX(d), f.localY(d), nx, ny, height, slope, 0.005), 1e-12);
+    }
+    /**
+     * A face cut into two convex hosts through the end of a concave edge: host A (a triangle)
+     * has the concave edge (0,0,0)-(1,0,0) under a wall rising from it, host B (a quad) only a
+     * corner at its end, its edge along the edge's line running on the other way and its side
+     * along the cut leaning over the concave edge's stretch. B's paper there, under the wall, is
+     * mitred from the edge's line as A's is; it was not (a random polycube's host corners 0 in
+     * from such an edge, up to 17 thicknesses high). Beside B's own edge, where nothing rises,
+     * nothing is mitred.
+     */
+    @Test
+    void aHostWithACornerAtTheEndOfAConcaveEdgeIsMitredBesideIt() {
+        PolygonSoup mesh = new PolygonSoup();
+        mesh.addVertex(0, 0, 0);
+        mesh.addVertex(1, 0, 0);
+        mesh.addVertex(1, -1, 0);
+        mesh.addVertex(-1, 0, 0);
+        mesh.addVertex(-1, -1, 0);
+        mesh.addVertex(1, 0, 1);
+        mesh.addVertex(0, 0, 1);
+        mesh.addFace(new int[] {0, 2, 1}, 3, 0); // A
+        mesh.addFace(new int[] {0, 3, 4}, 3, 0); // B
+        mesh.addFace(new int[] {0, 4, 2}, 3, 0); // B
+        mesh.addFace(new int[] {0, 1, 5}, 3, 0); // the wall, facing -y
+        mesh.addFace(new int[] {0, 5, 6}, 3, 0);
+        double[][] p = new double[7][];
+        for (int v = 0; v < 7; v++) {
+            p[v] = new double[] {mesh.coordinate(v, 0), mesh.coordinate(v, 1), mesh.coordinate(v, 2)};
+        }
+        HostFrame b = HostFrame.onEdge(p[0], p[3], p[4]);
+        double[] quad = new double[8];
+        int[] corners = {0, 3, 4, 2};
+        for (int k = 0; k < 4; k++) {
+            quad[2 * k] = b.localX(p[corners[k]]);
+            quad[2 * k + 1] = b.localY(p[corners[k]]);
+        }
+        HostFrame[] frames = {HostFrame.onEdge(p[0], p[2], p[1]), new HostFrame(b.origin(), b.ex(), b.ey(), b.normal(), quad),
+            HostFrame.onEdge(p[0], p[1], p[5])};
+        HostFrame[] limited = BendRoom.of(mesh, new int[] {0, 1, 1, 2, 2}, frames, 1e-9);
+        HostFrame host = limited[1];
+        double height = 0.2;
+        double[] under = {0.1, -0.11, 0};
+        double[] out = new double[2];
+        assertTrue(host.mitred(host.localX(under), host.localY(under), height, out), "under the wall");
+        double[] moved = {0, 0, 0};
+        host.toSpace(out[0], out[1], 0, moved, 0);
+        assertEquals(-height, moved[1], 1e-12, "in from the edge's line by height * tan(45 degrees)");
+        double[] beside = {-0.5, -0.1, 0};
+        assertFalse(host.mitred(host.localX(beside), host.localY(beside), height, out), "beside B's own edge");
     }
 }

@@ -292,6 +292,18 @@ public class WrapTest {
         wrapAndCheck(build(Polycubes.surface(cubes)), new Wrap.Options(Double.NaN, Double.NaN), 2000);
     }
 
+    /**
+     * A random polycube of 20 cubes (seed 4): a face with a hole (a cube standing out of it),
+     * cut into convex hosts through the hole's corners. Beside a tall fold's wall by such a
+     * corner, two turns' corners folded under were squashed onto the wall with every face they
+     * join on the sheet, and the bends between squashed layers were left out: they fell off the
+     * strip (truth 1, three pieces in space).
+     */
+    @Test
+    void aRandomPolycubeStaysOnePiece() throws Exception {
+        wrapAndCheck(build(Polycubes.surface(Polycubes.random(20, 4))), new Wrap.Options(Double.NaN, Double.NaN), 2000);
+    }
+
     /** A prism 0.7 high on an L of three unit squares: two non-convex hexagons and six quads. */
     public static PolygonSoup lPrism() {
         double[][] l = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
