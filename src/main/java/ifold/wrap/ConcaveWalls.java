@@ -55,13 +55,17 @@ final class ConcaveWalls {
     private final Wall[][][] wallsByLevel;
     /** The walls on each host along each edge of its polygon, by {@link #key} (for the pieces of paper, {@link #wallsAt}). */
     private final Map<Long, List<Wall>> wallsAlong = new HashMap<>();
-    /** The folds back to back on each host, by host (null where none). */
-    private final Map<Integer, List<BackWall>> backWallsOf;
+    /**
+     * The folds back to back on each host, by host (null where none): an array, as every point
+     * of paper placed asks for its host's, and a map keyed by boxed hosts made an Integer a
+     * point (4.6M on the 5,000-triangle torus).
+     */
+    private final BackWall[][] backWallsOf;
     private final boolean[] along;
     /** How high each host's stack stands: the top of its highest layer (for the stops of convex edges, {@link HostFrame.Stop}). */
     private final double[] stackTop;
 
-    private ConcaveWalls(double thickness, double tolerance, List<List<Wall>> wallsOf, Map<Integer, List<BackWall>> backWallsOf,
+    private ConcaveWalls(double thickness, double tolerance, List<List<Wall>> wallsOf, BackWall[][] backWallsOf,
             boolean[] along, double[] stackTop) {
         this.thickness = thickness;
         this.tolerance = tolerance;
@@ -104,6 +108,7 @@ final class ConcaveWalls {
     }
 
     private static final Wall[] NO_WALLS = new Wall[0];
+    private static final BackWall[] NO_BACK_WALLS = new BackWall[0];
 
     /**
      * The walls of {@code bends} that lie along a concave edge of their host, with the
@@ -144,16 +149,23 @@ final class ConcaveWalls {
         }
         // Two folds back to back on one crease line cannot both stand on it: each stands back half
         // a thickness, its layers ending on its own side (where it does not already stand on a wall).
-        Map<Integer, List<BackWall>> backWallsOf = new HashMap<>();
+        List<List<BackWall>> backWallsOf = new ArrayList<>(java.util.Collections.nCopies(frames.length, (List<BackWall>) null));
         for (int k = 0; k < bends.size(); k++) {
             if (backToBack[k] < 0 || along[k] || along[backToBack[k]]) {
                 continue;
             }
             NestedBends.Bend bend = bends.get(k);
-            backWallsOf.computeIfAbsent(bend.host(), h -> new ArrayList<>())
+            if (backWallsOf.get(bend.host()) == null) {
+                backWallsOf.set(bend.host(), new ArrayList<>());
+            }
+            backWallsOf.get(bend.host())
                     .add(new BackWall(bend.ax(), bend.ay(), bend.bx(), bend.by(), bend.nx(), bend.ny(), bend.low(), bend.high()));
         }
-        return new ConcaveWalls(thickness, tolerance, wallsOf, backWallsOf, along, stackTop);
+        BackWall[][] backWallsByHost = new BackWall[frames.length][];
+        for (int h = 0; h < frames.length; h++) {
+            backWallsByHost[h] = backWallsOf.get(h) == null ? null : backWallsOf.get(h).toArray(new BackWall[0]);
+        }
+        return new ConcaveWalls(thickness, tolerance, wallsOf, backWallsByHost, along, stackTop);
     }
 
     /**
@@ -199,8 +211,8 @@ final class ConcaveWalls {
      * face whose middle is (cx, cy): the face lies on the side the fold's layers end on.
      */
     boolean holdsBack(int host, double level, double cx, double cy) {
-        List<BackWall> backs = thickness > 0 ? backWallsOf.get(host) : null;
-        for (BackWall back : backs == null ? List.<BackWall>of() : backs) {
+        BackWall[] backs = thickness > 0 ? backWallsOf[host] : null;
+        for (BackWall back : backs == null ? NO_BACK_WALLS : backs) {
             double middle = -((cx - back.ax()) * back.nx() + (cy - back.ay()) * back.ny());
             if (level >= back.low() - Tolerance.RELATIVE_EQUALITY && level <= back.high() + Tolerance.RELATIVE_EQUALITY && middle > tolerance) {
                 return true;
@@ -262,7 +274,7 @@ final class ConcaveWalls {
             x = out[0];
             y = out[1];
         }
-        List<BackWall> backs = thickness > 0 ? backWallsOf.get(host) : null;
+        BackWall[] backs = thickness > 0 ? backWallsOf[host] : null;
         double level = height / thickness - 0.5;
         if (backs != null) {
             for (BackWall back : backs) {
@@ -271,9 +283,8 @@ final class ConcaveWalls {
                 }
             }
         }
-        double[] laid = {out[0], out[1]};
         boolean own = Double.isNaN(bx);
-        frame.mitred(laid[0], laid[1], bx, by, height, out);
+        frame.mitred(out[0], out[1], bx, by, height, out);
         if (!(thickness > 0)) {
             return; // paper of no thickness stands nowhere but on its creases
         }
@@ -307,7 +318,7 @@ final class ConcaveWalls {
      */
     void apex(int host, HostFrame frame, double x, double y, double height, double[] out) {
         frame.mitred(x, y, height, out);
-        List<BackWall> backs = thickness > 0 ? backWallsOf.get(host) : null;
+        BackWall[] backs = thickness > 0 ? backWallsOf[host] : null;
         if (backs == null) {
             return;
         }

@@ -392,10 +392,10 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         /** Each pair of faces joined on the sheet, once. */
         private void forEachJoin(Join join) {
             for (int f = 0; f < sheet.faceCount(); f++) {
-                int[] loop = sheet.loop(f);
-                for (int i = 0; i < loop.length; i++) {
-                    int a = loop[i];
-                    int b = loop[(i + 1) % loop.length];
+                int n = sheet.loopLength(f);
+                for (int i = 0; i < n; i++) {
+                    int a = sheet.loopVertex(f, i);
+                    int b = sheet.loopVertex(f, (i + 1) % n);
                     int g = sheet.faceAcross(a, b);
                     if (g > f) {
                         join.of(f, i, g, a, b);
@@ -475,11 +475,14 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          */
         private int placed(int f, double x, double y, double u, double v, double[] over, double bx, double by, int first) {
             HostFrame frame = frames[sheet.host(f)];
-            double[] point = new double[3];
-            double[] xy = new double[2];
+            double[] point = placedPoint;
+            double[] xy = placedXy;
             int host = sheet.host(f);
-            double[] middle = middle(f);
-            walls.place(host, frame, x, y, height(f), middle[0], middle[1], over, bx, by, xy);
+            if (middleFace != f) {
+                middleFace = f;
+                middleOfFace = middle(f);
+            }
+            walls.place(host, frame, x, y, height(f), middleOfFace[0], middleOfFace[1], over, bx, by, xy);
             boolean crept = xy[0] != x || xy[1] != y;
             frame.toSpace(xy[0], xy[1], height(f), point, 0);
             for (int copy = first; copy >= 0; copy = nextCopy.get(copy)) {
@@ -510,15 +513,26 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             return made;
         }
 
+        /**
+         * {@link #placed}'s working point in space and on the frame, and the middle of the face it
+         * last placed a point of ({@link #middleFace}): it places 4.6M points on the
+         * 5,000-triangle torus, a face's corners one after another, and made three arrays each.
+         */
+        private final double[] placedPoint = new double[3];
+        private final double[] placedXy = new double[2];
+        private int middleFace = -1;
+        private double[] middleOfFace;
+
         /** The middle of face f's polygon on its host's frame, as laid. */
         private double[] middle(int f) {
             Isometry2 pose = sheet.pose(f);
-            int[] loop = sheet.loop(f);
+            int n = sheet.loopLength(f);
             double cx = 0;
             double cy = 0;
-            for (int q : loop) {
-                cx += pose.x(sheet.u(q), sheet.v(q)) / loop.length;
-                cy += pose.y(sheet.u(q), sheet.v(q)) / loop.length;
+            for (int i = 0; i < n; i++) {
+                int q = sheet.loopVertex(f, i);
+                cx += pose.x(sheet.u(q), sheet.v(q)) / n;
+                cy += pose.y(sheet.u(q), sheet.v(q)) / n;
             }
             return new double[] {cx, cy};
         }
@@ -529,15 +543,16 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          * (x, y pairs); null where none does.
          */
         private double[] over(int f, int p, Isometry2 pose) {
-            int[] loop = sheet.loop(f);
+            int n = sheet.loopLength(f);
             double[] over = null;
-            for (int i = 0; i < loop.length; i++) {
-                if (loop[i] != p) {
+            for (int i = 0; i < n; i++) {
+                if (sheet.loopVertex(f, i) != p) {
                     continue;
                 }
-                int next = loop[(i + 1) % loop.length];
-                int previous = loop[(i + loop.length - 1) % loop.length];
-                for (int q : new int[] {next, previous}) {
+                int next = sheet.loopVertex(f, (i + 1) % n);
+                int previous = sheet.loopVertex(f, (i + n - 1) % n);
+                for (int j = 0; j < 2; j++) {
+                    int q = j == 0 ? next : previous;
                     int g = q == next ? sheet.faceAcross(p, next) : sheet.faceAcross(previous, p);
                     if (g >= 0 && sheet.host(g) != sheet.host(f)) {
                         double[] longer = over == null ? new double[2] : java.util.Arrays.copyOf(over, over.length + 2);
@@ -1015,9 +1030,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          */
         private Corner crossing(int f, Corner a, Corner b, double t, Cut line) {
             // The side of the face the edge lies along, as its two paper vertices (none for a cut).
-            int[] loop = sheet.loop(f);
-            int one = a.side >= 0 ? loop[a.side] : -1;
-            int two = a.side >= 0 ? loop[(a.side + 1) % loop.length] : -1;
+            int one = a.side >= 0 ? sheet.loopVertex(f, a.side) : -1;
+            int two = a.side >= 0 ? sheet.loopVertex(f, (a.side + 1) % sheet.loopLength(f)) : -1;
             double u = a.u + t * (b.u - a.u);
             double v = a.v + t * (b.v - a.v);
             // One point for every face of the layer whose edge the line crosses there (and for two
@@ -1231,10 +1245,11 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
 
         /** The side of face g's loop from paper vertex a to b, or b to a. */
         private int side(int g, int a, int b) {
-            int[] loop = sheet.loop(g);
-            for (int j = 0; j < loop.length; j++) {
-                int next = loop[(j + 1) % loop.length];
-                if (loop[j] == a && next == b || loop[j] == b && next == a) {
+            int n = sheet.loopLength(g);
+            for (int j = 0; j < n; j++) {
+                int here = sheet.loopVertex(g, j);
+                int next = sheet.loopVertex(g, (j + 1) % n);
+                if (here == a && next == b || here == b && next == a) {
                     return j;
                 }
             }
@@ -1247,11 +1262,10 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          * and to (0 at a, 1 at b) and its vertex towards a and towards b.
          */
         private double[][] chain(int f, int i, int a, int b) {
-            int[] loop = sheet.loop(f);
-            boolean forward = loop[i] == a;
+            boolean forward = sheet.loopVertex(f, i) == a;
             if (sidesOf[f] < 0) {
                 int first = corners[f][i];
-                int second = corners[f][(i + 1) % loop.length];
+                int second = corners[f][(i + 1) % sheet.loopLength(f)];
                 double none = Double.NaN;
                 return new double[][] {forward ? new double[] {0, 1, first, second, 0, none, none, none, none}
                         : new double[] {0, 1, second, first, 0, none, none, none, none}};
