@@ -205,8 +205,25 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             // paper of its layers ends on its wall (ConcaveWalls), which places the vertices.
             List<NestedBends.Bend> bends = new ArrayList<>();
             IntList bendEdges = new IntList(); // f, i, g, a, b each
-            forEachJoin((f, i, g, a, b) -> {
-                if (isBend(f, g)) {
+            // The joins that are not bends, for the caps once the faces are placed: which sides of
+            // the faces' loops (in order) join a later face, and that face. The face across a side
+            // is a hash lookup, and looked up again there it was half of the joins' time.
+            java.util.BitSet flatSides = new java.util.BitSet();
+            IntList flatAcross = new IntList();
+            for (int f = 0, here = 0; f < faces; f++) {
+                int n = sheet.loopLength(f);
+                for (int i = 0; i < n; i++, here++) {
+                    int a = sheet.loopVertex(f, i);
+                    int b = sheet.loopVertex(f, (i + 1) % n);
+                    int g = sheet.faceAcross(a, b);
+                    if (g <= f) {
+                        continue; // joined once, from the earlier face
+                    }
+                    if (!isBend(f, g)) {
+                        flatSides.set(here);
+                        flatAcross.add(g);
+                        continue;
+                    }
                     bends.add(bend(f, g, a, b));
                     bendEdges.add(f);
                     bendEdges.add(i);
@@ -214,7 +231,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     bendEdges.add(a);
                     bendEdges.add(b);
                 }
-            });
+            }
             NestedBends nested = NestedBends.of(bends, sheet.thickness() * NEST_TOLERANCE);
             int[] ranks = nested.ranks();
             int[] backToBack = nested.backToBack();
@@ -250,13 +267,21 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 pieceStart[f + 1] = paper.size();
             }
             int[] hosts = hostList.toArray();
-            forEachJoin((f, i, g, a, b) -> {
-                if (isBend(f, g)) {
-                    return; // below, once every bend is known
+            // The bends below, once every bend is known.
+            int next = 0;
+            for (int f = 0, here = 0; f < faces; f++) {
+                int n = sheet.loopLength(f);
+                for (int i = 0; i < n; i++, here++) {
+                    if (!flatSides.get(here)) {
+                        continue;
+                    }
+                    int g = flatAcross.get(next++);
+                    int a = sheet.loopVertex(f, i);
+                    int b = sheet.loopVertex(f, (i + 1) % n);
+                    // the paper runs on flat, or bends over an edge with no thickness where the two sides meet
+                    addCap(chain(f, i, a, b), chain(g, side(g, a, b), a, b), a, b, pieceStart[g + 1] - 1, -1, false, caps, capAfter);
                 }
-                // the paper runs on flat, or bends over an edge with no thickness where the two sides meet
-                addCap(chain(f, i, a, b), chain(g, side(g, a, b), a, b), a, b, pieceStart[g + 1] - 1, -1, false, caps, capAfter);
-            });
+            }
             // Each bend's faces f and g, its crease a, b, and where each face's paper begins and ends along it.
             int[][] bendCorners = new int[bends.size()][];
             for (int k = 0; k < bends.size(); k++) {
@@ -382,26 +407,6 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             Creep creep = creptCount == 0 ? Creep.NONE
                     : new Creep(java.util.Arrays.copyOf(creptVertices, creptCount), java.util.Arrays.copyOf(creptFrom, 3 * creptCount));
             return new Built(xyz, uv, paper, hosts, caps, capAfter.toArray(), creep, pieceStart);
-        }
-
-        /** What is done with two faces f and g (g > f) joined along paper edge a → b, edge i of f. */
-        private interface Join {
-            void of(int f, int i, int g, int a, int b);
-        }
-
-        /** Each pair of faces joined on the sheet, once. */
-        private void forEachJoin(Join join) {
-            for (int f = 0; f < sheet.faceCount(); f++) {
-                int n = sheet.loopLength(f);
-                for (int i = 0; i < n; i++) {
-                    int a = sheet.loopVertex(f, i);
-                    int b = sheet.loopVertex(f, (i + 1) % n);
-                    int g = sheet.faceAcross(a, b);
-                    if (g > f) {
-                        join.of(f, i, g, a, b);
-                    }
-                }
-            }
         }
 
         /** Whether faces f and g, joined on the sheet, are folded flat onto each other: one host, two levels. */
@@ -1045,7 +1050,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     cutPoints.add(value);
                 }
                 cutCopies.add(-1);
-                long cell = cell(sheet.host(f), levels[f], Math.round(u / SAME_POINT), Math.round(v / SAME_POINT));
+                long cell = cell(sheet.host(f), levels[f], Math.floorDiv(Math.round(u / SAME_POINT), CELL_POINTS),
+                        Math.floorDiv(Math.round(v / SAME_POINT), CELL_POINTS));
                 if (known >= cutNext.length) {
                     cutNext = java.util.Arrays.copyOf(cutNext, 2 * known + 16);
                 }
@@ -1062,7 +1068,15 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
 
         /** Cut points closer than this on the sheet are one. */
         private static final double SAME_POINT = 1e-9;
-        /** The last cut point made in each cell of the sheet {@link #SAME_POINT} across, by host and level ({@link #cell}). */
+        /**
+         * A cell holds this many {@link #SAME_POINT}s a side. The points within {@link #SAME_POINT}
+         * of a point lie in the 3 x 3 squares {@link #SAME_POINT} across about it, and with cells
+         * that small each cut point looked in nine of them: nine hash lookups, a tenth of placing
+         * the 5,000-triangle torus's paper. Those squares lie in one cell but where they meet its
+         * border (about a point in 32 along each axis).
+         */
+        private static final long CELL_POINTS = 64;
+        /** The last cut point made in each cell of the sheet {@link #CELL_POINTS} across, by host and level ({@link #cell}). */
         private final ifold.sheet.LongIntMap cutCells = new ifold.sheet.LongIntMap();
         /** For each cut point, the one made before it in its cell (-1: none). */
         private int[] cutNext = new int[16];
@@ -1075,22 +1089,36 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             return (h ^ (h >>> 29)) & Long.MAX_VALUE; // the map takes keys of no sign
         }
 
-        /** The cut point made on {@code host} at {@code level} at sheet point (u, v), within {@link #SAME_POINT}; -1 if none. */
+        /**
+         * The cut point made on {@code host} at {@code level} at sheet point (u, v), within {@link #SAME_POINT}; -1 if none.
+         * Of two there, the one in the first of the squares {@link #SAME_POINT} across about the
+         * point (the square below and left first, then up, then right), the later made in one square.
+         */
         private int cutAt(int host, int level, double u, double v) {
             long cu = Math.round(u / SAME_POINT);
             long cv = Math.round(v / SAME_POINT);
-            for (long du = -1; du <= 1; du++) {
-                for (long dv = -1; dv <= 1; dv++) {
-                    for (int k = cutCells.get(cell(host, level, cu + du, cv + dv), -1); k >= 0; k = cutNext[k]) {
+            int found = -1;
+            long foundSquare = Long.MAX_VALUE;
+            for (long cellU = Math.floorDiv(cu - 1, CELL_POINTS); cellU <= Math.floorDiv(cu + 1, CELL_POINTS); cellU++) {
+                for (long cellV = Math.floorDiv(cv - 1, CELL_POINTS); cellV <= Math.floorDiv(cv + 1, CELL_POINTS); cellV++) {
+                    for (int k = cutCells.get(cell(host, level, cellU, cellV), -1); k >= 0; k = cutNext[k]) {
                         int p = CUT_POINT * k;
-                        if (cutPoints.get(p + 6) == host && cutPoints.get(p + 7) == level && Math.abs(cutPoints.get(p + 2) - u) <= SAME_POINT
-                                && Math.abs(cutPoints.get(p + 3) - v) <= SAME_POINT) {
-                            return k;
+                        if (cutPoints.get(p + 6) != host || cutPoints.get(p + 7) != level || !(Math.abs(cutPoints.get(p + 2) - u) <= SAME_POINT)
+                                || !(Math.abs(cutPoints.get(p + 3) - v) <= SAME_POINT)) {
+                            continue;
+                        }
+                        long du = Math.round(cutPoints.get(p + 2) / SAME_POINT) - cu;
+                        long dv = Math.round(cutPoints.get(p + 3) / SAME_POINT) - cv;
+                        long square = 3 * (du + 1) + dv + 1;
+                        // The chain runs from the latest made: the first found in a square is the later.
+                        if (Math.abs(du) <= 1 && Math.abs(dv) <= 1 && (square < foundSquare || square == foundSquare && k > found)) {
+                            found = k;
+                            foundSquare = square;
                         }
                     }
                 }
             }
-            return -1;
+            return found;
         }
 
         /** The space vertex of a piece's corner, as the piece's point (bx, by) is placed. */
