@@ -1433,14 +1433,23 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 if (copyHost.get(a) < 0 && copyHost.get(b) < 0) {
                     continue; // between the bend's rows, or points made on a crease between a layer's corners
                 }
-                double[] middle = new double[3];
-                for (int d = 0; d < 3; d++) {
-                    middle[d] = (xyz.get(3 * a + d) + xyz.get(3 * b + d)) / 2;
-                }
-                int m = capVertex(middle, (uv.get(2 * a) + uv.get(2 * b)) / 2, (uv.get(2 * a + 1) + uv.get(2 * b + 1)) / 2);
-                caps.add(new int[] {a, m, b});
-                capAfter.add(after);
+                addLineCap(a, b, after, caps, capAfter);
             }
+        }
+
+        /**
+         * A cap of no area from space vertex a to b, through a vertex made halfway: paper pressed
+         * or squashed to a line, which still joins the paper at its two ends (the collision
+         * checker passes over shapes of no area; the truths see the join).
+         */
+        private void addLineCap(int a, int b, int after, List<int[]> caps, IntList capAfter) {
+            double[] middle = new double[3];
+            for (int d = 0; d < 3; d++) {
+                middle[d] = (xyz.get(3 * a + d) + xyz.get(3 * b + d)) / 2;
+            }
+            int m = capVertex(middle, (uv.get(2 * a) + uv.get(2 * b)) / 2, (uv.get(2 * a + 1) + uv.get(2 * b + 1)) / 2);
+            caps.add(new int[] {a, m, b});
+            capAfter.add(after);
         }
 
         /**
@@ -1460,23 +1469,18 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         /**
          * Joins the two layers of a bend's stretch that are both squashed where they end (a fold
          * inside a wall's, or running into a mitre), with a cap of no area from a corner of one
-         * layer's piece along the stretch to a corner of the other's ({@link #cornerNear}). The bend itself is left out there (drawn, it would lie on
-         * the wall or the mitre, where the paper across has the room); but a face squashed whole
-         * whose every neighbour on the sheet is squashed with it was then joined to nothing: on a
-         * random polycube of 20 cubes (seed 4), two turns' corners folded under beside a tall wall
-         * by the corner of a hole in a face fell off the strip (truth 1: three pieces in space).
+         * layer's piece along the stretch to a corner of the other's ({@link #cornerNear}). The
+         * bend itself is left out there (drawn, it would lie on the wall or the mitre, where the
+         * paper across has the room); but a face squashed whole whose every neighbour on the sheet
+         * is squashed with it was then joined to nothing: on a random polycube of 20 cubes (seed
+         * 4), two turns' corners folded under beside a tall wall by the corner of a hole in a face
+         * fell off the strip (truth 1: three pieces in space).
          */
         private void joinSquashed(int f, int g, int after, List<int[]> caps, IntList capAfter) {
             if (f == g || closer(f, new double[] {xyz.get(3 * g), xyz.get(3 * g + 1), xyz.get(3 * g + 2)}, exact)) {
                 return;
             }
-            double[] middle = new double[3];
-            for (int d = 0; d < 3; d++) {
-                middle[d] = (xyz.get(3 * f + d) + xyz.get(3 * g + d)) / 2;
-            }
-            int m = capVertex(middle, (uv.get(2 * f) + uv.get(2 * g)) / 2, (uv.get(2 * f + 1) + uv.get(2 * g + 1)) / 2);
-            caps.add(new int[] {f, m, g});
-            capAfter.add(after);
+            addLineCap(f, g, after, caps, capAfter);
         }
 
         /** Whether space vertex {@code vertex} lies on the mitre of concave edge k of the frame's host, within {@link #ON_MITRE}. */
