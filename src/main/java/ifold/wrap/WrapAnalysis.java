@@ -141,10 +141,10 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
                 for (Wrap.Strip strip : result.strips()) {
                     Sheet sheet = strip.sheet();
                     for (int f = 0; f < sheet.faceCount(); f++) {
-                        int[] loop = sheet.loop(f);
-                        for (int i = 0; i < loop.length; i++) {
-                            int a = loop[i];
-                            int b = loop[(i + 1) % loop.length];
+                        int n = sheet.loopLength(f); // read in place: a copy a face was a million arrays
+                        for (int i = 0; i < n; i++) {
+                            int a = sheet.loopVertex(f, i);
+                            int b = sheet.loopVertex(f, (i + 1) % n);
                             if (a > b && sheet.faceAcross(a, b) >= 0) {
                                 continue; // each crease once, from the face holding its lower-to-higher side
                             }
