@@ -235,14 +235,12 @@ final class CreaseLayers {
                 continue;
             }
             double[] polygon = faces.polygon[z];
-            double most = Double.NEGATIVE_INFINITY;
-            double least = Double.POSITIVE_INFINITY;
-            for (int k = 0; k < polygon.length; k += 2) {
-                double d = ux * (polygon[k + 1] - ay) - uy * (polygon[k] - ax);
-                most = Math.max(most, d);
-                least = Math.min(least, d);
-            }
-            if (!(most > faces.eps && least < -faces.eps)) {
+            // How far the face reaches to either side of the line along the crease alone, not
+            // at its far corners: a face whose side runs along the crease's line lies beside it,
+            // but a slant of rounding (3e-9 rad on the 1.5 degree spike) put that side's far
+            // end, 12.6 away, 4e-8 across the line, and the face "through" the crease.
+            double[] reach = reachAcross(polygon, ax, ay, ux, uy, length);
+            if (!(reach[1] > faces.eps && reach[0] < -faces.eps)) {
                 continue;
             }
             double[] span = chord(polygon, ax, ay, ux, uy);
@@ -251,6 +249,41 @@ final class CreaseLayers {
                         + " and " + taco.g + " across their flat fold along " + segment(taco, taco));
             }
         }
+    }
+
+    /**
+     * The least and most distance, left of the line through (ax, ay) of unit direction
+     * (ux, uy), of the part of a convex polygon within the crease's span along it (0 to
+     * {@code length}); {+inf, -inf} where no part of it is.
+     */
+    static double[] reachAcross(double[] polygon, double ax, double ay, double ux, double uy, double length) {
+        double least = Double.POSITIVE_INFINITY;
+        double most = Double.NEGATIVE_INFINITY;
+        int n = polygon.length / 2;
+        for (int i = 0; i < n; i++) {
+            int j = (i + 1) % n;
+            double px = polygon[2 * i] - ax;
+            double py = polygon[2 * i + 1] - ay;
+            double qx = polygon[2 * j] - ax;
+            double qy = polygon[2 * j + 1] - ay;
+            double pAlong = ux * px + uy * py;
+            double qAlong = ux * qx + uy * qy;
+            double pAcross = ux * py - uy * px;
+            double qAcross = ux * qy - uy * qx;
+            if (pAlong >= 0 && pAlong <= length) {
+                least = Math.min(least, pAcross);
+                most = Math.max(most, pAcross);
+            }
+            // Where the edge p -> q meets the span's two ends.
+            for (double end : new double[] {0, length}) {
+                if ((pAlong - end) * (qAlong - end) < 0) {
+                    double across = pAcross + (qAcross - pAcross) * (end - pAlong) / (qAlong - pAlong);
+                    least = Math.min(least, across);
+                    most = Math.max(most, across);
+                }
+            }
+        }
+        return new double[] {least, most};
     }
 
     /** The faces of a plane that share a cell of its grid with the segment, each once. */
