@@ -4,6 +4,7 @@ import static ifold.wrap.WrapAnalysis.counterClockwise;
 
 import ifold.sheet.Polygons2;
 import java.util.List;
+import java.util.concurrent.atomic.AtomicInteger;
 
 /**
  * The arrangement of faces of paper over one triangle of a host, for the layers and the
@@ -16,12 +17,29 @@ final class FaceArrangement {
 
     /**
      * Cuts the triangle into the cells of the faces' arrangement: {area, area under at least one
-     * face, the most faces over any cell}. Every cell is convex: splitting a cell by a face
-     * gives the part inside the face and, edge by edge, the parts outside it. The cells are kept
-     * in a grid over the triangle, so that a face visits only the cells near it: a narrow strip
-     * lays thousands of faces on one triangle, mostly side by side.
+     * face, the most faces over any cell, then the centre and corners of the largest cell that
+     * deep}. Every cell is convex: splitting a cell by a face gives the part inside the face and,
+     * edge by edge, the parts outside it. The cells are kept in a grid over the triangle, so that
+     * a face visits only the cells near it: a narrow strip lays thousands of faces on one
+     * triangle, mostly side by side.
      */
     static double[] depths(double[] triangle, List<double[]> polygons, double tolerance) {
+        return depths(triangle, polygons, tolerance, Integer.MAX_VALUE, null);
+    }
+
+    /**
+     * {@link #depths(double[], List, double)}, where only the most layers over the whole surface
+     * and the cell that deep are wanted: {@code deepestElsewhere} holds the most found so far on
+     * other triangles, and is raised to this one's. A bucket of the grid can have no more layers
+     * than the faces whose boxes meet it, nor than {@code mostPossible} (the levels of the host's
+     * stack); one with fewer than the most found, here or elsewhere, is only covered, not counted
+     * (on the 5,000-triangle torus, 27,000 of 312,000 buckets could reach its 18 layers). The
+     * area and the area covered are this triangle's still; the most layers too where this
+     * triangle has the surface's most, and then the same cell, as every bucket that could hold
+     * that many is counted; elsewhere, fewer than the most found.
+     */
+    static double[] depths(double[] triangle, List<double[]> polygons, double tolerance, int mostPossible,
+            AtomicInteger deepestElsewhere) {
         // Buckets of about four faces each: finer, the grid's own lines cut the faces into more
         // cells than it saves in looking (the 1,280-triangle icosphere: 2.3 million cells at
         // this size, 2.9 million at one face a bucket, 4.5 at a quarter). Shaped as the faces
@@ -42,6 +60,12 @@ final class FaceArrangement {
         int columns = (int) Math.max(1, Math.min(buckets, Math.round(Math.sqrt(buckets * across))));
         int rows = Math.max(1, buckets / columns);
         Cells cells = new Cells(triangle, columns, rows, tolerance);
+        // The faces that cover something, each with its box, and for each bucket those whose
+        // boxes meet it, in their order.
+        int count = 0;
+        double[][] faces = new double[polygons.size()][];
+        double[][] faceBoxes = new double[polygons.size()][];
+        int[] meeting = new int[columns * rows];
         for (double[] polygon : polygons) {
             double[] p = counterClockwise(polygon);
             if (thinnerThan(p, tolerance)) {
@@ -50,88 +74,151 @@ final class FaceArrangement {
                 // was counted under it: a face of 1e-13 put a 21st layer on the cube at width 1e-3.)
                 continue;
             }
-            int found = cells.near(Polygons2.bounds(p));
-            for (int k = 0; k < found; k++) {
-                int cell = cells.found(k);
-                double[] rest = cells.polygon(cell);
-                double[] boxes = cells.boxes();
-                int at = 4 * cell;
-                int d = cells.depth(cell);
-                int bucket = cells.bucket(cell);
-                boolean cut = false;
-                boolean outside = false;
-                int n = p.length / 2;
-                for (int e = 0; e < n && rest != null; e++) {
-                    double ax = p[2 * e];
-                    double ay = p[2 * e + 1];
-                    double bx = p[2 * ((e + 1) % n)];
-                    double by = p[2 * ((e + 1) % n) + 1];
-                    double length = Math.sqrt((bx - ax) * (bx - ax) + (by - ay) * (by - ay));
-                    if (!(length > tolerance)) {
-                        continue;
-                    }
-                    // Left of a → b is inside: n_left · x >= n_left · a, with n_left = (-dy, dx).
-                    double nx = -(by - ay) / length;
-                    double ny = (bx - ax) / length;
-                    double c = nx * ax + ny * ay;
-                    // The cell's box first, while the cell is whole: a box more than the
-                    // tolerance inside the edge holds a cell that is too, a box more than it
-                    // outside one that is outside (the same answers as its corners give).
-                    if (!cut) {
-                        double boxLeast = nx * boxes[nx > 0 ? at : at + 2] + ny * boxes[ny > 0 ? at + 1 : at + 3] - c;
-                        if (boxLeast > tolerance) {
-                            continue; // inside this edge
-                        }
-                        double boxMost = nx * boxes[nx > 0 ? at + 2 : at] + ny * boxes[ny > 0 ? at + 3 : at + 1] - c;
-                        if (boxMost < -tolerance) {
-                            outside = true; // the cell outside the face, whole
-                            rest = null;
-                            break;
-                        }
-                    }
-                    // Most cells lie wholly on one side of most edges: those are not clipped.
-                    double least = Double.POSITIVE_INFINITY;
-                    double most = Double.NEGATIVE_INFINITY;
-                    for (int i = 0; i < rest.length; i += 2) {
-                        double side = nx * rest[i] + ny * rest[i + 1] - c;
-                        // Comparisons, not Math.min and max: their care for NaN and -0 costs in this loop.
-                        if (side < least) {
-                            least = side;
-                        }
-                        if (side > most) {
-                            most = side;
-                        }
-                    }
-                    if (least >= -tolerance && most > tolerance) {
-                        continue; // inside this edge
-                    }
-                    if (most <= tolerance && least < -tolerance) {
-                        if (cut) {
-                            cells.add(rest, d, bucket); // the rest outside the face, whole
-                        } else {
-                            outside = true; // the cell outside the face, whole
-                        }
-                        rest = null;
-                        break;
-                    }
-                    if (!cut) {
-                        cells.remove(cell);
-                        cut = true;
-                    }
-                    double[] out = Polygons2.clip(rest, rest.length / 2, nx, ny, c, tolerance);
-                    if (out != null) {
-                        cells.add(out, d, bucket);
-                    }
-                    rest = Polygons2.clip(rest, rest.length / 2, -nx, -ny, -c, tolerance);
-                }
-                if (!cut && !outside) {
-                    cells.deepen(cell); // inside the face, whole
-                } else if (cut && rest != null) {
-                    cells.add(rest, d + 1, bucket);
+            double[] b = Polygons2.bounds(p);
+            faces[count] = p;
+            faceBoxes[count++] = b;
+            for (int bx = cells.column(b[0]); bx <= cells.column(b[2]); bx++) {
+                for (int by = cells.row(b[1]); by <= cells.row(b[3]); by++) {
+                    meeting[by * columns + bx]++;
                 }
             }
         }
+        int[][] facesOf = new int[columns * rows][];
+        for (int bucket = 0; bucket < facesOf.length; bucket++) {
+            facesOf[bucket] = new int[meeting[bucket]];
+            meeting[bucket] = 0;
+        }
+        // Each bucket's faces the largest first: where only covered, the first few cover it, and
+        // the rest meet no cell left uncovered (counted, they go in their order, below).
+        Integer[] largestFirst = new Integer[count];
+        double[] areas = new double[count];
+        for (int f = 0; f < count; f++) {
+            largestFirst[f] = f;
+            areas[f] = Math.abs(Polygons2.twiceArea(faces[f], faces[f].length / 2));
+        }
+        java.util.Arrays.sort(largestFirst, (a, b) -> Double.compare(areas[b], areas[a]));
+        for (int f : largestFirst) {
+            double[] b = faceBoxes[f];
+            for (int bx = cells.column(b[0]); bx <= cells.column(b[2]); bx++) {
+                for (int by = cells.row(b[1]); by <= cells.row(b[3]); by++) {
+                    int bucket = by * columns + bx;
+                    facesOf[bucket][meeting[bucket]++] = f;
+                }
+            }
+        }
+        // The buckets that could be deepest first, so that the rest can be passed over sooner.
+        Integer[] order = new Integer[facesOf.length];
+        for (int bucket = 0; bucket < order.length; bucket++) {
+            order[bucket] = bucket;
+        }
+        java.util.Arrays.sort(order, (a, b) -> Integer.compare(facesOf[b].length, facesOf[a].length));
+        int most = 0;
+        for (int bucket : order) {
+            int floor = Math.max(most, deepestElsewhere == null ? 0 : deepestElsewhere.get());
+            boolean counted = Math.min(facesOf[bucket].length, mostPossible) >= floor;
+            if (counted) {
+                // In their order: the cells, and so the deepest cell reported, are the same as a
+                // face at a time over the whole triangle made.
+                java.util.Arrays.sort(facesOf[bucket]);
+            }
+            for (int f : facesOf[bucket]) {
+                cut(cells, bucket, faces[f], faceBoxes[f], counted);
+            }
+            if (counted) {
+                most = Math.max(most, cells.deepestIn(bucket));
+            }
+        }
+        if (deepestElsewhere != null) {
+            deepestElsewhere.accumulateAndGet(most, Math::max);
+        }
         return cells.totals();
+    }
+
+    /**
+     * Cuts the cells of one bucket by face p (counter-clockwise, its box {@code box}), each cell
+     * inside it one deeper; where not {@code counted}, only the cells no face covers yet.
+     */
+    private static void cut(Cells cells, int bucket, double[] p, double[] box, boolean counted) {
+        double tolerance = cells.tolerance;
+        int found = cells.near(bucket, box, counted);
+        for (int k = 0; k < found; k++) {
+            int cell = cells.found(k);
+            double[] rest = cells.polygon(cell);
+            double[] boxes = cells.boxes();
+            int at = 4 * cell;
+            int d = cells.depth(cell);
+            boolean cut = false;
+            boolean outside = false;
+            int n = p.length / 2;
+            for (int e = 0; e < n && rest != null; e++) {
+                double ax = p[2 * e];
+                double ay = p[2 * e + 1];
+                double bx = p[2 * ((e + 1) % n)];
+                double by = p[2 * ((e + 1) % n) + 1];
+                double length = Math.sqrt((bx - ax) * (bx - ax) + (by - ay) * (by - ay));
+                if (!(length > tolerance)) {
+                    continue;
+                }
+                // Left of a → b is inside: n_left · x >= n_left · a, with n_left = (-dy, dx).
+                double nx = -(by - ay) / length;
+                double ny = (bx - ax) / length;
+                double c = nx * ax + ny * ay;
+                // The cell's box first, while the cell is whole: a box more than the
+                // tolerance inside the edge holds a cell that is too, a box more than it
+                // outside one that is outside (the same answers as its corners give).
+                if (!cut) {
+                    double boxLeast = nx * boxes[nx > 0 ? at : at + 2] + ny * boxes[ny > 0 ? at + 1 : at + 3] - c;
+                    if (boxLeast > tolerance) {
+                        continue; // inside this edge
+                    }
+                    double boxMost = nx * boxes[nx > 0 ? at + 2 : at] + ny * boxes[ny > 0 ? at + 3 : at + 1] - c;
+                    if (boxMost < -tolerance) {
+                        outside = true; // the cell outside the face, whole
+                        rest = null;
+                        break;
+                    }
+                }
+                // Most cells lie wholly on one side of most edges: those are not clipped.
+                double least = Double.POSITIVE_INFINITY;
+                double most = Double.NEGATIVE_INFINITY;
+                for (int i = 0; i < rest.length; i += 2) {
+                    double side = nx * rest[i] + ny * rest[i + 1] - c;
+                    // Comparisons, not Math.min and max: their care for NaN and -0 costs in this loop.
+                    if (side < least) {
+                        least = side;
+                    }
+                    if (side > most) {
+                        most = side;
+                    }
+                }
+                if (least >= -tolerance && most > tolerance) {
+                    continue; // inside this edge
+                }
+                if (most <= tolerance && least < -tolerance) {
+                    if (cut) {
+                        cells.add(rest, d, bucket); // the rest outside the face, whole
+                    } else {
+                        outside = true; // the cell outside the face, whole
+                    }
+                    rest = null;
+                    break;
+                }
+                if (!cut) {
+                    cells.remove(cell);
+                    cut = true;
+                }
+                double[] out = Polygons2.clip(rest, rest.length / 2, nx, ny, c, tolerance);
+                if (out != null) {
+                    cells.add(out, d, bucket);
+                }
+                rest = Polygons2.clip(rest, rest.length / 2, -nx, -ny, -c, tolerance);
+            }
+            if (!cut && !outside) {
+                cells.deepen(cell); // inside the face, whole
+            } else if (cut && rest != null) {
+                cells.add(rest, d + 1, bucket);
+            }
+        }
     }
 
     /**
@@ -164,7 +251,6 @@ final class FaceArrangement {
         private double[] boxes = new double[4 * 64];
         /** Per cell: its depth, or -1 once it is cut up. */
         private int[] depths = new int[64];
-        private int[] bucketOf = new int[64];
         private int count;
         /** Per bucket: its cell count, then the cells (the dead ones too, skipped by near()). */
         private final int[][] buckets;
@@ -174,9 +260,7 @@ final class FaceArrangement {
         private final double cellHeight;
         private final int columns;
         private final int rows;
-        private final double tolerance;
-        private int[] seen = new int[64];
-        private int visit;
+        final double tolerance;
         private int[] found = new int[16];
 
         Cells(double[] triangle, int columns, int rows, double tolerance) {
@@ -224,8 +308,6 @@ final class FaceArrangement {
                 polygons = java.util.Arrays.copyOf(polygons, more);
                 boxes = java.util.Arrays.copyOf(boxes, 4 * more);
                 depths = java.util.Arrays.copyOf(depths, more);
-                bucketOf = java.util.Arrays.copyOf(bucketOf, more);
-                seen = java.util.Arrays.copyOf(seen, more);
             }
             int id = count++;
             polygons[id] = polygon;
@@ -244,7 +326,6 @@ final class FaceArrangement {
             boxes[4 * id + 2] = x1;
             boxes[4 * id + 3] = y1;
             depths[id] = depth;
-            bucketOf[id] = bucket;
             int[] cells = buckets[bucket];
             if (cells[0] + 1 == cells.length) {
                 cells = java.util.Arrays.copyOf(cells, 2 * cells.length);
@@ -253,43 +334,44 @@ final class FaceArrangement {
             cells[++cells[0]] = id;
         }
 
-        int bucket(int id) {
-            return bucketOf[id];
-        }
-
         /**
-         * Finds the living cells whose box overlaps {@code box} by more than the tolerance and
-         * returns how many: {@link #found} gives them, until the next call.
+         * Finds the living cells of one bucket whose box overlaps {@code box} by more than the
+         * tolerance (where not {@code counted}, only those no face covers yet) and returns how
+         * many: {@link #found} gives them, until the next call.
          */
-        int near(double[] box) {
-            visit++;
+        int near(int bucket, double[] box, boolean counted) {
             int n = 0;
-            for (int bx = column(box[0]); bx <= column(box[2]); bx++) {
-                for (int by = row(box[1]); by <= row(box[3]); by++) {
-                    int[] cells = buckets[by * columns + bx];
-                    int kept = 0; // the dead dropped from the bucket as it is read: a cell cut up leaves it for good
-                    for (int k = 1; k <= cells[0]; k++) {
-                        int id = cells[k];
-                        if (depths[id] < 0) {
-                            continue;
-                        }
-                        cells[++kept] = id;
-                        if (seen[id] == visit) {
-                            continue;
-                        }
-                        seen[id] = visit;
-                        if (boxes[4 * id] < box[2] - tolerance && box[0] < boxes[4 * id + 2] - tolerance
-                                && boxes[4 * id + 1] < box[3] - tolerance && box[1] < boxes[4 * id + 3] - tolerance) {
-                            if (n == found.length) {
-                                found = java.util.Arrays.copyOf(found, 2 * n);
-                            }
-                            found[n++] = id;
-                        }
+            int[] cells = buckets[bucket];
+            int kept = 0; // the dead dropped from the bucket as it is read: a cell cut up leaves it for good
+            for (int k = 1; k <= cells[0]; k++) {
+                int id = cells[k];
+                if (depths[id] < 0) {
+                    continue;
+                }
+                cells[++kept] = id;
+                if (!counted && depths[id] > 0) {
+                    continue;
+                }
+                if (boxes[4 * id] < box[2] - tolerance && box[0] < boxes[4 * id + 2] - tolerance
+                        && boxes[4 * id + 1] < box[3] - tolerance && box[1] < boxes[4 * id + 3] - tolerance) {
+                    if (n == found.length) {
+                        found = java.util.Arrays.copyOf(found, 2 * n);
                     }
-                    cells[0] = kept;
+                    found[n++] = id;
                 }
             }
+            cells[0] = kept;
             return n;
+        }
+
+        /** The most faces over a living cell of the bucket. */
+        int deepestIn(int bucket) {
+            int most = 0;
+            int[] cells = buckets[bucket];
+            for (int k = 1; k <= cells[0]; k++) {
+                most = Math.max(most, depths[cells[k]]);
+            }
+            return most;
         }
 
         int found(int k) {
@@ -318,11 +400,11 @@ final class FaceArrangement {
             polygons[id] = null;
         }
 
-        private int column(double x) {
+        int column(double x) {
             return Math.max(0, Math.min(columns - 1, (int) Math.floor((x - minX) / cellWidth)));
         }
 
-        private int row(double y) {
+        int row(double y) {
             return Math.max(0, Math.min(rows - 1, (int) Math.floor((y - minY) / cellHeight)));
         }
 

@@ -9,6 +9,7 @@ import ifold.sheet.Polygons2;
 import ifold.sheet.Sheet;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.atomic.AtomicInteger;
 
 /**
  * One host's figures for a wrap's measures ({@link WrapAnalysis}), from the arrangement of the
@@ -21,12 +22,17 @@ record HostCells(double outside, double farthest, double[][] triangles) {
     /**
      * What the figures read besides a host's paper: the refined mesh and the hosts' frames, the
      * strip's first path triangle and how many it wraps (a triangle's passes run along the edge
-     * it shares with the next), and the sheet's thickness, width and tolerance.
+     * it shares with the next), the sheet's thickness, width and tolerance, and the most layers
+     * found so far on any host of the wrap, which all its hosts' figures share: a triangle that
+     * cannot have as many is not counted to its most (its figure is then fewer than the wrap's
+     * most, the same answer for the wrap's most and where it is).
      */
     record Context(IndexedPolygons mesh, HostFrame[] frames, int firstTriangle, int triangles, double thickness, double width,
-            double tolerance) {
-        static Context of(IndexedPolygons mesh, HostFrame[] frames, int firstTriangle, int triangles, Sheet sheet) {
-            return new Context(mesh, frames, firstTriangle, triangles, sheet.thickness(), sheet.width(), sheet.tolerance());
+            double tolerance, AtomicInteger deepestSoFar) {
+        static Context of(IndexedPolygons mesh, HostFrame[] frames, int firstTriangle, int triangles, Sheet sheet,
+                AtomicInteger deepestSoFar) {
+            return new Context(mesh, frames, firstTriangle, triangles, sheet.thickness(), sheet.width(), sheet.tolerance(),
+                    deepestSoFar);
         }
     }
 
@@ -92,7 +98,8 @@ record HostCells(double outside, double farthest, double[][] triangles) {
                     polygons.add(turned(part, along));
                 }
             }
-            double[] cells = FaceArrangement.depths(counterClockwise(turned(corners, along)), polygons, context.tolerance());
+            double[] cells = FaceArrangement.depths(counterClockwise(turned(corners, along)), polygons, context.tolerance(),
+                    paper.topLevel() + 1, context.deepestSoFar());
             // The point and the deepest cell's corners back in the host's frame.
             figures[t] = new double[cells.length];
             System.arraycopy(cells, 0, figures[t], 0, 3);

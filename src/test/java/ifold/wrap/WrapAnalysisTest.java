@@ -54,4 +54,48 @@ class WrapAnalysisTest {
                 new double[] {1.1, 1.1, 1.9, 1.9, 1.9, 1.9 + 1e-13});
         assertEquals(2, (int) FaceArrangement.depths(TRIANGLE, faces, TOLERANCE)[2]);
     }
+
+    /**
+     * Where only the most layers of a whole wrap are wanted, a triangle's buckets that cannot
+     * hold as many as found elsewhere are covered, not counted: the area and the area covered
+     * stay, the most and its cell stay where the triangle can reach the most found, and where it
+     * cannot, it says fewer. Random rectangles and triangles, strewn and piled.
+     */
+    @Test
+    void bucketsThatCannotBeDeepestAreCoveredNotCounted() {
+        java.util.Random random = new java.util.Random(7);
+        for (int trial = 0; trial < 40; trial++) {
+            List<double[]> faces = new ArrayList<>();
+            int count = 20 + random.nextInt(200);
+            for (int i = 0; i < count; i++) {
+                double x = 4 * random.nextDouble();
+                double y = 4 * random.nextDouble();
+                double w = 0.05 + (random.nextBoolean() ? 3 : 0.5) * random.nextDouble();
+                double h = 0.05 + 0.5 * random.nextDouble();
+                faces.add(random.nextBoolean() ? new double[] {x, y, x + w, y, x + w, y + h, x, y + h}
+                        : new double[] {x, y, x + w, y + h / 3, x + w / 3, y + h});
+            }
+            double[] exact = FaceArrangement.depths(TRIANGLE, faces, TOLERANCE);
+            int most = (int) exact[2];
+            for (int elsewhere : new int[] {0, most / 2, most, most + 1, most + 5}) {
+                // Levels: as many as the faces make over the deepest point at least, as a stack has.
+                for (int levels : new int[] {Integer.MAX_VALUE, most}) {
+                    java.util.concurrent.atomic.AtomicInteger found = new java.util.concurrent.atomic.AtomicInteger(elsewhere);
+                    double[] cells = FaceArrangement.depths(TRIANGLE, faces, TOLERANCE, levels, found);
+                    String what = "trial " + trial + ", " + elsewhere + " found elsewhere, " + levels + " levels";
+                    assertEquals(exact[0], cells[0], 1e-9, what);
+                    assertEquals(exact[1], cells[1], 1e-9, what);
+                    if (elsewhere <= most) {
+                        assertEquals(most, (int) cells[2], what);
+                        org.junit.jupiter.api.Assertions.assertArrayEquals(java.util.Arrays.copyOfRange(exact, 3, exact.length),
+                                java.util.Arrays.copyOfRange(cells, 3, cells.length), what);
+                        assertEquals(Math.max(elsewhere, most), found.get(), what);
+                    } else {
+                        org.junit.jupiter.api.Assertions.assertTrue((int) cells[2] < elsewhere, what);
+                        assertEquals(elsewhere, found.get(), what);
+                    }
+                }
+            }
+        }
+    }
 }
