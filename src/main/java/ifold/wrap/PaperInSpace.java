@@ -393,11 +393,13 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                         int fm1 = rowAt[0];
                         int gm0 = rowStart[rowStart.length - 1];
                         int gm1 = rowAt[rowAt.length - 1];
-                        addBendCap(bend.host(), new int[] {fFrom, fAt, fm1, fm0}, after, caps, capAfter);
+                        boolean fromCreaseEnd = j == 1;
+                        boolean toCreaseEnd = j == cuts.length - 1;
+                        addBendCap(bend.host(), new int[] {fFrom, fAt, fm1, fm0}, fromCreaseEnd, toCreaseEnd, after, caps, capAfter);
                         if (!backs) {
-                            addBendCap(bend.host(), new int[] {fm0, fm1, gm1, gm0}, after, caps, capAfter);
+                            addBendCap(bend.host(), new int[] {fm0, fm1, gm1, gm0}, fromCreaseEnd, toCreaseEnd, after, caps, capAfter);
                         }
-                        addBendCap(bend.host(), new int[] {gm0, gm1, gAt, gFrom}, after, caps, capAfter);
+                        addBendCap(bend.host(), new int[] {gm0, gm1, gAt, gFrom}, fromCreaseEnd, toCreaseEnd, after, caps, capAfter);
                     } else {
                         joinSquashed(cornerNear(fChain, between, t0), cornerNear(gChain, between, t0), after, caps, capAfter);
                     }
@@ -1357,7 +1359,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     caps.add(quad);
                     capAfter.add(after);
                 } else if (!flat && !squashed) {
-                    addBendCap(bendHost, quad, after, caps, capAfter);
+                    addBendCap(bendHost, quad, k == 1, k == cuts.length - 1, after, caps, capAfter);
                 } else if (!flat) {
                     joinSquashed(cornerNear(f, s.middle(), s.from()), cornerNear(g, s.middle(), s.from()), after, caps, capAfter);
                 }
@@ -1379,37 +1381,70 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          * 249). Split along the diagonal from the corner off the mitre, both triangles leave its
          * plane and touch it only along that diagonal's far side. A facet wholly on the mitre is
          * pressed flat there, as the layer's paper is: {@link #addPressed}.
+         *
+         * <p>A facet with one layer's side pressed onto the mitre's line, its other two corners
+         * off it, cannot leave the plane: whichever diagonal splits it, the triangle over that side
+         * lies in the plane through the line and the corner it fans from. At a crease's end other
+         * creases begin, and their bends fan from the same corners: on the torus, the two sides of
+         * a lower face that meet at the strip's edge by a concave edge are creases of two bends to
+         * the same upper layer, pressed onto the mitre from both; drawn from its first corner, the
+         * short stretch of one bend at that corner fanned from the lower layer's corner there onto
+         * the line, and the other bend's facet, split from the same corner, covered the same bit of
+         * the line from it: in one plane, one on the other (21 pairs). A stretch that begins or
+         * ends at its crease's end, not both, fans its pressed side from its other end, inside the
+         * crease, whose corners only this bend's stretches share, and which follow each other
+         * along the line. {@code fromCreaseEnd} and {@code toCreaseEnd} say whether the stretch's
+         * start (corners 0 and 3) and its end (corners 1 and 2) are at an end of the crease.
          */
-        private void addBendCap(int host, int[] quad, int after, List<int[]> caps, IntList capAfter) {
+        private void addBendCap(int host, int[] quad, boolean fromCreaseEnd, boolean toCreaseEnd, int after, List<int[]> caps,
+                IntList capAfter) {
             HostFrame frame = frames[host];
-            if (frame.mitre() != null && sheet.thickness() > 0) {
+            if (frame.mitre() != null && sheet.thickness() > 0 && quad.length == 4) {
+                boolean[] on = new boolean[4];
                 for (int k = 0; k < frame.mitre().length; k++) {
                     if (frame.mitre()[k] == null) {
                         continue;
                     }
                     int off = -1;
                     int offCount = 0;
-                    for (int c = 0; c < quad.length; c++) {
-                        if (!onMitre(frame, k, quad[c])) {
+                    for (int c = 0; c < 4; c++) {
+                        on[c] = onMitre(frame, k, quad[c]);
+                        if (!on[c]) {
                             off = c;
                             offCount++;
                         }
                     }
-                    if (offCount == 0 && quad.length == 4) {
+                    if (offCount == 0) {
                         addPressed(quad, after, caps, capAfter);
                         return;
                     }
-                    if (offCount == 1 && quad.length == 4) {
+                    if (offCount == 1) {
                         // Split along the diagonal from the corner off the mitre: both triangles leave its plane.
-                        caps.add(new int[] {quad[off], quad[(off + 1) % 4], quad[(off + 2) % 4]});
-                        caps.add(new int[] {quad[off], quad[(off + 2) % 4], quad[(off + 3) % 4]});
-                        capAfter.add(after);
-                        capAfter.add(after);
+                        addFan(quad, off, after, caps, capAfter);
                         return;
+                    }
+                    // One layer's side (corners 0 to 1, or 2 to 3) pressed onto the mitre's line:
+                    // drawn from corner 0, the triangle over it fans from corner (p + 2) mod 4.
+                    int p = on[0] && on[1] ? 0 : on[2] && on[3] ? 2 : -1;
+                    if (offCount == 2 && p >= 0) {
+                        boolean fanAtCreaseEnd = p == 0 ? toCreaseEnd : fromCreaseEnd;
+                        boolean otherAtCreaseEnd = p == 0 ? fromCreaseEnd : toCreaseEnd;
+                        if (fanAtCreaseEnd && !otherAtCreaseEnd) {
+                            addFan(quad, (p + 3) % 4, after, caps, capAfter);
+                            return;
+                        }
                     }
                 }
             }
             caps.add(quad);
+            capAfter.add(after);
+        }
+
+        /** Adds quad as two triangles from its corner {@code apex}, split along the diagonal from it. */
+        private static void addFan(int[] quad, int apex, int after, List<int[]> caps, IntList capAfter) {
+            caps.add(new int[] {quad[apex], quad[(apex + 1) % 4], quad[(apex + 2) % 4]});
+            caps.add(new int[] {quad[apex], quad[(apex + 2) % 4], quad[(apex + 3) % 4]});
+            capAfter.add(after);
             capAfter.add(after);
         }
 
