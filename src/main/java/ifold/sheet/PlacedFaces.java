@@ -149,7 +149,33 @@ final class PlacedFaces {
                 || boxB[1] >= boxA[3] - tolerance) {
             return false;
         }
-        return Polygons2.overlap(a, a.length / 2, b, b.length / 2, tolerance);
+        return Polygons2.overlap(a, a.length / 2, extentsOf(a), b, b.length / 2, extentsOf(b), tolerance);
+    }
+
+    /**
+     * The last two polygons tested, by identity (a face's polygon is a new array once it
+     * changes), and their own extents ({@link Polygons2#ownExtents}): a face landing is tested
+     * against every face near it, a stack's relations come a face at a time.
+     */
+    private final double[][] extentsFor = new double[2][];
+    private final double[][] extents = {new double[8], new double[8]};
+    private int lastUsed;
+
+    private double[] extentsOf(double[] polygon) {
+        for (int slot = 0; slot < 2; slot++) {
+            if (extentsFor[slot] == polygon) {
+                lastUsed = slot;
+                return extents[slot];
+            }
+        }
+        int slot = 1 - lastUsed;
+        if (extents[slot].length < polygon.length) {
+            extents[slot] = new double[polygon.length];
+        }
+        Polygons2.ownExtents(polygon, polygon.length / 2, extents[slot]);
+        extentsFor[slot] = polygon;
+        lastUsed = slot;
+        return extents[slot];
     }
 
     /** Each face's corners in its host's frame and its bounding box, kept until the face changes. */

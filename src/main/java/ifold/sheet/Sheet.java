@@ -482,6 +482,12 @@ public final class Sheet {
         return relations;
     }
 
+    /** The levels of the faces on {@code host}, in the order {@link #facesOn} gives them. */
+    public int[] levelsOn(int host) {
+        Stack stack = stacks.get(host);
+        return stack == null ? new int[0] : Arrays.copyOf(levels(stack), stack.count);
+    }
+
     /** The faces resting on {@code host}. */
     public int[] facesOn(int host) {
         Stack stack = stacks.get(host);

@@ -24,21 +24,22 @@ final class FaceArrangement {
      * triangle, mostly side by side.
      */
     static double[] depths(double[] triangle, List<double[]> polygons, double tolerance) {
-        return depths(triangle, polygons, tolerance, Integer.MAX_VALUE, null);
+        return depths(triangle, polygons, null, tolerance, null);
     }
 
     /**
      * {@link #depths(double[], List, double)}, where only the most layers over the whole surface
      * and the cell that deep are wanted: {@code deepestElsewhere} holds the most found so far on
      * other triangles, and is raised to this one's. A bucket of the grid can have no more layers
-     * than the faces whose boxes meet it, nor than {@code mostPossible} (the levels of the host's
-     * stack); one with fewer than the most found, here or elsewhere, is only covered, not counted
-     * (on the 5,000-triangle torus, 27,000 of 312,000 buckets could reach its 18 layers). The
-     * area and the area covered are this triangle's still; the most layers too where this
-     * triangle has the surface's most, and then the same cell, as every bucket that could hold
-     * that many is counted; elsewhere, fewer than the most found.
+     * than the levels of the faces whose boxes meet it ({@code levels}: each polygon's level in
+     * its stack, where faces of one level never overlap; null: each face a level of its own); one
+     * with fewer than the most found, here or elsewhere, is only covered, not counted (of the
+     * 5,000-triangle torus's 312,000 buckets, 5,400 are counted; by the faces alone, not their
+     * levels, 24,000 were). The area and the area covered are this triangle's still; the
+     * most layers too where this triangle has the surface's most, and then the same cell, as
+     * every bucket that could hold that many is counted; elsewhere, fewer than the most found.
      */
-    static double[] depths(double[] triangle, List<double[]> polygons, double tolerance, int mostPossible,
+    static double[] depths(double[] triangle, List<double[]> polygons, int[] levels, double tolerance,
             AtomicInteger deepestElsewhere) {
         // Buckets of about four faces each: finer, the grid's own lines cut the faces into more
         // cells than it saves in looking (the 1,280-triangle icosphere: 2.3 million cells at
@@ -65,9 +66,10 @@ final class FaceArrangement {
         int count = 0;
         double[][] faces = new double[polygons.size()][];
         double[][] faceBoxes = new double[polygons.size()][];
+        int[] levelOf = new int[polygons.size()];
         int[] meeting = new int[columns * rows];
-        for (double[] polygon : polygons) {
-            double[] p = counterClockwise(polygon);
+        for (int i = 0; i < polygons.size(); i++) {
+            double[] p = counterClockwise(polygons.get(i));
             if (thinnerThan(p, tolerance)) {
                 // No part of it is more than the tolerance across: it covers nothing. (Its edges,
                 // all shorter than the tolerance, would cut no cell, and every cell its box met
@@ -75,6 +77,7 @@ final class FaceArrangement {
                 continue;
             }
             double[] b = Polygons2.bounds(p);
+            levelOf[count] = levels == null ? count : levels[i];
             faces[count] = p;
             faceBoxes[count++] = b;
             for (int bx = cells.column(b[0]); bx <= cells.column(b[2]); bx++) {
@@ -106,32 +109,53 @@ final class FaceArrangement {
                 }
             }
         }
-        // The buckets that could be deepest first, so that the rest can be passed over sooner.
+        // Every bucket covered, the largest faces first: the area and the area covered come from
+        // these cells alone, the same whichever buckets are counted below (which depends on the
+        // other triangles' threads: the reports stay the same to the byte).
+        for (int bucket = 0; bucket < facesOf.length; bucket++) {
+            for (int f : facesOf[bucket]) {
+                cut(cells, bucket, faces[f], faceBoxes[f], false);
+            }
+        }
+        // Counted, in buckets of their own: those that could be deepest first, so that the rest
+        // can be passed over sooner.
+        Cells counted = new Cells(cells);
+        int[] levelsMeeting = new int[facesOf.length];
+        int[] seen = new int[count == 0 ? 0 : java.util.Arrays.stream(levelOf, 0, count).max().getAsInt() + 1];
         Integer[] order = new Integer[facesOf.length];
         for (int bucket = 0; bucket < order.length; bucket++) {
             order[bucket] = bucket;
+            for (int f : facesOf[bucket]) {
+                if (seen[levelOf[f]] != bucket + 1) {
+                    seen[levelOf[f]] = bucket + 1;
+                    levelsMeeting[bucket]++;
+                }
+            }
         }
-        java.util.Arrays.sort(order, (a, b) -> Integer.compare(facesOf[b].length, facesOf[a].length));
+        java.util.Arrays.sort(order, (a, b) -> Integer.compare(levelsMeeting[b], levelsMeeting[a]));
         int most = 0;
         for (int bucket : order) {
             int floor = Math.max(most, deepestElsewhere == null ? 0 : deepestElsewhere.get());
-            boolean counted = Math.min(facesOf[bucket].length, mostPossible) >= floor;
-            if (counted) {
-                // In their order: the cells, and so the deepest cell reported, are the same as a
-                // face at a time over the whole triangle made.
-                java.util.Arrays.sort(facesOf[bucket]);
+            if (levelsMeeting[bucket] < floor) {
+                break; // nor any after it
             }
+            counted.open(bucket);
+            // In their order: the cells, and so the deepest cell reported, are the same as a
+            // face at a time over the whole triangle made.
+            java.util.Arrays.sort(facesOf[bucket]);
             for (int f : facesOf[bucket]) {
-                cut(cells, bucket, faces[f], faceBoxes[f], counted);
+                cut(counted, bucket, faces[f], faceBoxes[f], true);
             }
-            if (counted) {
-                most = Math.max(most, cells.deepestIn(bucket));
-            }
+            most = Math.max(most, counted.deepestIn(bucket));
         }
         if (deepestElsewhere != null) {
             deepestElsewhere.accumulateAndGet(most, Math::max);
         }
-        return cells.totals();
+        double[] covered = cells.totals();
+        double[] deepest = counted.totals();
+        deepest[0] = covered[0];
+        deepest[1] = covered[1];
+        return deepest;
     }
 
     /**
@@ -254,6 +278,8 @@ final class FaceArrangement {
         private int count;
         /** Per bucket: its cell count, then the cells (the dead ones too, skipped by near()). */
         private final int[][] buckets;
+        /** Per bucket: the triangle's part in it, or null. */
+        private final double[][] pieces;
         private final double minX;
         private final double minY;
         private final double cellWidth;
@@ -273,6 +299,7 @@ final class FaceArrangement {
             this.cellHeight = Math.max(box[3] - box[1], tolerance) / rows;
             this.tolerance = tolerance;
             this.buckets = new int[columns * rows][];
+            this.pieces = new double[columns * rows][];
             for (int by = 0; by < rows; by++) {
                 for (int bx = 0; bx < columns; bx++) {
                     buckets[by * columns + bx] = new int[5];
@@ -288,10 +315,32 @@ final class FaceArrangement {
                     piece = clipTo(piece, 1, 0, right);
                     piece = clipTo(piece, 0, -1, -bottom);
                     piece = clipTo(piece, 0, 1, top);
+                    pieces[by * columns + bx] = piece;
                     if (piece != null) {
                         add(piece, 0, by * columns + bx);
                     }
                 }
+            }
+        }
+
+        /** Cells on the same grid over the same triangle, with no bucket opened yet ({@link #open}). */
+        Cells(Cells grid) {
+            this.columns = grid.columns;
+            this.rows = grid.rows;
+            this.minX = grid.minX;
+            this.minY = grid.minY;
+            this.cellWidth = grid.cellWidth;
+            this.cellHeight = grid.cellHeight;
+            this.tolerance = grid.tolerance;
+            this.pieces = grid.pieces;
+            this.buckets = new int[columns * rows][];
+        }
+
+        /** Puts the triangle's piece in the bucket as its one cell, of no depth. */
+        void open(int bucket) {
+            buckets[bucket] = new int[5];
+            if (pieces[bucket] != null) {
+                add(pieces[bucket], 0, bucket);
             }
         }
 

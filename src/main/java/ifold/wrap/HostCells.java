@@ -38,16 +38,16 @@ record HostCells(double outside, double farthest, double[][] triangles) {
 
     /**
      * A host's paper as the figures read it: its faces' corners in the host's frame, in the order
-     * of its stack, and its top level (-1: no paper).
+     * of its stack, their levels, and its top level (-1: no paper).
      */
-    record Paper(double[][] placed, int topLevel) {
+    record Paper(double[][] placed, int[] levels, int topLevel) {
         static Paper of(Sheet sheet, int host) {
             int[] faces = sheet.facesOn(host);
             double[][] placed = new double[faces.length][];
             for (int i = 0; i < faces.length; i++) {
                 placed[i] = sheet.placed(faces[i]);
             }
-            return new Paper(placed, sheet.topLevel(host));
+            return new Paper(placed, sheet.levelsOn(host), sheet.topLevel(host));
         }
     }
 
@@ -87,6 +87,7 @@ record HostCells(double outside, double farthest, double[][] triangles) {
             double[] along = passDirection(context, triangle, frame);
             int[] near = grid == null ? null : grid.near(corners); // null: look at all
             List<double[]> polygons = new ArrayList<>();
+            int[] levels = new int[near == null ? faces : near.length];
             for (int m = 0; m < (near == null ? faces : near.length); m++) {
                 int i = near == null ? m : near[m];
                 double[] b = boxes[i];
@@ -95,11 +96,12 @@ record HostCells(double outside, double farthest, double[][] triangles) {
                 }
                 double[] part = clipToTriangle(counterClockwise(placed[i]), corners);
                 if (part != null) {
+                    levels[polygons.size()] = paper.levels()[i];
                     polygons.add(turned(part, along));
                 }
             }
-            double[] cells = FaceArrangement.depths(counterClockwise(turned(corners, along)), polygons, context.tolerance(),
-                    paper.topLevel() + 1, context.deepestSoFar());
+            double[] cells = FaceArrangement.depths(counterClockwise(turned(corners, along)), polygons, levels, context.tolerance(),
+                    context.deepestSoFar());
             // The point and the deepest cell's corners back in the host's frame.
             figures[t] = new double[cells.length];
             System.arraycopy(cells, 0, figures[t], 0, 3);

@@ -78,11 +78,11 @@ class WrapAnalysisTest {
             double[] exact = FaceArrangement.depths(TRIANGLE, faces, TOLERANCE);
             int most = (int) exact[2];
             for (int elsewhere : new int[] {0, most / 2, most, most + 1, most + 5}) {
-                // Levels: as many as the faces make over the deepest point at least, as a stack has.
-                for (int levels : new int[] {Integer.MAX_VALUE, most}) {
+                // Each face a level of its own, or faces that do not overlap sharing levels, as a stack's do.
+                for (int[] levels : new int[][] {null, levelsApart(faces)}) {
                     java.util.concurrent.atomic.AtomicInteger found = new java.util.concurrent.atomic.AtomicInteger(elsewhere);
-                    double[] cells = FaceArrangement.depths(TRIANGLE, faces, TOLERANCE, levels, found);
-                    String what = "trial " + trial + ", " + elsewhere + " found elsewhere, " + levels + " levels";
+                    double[] cells = FaceArrangement.depths(TRIANGLE, faces, levels, TOLERANCE, found);
+                    String what = "trial " + trial + ", " + elsewhere + " found elsewhere, levels " + java.util.Arrays.toString(levels);
                     assertEquals(exact[0], cells[0], 1e-9, what);
                     assertEquals(exact[1], cells[1], 1e-9, what);
                     if (elsewhere <= most) {
@@ -97,5 +97,20 @@ class WrapAnalysisTest {
                 }
             }
         }
+    }
+
+    /** Levels for faces as a stack gives them: each the lowest that no face it overlaps below it has. */
+    private static int[] levelsApart(List<double[]> faces) {
+        int[] levels = new int[faces.size()];
+        for (int i = 0; i < faces.size(); i++) {
+            for (int j = 0; j < i; j++) {
+                double[] a = faces.get(i);
+                double[] b = faces.get(j);
+                if (ifold.sheet.Polygons2.overlap(a, a.length / 2, b, b.length / 2, TOLERANCE)) {
+                    levels[i] = Math.max(levels[i], levels[j] + 1);
+                }
+            }
+        }
+        return levels;
     }
 }
