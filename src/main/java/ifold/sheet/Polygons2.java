@@ -21,7 +21,11 @@ public final class Polygons2 {
      * edge normals leaves a gap or an overlap thinner than {@code tolerance}.
      */
     public static boolean overlap(double[] a, int na, double[] b, int nb, double tolerance) {
-        return !separated(a, na, b, nb, tolerance) && !separated(b, nb, a, na, tolerance);
+        double[] extentsA = new double[2 * na];
+        double[] extentsB = new double[2 * nb];
+        ownExtents(a, na, extentsA);
+        ownExtents(b, nb, extentsB);
+        return overlap(a, na, extentsA, b, nb, extentsB, tolerance);
     }
 
     /**
@@ -57,10 +61,6 @@ public final class Polygons2 {
         }
     }
 
-    private static boolean separated(double[] a, int na, double[] b, int nb, double tolerance) {
-        return separated(a, na, null, b, nb, tolerance);
-    }
-
     private static boolean separated(double[] a, int na, double[] extentsA, double[] b, int nb, double tolerance) {
         // The hottest loop of a wrap (tucks test each flap's faces against the paper near them):
         // the normals are not made unit, the overlap is measured against the tolerance times
@@ -74,24 +74,8 @@ public final class Polygons2 {
             if (!(length2 > 0)) {
                 continue;
             }
-            double minA;
-            double maxA;
-            if (extentsA != null) {
-                minA = extentsA[2 * i];
-                maxA = extentsA[2 * i + 1];
-            } else {
-                minA = Double.POSITIVE_INFINITY;
-                maxA = Double.NEGATIVE_INFINITY;
-                for (int k = 0; k < na; k++) {
-                    double p = a[2 * k] * nx + a[2 * k + 1] * ny;
-                    if (p < minA) {
-                        minA = p;
-                    }
-                    if (p > maxA) {
-                        maxA = p;
-                    }
-                }
-            }
+            double minA = extentsA[2 * i];
+            double maxA = extentsA[2 * i + 1];
             double minB = Double.POSITIVE_INFINITY;
             double maxB = Double.NEGATIVE_INFINITY;
             for (int k = 0; k < nb; k++) {
