@@ -100,11 +100,30 @@ public final class Polygons2 {
      * when none of it, beyond {@code tolerance}, is there.
      */
     public static double[] clip(double[] xy, int n, double nx, double ny, double c, double tolerance) {
-        // A convex polygon cut by a line has at most n + 1 corners; rounding on a nearly flat one can
-        // make a point hop across the line and back, so leave room.
-        double[] out = new double[4 * n];
+        // Corners counted first, the array then made to size: a wrap clips hundreds of millions
+        // of times, and an array with room to spare and then its copy to size were a tenth of
+        // all it allocated (the 5,000-triangle torus: 1.9 of 16 GB). A convex polygon cut by a
+        // line has at most n + 1 corners, but rounding on a nearly flat one can make a point hop
+        // across the line and back: counted, not assumed.
         int m = 0;
         boolean any = false;
+        for (int i = 0; i < n; i++) {
+            int j = (i + 1) % n;
+            double di = xy[2 * i] * nx + xy[2 * i + 1] * ny - c;
+            double dj = xy[2 * j] * nx + xy[2 * j + 1] * ny - c;
+            if (di <= 0) {
+                m++;
+                any |= di < -tolerance;
+            }
+            if ((di < 0 && dj > 0) || (di > 0 && dj < 0)) {
+                m++;
+            }
+        }
+        if (!any || m < 3) {
+            return null;
+        }
+        double[] out = new double[2 * m];
+        m = 0;
         for (int i = 0; i < n; i++) {
             int j = (i + 1) % n;
             double di = xy[2 * i] * nx + xy[2 * i + 1] * ny - c;
@@ -113,7 +132,6 @@ public final class Polygons2 {
                 out[2 * m] = xy[2 * i];
                 out[2 * m + 1] = xy[2 * i + 1];
                 m++;
-                any |= di < -tolerance;
             }
             if ((di < 0 && dj > 0) || (di > 0 && dj < 0)) {
                 double t = di / (di - dj);
@@ -122,10 +140,7 @@ public final class Polygons2 {
                 m++;
             }
         }
-        if (!any || m < 3) {
-            return null;
-        }
-        return Arrays.copyOf(out, 2 * m);
+        return out;
     }
 
     /**
