@@ -135,7 +135,7 @@ final class Landing {
         if (joinedAcross.isEmpty() && pockets.isEmpty()) {
             return;
         }
-        List<Map<Integer, List<Integer>>> relations = new ArrayList<>(2); // below, above: found once needed
+        List<Stack.Related> relations = new ArrayList<>(2); // below, above: found once needed
         Map<Integer, Boolean> forced = null;
         Map<Integer, List<Integer>> unitOf = new HashMap<>(); // each face of a group: the group
         for (List<Integer> group : groups(acrossParent, joinedAcross)) {
@@ -170,7 +170,7 @@ final class Landing {
      * lies over both, or under both).
      */
     private Map<Integer, Boolean> forcedSides(int f, int hinge, List<Integer> touching, Map<Integer, Boolean> overOf,
-            List<Map<Integer, List<Integer>>> relations) {
+            List<Stack.Related> relations) {
         boolean overHinge = overOf.get(hinge);
         Set<Integer> belowHinge = reachedFrom(hinge, relations.get(0));
         Set<Integer> aboveHinge = reachedFrom(hinge, relations.get(1));
@@ -201,7 +201,7 @@ final class Landing {
      * this on a random star-shaped solid.
      */
     private static void carryAlong(List<Integer> group, boolean first, Map<Integer, Boolean> overOf, Map<Integer, Boolean> forced,
-            List<Map<Integer, List<Integer>>> relations) {
+            List<Stack.Related> relations) {
         for (boolean side : new boolean[] {first, !first}) {
             Set<Integer> reached = new HashSet<>(group);
             ArrayDeque<Integer> open = new ArrayDeque<>(group);
@@ -210,7 +210,7 @@ final class Landing {
                 int g = open.poll();
                 Boolean must = forced.get(g);
                 possible = must == null || must == side;
-                for (int next : relations.get(side ? 0 : 1).getOrDefault(g, List.of())) {
+                for (int next : relations.get(side ? 0 : 1).of(g)) {
                     if (reached.add(next)) {
                         open.add(next);
                     }
@@ -236,7 +236,7 @@ final class Landing {
      * the next fold over it). The free layer goes to the other's side, where the order allows.
      */
     private void outOfPockets(int f, int hinge, Stack stack, int[] levels, List<Integer> touching, List<int[]> pockets,
-            Map<Integer, List<Integer>> unitOf, Map<Integer, Boolean> overOf, List<Map<Integer, List<Integer>>> relations,
+            Map<Integer, List<Integer>> unitOf, Map<Integer, Boolean> overOf, List<Stack.Related> relations,
             Map<Integer, Boolean> forcedSoFar) {
         Map<Integer, Boolean> forced = forcedSoFar;
         if (relations.isEmpty()) {
@@ -307,7 +307,7 @@ final class Landing {
      * upwards.
      */
     private static boolean uniform(List<Integer> group, int hinge, Map<Integer, Boolean> overOf,
-            List<Map<Integer, List<Integer>>> relations, Map<Integer, Boolean> forced) {
+            List<Stack.Related> relations, Map<Integer, Boolean> forced) {
         int over = 0;
         for (int g : group) {
             over += overOf.get(g) ? 1 : 0;
@@ -346,7 +346,7 @@ final class Landing {
         double ay = pose.y(sheet.u(a), sheet.v(a));
         double bx = pose.x(sheet.u(b), sheet.v(b));
         double by = pose.y(sheet.u(b), sheet.v(b));
-        Map<Integer, List<Integer>> aboveOf = null;
+        Stack.Related aboveOf = null;
         Set<Integer> overFrom = null;
         for (int g : touching) {
             if (g == from || !overOf.get(g) || (sheet.originOf[g] & Sheet.SEALED) != 0 || !crosses(sheet.placedFaces.polygon(g), ax, ay, bx, by)) {
@@ -375,11 +375,11 @@ final class Landing {
     }
 
     /** The faces reached from g (g not among them, unless on a cycle) through relations {@code onward}. */
-    private static Set<Integer> reachedFrom(int g, Map<Integer, List<Integer>> onward) {
+    private static Set<Integer> reachedFrom(int g, Stack.Related onward) {
         Set<Integer> reached = new HashSet<>();
         ArrayDeque<Integer> open = new ArrayDeque<>(List.of(g));
         while (!open.isEmpty()) {
-            for (int next : onward.getOrDefault(open.poll(), List.of())) {
+            for (int next : onward.of(open.poll())) {
                 if (reached.add(next)) {
                     open.add(next);
                 }
@@ -403,7 +403,7 @@ final class Landing {
      * relations downwards), none of which may be one it lies under; under, likewise upwards.
      */
     private static boolean contradicts(List<Integer> group, boolean side, Map<Integer, Boolean> overOf,
-            Map<Integer, List<Integer>> onward) {
+            Stack.Related onward) {
         Set<Integer> reached = new HashSet<>(group);
         ArrayDeque<Integer> open = new ArrayDeque<>();
         for (int g : group) {
@@ -412,7 +412,7 @@ final class Landing {
             }
         }
         while (!open.isEmpty()) {
-            for (int next : onward.getOrDefault(open.poll(), List.of())) {
+            for (int next : onward.of(open.poll())) {
                 if (reached.add(next)) {
                     Boolean nextOver = overOf.get(next);
                     if (nextOver != null && nextOver != side) {

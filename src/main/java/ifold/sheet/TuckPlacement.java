@@ -167,15 +167,15 @@ final class TuckPlacement {
         }
         // A strip below the lowest hinge by level, or below any hinge by the stack's order (a
         // piece whose hinges lie both at the strip's level, beside it, and above it).
-        Map<Integer, List<Integer>> below = crossing.isEmpty() ? new HashMap<>() : Stack.related(stack, true);
+        Stack.Related below = crossing.isEmpty() ? Stack.Related.NONE : Stack.related(stack, true);
         Map<Integer, Set<Integer>> overStrip = new HashMap<>();
         if (!crossing.isEmpty()) {
-            Map<Integer, List<Integer>> above = Stack.related(stack, false);
+            Stack.Related above = Stack.related(stack, false);
             for (int strip : crossing) {
                 Set<Integer> reached = new HashSet<>();
                 ArrayDeque<Integer> open = new ArrayDeque<>(List.of(strip));
                 while (!open.isEmpty()) {
-                    for (int g : above.getOrDefault(open.poll(), List.of())) {
+                    for (int g : above.of(open.poll())) {
                         if (!faces.contains(g) && reached.add(g)) {
                             open.add(g);
                         }
@@ -213,7 +213,7 @@ final class TuckPlacement {
      * through the stack's relations {@code below}), under the rest; {@code hinges} are the
      * staying faces the flap is joined to.
      */
-    record TuckPlace(Map<Integer, Integer> pieceOf, List<Set<Integer>> under, Map<Integer, List<Integer>> below,
+    record TuckPlace(Map<Integer, Integer> pieceOf, List<Set<Integer>> under, Stack.Related below,
             Set<Integer> hinges, int[] lowestHinge) {
     }
 
@@ -302,10 +302,10 @@ final class TuckPlacement {
      * Adds to {@code under} every face below those in {@code open}, through a stack's relations
      * {@code below}, but the {@code moving}; each face added goes to {@code added} too, if given.
      */
-    static void closeDownwards(Set<Integer> under, ArrayDeque<Integer> open, Map<Integer, List<Integer>> below,
+    static void closeDownwards(Set<Integer> under, ArrayDeque<Integer> open, Stack.Related below,
             Set<Integer> moving, ArrayDeque<Integer> added) {
         while (!open.isEmpty()) {
-            for (int g : below.getOrDefault(open.poll(), List.of())) {
+            for (int g : below.of(open.poll())) {
                 if (!moving.contains(g) && under.add(g)) {
                     open.add(g);
                     if (added != null) {
