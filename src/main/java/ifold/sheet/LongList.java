@@ -26,6 +26,15 @@ final class LongList {
         return values[i];
     }
 
+    void set(int i, long value) {
+        values[i] = value;
+    }
+
+    /** Keeps the first {@code n} values. */
+    void truncate(int n) {
+        size = n;
+    }
+
     int size() {
         return size;
     }

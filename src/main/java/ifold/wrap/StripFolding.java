@@ -166,11 +166,13 @@ final class StripFolding {
         }
         int passes = k + (last && overlapped(plan, w) ? 1 : 0);
         for (int j = 0; j + 1 < k; j++) {
-            passNote = String.format(Locale.ROOT, "pass %d of %d", j + 1, passes);
+            // Joined, not formatted: a wrap makes hundreds of thousands of these notes, and a
+            // formatter each was a hundredth of what the 5,000-triangle torus allocated.
+            passNote = "pass " + (j + 1) + " of " + passes;
             turn(edges, d, bottom[j], bottom[j + 1], host);
             d = -d;
         }
-        passNote = String.format(Locale.ROOT, "pass %d of %d", k, passes);
+        passNote = "pass " + k + " of " + passes;
         if (last) {
             double end = endOfPass(edges, d, bottom[k - 1]);
             if (overlapped(plan, w)) {
