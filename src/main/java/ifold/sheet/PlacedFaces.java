@@ -89,10 +89,12 @@ final class PlacedFaces {
     double[] overlapOf(int f, int g) {
         polygonTests++;
         double[] common = polygon(f);
+        int corners = common.length / 2;
         double[] other = polygon(g);
         int n = other.length / 2;
         double orientation = Math.signum(Polygons2.twiceArea(other, n));
-        for (int i = 0; i < n && common != null; i++) {
+        // The steps between in two arrays kept for it, the answer alone made anew.
+        for (int i = 0; i < n; i++) {
             int j = (i + 1) % n;
             double ex = other[2 * j] - other[2 * i];
             double ey = other[2 * j + 1] - other[2 * i + 1];
@@ -100,10 +102,25 @@ final class PlacedFaces {
             // Inside g: orientation × (e × (p - corner i)) >= 0, as n·p <= c with n of unit length.
             double nx = orientation * ey / length;
             double ny = -orientation * ex / length;
-            common = Polygons2.clip(common, common.length / 2, nx, ny, nx * other[2 * i] + ny * other[2 * i + 1], tolerance);
+            double c = nx * other[2 * i] + ny * other[2 * i + 1];
+            int m = Polygons2.clippedCorners(common, corners, nx, ny, c, tolerance);
+            if (m == 0) {
+                return null;
+            }
+            double[] into = common == clipped[0] ? clipped[1] : clipped[0];
+            if (into.length < 2 * m) {
+                into = new double[4 * m];
+                clipped[common == clipped[0] ? 1 : 0] = into;
+            }
+            Polygons2.clipInto(common, corners, nx, ny, c, into);
+            common = into;
+            corners = m;
         }
-        return common;
+        return Arrays.copyOf(common, 2 * corners);
     }
+
+    /** Where {@link #overlapOf} clips, step by step. */
+    private final double[][] clipped = {new double[32], new double[32]};
 
     /** Whether face g, as placed, lies wholly inside face h (convex, either way round). */
     boolean contains(int h, int g) {

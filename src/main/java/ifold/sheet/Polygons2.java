@@ -102,9 +102,22 @@ public final class Polygons2 {
     public static double[] clip(double[] xy, int n, double nx, double ny, double c, double tolerance) {
         // Corners counted first, the array then made to size: a wrap clips hundreds of millions
         // of times, and an array with room to spare and then its copy to size were a tenth of
-        // all it allocated (the 5,000-triangle torus: 1.9 of 16 GB). A convex polygon cut by a
-        // line has at most n + 1 corners, but rounding on a nearly flat one can make a point hop
-        // across the line and back: counted, not assumed.
+        // all it allocated (the 5,000-triangle torus: 1.9 of 16 GB).
+        int m = clippedCorners(xy, n, nx, ny, c, tolerance);
+        if (m == 0) {
+            return null;
+        }
+        double[] out = new double[2 * m];
+        clipInto(xy, n, nx, ny, c, out);
+        return out;
+    }
+
+    /**
+     * How many corners {@link #clip} gives: 0 where none of the polygon, beyond the tolerance, is
+     * there. A convex polygon cut by a line has at most n + 1 corners, but rounding on a nearly
+     * flat one can make a point hop across the line and back: at most 2n.
+     */
+    public static int clippedCorners(double[] xy, int n, double nx, double ny, double c, double tolerance) {
         int m = 0;
         boolean any = false;
         for (int i = 0; i < n; i++) {
@@ -119,11 +132,16 @@ public final class Polygons2 {
                 m++;
             }
         }
-        if (!any || m < 3) {
-            return null;
-        }
-        double[] out = new double[2 * m];
-        m = 0;
+        return !any || m < 3 ? 0 : m;
+    }
+
+    /**
+     * {@link #clip} into {@code out} (x y pairs from 0), where {@link #clippedCorners} has found
+     * some, and {@code out} holds twice as many: for a chain of clips whose steps between are not
+     * kept.
+     */
+    public static void clipInto(double[] xy, int n, double nx, double ny, double c, double[] out) {
+        int m = 0;
         for (int i = 0; i < n; i++) {
             int j = (i + 1) % n;
             double di = xy[2 * i] * nx + xy[2 * i + 1] * ny - c;
@@ -140,7 +158,6 @@ public final class Polygons2 {
                 m++;
             }
         }
-        return out;
     }
 
     /**

@@ -75,6 +75,7 @@ record HostCells(double outside, double farthest, double[][] triangles) {
             }
         }
         double[][] figures = new double[triangles.size()][];
+        double[][] scratch = {new double[32], new double[32]};
         for (int t = 0; t < triangles.size(); t++) {
             int triangle = triangles.get(t);
             double[] corners = cornersIn(context.mesh(), triangle, frame);
@@ -94,7 +95,7 @@ record HostCells(double outside, double farthest, double[][] triangles) {
                 if (!(b[0] < box[2] && box[0] < b[2] && b[1] < box[3] && box[1] < b[3])) {
                     continue;
                 }
-                double[] part = clipToTriangle(counterClockwise(placed[i]), corners);
+                double[] part = clipToTriangle(counterClockwise(placed[i]), corners, scratch);
                 if (part != null) {
                     levels[polygons.size()] = paper.levels()[i];
                     polygons.add(turned(part, along));
@@ -140,18 +141,33 @@ record HostCells(double outside, double farthest, double[][] triangles) {
         return length > 0 ? new double[] {dx / length, dy / length} : new double[] {1, 0};
     }
 
-    /** The part of convex polygon xy inside triangle c (both counter-clockwise), or null. */
-    private static double[] clipToTriangle(double[] xy, double[] c) {
+    /**
+     * The part of convex polygon xy inside triangle c (both counter-clockwise), or null; the
+     * steps between in {@code scratch}'s two arrays (grown there as needed), the answer alone
+     * made anew.
+     */
+    private static double[] clipToTriangle(double[] xy, double[] c, double[][] scratch) {
         double[] inside = xy;
-        for (int e = 0; e < 3 && inside != null; e++) {
+        int corners = xy.length / 2;
+        for (int e = 0; e < 3; e++) {
             double ax = c[2 * e];
             double ay = c[2 * e + 1];
             double dx = c[2 * ((e + 1) % 3)] - ax;
             double dy = c[2 * ((e + 1) % 3) + 1] - ay;
             // Inside is left of each edge: dy·x - dx·y <= dy·ax - dx·ay.
-            inside = Polygons2.clip(inside, inside.length / 2, dy, -dx, dy * ax - dx * ay, 0);
+            int m = Polygons2.clippedCorners(inside, corners, dy, -dx, dy * ax - dx * ay, 0);
+            if (m == 0) {
+                return null;
+            }
+            int slot = inside == scratch[0] ? 1 : 0;
+            if (scratch[slot].length < 2 * m) {
+                scratch[slot] = new double[4 * m];
+            }
+            Polygons2.clipInto(inside, corners, dy, -dx, dy * ax - dx * ay, scratch[slot]);
+            inside = scratch[slot];
+            corners = m;
         }
-        return inside;
+        return java.util.Arrays.copyOf(inside, 2 * corners);
     }
 
     /** xy turned so that {@code along} (a unit vector) becomes the x axis. */
