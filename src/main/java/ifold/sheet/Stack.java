@@ -125,58 +125,59 @@ final class Stack {
      * (the 5,000-triangle torus: 0.84 of 16 GB).
      */
     static final class Related {
-        /** The faces with relations this way, ascending, and where each one's run of others starts. */
-        private final int[] keys;
+        /** Each face's place in the stack when these were found, and where its run of others starts. */
+        private final LongIntMap slots;
         private final int[] start;
-        private final int keyCount;
         private final int[] others;
 
         /** No relations. */
         static final Related NONE = new Related();
 
         private Related() {
-            keys = new int[0];
+            slots = new LongIntMap();
             start = new int[1];
-            keyCount = 0;
             others = new int[0];
         }
 
         private Related(Stack stack, boolean byUpper) {
-            // Sorted by face, then by when the relation was made: each face's run in that order.
-            // (By face, not by place in the stack: a tuck reads them after its flap has left the
-            // stack, and the places have changed.)
+            // In compressed rows by the faces' places in the stack, each face's run in the order
+            // the relations were made; the places looked up by face, not in the sheet, whose
+            // places change once a tuck's flap has left the stack (and the tuck reads these then).
+            int n = stack.count;
+            int[] slotOf = stack.sheet.slotOf;
+            slots = new LongIntMap();
+            for (int i = 0; i < n; i++) {
+                slots.put(stack.faces[i], i);
+            }
             int relations = stack.above.size();
-            long[] byFace = new long[relations];
+            start = new int[n + 1];
             for (int r = 0; r < relations; r++) {
                 long pair = stack.above.get(r);
-                byFace[r] = ((long) (byUpper ? (int) (pair >>> 32) : (int) pair) << 32) | r;
-            }
-            Arrays.sort(byFace);
-            keys = new int[relations];
-            start = new int[relations + 1];
-            others = new int[relations];
-            int k = 0;
-            for (int i = 0; i < relations; i++) {
-                int key = (int) (byFace[i] >>> 32);
-                long pair = stack.above.get((int) byFace[i]);
-                if (k == 0 || keys[k - 1] != key) {
-                    keys[k] = key;
-                    start[k++] = i;
+                int key = byUpper ? (int) (pair >>> 32) : (int) pair;
+                if (slotOf[key] >= n || stack.faces[slotOf[key]] != key) {
+                    throw new IllegalStateException("a relation of face " + key + ", which is not in its stack");
                 }
-                others[i] = byUpper ? (int) pair : (int) (pair >>> 32);
+                start[slotOf[key] + 1]++;
             }
-            start[k] = relations;
-            keyCount = k;
+            for (int i = 0; i < n; i++) {
+                start[i + 1] += start[i];
+            }
+            others = new int[relations];
+            int[] fill = Arrays.copyOf(start, n);
+            for (int r = 0; r < relations; r++) {
+                long pair = stack.above.get(r);
+                others[fill[slotOf[byUpper ? (int) (pair >>> 32) : (int) pair]]++] = byUpper ? (int) pair : (int) (pair >>> 32);
+            }
         }
 
         /** The faces directly below (or above) face f: none where f has no relation this way. */
         List<Integer> of(int f) {
-            int k = Arrays.binarySearch(keys, 0, keyCount, f);
-            if (k < 0) {
+            int slot = slots.get(f, -1);
+            if (slot < 0) {
                 return List.of();
             }
-            int from = start[k];
-            int to = start[k + 1];
+            int from = start[slot];
+            int to = start[slot + 1];
             return new java.util.AbstractList<>() {
                 @Override
                 public Integer get(int index) {
