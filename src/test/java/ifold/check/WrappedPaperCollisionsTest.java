@@ -167,6 +167,23 @@ class WrappedPaperCollisionsTest {
     }
 
     /**
+     * A torus of 16 × 8 segments (256 triangles), whose inner vertices join concave edges to
+     * convex ones at obtuse corners of its hosts, and whose concave edges turn by 22.5 degrees
+     * only: a bend's layer pressed onto a mitre there is moved across the bend's crease, to the
+     * side of the layers it joins, and its facet, leaning from the other layer's crease to that
+     * corner, ran through paper lying between them (29 pairs of a face and a cap, 0.004 to 0.09 T
+     * deep, in the CLI's wrap). The pressed side is now drawn with no area and the rest of the
+     * facet stays on the crease's side of it (PaperInSpace.addPressedSide).
+     */
+    @Test
+    void aCoarseTorusCrossesNothingWhereItsCreasesRunIntoAMitre() throws Exception {
+        Result result = wrapAndCheck(ifold.mesh.Solids.torus(3, 1, 16, 8), "torus 16x8");
+        assertEquals(0, result.modelCrossings() + result.pointsInside(), result::summary);
+        assertEquals(0, result.crossingPairs(), result::summary);
+        assertEquals(0, result.coplanarPairs(), result::summary);
+    }
+
+    /**
      * Paper kept out of the solid at concave edges of 90 degrees, where the layers of each face
      * ran into the solid across (the shared square_frame: 184 crossings of the model and 260
      * points inside; t_prism 86 and 108) and into each other (4,112 and 2,206 crossing pairs;
