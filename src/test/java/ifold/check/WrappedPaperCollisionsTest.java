@@ -156,7 +156,8 @@ class WrappedPaperCollisionsTest {
      * pairs, 228 of them facets pressed wholly onto a mitre from its two sides, now drawn with no
      * area (PaperInSpace.addPressed); 21 more where two bends fanned from the corner where their
      * creases meet onto one stretch of a mitre's line, one on the other: a stretch at a crease's
-     * end now fans its pressed side from its other end (PaperInSpace.addBendCap). None is left.
+     * end fanned its pressed side from its other end, and a facet with a side pressed onto a
+     * mitre now draws that side with no area (PaperInSpace.addPressedSide). None is left.
      */
     @Test
     void theTorusCrossesNothingAtItsConcaveEdges() throws Exception {
