@@ -357,6 +357,31 @@ public final class Sheet {
     int markCount;
     /** Scratch: each face's place in the stack whose levels are being found. */
     int[] placeInStack = new int[16];
+    /** Scratch: the working arrays of {@link Stack#findLevels}, grown as needed. */
+    private final int[][] levelScratch = new int[7][];
+
+    int[] levelScratch(int which, int size) {
+        int[] scratch = levelScratch[which];
+        if (scratch == null || scratch.length < size) {
+            scratch = new int[Math.max(size, scratch == null ? 16 : 2 * scratch.length)];
+            levelScratch[which] = scratch;
+        }
+        return scratch;
+    }
+
+    /** Scratch: for each face a cut split, the part cut off it (-1 for every other face, kept so between cuts). */
+    private int[] partOfFace = new int[0];
+
+    /** {@link #partOfFace}, as long as the sheet has faces. */
+    int[] partOfFace() {
+        if (partOfFace.length < loops.size()) {
+            int old = partOfFace.length;
+            partOfFace = Arrays.copyOf(partOfFace, Math.max(loops.size(), 2 * old));
+            Arrays.fill(partOfFace, old, partOfFace.length, -1);
+        }
+        return partOfFace;
+    }
+
     /** Scratch: each face's level in the stack being tucked, before the tuck ({@link #levelsByFace}). */
     private int[] levelByFace = new int[16];
 

@@ -1,5 +1,6 @@
 package ifold.sheet;
 
+import ifold.geom.IntList;
 import ifold.sheet.Sheet.Crease;
 import ifold.sheet.Sheet.Placement;
 import java.util.ArrayList;
@@ -24,7 +25,7 @@ public final class SheetEdit {
     private final List<int[]> loopsBefore = new ArrayList<>();
     private final List<Isometry2> posesBefore = new ArrayList<>();
     private final List<Integer> hostsBefore = new ArrayList<>();
-    private final Map<Long, Integer> splitOfEdge = new HashMap<>();
+    private final LongIntMap splitOfEdge = new LongIntMap();
 
     /** Faces whose shape changed (cut, or made by a cut): their relations are checked again. */
     private final Set<Integer> reshaped = new HashSet<>();
@@ -121,8 +122,8 @@ public final class SheetEdit {
      * @return the faces beyond the line, after cutting
      */
     private int[] cut(int[] faces, double nx, double ny, double c, boolean onSheet) {
-        List<Integer> beyond = new ArrayList<>();
-        Map<Integer, Map<Integer, Integer>> partsByHost = new HashMap<>();
+        IntList beyond = new IntList();
+        IntList split = new IntList(); // each face split, then the part cut off it
         for (int f : faces) {
             double[] range = range(f, nx, ny, c, onSheet);
             if (range[1] <= sheet.tolerance) {
@@ -134,33 +135,43 @@ public final class SheetEdit {
                 continue;
             }
             int g = split(f, nx, ny, c, onSheet, splitOfEdge, this);
-            partsByHost.computeIfAbsent(sheet.hostOf[f], h -> new HashMap<>()).put(f, g);
+            split.add(f);
+            split.add(g);
             beyond.add(g);
         }
         // Each new part inherits its face's relations, in one pass over each stack's (a cut
         // across a deep stack splits thousands of faces); those that no longer overlap are
-        // dropped later.
-        for (Map.Entry<Integer, Map<Integer, Integer>> entry : partsByHost.entrySet()) {
-            Stack stack = sheet.stacks.get(entry.getKey());
-            Map<Integer, Integer> partOf = entry.getValue();
+        // dropped later. The parts by face in an array of the sheet's, not a map of boxed
+        // numbers: a wrap cuts stacks of thousands of relations hundreds of thousands of times.
+        int[] partOf = sheet.partOfFace();
+        Set<Integer> hosts = new java.util.LinkedHashSet<>();
+        for (int k = 0; k < split.size(); k += 2) {
+            partOf[split.get(k)] = split.get(k + 1);
+            hosts.add(sheet.hostOf[split.get(k)]);
+        }
+        for (int host : hosts) {
+            Stack stack = sheet.stacks.get(host);
             LongList inherited = new LongList();
             for (int r = 0; r < stack.above.size(); r++) {
                 long pair = stack.above.get(r);
-                Integer upper = partOf.get((int) (pair >>> 32));
-                Integer lower = partOf.get((int) pair);
-                if (upper != null) {
+                int upper = partOf[(int) (pair >>> 32)];
+                int lower = partOf[(int) pair];
+                if (upper >= 0) {
                     inherited.add(((long) upper << 32) | (pair & 0xffffffffL));
                 }
-                if (lower != null) {
+                if (lower >= 0) {
                     inherited.add((pair & ~0xffffffffL) | lower);
                 }
-                if (upper != null && lower != null) {
+                if (upper >= 0 && lower >= 0) {
                     inherited.add(((long) upper << 32) | lower);
                 }
             }
             stack.above.addAll(inherited);
         }
-        return beyond.stream().mapToInt(Integer::intValue).toArray();
+        for (int k = 0; k < split.size(); k += 2) {
+            partOf[split.get(k)] = -1;
+        }
+        return beyond.toArray();
     }
 
     private double[] range(int f, double nx, double ny, double c, boolean onSheet) {
@@ -360,7 +371,7 @@ public final class SheetEdit {
      * face across it on the sheet, which is given the vertex too so that no edge of the sheet
      * ends in the middle of another.
      */
-    private int split(int f, double nx, double ny, double c, boolean onSheet, Map<Long, Integer> splitOfEdge, SheetEdit edit) {
+    private int split(int f, double nx, double ny, double c, boolean onSheet, LongIntMap splitOfEdge, SheetEdit edit) {
         int[] loop = sheet.loops.get(f);
         Isometry2 pose = sheet.poseOf.get(f);
         int n = loop.length;
@@ -379,8 +390,8 @@ public final class SheetEdit {
             if ((d[i] > sheet.tolerance && d[j] < -sheet.tolerance) || (d[i] < -sheet.tolerance && d[j] > sheet.tolerance)) {
                 int a = loop[i];
                 int b = loop[j];
-                Integer split = splitOfEdge.get(Sheet.undirected(a, b));
-                if (split == null) {
+                int split = splitOfEdge.get(Sheet.undirected(a, b), -1);
+                if (split < 0) {
                     double t = d[i] / (d[i] - d[j]);
                     split = sheet.addVertex(sheet.u(a) + t * (sheet.u(b) - sheet.u(a)), sheet.v(a) + t * (sheet.v(b) - sheet.v(a)));
                     splitOfEdge.put(Sheet.undirected(a, b), split);

@@ -211,10 +211,15 @@ final class Stack {
             index[faces[i]] = i;
         }
         int relations = above.size();
-        int[] uppers = new int[relations];
-        int[] lowers = new int[relations];
-        int[] below = new int[n]; // how many faces lie directly below each, still to place
-        int[] start = new int[n + 1];
+        // The working arrays are the sheet's, kept from call to call: the levels are found again
+        // after every change of a stack, and new arrays each time were the most of a wrap's
+        // allocation (0.9 of 12 GB on the 5,000-triangle torus).
+        int[] uppers = sheet.levelScratch(0, relations);
+        int[] lowers = sheet.levelScratch(1, relations);
+        int[] below = sheet.levelScratch(2, n); // how many faces lie directly below each, still to place
+        int[] start = sheet.levelScratch(3, n + 1);
+        Arrays.fill(below, 0, n, 0);
+        Arrays.fill(start, 0, n + 1, 0);
         for (int r = 0; r < relations; r++) {
             long pair = above.get(r);
             uppers[r] = index[(int) (pair >>> 32)];
@@ -225,13 +230,14 @@ final class Stack {
         for (int i = 0; i < n; i++) {
             start[i + 1] += start[i];
         }
-        int[] fill = Arrays.copyOf(start, n);
-        int[] over = new int[relations];
+        int[] fill = sheet.levelScratch(4, n);
+        System.arraycopy(start, 0, fill, 0, n);
+        int[] over = sheet.levelScratch(5, relations);
         for (int r = 0; r < relations; r++) {
             over[fill[lowers[r]]++] = uppers[r];
         }
-        int[] level = new int[n];
-        int[] queue = new int[n];
+        int[] level = new int[faces.length];
+        int[] queue = sheet.levelScratch(6, n);
         int head = 0;
         int tail = 0;
         for (int i = 0; i < n; i++) {
@@ -253,14 +259,11 @@ final class Stack {
             throw new IllegalStateException("the stack on host has a cycle: a face lies above itself");
         }
         int highest = -1;
-        for (int l : level) {
-            highest = Math.max(highest, l);
+        for (int i = 0; i < n; i++) {
+            highest = Math.max(highest, level[i]);
         }
         top = highest;
-        levels = new int[faces.length];
-        for (int i = 0; i < n; i++) {
-            levels[i] = level[i];
-        }
+        levels = level;
         return levels;
     }
 }
