@@ -20,18 +20,19 @@ import java.util.Set;
 public final class SheetEdit {
     private final Sheet sheet;
     private final int facesBefore;
-    private final Map<Integer, Integer> journalIndex = new HashMap<>();
-    private final List<Integer> changedFaces = new ArrayList<>();
+    /** The faces made before the edit that it changed, each noted once (the set of them in {@link #noted}). */
+    private final IntList changedFaces = new IntList();
+    private final LongIntMap noted = new LongIntMap();
     private final List<int[]> loopsBefore = new ArrayList<>();
     private final List<Isometry2> posesBefore = new ArrayList<>();
-    private final List<Integer> hostsBefore = new ArrayList<>();
+    private final IntList hostsBefore = new IntList();
     private final LongIntMap splitOfEdge = new LongIntMap();
 
     /** Faces whose shape changed (cut, or made by a cut): their relations are checked again. */
     private final Set<Integer> reshaped = new HashSet<>();
 
     /** For each face made by a cut, the face it was cut from. */
-    private final List<Integer> parents = new ArrayList<>();
+    private final IntList parents = new IntList();
 
     /** Whether a cut ran along a line on the sheet rather than on a host. */
     private boolean sheetCut;
@@ -61,14 +62,13 @@ public final class SheetEdit {
     }
 
     public Journal journal() {
-        return new Journal(facesBefore, changedFaces.stream().mapToInt(Integer::intValue).toArray(),
-                loopsBefore.toArray(new int[0][]), posesBefore.toArray(new Isometry2[0]),
-                hostsBefore.stream().mapToInt(Integer::intValue).toArray(), parents.stream().mapToInt(Integer::intValue).toArray());
+        return new Journal(facesBefore, changedFaces.toArray(), loopsBefore.toArray(new int[0][]), posesBefore.toArray(new Isometry2[0]),
+                hostsBefore.toArray(), parents.toArray());
     }
 
     private void note(int f) {
-        if (f < facesBefore && !journalIndex.containsKey(f)) {
-            journalIndex.put(f, changedFaces.size());
+        if (f < facesBefore && noted.get(f, -1) < 0) {
+            noted.put(f, changedFaces.size());
             changedFaces.add(f);
             loopsBefore.add(sheet.loops.get(f));
             posesBefore.add(sheet.poseOf.get(f));
