@@ -2,6 +2,7 @@ package ifold.wrap;
 
 import ifold.geom.DoubleList;
 import ifold.geom.IntList;
+import ifold.geom.PackedIntArrays;
 import ifold.sheet.HostFrame;
 import ifold.sheet.Isometry2;
 import ifold.sheet.Polygons2;
@@ -242,9 +243,9 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             walls = ConcaveWalls.of(bends, ranks, backToBack, frames, sheet.thickness(), sheet.tolerance(), stackTop);
             boolean[] onWall = walls.along();
 
-            List<int[]> paper = new ArrayList<>(faces);
+            List<int[]> paper = new PackedIntArrays();
             IntList hostList = new IntList();
-            List<int[]> caps = new ArrayList<>();
+            List<int[]> caps = new PackedIntArrays();
             IntList capAfter = new IntList();
             corners = new int[faces][];
             sidesOf = new int[faces];
