@@ -148,7 +148,7 @@ final class StripFolding {
             for (int j = 0; j < k; j++) {
                 bottom[j] = h - (j + 1) * w;
             }
-            if (!last) {
+            if (!last || lastTurnsShort(frame, k, h, hostCorners)) {
                 int shortTurn = shortTurn(edges, k, d, hostCorners);
                 for (int j = shortTurn + 1; j < k; j++) {
                     bottom[j] = (k - 1 - j) * w;
@@ -186,6 +186,26 @@ final class StripFolding {
         } else {
             leave(i, edges, d);
         }
+    }
+
+    /**
+     * Whether the last triangle of a path, whose k passes a width apart from its apex would reach
+     * beyond its base, takes a short turn as the others do, its last pass lying on the base: where
+     * the base lies on its host's edge. The overhang would be tucked under there, all along the
+     * base and, where the base ends at a corner of the host, bounced there with the turn into it:
+     * on the tetrahedron, 8 of the 13 layers at the deepest point, a corner of the host the first
+     * and last triangles share. Where the base lies inside the host the overhang lies flat beside
+     * it, and the passes stay a width apart (the shared hex_prism, whose last triangle fans from
+     * a hexagon's corner, had 23 layers rather than 22 with the short turn). A lone triangle
+     * (the demos: its last pass may be laid back over itself) is wrapped as before.
+     */
+    private boolean lastTurnsShort(HostFrame frame, int k, double h, double[] host) {
+        if (plan.m == 1 || k < 2) {
+            return false;
+        }
+        // The middle of the base, pushed out by half the overhang: off the host where the base lies on its edge.
+        double out = -Math.max(margin, k * w - h) / 2;
+        return !insideConvex(host, intoHost.x(frame.baseLength() / 2, out), intoHost.y(frame.baseLength() / 2, out));
     }
 
     /**
