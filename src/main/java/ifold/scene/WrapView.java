@@ -6,7 +6,6 @@ import ifold.sheet.HostFrame;
 import ifold.wrap.CoveredPaper;
 import ifold.wrap.Wrap;
 import ifold.wrap.PaperInSpace;
-import java.util.ArrayList;
 import java.util.BitSet;
 import java.util.List;
 import org.joml.Vector3d;
@@ -59,8 +58,10 @@ public final class WrapView {
             total += g.vertexCount();
         }
         double[] positions = new double[3 * total];
-        List<int[]> triangles = new ArrayList<>();
-        List<Integer> colors = new ArrayList<>();
+        // Corners three a triangle, and colours, in lists of blocks: a wrap of a million faces
+        // draws several million triangles, an array and a boxed colour each before.
+        IntList triangles = new IntList();
+        IntList colors = new IntList();
         IntList hiddenFrom = new IntList();
         BitSet seams = new BitSet();
         IntList patchOf = new IntList();
@@ -71,41 +72,49 @@ public final class WrapView {
             PaperInSpace g = geometries.get(k);
             Wrap.Strip strip = result.strips().get(k);
             System.arraycopy(g.xyz(), 0, positions, 3 * base, 3 * g.vertexCount());
-            // Caps come right after the later of the faces they join.
-            List<List<Integer>> capsAfter = new ArrayList<>();
-            for (int f = 0; f < g.paperFaces().size(); f++) {
-                capsAfter.add(new ArrayList<>());
-            }
+            // Caps come right after the later of the faces they join, in the order made: the caps
+            // after face f are capsAfter[capsStart[f]] to capsAfter[capsStart[f + 1] - 1].
+            int faceCount = g.paperFaces().size();
+            int[] capsStart = new int[faceCount + 1];
             for (int c = 0; c < g.caps().size(); c++) {
-                capsAfter.get(g.capAfter()[c]).add(c);
+                capsStart[g.capAfter()[c] + 1]++;
+            }
+            for (int f = 0; f < faceCount; f++) {
+                capsStart[f + 1] += capsStart[f];
+            }
+            int[] capsAfter = new int[g.caps().size()];
+            int[] filled = java.util.Arrays.copyOf(capsStart, faceCount);
+            for (int c = 0; c < g.caps().size(); c++) {
+                capsAfter[filled[g.capAfter()[c]]++] = c;
             }
             // What lies under other paper is not drawn once that paper is there.
             CoveredPaper.Covered covered = CoveredPaper.of(g, result.frames(), strip.sheet().thickness());
             int[] levels = strip.sheet().levels();
-            int[] trianglesAtFace = new int[g.paperFaces().size() + 1];
-            for (int f = 0; f < g.paperFaces().size(); f++) {
-                trianglesAtFace[f] = triangles.size();
-                int from = triangles.size();
+            int[] trianglesAtFace = new int[faceCount + 1];
+            for (int f = 0; f < faceCount; f++) {
+                trianglesAtFace[f] = colors.size();
+                int from = colors.size();
                 int host = g.paperHosts()[f];
                 fan(g.paperFaces().get(f), base, PaperView.PAPER, triangles, colors);
-                hiddenFrom.add(covered.faceCover()[f], triangles.size() - from); // the face that covers it, for now
+                hiddenFrom.add(covered.faceCover()[f], colors.size() - from); // the face that covers it, for now
                 if (!covered.face(f)) {
                     patches.add(host, covered.undersideOut().get(f) ? PAPER.back() : PAPER.front(), covered.areas()[f]);
                 }
-                patches.layer(host, (levels[g.sheetFace(f)] + 0.5) * strip.sheet().thickness(), triangles.size());
-                patchOf.add(host, triangles.size() - from);
-                for (int c : capsAfter.get(f)) {
-                    from = triangles.size();
+                patches.layer(host, (levels[g.sheetFace(f)] + 0.5) * strip.sheet().thickness(), colors.size());
+                patchOf.add(host, colors.size() - from);
+                for (int at = capsStart[f]; at < capsStart[f + 1]; at++) {
+                    int c = capsAfter[at];
+                    from = colors.size();
                     fan(g.caps().get(c), base, PaperView.CAP, triangles, colors);
-                    seams.set(from, triangles.size());
-                    hiddenFrom.add(covered.capCover()[c], triangles.size() - from);
-                    patchOf.add(host, triangles.size() - from);
-                    patches.layer(host, Double.NEGATIVE_INFINITY, triangles.size());
+                    seams.set(from, colors.size());
+                    hiddenFrom.add(covered.capCover()[c], colors.size() - from);
+                    patchOf.add(host, colors.size() - from);
+                    patches.layer(host, Double.NEGATIVE_INFINITY, colors.size());
                 }
             }
-            trianglesAtFace[g.paperFaces().size()] = triangles.size();
+            trianglesAtFace[faceCount] = colors.size();
             // Covered once the face that covers it is drawn whole.
-            for (int t = trianglesAtFace[0]; t < triangles.size(); t++) {
+            for (int t = trianglesAtFace[0]; t < colors.size(); t++) {
                 int cover = hiddenFrom.get(t);
                 hiddenFrom.set(t, cover < 0 ? Integer.MAX_VALUE : trianglesAtFace[cover + 1]);
             }
@@ -115,11 +124,8 @@ public final class WrapView {
             }
             base += g.vertexCount();
         }
-        int[] flat = new int[3 * triangles.size()];
-        for (int t = 0; t < triangles.size(); t++) {
-            System.arraycopy(triangles.get(t), 0, flat, 3 * t, 3);
-        }
-        int[] colorArray = colors.stream().mapToInt(Integer::intValue).toArray();
+        int[] flat = triangles.toArray();
+        int[] colorArray = colors.toArray();
         SceneMesh.Layers layers = patches.layers(hiddenFrom.toArray(), seams, patchOf.toArray());
         return new Strips(new SceneMesh(positions, flat, colorArray, new int[0], new int[0], layers), after, List.copyOf(geometries));
     }
@@ -221,9 +227,12 @@ public final class WrapView {
         }
     }
 
-    static void fan(int[] face, int base, int color, List<int[]> triangles, List<Integer> colors) {
-        for (int i = 1; i + 1 < face.length; i++) { // faces are convex
-            triangles.add(new int[] {base + face[0], base + face[i], base + face[i + 1]});
+    /** Face's triangles (a fan: faces are convex), three corners each onto {@code triangles}, and a colour each. */
+    static void fan(int[] face, int base, int color, IntList triangles, IntList colors) {
+        for (int i = 1; i + 1 < face.length; i++) {
+            triangles.add(base + face[0]);
+            triangles.add(base + face[i]);
+            triangles.add(base + face[i + 1]);
             colors.add(color);
         }
     }
