@@ -149,27 +149,30 @@ public final class SheetEdit {
             partOf[split.get(k)] = split.get(k + 1);
             hosts.add(sheet.hostOf[split.get(k)]);
         }
-        for (int host : hosts) {
-            Stack stack = sheet.stacks.get(host);
-            LongList inherited = new LongList();
-            for (int r = 0; r < stack.above.size(); r++) {
-                long pair = stack.above.get(r);
-                int upper = partOf[(int) (pair >>> 32)];
-                int lower = partOf[(int) pair];
-                if (upper >= 0) {
-                    inherited.add(((long) upper << 32) | (pair & 0xffffffffL));
+        try {
+            for (int host : hosts) {
+                Stack stack = sheet.stacks.get(host);
+                LongList inherited = new LongList();
+                for (int r = 0; r < stack.above.size(); r++) {
+                    long pair = stack.above.get(r);
+                    int upper = partOf[(int) (pair >>> 32)];
+                    int lower = partOf[(int) pair];
+                    if (upper >= 0) {
+                        inherited.add(((long) upper << 32) | (pair & 0xffffffffL));
+                    }
+                    if (lower >= 0) {
+                        inherited.add((pair & ~0xffffffffL) | lower);
+                    }
+                    if (upper >= 0 && lower >= 0) {
+                        inherited.add(((long) upper << 32) | lower);
+                    }
                 }
-                if (lower >= 0) {
-                    inherited.add((pair & ~0xffffffffL) | lower);
-                }
-                if (upper >= 0 && lower >= 0) {
-                    inherited.add(((long) upper << 32) | lower);
-                }
+                stack.above.addAll(inherited);
             }
-            stack.above.addAll(inherited);
-        }
-        for (int k = 0; k < split.size(); k += 2) {
-            partOf[split.get(k)] = -1;
+        } finally {
+            for (int k = 0; k < split.size(); k += 2) {
+                partOf[split.get(k)] = -1;
+            }
         }
         return beyond.toArray();
     }
