@@ -13,6 +13,7 @@ import ifold.wrap.Wrap.WrapException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.function.DoubleToLongFunction;
 
 /**
  * How every triangle of one path is entered and left, and the planning of it: each triangle
@@ -191,14 +192,22 @@ final class PathPlan {
      * {@code limit} faces, to the nearest 0.1 %; NaN when even the widest is not.
      */
     static double narrowestFitting(List<PathPlan> plans, boolean[] alone, double width, double widest, int limit) {
-        if (!(widest > width) || faces(plans, widest, alone, true) > limit) {
+        return narrowestFitting(w -> faces(plans, w, alone, true), width, widest, limit);
+    }
+
+    /**
+     * The narrowest strip, between {@code width} and {@code widest}, whose {@code likely} faces
+     * stay within {@code limit}, to the nearest 0.1 %; NaN when even the widest's do not.
+     */
+    static double narrowestFitting(DoubleToLongFunction likely, double width, double widest, int limit) {
+        if (!(widest > width) || likely.applyAsLong(widest) > limit) {
             return Double.NaN;
         }
         double low = width;
         double high = widest;
         while (high > low * 1.001) {
             double middle = Math.sqrt(low * high);
-            if (faces(plans, middle, alone, true) > limit) {
+            if (likely.applyAsLong(middle) > limit) {
                 low = middle;
             } else {
                 high = middle;

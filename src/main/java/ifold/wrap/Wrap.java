@@ -550,6 +550,12 @@ public final class Wrap {
                     : String.format(Locale.ROOT, "no strip the path takes fits: the widest, %.4g, which the narrowest triangle (%s) "
                     + "sets, would make about %,d", widest, cornersText(mesh, narrowest), faces(plans, widest, alone, true))));
         }
+        // The tucks at a sharp corner grow as 1/θ and the passes' floor leaves them out: count
+        // them too, or a needle folds its passes for a minute before its tucks pass the limit.
+        CornerTucks cornerTucks = CornerTucks.of(mesh, pieces);
+        if (fewestFaces + cornerTucks.fewestFaces() > options.maxFaces()) {
+            throw new FaceLimitException(cornerTucks.refusal(mesh, plans, alone, width, widest, passes, fewestFaces, options.maxFaces()));
+        }
         HostFrame[] frames = BendRoom.of(mesh, pieces.hostOf, pieces.frames(mesh, triangleFrames), tolerance);
         Isometry2[] toHost = new Isometry2[mesh.faceCount()];
         for (PathPlan plan : plans) {

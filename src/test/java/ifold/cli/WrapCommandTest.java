@@ -107,21 +107,22 @@ class WrapCommandTest {
     }
 
     /**
-     * One triangle with a corner of 0.001°: it ran past 300 s (issue 22). Its 243,096 passes
-     * make at least 486,192 faces, under the limit, so it is folded, in time linear in its
-     * faces (a stack finds the faces a new one overlaps through a grid), and stopped where it
-     * passes the limit. How long that takes is {@code bench/limits}'s to measure (about 20 s
-     * here, as long as a 5,000-triangle wrap): the timeout only stops a run that would not end,
-     * as it did before (a bound of 30 s here failed on a machine loaded twice over).
+     * One triangle with a corner of 0.001°: it ran past 300 s (issue 22), then folded for 22 s
+     * and 1.25 GiB until its tucks passed the face limit (issue 20): its 243,096 passes make at
+     * least 486,192 faces, under the limit, and the tucks of its corner the rest. With those
+     * counted (about 180/θ, 2 faces each at least) it is refused before any fold, in one line
+     * naming the corner; how long that takes is {@code bench/limits}'s to measure (0.6 s).
      */
     @Test
     @Timeout(180)
-    void aTriangleWithACornerOfAThousandthOfADegreeIsRefusedAtTheFaceLimit() throws Exception {
+    void aTriangleWithACornerOfAThousandthOfADegreeIsRefusedBeforeAnyFold() throws Exception {
         double angle = Math.toRadians(0.001);
         Path model = dir.resolve("sharp.off");
         Files.writeString(model, "OFF\n3 1 0\n0 0 0\n1 0 0\n" + Math.cos(angle) + " " + Math.sin(angle) + " 0\n3 0 1 2\n");
         CliTest.Run run = CliTest.run("wrap", model.toString(), "--no-view");
-        CliTest.assertOneLineError(run, model + ": cannot wrap: the strip has ", "more than the limit of " + ifold.wrap.Wrap.DEFAULT_MAX_FACES + " faces");
+        CliTest.assertOneLineError(run, model + ": cannot wrap: a strip 2.909e-06 wide would need 243,096 passes, and the corner of 0.0010 degrees"
+                + " at (0.00000 0.00000 0.00000) about 180,000 tucks", "at least 846,192 faces",
+                "more than the limit of " + ifold.wrap.Wrap.DEFAULT_MAX_FACES + " faces", "no strip the path takes fits", "--max-faces raises the limit");
     }
 
     /**
