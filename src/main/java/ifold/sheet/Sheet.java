@@ -305,6 +305,39 @@ public final class Sheet {
         return TuckPlacement.tuck(this, host, px, py, dx, dy);
     }
 
+    /**
+     * How many faces {@link #tuck} along the same line would add: one for each face resting on
+     * {@code host} that the line cuts through (its part beyond the line), counted without
+     * cutting, so that a limit on faces can stop a tuck before it makes them (a tuck at a
+     * needle's corner cut through its 243,096 passes' turns, 302,253 faces at once).
+     */
+    public int tuckCuts(int host, double px, double py, double dx, double dy) {
+        Stack stack = stacks.get(host);
+        if (stack == null) {
+            return 0;
+        }
+        double length = Math.hypot(dx, dy);
+        double nx = dy / length; // right of the direction, as the cut has it
+        double ny = -dx / length;
+        double c = nx * px + ny * py;
+        int cuts = 0;
+        for (int i = 0; i < stack.count; i++) {
+            int f = stack.faces[i];
+            int[] loop = loops.get(f);
+            Isometry2 pose = poseOf.get(f);
+            double min = Double.POSITIVE_INFINITY;
+            double max = Double.NEGATIVE_INFINITY;
+            for (int v : loop) {
+                double d = nx * pose.x(u(v), v(v)) + ny * pose.y(u(v), v(v)) - c;
+                min = Math.min(min, d);
+                max = Math.max(max, d);
+            }
+            // As SheetEdit's cut tells them: beyond the line and short of it, each by more than the tolerance.
+            cuts += max > tolerance && min < -tolerance ? 1 : 0;
+        }
+        return cuts;
+    }
+
     /** Begins an edit of the laid paper: cuts and moves of faces, journaled. */
     public SheetEdit edit() {
         return new SheetEdit(this);

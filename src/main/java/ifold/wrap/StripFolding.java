@@ -510,6 +510,7 @@ final class StripFolding {
             }
             int from = edge;
             int to = (edge + 1) % n;
+            checkLimit(sheet.tuckCuts(host, c[2 * from], c[2 * from + 1], c[2 * to] - c[2 * from], c[2 * to + 1] - c[2 * from + 1]));
             Tuck tuck;
             try {
                 tuck = sheet.tuck(host, c[2 * from], c[2 * from + 1], c[2 * to] - c[2 * from], c[2 * to + 1] - c[2 * from + 1]);
@@ -632,7 +633,19 @@ final class StripFolding {
         if (watcher.stopped()) {
             throw new java.util.concurrent.CancellationException("the wrap was stopped");
         }
-        if (sheet.faceCount() > maxFaces) {
+        checkLimit(0);
+    }
+
+    /**
+     * Throws if the sheet's faces, with the {@code cuts} the next tuck would make (0 after any
+     * other fold), pass the limit: a tuck is stopped before it cuts, for one at a sharp corner
+     * cuts through every pass's turn at once (on the triangle with a corner of 0.001°, from
+     * 663,767 faces to 966,020 in one tuck), and the paper it made went half a gibibyte past
+     * the limit.
+     */
+    private void checkLimit(int cuts) throws FaceLimitException {
+        long faces = (long) sheet.faceCount() + cuts;
+        if (faces > maxFaces) {
             double done = 0;
             double all = 0;
             for (int i = 0; i < plan.m; i++) {
@@ -640,12 +653,13 @@ final class StripFolding {
                 all += weight;
                 done += i <= pathIndex ? weight : 0;
             }
-            long whole = (long) Math.ceil(sheet.faceCount() * all / done);
+            long whole = (long) Math.ceil(faces * all / done);
             long enough = (long) Math.ceil(whole * 1.1 / 1000) * 1000; // a tenth to spare, in thousands
-            throw new FaceLimitException(String.format(Locale.ROOT, "the strip has %,d faces of paper on triangle %d of %d on the "
-                    + "path (%s), more than the limit of %d faces; at this rate the whole path makes about %,d, and a limit "
-                    + "of %d (about %,d MiB) would likely let it finish", sheet.faceCount(), pathIndex + 1, plan.m,
-                    cornersText(mesh, plan.first + pathIndex), maxFaces, whole, enough, enough * BYTES_PER_FACE >> 20));
+            throw new FaceLimitException(String.format(Locale.ROOT, "the strip %s %,d faces of paper on triangle %d of %d on the "
+                    + "path (%s)%s, more than the limit of %d faces; at this rate the whole path makes about %,d, and a limit "
+                    + "of %d (about %,d MiB) would likely let it finish", cuts == 0 ? "has" : "would have", faces, pathIndex + 1,
+                    plan.m, cornersText(mesh, plan.first + pathIndex), cuts == 0 ? ""
+                    : String.format(Locale.ROOT, " once its next tuck cuts through %,d more", cuts), maxFaces, whole, enough, enough * BYTES_PER_FACE >> 20));
         }
     }
 

@@ -9,9 +9,10 @@ import ifold.mesh.PolygonSoup;
 import ifold.mesh.Solids;
 import ifold.refine.HamiltonianRefinement;
 import java.util.List;
+import java.util.Locale;
 import org.junit.jupiter.api.Test;
 
-/** The tucks at a host's sharp corner, counted before any fold. */
+/** The tucks at a host's sharp corner, counted before any fold, and a tuck stopped before it cuts past the limit. */
 public class CornerTucksTest {
     /** One triangle with a corner of {@code degrees} at the origin, its others at (1, 0, 0) and the unit vector at that angle. */
     static HamiltonianRefinement.Result needle(double degrees) throws Exception {
@@ -93,5 +94,32 @@ public class CornerTucksTest {
         int faces = result.strips().get(0).sheet().faceCount();
         assertTrue(result.count(Wrap.Kind.TUCK) >= corners.tucks(), result.count(Wrap.Kind.TUCK) + " tucks, counted " + corners.tucks());
         assertTrue(faces >= floor && faces < 1.5 * likely, faces + " faces, floor " + floor + ", likely " + likely);
+    }
+
+    /**
+     * A tuck is stopped before its cut makes the faces that pass the limit: the tuck with the
+     * most cuts of the 0.9° corner, under a limit one short of the faces it makes, stops
+     * saying what the strip would have once it cut (the limit was checked after each fold: a
+     * tuck through all of a needle's 243,096 passes went 295,000 faces past it).
+     */
+    @Test
+    void aTuckThatWouldPassTheLimitStopsBeforeItCuts() throws Exception {
+        HamiltonianRefinement.Result sharp = needle(0.9);
+        Wrap.Options options = new Wrap.Options(Double.NaN, Double.NaN);
+        List<Wrap.Step> steps = Wrap.wrap(sharp, options).steps();
+        int biggest = -1;
+        for (int s = 1; s < steps.size(); s++) {
+            if (steps.get(s).kind() == Wrap.Kind.TUCK && (biggest < 0
+                    || steps.get(s).facesAfter() - steps.get(s - 1).facesAfter() > steps.get(biggest).facesAfter() - steps.get(biggest - 1).facesAfter())) {
+                biggest = s;
+            }
+        }
+        int before = steps.get(biggest - 1).facesAfter();
+        int after = steps.get(biggest).facesAfter();
+        assertTrue(after - before > 100, "setup: a tuck that cuts through the passes, " + before + " -> " + after);
+        Wrap.FaceLimitException e = assertThrows(Wrap.FaceLimitException.class, () -> Wrap.wrap(sharp, options.withMaxFaces(after - 1)));
+        assertTrue(e.getMessage().startsWith(String.format(Locale.ROOT, "the strip would have %,d faces of paper on triangle ", after))
+                && e.getMessage().contains(String.format(Locale.ROOT, " once its next tuck cuts through %,d more, more than the limit of %d faces",
+                after - before, after - 1)), e.getMessage());
     }
 }
