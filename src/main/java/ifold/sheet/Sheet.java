@@ -306,16 +306,22 @@ public final class Sheet {
     }
 
     /**
-     * How many faces {@link #tuck} along the same line would add: one for each face resting on
-     * {@code host} that the line cuts through (its part beyond the line), counted without
-     * cutting, so that a limit on faces can stop a tuck before it makes them (a tuck at a
-     * needle's corner cut through its 243,096 passes' turns, 302,253 faces at once).
+     * How many faces {@link #tuck} along the same line would add, where they could take the sheet
+     * past {@code maxFaces} (else 0): one for each face resting on {@code host} that the line cuts
+     * through (its part beyond the line), counted without cutting, so that a limit on faces can
+     * stop a tuck before it makes them (a tuck at a needle's corner cut through its 243,096
+     * passes' turns, 302,253 faces at once). A tuck cuts at most every face on its host, and the
+     * count walks them all as the tuck's cut does again, so it is taken only near the limit.
      */
-    public int tuckCuts(int host, double px, double py, double dx, double dy) {
+    public int tuckCutsPast(int maxFaces, int host, double px, double py, double dx, double dy) {
         Stack stack = stacks.get(host);
-        if (stack == null) {
+        if (stack == null || (long) faceCount() + stack.count <= maxFaces) {
             return 0;
         }
+        return tuckCuts(stack, px, py, dx, dy);
+    }
+
+    private int tuckCuts(Stack stack, double px, double py, double dx, double dy) {
         double length = Math.hypot(dx, dy);
         double nx = dy / length; // right of the direction, as the cut has it
         double ny = -dx / length;

@@ -510,7 +510,7 @@ final class StripFolding {
             }
             int from = edge;
             int to = (edge + 1) % n;
-            checkLimit(sheet.tuckCuts(host, c[2 * from], c[2 * from + 1], c[2 * to] - c[2 * from], c[2 * to + 1] - c[2 * from + 1]));
+            checkLimit(sheet.tuckCutsPast(maxFaces, host, c[2 * from], c[2 * from + 1], c[2 * to] - c[2 * from], c[2 * to + 1] - c[2 * from + 1]));
             Tuck tuck;
             try {
                 tuck = sheet.tuck(host, c[2 * from], c[2 * from + 1], c[2 * to] - c[2 * from], c[2 * to + 1] - c[2 * from + 1]);
