@@ -194,7 +194,9 @@ class LauncherTest {
                 interrupted++;
                 assertEquals(codes[which], launcher.exitValue(), what + ": " + log);
                 List<String> said = said();
-                assertTrue(said.get(said.size() - 1).startsWith("ifold: interrupted: "), what + ": " + said);
+                // A signal that lands while the JVM is still starting (seconds, on a loaded
+                // machine) ends it before the program has anything to say, or to leave behind.
+                assertTrue(said.isEmpty() || said.get(said.size() - 1).startsWith("ifold: interrupted: "), what + ": " + said);
             }
             try (var files = Files.walk(out)) {
                 List<String> left = files.map(p -> p.getFileName().toString())
