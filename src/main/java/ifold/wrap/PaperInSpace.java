@@ -27,7 +27,8 @@ import java.util.List;
  * from its upper layer it leans out at 45 degrees, from its lower at the slope of the room
  * beyond the host's edge ({@link HostFrame#room}; 45 degrees where nothing limits it), and a
  * wall joins the two; less far where the room beyond a nearby edge is short ({@link
- * HostFrame#lean}), and those it wraps then less far still. Its rows stop on the line of a bend
+ * HostFrame#lean}) or a fold facing it stands in front of it ({@link FacingBends}), and those it
+ * wraps then less far still. Its rows stop on the line of a bend
  * they would run through where two creases meet at a corner, of its host or of another host in
  * its plane ({@link CoplanarHosts}).
  *
@@ -314,6 +315,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 out = frame.lean(bend.ax(), bend.ay(), bend.nx(), bend.ny(), low, slopes[k], out);
                 outs[k] = frame.lean(bend.bx(), bend.by(), bend.nx(), bend.ny(), low, slopes[k], out);
             }
+            FacingBends.keepApart(bends, outs, sheet.thickness() * NEST_TOLERANCE);
             nested.keepNested(outs);
             double[] past = nested.mitres(outs, CoplanarHosts.of(frames, sheet.tolerance()));
 

@@ -223,6 +223,32 @@ class WrappedPaperCollisionsTest {
         assertEquals(0, result.crossingPairs(), result::summary);
     }
 
+    /**
+     * Star-shaped icosahedra (each corner's radius scaled by 0.6 to 1.4, as bench/random-solids
+     * makes them, seed 31·n): at a corner of a host a pass's end is folded under along a crease
+     * from the corner and the next fold runs from the same corner a few degrees off it, facing
+     * back. The tuck's outer bend stood out a thickness towards that fold's wall, 0.2 to 2 T off
+     * its crease, and through it (stars 1, 3 and 4: 4, 15 and 2 crossing pairs, 0.45, 0.45 and
+     * 0.55 T deep); it now stands out at most halfway to the facing crease (FacingBends).
+     */
+    @ParameterizedTest
+    @ValueSource(longs = {1, 3, 4})
+    void aBendStandsOutNoFartherThanHalfwayToAFoldFacingIt(long n) throws Exception {
+        java.util.SplittableRandom random = new java.util.SplittableRandom(31 * n);
+        ifold.mesh.PolygonSoup ico = ifold.mesh.Solids.icosahedron();
+        ifold.mesh.PolygonSoup star = new ifold.mesh.PolygonSoup();
+        for (int v = 0; v < ico.vertexCount(); v++) {
+            double scale = 0.6 + 0.8 * random.nextDouble();
+            star.addVertex(scale * ico.coordinate(v, 0), scale * ico.coordinate(v, 1), scale * ico.coordinate(v, 2));
+        }
+        for (int f = 0; f < ico.faceCount(); f++) {
+            star.addFace(new int[] {ico.faceVertex(f, 0), ico.faceVertex(f, 1), ico.faceVertex(f, 2)}, 3, 0);
+        }
+        Result result = wrapAndCheck(star, "star " + n);
+        assertEquals(0, result.modelCrossings() + result.pointsInside(), result::summary);
+        assertEquals(0, result.crossingPairs(), result::summary);
+    }
+
     static Stream<Path> scripts() throws Exception {
         return Files.list(Path.of("models", "scripts")).filter(p -> p.toString().endsWith(".fold")).sorted();
     }
