@@ -214,9 +214,14 @@ final class StripFolding {
      * fold back there would lie off the host over other triangles' gadgets or tucked flaps (a
      * pile of the fold backs of the triangles fanning at a corner, tucked under there): k + 1
      * passes, two of their turns shifting by less than a width, each by half of what one short
-     * turn would, their gadgets lying flat on the host and on no other triangle's gadget. Null
-     * where the last pass runs the right way, where the fold back at the wrong end lies on the
-     * host or on no pile, on a host with a corner under 20°, or where no two turns have their
+     * turn would, their gadgets lying flat on the host and on no other triangle's gadget. Where
+     * that end is a corner of the host, the fold back would reach round the corner, off both its
+     * edges, and be tucked there onto the turns of the triangles fanning at it (on the
+     * tetrahedron, 6 of the 11 layers at the deepest point): there the passes are evened up
+     * whatever lies there, by the two turns nearest the middle whose gadgets lie on the host and
+     * on no other's, else by the two nearest the middle. Null where the last pass runs the right
+     * way, where the fold back at the wrong end lies on the host or on no pile and that end is no
+     * corner of the host, on a host with a corner under 20°, or where no two turns have their
      * gadgets so.
      */
     private double[] evenedUp(SlantedEdges edges, int k, int d, int i, double[] host) {
@@ -226,8 +231,14 @@ final class StripFolding {
         // of other triangles' gadgets or tucks already there. Everywhere, the torus of 5,000
         // triangles made 674,259 faces rather than 641,752 (more than the default limit) for no
         // layer fewer: its small hosts have their fold backs apart.
-        if (k < 2 || lastDirection == towardsExit || gadgetOnHost(edges, lastDirection, 0, w, host)
-                || clearOf(gadgetRegion(edges, lastDirection, 0, w), hostOf(i), true)) {
+        if (k < 2 || lastDirection == towardsExit || gadgetOnHost(edges, lastDirection, 0, w, host)) {
+            return null;
+        }
+        // At a corner of the host: the fold back would reach round it, off both its edges, and the
+        // passes are evened up whatever lies there (the tetrahedron, octahedron and icosahedron
+        // 11 -> 10 layers).
+        boolean atCorner = roundsCorner(cornerAngle(lastDirection > 0 ? plan.baseTo[i] : plan.baseFrom[i], hostOf(i), host));
+        if (!atCorner && clearOf(gadgetRegion(edges, lastDirection, 0, w), hostOf(i), true)) {
             return null;
         }
         if (smallestAngle(host) < FacePreparation.TARGET_ANGLE) {
@@ -258,6 +269,23 @@ final class StripFolding {
                 chosen.add(j);
             }
         }
+        if (atCorner) {
+            // Over other gadgets, then off the host, rather than round the corner.
+            for (int j : onHost) {
+                if (chosen.size() < 2 && !chosen.contains(j)) {
+                    chosen.add(j);
+                }
+            }
+            for (int j = 0; chosen.size() < 2 && j + 1 < passes; j++) {
+                int nearest = -1;
+                for (int t = 0; t + 1 < passes; t++) {
+                    if (!chosen.contains(t) && (nearest < 0 || Math.abs(t - middle) < Math.abs(nearest - middle))) {
+                        nearest = t;
+                    }
+                }
+                chosen.add(nearest);
+            }
+        }
         if (chosen.size() < 2) {
             return null;
         }
@@ -268,13 +296,36 @@ final class StripFolding {
             bottom[j] = j <= first ? h - (j + 1) * w : j <= second ? h - j * w - half : (passes - 1 - j) * w;
         }
         // Where they lie with the passes so shifted.
-        for (int j : new int[] {first, second}) {
+        for (int j : atCorner ? new int[0] : new int[] {first, second}) {
             if (!gadgetOnHost(edges, turnSide(j, d), bottom[j + 1], bottom[j] + w, host)
                     || !clearOf(gadgetRegion(edges, turnSide(j, d), bottom[j + 1], bottom[j] + w), hostOf(i), false)) {
                 return null;
             }
         }
         return bottom;
+    }
+
+    /**
+     * Whether a fold back round a host's corner of {@code degrees} is evened up whatever lies
+     * there: at a corner of about 60°, where two triangles of the refinement fan with 30° corners
+     * (the tetrahedron's, octahedron's and icosahedron's faces), not at right angles (the
+     * polycubes' and the torus's: a polycube of 6 cubes 18 -> 20 layers, and the torus of 5,000
+     * triangles made 686,076 faces, past the default limit), nor at the 45° of square_frame's
+     * (24 -> 26).
+     */
+    static boolean roundsCorner(double degrees) {
+        return degrees >= 50 && degrees <= 80;
+    }
+
+    /** The angle in degrees of the host's corner at vertex v of the mesh (its corners {@code c}), NaN where v is none. */
+    private double cornerAngle(int v, int host, double[] c) {
+        int[] corners = pieces.corners[host];
+        for (int k = 0; k < corners.length; k++) {
+            if (corners[k] == v) {
+                return angleAt(c, k);
+            }
+        }
+        return Double.NaN;
     }
 
     /** The region a gadget beyond the slanted edge on {@code side}, from height {@code low} to {@code top}, takes, in the host's frame. */
@@ -548,17 +599,22 @@ final class StripFolding {
     /** A convex polygon's smallest angle in degrees, from its corners in its frame. */
     private static double smallestAngle(double[] c) {
         double smallest = 180;
-        int n = c.length / 2;
-        for (int k = 0; k < n; k++) {
-            int a = (k + 1) % n;
-            int b = (k + n - 1) % n;
-            double ux = c[2 * a] - c[2 * k];
-            double uy = c[2 * a + 1] - c[2 * k + 1];
-            double vx = c[2 * b] - c[2 * k];
-            double vy = c[2 * b + 1] - c[2 * k + 1];
-            smallest = Math.min(smallest, Math.toDegrees(Math.abs(Math.atan2(ux * vy - uy * vx, ux * vx + uy * vy))));
+        for (int k = 0; k < c.length / 2; k++) {
+            smallest = Math.min(smallest, angleAt(c, k));
         }
         return smallest;
+    }
+
+    /** A convex polygon's angle at corner k in degrees, from its corners in its frame. */
+    private static double angleAt(double[] c, int k) {
+        int n = c.length / 2;
+        int a = (k + 1) % n;
+        int b = (k + n - 1) % n;
+        double ux = c[2 * a] - c[2 * k];
+        double uy = c[2 * a + 1] - c[2 * k + 1];
+        double vx = c[2 * b] - c[2 * k];
+        double vy = c[2 * b + 1] - c[2 * k + 1];
+        return Math.toDegrees(Math.abs(Math.atan2(ux * vy - uy * vx, ux * vx + uy * vy)));
     }
 
     /** How far the paper on the host reaches beyond edge e of the triangle (corners counter-clockwise: outside is to the right). */

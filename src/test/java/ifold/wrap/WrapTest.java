@@ -25,6 +25,7 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.junit.jupiter.params.provider.ValueSource;
 
@@ -161,6 +162,21 @@ public class WrapTest {
         Wrap.Result result = wrapAndCheck(mesh, new Wrap.Options(Double.NaN, Double.NaN), 2000);
         int layers = maxLayers(result);
         assertTrue(layers <= 11, "most layers " + layers + " (13 with the last pass beyond the base)");
+    }
+
+    /**
+     * A triangle whose passes would bring its last pass to the end of its base that is a corner
+     * of its host folded back round that corner, off both its edges, and the fold back was tucked
+     * into the corner onto the turns of the triangles fanning there: on the tetrahedron 6 of
+     * the 11 layers at the deepest point. It takes a pass more and turns at the right end.
+     */
+    @ParameterizedTest
+    @CsvSource({"tetrahedron, 10, 11", "octahedron, 10, 11", "icosahedron, 10, 11"})
+    void noFoldBackRoundAHostsCorner(String name, int most, int before) throws Exception {
+        HalfedgeMesh mesh = build(MeshReaders.read(Path.of("models", name + ".off")));
+        Wrap.Result result = wrapAndCheck(mesh, new Wrap.Options(Double.NaN, Double.NaN), 2000);
+        int layers = maxLayers(result);
+        assertTrue(layers <= most, "most layers " + layers + " (" + before + " folding back round the corner)");
     }
 
     /**
