@@ -236,7 +236,7 @@ final class StripFolding {
         }
         // At a corner of the host: the fold back would reach round it, off both its edges, and the
         // passes are evened up whatever lies there (the tetrahedron, octahedron and icosahedron
-        // 11 -> 10 layers).
+        // 11 -> 10 layers, figure3 24 -> 20).
         boolean atCorner = roundsCorner(cornerAngle(lastDirection > 0 ? plan.baseTo[i] : plan.baseFrom[i], hostOf(i), host));
         if (!atCorner && clearOf(gadgetRegion(edges, lastDirection, 0, w), hostOf(i), true)) {
             return null;
@@ -308,13 +308,14 @@ final class StripFolding {
     /**
      * Whether a fold back round a host's corner of {@code degrees} is evened up whatever lies
      * there: at a corner of about 60°, where two triangles of the refinement fan with 30° corners
-     * (the tetrahedron's, octahedron's and icosahedron's faces), not at right angles (the
-     * polycubes' and the torus's: a polycube of 6 cubes 18 -> 20 layers, and the torus of 5,000
-     * triangles made 686,076 faces, past the default limit), nor at the 45° of square_frame's
-     * (24 -> 26).
+     * (the tetrahedron's, octahedron's and icosahedron's faces), and at corners of 100° and wider
+     * (the dodecahedron's 108°, hex_prism's 120°, figure3's); not at or near right angles (the
+     * polycubes' and the tori's near-square hosts: a polycube of 6 cubes 18 -> 20 layers, the
+     * torus of 5,000 triangles 686,076 faces, past the default limit; with corners from 95° the
+     * 576-triangle torus had a pair in one plane), nor at the 45° of square_frame's (24 -> 26).
      */
     static boolean roundsCorner(double degrees) {
-        return degrees >= 50 && degrees <= 80;
+        return degrees >= 50 && degrees <= 80 || degrees >= 100;
     }
 
     /** The angle in degrees of the host's corner at vertex v of the mesh (its corners {@code c}), NaN where v is none. */

@@ -171,7 +171,7 @@ public class WrapTest {
      * the 11 layers at the deepest point. It takes a pass more and turns at the right end.
      */
     @ParameterizedTest
-    @CsvSource({"tetrahedron, 10, 11", "octahedron, 10, 11", "icosahedron, 10, 11"})
+    @CsvSource({"tetrahedron, 10, 11", "octahedron, 10, 11", "icosahedron, 10, 11", "figure3, 20, 24"})
     void noFoldBackRoundAHostsCorner(String name, int most, int before) throws Exception {
         HalfedgeMesh mesh = build(MeshReaders.read(Path.of("models", name + ".off")));
         Wrap.Result result = wrapAndCheck(mesh, new Wrap.Options(Double.NaN, Double.NaN), 2000);
