@@ -18,9 +18,14 @@ public final class LongIntMap {
     private int shift;
 
     public LongIntMap() {
-        keys = new long[64];
-        values = new int[64];
-        shift = 64 - 6;
+        this(6);
+    }
+
+    /** An empty map of 2^{@code log2Capacity} slots to begin with (a sheet edit's maps are mostly small, and made by the hundred thousand). */
+    LongIntMap(int log2Capacity) {
+        keys = new long[1 << log2Capacity];
+        values = new int[1 << log2Capacity];
+        shift = 64 - log2Capacity;
         Arrays.fill(keys, EMPTY);
     }
 
