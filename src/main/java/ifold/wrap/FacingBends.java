@@ -69,18 +69,29 @@ final class FacingBends {
         double[] limit = out.clone();
         int[] seen = new int[bends.size()];
         Arrays.fill(seen, -1);
+        long[] walked = new long[36]; // the cells walked for the bend at hand, x and y each
         for (int k = 0; k < bends.size(); k++) {
             if (!(out[k] > 0)) {
                 continue;
             }
             NestedBends.Bend bend = bends.get(k);
             int steps = (int) Math.ceil(2 * length(bend) / cell);
+            // The cells round one step overlap those round the next in six of nine: each is walked once a bend.
+            if (walked.length < 18 * (steps + 1)) {
+                walked = new long[18 * (steps + 1)];
+            }
+            int walkedCount = 0;
             for (int s = 0; s <= steps; s++) {
                 double t = (double) s / steps;
                 long cx = (long) Math.floor((bend.ax() + t * (bend.bx() - bend.ax()) + out[k] * bend.nx()) / cell);
                 long cy = (long) Math.floor((bend.ay() + t * (bend.by() - bend.ay()) + out[k] * bend.ny()) / cell);
                 for (long i = cx - 1; i <= cx + 1; i++) {
                     for (long m = cy - 1; m <= cy + 1; m++) {
+                        if (walkedBefore(walked, walkedCount, i, m)) {
+                            continue;
+                        }
+                        walked[walkedCount++] = i;
+                        walked[walkedCount++] = m;
                         for (int e = heads.get(cell(bend.host(), i, m), -1); e >= 0; e = entries.get(2 * e + 1)) {
                             int j = entries.get(2 * e);
                             if (seen[j] == k || j == k) {
@@ -130,6 +141,15 @@ final class FacingBends {
         }
         double gap = Math.min(o0, o1);
         return gap > tolerance ? gap : Double.POSITIVE_INFINITY; // on b's line, behind it or across it
+    }
+
+    private static boolean walkedBefore(long[] walked, int count, long i, long m) {
+        for (int w = 0; w < count; w += 2) {
+            if (walked[w] == i && walked[w + 1] == m) {
+                return true;
+            }
+        }
+        return false;
     }
 
     private static double length(NestedBends.Bend bend) {
