@@ -1,5 +1,6 @@
 package ifold.sheet;
 
+import ifold.geom.IntList;
 import ifold.sheet.Sheet.Crease;
 import ifold.sheet.Sheet.Placement;
 import java.util.ArrayList;
@@ -20,18 +21,18 @@ public final class SheetEdit {
     private final Sheet sheet;
     private final int facesBefore;
     /** The faces made before the edit that it changed, each noted once (the set of them in {@link #noted}). */
-    private final Ints changedFaces = new Ints();
+    private final IntList changedFaces = new IntList();
     private final LongIntMap noted = new LongIntMap(3);
     private final List<int[]> loopsBefore = new ArrayList<>();
     private final List<Isometry2> posesBefore = new ArrayList<>();
-    private final Ints hostsBefore = new Ints();
+    private final IntList hostsBefore = new IntList();
     private final LongIntMap splitOfEdge = new LongIntMap(3);
 
     /** Faces whose shape changed (cut, or made by a cut): their relations are checked again. */
     private final Set<Integer> reshaped = new HashSet<>();
 
     /** For each face made by a cut, the face it was cut from. */
-    private final Ints parents = new Ints();
+    private final IntList parents = new IntList();
 
     /** Whether a cut ran along a line on the sheet rather than on a host. */
     private boolean sheetCut;
@@ -121,8 +122,8 @@ public final class SheetEdit {
      * @return the faces beyond the line, after cutting
      */
     private int[] cut(int[] faces, double nx, double ny, double c, boolean onSheet) {
-        Ints beyond = new Ints();
-        Ints split = new Ints(); // each face split, then the part cut off it
+        IntList beyond = new IntList();
+        IntList split = new IntList(); // each face split, then the part cut off it
         for (int f : faces) {
             double[] range = range(f, nx, ny, c, onSheet);
             if (range[1] <= sheet.tolerance) {
@@ -502,38 +503,6 @@ public final class SheetEdit {
 
         int face(int k) {
             return faces[k];
-        }
-    }
-
-    /**
-     * A short growing list of ints: an edit's faces, a handful to thousands. (The blocks of
-     * {@link ifold.geom.IntList}, 4,096 ints at once, made for lists of millions, were most of a
-     * wrap's allocation here: five lists an edit, hundreds of thousands of edits.)
-     */
-    private static final class Ints {
-        private int[] values = new int[8];
-        private int size;
-
-        void add(int value) {
-            if (size == values.length) {
-                values = Arrays.copyOf(values, 2 * size);
-            }
-            values[size++] = value;
-        }
-
-        int get(int i) {
-            if (i >= size) {
-                throw new IndexOutOfBoundsException(i + " of " + size);
-            }
-            return values[i];
-        }
-
-        int size() {
-            return size;
-        }
-
-        int[] toArray() {
-            return Arrays.copyOf(values, size);
         }
     }
 }
