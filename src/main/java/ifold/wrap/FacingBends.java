@@ -1,6 +1,5 @@
 package ifold.wrap;
 
-import ifold.geom.IntList;
 import ifold.sheet.LongIntMap;
 import ifold.sheet.Polygons2;
 import java.util.Arrays;
@@ -36,21 +35,41 @@ final class FacingBends {
      *     bend ({@link NestedBends}), not in front of it
      */
     static void keepApart(List<NestedBends.Bend> bends, double[] out, double tolerance) {
+        int n = bends.size();
         double most = 0;
         double length = 0;
-        for (int k = 0; k < bends.size(); k++) {
+        for (int k = 0; k < n; k++) {
             most = Math.max(most, out[k]);
             length += length(bends.get(k));
         }
         if (!(most > 0)) {
             return;
         }
+        // What the quick tests below read, in arrays: a bend meets a hundred others in its cells
+        // (the 5,120-triangle icosphere: 17.5 million pairs), nearly all on another host, apart
+        // in levels or not facing it.
+        int[] host = new int[n];
+        int[] low = new int[n];
+        int[] high = new int[n];
+        double[] nx = new double[n];
+        double[] ny = new double[n];
+        for (int k = 0; k < n; k++) {
+            NestedBends.Bend bend = bends.get(k);
+            host[k] = bend.host();
+            low[k] = bend.low();
+            high[k] = bend.high();
+            nx[k] = bend.nx();
+            ny[k] = bend.ny();
+        }
         // Cells about a crease long, and at least twice as wide as any bend's reach: each crease
         // lies in a few, and a bend's reach in the cells its own crease lies in and those beside.
-        double cell = Math.max(4 * most, length / bends.size());
+        // A cell's bends in a chain: its last entry by the cell, each entry's bend and the entry before.
+        double cell = Math.max(4 * most, length / n);
         LongIntMap heads = new LongIntMap();
-        IntList entries = new IntList(); // bend, next entry of its cell (-1: none), each
-        for (int j = 0; j < bends.size(); j++) {
+        int[] bendOf = new int[2 * n + 16];
+        int[] before = new int[2 * n + 16];
+        int entries = 0;
+        for (int j = 0; j < n; j++) {
             NestedBends.Bend bend = bends.get(j);
             long last = -1;
             int steps = (int) Math.ceil(2 * length(bend) / cell);
@@ -59,45 +78,55 @@ final class FacingBends {
                 long key = cell(bend.host(), Math.floor((bend.ax() + t * (bend.bx() - bend.ax())) / cell),
                         Math.floor((bend.ay() + t * (bend.by() - bend.ay())) / cell));
                 if (key != last) {
-                    entries.add(j);
-                    entries.add(heads.get(key, -1));
-                    heads.put(key, entries.size() / 2 - 1);
+                    if (entries == bendOf.length) {
+                        bendOf = Arrays.copyOf(bendOf, 2 * entries);
+                        before = Arrays.copyOf(before, 2 * entries);
+                    }
+                    bendOf[entries] = j;
+                    before[entries] = heads.get(key, -1);
+                    heads.put(key, entries++);
                     last = key;
                 }
             }
         }
         double[] limit = out.clone();
-        int[] seen = new int[bends.size()];
+        int[] seen = new int[n];
         Arrays.fill(seen, -1);
-        long[] walked = new long[36]; // the cells walked for the bend at hand, x and y each
-        for (int k = 0; k < bends.size(); k++) {
+        long[] centres = new long[16]; // the distinct cells stepped through for the bend at hand, x and y each
+        for (int k = 0; k < n; k++) {
             if (!(out[k] > 0)) {
                 continue;
             }
             NestedBends.Bend bend = bends.get(k);
             int steps = (int) Math.ceil(2 * length(bend) / cell);
-            // The cells round one step overlap those round the next in six of nine: each is walked once a bend.
-            if (walked.length < 18 * (steps + 1)) {
-                walked = new long[18 * (steps + 1)];
+            if (centres.length < 2 * (steps + 1)) {
+                centres = new long[2 * (steps + 1)];
             }
-            int walkedCount = 0;
+            int centreCount = 0;
             for (int s = 0; s <= steps; s++) {
                 double t = (double) s / steps;
                 long cx = (long) Math.floor((bend.ax() + t * (bend.bx() - bend.ax()) + out[k] * bend.nx()) / cell);
                 long cy = (long) Math.floor((bend.ay() + t * (bend.by() - bend.ay()) + out[k] * bend.ny()) / cell);
+                if (centreCount > 0 && centres[centreCount - 2] == cx && centres[centreCount - 1] == cy) {
+                    continue;
+                }
+                // The cells round one step overlap those round the one before in six of nine:
+                // each is walked once a bend, those round an earlier step passed over.
                 for (long i = cx - 1; i <= cx + 1; i++) {
                     for (long m = cy - 1; m <= cy + 1; m++) {
-                        if (walkedBefore(walked, walkedCount, i, m)) {
+                        if (besideEarlier(centres, centreCount, i, m)) {
                             continue;
                         }
-                        walked[walkedCount++] = i;
-                        walked[walkedCount++] = m;
-                        for (int e = heads.get(cell(bend.host(), i, m), -1); e >= 0; e = entries.get(2 * e + 1)) {
-                            int j = entries.get(2 * e);
+                        for (int e = heads.get(cell(host[k], i, m), -1); e >= 0; e = before[e]) {
+                            int j = bendOf[e];
                             if (seen[j] == k || j == k) {
                                 continue;
                             }
                             seen[j] = k;
+                            if (host[j] != host[k] || Math.max(low[k], low[j]) >= Math.min(high[k], high[j])
+                                    || nx[k] * nx[j] + ny[k] * ny[j] >= 0) {
+                                continue; // as gap() finds first: no facing fold
+                            }
                             double gap = gap(bend, bends.get(j), tolerance);
                             if (gap < 2 * out[k]) {
                                 limit[k] = Math.min(limit[k], gap / 2);
@@ -105,6 +134,8 @@ final class FacingBends {
                         }
                     }
                 }
+                centres[centreCount++] = cx;
+                centres[centreCount++] = cy;
             }
         }
         System.arraycopy(limit, 0, out, 0, out.length);
@@ -143,9 +174,10 @@ final class FacingBends {
         return gap > tolerance ? gap : Double.POSITIVE_INFINITY; // on b's line, behind it or across it
     }
 
-    private static boolean walkedBefore(long[] walked, int count, long i, long m) {
-        for (int w = 0; w < count; w += 2) {
-            if (walked[w] == i && walked[w + 1] == m) {
+    /** Whether cell (i, m) lies beside or on one of the first {@code count / 2} cells in {@code centres}. */
+    private static boolean besideEarlier(long[] centres, int count, long i, long m) {
+        for (int c = 0; c < count; c += 2) {
+            if (Math.abs(centres[c] - i) <= 1 && Math.abs(centres[c + 1] - m) <= 1) {
                 return true;
             }
         }
