@@ -81,12 +81,17 @@ final class PlacedFaces {
 
     /** Whether face h, as placed, holds all of where faces f and g overlap. */
     boolean holdsOverlap(int h, int f, int g) {
-        double[] common = overlapOf(f, g);
-        return common != null && containsPoints(polygon(h), common);
+        int corners = overlapInPlace(f, g);
+        return corners > 0 && containsPoints(polygon(h), overlap, corners);
     }
 
-    /** Where faces f and g, as placed, overlap (a convex polygon), or null where they do not beyond the tolerance. */
-    double[] overlapOf(int f, int g) {
+    /**
+     * Where faces f and g, as placed, overlap (a convex polygon): the number of its corners (0
+     * where they do not, beyond the tolerance), which are the first numbers of {@link #overlap}
+     * until the next call. Not copied out: a tuck asks it of most pairs of faces that overlap,
+     * and a copy each was a tenth of what it allocated.
+     */
+    int overlapInPlace(int f, int g) {
         polygonTests++;
         double[] common = polygon(f);
         int corners = common.length / 2;
@@ -105,7 +110,7 @@ final class PlacedFaces {
             double c = nx * other[2 * i] + ny * other[2 * i + 1];
             int m = Polygons2.clippedCorners(common, corners, nx, ny, c, tolerance);
             if (m == 0) {
-                return null;
+                return 0;
             }
             double[] into = common == clipped[0] ? clipped[1] : clipped[0];
             if (into.length < 2 * m) {
@@ -116,11 +121,14 @@ final class PlacedFaces {
             common = into;
             corners = m;
         }
-        return Arrays.copyOf(common, 2 * corners);
+        overlap = common;
+        return corners;
     }
 
-    /** Where {@link #overlapOf} clips, step by step. */
+    /** Where {@link #overlapInPlace} clips, step by step. */
     private final double[][] clipped = {new double[32], new double[32]};
+    /** Where the last two faces {@link #overlapInPlace} asked of overlap: one of {@link #clipped}, or a face's own polygon. */
+    double[] overlap;
 
     /** Whether face g, as placed, lies wholly inside face h (convex, either way round). */
     boolean contains(int h, int g) {
@@ -129,6 +137,11 @@ final class PlacedFaces {
 
     /** Whether the points {@code inner} (x y x y ...) lie inside the convex polygon {@code outer}, either way round. */
     boolean containsPoints(double[] outer, double[] inner) {
+        return containsPoints(outer, inner, inner.length / 2);
+    }
+
+    /** {@link #containsPoints(double[], double[])} for the first {@code points} points of {@code inner}. */
+    boolean containsPoints(double[] outer, double[] inner, int points) {
         polygonTests++;
         int n = outer.length / 2;
         double orientation = Math.signum(Polygons2.twiceArea(outer, n));
@@ -137,7 +150,7 @@ final class PlacedFaces {
             double ex = outer[2 * j] - outer[2 * i];
             double ey = outer[2 * j + 1] - outer[2 * i + 1];
             double length = Math.sqrt(ex * ex + ey * ey);
-            for (int k = 0; k < inner.length; k += 2) {
+            for (int k = 0; k < 2 * points; k += 2) {
                 double cross = ex * (inner[k + 1] - outer[2 * i + 1]) - ey * (inner[k] - outer[2 * i]);
                 if (orientation * cross < -tolerance * length) {
                     return false;

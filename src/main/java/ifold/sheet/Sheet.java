@@ -5,10 +5,8 @@ import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collection;
-import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
-import java.util.Map;
 import java.util.Set;
 
 /**
@@ -87,7 +85,7 @@ public final class Sheet {
     static final Crease[] CREASES = Crease.values();
     /** The folds that made creases so far: the next one's number. */
     int creasingFolds;
-    final Map<Integer, Stack> stacks = new HashMap<>();
+    final StacksByHost stacks = new StacksByHost();
 
     int tailA;
     int tailB;

@@ -273,15 +273,15 @@ final class TuckPlacement {
                 boolean implied = false;
                 int[] next = side > 0 ? order.upper : order.lower;
                 int[] start = side > 0 ? order.upperStart : order.lowerStart;
-                double[] common = null; // where f and g overlap, found once a face might hold it
+                int common = -1; // the corners of where f and g overlap (PlacedFaces.overlap), found once a face might hold it
                 // A few of g's neighbours at most: the face at the foot of a tall stack of passes has
                 // thousands, and recording the pair is always right, only less economical.
                 int end = Math.min(start[sheet.slotOf[g] + 1], start[sheet.slotOf[g]] + WITNESSES);
                 for (int k = start[sheet.slotOf[g]]; k < end && !implied; k++) {
                     int h = next[k];
                     if (sideOf[sheet.slotOf[h]] == side) {
-                        common = common != null ? common : sheet.placedFaces.overlapOf(f, g);
-                        implied = common != null && sheet.placedFaces.containsPoints(sheet.placedFaces.polygon(h), common);
+                        common = common >= 0 ? common : sheet.placedFaces.overlapInPlace(f, g);
+                        implied = common > 0 && sheet.placedFaces.containsPoints(sheet.placedFaces.polygon(h), sheet.placedFaces.overlap, common);
                     }
                 }
                 if (!implied) {
