@@ -51,6 +51,7 @@ final class Landing {
         int lowestAbove = Integer.MAX_VALUE;
         List<Integer> touching = new ArrayList<>();
         Map<Integer, Boolean> overOf = new HashMap<>();
+        List<Integer> leftUnder = null;
         for (int i : stack.near(f)) {
             int g = stack.faces[i];
             if (sheet.placedFaces.overlap(f, g)) {
@@ -59,10 +60,17 @@ final class Landing {
                     over = true;
                 } else if (hinge >= 0) {
                     over = placement == Placement.OVER ? levels[i] <= hingeLevel : levels[i] < hingeLevel;
+                    if (!over && (sheet.originOf[g] & Sheet.LEFT_UNDER) != 0 && (sheet.originOf[hinge] & Sheet.LEFT_UNDER) == 0) {
+                        leftUnder = leftUnder != null ? leftUnder : new ArrayList<>();
+                        leftUnder.add(g);
+                    }
                 }
                 touching.add(g);
                 overOf.put(g, over);
             }
+        }
+        if (leftUnder != null) {
+            overLeftPaper(hinge, stack, leftUnder, overOf);
         }
         if (hinge >= 0) {
             outOfFolds(f, hinge, stack, levels, touching, overOf);
@@ -88,6 +96,21 @@ final class Landing {
             stack.top = Math.max(stack.top, level);
         }
         return f;
+    }
+
+    /**
+     * Puts a new face over the paper of an earlier triangle of the host ({@link Sheet#leaveUnder})
+     * that its level put it under: over each such face g unless the order holds g above the
+     * hinge, or puts below g paper the new face lies under (the order would have a cycle).
+     */
+    private static void overLeftPaper(int hinge, Stack stack, List<Integer> leftUnder, Map<Integer, Boolean> overOf) {
+        Stack.Related downwards = Stack.related(stack, true);
+        Set<Integer> aboveHinge = reachedFrom(hinge, Stack.related(stack, false));
+        for (int g : leftUnder) {
+            if (!aboveHinge.contains(g) && !contradicts(List.of(g), true, overOf, downwards)) {
+                overOf.put(g, true);
+            }
+        }
     }
 
     /**

@@ -66,12 +66,14 @@ public final class Sheet {
     /**
      * How each face came to be where it is: the kind of the fold of the tail that laid it (its
      * crease's ordinal + 1; 0 for the strip's first face, or a sheet's), plus {@link #TUCKED}
-     * once a tuck has moved it, and {@link #SEALED} once its host is {@link #settle settled}. A
-     * face cut from another inherits it.
+     * once a tuck has moved it, {@link #SEALED} once its host is {@link #settle settled}, and
+     * {@link #LEFT_UNDER} once the strip has {@link #leaveUnder left it under} the paper laid
+     * next on its host. A face cut from another inherits it.
      */
     byte[] originOf = new byte[16];
     static final int TUCKED = 16;
     static final int SEALED = 32;
+    static final int LEFT_UNDER = 64;
     /** The kind of the tail's last crease, which the next face laid from the tail comes after; null before any. */
     Crease lastTailCrease;
     final List<Isometry2> poseOf = new ArrayList<>();
@@ -222,6 +224,28 @@ public final class Sheet {
     public void liftTail() {
         tailLifted = true;
         tailPlacement = Placement.OVER;
+    }
+
+    /**
+     * Leaves the paper resting on {@code host} under the paper laid there from now on, where the
+     * order allows, as a wrap does when the strip runs on into the next triangle of the host
+     * ({@link #liftTail}): a later face goes over such paper it overlaps, wherever the levels
+     * put it, unless the order already holds that paper above the face's hinge. By levels alone,
+     * a later face folded from a low layer went under the earlier triangle's excess it
+     * overlapped while a pass of its own before it lay over that excess, and the two chains of
+     * layers then met in a cycle that left the next fold no valid place (the 9 × 5 torus: a
+     * gadget threaded under the earlier triangle's pass, and the pass folded from it caught
+     * between the layers of a turn it reached across). Unlike {@link #settle}, a tuck's flap
+     * still goes under all of the host's paper.
+     */
+    public void leaveUnder(int host) {
+        Stack stack = stacks.get(host);
+        if (stack == null) {
+            return;
+        }
+        for (int i = 0; i < stack.count; i++) {
+            originOf[stack.faces[i]] |= LEFT_UNDER;
+        }
     }
 
     /** The host the tail lies on. */

@@ -502,6 +502,7 @@ final class StripFolding {
             // The next triangle lies in this one's plane, on the same host: the strip runs on
             // flat, over the paper it leaves, as it would over the edge.
             sheet.liftTail();
+            sheet.leaveUnder(hostOf(i));
             return;
         }
         Isometry2 next = toHost[plan.first + i + 1];

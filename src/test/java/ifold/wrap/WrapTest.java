@@ -215,6 +215,20 @@ public class WrapTest {
     }
 
     /**
+     * A coarse torus (`ifold generate torus --around 9 --across 5`, 90 triangles) puts several
+     * triangles on one host, and the strip runs from one into the next over the paper it
+     * leaves. Placed by levels alone, the next triangle's gadget, folded from a low layer, went
+     * under the earlier triangle's excess that a pass of its own lay over, and the pass folded
+     * from the gadget was caught between the layers of the turn it reached across
+     * (taco-tortilla); the paper of an earlier triangle of the host now lies under the later
+     * paper where the order allows ({@code Sheet.leaveUnder}).
+     */
+    @Test
+    void aCoarseTorusWrapsWithAValidLayerOrder() throws Exception {
+        wrapAndCheck(build(Solids.torus(3, 1, 9, 5)), new Wrap.Options(Double.NaN, Double.NaN), 2000);
+    }
+
+    /**
      * A 4,000-triangle torus (`ifold generate torus --around 100 --across 20`) wraps whole at
      * the defaults: with a tolerance of a billionth of the model, its strip met a corner's edge
      * by a hair beyond its end (1.4e-8, the tolerance 1.2e-8) on triangle 12,041 and the wrap was
