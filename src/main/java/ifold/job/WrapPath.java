@@ -59,7 +59,8 @@ public record WrapPath(FacePreparation.Result preparation, HamiltonianRefinement
         if (preparation.prepared() == 0) {
             return new WrapPath(preparation, refined, false);
         }
-        HamiltonianRefinement.Result own = HamiltonianRefinement.refine(mesh);
+        // The model's own triangles, but for the regions fanned from their centre (FacePreparation).
+        HamiltonianRefinement.Result own = HamiltonianRefinement.refine(preparation.centred());
         return Wrap.likelyFaces(own) <= Wrap.likelyFaces(refined) ? new WrapPath(preparation, own, false)
                 : new WrapPath(preparation, refined, true);
     }
@@ -94,6 +95,7 @@ public record WrapPath(FacePreparation.Result preparation, HamiltonianRefinement
             return figures;
         }
         figures.put("planarRegions", preparation.regions());
+        figures.put("centredRegions", preparation.centredRegions());
         figures.put("preparedRegions", preparation.prepared());
         figures.put("used", prepared);
         figures.put("trianglesBefore", preparation.trianglesBefore());

@@ -47,6 +47,15 @@ import org.tinfour.standard.IncrementalTin;
  * across the edge gets the point too and is triangulated again, until no region has a point its
  * neighbour lacks.
  *
+ * <p>First, each convex pentagon whose triangles fan three at one of its corners (cut into
+ * triangles from that corner, as a file's pentagon is) is fanned from its centre instead
+ * ({@code PlanarRegion.fanFromCentre}): the refinement cuts every triangle at a corner again, so
+ * the shared dodecahedron's pentagons had six thin triangles at one corner, and the turn of each
+ * into its last pass lay at that corner, two layers each where they met (17 layers at most, the
+ * house 17); from the centre, two triangles at every corner (13, the house 14). A square cut in
+ * two is left as it is (from its centre the cube had 14 layers rather than 13), and so is a
+ * hexagon (see {@code PlanarRegion.FAN_CORNERS}).
+ *
  * <p>The prepared mesh is built and validated like a model read from a file; anything that
  * would not come out as the same closed or open surface (a repair the builder had to make,
  * another topology or area), or come out worse (a smallest angle under the model's, fifty times
@@ -89,21 +98,38 @@ public final class FacePreparation {
      * @param minAngleBefore the model's smallest angle, in degrees
      * @param minAngleAfter the prepared surface's smallest angle, in degrees
      * @param kept why the model's own triangles were kept although some region needed preparing, or null
+     * @param centred the model with the regions fanned from their centre and no other change: its
+     *     own triangles, as far as a wrap is concerned (the model itself where none was)
+     * @param centredRegions the regions fanned from their centre
      */
     public record Result(HalfedgeMesh mesh, int regions, int prepared, int trianglesBefore, double minAngleBefore,
-            double minAngleAfter, String kept) {
+            double minAngleAfter, String kept, HalfedgeMesh centred, int centredRegions) {
         public int trianglesAfter() {
             return mesh.faceCount();
         }
     }
 
     /**
-     * Prepares {@code mesh}, a valid triangle mesh.
+     * Prepares {@code mesh}, a valid triangle mesh: its regions fanned from their centre where
+     * their triangles fan at a corner, then those with slivers triangulated again.
      *
      * @throws IllegalArgumentException if a face is not a triangle
      */
     public static Result prepare(HalfedgeMesh mesh) {
-        return new FacePreparation.Run(mesh).run();
+        Run centring = new Run(mesh);
+        int centredRegions = centring.centreFans();
+        HalfedgeMesh centred = mesh;
+        if (centredRegions > 0) {
+            try {
+                centred = centring.assemble();
+            } catch (Unprepared e) {
+                centredRegions = 0; // not seen: the fans keep the region's boundary and area
+            }
+        }
+        Result result = new Run(centred).run();
+        return new Result(result.mesh(), result.regions(), result.prepared(), mesh.faceCount(),
+                centredRegions > 0 ? RefinementClaims.minAngleDegrees(mesh) : result.minAngleBefore(), result.minAngleAfter(),
+                result.kept(), centred, centredRegions);
     }
 
     /** One preparation of one mesh. */
@@ -158,7 +184,7 @@ public final class FacePreparation {
                 }
             }
             if (toPrepare.isEmpty()) {
-                return new Result(mesh, regions.size(), 0, mesh.faceCount(), before, before, null);
+                return new Result(mesh, regions.size(), 0, mesh.faceCount(), before, before, null, mesh, 0);
             }
             try {
                 for (PlanarRegion region : toPrepare) {
@@ -180,10 +206,25 @@ public final class FacePreparation {
                 for (PlanarRegion region : regions) {
                     count += region.prepare ? 1 : 0;
                 }
-                return new Result(prepared, regions.size(), count, mesh.faceCount(), before, after, null);
+                return new Result(prepared, regions.size(), count, mesh.faceCount(), before, after, null, mesh, 0);
             } catch (Unprepared e) {
-                return new Result(mesh, regions.size(), 0, mesh.faceCount(), before, before, e.getMessage());
+                return new Result(mesh, regions.size(), 0, mesh.faceCount(), before, before, e.getMessage(), mesh, 0);
             }
+        }
+
+        /** Fans from its centre each region that asks for it ({@link PlanarRegion#fanFromCentre}), to be assembled; how many. */
+        int centreFans() {
+            growRegions();
+            int count = 0;
+            for (PlanarRegion region : regions) {
+                try {
+                    region.prepare = region.fanFromCentre();
+                } catch (Unprepared e) {
+                    region.prepare = false; // not a polygon with holes: left as it is
+                }
+                count += region.prepare ? 1 : 0;
+            }
+            return count;
         }
 
         // ------------------------------------------------------------ regions
@@ -338,7 +379,7 @@ public final class FacePreparation {
         }
 
         /** The prepared mesh: the kept regions' triangles and the new ones, over the vertices they use. */
-        private HalfedgeMesh assemble() throws Unprepared {
+        HalfedgeMesh assemble() throws Unprepared {
             PolygonSoup soup = new PolygonSoup();
             int[] vertexId = new int[mesh.vertexCount()];
             Arrays.fill(vertexId, -1);

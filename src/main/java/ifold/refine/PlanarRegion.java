@@ -1,6 +1,7 @@
 package ifold.refine;
 
 import ifold.geom.Polygons;
+import ifold.geom.Tolerance;
 import ifold.geom.Triangles;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.InvalidMeshException;
@@ -108,6 +109,104 @@ final class PlanarRegion {
             perimeter += Triangles.distance(xyz, mesh.fromVertex(h), mesh.toVertex(h));
         }
         thickness = perimeter > 0 ? 2 * area / perimeter : Math.sqrt(area);
+    }
+
+    /**
+     * The corners of a region fanned from its centre: a pentagon. The shared hex_prism's hexagons,
+     * fanned from their centre, had 15 layers at most rather than 21 (eight thin triangles at a
+     * corner before, each turning into its last pass there), but 4 pairs of paper crossing by
+     * their corners, a bend of tucked creases along the line from a corner to the centre 1 T
+     * into flat paper beside it (12 pairs, 1.8 T, with the centre moved off the middle); a square
+     * has no corner where three triangles fan.
+     */
+    static final int FAN_CORNERS = 5;
+
+    /**
+     * Fans the region from its centre where its triangles fan three or more at one of its corners
+     * ({@link FacePreparation}): a convex pentagon, one loop with no point inside,
+     * none of its corners sharper than the target, and no triangle of the fan either. Sets its
+     * triangles (a corner key and the centre's each) and its one point inside; false, and nothing
+     * set, where the region is not such a polygon or needs no fan.
+     */
+    boolean fanFromCentre() throws FacePreparation.Unprepared {
+        double target = Math.toRadians(FacePreparation.TARGET_ANGLE);
+        if (sharp || faces.size() < 3 || minAngle < target) {
+            return false;
+        }
+        Map<Integer, Integer> around = new HashMap<>();
+        int most = 0;
+        for (int f : faces) {
+            int h0 = mesh.faceHalfedge(f);
+            int h = h0;
+            do {
+                most = Math.max(most, around.merge(mesh.fromVertex(h), 1, Integer::sum));
+                h = mesh.next(h);
+            } while (h != h0);
+        }
+        if (most < 3) {
+            return false;
+        }
+        List<List<Integer>> loops = loops();
+        List<Integer> loop = loops.get(0);
+        if (loops.size() != 1 || faces.size() != loop.size() - 2) {
+            return false; // a hole, or a point inside: no fan from one centre
+        }
+        // The centre of area: inside any convex polygon.
+        double[] centre = new double[3];
+        double area = 0;
+        for (int f : faces) {
+            int h = mesh.faceHalfedge(f);
+            int a = mesh.fromVertex(h);
+            int b = mesh.toVertex(h);
+            int c = mesh.toVertex(mesh.next(h));
+            double weight = Triangles.twiceArea(xyz, a, b, c);
+            area += weight;
+            for (int k = 0; k < 3; k++) {
+                centre[k] += weight * (xyz[3 * a + k] + xyz[3 * b + k] + xyz[3 * c + k]) / 3;
+            }
+        }
+        for (int k = 0; k < 3; k++) {
+            centre[k] /= area;
+        }
+        double[] n = {normal[3 * seed], normal[3 * seed + 1], normal[3 * seed + 2]};
+        double[] fan = new double[9];
+        long[] made = new long[3 * loop.size()];
+        int corners = 0;
+        for (int i = 0; i < loop.size(); i++) {
+            int a = mesh.fromVertex(loop.get(i));
+            int b = mesh.toVertex(loop.get(i));
+            int c = mesh.toVertex(loop.get((i + 1) % loop.size()));
+            // Convex: the boundary turns left about the normal at every corner, or runs straight on.
+            double turn = 0;
+            for (int k = 0; k < 3; k++) {
+                int k1 = (k + 1) % 3;
+                int k2 = (k + 2) % 3;
+                turn += n[k] * ((xyz[3 * b + k1] - xyz[3 * a + k1]) * (xyz[3 * c + k2] - xyz[3 * b + k2])
+                        - (xyz[3 * b + k2] - xyz[3 * a + k2]) * (xyz[3 * c + k1] - xyz[3 * b + k1]));
+            }
+            double straight = Tolerance.RELATIVE_EQUALITY * Triangles.distance(xyz, a, b) * Triangles.distance(xyz, b, c);
+            if (turn < -straight) {
+                return false;
+            }
+            corners += turn > straight ? 1 : 0;
+            for (int k = 0; k < 3; k++) {
+                fan[k] = xyz[3 * a + k];
+                fan[3 + k] = xyz[3 * b + k];
+                fan[6 + k] = centre[k];
+            }
+            if (Triangles.minAngle(fan, 0, 1, 2) < target) {
+                return false;
+            }
+            made[3 * i] = FacePreparation.Run.cornerKey(a);
+            made[3 * i + 1] = FacePreparation.Run.cornerKey(b);
+            made[3 * i + 2] = FacePreparation.Run.insideKey(0);
+        }
+        if (corners != FAN_CORNERS) {
+            return false;
+        }
+        triangles = made;
+        interior = centre;
+        return true;
     }
 
     /** The halfedges of the region's faces whose twin lies outside it (on another region, or no face). */

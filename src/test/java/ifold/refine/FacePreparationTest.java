@@ -45,6 +45,69 @@ class FacePreparationTest {
         assertNull(result.kept());
     }
 
+    /** A prism over a regular polygon of n corners, its two n-gon faces cut into triangles from one corner. */
+    static HalfedgeMesh prism(int n) throws Exception {
+        PolygonSoup soup = new PolygonSoup();
+        for (int z = 0; z < 2; z++) {
+            for (int k = 0; k < n; k++) {
+                soup.addVertex(Math.cos(2 * Math.PI * k / n), Math.sin(2 * Math.PI * k / n), 1.5 * z);
+            }
+        }
+        int[] bottom = new int[n];
+        int[] top = new int[n];
+        for (int k = 0; k < n; k++) {
+            bottom[k] = n - 1 - k;
+            top[k] = n + k;
+            soup.addFace(new int[] {k, (k + 1) % n, n + (k + 1) % n, n + k}, 4, 0);
+        }
+        soup.addFace(bottom, n, 0);
+        soup.addFace(top, n, 0);
+        return build(soup);
+    }
+
+    @Test
+    void aPentagonFannedFromOneCornerIsFannedFromItsCentre() throws Exception {
+        HalfedgeMesh prism = prism(5);
+        FacePreparation.Result result = FacePreparation.prepare(prism);
+        assertEquals(2, result.centredRegions());
+        assertEquals(0, result.prepared());
+        assertNull(result.kept());
+        assertSame(result.centred(), result.mesh(), "nothing else prepared: the path follows the fans");
+        assertEquals(prism.faceCount() + 2 * 2, result.trianglesAfter(), "each pentagon 5 triangles rather than 3");
+        assertEquals(prism.faceCount(), result.trianglesBefore());
+        SameSurface.assertSameSurface(prism, result.mesh());
+        // Each corner of a pentagon in two of its triangles, none in three.
+        HalfedgeMesh fanned = result.mesh();
+        int[] around = new int[fanned.vertexCount()];
+        for (int f = 0; f < fanned.faceCount(); f++) {
+            int h = fanned.faceHalfedge(f);
+            double z = 0;
+            for (int c = 0; c < 3; c++, h = fanned.next(h)) {
+                z += fanned.positionArray()[3 * fanned.fromVertex(h) + 2];
+            }
+            if (z == 0 || z == 4.5) {
+                for (int c = 0; c < 3; c++, h = fanned.next(h)) {
+                    around[fanned.fromVertex(h)]++;
+                }
+            }
+        }
+        for (int v = 0; v < fanned.vertexCount(); v++) {
+            assertTrue(around[v] == 2 || around[v] == 5, "vertex " + v + " in " + around[v] + " triangles of its pentagon");
+        }
+    }
+
+    @Test
+    void squaresAndHexagonsAreNotFanned() throws Exception {
+        HalfedgeMesh cube = build(Solids.cube());
+        FacePreparation.Result result = FacePreparation.prepare(cube);
+        assertEquals(0, result.centredRegions());
+        assertSame(cube, result.centred());
+        HalfedgeMesh hexagonal = prism(6);
+        FacePreparation.Result hexagons = FacePreparation.prepare(hexagonal);
+        assertEquals(0, hexagons.centredRegions(), "hexagons fanned so crossed paper by their corners");
+        assertSame(hexagonal, hexagons.mesh());
+    }
+
     @Test
     void aLongBoxBecomesARowOfWellShapedTriangles() throws Exception {
         HalfedgeMesh box = box(100, 1, 1);
