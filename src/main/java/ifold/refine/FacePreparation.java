@@ -118,18 +118,18 @@ public final class FacePreparation {
     public static Result prepare(HalfedgeMesh mesh) {
         Run centring = new Run(mesh);
         int centredRegions = centring.centreFans();
-        HalfedgeMesh centred = mesh;
-        if (centredRegions > 0) {
-            try {
-                centred = centring.assemble();
-            } catch (Unprepared e) {
-                centredRegions = 0; // not seen: the fans keep the region's boundary and area
-            }
+        if (centredRegions == 0) {
+            return centring.run(); // its regions grown once, for both
+        }
+        HalfedgeMesh centred;
+        try {
+            centred = centring.assemble();
+        } catch (Unprepared e) {
+            return new Run(mesh).run(); // not seen: the fans keep each region's boundary and area
         }
         Result result = new Run(centred).run();
-        return new Result(result.mesh(), result.regions(), result.prepared(), mesh.faceCount(),
-                centredRegions > 0 ? RefinementClaims.minAngleDegrees(mesh) : result.minAngleBefore(), result.minAngleAfter(),
-                result.kept(), centred, centredRegions);
+        return new Result(result.mesh(), result.regions(), result.prepared(), mesh.faceCount(), RefinementClaims.minAngleDegrees(mesh),
+                result.minAngleAfter(), result.kept(), centred, centredRegions);
     }
 
     /** One preparation of one mesh. */
@@ -171,7 +171,9 @@ public final class FacePreparation {
 
         Result run() {
             double before = RefinementClaims.minAngleDegrees(mesh);
-            growRegions();
+            if (regions.isEmpty()) {
+                growRegions();
+            }
             List<PlanarRegion> toPrepare = new ArrayList<>();
             for (PlanarRegion region : regions) {
                 if (region.minAngle < Math.toRadians(TARGET_ANGLE) && !region.sharp) {
