@@ -20,7 +20,8 @@ import java.util.Map;
  * <p>Coplanar neighbours (normals within 1e-12, the far corner within 1e-9 of the model's size
  * of the plane) make one region; a convex region is one piece, any other is cut into convex
  * pieces by merging neighbours while their union stays convex (Hertel and Mehlhorn's greedy
- * decomposition, at most four times the fewest pieces). Convex, because a tuck folds all the
+ * decomposition, at most four times the fewest pieces), the two whose union has the widest
+ * smallest corner first. Convex, because a tuck folds all the
  * piece's paper beyond the line of one of its edges: on a convex piece, nothing beyond that
  * line is over the piece.
  */
@@ -186,7 +187,8 @@ final class HostPieces {
 
         /**
          * Merges coplanar neighbours while their union stays convex, whole regions first: a
-         * convex face cut into triangles any way comes back as one piece.
+         * convex face cut into triangles any way comes back as one piece. The rest roundest
+         * first ({@link #mergeRoundest}), or, among very many, in the neighbours' order.
          */
         void merge() {
             // The regions: coplanar neighbours joined.
@@ -223,6 +225,10 @@ final class HostPieces {
                     }
                 }
             }
+            if (neighbours.size() <= ROUND_MERGE_NEIGHBOURS) {
+                mergeRoundest();
+                return;
+            }
             boolean merged = true;
             while (merged) {
                 merged = false;
@@ -242,6 +248,75 @@ final class HostPieces {
                 }
             }
         }
+
+        /**
+         * Merges, one pair at a time, the two neighbours whose union is convex and has the
+         * widest smallest corner: a rectilinear face (a polycube's L, cut into squares and each
+         * square into two triangles) comes back as rectangles, not as triangles with 45° corners
+         * cut along a diagonal, where tucks bounce and paper spilled across the cut piles up.
+         */
+        private void mergeRoundest() {
+            while (true) {
+                int bestA = -1;
+                int bestB = -1;
+                int[] bestUnion = null;
+                double best = -1;
+                for (int[] pair : neighbours) {
+                    int a = find(pair[0]);
+                    int b = find(pair[1]);
+                    if (a == b) {
+                        continue;
+                    }
+                    int[] union = union(loop[a], loop[b]);
+                    if (union == null || !convex(union, normal[a])) {
+                        continue;
+                    }
+                    double smallest = smallestCorner(union, normal[a]);
+                    if (smallest > best + 1e-9) {
+                        best = smallest;
+                        bestA = a;
+                        bestB = b;
+                        bestUnion = union;
+                    }
+                }
+                if (bestUnion == null) {
+                    return;
+                }
+                parent[bestB] = bestA;
+                loop[bestA] = bestUnion;
+                loop[bestB] = null;
+            }
+        }
+
+        /** The smallest corner of a convex loop in degrees, its vertices in line with their neighbours passed over. */
+        private double smallestCorner(int[] l, double[] n) {
+            int count = l.length;
+            double smallest = 180;
+            for (int k = 0; k < count; k++) {
+                int a = l[(k + count - 1) % count];
+                int b = l[k];
+                int c = l[(k + 1) % count];
+                double[] u = new double[3];
+                double[] w = new double[3];
+                for (int axis = 0; axis < 3; axis++) {
+                    u[axis] = points.coordinate(a, axis) - points.coordinate(b, axis);
+                    w[axis] = points.coordinate(c, axis) - points.coordinate(b, axis);
+                }
+                double cross = n[0] * (u[1] * w[2] - u[2] * w[1]) + n[1] * (u[2] * w[0] - u[0] * w[2]) + n[2] * (u[0] * w[1] - u[1] * w[0]);
+                double dot = u[0] * w[0] + u[1] * w[1] + u[2] * w[2];
+                double angle = Math.toDegrees(Math.atan2(Math.abs(cross), dot));
+                if (angle < 180 - 1e-6) {
+                    smallest = Math.min(smallest, angle);
+                }
+            }
+            return smallest;
+        }
+
+        /**
+         * The most coplanar neighbours merged roundest first: each merge tries every pair, so
+         * the cost grows as their square; past this many, neighbours merge in their order.
+         */
+        private static final int ROUND_MERGE_NEIGHBOURS = 2000;
 
         private static int root(int[] region, int c) {
             while (region[c] != c) {

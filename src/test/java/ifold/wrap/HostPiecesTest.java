@@ -63,6 +63,29 @@ class HostPiecesTest {
         }
     }
 
+    /**
+     * Polycubes' faces, squares cut into two triangles each, come back as rectangles: the
+     * roundest merge first, not a triangle with 45° corners cut along a diagonal of the L.
+     */
+    @Test
+    void aPolycubesFacesAreCutIntoRectangles() throws Exception {
+        for (java.util.List<int[]> cubes : java.util.List.of(ifold.mesh.Polycubes.l(), ifold.mesh.Polycubes.plus(), ifold.mesh.Polycubes.t())) {
+            HalfedgeMesh mesh = MeshBuilder.build(ifold.mesh.Polycubes.surface(cubes), MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();
+            IndexedPolygons path = HamiltonianRefinement.refine(mesh).mesh();
+            HostPieces pieces = HostPieces.of(path);
+            for (int[] corners : pieces.corners) {
+                assertEquals(4, corners.length, "a rectangle's corners");
+                for (int k = 0; k < 4; k++) {
+                    double[] a = point(path, corners[(k + 3) % 4]);
+                    double[] b = point(path, corners[k]);
+                    double[] c = point(path, corners[(k + 1) % 4]);
+                    double dot = (a[0] - b[0]) * (c[0] - b[0]) + (a[1] - b[1]) * (c[1] - b[1]) + (a[2] - b[2]) * (c[2] - b[2]);
+                    assertEquals(0, dot, 1e-12, "a right angle at each corner");
+                }
+            }
+        }
+    }
+
     /** Whether vertex v lies in the convex polygon of vertex ids {@code corners} (in its plane, up to rounding). */
     private static boolean inside(IndexedPolygons mesh, int[] corners, int v) {
         double[] n = new double[3];
