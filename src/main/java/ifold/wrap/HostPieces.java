@@ -188,7 +188,7 @@ final class HostPieces {
         /**
          * Merges coplanar neighbours while their union stays convex, whole regions first: a
          * convex face cut into triangles any way comes back as one piece. The rest roundest
-         * first ({@link #mergeRoundest}), or, among very many, in the neighbours' order.
+         * first ({@link #mergeRoundest}).
          */
         void merge() {
             // The regions: coplanar neighbours joined.
@@ -225,66 +225,58 @@ final class HostPieces {
                     }
                 }
             }
-            if (neighbours.size() <= ROUND_MERGE_NEIGHBOURS) {
-                mergeRoundest();
-                return;
-            }
-            boolean merged = true;
-            while (merged) {
-                merged = false;
-                for (int[] pair : neighbours) {
-                    int a = find(pair[0]);
-                    int b = find(pair[1]);
-                    if (a == b) {
-                        continue;
-                    }
-                    int[] union = union(loop[a], loop[b]);
-                    if (union != null && convex(union, normal[a])) {
-                        parent[b] = a;
-                        loop[a] = union;
-                        loop[b] = null;
-                        merged = true;
-                    }
-                }
-            }
+            mergeRoundest();
         }
 
         /**
          * Merges, one pair at a time, the two neighbours whose union is convex and has the
          * widest smallest corner: a rectilinear face (a polycube's L, cut into squares and each
          * square into two triangles) comes back as rectangles, not as triangles with 45° corners
-         * cut along a diagonal, where tucks bounce and paper spilled across the cut piles up.
+         * cut along a diagonal, where tucks bounce and the folds along the cut stand in one plane.
          */
         private void mergeRoundest() {
+            // Each pair's union and its smallest corner, kept until either cell changes (its
+            // root or that root's version): a merge touches only the pairs of the two cells, and
+            // trying every pair's union anew after each merge made the cost grow as the square.
+            int pairs = neighbours.size();
+            int[][] unions = new int[pairs][];
+            double[] smallest = new double[pairs];
+            int[] rootA = new int[pairs];
+            int[] rootB = new int[pairs];
+            int[] versionA = new int[pairs];
+            int[] versionB = new int[pairs];
+            java.util.Arrays.fill(rootA, -1);
+            int[] version = new int[count];
             while (true) {
-                int bestA = -1;
-                int bestB = -1;
-                int[] bestUnion = null;
-                double best = -1;
-                for (int[] pair : neighbours) {
-                    int a = find(pair[0]);
-                    int b = find(pair[1]);
+                int best = -1;
+                for (int k = 0; k < pairs; k++) {
+                    int a = find(neighbours.get(k)[0]);
+                    int b = find(neighbours.get(k)[1]);
                     if (a == b) {
                         continue;
                     }
-                    int[] union = union(loop[a], loop[b]);
-                    if (union == null || !convex(union, normal[a])) {
-                        continue;
+                    if (rootA[k] != a || rootB[k] != b || versionA[k] != version[a] || versionB[k] != version[b]) {
+                        int[] union = union(loop[a], loop[b]);
+                        unions[k] = union != null && convex(union, normal[a]) ? union : null;
+                        smallest[k] = unions[k] == null ? -1 : smallestCorner(unions[k], normal[a]);
+                        rootA[k] = a;
+                        rootB[k] = b;
+                        versionA[k] = version[a];
+                        versionB[k] = version[b];
                     }
-                    double smallest = smallestCorner(union, normal[a]);
-                    if (smallest > best + 1e-9) {
-                        best = smallest;
-                        bestA = a;
-                        bestB = b;
-                        bestUnion = union;
+                    if (unions[k] != null && (best < 0 || smallest[k] > smallest[best] + 1e-9)) {
+                        best = k;
                     }
                 }
-                if (bestUnion == null) {
+                if (best < 0) {
                     return;
                 }
-                parent[bestB] = bestA;
-                loop[bestA] = bestUnion;
-                loop[bestB] = null;
+                int a = rootA[best];
+                int b = rootB[best];
+                parent[b] = a;
+                loop[a] = unions[best];
+                loop[b] = null;
+                version[a]++;
             }
         }
 
@@ -312,11 +304,6 @@ final class HostPieces {
             return smallest;
         }
 
-        /**
-         * The most coplanar neighbours merged roundest first: each merge tries every pair, so
-         * the cost grows as their square; past this many, neighbours merge in their order.
-         */
-        private static final int ROUND_MERGE_NEIGHBOURS = 2000;
 
         private static int root(int[] region, int c) {
             while (region[c] != c) {
