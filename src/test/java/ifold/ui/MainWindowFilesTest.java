@@ -30,12 +30,14 @@ class MainWindowFilesTest extends WindowTestBase {
     @Test
     void aModelOpensThroughTheMenuAndIsWrapped() throws Exception {
         Settings settings = settings();
-        // The L of three cubes (`ifold generate l`): its concave edges, where bends of the zig-zag's
-        // layers still cross (29 pairs, against 36 before its faces were cut where the creep begins).
-        Path lPrism = dir.resolve("lprism.off");
-        ifold.job.GenerateJob.run(new ifold.job.GenerateJob.Request(ifold.job.BuiltInModels.Shape.l, 24, 12, 3, lPrism, false),
+        // The plus of five cubes (`ifold generate plus`): its faces cut into hosts, where the walls
+        // of folds along the cuts stand on each other in one plane (1,636 pairs). The L of three
+        // cubes showed its pairs here until its top was cut into two rectangles, whose walls the
+        // view sees edge on.
+        Path plus = dir.resolve("plus.off");
+        ifold.job.GenerateJob.run(new ifold.job.GenerateJob.Request(ifold.job.BuiltInModels.Shape.plus, 24, 12, 3, plus, false),
                 ifold.job.JobWatcher.NONE);
-        settings.addRecent(lPrism);
+        settings.addRecent(plus);
         settings.addRecent(Path.of("models", "cube.off"));
         window = App.open(null, settings);
         settled();
@@ -64,16 +66,16 @@ class MainWindowFilesTest extends WindowTestBase {
         assertTrue(pixelsOf(path, 0x00A030, 60) > 50 && pixelsOf(plain, 0x00A030, 60) < 10,
                 "the path's tree edges in green, where the plain model has none");
         // View > Collisions: the faces of paper that cross, in red, seen through the paper. The
-        // cube's paper crosses nothing; the L's, at bends by its concave edges, does.
+        // cube's paper crosses nothing; the plus's walls along its cuts overlap.
         onEdt(() -> {
-            menuItem(window, "2  lprism.off").doClick();
+            menuItem(window, "2  plus.off").doClick();
             return null;
         });
-        waitFor("the L-prism wrapped", 60, () -> window.plan() != null && !window.isWorking()
-                && window.getTitle().contains("lprism.off"));
+        waitFor("the plus wrapped", 60, () -> window.plan() != null && !window.isWorking()
+                && window.getTitle().contains("plus.off"));
         settled();
         onEdt(() -> {
-            window.timeline.seek(Double.MAX_VALUE); // the whole wrap, its concave edge covered
+            window.timeline.seek(Double.MAX_VALUE); // the whole wrap, its cuts covered
             return null;
         });
         assertTrue(window.view.awaitFrame(30_000));
@@ -89,7 +91,7 @@ class MainWindowFilesTest extends WindowTestBase {
         });
         assertTrue(window.view.awaitFrame(30_000));
         int without = pixelsOf(window.view.picture(), 0xE0262B, 40);
-        assertTrue(red > without + 5, "red where paper collides (at the concave edge): " + red + " pixels, " + without + " without");
+        assertTrue(red > without + 5, "red where paper collides (along the cuts): " + red + " pixels, " + without + " without");
         onEdt(() -> {
             window.parameters.wrapWidth.setText("0.1");
             return null;
