@@ -99,18 +99,39 @@ final class Landing {
     }
 
     /**
-     * Puts a new face over the paper of an earlier triangle of the host ({@link Sheet#leaveUnder})
-     * that its level put it under: over each such face g unless the order holds g above the
-     * hinge, or puts below g paper the new face lies under (the order would have a cycle).
+     * Puts a new face over paper of an earlier triangle of the host ({@link Sheet#leaveUnder})
+     * that its level put it under, where later paper already lies over that paper: the new face
+     * goes over each such face g that the order holds below a face of the later paper, unless it
+     * holds g above the hinge, or puts below g paper the new face lies under (the order would
+     * have a cycle). Under g, the new face would close a chain from the later paper over g
+     * back to itself through faces of different places, which levels do not see.
      */
-    private static void overLeftPaper(int hinge, Stack stack, List<Integer> leftUnder, Map<Integer, Boolean> overOf) {
+    private void overLeftPaper(int hinge, Stack stack, List<Integer> leftUnder, Map<Integer, Boolean> overOf) {
         Stack.Related downwards = Stack.related(stack, true);
-        Set<Integer> aboveHinge = reachedFrom(hinge, Stack.related(stack, false));
+        Stack.Related upwards = Stack.related(stack, false);
+        Set<Integer> aboveHinge = reachedFrom(hinge, upwards);
         for (int g : leftUnder) {
-            if (!aboveHinge.contains(g) && !contradicts(List.of(g), true, overOf, downwards)) {
+            if (laterPaperAbove(g, upwards) && !aboveHinge.contains(g) && !contradicts(List.of(g), true, overOf, downwards)) {
                 overOf.put(g, true);
             }
         }
+    }
+
+    /** Whether the order holds face g below a face laid since its paper was left under ({@link Sheet#leaveUnder}). */
+    private boolean laterPaperAbove(int g, Stack.Related upwards) {
+        Set<Integer> reached = new HashSet<>();
+        ArrayDeque<Integer> open = new ArrayDeque<>(List.of(g));
+        while (!open.isEmpty()) {
+            for (int next : upwards.of(open.poll())) {
+                if ((sheet.originOf[next] & (Sheet.LEFT_UNDER | Sheet.SEALED)) == 0) {
+                    return true;
+                }
+                if (reached.add(next)) {
+                    open.add(next);
+                }
+            }
+        }
+        return false;
     }
 
     /**
