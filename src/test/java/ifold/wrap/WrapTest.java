@@ -220,8 +220,8 @@ public class WrapTest {
      * leaves. Placed by levels alone, the next triangle's gadget, folded from a low layer, went
      * under the earlier triangle's excess that a pass of its own lay over, and the pass folded
      * from the gadget was caught between the layers of the turn it reached across
-     * (taco-tortilla); the paper of an earlier triangle of the host now lies under the later
-     * paper where the order allows ({@code Sheet.leaveUnder}).
+     * (taco-tortilla). A later face now goes over the earlier triangle's paper where later
+     * paper already lies over it ({@code Sheet.leaveUnder}).
      */
     @Test
     void aCoarseTorusWrapsWithAValidLayerOrder() throws Exception {
