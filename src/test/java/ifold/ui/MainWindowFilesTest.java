@@ -16,6 +16,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.stream.Stream;
+import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
@@ -306,6 +307,20 @@ class MainWindowFilesTest extends WindowTestBase {
         saveAs(menuSteps);
         waitFor("the step diagrams from the menu", 60, () -> said.stream().anyMatch(m -> m.contains("wrote " + menuSteps)));
         assertTrue(said.stream().anyMatch(m -> m.contains("wrote " + menuSteps + ": 4 pages, 12 steps")), said.toString());
+    }
+
+    /** The pings below would see a held event thread: one held for 0.6 s keeps a ping waiting that long, whatever the load. */
+    @Test
+    void aPingWaitsWhileTheEventThreadIsHeld() throws Exception {
+        SwingUtilities.invokeLater(() -> {
+            try {
+                Thread.sleep(600);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        });
+        long waited = pingNanos();
+        assertTrue(waited > 400_000_000L, "a ping waited " + waited / 1e6 + " ms while the event thread was held for 600");
     }
 
     @Test

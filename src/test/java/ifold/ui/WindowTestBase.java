@@ -176,18 +176,30 @@ abstract class WindowTestBase {
     }
 
     /**
-     * How long the event thread took to answer one ping, less the time the collector stopped
-     * every thread meanwhile: a full collection of a big wrap's heap holds the event thread as
-     * much as the work's, and on a loaded machine took a ping past the bound (339 ms) though the
-     * work never held the thread.
+     * How long the event thread took to take up one ping, less the time the collector stopped
+     * every thread meanwhile, and less how long an idle thread pinged at the same moment took:
+     * what the machine's load costs any thread. A full collection of a big wrap's heap holds the
+     * event thread as much as the work's, and on a machine loaded by other work a ping took 284
+     * to 361 ms though the work never held the thread; a thread the work holds keeps a ping
+     * waiting for seconds while the idle thread answers at once.
      */
     static long pingNanos() throws Exception {
         long collecting = collectingMillis();
         long sent = System.nanoTime();
-        SwingUtilities.invokeAndWait(() -> { });
-        long took = System.nanoTime() - sent;
-        return Math.max(0, took - (collectingMillis() - collecting) * 1_000_000L);
+        java.util.concurrent.Future<Long> idle = IDLE.submit(System::nanoTime);
+        long[] answered = new long[1];
+        SwingUtilities.invokeAndWait(() -> answered[0] = System.nanoTime());
+        long load = idle.get() - sent;
+        long took = answered[0] - sent;
+        return Math.max(0, took - load - (collectingMillis() - collecting) * 1_000_000L);
     }
+
+    /** A thread that does nothing but answer {@link #pingNanos}'s pings. */
+    private static final java.util.concurrent.ExecutorService IDLE = java.util.concurrent.Executors.newSingleThreadExecutor(task -> {
+        Thread thread = new Thread(task, "idle ping");
+        thread.setDaemon(true);
+        return thread;
+    });
 
     private static long collectingMillis() {
         long millis = 0;
