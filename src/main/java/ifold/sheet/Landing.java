@@ -70,7 +70,7 @@ final class Landing {
             }
         }
         if (leftUnder != null) {
-            overLeftPaper(hinge, stack, leftUnder, overOf);
+            overLeftPaper(f, hinge, stack, leftUnder, overOf);
         }
         if (hinge >= 0) {
             outOfFolds(f, hinge, stack, levels, touching, overOf);
@@ -100,21 +100,42 @@ final class Landing {
 
     /**
      * Puts a new face over paper of an earlier triangle of the host ({@link Sheet#leaveUnder})
-     * that its level put it under, where later paper already lies over that paper: the new face
-     * goes over each such face g that the order holds below a face of the later paper, unless it
-     * holds g above the hinge, or puts below g paper the new face lies under (the order would
-     * have a cycle). Under g, the new face would close a chain from the later paper over g
-     * back to itself through faces of different places, which levels do not see.
+     * that its level put it under, where later paper already lies over that paper or the new
+     * face reaches across a crease joining it to other paper it overlaps: over each such face g,
+     * unless the order holds g above the hinge, or puts below g paper the new face lies under
+     * (the order would have a cycle). Under g, the new face would close a chain from the later
+     * paper over g back to itself through faces of different places, which levels do not see;
+     * or, reaching across g's crease, lie between g and the layer across it where the level put
+     * that layer below (a turn between an earlier gadget's layers, on turned box 1 of
+     * bench/random-solids).
      */
-    private void overLeftPaper(int hinge, Stack stack, List<Integer> leftUnder, Map<Integer, Boolean> overOf) {
+    private void overLeftPaper(int f, int hinge, Stack stack, List<Integer> leftUnder, Map<Integer, Boolean> overOf) {
         Stack.Related downwards = Stack.related(stack, true);
         Stack.Related upwards = Stack.related(stack, false);
         Set<Integer> aboveHinge = reachedFrom(hinge, upwards);
         for (int g : leftUnder) {
-            if (laterPaperAbove(g, upwards) && !aboveHinge.contains(g) && !contradicts(List.of(g), true, overOf, downwards)) {
+            if ((laterPaperAbove(g, upwards) || foldReachedAcross(f, g, overOf)) && !aboveHinge.contains(g)
+                    && !contradicts(List.of(g), true, overOf, downwards)) {
                 overOf.put(g, true);
             }
         }
+    }
+
+    /** Whether new face f reaches across a crease joining face g to other paper it overlaps. */
+    private boolean foldReachedAcross(int f, int g, Map<Integer, Boolean> overOf) {
+        double[] placedF = sheet.placedFaces.polygon(f);
+        int[] loop = sheet.loops.get(g);
+        Isometry2 pose = sheet.poseOf.get(g);
+        for (int k = 0; k < loop.length; k++) {
+            int a = loop[k];
+            int b = loop[(k + 1) % loop.length];
+            if (sheet.crease(a, b) != null && overOf.containsKey(sheet.faceOfEdge.get(Sheet.directed(b, a), -1))
+                    && crosses(placedF, pose.x(sheet.u(a), sheet.v(a)), pose.y(sheet.u(a), sheet.v(a)),
+                            pose.x(sheet.u(b), sheet.v(b)), pose.y(sheet.u(b), sheet.v(b)))) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** Whether the order holds face g below a face laid since its paper was left under ({@link Sheet#leaveUnder}). */

@@ -230,8 +230,8 @@ public final class Sheet {
      * Leaves the paper resting on {@code host} under the paper laid there from now on, where the
      * order allows, as a wrap does when the strip runs on into the next triangle of the host
      * ({@link #liftTail}): a later face goes over such paper it overlaps where later paper
-     * already lies over it, wherever the levels put it, unless the order already holds that
-     * paper above the face's hinge. By levels alone, a later face folded from a low layer went
+     * already lies over it or the face reaches across its crease, wherever the levels put it,
+     * unless the order already holds that paper above the face's hinge. By levels alone, a later face folded from a low layer went
      * under the earlier triangle's excess it overlapped while a pass of its own before it lay
      * over that excess, and the two chains of layers then met in a cycle that left the next fold
      * no valid place (the 9 × 5 torus: a gadget threaded under the earlier triangle's pass, and
