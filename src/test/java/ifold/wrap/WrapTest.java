@@ -185,10 +185,13 @@ public class WrapTest {
      * other. Seed 12 interleaved two such folds (taco-taco, 21 times) before the short turn
      * moved to the middle; seeds 2 and 31 put a turn between the two layers of a gadget's fold
      * (taco-tortilla) until a new face's side to a chain of fold layers was decided for the
-     * chain, with the sides its hinge forces and the layers it must go with.
+     * chain, with the sides its hinge forces and the layers it must go with. Seed 1 put a turn
+     * of a later triangle of a host between the layers of an earlier triangle's gadget whose
+     * crease it reached across (taco-tortilla, twice), until such a turn went over the earlier
+     * paper ({@code Sheet.leaveUnder}).
      */
     @ParameterizedTest
-    @ValueSource(longs = {2, 12, 31})
+    @ValueSource(longs = {1, 2, 12, 31})
     void wrapsTurnedBoxes(long seed) throws Exception {
         SplittableRandom random = new SplittableRandom(seed * 31 + 1);
         double[] side = {0.5 + 10 * random.nextDouble(), 0.5 + 3 * random.nextDouble(), 0.5 + 2 * random.nextDouble()};
@@ -221,7 +224,7 @@ public class WrapTest {
      * under the earlier triangle's excess that a pass of its own lay over, and the pass folded
      * from the gadget was caught between the layers of the turn it reached across
      * (taco-tortilla). A later face now goes over the earlier triangle's paper where later
-     * paper already lies over it ({@code Sheet.leaveUnder}).
+     * paper already lies over it, or where it reaches across its crease ({@code Sheet.leaveUnder}).
      */
     @Test
     void aCoarseTorusWrapsWithAValidLayerOrder() throws Exception {
