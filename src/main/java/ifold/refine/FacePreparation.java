@@ -47,14 +47,15 @@ import org.tinfour.standard.IncrementalTin;
  * across the edge gets the point too and is triangulated again, until no region has a point its
  * neighbour lacks.
  *
- * <p>First, each convex pentagon whose triangles fan three at one of its corners (cut into
- * triangles from that corner, as a file's pentagon is) is fanned from its centre instead
- * ({@code PlanarRegion.fanFromCentre}): the refinement cuts every triangle at a corner again, so
- * the shared dodecahedron's pentagons had six thin triangles at one corner, and the turn of each
- * into its last pass lay at that corner, two layers each where they met (17 layers at most, the
- * house 17); from the centre, two triangles at every corner (13, the house 14). A square cut in
- * two is left as it is (from its centre the cube had 14 layers rather than 13), and so is a
- * hexagon (see {@code PlanarRegion.FAN_CORNERS}).
+ * <p>First, each convex pentagon or hexagon whose triangles fan three or more at one of its
+ * corners (cut into triangles from that corner, as a file's polygon is) is fanned from its centre
+ * instead ({@code PlanarRegion.fanFromCentre}): the refinement cuts every triangle at a corner
+ * again, so the shared dodecahedron's pentagons had six thin triangles at one corner, and the
+ * turn of each into its last pass lay at that corner, two layers each where they met (17 layers
+ * at most, the house 17, the shared hex_prism's hexagons eight triangles and 21); from the
+ * centre, two triangles at every corner (13, the house 14, hex_prism 15). A square cut in two is
+ * left as it is (from its centre the cube had 14 layers rather than 13; see
+ * {@code PlanarRegion.FEWEST_FAN_CORNERS}).
  *
  * <p>The prepared mesh is built and validated like a model read from a file; anything that
  * would not come out as the same closed or open surface (a repair the builder had to make,

@@ -112,18 +112,28 @@ final class PlanarRegion {
     }
 
     /**
-     * The corners of a region fanned from its centre: a pentagon. The shared hex_prism's hexagons,
-     * fanned from their centre, had 15 layers at most rather than 21 (eight thin triangles at a
-     * corner before, each turning into its last pass there), but 4 pairs of paper crossing by
-     * their corners, a bend of tucked creases along the line from a corner to the centre 1 T
-     * into flat paper beside it (12 pairs, 1.8 T, with the centre moved off the middle); a square
-     * has no corner where three triangles fan.
+     * The fewest corners of a region fanned from its centre: a pentagon. A square has no corner
+     * where three triangles fan, and fanned from its centre took the cube from 13 layers to 14.
      */
-    static final int FAN_CORNERS = 5;
+    static final int FEWEST_FAN_CORNERS = 5;
+
+    /**
+     * The most corners of a region fanned from its centre: a hexagon. The shared hex_prism's
+     * hexagons, cut from one corner, had eight thin triangles there, each turning into its last
+     * pass at it (21 layers at most); fanned from their centre, 15 in every start and 27 % fewer
+     * faces. They crossed by their corners (4 pairs, 1 T: a bend on the line from a corner to the
+     * centre standing into flat paper tucked beside it, at a level between its layers) until
+     * earlier paper of a host was landed under the later paper where the order allows
+     * ({@code Landing}): in none of the six corners the fan may begin at, from none of the four
+     * starts, now. A lone hexagon and an irregular hexagonal prism still cross there (2 and 4
+     * pairs, 0.24 and 0.93 T: flat paper reaching the line at the corner itself, under a bend
+     * standing out from it; docs/wrap.md, Limits, Layers).
+     */
+    static final int MOST_FAN_CORNERS = 6;
 
     /**
      * Fans the region from its centre where its triangles fan three or more at one of its corners
-     * ({@link FacePreparation}): a convex pentagon, one loop with no point inside,
+     * ({@link FacePreparation}): a convex pentagon or hexagon, one loop with no point inside,
      * none of its corners sharper than the target, and no triangle of the fan either. Sets its
      * triangles (a corner key and the centre's each) and its one point inside; false, and nothing
      * set, where the region is not such a polygon or needs no fan.
@@ -201,7 +211,7 @@ final class PlanarRegion {
             made[3 * i + 1] = FacePreparation.Run.cornerKey(b);
             made[3 * i + 2] = FacePreparation.Run.insideKey(0);
         }
-        if (corners != FAN_CORNERS) {
+        if (corners < FEWEST_FAN_CORNERS || corners > MOST_FAN_CORNERS) {
             return false;
         }
         triangles = made;

@@ -97,15 +97,20 @@ class FacePreparationTest {
     }
 
     @Test
-    void squaresAndHexagonsAreNotFanned() throws Exception {
+    void squaresAreNotFanned() throws Exception {
         HalfedgeMesh cube = build(Solids.cube());
         FacePreparation.Result result = FacePreparation.prepare(cube);
         assertEquals(0, result.centredRegions());
         assertSame(cube, result.centred());
+    }
+
+    @Test
+    void hexagonsAreFannedFromTheirCentre() throws Exception {
         HalfedgeMesh hexagonal = prism(6);
-        FacePreparation.Result hexagons = FacePreparation.prepare(hexagonal);
-        assertEquals(0, hexagons.centredRegions(), "hexagons fanned so crossed paper by their corners");
-        assertSame(hexagonal, hexagons.mesh());
+        FacePreparation.Result result = FacePreparation.prepare(hexagonal);
+        assertEquals(2, result.centredRegions());
+        assertEquals(hexagonal.faceCount() + 2 * 2, result.trianglesAfter(), "each hexagon 6 triangles rather than 4");
+        SameSurface.assertSameSurface(hexagonal, result.mesh());
     }
 
     @Test
