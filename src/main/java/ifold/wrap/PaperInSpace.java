@@ -318,6 +318,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             FacingBends.keepApart(bends, outs, sheet.thickness() * NEST_TOLERANCE);
             nested.keepNested(outs);
             double[] past = nested.mitres(outs, CoplanarHosts.of(frames, sheet.tolerance()));
+            stopRowsOnPaper(bends, outs, past);
 
             for (int k = 0; k < bends.size(); k++) {
                 int[] c = bendCorners[k];
@@ -410,6 +411,30 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             Creep creep = creptCount == 0 ? Creep.NONE
                     : new Creep(java.util.Arrays.copyOf(creptVertices, creptCount), java.util.Arrays.copyOf(creptFrom, 3 * creptCount));
             return new Built(xyz, uv, paper, hosts, caps, capAfter.toArray(), creep, pieceStart);
+        }
+
+        /**
+         * Stops the rows of bends standing out where flat paper between their layers leaves their
+         * crease's end at an angle ({@link RowsOnPaper}): every face's corners are offered.
+         */
+        private void stopRowsOnPaper(List<NestedBends.Bend> bends, double[] outs, double[] past) {
+            RowsOnPaper rows = new RowsOnPaper(bends, outs, past, sheet.thickness() * NEST_TOLERANCE);
+            if (!rows.any()) {
+                return;
+            }
+            for (int f = 0; f < sheet.faceCount(); f++) {
+                Isometry2 pose = sheet.pose(f);
+                int n = sheet.loopLength(f);
+                int host = sheet.host(f);
+                for (int i = 0; i < n; i++) {
+                    int v = sheet.loopVertex(f, i);
+                    int p = sheet.loopVertex(f, (i + n - 1) % n);
+                    int q = sheet.loopVertex(f, (i + 1) % n);
+                    rows.corner(host, levels[f], pose.x(sheet.u(v), sheet.v(v)), pose.y(sheet.u(v), sheet.v(v)),
+                            pose.x(sheet.u(p), sheet.v(p)), pose.y(sheet.u(p), sheet.v(p)),
+                            pose.x(sheet.u(q), sheet.v(q)), pose.y(sheet.u(q), sheet.v(q)));
+                }
+            }
         }
 
         /** Whether faces f and g, joined on the sheet, are folded flat onto each other: one host, two levels. */
