@@ -338,12 +338,12 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     continue;
                 }
                 if (fChain.length == 1 && gChain.length == 1) {
-                    wholeBend(k, c, bend, out, slopes[k], past, after, caps, capAfter);
+                    wholeBend(k, c, bend, out, out == 0 ? apexHeight(bends, backToBack, k) : 0, slopes[k], past, after, caps, capAfter);
                     continue;
                 }
                 // Where its faces are placed in pieces, the bend goes from piece to piece as they meet the crease.
                 boolean backs = out == 0;
-                double middle = (height(f) + height(g)) / 2;
+                double middle = backs ? apexHeight(bends, backToBack, k) : (height(f) + height(g)) / 2;
                 boolean fLower = height(f) < height(g);
                 double lower = Math.min(height(f), height(g)) + (backs ? 0 : out / slopes[k]);
                 double upper = Math.max(height(f), height(g)) - out;
@@ -435,6 +435,26 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                             pose.x(sheet.u(q), sheet.v(q)), pose.y(sheet.u(q), sheet.v(q)));
                 }
             }
+        }
+
+        /**
+         * How high bend k's apex stands where it stands back from its crease, back to back with
+         * another ({@link ConcaveWalls#standsBack}): halfway up the levels the two share, so that
+         * the two bends meet on one segment of the crease, as their standing back half a thickness
+         * each assumes. Halfway between its own layers, two such bends of different levels (15
+         * and 16 against 15 and 17, by a top corner of a hexagonal prism 4 high whose hexagons are
+         * fanned from their centre) met the crease at heights half a thickness apart: nowhere
+         * did the two meet, and the truths (which let a fold's corners stand back where two
+         * bends meet on one segment) found three faces there shortened, by up to a thickness.
+         */
+        private double apexHeight(List<NestedBends.Bend> bends, int[] backToBack, int k) {
+            NestedBends.Bend bend = bends.get(k);
+            NestedBends.Bend other = bends.get(backToBack[k]);
+            int low = Math.max(bend.low(), other.low());
+            int high = Math.min(bend.high(), other.high());
+            // As height() places the two levels, so that two bends of the same levels (a hinge strip's
+            // turns) have their apexes where each had them.
+            return ((low + 0.5) * sheet.thickness() + (high + 0.5) * sheet.thickness()) / 2;
         }
 
         /** Whether faces f and g, joined on the sheet, are folded flat onto each other: one host, two levels. */
@@ -1665,12 +1685,11 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          * bend reaches the crease halfway up, where the other's meets it; else out beyond the
          * crease from each layer, and straight across between.
          */
-        private void wholeBend(int k, int[] c, NestedBends.Bend bend, double out, double slope, double[] past, int after, List<int[]> caps,
-                IntList capAfter) {
+        private void wholeBend(int k, int[] c, NestedBends.Bend bend, double out, double middle, double slope, double[] past, int after,
+                List<int[]> caps, IntList capAfter) {
             int f = c[0];
             int g = c[1];
             if (out == 0) {
-                double middle = (height(f) + height(g)) / 2;
                 int apexA = apex(f, c[2], middle);
                 int apexB = apex(f, c[3], middle);
                 caps.add(new int[] {c[4], c[5], apexB, apexA});
