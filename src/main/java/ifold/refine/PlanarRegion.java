@@ -125,9 +125,10 @@ final class PlanarRegion {
      * centre standing into flat paper tucked beside it, at a level between its layers) until
      * earlier paper of a host was landed under the later paper where the order allows
      * ({@code Landing}): in none of the six corners the fan may begin at, from none of the four
-     * starts, now. A lone hexagon and an irregular hexagonal prism still cross there (2 and 4
+     * starts, now. A lone hexagon and an irregular hexagonal prism crossed there too (2 and 4
      * pairs, 0.24 and 0.93 T: flat paper reaching the line at the corner itself, under a bend
-     * standing out from it; docs/wrap.md, Limits, Layers).
+     * standing out from it) until such a bend's row stopped on that paper
+     * ({@code ifold.wrap.RowsOnPaper}; docs/wrap.md, Faces prepared where they help).
      */
     static final int MOST_FAN_CORNERS = 6;
 
