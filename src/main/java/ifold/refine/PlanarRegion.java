@@ -122,12 +122,9 @@ final class PlanarRegion {
      * hexagons, cut from one corner, had eight thin triangles there, each turning into its last
      * pass at it (21 layers at most); fanned from their centre, 15 in every start and 27 % fewer
      * faces. They crossed by their corners (4 pairs, 1 T: a bend on the line from a corner to the
-     * centre standing into flat paper tucked beside it, at a level between its layers) until
-     * earlier paper of a host was landed under the later paper where the order allows
-     * ({@code Landing}): in none of the six corners the fan may begin at, from none of the four
-     * starts, now. A lone hexagon and an irregular hexagonal prism crossed there too (2 and 4
-     * pairs, 0.24 and 0.93 T: flat paper reaching the line at the corner itself, under a bend
-     * standing out from it) until such a bend's row stopped on that paper
+     * centre standing out into flat paper tucked between its layers, which leaves the corner 30
+     * degrees off that line), and so did a lone hexagon and an irregular hexagonal prism (2 and
+     * 4 pairs, 0.24 and 0.93 T), until such a bend's row stopped on that paper
      * ({@code ifold.wrap.RowsOnPaper}; docs/wrap.md, Faces prepared where they help).
      */
     static final int MOST_FAN_CORNERS = 6;

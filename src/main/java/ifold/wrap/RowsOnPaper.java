@@ -13,7 +13,7 @@ import java.util.List;
  * bend stands out into, met the bend's row out there: on a lone hexagon fanned from its centre a
  * bend of rank 2 on the line from a corner to the centre stood out 0.41 T, and a face tucked
  * between its layers left the same corner 30 degrees off that line (2 crossing pairs, 0.24 T;
- * an irregular hexagonal prism 4, 0.93 T). Halving the distance to that paper, as
+ * an irregular hexagonal prism 4, 0.93 T; the shared hex_prism 4, 1.00 T). Halving the distance to that paper, as
  * {@link FacingBends} does for a fold's crease, gives nothing: the paper reaches the crease at
  * its end. The row stops on the face's side instead, as it stops on another crease's wall at a
  * corner ({@link NestedBends#mitres}): the bend's end is cut along that side, and the bend keeps

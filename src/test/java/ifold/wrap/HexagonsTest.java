@@ -23,7 +23,8 @@ import org.junit.jupiter.params.provider.ValueSource;
  * {@code ifold wrap} wraps them (prepared, the best of its starts): the shared hex_prism had eight
  * thin triangles at the corner its hexagons' four triangles fan from, and 21 layers there. Fanned,
  * the bends on the line from a corner to the centre stood out into paper tucked between their
- * layers that left the corner at an angle (a lone hexagon 2 crossing pairs, an irregular prism 4),
+ * layers that left the corner at an angle (hex_prism 4 crossing pairs, a lone hexagon 2, an
+ * irregular prism 4),
  * until their rows stopped on that paper ({@link RowsOnPaper}); and two folds back to back on such
  * a line by a top corner of a prism 4 high met the crease at two heights, their corners standing
  * back where the truths saw no two folds meeting (until {@code PaperInSpace}'s apexes met).
