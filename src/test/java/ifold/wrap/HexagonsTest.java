@@ -24,10 +24,10 @@ import org.junit.jupiter.params.provider.ValueSource;
  * thin triangles at the corner its hexagons' four triangles fan from, and 21 layers there. Fanned,
  * the bends on the line from a corner to the centre stood out into paper tucked between their
  * layers that left the corner at an angle (hex_prism 4 crossing pairs, a lone hexagon 2, an
- * irregular prism 4),
- * until their rows stopped on that paper ({@link RowsOnPaper}); and two folds back to back on such
- * a line by a top corner of a prism 4 high met the crease at two heights, their corners standing
- * back where the truths saw no two folds meeting (until {@code PaperInSpace}'s apexes met).
+ * irregular prism 4), until their rows stopped on that paper ({@link RowsOnPaper}); and two
+ * folds back to back on such a line by a top corner of a prism 4 high met the crease at two
+ * heights, their corners standing back where the truths saw no two folds meeting (until
+ * {@code PaperInSpace}'s apexes met).
  */
 class HexagonsTest {
     @TempDir
