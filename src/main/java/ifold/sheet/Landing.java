@@ -129,7 +129,7 @@ final class Landing {
         for (int k = 0; k < loop.length; k++) {
             int a = loop[k];
             int b = loop[(k + 1) % loop.length];
-            if (sheet.crease(a, b) != null && overOf.containsKey(sheet.faceOfEdge.get(Sheet.directed(b, a), -1))
+            if (sheet.crease(a, b) != null && overOf.containsKey(sheet.faceOfEdge.get(b, a, -1))
                     && crosses(placedF, pose.x(sheet.u(a), sheet.v(a)), pose.y(sheet.u(a), sheet.v(a)),
                             pose.x(sheet.u(b), sheet.v(b)), pose.y(sheet.u(b), sheet.v(b)))) {
                 return true;
@@ -184,7 +184,7 @@ final class Landing {
                 if (sheet.crease(a, b) == null) {
                     continue;
                 }
-                int d = sheet.faceOfEdge.get(Sheet.directed(b, a), -1);
+                int d = sheet.faceOfEdge.get(b, a, -1);
                 if (d < g || !overOf.containsKey(d)) {
                     continue; // each crease once, from its face of the smaller number
                 }

@@ -4,9 +4,10 @@ import java.util.Arrays;
 
 /**
  * A hash map from non-negative {@code long} keys to {@code int} values, open addressing with
- * linear probing: the sheet keys its edges by two vertex indices in one long, and a wrap makes
+ * linear probing: the sheet keys its creases by two vertex indices in one long, and a wrap makes
  * millions of them, which boxed keys and values would make several times bigger and slower
- * (the wrap's geometry keys the ends of its folds' creases by their cells too).
+ * (the wrap's geometry keys the ends of its folds' creases by their cells too; the sheet's faces
+ * by their edges are kept by vertex, {@link EdgeFaces}).
  * Removal shifts the following entries back, so probes never meet tombstones.
  */
 public final class LongIntMap {

@@ -77,8 +77,8 @@ public final class Sheet {
     /** The kind of the tail's last crease, which the next face laid from the tail comes after; null before any. */
     Crease lastTailCrease;
     final List<Isometry2> poseOf = new ArrayList<>();
-    /** The face to the left of each directed paper edge a → b, keyed a << 32 | b. */
-    final LongIntMap faceOfEdge = new LongIntMap();
+    /** The face to the left of each directed paper edge a → b. */
+    final EdgeFaces faceOfEdge = new EdgeFaces();
     /**
      * The creases, keyed by their lower vertex << 32 | the higher: each its kind and the fold
      * that made it, as kind + {@link #CREASES}.length × fold (see {@link #creaseFold}).
@@ -381,12 +381,12 @@ public final class Sheet {
     int tailHinge(int[] loop) {
         if (tailLifted) {
             tailLifted = false;
-            int before = faceOfEdge.get(directed(loop[0], loop[loop.length - 1]), -1);
+            int before = faceOfEdge.get(loop[0], loop[loop.length - 1], -1);
             liftedFrom = before >= 0 && hostOf[before] == tailHost ? before : -1;
             return -1;
         }
         liftedFrom = -1;
-        int before = faceOfEdge.get(directed(loop[0], loop[loop.length - 1]), -1);
+        int before = faceOfEdge.get(loop[0], loop[loop.length - 1], -1);
         return before >= 0 && hostOf[before] == tailHost ? before : -1;
     }
 
@@ -401,14 +401,14 @@ public final class Sheet {
     void register(int f) {
         int[] loop = loops.get(f);
         for (int i = 0; i < loop.length; i++) {
-            faceOfEdge.put(directed(loop[i], loop[(i + 1) % loop.length]), f);
+            faceOfEdge.put(loop[i], loop[(i + 1) % loop.length], f);
         }
     }
 
     void unregister(int f) {
         int[] loop = loops.get(f);
         for (int i = 0; i < loop.length; i++) {
-            faceOfEdge.remove(directed(loop[i], loop[(i + 1) % loop.length]), -1);
+            faceOfEdge.remove(loop[i], loop[(i + 1) % loop.length], -1);
         }
     }
 
@@ -703,7 +703,7 @@ public final class Sheet {
 
     /** The face on the other side of paper edge a → b of a face, or -1 at the strip's border. */
     public int faceAcross(int a, int b) {
-        return faceOfEdge.get(directed(b, a), -1);
+        return faceOfEdge.get(b, a, -1);
     }
 
     /** The crease along paper edge (a, b), or null where the paper is flat or the edge is the border. */

@@ -198,7 +198,7 @@ public final class SheetEdit {
             for (int i = 0; i < loop.length; i++) {
                 int a = loop[i];
                 int b = loop[(i + 1) % loop.length];
-                int across = sheet.faceOfEdge.get(Sheet.directed(b, a), -1);
+                int across = sheet.faceOfEdge.get(b, a, -1);
                 if (across >= 0 && !moving.contains(across) && sheet.creases.get(Sheet.undirected(a, b), -1) < 0) {
                     sheet.creases.put(Sheet.undirected(a, b), value);
                 }
@@ -436,7 +436,7 @@ public final class SheetEdit {
 
     /** Gives the face across edge a → b (the one holding b → a) the vertex m between b and a. */
     private void insertAcross(int a, int b, int m, SheetEdit edit) {
-        int g = sheet.faceOfEdge.get(Sheet.directed(b, a), -1);
+        int g = sheet.faceOfEdge.get(b, a, -1);
         if (g < 0) {
             return; // the strip's own border
         }
@@ -450,9 +450,9 @@ public final class SheetEdit {
                 longer[k++] = m;
             }
         }
-        sheet.faceOfEdge.remove(Sheet.directed(b, a), -1);
-        sheet.faceOfEdge.put(Sheet.directed(b, m), g);
-        sheet.faceOfEdge.put(Sheet.directed(m, a), g);
+        sheet.faceOfEdge.remove(b, a, -1);
+        sheet.faceOfEdge.put(b, m, g);
+        sheet.faceOfEdge.put(m, a, g);
         sheet.loops.set(g, longer);
         sheet.placedFaces.forget(g);
         int crease = sheet.creases.remove(Sheet.undirected(a, b), -1);

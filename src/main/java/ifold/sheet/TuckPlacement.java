@@ -51,7 +51,7 @@ final class TuckPlacement {
             for (int i = 0; i < loop.length; i++) {
                 int a = loop[i];
                 int b = loop[(i + 1) % loop.length];
-                int across = sheet.faceOfEdge.get(Sheet.directed(b, a), -1);
+                int across = sheet.faceOfEdge.get(b, a, -1);
                 if (across < 0 || moving.contains(across)) {
                     continue;
                 }
@@ -124,7 +124,7 @@ final class TuckPlacement {
             while (!open.isEmpty()) {
                 int[] loop = sheet.loops.get(open.poll());
                 for (int k = 0; k < loop.length; k++) {
-                    int across = sheet.faceOfEdge.get(Sheet.directed(loop[(k + 1) % loop.length], loop[k]), -1);
+                    int across = sheet.faceOfEdge.get(loop[(k + 1) % loop.length], loop[k], -1);
                     if (across >= 0 && faces.contains(across) && !pieceOf.containsKey(across)) {
                         pieceOf.put(across, pieces);
                         open.add(across);
@@ -151,7 +151,7 @@ final class TuckPlacement {
                 if (!moves && !(onLine(sheet, pose, a, nx, ny, c) && onLine(sheet, pose, b, nx, ny, c))) {
                     continue;
                 }
-                int across = sheet.faceOfEdge.get(Sheet.directed(b, a), -1);
+                int across = sheet.faceOfEdge.get(b, a, -1);
                 if (across < 0) {
                     continue;
                 }
@@ -328,7 +328,7 @@ final class TuckPlacement {
             int g = open.poll();
             int[] loop = sheet.loops.get(g);
             for (int k = 0; k < loop.length; k++) {
-                int across = sheet.faceOfEdge.get(Sheet.directed(loop[(k + 1) % loop.length], loop[k]), -1);
+                int across = sheet.faceOfEdge.get(loop[(k + 1) % loop.length], loop[k], -1);
                 if (across < 0 || sheet.hostOf[across] != sheet.hostOf[g] || faces.contains(across) || under.contains(across)
                         || place.hinges().contains(across) || levelBefore[across] >= lowestHinge) {
                     continue;
