@@ -415,6 +415,8 @@ public final class Sheet {
     /** Per-face marks for one pass over a stack, told apart by {@link #nextMark()} rather than cleared. */
     int[] mark = new int[16];
     int[] cutMark = new int[16];
+    /** Per-face marks of the faces leaving a stack ({@link Stack#remove}), by a stamp of {@link #nextMark()}. */
+    int[] goneMark = new int[16];
     int markCount;
     /** Scratch: each face's place in the stack whose levels are being found. */
     int[] placeInStack = new int[16];
@@ -462,6 +464,7 @@ public final class Sheet {
         if (mark.length < loops.size()) {
             mark = Arrays.copyOf(mark, Math.max(loops.size(), 2 * mark.length));
             cutMark = Arrays.copyOf(cutMark, mark.length);
+            goneMark = Arrays.copyOf(goneMark, mark.length);
         }
         return ++markCount;
     }

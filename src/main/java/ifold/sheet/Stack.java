@@ -45,9 +45,16 @@ final class Stack {
     }
 
     void remove(Set<Integer> gone) {
+        // Marked by face, not looked up in the set: a tuck's flap leaves a stack of thousands,
+        // and a boxed lookup for each of them was a fiftieth of the icosphere's folding.
+        int stamp = sheet.nextMark();
+        int[] goneMark = sheet.goneMark;
+        for (int f : gone) {
+            goneMark[f] = stamp;
+        }
         int n = 0;
         for (int i = 0; i < count; i++) {
-            if (!gone.contains(faces[i])) {
+            if (goneMark[faces[i]] != stamp) {
                 sheet.slotOf[faces[i]] = n;
                 faces[n++] = faces[i];
             }
@@ -125,8 +132,16 @@ final class Stack {
      * (the 5,000-triangle torus: 0.84 of 16 GB).
      */
     static final class Related {
-        /** Each face's place in the stack when these were found, and where its run of others starts. */
-        private final LongIntMap slots;
+        /**
+         * The stack's faces by place when these were found, and where each one's run of others
+         * starts. A face's place is looked up in the sheet and checked against them, and only
+         * where it has moved since (a tuck's flap left the stack, and the tuck reads these then)
+         * in a map of them all, made then: made at every tuck and landing, that map was a
+         * fiftieth of the 5,120-triangle icosphere's folding.
+         */
+        private final int[] faces;
+        private final Sheet sheet;
+        private LongIntMap slots;
         private final int[] start;
         private final int[] others;
 
@@ -134,7 +149,8 @@ final class Stack {
         static final Related NONE = new Related();
 
         private Related() {
-            slots = new LongIntMap();
+            faces = new int[0];
+            sheet = null;
             start = new int[1];
             others = new int[0];
         }
@@ -145,10 +161,8 @@ final class Stack {
             // places change once a tuck's flap has left the stack (and the tuck reads these then).
             int n = stack.count;
             int[] slotOf = stack.sheet.slotOf;
-            slots = new LongIntMap();
-            for (int i = 0; i < n; i++) {
-                slots.put(stack.faces[i], i);
-            }
+            this.faces = Arrays.copyOf(stack.faces, n);
+            this.sheet = stack.sheet;
             int relations = stack.above.size();
             start = new int[n + 1];
             for (int r = 0; r < relations; r++) {
@@ -172,7 +186,7 @@ final class Stack {
 
         /** The faces directly below (or above) face f: none where f has no relation this way. */
         List<Integer> of(int f) {
-            int slot = slots.get(f, -1);
+            int slot = slot(f);
             if (slot < 0) {
                 return List.of();
             }
@@ -189,6 +203,25 @@ final class Stack {
                     return to - from;
                 }
             };
+        }
+
+        /** Face f's place in the stack when these were found, or -1 where it was not in it. */
+        private int slot(int f) {
+            if (faces.length == 0) {
+                return -1;
+            }
+            // Any place holding f among these faces is its place then: each is in it once.
+            int now = f < sheet.slotOf.length ? sheet.slotOf[f] : -1;
+            if (now >= 0 && now < faces.length && faces[now] == f) {
+                return now;
+            }
+            if (slots == null) {
+                slots = new LongIntMap();
+                for (int i = 0; i < faces.length; i++) {
+                    slots.put(faces[i], i);
+                }
+            }
+            return slots.get(f, -1);
         }
     }
 
