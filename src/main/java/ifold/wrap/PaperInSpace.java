@@ -428,10 +428,16 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 int host = sheet.host(f);
                 for (int i = 0; i < n; i++) {
                     int v = sheet.loopVertex(f, i);
+                    double x = pose.x(sheet.u(v), sheet.v(v));
+                    double y = pose.y(sheet.u(v), sheet.v(v));
+                    // Most corners have no bend's end standing out at them: their sides are
+                    // placed only where one has (every corner's were a sixth of the placing).
+                    if (!rows.near(host, levels[f], x, y)) {
+                        continue;
+                    }
                     int p = sheet.loopVertex(f, (i + n - 1) % n);
                     int q = sheet.loopVertex(f, (i + 1) % n);
-                    rows.corner(host, levels[f], pose.x(sheet.u(v), sheet.v(v)), pose.y(sheet.u(v), sheet.v(v)),
-                            pose.x(sheet.u(p), sheet.v(p)), pose.y(sheet.u(p), sheet.v(p)),
+                    rows.corner(host, levels[f], x, y, pose.x(sheet.u(p), sheet.v(p)), pose.y(sheet.u(p), sheet.v(p)),
                             pose.x(sheet.u(q), sheet.v(q)), pose.y(sheet.u(q), sheet.v(q)));
                 }
             }

@@ -30,7 +30,11 @@ final class RowsOnPaper {
     private final double[] out;
     private final double[] past;
     private final double tolerance;
-    /** The ends of bends standing out, by cell a tolerance across: each cell's last end, and each end the one before. */
+    /**
+     * The ends of bends standing out, by cell twice the tolerance across (a point's ends within
+     * the tolerance then lie in the four cells about it): each cell's last end, and each end the
+     * one before.
+     */
     private final LongIntMap heads = new LongIntMap();
     private final int[] before;
     private final boolean any;
@@ -52,7 +56,7 @@ final class RowsOnPaper {
         boolean standing = false;
         for (int e = 0; e < 2 * bends.size(); e++) {
             if (out[e / 2] > 0 && tolerance > 0) {
-                long key = cell(bends.get(e / 2).host(), Math.floor(x(e) / tolerance), Math.floor(y(e) / tolerance));
+                long key = cell(bends.get(e / 2).host(), Math.floor(x(e) / (2 * tolerance)), Math.floor(y(e) / (2 * tolerance)));
                 before[e] = heads.get(key, -1);
                 heads.put(key, e);
                 standing = true;
@@ -77,19 +81,41 @@ final class RowsOnPaper {
         if (!any) {
             return;
         }
-        long cx = (long) Math.floor(x / tolerance);
-        long cy = (long) Math.floor(y / tolerance);
-        for (long i = cx - 1; i <= cx + 1; i++) {
-            for (long j = cy - 1; j <= cy + 1; j++) {
+        long cx = (long) Math.floor((x - tolerance) / (2 * tolerance));
+        long cy = (long) Math.floor((y - tolerance) / (2 * tolerance));
+        for (long i = cx; i <= cx + 1; i++) {
+            for (long j = cy; j <= cy + 1; j++) {
                 for (int e = heads.get(cell(host, i, j), -1); e >= 0; e = before[e]) {
-                    NestedBends.Bend bend = bends.get(e / 2);
-                    if (bend.host() == host && bend.low() < level && level < bend.high()
-                            && Math.hypot(x(e) - x, y(e) - y) <= tolerance) {
+                    if (meets(e, host, level, x, y)) {
                         stop(e, x, y, px, py, qx, qy);
                     }
                 }
             }
         }
+    }
+
+    /** Whether a bend's end standing out lies at (x, y) on {@code host}, with paper at {@code level} between its layers. */
+    boolean near(int host, int level, double x, double y) {
+        if (!any) {
+            return false;
+        }
+        long cx = (long) Math.floor((x - tolerance) / (2 * tolerance));
+        long cy = (long) Math.floor((y - tolerance) / (2 * tolerance));
+        for (long i = cx; i <= cx + 1; i++) {
+            for (long j = cy; j <= cy + 1; j++) {
+                for (int e = heads.get(cell(host, i, j), -1); e >= 0; e = before[e]) {
+                    if (meets(e, host, level, x, y)) {
+                        return true;
+                    }
+                }
+            }
+        }
+        return false;
+    }
+
+    private boolean meets(int e, int host, int level, double x, double y) {
+        NestedBends.Bend bend = bends.get(e / 2);
+        return bend.host() == host && bend.low() < level && level < bend.high() && Math.hypot(x(e) - x, y(e) - y) <= tolerance;
     }
 
     /** Stops end e's row on the nearer side of the face at corner (x, y) where it leaves into the bend's band. */
