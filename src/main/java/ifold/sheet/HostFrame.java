@@ -78,6 +78,13 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
     /** The most a bend leans out beyond a crease: at 45 degrees, as far out as it rises. */
     public static final double OPEN = 1;
 
+    /**
+     * The largest mitre (tan of the half turn) that marks a cut between coplanar hosts, not a
+     * turn: the paper keeps from no mitre this small ({@link #mitred}), only the walls of folds
+     * tucked along the cut stand back from it ({@code ConcaveWalls}).
+     */
+    public static final double CUT_TAN = 1e-6;
+
     /** A frame whose edges limit no bend. */
     public HostFrame(double[] origin, double[] ex, double[] ey, double[] normal, double[] corners) {
         this(origin, ex, ey, normal, corners, null, null, null);
@@ -182,7 +189,7 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
             boolean again = false;
             for (int k = 0; k < n; k++) {
                 double tan = mitreAt(k, own ? out[0] : bx, own ? out[1] : by);
-                if (tan > 0 && keepFrom(k, height * tan, out)) {
+                if (tan > CUT_TAN && keepFrom(k, height * tan, out)) {
                     again = moved = true;
                 }
             }
@@ -195,7 +202,7 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
             for (int j = k + 1; j < n; j++) {
                 double tk = mitreAt(k, own ? out[0] : bx, own ? out[1] : by);
                 double tj = mitreAt(j, own ? out[0] : bx, own ? out[1] : by);
-                if (tk > 0 && tj > 0 && (inside(k, out) < height * tk * (1 - 1e-9) || inside(j, out) < height * tj * (1 - 1e-9))) {
+                if (tk > CUT_TAN && tj > CUT_TAN && (inside(k, out) < height * tk * (1 - 1e-9) || inside(j, out) < height * tj * (1 - 1e-9))) {
                     meet(k, height * tk, j, height * tj, out);
                 }
             }

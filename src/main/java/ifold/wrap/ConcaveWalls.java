@@ -27,6 +27,12 @@ import java.util.Map;
  * another height goes on to its own mitre. The creases step back into the host (the creep of
  * thick paper); what the paper loses by it, at most the stack's height over tan(φ/2) plus the
  * ranks, is the price of thickness at a concave edge.
+ *
+ * <p>A cut between two convex hosts of one plane is taken as a concave edge of no mitre
+ * ({@code BendRoom.CUT_MITRE}): across it lies the other host's paper at the same heights, no room
+ * to stand out into, so folds nested along it stand back into their own host, a thickness a rank,
+ * and no longer stand one inside another on the cut's line, overlapping in its plane. A fold that
+ * runs on beyond the cut along a convex stretch of the same side stands out as before.
  */
 final class ConcaveWalls {
     /**
@@ -288,18 +294,32 @@ final class ConcaveWalls {
         if (!(thickness > 0)) {
             return; // paper of no thickness stands nowhere but on its creases
         }
-        for (Wall wall : wallsNear(host, level)) {
-            if (level < wall.low() - Tolerance.RELATIVE_EQUALITY || level > wall.high() + Tolerance.RELATIVE_EQUALITY) {
-                continue;
+        // Where two cuts' walls meet at a corner, a move off one may bring the point nearer the other: again, as the mitres do.
+        for (int round = 0; round < 4; round++) {
+            boolean cutMoved = false;
+            for (Wall wall : wallsNear(host, level)) {
+                if (level < wall.low() - Tolerance.RELATIVE_EQUALITY || level > wall.high() + Tolerance.RELATIVE_EQUALITY) {
+                    continue;
+                }
+                double[] edge = wall.line();
+                double wx = own ? out[0] : bx;
+                double wy = own ? out[1] : by;
+                if (own && !Double.isNaN(cx) && frame.mitreAt(wall.edge(), wx, wy) <= HostFrame.CUT_TAN) {
+                    // Along a cut: a face beyond the end of the cut that only touches it with a corner is not beside it.
+                    wx += 1e-3 * (cx - wx);
+                    wy += 1e-3 * (cy - wy);
+                }
+                double s = ((wx - edge[0]) * edge[2] + (wy - edge[1]) * edge[3]) / edge[4];
+                // Beside the wall, and beside a concave stretch of the edge: a fold along the whole of
+                // a host's edge that is concave in part stands back only where the edge is concave.
+                if (s >= wall.from() - tolerance && s <= wall.to() + tolerance && frame.mitreAt(wall.edge(), wx, wy) > 0) {
+                    if (frame.keepFrom(wall.edge(), wall.in(), out) && frame.mitreAt(wall.edge(), wx, wy) <= HostFrame.CUT_TAN) {
+                        cutMoved = true;
+                    }
+                }
             }
-            double[] edge = wall.line();
-            double wx = own ? out[0] : bx;
-            double wy = own ? out[1] : by;
-            double s = ((wx - edge[0]) * edge[2] + (wy - edge[1]) * edge[3]) / edge[4];
-            // Beside the wall, and beside a concave stretch of the edge: a fold along the whole of
-            // a host's edge that is concave in part stands back only where the edge is concave.
-            if (s >= wall.from() - tolerance && s <= wall.to() + tolerance && frame.mitreAt(wall.edge(), wx, wy) > 0) {
-                frame.keepFrom(wall.edge(), wall.in(), out);
+            if (!cutMoved) {
+                break;
             }
         }
         if (backs != null) {
@@ -429,10 +449,27 @@ final class ConcaveWalls {
             double sa = ((bend.ax() - edge[0]) * edge[2] + (bend.ay() - edge[1]) * edge[3]) / edge[4];
             double sb = ((bend.bx() - edge[0]) * edge[2] + (bend.by() - edge[1]) * edge[3]) / edge[4];
             if (Math.min(edge[4], Math.max(sa, sb)) - Math.max(0, Math.min(sa, sb)) > tolerance) {
+                if (frame.mitreAlong(k, bend.ax(), bend.ay(), bend.bx(), bend.by(), tolerance) <= HostFrame.CUT_TAN
+                        && !withinStretches(frame.mitre()[k], Math.min(sa, sb), Math.max(sa, sb), tolerance)) {
+                    continue; // along a cut in part only: where it runs on beyond the cut, there is room
+                }
                 return k;
             }
         }
         return -1;
+    }
+
+    /** Whether from..to along an edge lies within its stretches (from, to, tan each), to the tolerance. */
+    private static boolean withinStretches(double[] stretches, double from, double to, double tolerance) {
+        double at = from;
+        for (int round = 0; round < stretches.length / 3 && at < to - tolerance; round++) {
+            for (int i = 0; i + 2 < stretches.length; i += 3) {
+                if (stretches[i] <= at + tolerance && stretches[i + 1] > at) {
+                    at = stretches[i + 1];
+                }
+            }
+        }
+        return at >= to - tolerance;
     }
 
     private static long key(int host, int edge) {

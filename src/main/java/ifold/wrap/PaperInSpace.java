@@ -800,7 +800,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 }
                 double near = ifold.geom.Tolerance.ON_PLANE * edge[4];
                 for (int i = 0; i + 2 < stretches.length; i += 3) {
-                    if (stretches[i + 2] > 0) {
+                    if (stretches[i + 2] > HostFrame.CUT_TAN) {
                         // A stretch that runs to an end of the edge holds paper beyond it too (HostFrame.mitreAt).
                         regions.add(edgeRegion(edge, height * stretches[i + 2], stretches[i] <= near ? Double.NEGATIVE_INFINITY : stretches[i],
                                 stretches[i + 1] >= edge[4] - near ? Double.POSITIVE_INFINITY : stretches[i + 1]));
@@ -1580,8 +1580,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             double x = frame.localX(point);
             double y = frame.localY(point);
             double tan = frame.mitreAt(k, x, y);
-            if (!(tan > 0)) {
-                return false;
+            if (!(tan > HostFrame.CUT_TAN)) {
+                return false; // no mitre, or a cut's (its wall on the cut's own line is no mitre)
             }
             double[] edge = frame.edge(k);
             double in = ((x - edge[0]) * -edge[3] + (y - edge[1]) * edge[2]) / edge[4];

@@ -65,6 +65,95 @@ final class TruthIsometry {
     }
 
     /**
+     * Both sides of every cut the wrap may make: each edge between two coplanar triangles of a
+     * plane region that is not convex (or has a hole), as a side of no mitre. The wrap cuts such
+     * a region into convex hosts along edges of its triangles, and folds tucked along a cut stand
+     * back from it into their host, a thickness a rank, as at a concave edge: across the cut lies
+     * the neighbour host's paper at the same heights, no room to stand out into. Which of the
+     * region's inner edges it cuts along is the wrap's choice; the model tells only that each
+     * may be one. A convex region is one host, and its inner edges no cuts.
+     */
+    static List<ConcaveSide> cutSides(TruthModel model, double eps) {
+        int n = model.corners.length / 9;
+        int[] region = new int[n];
+        for (int t = 0; t < n; t++) {
+            region[t] = t;
+        }
+        Map<String, int[]> sides = new HashMap<>();
+        List<int[]> inner = new ArrayList<>();
+        List<int[]> borders = new ArrayList<>();
+        for (int t = 0; t < n; t++) {
+            for (int k = 0; k < 3; k++) {
+                String ab = Arrays.toString(corner(model, t, k)) + Arrays.toString(corner(model, t, (k + 1) % 3));
+                String ba = Arrays.toString(corner(model, t, (k + 1) % 3)) + Arrays.toString(corner(model, t, k));
+                int[] other = sides.remove(ba);
+                if (other == null) {
+                    sides.put(ab, new int[] {t, k});
+                } else if (coplanar(model, t, other[0], eps)) {
+                    inner.add(new int[] {t, k, other[0], other[1]});
+                    region[find(region, t)] = find(region, other[0]);
+                } else {
+                    borders.add(new int[] {t, k});
+                    borders.add(other);
+                }
+            }
+        }
+        borders.addAll(sides.values()); // edges of an open surface
+        // A region is convex when every corner of it lies on the inner side of every border edge's line.
+        boolean[] notConvex = new boolean[n];
+        Map<Integer, List<Integer>> members = new HashMap<>();
+        for (int t = 0; t < n; t++) {
+            members.computeIfAbsent(find(region, t), r -> new ArrayList<>()).add(t);
+        }
+        for (int[] border : borders) {
+            int t = border[0];
+            double[] a = corner(model, t, border[1]);
+            double[] in = crossed(model.normal(t), minus(corner(model, t, (border[1] + 1) % 3), a));
+            double length = Math.sqrt(times(in, in));
+            for (int u : members.get(find(region, t))) {
+                for (int k = 0; k < 3; k++) {
+                    if (times(minus(corner(model, u, k), a), in) < -eps * length) {
+                        notConvex[find(region, t)] = true;
+                    }
+                }
+            }
+        }
+        List<ConcaveSide> cuts = new ArrayList<>();
+        for (int[] edge : inner) {
+            if (notConvex[find(region, edge[0])]) {
+                cuts.add(new ConcaveSide(model.normal(edge[0]), corner(model, edge[0], edge[1]), corner(model, edge[0], (edge[1] + 1) % 3), 0));
+                cuts.add(new ConcaveSide(model.normal(edge[2]), corner(model, edge[2], edge[3]), corner(model, edge[2], (edge[3] + 1) % 3), 0));
+            }
+        }
+        return cuts;
+    }
+
+    private static double[] corner(TruthModel model, int t, int k) {
+        return Arrays.copyOfRange(model.corners, 9 * t + 3 * k, 9 * t + 3 * k + 3);
+    }
+
+    /** Whether triangles t and u lie in one plane: each one's corners on the other's plane, the same way up. */
+    private static boolean coplanar(TruthModel model, int t, int u, double eps) {
+        if (times(model.normal(t), model.normal(u)) < 1 - 1e-9) {
+            return false;
+        }
+        for (int c = 0; c < 3; c++) {
+            if (Math.abs(model.height(t, model.corners, 9 * u + 3 * c)) > eps || Math.abs(model.height(u, model.corners, 9 * t + 3 * c)) > eps) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private static int find(int[] parent, int t) {
+        while (parent[t] != t) {
+            parent[t] = parent[parent[t]];
+            t = parent[t];
+        }
+        return t;
+    }
+
+    /**
      * The vertices of paper where two folds stand back to back: two caps (bends) that share no
      * vertex but run along one segment in space (their apexes, where the bends meet on the
      * crease), and the other vertices of those caps (the corners of the folds' layers, which
@@ -213,6 +302,9 @@ final class TruthIsometry {
                     here = "vertex " + (v + 1) + " is " + inside + " in from a concave edge of the model, nearer than its mitre ("
                             + height + " high: " + height * side.mitre() + " in), running into the layers across";
                 }
+            }
+            if (side.mitre() == 0) {
+                continue; // a cut: paper runs on across it, and keeps from no mitre there
             }
             int plane = -1;
             for (int i = 0; i < planes.size() && plane < 0; i++) {

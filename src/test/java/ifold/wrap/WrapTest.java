@@ -450,6 +450,36 @@ public class WrapTest {
     }
 
     /**
+     * The T prism's top and bottom are cut into convex hosts (bar and stem) along the line from
+     * one reflex corner to the other, and paper beyond the cut is tucked along it on both sides.
+     * The folds nested on one side stand back from the cut into their host, a thickness a rank,
+     * as at a concave edge (there is no room across: the other host's paper lies there at the
+     * same heights): standing on the cut's line they overlapped in its plane, 478 pairs; 38 are
+     * left, where folds along the bar's underside edge end at the cut's ends.
+     */
+    @Test
+    void theTPrismsFoldsAlongItsCutStandBackFromIt() throws Exception {
+        Path file = SharedMeshes.ROOT.resolve("polyhedra").resolve("t_prism.off");
+        assumeTrue(Files.isRegularFile(file), "../shared/meshes is absent");
+        HalfedgeMesh mesh = build(MeshReaders.read(file));
+        Wrap.Result result = wrapAndCheck(mesh, new Wrap.Options(Double.NaN, Double.NaN), 2000);
+        List<PaperInSpace> geometries = new ArrayList<>();
+        for (Wrap.Strip strip : result.strips()) {
+            geometries.add(PaperInSpace.of(strip.sheet(), result.frames()));
+        }
+        Path obj = dir.resolve("t_prism.obj");
+        WrapExport.writeObj(obj, "test", result, geometries);
+        List<double[]> triangles = triangles(mesh);
+        double[] model = new double[9 * triangles.size()];
+        for (int i = 0; i < triangles.size(); i++) {
+            System.arraycopy(triangles.get(i), 0, model, 9 * i, 9);
+        }
+        ifold.check.PaperCollisions.Result collisions = ifold.check.PaperCollisions.check(Files.readString(obj), result.thickness(), model);
+        assertEquals(0, collisions.crossingPairs() + collisions.modelCrossings() + collisions.pointsInside(), collisions.summary());
+        assertTrue(collisions.coplanarPairs() <= 38, collisions.summary());
+    }
+
+    /**
      * Shared models: closed (and facing inward in the file), open (covered on the side its faces
      * face). trimesh_rabbit.obj (nine components, 1,252 triangles) is refused: its surface runs
      * through itself (SelfCrossingsTest).

@@ -22,7 +22,9 @@ import java.util.List;
  * (at most (maxStack + 1)·T·(tan(φ/2) + 1) in from its line, φ the edge's turn) is held to its
  * sheet distances only to within that much, and it must lie no nearer the edge than its mitre,
  * its height times tan(φ/2) in from it (the plane halving the wedge of air above the edge,
- * which the layers of the face across keep to from the other side);</li>
+ * which the layers of the face across keep to from the other side); and so at an edge between
+ * coplanar triangles of a plane region that is not convex, where the wrap may cut the region into
+ * convex hosts (a cut: φ = 0, no mitre to keep from);</li>
  * <li>{@link #NOT_TORN}: faces that are neighbours on the sheet are neighbours in space (or
  * joined by a cap across at most a few thicknesses), but for two squashed to a sliver in space
  * (paper whose layer ends by a concave edge, pressed onto the line where it ends: truth 2 holds
@@ -351,8 +353,11 @@ public final class WrapTruths {
         Faces geometry = new Faces(eps, model.size);
         tiling.checkStripsAreTiledOnce(report, eps);
         List<TruthIsometry.ConcaveSide> concave = TruthIsometry.concaveSides(model, eps);
+        // Folds tucked along a cut between coplanar hosts stand back from it as at a concave edge.
+        List<TruthIsometry.ConcaveSide> creepSides = new ArrayList<>(concave);
+        creepSides.addAll(TruthIsometry.cutSides(model, eps));
         boolean[] crept = new boolean[faces()];
-        isometry.checkIsometry(report, concave, thickness, maxStack, eps, crept);
+        isometry.checkIsometry(report, creepSides, thickness, maxStack, eps, crept);
         neighbours.checkNotTorn(report, eps, 2 * top);
         boolean foldsCrept = false;
         for (int f = 0; f < faces() && !foldsCrept; f++) {
