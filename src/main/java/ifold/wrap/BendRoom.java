@@ -75,8 +75,8 @@ final class BendRoom {
                 if (other == null) {
                     firstSide.put(key, t);
                 } else if (hostOf[other] != hostOf[t]) {
-                    limit(mesh, facesAt, u, v, other, t, hostOf, frames, room, mitre, tolerance);
-                    limit(mesh, facesAt, u, v, t, other, hostOf, frames, room, mitre, tolerance);
+                    limit(mesh, u, v, other, t, hostOf, frames, room, mitre, tolerance);
+                    limit(mesh, u, v, t, other, hostOf, frames, room, mitre, tolerance);
                     for (int[] sides : new int[][] {{other, t}, {t, other}}) {
                         List<Integer> plane = sharing.get(planes.planeOf(hostOf[sides[0]]));
                         if (plane != null) {
@@ -127,52 +127,37 @@ final class BendRoom {
     }
 
     /**
-     * Whether cuts between coplanar hosts meet at vertex {@code v} inside its plane's region: all
-     * the faces round it on the plane of {@code frame} and closed round it, and the edges at it
-     * between two hosts other than one straight line through it (a cut's inner vertex). A cut
-     * from one side of the region to another splits it in two, and the walls of the folds tucked
-     * along it stand back on it alone; where cuts meet inside the region (figure3's two inner
-     * corners, four and five cuts) the walls of the several cuts' folds crossed (51 pairs, 1.9 T
-     * deep), and the mesh edges of a cut that end there carry no mitre.
+     * Whether the cut along edge k of {@code near}'s polygon, through mesh edge (a, b), lies on
+     * the line of a side that runs on past the cut: an edge of either host's polygon along it
+     * reaches beyond the stretch the two share (the T prism's bar, whose underside edge runs on
+     * from the stem on both sides). Where the cut is a whole edge of both hosts (a diagonal or a
+     * spoke from a reflex corner) the folds along the sides at its ends end on its walls, and
+     * walls standing back from the cut moved their corners off their creases (the L prism's
+     * diagonal: 11 crossing pairs, 0.9 T deep; the coarse tori's rings: 4 each, one point).
      */
-    private static boolean cutsMeet(IndexedPolygons mesh, List<List<Integer>> facesAt, int v, int[] hostOf, HostFrame frame, double tolerance) {
-        Map<Integer, Integer> sides = new HashMap<>();
-        Map<Integer, Integer> hostBeside = new HashMap<>();
-        List<Integer> cuts = new ArrayList<>();
-        for (int t : facesAt.get(v)) {
-            int n = mesh.faceSize(t);
-            for (int k = 0; k < n; k++) {
-                if (Math.abs(frame.height(position(mesh, mesh.faceVertex(t, k)))) > tolerance) {
-                    return false; // on the region's border
-                }
-                if (mesh.faceVertex(t, k) != v) {
-                    continue;
-                }
-                for (int w : new int[] {mesh.faceVertex(t, (k + 1) % n), mesh.faceVertex(t, (k + n - 1) % n)}) {
-                    sides.merge(w, 1, Integer::sum);
-                    Integer before = hostBeside.putIfAbsent(w, hostOf[t]);
-                    if (before != null && before != hostOf[t]) {
-                        cuts.add(w);
-                    }
-                }
+    private static boolean runsOnAsASide(HostFrame near, int k, HostFrame far, double[] a, double[] b, double tolerance) {
+        double[] edge = near.edge(k);
+        double fax = far.localX(a);
+        double fay = far.localY(a);
+        double fbx = far.localX(b);
+        double fby = far.localY(b);
+        for (int j = 0; j < far.corners().length / 2; j++) {
+            if (!far.along(j, fax, fay, fbx, fby, tolerance)) {
+                continue;
             }
+            double[] other = far.edge(j);
+            double[] from = new double[3];
+            double[] to = new double[3];
+            far.toSpace(other[0], other[1], 0, from, 0);
+            far.toSpace(other[0] + other[2], other[1] + other[3], 0, to, 0);
+            double sFrom = ((near.localX(from) - edge[0]) * edge[2] + (near.localY(from) - edge[1]) * edge[3]) / edge[4];
+            double sTo = ((near.localX(to) - edge[0]) * edge[2] + (near.localY(to) - edge[1]) * edge[3]) / edge[4];
+            double lo = Math.min(sFrom, sTo);
+            double hi = Math.max(sFrom, sTo);
+            // The stretch both share is [max(0, lo), min(length, hi)]: does either reach past it?
+            return lo < -tolerance || hi > edge[4] + tolerance || lo > tolerance || hi < edge[4] - tolerance;
         }
-        for (int count : sides.values()) {
-            if (count < 2) {
-                return false; // an open border
-            }
-        }
-        if (cuts.size() != 2) {
-            return cuts.size() > 2;
-        }
-        double[] at = position(mesh, v);
-        double[] a = position(mesh, cuts.get(0));
-        double[] b = position(mesh, cuts.get(1));
-        double ax = frame.localX(a) - frame.localX(at);
-        double ay = frame.localY(a) - frame.localY(at);
-        double bx = frame.localX(b) - frame.localX(at);
-        double by = frame.localY(b) - frame.localY(at);
-        return Math.abs(ax * by - ay * bx) > tolerance * Math.hypot(ax, ay) || ax * bx + ay * by > 0;
+        return false;
     }
 
     /** Whether triangle {@code far} turns away below the plane of {@code near}: a convex edge between them, not a flat one. */
@@ -295,7 +280,7 @@ final class BendRoom {
     static final double CUT_MITRE = 1e-9;
 
     /** Limits the room of the edge of {@code near}'s host that mesh edge (u, v) lies along, by the turn to {@code far}'s host. */
-    private static void limit(IndexedPolygons mesh, List<List<Integer>> facesAt, int u, int v, int near, int far, int[] hostOf, HostFrame[] frames,
+    private static void limit(IndexedPolygons mesh, int u, int v, int near, int far, int[] hostOf, HostFrame[] frames,
             List<List<List<Double>>> room, List<List<List<Double>>> mitre, double tolerance) {
         HostFrame frame = frames[hostOf[near]];
         double slope = slope(frame, frames[hostOf[far]], mesh, far, tolerance);
@@ -320,7 +305,7 @@ final class BendRoom {
                 stretches.add(Math.min(sa, sb));
                 stretches.add(Math.max(sa, sb));
                 stretches.add(concave > 0 ? concave : slope);
-                if (slope == 0 && !cutsMeet(mesh, facesAt, u, hostOf, frame, tolerance) && !cutsMeet(mesh, facesAt, v, hostOf, frame, tolerance)) {
+                if (slope == 0 && runsOnAsASide(frame, k, frames[hostOf[far]], a, b, tolerance)) {
                     List<Double> cut = mitre.get(hostOf[near]).get(k);
                     cut.add(Math.min(sa, sb));
                     cut.add(Math.max(sa, sb));

@@ -28,11 +28,12 @@ import java.util.Map;
  * thick paper); what the paper loses by it, at most the stack's height over tan(φ/2) plus the
  * ranks, is the price of thickness at a concave edge.
  *
- * <p>A cut between two convex hosts of one plane is taken as a concave edge of no mitre
- * ({@code BendRoom.CUT_MITRE}): across it lies the other host's paper at the same heights, no room
- * to stand out into, so folds nested along it stand back into their own host, a thickness a rank,
- * and no longer stand one inside another on the cut's line, overlapping in its plane. A fold that
- * runs on beyond the cut along a convex stretch of the same side stands out as before.
+ * <p>A cut between two convex hosts of one plane, on the line of a side running on past it, is
+ * taken as a concave edge of no mitre ({@code BendRoom.CUT_MITRE}): across it lies the other
+ * host's paper at the same heights, no room to stand out into, so folds nested along it stand
+ * back into their own host, a thickness a rank, and no longer stand one inside another on the
+ * cut's line, overlapping in its plane. A fold that runs on beyond the cut along a convex
+ * stretch of the same side stands out as before.
  */
 final class ConcaveWalls {
     /**
