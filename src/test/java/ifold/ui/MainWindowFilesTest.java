@@ -31,14 +31,16 @@ class MainWindowFilesTest extends WindowTestBase {
     @Test
     void aModelOpensThroughTheMenuAndIsWrapped() throws Exception {
         Settings settings = settings();
-        // The plus of five cubes (`ifold generate plus`): its faces cut into hosts, where the walls
-        // of folds along the cuts stand on each other in one plane (1,636 pairs). The L of three
-        // cubes showed its pairs here until its top was cut into two rectangles, whose walls the
-        // view sees edge on.
-        Path plus = dir.resolve("plus.off");
-        ifold.job.GenerateJob.run(new ifold.job.GenerateJob.Request(ifold.job.BuiltInModels.Shape.plus, 24, 12, 3, plus, false),
+        // The coarse torus of 6 x 6 (`ifold generate torus --around 6 --across 6`): its flat rings
+        // cut into hosts, where the walls of folds along the cuts stand on each other in one plane
+        // (3,520 pairs), and bends by its inner equator cross (126). The L of three cubes showed
+        // its pairs here until its top was cut into two rectangles, whose walls the view sees edge
+        // on; the plus of five cubes until folds nested along its cuts stood back from them (1,636
+        // pairs, 381 left, none in view); figure3's the view sees edge on.
+        Path torus = dir.resolve("torus6.off");
+        ifold.job.GenerateJob.run(new ifold.job.GenerateJob.Request(ifold.job.BuiltInModels.Shape.torus, 6, 6, 3, torus, false),
                 ifold.job.JobWatcher.NONE);
-        settings.addRecent(plus);
+        settings.addRecent(torus);
         settings.addRecent(Path.of("models", "cube.off"));
         window = App.open(null, settings);
         settled();
@@ -67,13 +69,13 @@ class MainWindowFilesTest extends WindowTestBase {
         assertTrue(pixelsOf(path, 0x00A030, 60) > 50 && pixelsOf(plain, 0x00A030, 60) < 10,
                 "the path's tree edges in green, where the plain model has none");
         // View > Collisions: the faces of paper that cross, in red, seen through the paper. The
-        // cube's paper crosses nothing; the plus's walls along its cuts overlap.
+        // cube's paper crosses nothing; the torus's walls along its cuts overlap.
         onEdt(() -> {
-            menuItem(window, "2  plus.off").doClick();
+            menuItem(window, "2  torus6.off").doClick();
             return null;
         });
-        waitFor("the plus wrapped", 60, () -> window.plan() != null && !window.isWorking()
-                && window.getTitle().contains("plus.off"));
+        waitFor("the torus wrapped", 60, () -> window.plan() != null && !window.isWorking()
+                && window.getTitle().contains("torus6.off"));
         settled();
         onEdt(() -> {
             window.timeline.seek(Double.MAX_VALUE); // the whole wrap, its cuts covered
