@@ -67,7 +67,7 @@ public final class Collisions {
             return null;
         }
         CharSequence text = exported != null ? Files.readString(exported) : WrapExport.objText("collision check", strips);
-        return PaperCollisions.check(text, thickness, model == null ? new double[0] : triangles(model), options);
+        return PaperCollisions.check(text, thickness, model == null ? new double[0] : modelTriangles(model), options);
     }
 
     /**
@@ -134,7 +134,8 @@ public final class Collisions {
         return figures;
     }
 
-    private static double[] triangles(IndexedPolygons model) {
+    /** The model's faces as triangles, nine numbers each (a fan of each face), as {@link PaperCollisions#check} takes them. */
+    public static double[] modelTriangles(IndexedPolygons model) {
         int count = 0;
         for (int f = 0; f < model.faceCount(); f++) {
             count += model.faceSize(f) - 2;

@@ -78,39 +78,36 @@ final class RowsOnPaper {
      * that side leaves the crease by at least about 6 degrees and at most square.
      */
     void corner(int host, int level, double x, double y, double px, double py, double qx, double qy) {
+        endsAt(host, level, x, y, true, px, py, qx, qy);
+    }
+
+    /** Whether a bend's end standing out lies at (x, y) on {@code host}, with paper at {@code level} between its layers. */
+    boolean near(int host, int level, double x, double y) {
+        return endsAt(host, level, x, y, false, 0, 0, 0, 0);
+    }
+
+    /** Whether such an end lies at (x, y): the first found, or each stopped on the face's sides where {@code stopping}. */
+    private boolean endsAt(int host, int level, double x, double y, boolean stopping, double px, double py, double qx, double qy) {
         if (!any) {
-            return;
+            return false;
         }
+        boolean found = false;
         long cx = (long) Math.floor((x - tolerance) / (2 * tolerance));
         long cy = (long) Math.floor((y - tolerance) / (2 * tolerance));
         for (long i = cx; i <= cx + 1; i++) {
             for (long j = cy; j <= cy + 1; j++) {
                 for (int e = heads.get(cell(host, i, j), -1); e >= 0; e = before[e]) {
                     if (meets(e, host, level, x, y)) {
+                        if (!stopping) {
+                            return true;
+                        }
+                        found = true;
                         stop(e, x, y, px, py, qx, qy);
                     }
                 }
             }
         }
-    }
-
-    /** Whether a bend's end standing out lies at (x, y) on {@code host}, with paper at {@code level} between its layers. */
-    boolean near(int host, int level, double x, double y) {
-        if (!any) {
-            return false;
-        }
-        long cx = (long) Math.floor((x - tolerance) / (2 * tolerance));
-        long cy = (long) Math.floor((y - tolerance) / (2 * tolerance));
-        for (long i = cx; i <= cx + 1; i++) {
-            for (long j = cy; j <= cy + 1; j++) {
-                for (int e = heads.get(cell(host, i, j), -1); e >= 0; e = before[e]) {
-                    if (meets(e, host, level, x, y)) {
-                        return true;
-                    }
-                }
-            }
-        }
-        return false;
+        return found;
     }
 
     private boolean meets(int e, int host, int level, double x, double y) {

@@ -8,6 +8,7 @@ import ifold.check.PaperCollisions.Crossing;
 import ifold.check.PaperCollisions.Kind;
 import ifold.check.PaperCollisions.Result;
 import ifold.cli.Main;
+import ifold.job.Collisions;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.Polycubes;
@@ -16,9 +17,9 @@ import ifold.refine.HamiltonianRefinement;
 import ifold.script.FoldScript;
 import ifold.script.ScriptFolding;
 import ifold.testing.SharedMeshes;
+import ifold.wrap.PaperInSpace;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapExport;
-import ifold.wrap.PaperInSpace;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
@@ -71,19 +72,6 @@ class WrappedPaperCollisionsTest {
                 d == null ? "-" : String.format(Locale.ROOT, "%.4g (%d, %d)", d.depth(), d.faceA(), d.faceB())));
     }
 
-    /** The model's triangles as numbers, 9 each. */
-    private static double[] triangles(HalfedgeMesh mesh) {
-        double[] out = new double[9 * mesh.faceCount()];
-        for (int f = 0; f < mesh.faceCount(); f++) {
-            for (int k = 0; k < 3; k++) {
-                for (int axis = 0; axis < 3; axis++) {
-                    out[9 * f + 3 * k + axis] = mesh.coordinate(mesh.faceVertex(f, k), axis);
-                }
-            }
-        }
-        return out;
-    }
-
     /** Wraps a model file as WrapTest does, writes its OBJ and checks it against the model. */
     private Result wrapAndCheck(Path file) throws Exception {
         return wrapAndCheck(MeshReaders.read(file), file.getFileName().toString());
@@ -99,7 +87,7 @@ class WrappedPaperCollisionsTest {
         }
         Path obj = dir.resolve(name + ".obj");
         WrapExport.writeObj(obj, name, result, geometries);
-        Result check = PaperCollisions.check(Files.readString(obj), result.thickness(), triangles(mesh));
+        Result check = PaperCollisions.check(Files.readString(obj), result.thickness(), Collisions.modelTriangles(mesh));
         report("wrap " + name, check);
         assertTrue(check.faces() > 0 && check.capFaces() > 0, "setup: folded paper was exported");
         // Every crossing listed is deeper than touching, and the counts agree with each other.

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import ifold.check.PaperCollisions;
+import ifold.job.Collisions;
 import ifold.job.WrapPath;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
@@ -40,7 +41,7 @@ class HexagonsTest {
         Seam.Chosen chosen = Seam.wrap(path.refinement(), new Wrap.Options(Double.NaN, Double.NaN), Wrap.Watcher.NONE);
         WrapTest.check(dir, chosen.result(), mesh, 1, samples);
         PaperCollisions.Result collisions = PaperCollisions.check(Files.readString(dir.resolve("wrap.obj")),
-                chosen.result().thickness(), triangles(mesh));
+                chosen.result().thickness(), Collisions.modelTriangles(mesh));
         assertEquals(0, collisions.crossingPairs(), collisions::summary);
         assertEquals(0, collisions.modelCrossings(), collisions::summary);
         assertEquals(0, collisions.pointsInside(), collisions::summary);
@@ -69,8 +70,8 @@ class HexagonsTest {
         double[][] irregular = {{1.2, 0}, {0.6, 0.9}, {-0.4, 1}, {-1.1, 0.1}, {-0.6, -0.8}, {0.5, -1}};
         PolygonSoup soup = switch (shape) {
             case "lone" -> hexagon(regular);
-            case "tall" -> prism(regular, 4);
-            default -> prism(irregular, 1.2);
+            case "tall" -> WrapTest.prism(regular, 4);
+            default -> WrapTest.prism(irregular, 1.2);
         };
         int before = switch (shape) {
             case "lone" -> 17;
@@ -90,36 +91,8 @@ class HexagonsTest {
         return soup;
     }
 
-    private static PolygonSoup prism(double[][] corners, double height) {
-        PolygonSoup soup = new PolygonSoup();
-        for (double z : new double[] {0, height}) {
-            for (double[] p : corners) {
-                soup.addVertex(p[0], p[1], z);
-            }
-        }
-        soup.addFace(new int[] {5, 4, 3, 2, 1, 0}, 6, 0); // the bottom, facing down
-        soup.addFace(new int[] {6, 7, 8, 9, 10, 11}, 6, 0); // the top, facing up
-        for (int i = 0; i < 6; i++) {
-            int j = (i + 1) % 6;
-            soup.addFace(new int[] {i, j, 6 + j, 6 + i}, 4, 0);
-        }
-        return soup;
-    }
-
     private static HalfedgeMesh build(PolygonSoup soup) throws Exception {
         return MeshBuilder.build(soup, MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();
     }
 
-    /** The model's triangles as numbers, 9 each, for the collision checker. */
-    private static double[] triangles(HalfedgeMesh mesh) {
-        double[] out = new double[9 * mesh.faceCount()];
-        for (int f = 0; f < mesh.faceCount(); f++) {
-            for (int k = 0; k < 3; k++) {
-                for (int axis = 0; axis < 3; axis++) {
-                    out[9 * f + 3 * k + axis] = mesh.coordinate(mesh.faceVertex(f, k), axis);
-                }
-            }
-        }
-        return out;
-    }
 }

@@ -355,18 +355,29 @@ public class WrapTest {
 
     /** A prism 0.7 high on an L of three unit squares: two non-convex hexagons and six quads. */
     public static PolygonSoup lPrism() {
-        double[][] l = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+        return prism(new double[][] {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, 0.7);
+    }
+
+    /** A prism {@code height} high on a polygon (x, y each, counter-clockwise): its two ends and a quad a side. */
+    public static PolygonSoup prism(double[][] corners, double height) {
+        int n = corners.length;
         PolygonSoup soup = new PolygonSoup();
-        for (double z : new double[] {0, 0.7}) {
-            for (double[] p : l) {
+        for (double z : new double[] {0, height}) {
+            for (double[] p : corners) {
                 soup.addVertex(p[0], p[1], z);
             }
         }
-        soup.addFace(new int[] {5, 4, 3, 2, 1, 0}, 6, 0); // the bottom, facing down
-        soup.addFace(new int[] {6, 7, 8, 9, 10, 11}, 6, 0); // the top, facing up
-        for (int i = 0; i < 6; i++) {
-            int j = (i + 1) % 6;
-            soup.addFace(new int[] {i, j, 6 + j, 6 + i}, 4, 0);
+        int[] bottom = new int[n];
+        int[] top = new int[n];
+        for (int i = 0; i < n; i++) {
+            bottom[i] = n - 1 - i; // facing down
+            top[i] = n + i; // facing up
+        }
+        soup.addFace(bottom, n, 0);
+        soup.addFace(top, n, 0);
+        for (int i = 0; i < n; i++) {
+            int j = (i + 1) % n;
+            soup.addFace(new int[] {i, j, n + j, n + i}, 4, 0);
         }
         return soup;
     }
