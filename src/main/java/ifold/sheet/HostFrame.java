@@ -220,13 +220,16 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
         if (mitre == null || mitre[k] == null) {
             return 0;
         }
-        double[] edge = edge(k);
-        double s = ((x - edge[0]) * edge[2] + (y - edge[1]) * edge[3]) / edge[4];
-        double near = Tolerance.ON_PLANE * edge[4];
+        // The edge read in place, not as edge(k): tens of millions of calls place a big wrap's paper.
+        double dx = edgeDx(k);
+        double dy = edgeDy(k);
+        double length = Polygons2.length(dx, dy);
+        double s = ((x - corners[2 * k]) * dx + (y - corners[2 * k + 1]) * dy) / length;
+        double near = Tolerance.ON_PLANE * length;
         double most = 0;
         for (int i = 0; i + 2 < mitre[k].length; i += 3) {
             boolean fromStart = mitre[k][i] <= near;
-            boolean toEnd = mitre[k][i + 1] >= edge[4] - near;
+            boolean toEnd = mitre[k][i + 1] >= length - near;
             if ((fromStart || s >= mitre[k][i] - near) && (toEnd || s <= mitre[k][i + 1] + near)) {
                 most = Math.max(most, mitre[k][i + 2]);
             }
@@ -261,8 +264,9 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
 
     /** How far frame point p lies in from the line of edge k (negative beyond it). */
     private double inside(int k, double[] p) {
-        double[] edge = edge(k);
-        return ((p[0] - edge[0]) * -edge[3] + (p[1] - edge[1]) * edge[2]) / edge[4];
+        double dx = edgeDx(k);
+        double dy = edgeDy(k);
+        return ((p[0] - corners[2 * k]) * -dy + (p[1] - corners[2 * k + 1]) * dx) / Polygons2.length(dx, dy);
     }
 
     /** Moves p to where the lines {@code keepK} in from edge k and {@code keepJ} in from edge j meet, if they do, and it lies in the polygon. */
@@ -299,9 +303,11 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
      * @return whether it moved
      */
     public boolean keepFrom(int k, double keep, double[] point) {
-        double[] edge = edge(k);
+        double dx = edgeDx(k);
+        double dy = edgeDy(k);
+        double length = Polygons2.length(dx, dy);
         // Inwards: left of the edge, the polygon running counter-clockwise.
-        return keepFromLine(edge[0], edge[1], -edge[3] / edge[4], edge[2] / edge[4], k, keep, point);
+        return keepFromLine(corners[2 * k], corners[2 * k + 1], -dy / length, dx / length, k, keep, point);
     }
 
     /**
@@ -310,9 +316,8 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
      * {@code skip} (the line's own, or -1) is not slid along.
      */
     public boolean keepFromLine(double px, double py, double nx, double ny, int skip, double keep, double[] point) {
-        double[] edge = {px, py};
         int k = skip;
-        double need = keep - ((point[0] - edge[0]) * nx + (point[1] - edge[1]) * ny);
+        double need = keep - ((point[0] - px) * nx + (point[1] - py) * ny);
         if (!(need > keep * 1e-12)) {
             return false;
         }
@@ -321,18 +326,20 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
         double amount = need;
         int n = corners.length / 2;
         for (int j = 0; j < n; j++) {
-            double[] other = edge(j);
-            if (j == k || !(other[4] > 0)) {
+            double otherDx = edgeDx(j);
+            double otherDy = edgeDy(j);
+            double otherLength = Polygons2.length(otherDx, otherDy);
+            if (j == k || !(otherLength > 0)) {
                 continue;
             }
-            double mx = -other[3] / other[4];
-            double my = other[2] / other[4];
-            double inside = (point[0] - other[0]) * mx + (point[1] - other[1]) * my;
+            double mx = -otherDy / otherLength;
+            double my = otherDx / otherLength;
+            double inside = (point[0] - corners[2 * j]) * mx + (point[1] - corners[2 * j + 1]) * my;
             double after = inside + amount * (dx * mx + dy * my);
             if (after < Math.min(inside, 0)) {
                 // Along edge j's line, the way that leads in from edge k: edge j's own distance stays.
-                double tx = other[2] / other[4];
-                double ty = other[3] / other[4];
+                double tx = otherDx / otherLength;
+                double ty = otherDy / otherLength;
                 double towards = tx * nx + ty * ny;
                 if (Math.abs(towards) > 1e-3) {
                     dx = Math.signum(towards) * tx;
@@ -344,15 +351,17 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
         }
         // No farther than the polygon lets it go: each edge's distance stays at least what it was, or 0.
         for (int j = 0; j < n; j++) {
-            double[] other = edge(j);
-            if (!(other[4] > 0)) {
+            double otherDx = edgeDx(j);
+            double otherDy = edgeDy(j);
+            double otherLength = Polygons2.length(otherDx, otherDy);
+            if (!(otherLength > 0)) {
                 continue;
             }
-            double mx = -other[3] / other[4];
-            double my = other[2] / other[4];
+            double mx = -otherDy / otherLength;
+            double my = otherDx / otherLength;
             double towards = dx * mx + dy * my;
             if (towards < 0) {
-                double inside = (point[0] - other[0]) * mx + (point[1] - other[1]) * my;
+                double inside = (point[0] - corners[2 * j]) * mx + (point[1] - corners[2 * j + 1]) * my;
                 amount = Math.min(amount, Math.max(0, inside - Math.min(inside, 0)) / -towards);
             }
         }
@@ -433,12 +442,19 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
 
     /** Edge k of the corners' polygon, from corner k to corner k + 1: {x, y of its start, dx, dy, its length}. */
     public double[] edge(int k) {
-        int n = corners.length / 2;
-        double px = corners[2 * k];
-        double py = corners[2 * k + 1];
-        double dx = corners[2 * ((k + 1) % n)] - px;
-        double dy = corners[2 * ((k + 1) % n) + 1] - py;
-        return new double[] {px, py, dx, dy, Polygons2.length(dx, dy)};
+        double dx = edgeDx(k);
+        double dy = edgeDy(k);
+        return new double[] {corners[2 * k], corners[2 * k + 1], dx, dy, Polygons2.length(dx, dy)};
+    }
+
+    /** Edge k's run along x, {@code edge(k)[2]} without the array. */
+    private double edgeDx(int k) {
+        return corners[2 * ((k + 1) % (corners.length / 2))] - corners[2 * k];
+    }
+
+    /** Edge k's run along y, {@code edge(k)[3]} without the array. */
+    private double edgeDy(int k) {
+        return corners[2 * ((k + 1) % (corners.length / 2)) + 1] - corners[2 * k + 1];
     }
 
     /**

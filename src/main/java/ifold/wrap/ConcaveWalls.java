@@ -313,8 +313,9 @@ final class ConcaveWalls {
                 double s = ((wx - edge[0]) * edge[2] + (wy - edge[1]) * edge[3]) / edge[4];
                 // Beside the wall, and beside a concave stretch of the edge: a fold along the whole of
                 // a host's edge that is concave in part stands back only where the edge is concave.
-                if (s >= wall.from() - tolerance && s <= wall.to() + tolerance && frame.mitreAt(wall.edge(), wx, wy) > 0) {
-                    if (frame.keepFrom(wall.edge(), wall.in(), out) && frame.mitreAt(wall.edge(), wx, wy) <= HostFrame.CUT_TAN) {
+                if (s >= wall.from() - tolerance && s <= wall.to() + tolerance) {
+                    double tan = frame.mitreAt(wall.edge(), wx, wy);
+                    if (tan > 0 && frame.keepFrom(wall.edge(), wall.in(), out) && tan <= HostFrame.CUT_TAN) {
                         cutMoved = true;
                     }
                 }
