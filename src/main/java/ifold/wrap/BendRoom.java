@@ -43,6 +43,17 @@ final class BendRoom {
      * @param tolerance how far off a polygon's edge a mesh edge may lie and still be on it
      */
     static HostFrame[] of(IndexedPolygons mesh, int[] hostOf, HostFrame[] frames, double tolerance) {
+        return of(mesh, hostOf, frames, tolerance, Double.NaN);
+    }
+
+    /**
+     * As {@link #of(IndexedPolygons, int[], HostFrame[], double)}, with every cut between
+     * coplanar hosts a stretch of no mitre ({@link #CUT_MITRE}), not only those on the line of a
+     * side running on: a cut that is a whole edge of both hosts stops {@code cornerRoom} short of
+     * a reflex corner of the plane's region and of a point where three or more of its hosts meet
+     * (NaN: only the cuts on the line of a side, as the hinge strip has them).
+     */
+    static HostFrame[] of(IndexedPolygons mesh, int[] hostOf, HostFrame[] frames, double tolerance, double cornerRoom) {
         // Each host edge's stretches that limit bends (from, to and the slope) and its concave
         // stretches (from, to and tan(φ/2)), three numbers a stretch.
         List<List<List<Double>>> room = new ArrayList<>();
@@ -64,6 +75,7 @@ final class BendRoom {
         }
         List<List<Integer>> facesAt = facesAt(mesh);
         CoplanarHosts planes = CoplanarHosts.of(frames, tolerance);
+        List<double[]> cutCorners = Double.isNaN(cornerRoom) ? null : cutCorners(mesh, facesAt, hostOf, planes);
         Map<Integer, List<Integer>> sharing = planes.shared();
         for (int t = 0; t < mesh.faceCount(); t++) {
             int n = mesh.faceSize(t);
@@ -75,8 +87,8 @@ final class BendRoom {
                 if (other == null) {
                     firstSide.put(key, t);
                 } else if (hostOf[other] != hostOf[t]) {
-                    limit(mesh, u, v, other, t, hostOf, frames, room, mitre, tolerance);
-                    limit(mesh, u, v, t, other, hostOf, frames, room, mitre, tolerance);
+                    limit(mesh, u, v, other, t, hostOf, frames, room, mitre, tolerance, cutCorners, cornerRoom);
+                    limit(mesh, u, v, t, other, hostOf, frames, room, mitre, tolerance, cutCorners, cornerRoom);
                     for (int[] sides : new int[][] {{other, t}, {t, other}}) {
                         List<Integer> plane = sharing.get(planes.planeOf(hostOf[sides[0]]));
                         if (plane != null) {
@@ -132,8 +144,9 @@ final class BendRoom {
      * reaches beyond the stretch the two share (the T prism's bar, whose underside edge runs on
      * from the stem on both sides). Where the cut is a whole edge of both hosts (a diagonal or a
      * spoke from a reflex corner) the folds along the sides at its ends end on its walls, and
-     * walls standing back from the cut moved their corners off their creases (the L prism's
-     * diagonal: 11 crossing pairs, 0.9 T deep; the coarse tori's rings: 4 each, one point).
+     * walls standing back from the cut up to its ends moved their corners off their creases (the
+     * L prism's diagonal: 11 crossing pairs, 0.9 T deep; the coarse tori's rings: 4 each, one
+     * point): such a cut's walls stop {@link #CUT_CORNER_ROOM} short of those ends.
      */
     private static boolean runsOnAsASide(HostFrame near, int k, HostFrame far, double[] a, double[] b, double tolerance) {
         double[] edge = near.edge(k);
@@ -158,6 +171,65 @@ final class BendRoom {
             return lo < -tolerance || hi > edge[4] + tolerance || lo > tolerance || hi < edge[4] - tolerance;
         }
         return false;
+    }
+
+    /**
+     * The points where the whole cuts' walls stop short: each vertex where a plane shared by
+     * hosts turns through more than 180° and less than 360° (a reflex corner of its region: the
+     * fold along the side that ends there had its corner moved square to the cut, off its
+     * crease, and its bend twisted through the paper beside it, on the L prism's diagonal), or
+     * where three or more of its hosts meet (figure3's corners inside its face, where four and
+     * five cuts meet: 40 crossing pairs with walls up to them).
+     */
+    private static List<double[]> cutCorners(IndexedPolygons mesh, List<List<Integer>> facesAt, int[] hostOf, CoplanarHosts planes) {
+        List<double[]> corners = new ArrayList<>();
+        Map<Integer, Double> turn = new HashMap<>();
+        Map<Integer, java.util.Set<Integer>> hosts = new HashMap<>();
+        for (int v = 0; v < mesh.vertexCount(); v++) {
+            turn.clear();
+            hosts.clear();
+            double[] p = position(mesh, v);
+            for (int t : facesAt.get(v)) {
+                int plane = planes.planeOf(hostOf[t]);
+                hosts.computeIfAbsent(plane, x -> new java.util.HashSet<>()).add(hostOf[t]);
+                int n = mesh.faceSize(t);
+                for (int k = 0; k < n; k++) {
+                    if (mesh.faceVertex(t, k) == v) {
+                        turn.merge(plane, angle(p, position(mesh, mesh.faceVertex(t, (k + 1) % n)),
+                                position(mesh, mesh.faceVertex(t, (k + n - 1) % n))), Double::sum);
+                    }
+                }
+            }
+            for (Map.Entry<Integer, java.util.Set<Integer>> plane : hosts.entrySet()) {
+                double around = turn.get(plane.getKey());
+                if (plane.getValue().size() >= 3 || (plane.getValue().size() == 2 && around > Math.PI + ANGLE_TOLERANCE
+                        && around < 2 * Math.PI - ANGLE_TOLERANCE)) {
+                    corners.add(p);
+                    break;
+                }
+            }
+        }
+        return corners;
+    }
+
+    /** How far a corner's sum of angles must pass 180° to be a reflex corner, and fall short of 360°. */
+    private static final double ANGLE_TOLERANCE = 1e-6;
+
+    /** The angle at p between the directions to a and to b. */
+    private static double angle(double[] p, double[] a, double[] b) {
+        double dot = 0;
+        double la = 0;
+        double lb = 0;
+        for (int i = 0; i < 3; i++) {
+            dot += (a[i] - p[i]) * (b[i] - p[i]);
+            la += (a[i] - p[i]) * (a[i] - p[i]);
+            lb += (b[i] - p[i]) * (b[i] - p[i]);
+        }
+        return Math.acos(Math.max(-1, Math.min(1, dot / Math.sqrt(la * lb))));
+    }
+
+    private static boolean same(double[] p, double[] q, double tolerance) {
+        return Math.abs(p[0] - q[0]) <= tolerance && Math.abs(p[1] - q[1]) <= tolerance && Math.abs(p[2] - q[2]) <= tolerance;
     }
 
     /** Whether triangle {@code far} turns away below the plane of {@code near}: a convex edge between them, not a flat one. */
@@ -279,9 +351,28 @@ final class BendRoom {
      */
     static final double CUT_MITRE = 1e-9;
 
+    /**
+     * How far short of a reflex corner of its face, or of a point where three or more hosts of
+     * its plane meet, the walls along a cut that is a whole edge of both hosts stop, in strip
+     * widths. Up to them, figure3 crossed itself in 40 pairs, the 14 × 6 torus in 4, the 10 × 6
+     * in 4 more than before; a tenth of a width short, none does (0.03 of a width: the L prism,
+     * square_frame and figure3 wrapped as at a tenth). With none at reflex corners of 270° (the
+     * L prism's, square_frame's), the L prism wrapped from its first start crossed in 3 pairs
+     * (0.28 T) by its reflex corner.
+     */
+    static final double CUT_CORNER_ROOM = 0.1;
+
+    /**
+     * The mitre of a cut that is a whole edge of both hosts: none for the paper, as
+     * {@link #CUT_MITRE}, but told apart from it so that {@link ConcaveWalls} stands the folds
+     * along it back by their own nest's ranks, not by the most along the whole edge.
+     */
+    static final double WHOLE_CUT_MITRE = 2 * CUT_MITRE;
+
     /** Limits the room of the edge of {@code near}'s host that mesh edge (u, v) lies along, by the turn to {@code far}'s host. */
     private static void limit(IndexedPolygons mesh, int u, int v, int near, int far, int[] hostOf, HostFrame[] frames,
-            List<List<List<Double>>> room, List<List<List<Double>>> mitre, double tolerance) {
+            List<List<List<Double>>> room, List<List<List<Double>>> mitre, double tolerance, List<double[]> cutCorners,
+            double cornerRoom) {
         HostFrame frame = frames[hostOf[near]];
         double slope = slope(frame, frames[hostOf[far]], mesh, far, tolerance);
         double concave = slope >= HostFrame.OPEN ? concaveTurn(frame, frames[hostOf[far]], mesh, far, tolerance) : 0;
@@ -310,6 +401,30 @@ final class BendRoom {
                     cut.add(Math.min(sa, sb));
                     cut.add(Math.max(sa, sb));
                     cut.add(CUT_MITRE);
+                } else if (slope == 0 && cutCorners != null) {
+                    // A whole edge of both hosts: its walls stand back but for cornerRoom at its
+                    // ends where a fold along a side of the host ends on it (a reflex corner) or
+                    // where other cuts meet it, whose corners the walls would move off their creases.
+                    double lo = Math.min(sa, sb);
+                    double hi = Math.max(sa, sb);
+                    double[] start = new double[3];
+                    double[] end = new double[3];
+                    frame.toSpace(edge[0], edge[1], 0, start, 0);
+                    frame.toSpace(edge[0] + edge[2], edge[1] + edge[3], 0, end, 0);
+                    for (double[] corner : cutCorners) {
+                        if (same(corner, start, tolerance)) {
+                            lo = Math.max(lo, cornerRoom);
+                        }
+                        if (same(corner, end, tolerance)) {
+                            hi = Math.min(hi, edge[4] - cornerRoom);
+                        }
+                    }
+                    if (lo < hi) {
+                        List<Double> cut = mitre.get(hostOf[near]).get(k);
+                        cut.add(lo);
+                        cut.add(hi);
+                        cut.add(WHOLE_CUT_MITRE);
+                    }
                 }
             }
         }

@@ -33,7 +33,14 @@ import java.util.Map;
  * host's paper at the same heights, no room to stand out into, so folds nested along it stand
  * back into their own host, a thickness a rank, and no longer stand one inside another on the
  * cut's line, overlapping in its plane. A fold that runs on beyond the cut along a convex
- * stretch of the same side stands out as before.
+ * stretch of the same side stands out as before. A cut that is a whole edge of both hosts is
+ * taken so too ({@code BendRoom.WHOLE_CUT_MITRE}), but for a tenth of a width at its ends on a
+ * reflex corner of the face or where three or more hosts meet ({@code BendRoom.CUT_CORNER_ROOM}),
+ * and its folds stand back by the ranks of their own nest (the folds along it whose stretches
+ * overlap, and theirs), not by the most along the whole edge: the other host's paper stands back
+ * from the cut too, and a lone fold standing back as far as the deepest nest along the edge left
+ * the surface beside the cut bare under its lower layer (the 14 × 6 torus's ring, 4 thicknesses
+ * by a spoke; figure3 by a spoke from an inner corner).
  */
 final class ConcaveWalls {
     /**
@@ -127,6 +134,8 @@ final class ConcaveWalls {
         int[] edgeOf = new int[bends.size()];
         // The most any fold along an edge needs, by host and edge: its upper layer's mitre plus its rank.
         Map<Long, Double> most = new HashMap<>();
+        boolean[] onCut = new boolean[bends.size()];
+        double[] need = new double[bends.size()];
         for (int k = 0; k < bends.size(); k++) {
             NestedBends.Bend bend = bends.get(k);
             HostFrame frame = frames[bend.host()];
@@ -136,9 +145,13 @@ final class ConcaveWalls {
             }
             along[k] = true;
             double tan = frame.mitreAlong(edgeOf[k], bend.ax(), bend.ay(), bend.bx(), bend.by(), tolerance);
-            double need = (bend.high() + 0.5) * thickness * tan + ranks[k] * thickness;
-            most.merge(key(bend.host(), edgeOf[k]), need, Math::max);
+            need[k] = (bend.high() + 0.5) * thickness * tan + ranks[k] * thickness;
+            onCut[k] = Math.abs(tan - BendRoom.WHOLE_CUT_MITRE) < BendRoom.CUT_MITRE / 2; // a whole cut: walls by nest
+            if (!onCut[k]) {
+                most.merge(key(bend.host(), edgeOf[k]), need[k], Math::max);
+            }
         }
+        double[] nestMost = cutNests(bends, along, onCut, edgeOf, need, frames);
         List<List<Wall>> wallsOf = new ArrayList<>(java.util.Collections.nCopies(frames.length, (List<Wall>) null));
         for (int k = 0; k < bends.size(); k++) {
             if (!along[k]) {
@@ -148,7 +161,7 @@ final class ConcaveWalls {
             double[] edge = frames[bend.host()].edge(edgeOf[k]);
             double sa = ((bend.ax() - edge[0]) * edge[2] + (bend.ay() - edge[1]) * edge[3]) / edge[4];
             double sb = ((bend.bx() - edge[0]) * edge[2] + (bend.by() - edge[1]) * edge[3]) / edge[4];
-            double in = most.get(key(bend.host(), edgeOf[k])) - ranks[k] * thickness;
+            double in = (onCut[k] ? nestMost[k] : most.get(key(bend.host(), edgeOf[k]))) - ranks[k] * thickness;
             if (wallsOf.get(bend.host()) == null) {
                 wallsOf.set(bend.host(), new ArrayList<>());
             }
@@ -173,6 +186,61 @@ final class ConcaveWalls {
             backWallsByHost[h] = backWallsOf.get(h) == null ? null : backWallsOf.get(h).toArray(new BackWall[0]);
         }
         return new ConcaveWalls(thickness, tolerance, wallsOf, backWallsByHost, along, stackTop);
+    }
+
+    /**
+     * For each fold along a cut, the most any fold of its nest needs: the folds along the same
+     * edge of the host whose stretches overlap it, and theirs, and so on. Across a cut the other
+     * host's paper stands back too, so a fold standing back farther than its own nest asks left
+     * the surface by the cut bare under its lower layer.
+     */
+    private static double[] cutNests(List<NestedBends.Bend> bends, boolean[] along, boolean[] onCut, int[] edgeOf, double[] need,
+            HostFrame[] frames) {
+        double[] result = new double[bends.size()];
+        Map<Long, List<Integer>> byEdge = new HashMap<>();
+        for (int k = 0; k < bends.size(); k++) {
+            if (along[k] && onCut[k]) {
+                byEdge.computeIfAbsent(key(bends.get(k).host(), edgeOf[k]), x -> new ArrayList<>()).add(k);
+            }
+        }
+        for (List<Integer> group : byEdge.values()) {
+            int n = group.size();
+            double[] from = new double[n];
+            double[] to = new double[n];
+            int[] order = new int[n];
+            for (int i = 0; i < n; i++) {
+                NestedBends.Bend bend = bends.get(group.get(i));
+                double[] edge = frames[bend.host()].edge(edgeOf[group.get(i)]);
+                double sa = ((bend.ax() - edge[0]) * edge[2] + (bend.ay() - edge[1]) * edge[3]) / edge[4];
+                double sb = ((bend.bx() - edge[0]) * edge[2] + (bend.by() - edge[1]) * edge[3]) / edge[4];
+                from[i] = Math.min(sa, sb);
+                to[i] = Math.max(sa, sb);
+            }
+            Integer[] sorted = new Integer[n];
+            for (int i = 0; i < n; i++) {
+                sorted[i] = i;
+            }
+            java.util.Arrays.sort(sorted, (a, b) -> Double.compare(from[a], from[b]));
+            int start = 0;
+            double reach = Double.NEGATIVE_INFINITY;
+            for (int i = 0; i <= n; i++) {
+                if (i == n || (i > start && from[sorted[i]] > reach)) {
+                    double nest = Double.NEGATIVE_INFINITY;
+                    for (int j = start; j < i; j++) {
+                        nest = Math.max(nest, need[group.get(sorted[j])]);
+                    }
+                    for (int j = start; j < i; j++) {
+                        result[group.get(sorted[j])] = nest;
+                    }
+                    start = i;
+                    reach = Double.NEGATIVE_INFINITY;
+                }
+                if (i < n) {
+                    reach = Math.max(reach, to[sorted[i]]);
+                }
+            }
+        }
+        return result;
     }
 
     /**
