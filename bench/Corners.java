@@ -1,19 +1,15 @@
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.PolygonSoup;
-import ifold.refine.FacePreparation;
-import ifold.refine.HamiltonianRefinement;
+import ifold.job.WrapPath;
 import ifold.wrap.LayerFloor;
+import ifold.wrap.Seam;
 import ifold.wrap.Wrap;
-import ifold.wrap.WrapAnalysis;
-import ifold.wrap.PaperInSpace;
-import java.util.ArrayList;
-import java.util.List;
 
 /**
  * Tucks and layers against the sharpness of a corner (docs/wrap.md): a tetrahedron on a unit
  * equilateral base whose three side faces have an apex angle of A degrees, wrapped at the
- * default width as ifold wrap does.
+ * default width as ifold wrap does (prepared, refined, and begun where its layers are fewest).
  */
 public final class Corners {
     public static void main(String[] args) throws Exception {
@@ -25,12 +21,9 @@ public final class Corners {
             long start = System.nanoTime();
             String row;
             try {
-                Wrap.Result result = Wrap.wrap(HamiltonianRefinement.refine(FacePreparation.prepare(spike).mesh()),
-                        new Wrap.Options(Double.NaN, Double.NaN));
-                List<PaperInSpace> geometries = new ArrayList<>();
-                for (Wrap.Strip strip : result.strips()) {
-                    geometries.add(PaperInSpace.of(strip.sheet(), result.frames()));
-                }
+                Seam.Chosen chosen = Seam.wrap(WrapPath.of(spike).refinement(), new Wrap.Options(Double.NaN, Double.NaN),
+                        Wrap.Watcher.NONE);
+                Wrap.Result result = chosen.result();
                 int[] tucks = new int[result.mesh().faceCount()];
                 for (Wrap.Step step : result.steps()) {
                     if (step.kind() == Wrap.Kind.TUCK) {
@@ -42,7 +35,7 @@ public final class Corners {
                     most = Math.max(most, t);
                 }
                 row = String.format(java.util.Locale.ROOT, "| %s° | %d | %d | %d | %d | %d | %.1f |", arg, result.count(Wrap.Kind.TUCK), most,
-                        WrapAnalysis.of(result, geometries).maxLayers(), LayerFloor.of(spike).layers(),
+                        chosen.placed().analysis().maxLayers(), LayerFloor.of(spike).layers(),
                         result.strips().get(0).sheet().faceCount(),
                         (System.nanoTime() - start) * 1e-9);
             } catch (Wrap.WrapException e) {

@@ -29,19 +29,10 @@ public record LayerFloor(int vertex, double[] point, double angleSum, int layers
 
     /** The floor of {@code mesh}, a triangle mesh with at least one face. */
     public static LayerFloor of(IndexedPolygons mesh) {
-        double[] sums = new double[mesh.vertexCount()];
-        boolean[] used = new boolean[mesh.vertexCount()];
-        for (int f = 0; f < mesh.faceCount(); f++) {
-            int n = mesh.faceSize(f);
-            for (int k = 0; k < n; k++) {
-                int v = mesh.faceVertex(f, k);
-                sums[v] += angle(mesh, v, mesh.faceVertex(f, (k + 1) % n), mesh.faceVertex(f, (k + n - 1) % n));
-                used[v] = true;
-            }
-        }
+        double[] sums = angleSums(mesh);
         int sharpest = -1;
         for (int v = 0; v < sums.length; v++) {
-            if (used[v] && (sharpest < 0 || sums[v] < sums[sharpest])) {
+            if (!Double.isNaN(sums[v]) && (sharpest < 0 || sums[v] < sums[sharpest])) {
                 sharpest = v;
             }
         }
@@ -54,8 +45,32 @@ public record LayerFloor(int vertex, double[] point, double angleSum, int layers
         return new LayerFloor(sharpest, new double[] {mesh.coordinate(sharpest, 0), mesh.coordinate(sharpest, 1), mesh.coordinate(sharpest, 2)}, sum, layers);
     }
 
+    /** The sum of the face angles about each vertex of {@code mesh}, in radians; NaN at a vertex of no face. */
+    static double[] angleSums(IndexedPolygons mesh) {
+        double[] sums = new double[mesh.vertexCount()];
+        java.util.Arrays.fill(sums, Double.NaN);
+        for (int f = 0; f < mesh.faceCount(); f++) {
+            int n = mesh.faceSize(f);
+            for (int k = 0; k < n; k++) {
+                int v = mesh.faceVertex(f, k);
+                double angle = angle(mesh, v, mesh.faceVertex(f, (k + 1) % n), mesh.faceVertex(f, (k + n - 1) % n));
+                sums[v] = Double.isNaN(sums[v]) ? angle : sums[v] + angle;
+            }
+        }
+        return sums;
+    }
+
+    /**
+     * Whether a vertex of angle sum {@code angleSum} (radians) is sharp: one where every strip
+     * lays at least two layers, its sum under a right angle (a spike's apex; a cube's corner,
+     * 270°, is not, nor a tetrahedron's, 180°).
+     */
+    static boolean sharp(double angleSum) {
+        return angleSum < Math.PI / 2 * (1 - 1e-9); // the 30° spike's right angle, summed with rounding, is none
+    }
+
     /** The angle at corner v between the edges to a and to b, in radians (a triangle's corner: at most π). */
-    private static double angle(IndexedPolygons mesh, int v, int a, int b) {
+    static double angle(IndexedPolygons mesh, int v, int a, int b) {
         double ux = mesh.coordinate(a, 0) - mesh.coordinate(v, 0);
         double uy = mesh.coordinate(a, 1) - mesh.coordinate(v, 1);
         double uz = mesh.coordinate(a, 2) - mesh.coordinate(v, 2);

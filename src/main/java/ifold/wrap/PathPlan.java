@@ -6,6 +6,7 @@ import static ifold.wrap.Wrap.sq;
 
 import ifold.geom.Tolerance;
 import ifold.mesh.IndexedPolygons;
+import ifold.refine.FacePreparation;
 import ifold.sheet.HostFrame;
 import ifold.wrap.Wrap.Ends;
 import ifold.wrap.Wrap.TooWideException;
@@ -136,7 +137,8 @@ final class PathPlan {
      * The last triangle may be entered by either end of the edge before it: the one the passes
      * of the triangle before lead to, when it takes the width, so that no pass is run twice.
      */
-    static void chooseLastStart(IndexedPolygons mesh, PathPlan plan, double width, double widest) throws WrapException {
+    static void chooseLastStart(IndexedPolygons mesh, PathPlan plan, double width, double widest, double[] angleSums)
+            throws WrapException {
         if (plan.m == 1) {
             if (plan.frames[0].altitude() < width * (1 - 1e-12)) {
                 throw new TooWideException(tooWide(mesh, plan.first, 0, 1, width, plan.frames[0].altitude(), widest));
@@ -149,6 +151,16 @@ final class PathPlan {
         int lastDirection = firstDirection(plan, before, width) * (passes % 2 == 1 ? 1 : -1);
         int preferred = lastDirection > 0 ? plan.baseTo[before] : plan.baseFrom[before];
         int other = preferred == plan.baseTo[before] ? plan.baseFrom[before] : plan.baseTo[before];
+        if (sharpCorner(mesh, plan, preferred, angleSums) && !sharpCorner(mesh, plan, other, angleSums)) {
+            // Not entered at a sharp vertex: the triangle before would leave by it, its last pass,
+            // the fold back and this one's first pass each reaching round the vertex with a side
+            // of the strip, about 180°/θ layers each where tucks bounce them in a corner of θ (on
+            // the shared spike, 217 layers by its apex against 81); the triangle before takes a
+            // pass more instead (StripFolding's evenedUp), its last pass running away from it.
+            int swap = preferred;
+            preferred = other;
+            other = swap;
+        }
         int last = plan.m - 1;
         for (int s : new int[] {preferred, other}) {
             plan.start[last] = s;
@@ -158,6 +170,22 @@ final class PathPlan {
             }
         }
         throw new TooWideException(tooWide(mesh, plan.first + last, last, plan.m, width, plan.frames[last].altitude(), widest));
+    }
+
+    /**
+     * Whether the last triangle of {@code plan} has a true sharp corner at vertex v, an end of the
+     * edge before it: v is a sharp vertex ({@link LayerFloor#sharp}) and the triangle's angle
+     * there is under the preparation's target, which no preparation widens (a lone flat
+     * triangle's corners, of 50° and more, are sharp vertices but not such corners).
+     */
+    private static boolean sharpCorner(IndexedPolygons mesh, PathPlan plan, int v, double[] angleSums) {
+        if (!LayerFloor.sharp(angleSums[v])) {
+            return false;
+        }
+        int[] c = plan.corners[plan.m - 1];
+        int k = v == c[0] ? 0 : v == c[1] ? 1 : 2;
+        double angle = LayerFloor.angle(mesh, v, c[(k + 1) % 3], c[(k + 2) % 3]);
+        return Math.toDegrees(angle) < FacePreparation.TARGET_ANGLE;
     }
 
     /**

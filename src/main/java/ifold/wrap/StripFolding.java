@@ -86,6 +86,15 @@ final class StripFolding {
     private final Isometry2[] toHost;
     /** The triangle being wrapped's frame into its host's. */
     private Isometry2 intoHost;
+    /**
+     * Where the triangle being wrapped stops short of a sharp corner of its host at an end of its
+     * base: the x of its frame that no turn, fold back or end passes towards that end; NaN where none.
+     */
+    private double stopX = Double.NaN;
+    /** The end of the base that {@link #stopX} keeps clear: +1 its end at x = base length, -1 at x = 0. */
+    private int stopSide;
+    /** The path's triangles (from 0) on each host, found when a triangle at a sharp corner first asks. */
+    private Map<Integer, List<Integer>> pathOnHost;
 
     StripFolding(IndexedPolygons mesh, PathPlan plan, int strip, double width, double thickness, double tolerance, List<Step> steps,
             int maxFaces, HostPieces pieces, HostFrame[] hostFrames, Isometry2[] toHost) {
@@ -140,6 +149,7 @@ final class StripFolding {
         int k = passes(h, w);
         int d = firstDirection(plan, i, w);
         double[] hostCorners = hostFrames[hostOf(i)].corners();
+        stopShort(i, frame, hostCorners);
         double[] bottom = last ? null : evenedUp(edges, k, d, i, hostCorners);
         if (bottom != null) {
             k = bottom.length;
@@ -221,8 +231,9 @@ final class StripFolding {
      * whatever lies there, by the two turns nearest the middle whose gadgets lie on the host and
      * on no other's, else by the two nearest the middle. Null where the last pass runs the right
      * way, where the fold back at the wrong end lies on the host or on no pile and that end is no
-     * corner of the host, on a host with a corner under 20°, or where no two turns have their
-     * gadgets so.
+     * corner of the host, on a host with a corner under 20° unless the wrong end is that corner
+     * and the triangle does not stop short of it ({@link #stopShort}: evened up there as at a
+     * corner), or where no two turns have their gadgets so.
      */
     private double[] evenedUp(SlantedEdges edges, int k, int d, int i, double[] host) {
         int towardsExit = plan.start[i + 1] == plan.baseTo[i] ? 1 : -1;
@@ -237,15 +248,23 @@ final class StripFolding {
         // At a corner of the host: the fold back would reach round it, off both its edges, and the
         // passes are evened up whatever lies there (the tetrahedron, octahedron and icosahedron
         // 11 -> 10 layers, figure3 24 -> 20).
-        boolean atCorner = roundsCorner(cornerAngle(lastDirection > 0 ? plan.baseTo[i] : plan.baseFrom[i], hostOf(i), host));
+        double wrongCorner = cornerAngle(lastDirection > 0 ? plan.baseTo[i] : plan.baseFrom[i], hostOf(i), host);
+        // At a true sharp corner that this triangle covers (it does not stop short of it): the last
+        // pass and the fold back would each reach round the corner with a side of the strip, where
+        // the turn into a last pass running away from it is one side; each side there is about
+        // 180°/θ layers of flaps bounced between the corner's edges (the shared spike's faces 144
+        // layers by the apex, 80 evened up).
+        boolean sharpEnd = wrongCorner < FacePreparation.TARGET_ANGLE && Double.isNaN(stopX);
+        boolean atCorner = sharpEnd || roundsCorner(wrongCorner);
         if (!atCorner && clearOf(gadgetRegion(edges, lastDirection, 0, w), hostOf(i), true)) {
             return null;
         }
-        if (smallestAngle(host) < FacePreparation.TARGET_ANGLE) {
+        if (!sharpEnd && smallestAngle(host) < FacePreparation.TARGET_ANGLE) {
             // A true sharp corner of the solid, which no preparation widens: its tucks fold the
             // paper about lines by its convex edges, where nested folds have no room to stand
             // apart, and the turns moved put two of them on one line there (on the shared spike,
-            // a pair of caps lay on each other, a thousandth of a thickness wide). Left as it was.
+            // a pair of caps lay on each other, a thousandth of a thickness wide). Left as it was,
+            // but at the corner itself (above).
             return null;
         }
         double h = edges.h();
@@ -416,7 +435,83 @@ final class StripFolding {
 
     /** Where a pass in the band [y, y + w] running in direction d ends: just beyond the slanted edge ahead. */
     private double endOfPass(SlantedEdges edges, int d, double y) {
-        return d > 0 ? edges.rightmost(y, y + w) + margin : edges.leftmost(y, y + w) - margin;
+        return stopped(d, d > 0 ? edges.rightmost(y, y + w) + margin : edges.leftmost(y, y + w) - margin);
+    }
+
+    /** A fold at x of a pass running in direction d, moved back to {@link #stopX} where it would pass it. */
+    private double stopped(int d, double x) {
+        if (Double.isNaN(stopX) || d != stopSide) {
+            return x;
+        }
+        return d > 0 ? Math.min(x, stopX) : Math.max(x, stopX);
+    }
+
+    /**
+     * Sets {@link #stopX} for triangle i: where an end V of its base is a corner of its host
+     * sharper than the preparation's target (a true sharp corner of the solid), its base lies
+     * inside the host, it does not leave by V, and another triangle of the host covers the host's
+     * whole width near V (one entered at V, whose first passes run across the corner, or one
+     * whose base lies along the host's edge from V, whose last pass spans the host there):
+     * {@link #STOP_SHORT} of the distance from V at which a strip's width along one of the
+     * corner's edges spans the corner. Its turns towards V would lie beyond V, and each piece
+     * of paper there bounces between the corner's edges about 180°/θ times, laying as many
+     * layers (on the shared spike, 216 of its 218 layers were the flaps of such turns).
+     */
+    private void stopShort(int i, HostFrame frame, double[] hostCorners) {
+        stopX = Double.NaN;
+        if (!baseInsideHost(i, frame, hostCorners)) {
+            return;
+        }
+        for (int side : new int[] {-1, 1}) {
+            int v = side > 0 ? plan.baseTo[i] : plan.baseFrom[i];
+            double degrees = cornerAngle(v, hostOf(i), hostCorners);
+            boolean leavesBy = i + 1 < plan.m && plan.start[i + 1] == v;
+            if (degrees < FacePreparation.TARGET_ANGLE && !leavesBy && coveredAt(i, v, hostCorners)) {
+                double reach = STOP_SHORT * w / Math.tan(Math.toRadians(degrees));
+                stopX = side > 0 ? frame.baseLength() - reach : reach;
+                stopSide = side;
+                return;
+            }
+        }
+    }
+
+    /**
+     * How near a sharp corner of its host a triangle stopped short of it turns, as a share of
+     * the distance at which a strip's width along one of the corner's edges spans the corner.
+     * On the shared spike 0.1 to 0.5 cover the surface and give the same layers; at 0.75 a
+     * sliver by the apex is left bare (coverage 0.9999999).
+     */
+    static final double STOP_SHORT = 0.5;
+
+    /** Whether path triangle i's base lies inside its host rather than along the host's edge. */
+    private boolean baseInsideHost(int i, HostFrame frame, double[] hostCorners) {
+        Isometry2 into = toHost[plan.first + i];
+        double x = frame.baseLength() / 2;
+        return insideConvex(hostCorners, into.x(x, -margin), into.y(x, -margin));
+    }
+
+    /**
+     * Whether another triangle of path triangle i's host, with a corner at vertex v, covers the
+     * host's whole width near v: one entered at v, or one whose base lies along the host's edge.
+     */
+    private boolean coveredAt(int i, int v, double[] hostCorners) {
+        if (pathOnHost == null) {
+            // Once, and only for a path with a triangle at a sharp corner: a walk of the path for
+            // each such triangle would cost a needle of many corners the square of its triangles.
+            pathOnHost = new HashMap<>();
+            for (int j = 0; j < plan.m; j++) {
+                pathOnHost.computeIfAbsent(hostOf(j), host -> new ArrayList<>()).add(j);
+            }
+        }
+        for (int j : pathOnHost.get(hostOf(i))) {
+            if (j == i || (plan.baseFrom[j] != v && plan.baseTo[j] != v && plan.start[j] != v)) {
+                continue;
+            }
+            if (plan.start[j] == v || !baseInsideHost(j, plan.frames[j], hostCorners)) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /**
@@ -442,7 +537,7 @@ final class StripFolding {
 
     /** A turn beyond a slanted edge from the pass in band [y, y + w] running in direction d to the band [next, next + w]. */
     private void turn(SlantedEdges edges, int d, double y, double next, int host) throws FoldException, WrapException {
-        double x1 = d > 0 ? edges.rightmost(next, y + w) + margin : edges.leftmost(next, y + w) - margin;
+        double x1 = stopped(d, d > 0 ? edges.rightmost(next, y + w) + margin : edges.leftmost(next, y + w) - margin);
         double shift = y - next;
         if (Math.abs(shift - w) <= Tolerance.RELATIVE_EQUALITY * w) {
             // A valley fold lays the strip back across itself along the edge, a mountain fold
@@ -490,8 +585,8 @@ final class StripFolding {
         double lx = -d + ox;
         double ly = oy;
         double reach = Math.abs(w / 2 * lx / ly);
-        double fold = d > 0 ? Math.max(edges.rightmost(0, w) + margin, meetX + reach)
-                : Math.min(edges.leftmost(0, w) - margin, meetX - reach);
+        double fold = d > 0 ? Math.max(stopped(d, edges.rightmost(0, w) + margin), meetX + reach)
+                : Math.min(stopped(d, edges.leftmost(0, w) - margin), meetX - reach);
         detail = "fold back across the strip";
         tailFold(Kind.TURN_GADGET, host, fold, 0, 0, 1, Placement.OVER);
         detail = "turn to run along the next triangle's first pass";

@@ -510,6 +510,7 @@ public final class Wrap {
         }
         List<Strip> strips = new ArrayList<>();
         List<Step> steps = new ArrayList<>();
+        double[] angleSums = LayerFloor.angleSums(mesh);
         for (int c = 0; c < plans.size(); c++) {
             PathPlan plan = plans.get(c);
             for (int i = 0; i + 1 < plan.m; i++) {
@@ -517,7 +518,7 @@ public final class Wrap {
                     throw new TooWideException(tooWide(mesh, plan.first + i, i, plan.m, width, plan.frames[i].altitude(), widest));
                 }
             }
-            chooseLastStart(mesh, plan, width, widest);
+            chooseLastStart(mesh, plan, width, widest, angleSums);
             for (int i = 0; i < plan.m; i++) {
                 triangleFrames[plan.first + i] = plan.frames[i];
             }

@@ -79,20 +79,27 @@ public class CornerTucksTest {
 
     /**
      * A corner of 0.9° wraps, and makes at least the floor counted for it (its passes' and 2
-     * faces a tuck for its 200 bounces), and not far over the likely figure.
+     * faces a tuck for its 200 bounces), and not far over the likely figure; its tucks are at
+     * least 3/4 of the bounces counted.
      */
     @Test
     void aSharpCornerMakesItsFloorAndAboutItsLikelyFaces() throws Exception {
         HamiltonianRefinement.Result sharp = needle(0.9);
         Wrap.Result result = Wrap.wrap(sharp, new Wrap.Options(Double.NaN, Double.NaN));
         List<PathPlan> plans = PathPlan.plans(sharp.mesh(), sharp.componentStart(), null);
-        PathPlan.chooseLastStart(sharp.mesh(), plans.get(0), result.width(), result.widest()); // as the wrap does
+        // As the wrap does.
+        PathPlan.chooseLastStart(sharp.mesh(), plans.get(0), result.width(), result.widest(), LayerFloor.angleSums(sharp.mesh()));
         HostPieces pieces = HostPieces.of(sharp.mesh());
         CornerTucks corners = CornerTucks.of(sharp.mesh(), pieces);
         long floor = PathPlan.faces(plans, result.width(), pieces.alone(), false) + corners.fewestFaces();
         long likely = PathPlan.faces(plans, result.width(), pieces.alone(), true) + corners.likelyFaces(plans, result.width());
         int faces = result.strips().get(0).sheet().faceCount();
-        assertTrue(result.count(Wrap.Kind.TUCK) >= corners.tucks(), result.count(Wrap.Kind.TUCK) + " tucks, counted " + corners.tucks());
+        // One piece of paper reaches round the corner, the turn into a last pass running away
+        // from it (StripFolding.stopShort, evenedUp): its 135° there bounce 3/4 of a half disk's
+        // 180/θ times, 151 tucks of the 200 counted (and 271 of 360 at 0.5°, 451 of 600 at
+        // 0.3°); they were 201. The faces they make still pass the floor: 2,111 against 962.
+        int tucks = result.count(Wrap.Kind.TUCK);
+        assertTrue(tucks >= 3 * corners.tucks() / 4, tucks + " tucks, counted " + corners.tucks());
         assertTrue(faces >= floor && faces < 1.5 * likely, faces + " faces, floor " + floor + ", likely " + likely);
     }
 
