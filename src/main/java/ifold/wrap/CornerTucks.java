@@ -82,9 +82,9 @@ final class CornerTucks {
     /**
      * The tucks a corner of {@code degrees} likely takes: a flap's bounces, 180/θ. Where only
      * the turn into a last pass reaches round the corner ({@code StripFolding.stopShort}), the
-     * 135° of paper there take 3/4 of them (a needle's 0.9°, 0.5° and 0.3° corners 151, 271 and
-     * 451 tucks), each cutting more than 2 faces: the faces counted stay under those made
-     * (2,111 against a floor of 962 at 0.9°).
+     * 135° of paper there take 3/4 of them (a needle's 0.9°, 0.5° and 0.3° corners about 150,
+     * 270 and 450 tucks), each cutting more than 2 faces: the faces counted stay under those made
+     * (begun at its own start, 2,111 against a floor of 962 at 0.9°).
      */
     static long tucks(double degrees) {
         return (long) Math.ceil(180 / degrees);

@@ -93,6 +93,13 @@ final class StripFolding {
     private double stopX = Double.NaN;
     /** The end of the base that {@link #stopX} keeps clear: +1 its end at x = base length, -1 at x = 0. */
     private int stopSide;
+    /**
+     * The end of the triangle being wrapped's base that is a true sharp corner of its host and
+     * that it covers, not stopping short of it (+1 at x = base length, -1 at x = 0, 0 none), and
+     * that end's x.
+     */
+    private int sharpSide;
+    private double sharpX;
     /** The path's triangles (from 0) on each host, found when a triangle at a sharp corner first asks. */
     private Map<Integer, List<Integer>> pathOnHost;
 
@@ -150,6 +157,7 @@ final class StripFolding {
         int d = firstDirection(plan, i, w);
         double[] hostCorners = hostFrames[hostOf(i)].corners();
         stopShort(i, frame, hostCorners);
+        sharpEnd(i, frame, hostCorners);
         double[] bottom = last ? null : evenedUp(edges, k, d, i, hostCorners);
         if (bottom != null) {
             k = bottom.length;
@@ -475,6 +483,18 @@ final class StripFolding {
         }
     }
 
+    /** Sets {@link #sharpSide} for triangle i, once {@link #stopShort} has set whether it stops short. */
+    private void sharpEnd(int i, HostFrame frame, double[] hostCorners) {
+        sharpSide = 0;
+        for (int side : new int[] {-1, 1}) {
+            int v = side > 0 ? plan.baseTo[i] : plan.baseFrom[i];
+            if (Double.isNaN(stopX) && cornerAngle(v, hostOf(i), hostCorners) < FacePreparation.TARGET_ANGLE) {
+                sharpSide = side;
+                sharpX = side > 0 ? frame.baseLength() : 0;
+            }
+        }
+    }
+
     /**
      * How near a sharp corner of its host a triangle stopped short of it turns, as a share of
      * the distance at which a strip's width along one of the corner's edges spans the corner.
@@ -538,6 +558,14 @@ final class StripFolding {
     /** A turn beyond a slanted edge from the pass in band [y, y + w] running in direction d to the band [next, next + w]. */
     private void turn(SlantedEdges edges, int d, double y, double next, int host) throws FoldException, WrapException {
         double x1 = stopped(d, d > 0 ? edges.rightmost(next, y + w) + margin : edges.leftmost(next, y + w) - margin);
+        if (d == sharpSide && Math.abs(x1 - d * margin - sharpX) <= Tolerance.RELATIVE_EQUALITY * w) {
+            // The turn into the pass along the base, at a true sharp corner this triangle covers:
+            // its creases meet at the corner itself, no margin beyond it. Paper beyond the corner,
+            // however little, reaches round it and bounces there (the shared spike 81 layers with
+            // a margin of a hundredth of a width, 74 with none; the 1° spike 198 and 180, the
+            // 180/θ of one side of the strip).
+            x1 = sharpX;
+        }
         double shift = y - next;
         if (Math.abs(shift - w) <= Tolerance.RELATIVE_EQUALITY * w) {
             // A valley fold lays the strip back across itself along the edge, a mountain fold

@@ -96,8 +96,8 @@ public class CornerTucksTest {
         int faces = result.strips().get(0).sheet().faceCount();
         // One piece of paper reaches round the corner, the turn into a last pass running away
         // from it (StripFolding.stopShort, evenedUp): its 135° there bounce 3/4 of a half disk's
-        // 180/θ times, 151 tucks of the 200 counted (and 271 of 360 at 0.5°, 451 of 600 at
-        // 0.3°); they were 201. The faces they make still pass the floor: 2,111 against 962.
+        // 180/θ times, 151 tucks of the 200 counted (and about 270 of 360 at 0.5°, 450 of
+        // 600 at 0.3°); they were 201. The faces they make still pass the floor: 2,111 against 962.
         int tucks = result.count(Wrap.Kind.TUCK);
         assertTrue(tucks >= 3 * corners.tucks() / 4, tucks + " tucks, counted " + corners.tucks());
         assertTrue(faces >= floor && faces < 1.5 * likely, faces + " faces, floor " + floor + ", likely " + likely);
