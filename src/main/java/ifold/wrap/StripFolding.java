@@ -241,7 +241,9 @@ final class StripFolding {
      * way, where the fold back at the wrong end lies on the host or on no pile and that end is no
      * corner of the host, on a host with a corner under 20° unless the wrong end is that corner
      * and the triangle does not stop short of it ({@link #stopShort}: evened up there as at a
-     * corner), or where no two turns have their gadgets so.
+     * corner), or where no two turns have their gadgets so. A triangle that stops short of a
+     * sharp corner and leaves by it is evened up the other way: its last pass runs away from
+     * that corner, the fold back lying at the other end.
      */
     private double[] evenedUp(SlantedEdges edges, int k, int d, int i, double[] host) {
         int towardsExit = plan.start[i + 1] == plan.baseTo[i] ? 1 : -1;
@@ -250,7 +252,14 @@ final class StripFolding {
         // of other triangles' gadgets or tucks already there. Everywhere, the torus of 5,000
         // triangles made 674,259 faces rather than 641,752 (more than the default limit) for no
         // layer fewer: its small hosts have their fold backs apart.
-        if (k < 2 || lastDirection == towardsExit || gadgetOnHost(edges, lastDirection, 0, w, host)) {
+        // Left by a sharp corner it stops short of (the next triangle entered there): its last
+        // pass runs away from the corner and the strip back along it to the turn into the next,
+        // rather than into the corner and a fold back beyond it, so that its last pass, the fold
+        // back and the next first pass are not three sides of the strip round the corner (a
+        // square pyramid of 2.5° faces had two such corners of a face, 216 layers, now 74).
+        boolean leavesBySharp = !Double.isNaN(stopX) && plan.start[i + 1] == (stopSide > 0 ? plan.baseTo[i] : plan.baseFrom[i]);
+        if (leavesBySharp ? k < 2 || lastDirection != towardsExit
+                : k < 2 || lastDirection == towardsExit || gadgetOnHost(edges, lastDirection, 0, w, host)) {
             return null;
         }
         // At a corner of the host: the fold back would reach round it, off both its edges, and the
@@ -263,11 +272,11 @@ final class StripFolding {
         // 180°/θ layers of flaps bounced between the corner's edges (the shared spike's faces 144
         // layers by the apex, 80 evened up).
         boolean sharpEnd = wrongCorner < FacePreparation.TARGET_ANGLE && Double.isNaN(stopX);
-        boolean atCorner = sharpEnd || roundsCorner(wrongCorner);
+        boolean atCorner = leavesBySharp || sharpEnd || roundsCorner(wrongCorner);
         if (!atCorner && clearOf(gadgetRegion(edges, lastDirection, 0, w), hostOf(i), true)) {
             return null;
         }
-        if (!sharpEnd && smallestAngle(host) < FacePreparation.TARGET_ANGLE) {
+        if (!sharpEnd && !leavesBySharp && smallestAngle(host) < FacePreparation.TARGET_ANGLE) {
             // A true sharp corner of the solid, which no preparation widens: its tucks fold the
             // paper about lines by its convex edges, where nested folds have no room to stand
             // apart, and the turns moved put two of them on one line there (on the shared spike,
@@ -457,13 +466,14 @@ final class StripFolding {
     /**
      * Sets {@link #stopX} for triangle i: where an end V of its base is a corner of its host
      * sharper than the preparation's target (a true sharp corner of the solid), its base lies
-     * inside the host, it does not leave by V, and another triangle of the host covers the host's
+     * inside the host, and another triangle of the host covers the host's
      * whole width near V (one entered at V, whose first passes run across the corner, or one
      * whose base lies along the host's edge from V, whose last pass spans the host there):
      * {@link #STOP_SHORT} of the distance from V at which a strip's width along one of the
      * corner's edges spans the corner. Its turns towards V would lie beyond V, and each piece
      * of paper there bounces between the corner's edges about 180°/θ times, laying as many
-     * layers (on the shared spike, 216 of its 218 layers were the flaps of such turns).
+     * layers (on the shared spike, 216 of its 218 layers were the flaps of such turns). One
+     * that leaves by V runs its last pass away from V ({@link #evenedUp}) and back.
      */
     private void stopShort(int i, HostFrame frame, double[] hostCorners) {
         stopX = Double.NaN;
@@ -473,8 +483,7 @@ final class StripFolding {
         for (int side : new int[] {-1, 1}) {
             int v = side > 0 ? plan.baseTo[i] : plan.baseFrom[i];
             double degrees = cornerAngle(v, hostOf(i), hostCorners);
-            boolean leavesBy = i + 1 < plan.m && plan.start[i + 1] == v;
-            if (degrees < FacePreparation.TARGET_ANGLE && !leavesBy && coveredAt(i, v, hostCorners)) {
+            if (degrees < FacePreparation.TARGET_ANGLE && coveredAt(i, v, hostCorners)) {
                 double reach = STOP_SHORT * w / Math.tan(Math.toRadians(degrees));
                 stopX = side > 0 ? frame.baseLength() - reach : reach;
                 stopSide = side;

@@ -112,7 +112,7 @@ class WrappedPaperCollisionsTest {
         assertTrue(result.isClean(), result::summary);
     }
 
-    /** The shared polyhedra without concave edges: clean, the spike's 216 layers at its apex too (from the refinement's own start). */
+    /** The shared polyhedra without concave edges: clean, the spike's 74 layers at its apex too. */
     @ParameterizedTest
     @ValueSource(strings = {"dodecahedron.off", "hex_prism.off", "house.off", "long_box.off", "spike.off"})
     void wrapsOfTheSharedConvexPolyhedraAreClean(String name) throws Exception {

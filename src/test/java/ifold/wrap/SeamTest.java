@@ -143,7 +143,7 @@ class SeamTest {
         return WrapTest.polyhedra();
     }
 
-    /** The shared polyhedra as the wrap command wraps them: the spike's 216 layers are 74 from three quarters of the way round. */
+    /** The shared polyhedra as the wrap command wraps them: the spike's 74 layers from every start. */
     @ParameterizedTest
     @MethodSource("polyhedra")
     void theSharedPolyhedraFromTheirBestStart(String name) throws Exception {
