@@ -28,17 +28,17 @@ public final class Reports {
 
     /**
      * Why a wrap is not to be trusted, or null: paper stretched by more than rounding should
-     * leave ({@link Tolerance#RELATIVE_EQUALITY} of a face's size) was made by arithmetic that
-     * could not hold the model, and is no wrap of it, whatever else it got right.
+     * leave ({@link Tolerance#RELATIVE_EQUALITY} of a face's size, or far along a long strip the
+     * drift of its poses, {@link WrapAnalysis#stretch}) was made by arithmetic that could not hold
+     * the model, and is no wrap of it, whatever else it got right.
      */
     public static String stretched(WrapAnalysis analysis) {
-        double error = analysis.isometryError();
-        if (!(error > Tolerance.RELATIVE_EQUALITY)) {
+        if (!(analysis.stretch() > 1)) {
             return null;
         }
-        return String.format(Locale.ROOT, "the paper came out stretched (isometry error %.1e, more than %.0e of a face's size):"
-                + " rounding at the model's coordinates is coarser than its folds; a model with parts far apart can be"
-                + " wrapped part by part", error, Tolerance.RELATIVE_EQUALITY);
+        return String.format(Locale.ROOT, "the paper came out stretched (isometry error %.1e of a face's size, %.3g times what"
+                + " rounding allows there): rounding at the model's coordinates is coarser than its folds; a model with parts far"
+                + " apart can be wrapped part by part", analysis.isometryError(), analysis.stretch());
     }
 
     /** A point in space as the messages write it: shortest round-trip decimals. */

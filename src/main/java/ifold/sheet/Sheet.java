@@ -107,7 +107,7 @@ public final class Sheet {
      * poses composed fold after fold: about the square root of the folds times the rounding of
      * one, 1e-16; a million folds, 1e-13; this leaves ten times that.
      */
-    static final double POSE_DRIFT = 1e-12;
+    public static final double POSE_DRIFT = 1e-12;
 
     /**
      * A strip of width {@code width} whose start, the edge u = 0, lies on {@code host} where

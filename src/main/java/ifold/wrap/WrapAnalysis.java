@@ -1,5 +1,6 @@
 package ifold.wrap;
 
+import ifold.geom.Tolerance;
 import ifold.io.Workers;
 import ifold.sheet.HostFrame;
 import ifold.sheet.Polygons2;
@@ -25,6 +26,11 @@ import java.util.concurrent.Future;
  * @param farthest the largest height of any paper above the surface
  * @param isometryError the largest difference between a face's distances in space and on the sheet, relative to its size (or the strip width),
  *     the paper as laid, before its creases creep at concave edges
+ * @param stretch the largest difference between a face's distances in space and on the sheet
+ *     over what rounding allows there: {@link Tolerance#RELATIVE_EQUALITY} of the face's size (as
+ *     for {@code isometryError}), or, far along a long strip, the drift of the poses composed fold
+ *     after fold ({@link Sheet#POSE_DRIFT} of u), the distance within which the sheet itself takes
+ *     two points as one; over 1, the paper came out stretched
  * @param creep the farthest a paper vertex stands back from where the paper was laid, at a concave edge of the model ({@link ConcaveWalls})
  * @param creasesInside creases lying inside the model's faces: count
  * @param creaseLengthInside and their length
@@ -33,7 +39,7 @@ import java.util.concurrent.Future;
  * @param deepest where the layers are most, and where they come from; null without paper
  */
 public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, double surfaceArea, double paperArea,
-        double outsidePaper, double farthest, double isometryError, double creep, int creasesInside, double creaseLengthInside,
+        double outsidePaper, double farthest, double isometryError, double stretch, double creep, int creasesInside, double creaseLengthInside,
         int creasesOnEdges, double creaseLengthOnEdges, Deepest deepest) {
 
     /**
@@ -144,8 +150,9 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
             int deepestTriangle = -1;
             double[] deepestPoint = null;
             double[] deepestCell = null;
-            List<Future<Double>> isometryParts = new ArrayList<>();
+            List<Future<double[]>> isometryParts = new ArrayList<>();
             double isometry = 0;
+            double stretch = 0;
             double creep = 0;
             try {
                 // The creases first, from the sheets alone, while the workers finish the hosts'
@@ -180,7 +187,7 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
                     for (int part = 1; part < parts; part++) {
                         int from = (int) ((long) faces * part / parts);
                         int to = (int) ((long) faces * (part + 1) / parts);
-                        isometryParts.add(Workers.pool().submit(() -> isometryError(geometry, result.width(), from, to)));
+                        isometryParts.add(Workers.pool().submit(() -> isometryErrors(geometry, result.width(), from, to)));
                     }
                 }
                 for (int k = 0; k < result.strips().size(); k++) {
@@ -209,15 +216,19 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
                 }
                 for (PaperInSpace geometry : geometries) {
                     int faces = geometry.paperFaces().size();
-                    isometry = Math.max(isometry, isometryError(geometry, result.width(), 0, (int) ((long) faces / parts)));
+                    double[] errors = isometryErrors(geometry, result.width(), 0, (int) ((long) faces / parts));
+                    isometry = Math.max(isometry, errors[0]);
+                    stretch = Math.max(stretch, errors[1]);
                     creep = Math.max(creep, geometry.creep().most(geometry));
                 }
-                for (Future<Double> part : isometryParts) {
-                    isometry = Math.max(isometry, Workers.result(part));
+                for (Future<double[]> part : isometryParts) {
+                    double[] errors = Workers.result(part);
+                    isometry = Math.max(isometry, errors[0]);
+                    stretch = Math.max(stretch, errors[1]);
                 }
             } finally {
                 cancel(); // none left running where one failed
-                for (Future<Double> part : isometryParts) {
+                for (Future<double[]> part : isometryParts) {
                     part.cancel(false);
                 }
             }
@@ -225,7 +236,7 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
                     : deepest(result.strips().get(deepestStrip).sheet(), deepestStrip, deepestTriangle, deepestPoint, deepestCell,
                             result.hostOf()[deepestTriangle], frames[result.hostOf()[deepestTriangle]]);
             return new WrapAnalysis(maxLayers, stackLevels, surface > 0 ? covered / surface : 0, surface, paper, outside, farthest,
-                    isometry, creep, inside, insideLength, onEdges, onEdgesLength, deepest);
+                    isometry, stretch, creep, inside, insideLength, onEdges, onEdgesLength, deepest);
         }
     }
 
@@ -406,15 +417,24 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
      * along a long strip cannot be exact to 1e-9 of its own size.
      */
     public static double isometryError(PaperInSpace geometry, double width) {
-        return isometryError(geometry, width, 0, geometry.paperFaces().size());
+        return isometryErrors(geometry, width, 0, geometry.paperFaces().size())[0];
     }
 
     /**
-     * {@link #isometryError(PaperInSpace, double)} over paper faces {@code from} to {@code to} - 1
-     * only: the most of parts is the whole's, to the bit, whatever the parts.
+     * Over paper faces {@code from} to {@code to} - 1: the {@link #isometryError(PaperInSpace,
+     * double)} and the {@code stretch} (see the record): the most of parts is the whole's, to the
+     * bit, whatever the parts.
+     *
+     * <p>Why the stretch allows for u: each fold composes the tail's pose once more, and the
+     * rounding of the poses grows with u ({@link Sheet#toleranceAt}). A scan's strip is narrow
+     * and long: the 5,558-triangle elephant of CGAL at width 0.00106, 1.1 million faces on, had
+     * slivers 2e-6 long at u = 75 to 787 whose corners, placed by poses of neighbouring faces,
+     * were 1e-12 to 1.3e-11 off: 1.2e-8 of the width, refused as stretched after 98 s, where the
+     * sheet takes points 7.9e-10 apart there as one.
      */
-    static double isometryError(PaperInSpace geometry, double width, int from, int to) {
+    static double[] isometryErrors(PaperInSpace geometry, double width, int from, int to) {
         double worst = 0;
+        double stretch = 0;
         // The paper as laid, before its creases creep at concave edges (a creep is measured on its
         // own): a crept vertex is taken where it was, looked up among the few that crept, once
         // for each corner of a face, and each distance on the sheet found once for each pair.
@@ -431,9 +451,11 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
                 laid = new double[3 * n];
                 onSheet = new double[n * n];
             }
+            double farthest = 0;
             for (int i = 0; i < n; i++) {
                 creep.laid(geometry, face[i], point);
                 System.arraycopy(point, 0, laid, 3 * i, 3);
+                farthest = Math.max(farthest, Math.abs(uv[2 * face[i]]));
             }
             double size = width;
             for (int i = 0; i < n; i++) {
@@ -443,14 +465,17 @@ public record WrapAnalysis(int maxLayers, int stackLevels, double coverage, doub
                     size = Math.max(size, sheet);
                 }
             }
+            double allowed = Math.max(Tolerance.RELATIVE_EQUALITY * size, Sheet.POSE_DRIFT * farthest);
             for (int i = 0; i < n; i++) {
                 for (int j = i + 1; j < n; j++) {
                     double space = Math.sqrt(Math.pow(laid[3 * i] - laid[3 * j], 2) + Math.pow(laid[3 * i + 1] - laid[3 * j + 1], 2)
                             + Math.pow(laid[3 * i + 2] - laid[3 * j + 2], 2));
-                    worst = Math.max(worst, Math.abs(space - onSheet[n * i + j]) / size);
+                    double difference = Math.abs(space - onSheet[n * i + j]);
+                    worst = Math.max(worst, difference / size);
+                    stretch = Math.max(stretch, difference / allowed);
                 }
             }
         }
-        return worst;
+        return new double[] {worst, stretch};
     }
 }

@@ -207,7 +207,7 @@ final class TruthIsometry {
                 if (zones != null && zones.nearer() != null) {
                     report.add(WrapTruths.ISOMETRIC, wrap.face(f) + ": " + zones.nearer());
                 }
-                if (!(error <= WrapTruths.RELATIVE)) {
+                if (!(error <= WrapTruths.RELATIVE) && !withinDrift(f, error)) {
                     zones = atFolds(f, zones, backToBack, thickness);
                     crept[f] = zones != null && creptOnly(f, zones);
                     if (!crept[f]) {
@@ -363,6 +363,23 @@ final class TruthIsometry {
             }
         }
         return true;
+    }
+
+    /**
+     * How far, relative to u, paper far along a long strip may stray from its sheet polygon: its
+     * poses are composed fold after fold, each rounding by about 1e-16, and a million folds gather
+     * about 1e-13 of u; ten times that (as the engine's sheet allows, Sheet.POSE_DRIFT).
+     */
+    static final double POSE_DRIFT = 1e-12;
+
+    /** Whether face f's departure {@code error} ({@link #isometryError}) is no more than its poses' drift where it lies along the strip. */
+    private boolean withinDrift(int f, double error) {
+        double farthest = 0;
+        for (int c = wrap.faceStart[f]; c < wrap.faceStart[f + 1]; c++) {
+            farthest = Math.max(farthest, Math.abs(wrap.uv[2 * wrap.cornerT[c]]));
+        }
+        double size = Math.max(wrap.surface.sheetSize(f), wrap.stripW[wrap.faceStrip[f]]);
+        return error * size <= POSE_DRIFT * farthest;
     }
 
     /**

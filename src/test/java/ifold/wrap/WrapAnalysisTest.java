@@ -1,6 +1,7 @@
 package ifold.wrap;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -112,5 +113,30 @@ class WrapAnalysisTest {
             }
         }
         return levels;
+    }
+
+    /**
+     * One triangle of paper a width w = 0.001 across and 2e-6 long (a sliver), laid at u along the
+     * strip with one corner {@code off} out of place in space.
+     */
+    private static double[] isometryErrors(double u, double off) {
+        double w = 1e-3;
+        double[] uv = {u, 0, u + 2e-6, 0, u, w};
+        double[] xyz = {0, 0, 0, 2e-6 + off, 0, 0, 0, w, 0};
+        PaperInSpace geometry = new PaperInSpace(xyz, uv, List.of(new int[] {0, 1, 2}), new int[1], List.of(), new int[0]);
+        return WrapAnalysis.isometryErrors(geometry, w, 0, 1);
+    }
+
+    @Test
+    void farAlongAStripThePosesDriftIsNoStretch() {
+        // 1.3e-11 off at u = 787 (as on CGAL's elephant, a strip 0.00106 wide): 1.3e-8 of the
+        // width, but under the drift the sheet itself allows there (1e-12 u = 7.9e-10).
+        double[] far = isometryErrors(787, 1.3e-11);
+        assertEquals(1.3e-8, far[0], 1e-10);
+        assertTrue(far[1] < 1, "within the poses' drift: " + far[1]);
+        // The same at the strip's start is stretched: 1.3e-11 against 1e-9 of the width, 1e-12.
+        assertTrue(isometryErrors(0, 1.3e-11)[1] > 1);
+        // And far along, a corner 1e-8 out is more than any drift: stretched.
+        assertTrue(isometryErrors(787, 1e-8)[1] > 1);
     }
 }

@@ -146,6 +146,46 @@ class WrapTruthsTest {
         assertBroken(violations, WrapTruths.ISOMETRIC, "face 1 (line 12, strip-1)", "vertices 1 and 2", "0.9 apart in space but 1.0 on the sheet");
     }
 
+    /**
+     * A strip 0.001 wide and 787.000002 long on a model of that rectangle: one pair of triangles
+     * to u = 787, a sliver pair 2e-6 long after it, the far corner of the sliver at (787.000002,
+     * 0) laid {@code off} out along the strip in space.
+     */
+    private static List<Violation> farSliver(double off) {
+        double w = 0.001;
+        double end = 787.000002;
+        String obj = String.format(java.util.Locale.ROOT, """
+                o strip-1
+                v 0 0 0.005
+                vt 0 0
+                v 787 0 0.005
+                vt 787 0
+                v 787 %2$s 0.005
+                vt 787 %2$s
+                v 0 %2$s 0.005
+                vt 0 %2$s
+                v %3$s 0 0.005
+                vt %1$s 0
+                v %1$s %2$s 0.005
+                vt %1$s %2$s
+                g paper
+                f 1/1 2/2 3/3
+                f 1/1 3/3 4/4
+                f 2/2 5/5 6/6
+                f 2/2 6/6 3/3
+                """, end, w, end + off);
+        List<double[]> model = List.of(new double[] {0, 0, 0, end, 0, 0, end, w, 0}, new double[] {0, 0, 0, end, w, 0, 0, w, 0});
+        return WrapTruths.read(obj).check(model, T, 1, 200, 7);
+    }
+
+    @Test
+    void farAlongAStripThePosesDriftIsNoStretch() {
+        // 1.3e-11 out at u = 787: 1.3e-8 of the width, under the poses' drift there (7.9e-10), as
+        // CGAL's elephant wrapped at width 0.00106 had it; 1e-8 out is more than any drift.
+        assertEquals(List.of(), farSliver(1.3e-11));
+        assertBroken(farSliver(1e-8), WrapTruths.ISOMETRIC, "face 3", "is stretched");
+    }
+
     @Test
     void bentFaceBreaksPlanarityEvenWhereDistancesHold() {
         // One corner of a quad lifted by 1e-5 changes its distances by ~5e-11 only, but leaves the plane by ~2.5e-6.
