@@ -4,9 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
-import ifold.check.PaperCollisions;
-import ifold.job.Collisions;
-import ifold.job.WrapPath;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.PolygonSoup;
@@ -34,16 +31,7 @@ class SharpApexTest {
 
     /** Wraps {@code model} as the wrap command does, checks every truth and the collisions, and gives its most layers. */
     private int wrapAndCheck(HalfedgeMesh model) throws Exception {
-        Seam.Chosen chosen = Seam.wrap(WrapPath.of(model).refinement(), new Wrap.Options(Double.NaN, Double.NaN), Wrap.Watcher.NONE);
-        // The five truths on the OBJ, coverage, the floor and the layer order of the FOLD file.
-        WrapTest.check(dir, chosen.result(), model, 1, 2000);
-        PaperCollisions.Result collisions = PaperCollisions.check(Files.readString(dir.resolve("wrap.obj")),
-                chosen.result().thickness(), Collisions.modelTriangles(model));
-        assertEquals(0, collisions.crossingPairs(), collisions.summary());
-        assertEquals(0, collisions.coplanarPairs(), collisions.summary());
-        assertEquals(0, collisions.modelCrossings(), collisions.summary());
-        assertEquals(0, collisions.pointsInside(), collisions.summary());
-        return chosen.placed().analysis().maxLayers();
+        return WrapTest.wrapAsTheCommandDoesAndCheck(dir, model);
     }
 
     /**

@@ -1,15 +1,10 @@
 package ifold.wrap;
 
-import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import ifold.check.PaperCollisions;
-import ifold.job.Collisions;
-import ifold.job.WrapPath;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.io.MeshReaders;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -44,16 +39,7 @@ class SixtyDegreeCornersTest {
     void atMostNineLayersWithEveryCheck(String name, int most) throws Exception {
         HalfedgeMesh model = MeshBuilder.build(MeshReaders.read(Path.of("models", name + ".off")),
                 MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();
-        Seam.Chosen chosen = Seam.wrap(WrapPath.of(model).refinement(), new Wrap.Options(Double.NaN, Double.NaN), Wrap.Watcher.NONE);
-        // The five truths on the OBJ, coverage, the floor and the layer order of the FOLD file.
-        WrapTest.check(dir, chosen.result(), model, 1, 2000);
-        PaperCollisions.Result collisions = PaperCollisions.check(Files.readString(dir.resolve("wrap.obj")),
-                chosen.result().thickness(), Collisions.modelTriangles(model));
-        assertEquals(0, collisions.crossingPairs(), collisions.summary());
-        assertEquals(0, collisions.coplanarPairs(), collisions.summary());
-        assertEquals(0, collisions.modelCrossings(), collisions.summary());
-        assertEquals(0, collisions.pointsInside(), collisions.summary());
-        int layers = chosen.placed().analysis().maxLayers();
+        int layers = WrapTest.wrapAsTheCommandDoesAndCheck(dir, model);
         assertTrue(layers <= most, layers + " layers (10 with the turn into the last pass tucked into the corner)");
     }
 }

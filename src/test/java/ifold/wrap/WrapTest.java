@@ -118,6 +118,33 @@ public class WrapTest {
         assertTrue(order.valid(), order::summary);
     }
 
+    /** The collisions of a wrap's paper as written to {@code obj}, with the model's triangles. */
+    static ifold.check.PaperCollisions.Result collisions(Path obj, Wrap.Result result, IndexedPolygons model) throws Exception {
+        List<PaperInSpace> geometries = new ArrayList<>();
+        for (Wrap.Strip strip : result.strips()) {
+            geometries.add(PaperInSpace.of(strip.sheet(), result.frames()));
+        }
+        WrapExport.writeObj(obj, "test", result, geometries);
+        return ifold.check.PaperCollisions.check(Files.readString(obj), result.thickness(), ifold.job.Collisions.modelTriangles(model));
+    }
+
+    /**
+     * Wraps {@code model} as the wrap command does (begun where the layers are fewest), checks
+     * every truth, coverage, the floor and the layer order ({@link #check}) and that its paper has
+     * no crossing pairs, pairs in one plane, model crossings or points inside; gives its most layers.
+     */
+    static int wrapAsTheCommandDoesAndCheck(Path dir, HalfedgeMesh model) throws Exception {
+        Seam.Chosen chosen = Seam.wrap(ifold.job.WrapPath.of(model).refinement(), new Wrap.Options(Double.NaN, Double.NaN), Wrap.Watcher.NONE);
+        check(dir, chosen.result(), model, 1, 2000);
+        ifold.check.PaperCollisions.Result collisions = ifold.check.PaperCollisions.check(Files.readString(dir.resolve("wrap.obj")),
+                chosen.result().thickness(), ifold.job.Collisions.modelTriangles(model));
+        assertEquals(0, collisions.crossingPairs(), collisions.summary());
+        assertEquals(0, collisions.coplanarPairs(), collisions.summary());
+        assertEquals(0, collisions.modelCrossings(), collisions.summary());
+        assertEquals(0, collisions.pointsInside(), collisions.summary());
+        return chosen.placed().analysis().maxLayers();
+    }
+
     /** The model's triangles, nine numbers each, as the checker takes them. */
     static List<double[]> triangles(IndexedPolygons model) {
         List<double[]> triangles = new ArrayList<>();
@@ -474,18 +501,7 @@ public class WrapTest {
         assumeTrue(Files.isRegularFile(file), "../shared/meshes is absent");
         HalfedgeMesh mesh = build(MeshReaders.read(file));
         Wrap.Result result = wrapAndCheck(mesh, new Wrap.Options(Double.NaN, Double.NaN), 2000);
-        List<PaperInSpace> geometries = new ArrayList<>();
-        for (Wrap.Strip strip : result.strips()) {
-            geometries.add(PaperInSpace.of(strip.sheet(), result.frames()));
-        }
-        Path obj = dir.resolve("t_prism.obj");
-        WrapExport.writeObj(obj, "test", result, geometries);
-        List<double[]> triangles = triangles(mesh);
-        double[] model = new double[9 * triangles.size()];
-        for (int i = 0; i < triangles.size(); i++) {
-            System.arraycopy(triangles.get(i), 0, model, 9 * i, 9);
-        }
-        ifold.check.PaperCollisions.Result collisions = ifold.check.PaperCollisions.check(Files.readString(obj), result.thickness(), model);
+        ifold.check.PaperCollisions.Result collisions = collisions(dir.resolve("t_prism.obj"), result, mesh);
         assertEquals(0, collisions.crossingPairs() + collisions.modelCrossings() + collisions.pointsInside(), collisions.summary());
         assertTrue(collisions.coplanarPairs() <= 38, collisions.summary());
     }
@@ -514,18 +530,7 @@ public class WrapTest {
             mesh = build(MeshReaders.read(file));
         }
         Wrap.Result result = wrapAndCheck(mesh, new Wrap.Options(Double.NaN, Double.NaN), 2000);
-        List<PaperInSpace> geometries = new ArrayList<>();
-        for (Wrap.Strip strip : result.strips()) {
-            geometries.add(PaperInSpace.of(strip.sheet(), result.frames()));
-        }
-        Path obj = dir.resolve(name + ".obj");
-        WrapExport.writeObj(obj, "test", result, geometries);
-        List<double[]> triangles = triangles(mesh);
-        double[] model = new double[9 * triangles.size()];
-        for (int i = 0; i < triangles.size(); i++) {
-            System.arraycopy(triangles.get(i), 0, model, 9 * i, 9);
-        }
-        ifold.check.PaperCollisions.Result collisions = ifold.check.PaperCollisions.check(Files.readString(obj), result.thickness(), model);
+        ifold.check.PaperCollisions.Result collisions = collisions(dir.resolve(name + ".obj"), result, mesh);
         assertEquals(0, collisions.crossingPairs() + collisions.modelCrossings() + collisions.pointsInside(), collisions.summary());
         assertTrue(collisions.coplanarPairs() <= most, collisions.summary());
     }
