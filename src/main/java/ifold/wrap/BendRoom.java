@@ -4,9 +4,11 @@ import ifold.geom.Tolerance;
 import ifold.mesh.IndexedPolygons;
 import ifold.sheet.HostFrame;
 import java.util.ArrayList;
-import java.util.List;
 import java.util.HashMap;
+import java.util.HashSet;
+import java.util.List;
 import java.util.Map;
+import java.util.Set;
 
 /**
  * How far the bends of flat folds along each edge of a host may stand out beyond it: the room
@@ -184,14 +186,14 @@ final class BendRoom {
     private static List<double[]> cutCorners(IndexedPolygons mesh, List<List<Integer>> facesAt, int[] hostOf, CoplanarHosts planes) {
         List<double[]> corners = new ArrayList<>();
         Map<Integer, Double> turn = new HashMap<>();
-        Map<Integer, java.util.Set<Integer>> hosts = new HashMap<>();
+        Map<Integer, Set<Integer>> hosts = new HashMap<>();
         for (int v = 0; v < mesh.vertexCount(); v++) {
             turn.clear();
             hosts.clear();
             double[] p = position(mesh, v);
             for (int t : facesAt.get(v)) {
                 int plane = planes.planeOf(hostOf[t]);
-                hosts.computeIfAbsent(plane, x -> new java.util.HashSet<>()).add(hostOf[t]);
+                hosts.computeIfAbsent(plane, x -> new HashSet<>()).add(hostOf[t]);
                 int n = mesh.faceSize(t);
                 for (int k = 0; k < n; k++) {
                     if (mesh.faceVertex(t, k) == v) {
@@ -200,7 +202,7 @@ final class BendRoom {
                     }
                 }
             }
-            for (Map.Entry<Integer, java.util.Set<Integer>> plane : hosts.entrySet()) {
+            for (Map.Entry<Integer, Set<Integer>> plane : hosts.entrySet()) {
                 double around = turn.get(plane.getKey());
                 if (plane.getValue().size() >= 3 || (plane.getValue().size() == 2 && around > Math.PI + ANGLE_TOLERANCE
                         && around < 2 * Math.PI - ANGLE_TOLERANCE)) {

@@ -136,6 +136,9 @@ final class ConcaveWalls {
         Map<Long, Double> most = new HashMap<>();
         boolean[] onCut = new boolean[bends.size()];
         double[] need = new double[bends.size()];
+        // Where each fold runs along its edge, from and to (the edge's start at 0, its end at its length).
+        double[] from = new double[bends.size()];
+        double[] to = new double[bends.size()];
         for (int k = 0; k < bends.size(); k++) {
             NestedBends.Bend bend = bends.get(k);
             HostFrame frame = frames[bend.host()];
@@ -144,6 +147,11 @@ final class ConcaveWalls {
                 continue;
             }
             along[k] = true;
+            double[] edge = frame.edge(edgeOf[k]);
+            double sa = ((bend.ax() - edge[0]) * edge[2] + (bend.ay() - edge[1]) * edge[3]) / edge[4];
+            double sb = ((bend.bx() - edge[0]) * edge[2] + (bend.by() - edge[1]) * edge[3]) / edge[4];
+            from[k] = Math.min(sa, sb);
+            to[k] = Math.max(sa, sb);
             double tan = frame.mitreAlong(edgeOf[k], bend.ax(), bend.ay(), bend.bx(), bend.by(), tolerance);
             need[k] = (bend.high() + 0.5) * thickness * tan + ranks[k] * thickness;
             onCut[k] = Math.abs(tan - BendRoom.WHOLE_CUT_MITRE) < BendRoom.CUT_MITRE / 2; // a whole cut: walls by nest
@@ -151,7 +159,7 @@ final class ConcaveWalls {
                 most.merge(key(bend.host(), edgeOf[k]), need[k], Math::max);
             }
         }
-        double[] nestMost = cutNests(bends, along, onCut, edgeOf, need, frames);
+        double[] nestMost = cutNests(bends, along, onCut, edgeOf, need, from, to);
         List<List<Wall>> wallsOf = new ArrayList<>(java.util.Collections.nCopies(frames.length, (List<Wall>) null));
         for (int k = 0; k < bends.size(); k++) {
             if (!along[k]) {
@@ -159,13 +167,11 @@ final class ConcaveWalls {
             }
             NestedBends.Bend bend = bends.get(k);
             double[] edge = frames[bend.host()].edge(edgeOf[k]);
-            double sa = ((bend.ax() - edge[0]) * edge[2] + (bend.ay() - edge[1]) * edge[3]) / edge[4];
-            double sb = ((bend.bx() - edge[0]) * edge[2] + (bend.by() - edge[1]) * edge[3]) / edge[4];
             double in = (onCut[k] ? nestMost[k] : most.get(key(bend.host(), edgeOf[k]))) - ranks[k] * thickness;
             if (wallsOf.get(bend.host()) == null) {
                 wallsOf.set(bend.host(), new ArrayList<>());
             }
-            wallsOf.get(bend.host()).add(new Wall(edgeOf[k], Math.min(sa, sb), Math.max(sa, sb), bend.low(), bend.high(), in, edge));
+            wallsOf.get(bend.host()).add(new Wall(edgeOf[k], from[k], to[k], bend.low(), bend.high(), in, edge));
         }
         // Two folds back to back on one crease line cannot both stand on it: each stands back half
         // a thickness, its layers ending on its own side (where it does not already stand on a wall).
@@ -192,10 +198,11 @@ final class ConcaveWalls {
      * For each fold along a cut, the most any fold of its nest needs: the folds along the same
      * edge of the host whose stretches overlap it, and theirs, and so on. Across a cut the other
      * host's paper stands back too, so a fold standing back farther than its own nest asks left
-     * the surface by the cut bare under its lower layer.
+     * the surface by the cut bare under its lower layer. Each fold runs along its edge from
+     * {@code from} to {@code to}.
      */
     private static double[] cutNests(List<NestedBends.Bend> bends, boolean[] along, boolean[] onCut, int[] edgeOf, double[] need,
-            HostFrame[] frames) {
+            double[] from, double[] to) {
         double[] result = new double[bends.size()];
         Map<Long, List<Integer>> byEdge = new HashMap<>();
         for (int k = 0; k < bends.size(); k++) {
@@ -205,21 +212,8 @@ final class ConcaveWalls {
         }
         for (List<Integer> group : byEdge.values()) {
             int n = group.size();
-            double[] from = new double[n];
-            double[] to = new double[n];
-            int[] order = new int[n];
-            for (int i = 0; i < n; i++) {
-                NestedBends.Bend bend = bends.get(group.get(i));
-                double[] edge = frames[bend.host()].edge(edgeOf[group.get(i)]);
-                double sa = ((bend.ax() - edge[0]) * edge[2] + (bend.ay() - edge[1]) * edge[3]) / edge[4];
-                double sb = ((bend.bx() - edge[0]) * edge[2] + (bend.by() - edge[1]) * edge[3]) / edge[4];
-                from[i] = Math.min(sa, sb);
-                to[i] = Math.max(sa, sb);
-            }
-            Integer[] sorted = new Integer[n];
-            for (int i = 0; i < n; i++) {
-                sorted[i] = i;
-            }
+            // The group's folds by where they begin along the edge.
+            Integer[] sorted = group.toArray(new Integer[0]);
             java.util.Arrays.sort(sorted, (a, b) -> Double.compare(from[a], from[b]));
             int start = 0;
             double reach = Double.NEGATIVE_INFINITY;
@@ -227,10 +221,10 @@ final class ConcaveWalls {
                 if (i == n || (i > start && from[sorted[i]] > reach)) {
                     double nest = Double.NEGATIVE_INFINITY;
                     for (int j = start; j < i; j++) {
-                        nest = Math.max(nest, need[group.get(sorted[j])]);
+                        nest = Math.max(nest, need[sorted[j]]);
                     }
                     for (int j = start; j < i; j++) {
-                        result[group.get(sorted[j])] = nest;
+                        result[sorted[j]] = nest;
                     }
                     start = i;
                     reach = Double.NEGATIVE_INFINITY;
