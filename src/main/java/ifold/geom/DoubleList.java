@@ -38,6 +38,17 @@ public final class DoubleList {
         return size;
     }
 
+    /**
+     * Lets go of the blocks that hold only values before {@code index}: a list read once from
+     * its start, copied elsewhere, is not held twice over meanwhile. Those values are gone.
+     */
+    public void letGoBefore(int index) {
+        // From the last block wholly before it back to the first already let go: each block once.
+        for (int block = Math.min(index >>> SHIFT, blocks.length) - 1; block >= 0 && blocks[block] != null; block--) {
+            blocks[block] = null;
+        }
+    }
+
     public void set(int i, double value) {
         if (i < 0 || i >= size) {
             throw new IndexOutOfBoundsException(i + " of " + size);

@@ -56,6 +56,17 @@ public final class IntList {
         return size;
     }
 
+    /**
+     * Lets go of the blocks that hold only values before {@code index}: a list read once from
+     * its start, copied elsewhere, is not held twice over meanwhile. Those values are gone.
+     */
+    public void letGoBefore(int index) {
+        // From the last block wholly before it back to the first already let go: each block once.
+        for (int block = Math.min(index >>> SHIFT, blocks.length) - 1; block >= 0 && blocks[block] != null; block--) {
+            blocks[block] = null;
+        }
+    }
+
     public int[] toArray() {
         int[] out = new int[size];
         for (int at = 0; at < size; at += BLOCK) {

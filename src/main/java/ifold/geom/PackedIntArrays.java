@@ -47,6 +47,12 @@ public final class PackedIntArrays extends AbstractList<int[]> implements Random
         return starts.size() - 1;
     }
 
+    /** Lets go of the blocks that hold only arrays before array {@code i} ({@link IntList#letGoBefore}): those are gone. */
+    public void letGoBefore(int i) {
+        values.letGoBefore(starts.get(i));
+        starts.letGoBefore(i);
+    }
+
     /** How many values array i holds. */
     public int length(int i) {
         return starts.get(i + 1) - start(i);

@@ -118,10 +118,19 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
 
     /** The strip placed in space. */
     public static PaperInSpace of(Sheet sheet, HostFrame[] frames) {
+        return of(sheet, frames, 0);
+    }
+
+    /**
+     * The strip placed in space, its faces placed in {@code shards} shares by host on as many
+     * threads as there are ({@code 0}: as many shares as suit the wrap and the machine); the
+     * same paper however many, to the bit.
+     */
+    static PaperInSpace of(Sheet sheet, HostFrame[] frames, int shards) {
         // The builder's working lists are garbage once it is done, and its points are copied out
         // one list at a time, each let go as it is copied: on the 5,000-triangle torus the lists,
         // the points and their copies held at once were the run's peak.
-        Built built = new Builder(sheet, frames).build();
+        Built built = new Builder(sheet, frames).build(shards);
         double[] xyz = built.xyz().drain();
         double[] uv = built.uv().drain();
         return new PaperInSpace(xyz, uv, built.paper(), built.hosts(), built.caps(), built.capAfter(), built.creep(), built.pieceStart());
@@ -149,14 +158,18 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          * per layer it is on) follow it by {@link #nextCopy}. Chains through one array rather than
          * an array a point: a big wrap makes millions of points, and the collector walked them all.
          */
-        private final int[] firstCopy;
-        /** For each space vertex made for a paper vertex or a cut point, the next made for the same point (-1: none). */
-        private final IntList nextCopy = new IntList();
+        private int[] firstCopy;
+        /**
+         * For each space vertex made for a paper vertex or a cut point, the next made for the same
+         * point (-1: none); null once the faces are placed, as {@link #firstCopy} and {@link
+         * #copyLevel} then are: the bends' caps share no vertex by them.
+         */
+        private IntList nextCopy = new IntList();
         private final double merge;
         private final double exact;
         /** The triangle and level each space vertex was made for (caps' middle rows: -1). */
         private final IntList copyHost = new IntList();
-        private final IntList copyLevel = new IntList();
+        private IntList copyLevel = new IntList();
         /** Each face's corners as placed whole (null for a face placed in pieces). */
         private int[][] corners;
         /**
@@ -176,14 +189,17 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         private static final int SIDE_EDGE = 9;
         /** The pieces of face f are paper faces pieceStart[f] to pieceStart[f + 1] - 1. */
         private int[] pieceStart;
+        /** The paper faces (the pieces of the sheet's faces), the triangle each rests on, the caps and the face each exists from. */
+        private final PackedIntArrays paper = new PackedIntArrays();
+        private final IntList hostList = new IntList();
+        private final PackedIntArrays caps = new PackedIntArrays();
+        private final IntList capAfter = new IntList();
         /** Where paper ends at the concave edges of its host. */
         private ConcaveWalls walls;
         /** The vertices made moved in from a concave edge (in the order made, so increasing), and where the paper put them. */
         private int[] creptVertices = new int[0];
         private double[] creptFrom = new double[0];
         private int creptCount;
-        /** The vertices made that crept ({@link #creptVertices} as a set). */
-        private final java.util.BitSet creptSet = new java.util.BitSet();
 
         Builder(Sheet sheet, HostFrame[] frames) {
             this.sheet = sheet;
@@ -199,7 +215,26 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             java.util.Arrays.fill(firstCopy, -1);
         }
 
-        Built build() {
+        /**
+         * A builder that places some of the faces of {@code prepared}'s sheet ({@link
+         * #placeFaces}) in lists of its own, with the folds, walls and mitres {@code prepared}
+         * found: its faces' corners and sides it writes into {@code prepared}'s arrays, which
+         * each face's builder alone writes.
+         */
+        private Builder(Builder prepared) {
+            this.sheet = prepared.sheet;
+            this.frames = prepared.frames;
+            this.levels = prepared.levels;
+            this.merge = prepared.merge;
+            this.exact = prepared.exact;
+            this.walls = prepared.walls;
+            this.corners = prepared.corners;
+            this.sidesOf = prepared.sidesOf;
+            this.firstCopy = new int[sheet.vertexCount()];
+            java.util.Arrays.fill(firstCopy, -1);
+        }
+
+        Built build(int asked) {
             int faces = sheet.faceCount();
             // Flat folds first, from the sheet alone (two faces across a paper edge on one host at
             // two levels): how far each bend stands out depends on the folds nested about its
@@ -244,30 +279,19 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             walls = ConcaveWalls.of(bends, ranks, backToBack, frames, sheet.thickness(), sheet.tolerance(), stackTop);
             boolean[] onWall = walls.along();
 
-            List<int[]> paper = new PackedIntArrays();
-            IntList hostList = new IntList();
-            List<int[]> caps = new PackedIntArrays();
-            IntList capAfter = new IntList();
             corners = new int[faces][];
             sidesOf = new int[faces];
             pieceStart = new int[faces + 1];
-            for (int f = 0; f < faces; f++) {
-                List<List<Corner>> pieces = pieces(f);
-                sidesOf[f] = -1;
-                if (pieces == null) {
-                    int[] loop = sheet.loop(f);
-                    int[] placed = new int[loop.length];
-                    for (int i = 0; i < loop.length; i++) {
-                        placed[i] = vertex(f, loop[i]);
-                    }
-                    corners[f] = placed;
-                    paper.add(placed);
-                    hostList.add(sheet.host(f));
-                } else {
-                    placePieces(f, pieces, paper, hostList, caps, capAfter);
+            int shards = !(sheet.thickness() > 0) ? 1 : asked > 0 ? asked : shards(faces);
+            if (shards == 1) {
+                for (int f = 0; f < faces; f++) {
+                    placeFace(f);
+                    pieceStart[f + 1] = paper.size();
                 }
-                pieceStart[f + 1] = paper.size();
+            } else {
+                join(placeFacesApart(shards), shards);
             }
+            doneWithFaces();
             int[] hosts = hostList.toArray();
             // The bends below, once every bend is known.
             int next = 0;
@@ -411,6 +435,224 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             Creep creep = creptCount == 0 ? Creep.NONE
                     : new Creep(java.util.Arrays.copyOf(creptVertices, creptCount), java.util.Arrays.copyOf(creptFrom, 3 * creptCount));
             return new Built(xyz, uv, paper, hosts, caps, capAfter.toArray(), creep, pieceStart);
+        }
+
+        /**
+         * Places face f: whole, each corner a vertex shared with the faces that place it alike,
+         * or in pieces where its paper creeps ({@link #pieces}).
+         */
+        private void placeFace(int f) {
+            List<List<Corner>> pieces = pieces(f);
+            sidesOf[f] = -1;
+            if (pieces == null) {
+                int[] loop = sheet.loop(f);
+                int[] placed = new int[loop.length];
+                for (int i = 0; i < loop.length; i++) {
+                    placed[i] = vertex(f, loop[i]);
+                }
+                corners[f] = placed;
+                paper.add(placed);
+                hostList.add(sheet.host(f));
+            } else {
+                placePieces(f, pieces, paper, hostList, caps, capAfter);
+            }
+        }
+
+        /** Wraps smaller than this many faces are placed on one thread: the threads would cost more than they save. */
+        private static final int FACES_APART = 20_000;
+
+        /**
+         * Into how many shares, by host, the faces are placed ({@link #placeFacesApart}) where the
+         * caller did not say. (Without thickness, always one: paper on neighbouring hosts then
+         * shares vertices.)
+         */
+        private static int shards(int faces) {
+            int threads = ifold.io.Workers.threads();
+            if (threads == 1 || faces < FACES_APART) {
+                return 1;
+            }
+            return 2 * threads; // more shares than threads: a thread free sooner takes another
+        }
+
+        /**
+         * Places the faces in {@code shards} shares on the workers' threads and this one, host by
+         * host (those of host h in share h mod shards), each share in a builder of its own:
+         * vertices are shared, and cut points found, only among faces of one host and level,
+         * and each builder places its faces in the order of the sheet, so each host's paper is
+         * placed as one builder for all would place it ({@link #join} puts it back in that
+         * order). On the 5,000-triangle torus placing the faces is three fifths of placing the
+         * paper, and one core was idle for most of it once the analysis' hosts were done.
+         */
+        private List<Builder> placeFacesApart(int shards) {
+            List<Builder> parts = new ArrayList<>();
+            for (int s = 0; s < shards; s++) {
+                parts.add(new Builder(this));
+            }
+            java.util.concurrent.atomic.AtomicInteger next = new java.util.concurrent.atomic.AtomicInteger();
+            java.util.concurrent.CountDownLatch done = new java.util.concurrent.CountDownLatch(shards);
+            java.util.concurrent.atomic.AtomicReference<Throwable> failed = new java.util.concurrent.atomic.AtomicReference<>();
+            // Each thread takes the next share not yet taken, till none is left: a worker still
+            // busy with the analysis' hosts when this thread has taken them all finds none, and
+            // this thread waits only for shares begun, never for a task still queued.
+            Runnable placing = () -> {
+                for (int s = next.getAndIncrement(); s < shards; s = next.getAndIncrement()) {
+                    try {
+                        if (failed.get() == null) {
+                            parts.get(s).placeFaces(s, shards);
+                        }
+                    } catch (RuntimeException | Error e) {
+                        failed.compareAndSet(null, e);
+                    } finally {
+                        done.countDown();
+                    }
+                }
+            };
+            for (int t = 1; t < ifold.io.Workers.threads(); t++) {
+                ifold.io.Workers.pool().execute(placing);
+            }
+            placing.run();
+            try {
+                done.await();
+            } catch (InterruptedException e) {
+                next.set(shards);
+                Thread.currentThread().interrupt();
+                throw new java.util.concurrent.CancellationException("interrupted");
+            }
+            Throwable failure = failed.get();
+            if (failure instanceof RuntimeException runtime) {
+                throw runtime;
+            }
+            if (failure instanceof Error error) {
+                throw error;
+            }
+            return parts;
+        }
+
+        /** Where this builder's lists end after each face it placed: vertices, paper faces, caps, vertices crept. */
+        private final IntList vertexEnds = new IntList();
+        private final IntList paperEnds = new IntList();
+        private final IntList capEnds = new IntList();
+        private final IntList creptEnds = new IntList();
+
+        /** Places the faces of share {@code shard} of {@code shards} ({@link #placeFacesApart}), in the sheet's order. */
+        private void placeFaces(int shard, int shards) {
+            for (int f = 0; f < sheet.faceCount(); f++) {
+                if (sheet.host(f) % shards != shard) {
+                    continue;
+                }
+                placeFace(f);
+                vertexEnds.add(copyHost.size());
+                paperEnds.add(paper.size());
+                capEnds.add(caps.size());
+                creptEnds.add(creptCount);
+            }
+            doneWithFaces();
+        }
+
+        /**
+         * Takes the faces that {@code parts} placed, face by face in the sheet's order, with their
+         * vertices, pieces, sides and caps, numbered as one builder placing every face in that
+         * order numbers them; each part's lists are let go as they are taken, so that the paper is
+         * not held twice over.
+         */
+        private void join(List<Builder> parts, int shards) {
+            int[] taken = new int[shards]; // faces
+            int[] vertexFrom = new int[shards];
+            int[] paperFrom = new int[shards];
+            int[] capFrom = new int[shards];
+            int[] creptAt = new int[shards];
+            IntList[] numbered = new IntList[shards]; // each part's vertices as numbered here
+            for (int s = 0; s < shards; s++) {
+                numbered[s] = new IntList();
+            }
+            for (int f = 0; f < sheet.faceCount(); f++) {
+                int s = sheet.host(f) % shards;
+                Builder part = parts.get(s);
+                int face = taken[s]++;
+                IntList number = numbered[s];
+                int vertexEnd = part.vertexEnds.get(face);
+                for (int v = vertexFrom[s]; v < vertexEnd; v++) {
+                    number.add(copyHost.size());
+                    copyHost.add(part.copyHost.get(v));
+                    for (int d = 0; d < 3; d++) {
+                        xyz.add(part.xyz.get(3 * v + d));
+                    }
+                    uv.add(part.uv.get(2 * v));
+                    uv.add(part.uv.get(2 * v + 1));
+                }
+                vertexFrom[s] = vertexEnd;
+                part.xyz.letGoBefore(3 * vertexEnd);
+                part.uv.letGoBefore(2 * vertexEnd);
+                part.copyHost.letGoBefore(vertexEnd);
+                for (int p = paperFrom[s]; p < part.paperEnds.get(face); p++) {
+                    paper.add(renumbered(part.paper.get(p), number));
+                    hostList.add(part.hostList.get(p));
+                }
+                paperFrom[s] = part.paperEnds.get(face);
+                part.paper.letGoBefore(paperFrom[s]);
+                pieceStart[f + 1] = paper.size();
+                if (corners[f] != null) {
+                    renumbered(corners[f], number);
+                }
+                for (int c = capFrom[s]; c < part.capEnds.get(face); c++) {
+                    caps.add(renumbered(part.caps.get(c), number));
+                    capAfter.add(paper.size() - 1); // a tear between the face's pieces: after its last
+                }
+                capFrom[s] = part.capEnds.get(face);
+                part.caps.letGoBefore(capFrom[s]);
+                if (sidesOf[f] >= 0) {
+                    int start = sidesOf[f];
+                    int sides = sheet.loopLength(f);
+                    int firstEdge = part.sideStarts.get(start);
+                    int here = sideEdges.size() / SIDE_EDGE;
+                    sidesOf[f] = sideStarts.size();
+                    for (int i = 0; i <= sides; i++) {
+                        sideStarts.add(part.sideStarts.get(start + i) - firstEdge + here);
+                    }
+                    int lastEdge = part.sideStarts.get(start + sides);
+                    for (int e = SIDE_EDGE * firstEdge; e < SIDE_EDGE * lastEdge; e++) {
+                        double value = part.sideEdges.get(e);
+                        int field = e % SIDE_EDGE;
+                        sideEdges.add(field == 2 || field == 3 ? number.get((int) value) : value);
+                    }
+                    part.sideStarts.letGoBefore(start + sides + 1);
+                    part.sideEdges.letGoBefore(SIDE_EDGE * lastEdge);
+                }
+                for (int c = creptAt[s]; c < part.creptEnds.get(face); c++) {
+                    if (creptCount == creptVertices.length) {
+                        creptVertices = java.util.Arrays.copyOf(creptVertices, 2 * creptCount + 8);
+                        creptFrom = java.util.Arrays.copyOf(creptFrom, 3 * creptVertices.length);
+                    }
+                    creptVertices[creptCount] = number.get(part.creptVertices[c]);
+                    System.arraycopy(part.creptFrom, 3 * c, creptFrom, 3 * creptCount, 3);
+                    creptCount++;
+                }
+                creptAt[s] = part.creptEnds.get(face);
+            }
+        }
+
+        /** {@code vertices}, each a part's number, given this builder's numbers (in place). */
+        private static int[] renumbered(int[] vertices, IntList number) {
+            for (int k = 0; k < vertices.length; k++) {
+                vertices[k] = number.get(vertices[k]);
+            }
+            return vertices;
+        }
+
+        /**
+         * Lets go of what only placing the faces needed (the copies' chains and levels, the cut
+         * points): on the 5,000-triangle torus about 180 MB, held till the paper was done.
+         */
+        private void doneWithFaces() {
+            firstCopy = null;
+            nextCopy = null;
+            copyLevel = null;
+            cutPoints = null;
+            cutCopies = null;
+            cutCells = null;
+            cutNext = null;
+            holding.clear();
+            inside.clear();
         }
 
         /**
@@ -565,7 +807,6 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     creptFrom = java.util.Arrays.copyOf(creptFrom, 3 * creptVertices.length);
                 }
                 creptVertices[creptCount] = made;
-                creptSet.set(made);
                 frame.toSpace(x, y, height(f), creptFrom, 3 * creptCount);
                 creptCount++;
             }
@@ -767,10 +1008,10 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          * vertices of the sheet edge it lies on (-1 where it lies on none), its host and level,
          * and the unit normal (x, y) of a line across a region that cut there (NaN: none did).
          */
-        private final DoubleList cutPoints = new DoubleList();
+        private DoubleList cutPoints = new DoubleList();
         private static final int CUT_POINT = 10;
         /** The first space vertex made of each cut point (-1: none; the others by {@link #nextCopy}). */
-        private final IntList cutCopies = new IntList();
+        private IntList cutCopies = new IntList();
 
         /**
          * Where face f's paper creeps (is placed elsewhere than it lies), along the concave edges
@@ -1131,7 +1372,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          */
         private static final long CELL_POINTS = 64;
         /** The last cut point made in each cell of the sheet {@link #CELL_POINTS} across, by host and level ({@link #cell}). */
-        private final ifold.sheet.LongIntMap cutCells = new ifold.sheet.LongIntMap();
+        private ifold.sheet.LongIntMap cutCells = new ifold.sheet.LongIntMap();
         /** For each cut point, the one made before it in its cell (-1: none). */
         private int[] cutNext = new int[16];
 
@@ -1861,10 +2102,12 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         }
 
         private int add(double[] point, double u, double v) {
-            int made = nextCopy.size();
+            int made = copyHost.size();
             copyHost.add(-1);
-            copyLevel.add(-1);
-            nextCopy.add(-1);
+            if (nextCopy != null) {
+                copyLevel.add(-1);
+                nextCopy.add(-1);
+            }
             xyz.add(point[0]);
             xyz.add(point[1]);
             xyz.add(point[2]);
