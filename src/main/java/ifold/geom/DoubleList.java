@@ -27,6 +27,26 @@ public final class DoubleList {
         size++;
     }
 
+    /** Appends values {@code from} to {@code to} - 1 of {@code source}, a block's stretch at a time. */
+    public void addRange(DoubleList source, int from, int to) {
+        if (from < 0 || to > source.size || from > to) {
+            throw new IndexOutOfBoundsException(from + " to " + to + " of " + source.size);
+        }
+        while (from < to) {
+            int block = size >>> SHIFT;
+            if (block == blocks.length) {
+                blocks = Arrays.copyOf(blocks, 2 * block);
+            }
+            if (blocks[block] == null) {
+                blocks[block] = new double[BLOCK];
+            }
+            int n = Math.min(to - from, Math.min(BLOCK - (size & MASK), BLOCK - (from & MASK)));
+            System.arraycopy(source.blocks[from >>> SHIFT], from & MASK, blocks[block], size & MASK, n);
+            size += n;
+            from += n;
+        }
+    }
+
     public double get(int i) {
         if (i < 0 || i >= size) {
             throw new IndexOutOfBoundsException(i + " of " + size);

@@ -38,6 +38,29 @@ public final class IntList {
         }
     }
 
+    /** Appends values {@code from} to {@code to} - 1 of {@code source}, a block's stretch at a time. */
+    public void addRange(IntList source, int from, int to) {
+        if (from < 0 || to > source.size || from > to) {
+            throw new IndexOutOfBoundsException(from + " to " + to + " of " + source.size);
+        }
+        while (from < to && size < BLOCK) {
+            add(source.get(from++)); // the first block grows as it fills
+        }
+        while (from < to) {
+            int block = size >>> SHIFT;
+            if (block == blocks.length) {
+                blocks = Arrays.copyOf(blocks, 2 * block);
+            }
+            if (blocks[block] == null) {
+                blocks[block] = new int[BLOCK];
+            }
+            int n = Math.min(to - from, Math.min(BLOCK - (size & MASK), BLOCK - (from & MASK)));
+            System.arraycopy(source.blocks[from >>> SHIFT], from & MASK, blocks[block], size & MASK, n);
+            size += n;
+            from += n;
+        }
+    }
+
     public int get(int i) {
         if (i < 0 || i >= size) {
             throw new IndexOutOfBoundsException(i + " of " + size);

@@ -31,6 +31,17 @@ public final class PackedIntArrays extends AbstractList<int[]> implements Random
         return true;
     }
 
+    /** Appends array i of {@code source}, each value v replaced by {@code numbers[v]}. */
+    public void addNumbered(PackedIntArrays source, int i, int[] numbers) {
+        int from = source.start(i);
+        int to = source.starts.get(i + 1);
+        for (int k = from; k < to; k++) {
+            values.add(numbers[source.values.get(k)]);
+        }
+        starts.add(values.size());
+        modCount++;
+    }
+
     /** A new array of the values of array i. */
     @Override
     public int[] get(int i) {

@@ -561,82 +561,74 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             int[] paperFrom = new int[shards];
             int[] capFrom = new int[shards];
             int[] creptAt = new int[shards];
-            IntList[] numbered = new IntList[shards]; // each part's vertices as numbered here
+            int[][] numbered = new int[shards][]; // each part's vertices as numbered here
+            int crept = 0;
             for (int s = 0; s < shards; s++) {
-                numbered[s] = new IntList();
+                numbered[s] = new int[parts.get(s).copyHost.size()];
+                crept += parts.get(s).creptCount;
             }
+            creptVertices = new int[crept];
+            creptFrom = new double[3 * crept];
             for (int f = 0; f < sheet.faceCount(); f++) {
                 int s = sheet.host(f) % shards;
                 Builder part = parts.get(s);
                 int face = taken[s]++;
-                IntList number = numbered[s];
+                int[] number = numbered[s];
                 int vertexEnd = part.vertexEnds.get(face);
-                for (int v = vertexFrom[s]; v < vertexEnd; v++) {
-                    number.add(copyHost.size());
-                    copyHost.add(part.copyHost.get(v));
-                    for (int d = 0; d < 3; d++) {
-                        xyz.add(part.xyz.get(3 * v + d));
-                    }
-                    uv.add(part.uv.get(2 * v));
-                    uv.add(part.uv.get(2 * v + 1));
+                for (int v = vertexFrom[s], here = copyHost.size(); v < vertexEnd; v++) {
+                    number[v] = here + v - vertexFrom[s];
                 }
+                copyHost.addRange(part.copyHost, vertexFrom[s], vertexEnd);
+                xyz.addRange(part.xyz, 3 * vertexFrom[s], 3 * vertexEnd);
+                uv.addRange(part.uv, 2 * vertexFrom[s], 2 * vertexEnd);
                 vertexFrom[s] = vertexEnd;
                 part.xyz.letGoBefore(3 * vertexEnd);
                 part.uv.letGoBefore(2 * vertexEnd);
                 part.copyHost.letGoBefore(vertexEnd);
-                for (int p = paperFrom[s]; p < part.paperEnds.get(face); p++) {
-                    paper.add(renumbered(part.paper.get(p), number));
-                    hostList.add(part.hostList.get(p));
+                int paperEnd = part.paperEnds.get(face);
+                for (int p = paperFrom[s]; p < paperEnd; p++) {
+                    paper.addNumbered(part.paper, p, number);
                 }
-                paperFrom[s] = part.paperEnds.get(face);
-                part.paper.letGoBefore(paperFrom[s]);
+                hostList.addRange(part.hostList, paperFrom[s], paperEnd);
+                paperFrom[s] = paperEnd;
+                part.paper.letGoBefore(paperEnd);
                 pieceStart[f + 1] = paper.size();
                 if (corners[f] != null) {
-                    renumbered(corners[f], number);
+                    for (int k = 0; k < corners[f].length; k++) {
+                        corners[f][k] = number[corners[f][k]];
+                    }
                 }
-                for (int c = capFrom[s]; c < part.capEnds.get(face); c++) {
-                    caps.add(renumbered(part.caps.get(c), number));
+                int capEnd = part.capEnds.get(face);
+                for (int c = capFrom[s]; c < capEnd; c++) {
+                    caps.addNumbered(part.caps, c, number);
                     capAfter.add(paper.size() - 1); // a tear between the face's pieces: after its last
                 }
-                capFrom[s] = part.capEnds.get(face);
-                part.caps.letGoBefore(capFrom[s]);
+                capFrom[s] = capEnd;
                 if (sidesOf[f] >= 0) {
                     int start = sidesOf[f];
                     int sides = sheet.loopLength(f);
                     int firstEdge = part.sideStarts.get(start);
+                    int lastEdge = part.sideStarts.get(start + sides);
                     int here = sideEdges.size() / SIDE_EDGE;
                     sidesOf[f] = sideStarts.size();
                     for (int i = 0; i <= sides; i++) {
                         sideStarts.add(part.sideStarts.get(start + i) - firstEdge + here);
                     }
-                    int lastEdge = part.sideStarts.get(start + sides);
-                    for (int e = SIDE_EDGE * firstEdge; e < SIDE_EDGE * lastEdge; e++) {
-                        double value = part.sideEdges.get(e);
-                        int field = e % SIDE_EDGE;
-                        sideEdges.add(field == 2 || field == 3 ? number.get((int) value) : value);
+                    sideEdges.addRange(part.sideEdges, SIDE_EDGE * firstEdge, SIDE_EDGE * lastEdge);
+                    for (int e = here; e < here + lastEdge - firstEdge; e++) { // its two vertices
+                        sideEdges.set(SIDE_EDGE * e + 2, number[(int) sideEdges.get(SIDE_EDGE * e + 2)]);
+                        sideEdges.set(SIDE_EDGE * e + 3, number[(int) sideEdges.get(SIDE_EDGE * e + 3)]);
                     }
                     part.sideStarts.letGoBefore(start + sides + 1);
                     part.sideEdges.letGoBefore(SIDE_EDGE * lastEdge);
                 }
-                for (int c = creptAt[s]; c < part.creptEnds.get(face); c++) {
-                    if (creptCount == creptVertices.length) {
-                        creptVertices = java.util.Arrays.copyOf(creptVertices, 2 * creptCount + 8);
-                        creptFrom = java.util.Arrays.copyOf(creptFrom, 3 * creptVertices.length);
-                    }
-                    creptVertices[creptCount] = number.get(part.creptVertices[c]);
+                int creptEnd = part.creptEnds.get(face);
+                for (int c = creptAt[s]; c < creptEnd; c++, creptCount++) {
+                    creptVertices[creptCount] = number[part.creptVertices[c]];
                     System.arraycopy(part.creptFrom, 3 * c, creptFrom, 3 * creptCount, 3);
-                    creptCount++;
                 }
-                creptAt[s] = part.creptEnds.get(face);
+                creptAt[s] = creptEnd;
             }
-        }
-
-        /** {@code vertices}, each a part's number, given this builder's numbers (in place). */
-        private static int[] renumbered(int[] vertices, IntList number) {
-            for (int k = 0; k < vertices.length; k++) {
-                vertices[k] = number.get(vertices[k]);
-            }
-            return vertices;
         }
 
         /**
