@@ -3,6 +3,7 @@ package ifold.wrap;
 import ifold.geom.DoubleList;
 import ifold.geom.IntList;
 import ifold.geom.PackedIntArrays;
+import ifold.io.Workers;
 import ifold.sheet.HostFrame;
 import ifold.sheet.Isometry2;
 import ifold.sheet.Polygons2;
@@ -283,6 +284,14 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             sidesOf = new int[faces];
             pieceStart = new int[faces + 1];
             int shards = !(sheet.thickness() > 0) ? 1 : asked > 0 ? asked : shards(faces);
+            // How far each bend stands out comes of the folds alone, not of the faces' placing:
+            // where the faces are placed in shares, a worker free of them finds it meanwhile,
+            // and where none took it this thread does, once they are placed.
+            java.util.concurrent.FutureTask<Standing> standingOut = new java.util.concurrent.FutureTask<>(
+                    () -> standing(bends, ranks, nested));
+            if (shards > 1) {
+                Workers.pool().execute(standingOut);
+            }
             if (shards == 1) {
                 for (int f = 0; f < faces; f++) {
                     placeFace(f);
@@ -292,6 +301,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 join(placeFacesApart(shards), shards);
             }
             doneWithFaces();
+            standingOut.run();
             int[] hosts = hostList.toArray();
             // The bends below, once every bend is known.
             int next = 0;
@@ -321,28 +331,10 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 bendCorners[k] = new int[] {f, g, a, b, (int) fChain[0][2], (int) fChain[fChain.length - 1][3], (int) gChain[0][2],
                     (int) gChain[gChain.length - 1][3]};
             }
-            double[] outs = new double[bends.size()];
-            double[] slopes = new double[bends.size()];
-            for (int k = 0; k < bends.size(); k++) {
-                NestedBends.Bend bend = bends.get(k);
-                // Each rank steps out by a thickness, less where the room beyond the host's edge
-                // is narrow: the lower side then leans out at the room's slope s, and a bend of
-                // rank r (its layers at least 2r + 1 apart) keeps a wall between its two sides:
-                // r·step·(1/s + 1) <= 2r·T.
-                if (ranks[k] == 0 || walls.along(k)) {
-                    continue; // on its crease whatever the room, or on its wall at a concave edge
-                }
-                HostFrame frame = frames[bend.host()];
-                slopes[k] = frame.roomBeyond(bend.ax(), bend.ay(), bend.bx(), bend.by(), sheet.tolerance());
-                double out = ranks[k] * sheet.thickness() * Math.min(1, 2 * slopes[k] / (1 + slopes[k]));
-                double low = (bend.low() + 0.5) * sheet.thickness();
-                out = frame.lean(bend.ax(), bend.ay(), bend.nx(), bend.ny(), low, slopes[k], out);
-                outs[k] = frame.lean(bend.bx(), bend.by(), bend.nx(), bend.ny(), low, slopes[k], out);
-            }
-            FacingBends.keepApart(bends, outs, sheet.thickness() * NEST_TOLERANCE);
-            nested.keepNested(outs);
-            double[] past = nested.mitres(outs, CoplanarHosts.of(frames, sheet.tolerance()));
-            stopRowsOnPaper(bends, outs, past);
+            Standing standing = Workers.result(standingOut);
+            double[] outs = standing.outs();
+            double[] slopes = standing.slopes();
+            double[] past = standing.past();
 
             for (int k = 0; k < bends.size(); k++) {
                 int[] c = bendCorners[k];
@@ -438,6 +430,39 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         }
 
         /**
+         * How far each bend stands out from its crease, the slope of the room beyond its host's
+         * edge, and how far its rows run past its crease's two ends ({@link NestedBends#mitres}).
+         */
+        private record Standing(double[] outs, double[] slopes, double[] past) {
+        }
+
+        private Standing standing(List<NestedBends.Bend> bends, int[] ranks, NestedBends nested) {
+            double[] outs = new double[bends.size()];
+            double[] slopes = new double[bends.size()];
+            for (int k = 0; k < bends.size(); k++) {
+                NestedBends.Bend bend = bends.get(k);
+                // Each rank steps out by a thickness, less where the room beyond the host's edge
+                // is narrow: the lower side then leans out at the room's slope s, and a bend of
+                // rank r (its layers at least 2r + 1 apart) keeps a wall between its two sides:
+                // r·step·(1/s + 1) <= 2r·T.
+                if (ranks[k] == 0 || walls.along(k)) {
+                    continue; // on its crease whatever the room, or on its wall at a concave edge
+                }
+                HostFrame frame = frames[bend.host()];
+                slopes[k] = frame.roomBeyond(bend.ax(), bend.ay(), bend.bx(), bend.by(), sheet.tolerance());
+                double out = ranks[k] * sheet.thickness() * Math.min(1, 2 * slopes[k] / (1 + slopes[k]));
+                double low = (bend.low() + 0.5) * sheet.thickness();
+                out = frame.lean(bend.ax(), bend.ay(), bend.nx(), bend.ny(), low, slopes[k], out);
+                outs[k] = frame.lean(bend.bx(), bend.by(), bend.nx(), bend.ny(), low, slopes[k], out);
+            }
+            FacingBends.keepApart(bends, outs, sheet.thickness() * NEST_TOLERANCE);
+            nested.keepNested(outs);
+            double[] past = nested.mitres(outs, CoplanarHosts.of(frames, sheet.tolerance()));
+            stopRowsOnPaper(bends, outs, past);
+            return new Standing(outs, slopes, past);
+        }
+
+        /**
          * Places face f: whole, each corner a vertex shared with the faces that place it alike,
          * or in pieces where its paper creeps ({@link #pieces}).
          */
@@ -467,7 +492,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          * shares vertices.)
          */
         private static int shards(int faces) {
-            int threads = ifold.io.Workers.threads();
+            int threads = Workers.threads();
             if (threads == 1 || faces < FACES_APART) {
                 return 1;
             }
@@ -507,8 +532,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     }
                 }
             };
-            for (int t = 1; t < ifold.io.Workers.threads(); t++) {
-                ifold.io.Workers.pool().execute(placing);
+            for (int t = 1; t < Workers.threads(); t++) {
+                Workers.pool().execute(placing);
             }
             placing.run();
             try {
