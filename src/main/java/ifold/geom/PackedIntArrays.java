@@ -42,6 +42,18 @@ public final class PackedIntArrays extends AbstractList<int[]> implements Random
         modCount++;
     }
 
+    /** Appends array i of {@code source}, each value from {@code from} up raised by {@code by}. */
+    public void addShifted(PackedIntArrays source, int i, int from, int by) {
+        int start = source.start(i);
+        int end = source.starts.get(i + 1);
+        for (int k = start; k < end; k++) {
+            int value = source.values.get(k);
+            values.add(value >= from ? value + by : value);
+        }
+        starts.add(values.size());
+        modCount++;
+    }
+
     /** A new array of the values of array i. */
     @Override
     public int[] get(int i) {

@@ -171,6 +171,13 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         /** The triangle and level each space vertex was made for (caps' middle rows: -1). */
         private final IntList copyHost = new IntList();
         private IntList copyLevel = new IntList();
+        /**
+         * For a builder of some bends' caps ({@link #placeBendsApart}), the builder whose faces
+         * they bend, and how many vertices it had made: the vertices below that number are its,
+         * this builder's own are numbered on from there. (0 and null for any other builder.)
+         */
+        private final int base;
+        private final Builder shared;
         /** Each face's corners as placed whole (null for a face placed in pieces). */
         private int[][] corners;
         /**
@@ -179,14 +186,14 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          * edges of pieces begin in {@link #sideEdges}.
          */
         private int[] sidesOf;
-        private final IntList sideStarts = new IntList();
+        private IntList sideStarts = new IntList();
         /**
          * The pieces' edges along the sides of their faces, {@link #SIDE_EDGE} numbers each: from,
          * to (along the side), their two vertices, 1 where squashed, and at each end the unit
          * normal (x, y on the host's frame) of the line across its region that cut it there (where
          * a wall or a concave stretch ends; NaN where none did).
          */
-        private final DoubleList sideEdges = new DoubleList();
+        private DoubleList sideEdges = new DoubleList();
         private static final int SIDE_EDGE = 9;
         /** The pieces of face f are paper faces pieceStart[f] to pieceStart[f + 1] - 1. */
         private int[] pieceStart;
@@ -203,6 +210,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         private int creptCount;
 
         Builder(Sheet sheet, HostFrame[] frames) {
+            this.base = 0;
+            this.shared = null;
             this.sheet = sheet;
             this.frames = frames;
             this.levels = sheet.levels();
@@ -217,22 +226,33 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         }
 
         /**
-         * A builder that places some of the faces of {@code prepared}'s sheet ({@link
-         * #placeFaces}) in lists of its own, with the folds, walls and mitres {@code prepared}
-         * found: its faces' corners and sides it writes into {@code prepared}'s arrays, which
-         * each face's builder alone writes.
+         * A builder of a share of {@code from}'s work, with the folds, walls and mitres it found.
+         * Of some of its faces ({@code bending} false: {@link #placeFacesApart}), in lists of its
+         * own, their corners and sides written into {@code from}'s arrays, which each face's
+         * builder alone writes. Of some of its bends' caps ({@code bending}: {@link
+         * #placeBendsApart}), once {@code from} has placed the faces: it reads their vertices,
+         * corners and sides, and makes vertices and caps of its own.
          */
-        private Builder(Builder prepared) {
-            this.sheet = prepared.sheet;
-            this.frames = prepared.frames;
-            this.levels = prepared.levels;
-            this.merge = prepared.merge;
-            this.exact = prepared.exact;
-            this.walls = prepared.walls;
-            this.corners = prepared.corners;
-            this.sidesOf = prepared.sidesOf;
-            this.firstCopy = new int[sheet.vertexCount()];
-            java.util.Arrays.fill(firstCopy, -1);
+        private Builder(Builder from, boolean bending) {
+            this.base = bending ? from.copyHost.size() : 0;
+            this.shared = bending ? from : null;
+            this.sheet = from.sheet;
+            this.frames = from.frames;
+            this.levels = from.levels;
+            this.merge = from.merge;
+            this.exact = from.exact;
+            this.walls = from.walls;
+            this.corners = from.corners;
+            this.sidesOf = from.sidesOf;
+            if (bending) {
+                this.sideStarts = from.sideStarts;
+                this.sideEdges = from.sideEdges;
+                this.pieceStart = from.pieceStart;
+                doneWithFaces(); // no vertex is shared by chains here
+            } else {
+                this.firstCopy = new int[sheet.vertexCount()];
+                java.util.Arrays.fill(firstCopy, -1);
+            }
         }
 
         Built build(int asked) {
@@ -336,97 +356,160 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             double[] slopes = standing.slopes();
             double[] past = standing.past();
 
-            for (int k = 0; k < bends.size(); k++) {
-                int[] c = bendCorners[k];
-                int f = c[0];
-                int g = c[1];
-                NestedBends.Bend bend = bends.get(k);
-                double out = outs[k];
-                if ((c[4] == c[6] || samePlace(c[4], c[6])) && (c[5] == c[7] || samePlace(c[5], c[7]))) {
-                    continue; // paper of no thickness folded flat: nothing to bridge
+            BendsAt at = new BendsAt(bends, bendCorners, bendEdges, outs, slopes, past, backToBack, onWall);
+            if (shards == 1) {
+                for (int k = 0; k < bends.size(); k++) {
+                    placeBend(at, k);
                 }
-                int after = pieceStart[g + 1] - 1;
-                // The two layers' chains along the crease, made again rather than kept for every bend.
-                double[][] fChain = chain(f, bendEdges.get(5 * k + 1), c[2], c[3]);
-                double[][] gChain = chain(g, side(g, c[2], c[3]), c[2], c[3]);
-                if (out == 0 && !ConcaveWalls.standsBack(backToBack, onWall, k)) {
-                    addCap(fChain, gChain, c[2], c[3], after, bend.host(), !onWall[k], caps, capAfter);
-                    continue;
-                }
-                if (fChain.length == 1 && gChain.length == 1) {
-                    wholeBend(k, c, bend, out, out == 0 ? apexHeight(bends, backToBack, k) : 0, slopes[k], past, after, caps, capAfter);
-                    continue;
-                }
-                // Where its faces are placed in pieces, the bend goes from piece to piece as they meet the crease.
-                boolean backs = out == 0;
-                double middle = backs ? apexHeight(bends, backToBack, k) : (height(f) + height(g)) / 2;
-                boolean fLower = height(f) < height(g);
-                double lower = Math.min(height(f), height(g)) + (backs ? 0 : out / slopes[k]);
-                double upper = Math.max(height(f), height(g)) - out;
-                double[] cuts = backs ? cutsAlong(fChain, gChain) : withRowCuts(cutsAlong(fChain, gChain), bend, out, lower, upper);
-                int a = c[2];
-                int b = c[3];
-                // Stretch by stretch between the points where either layer's pieces meet the crease.
-                // Where a wall ends, the pieces on its two sides put one point of the crease in two
-                // places (on the wall, and out on the mitre): each stretch takes its ends from the
-                // pieces that run along it, and places its rows as it lies, beside the walls and
-                // mitres that its middle is. Taken from whichever piece came first along the chain,
-                // a stretch beyond a wall's end got a corner on the wall at one end, and its rows
-                // beside the wall there, while the layers it joined stood off it: on the torus the
-                // bend, and the bend it wraps, twisted through each other and through the walls.
-                int[] rowFrom = null;
-                for (int j = 1; j < cuts.length; j++) {
-                    Stretch stretch = stretch(fChain, gChain, a, b, cuts[j - 1], cuts[j]);
-                    double t0 = stretch.from();
-                    double t1 = stretch.to();
-                    double between = stretch.middle();
-                    double u0 = stretch.u0();
-                    double v0 = stretch.v0();
-                    double u1 = stretch.u1();
-                    double v1 = stretch.v1();
-                    double uMid = along(sheet.u(a), sheet.u(b), between);
-                    double vMid = along(sheet.v(a), sheet.v(b), between);
-                    int fFrom = stretch.fFrom();
-                    int fAt = stretch.fTo();
-                    int gFrom = stretch.gFrom();
-                    int gAt = stretch.gTo();
-                    int[] rowAt;
-                    int[] rowStart;
-                    if (backs) {
-                        rowStart = rowFrom != null ? new int[] {rowFrom[0]} : new int[] {apex(f, a, middle)};
-                        rowAt = new int[] {j == cuts.length - 1 ? apex(f, b, middle) : apex(f, u1, v1, middle)};
-                    } else {
-                        double beyond0 = j == 1 ? -past[2 * k] : onCut(bend, out, fChain, gChain, t0, between);
-                        double beyond1 = j == cuts.length - 1 ? past[2 * k + 1] : onCut(bend, out, fChain, gChain, t1, between);
-                        double lowRow = fLower ? lower : upper;
-                        double highRow = fLower ? upper : lower;
-                        // Each row leans from its own layer's crease as that layer is placed (f's row from f's).
-                        rowStart = new int[] {row(f, bend, u0, v0, out, beyond0, lowRow, uMid, vMid, rowFrom == null ? -1 : rowFrom[0],
-                                crept(f, fFrom, u0, v0)),
-                            row(f, bend, u0, v0, out, beyond0, highRow, uMid, vMid, rowFrom == null ? -1 : rowFrom[1], crept(f, gFrom, u0, v0))};
-                        rowAt = new int[] {row(f, bend, u1, v1, out, beyond1, lowRow, uMid, vMid, -1, crept(f, fAt, u1, v1)),
-                            row(f, bend, u1, v1, out, beyond1, highRow, uMid, vMid, -1, crept(f, gAt, u1, v1))};
-                    }
-                    boolean squashed = !backs && !onWall[k] && insideAt(fChain, between) && insideAt(gChain, between);
-                    if (!squashed) {
-                        int fm0 = rowStart[0];
-                        int fm1 = rowAt[0];
-                        int gm0 = rowStart[rowStart.length - 1];
-                        int gm1 = rowAt[rowAt.length - 1];
-                        addBendCap(bend.host(), new int[] {fFrom, fAt, fm1, fm0}, after, caps, capAfter);
-                        if (!backs) {
-                            addBendCap(bend.host(), new int[] {fm0, fm1, gm1, gm0}, after, caps, capAfter);
-                        }
-                        addBendCap(bend.host(), new int[] {gm0, gm1, gAt, gFrom}, after, caps, capAfter);
-                    } else {
-                        joinSquashed(cornerNear(fChain, between, t0), cornerNear(gChain, between, t0), after, caps, capAfter);
-                    }
-                    rowFrom = rowAt;
-                }
+            } else {
+                joinBends(placeBendsApart(at, shards));
             }
             Creep creep = creptCount == 0 ? Creep.NONE
                     : new Creep(java.util.Arrays.copyOf(creptVertices, creptCount), java.util.Arrays.copyOf(creptFrom, 3 * creptCount));
             return new Built(xyz, uv, paper, hosts, caps, capAfter.toArray(), creep, pieceStart);
+        }
+
+        /**
+         * Places the bends' caps in {@code shards} runs of consecutive bends on the workers'
+         * threads and this one, each run in a builder of its own ({@link #Builder(Builder,
+         * boolean)}): a bend's caps read the faces' vertices and make their own, none of another
+         * bend's, so the runs joined in order ({@link #joinBends}) are the caps one builder
+         * makes bend after bend.
+         */
+        private List<Builder> placeBendsApart(BendsAt at, int shards) {
+            List<Builder> parts = new ArrayList<>();
+            for (int s = 0; s < shards; s++) {
+                parts.add(new Builder(this, true));
+            }
+            int count = at.bends().size();
+            inParallel(shards, s -> parts.get(s).placeBends(at, (int) ((long) count * s / shards), (int) ((long) count * (s + 1) / shards)));
+            return parts;
+        }
+
+        private void placeBends(BendsAt at, int from, int to) {
+            for (int k = from; k < to; k++) {
+                placeBend(at, k);
+            }
+        }
+
+        /** Takes the caps that {@code parts} made, run after run, their own vertices numbered on from this builder's. */
+        private void joinBends(List<Builder> parts) {
+            for (Builder part : parts) {
+                int by = copyHost.size() - part.base;
+                copyHost.addRange(part.copyHost, 0, part.copyHost.size());
+                xyz.addRange(part.xyz, 0, part.xyz.size());
+                uv.addRange(part.uv, 0, part.uv.size());
+                for (int c = 0; c < part.caps.size(); c++) {
+                    caps.addShifted(part.caps, c, part.base, by);
+                }
+                capAfter.addRange(part.capAfter, 0, part.capAfter.size());
+            }
+        }
+
+        /** The bends' folds and how far each stands out, for {@link #placeBend}. */
+        private record BendsAt(List<NestedBends.Bend> bends, int[][] corners, IntList edges, double[] outs, double[] slopes, double[] past,
+                int[] backToBack, boolean[] onWall) {
+        }
+
+        /**
+         * The caps of bend k: from its two layers' chains along its crease, the facets of the
+         * paper bent about it, standing out as far as it does.
+         */
+        private void placeBend(BendsAt at, int k) {
+            List<NestedBends.Bend> bends = at.bends();
+            int[][] bendCorners = at.corners();
+            IntList bendEdges = at.edges();
+            double[] outs = at.outs();
+            double[] slopes = at.slopes();
+            double[] past = at.past();
+            int[] backToBack = at.backToBack();
+            boolean[] onWall = at.onWall();
+            int[] c = bendCorners[k];
+            int f = c[0];
+            int g = c[1];
+            NestedBends.Bend bend = bends.get(k);
+            double out = outs[k];
+            if ((c[4] == c[6] || samePlace(c[4], c[6])) && (c[5] == c[7] || samePlace(c[5], c[7]))) {
+                return; // paper of no thickness folded flat: nothing to bridge
+            }
+            int after = pieceStart[g + 1] - 1;
+            // The two layers' chains along the crease, made again rather than kept for every bend.
+            double[][] fChain = chain(f, bendEdges.get(5 * k + 1), c[2], c[3]);
+            double[][] gChain = chain(g, side(g, c[2], c[3]), c[2], c[3]);
+            if (out == 0 && !ConcaveWalls.standsBack(backToBack, onWall, k)) {
+                addCap(fChain, gChain, c[2], c[3], after, bend.host(), !onWall[k], caps, capAfter);
+                return;
+            }
+            if (fChain.length == 1 && gChain.length == 1) {
+                wholeBend(k, c, bend, out, out == 0 ? apexHeight(bends, backToBack, k) : 0, slopes[k], past, after, caps, capAfter);
+                return;
+            }
+            // Where its faces are placed in pieces, the bend goes from piece to piece as they meet the crease.
+            boolean backs = out == 0;
+            double middle = backs ? apexHeight(bends, backToBack, k) : (height(f) + height(g)) / 2;
+            boolean fLower = height(f) < height(g);
+            double lower = Math.min(height(f), height(g)) + (backs ? 0 : out / slopes[k]);
+            double upper = Math.max(height(f), height(g)) - out;
+            double[] cuts = backs ? cutsAlong(fChain, gChain) : withRowCuts(cutsAlong(fChain, gChain), bend, out, lower, upper);
+            int a = c[2];
+            int b = c[3];
+            // Stretch by stretch between the points where either layer's pieces meet the crease.
+            // Where a wall ends, the pieces on its two sides put one point of the crease in two
+            // places (on the wall, and out on the mitre): each stretch takes its ends from the
+            // pieces that run along it, and places its rows as it lies, beside the walls and
+            // mitres that its middle is. Taken from whichever piece came first along the chain,
+            // a stretch beyond a wall's end got a corner on the wall at one end, and its rows
+            // beside the wall there, while the layers it joined stood off it: on the torus the
+            // bend, and the bend it wraps, twisted through each other and through the walls.
+            int[] rowFrom = null;
+            for (int j = 1; j < cuts.length; j++) {
+                Stretch stretch = stretch(fChain, gChain, a, b, cuts[j - 1], cuts[j]);
+                double t0 = stretch.from();
+                double t1 = stretch.to();
+                double between = stretch.middle();
+                double u0 = stretch.u0();
+                double v0 = stretch.v0();
+                double u1 = stretch.u1();
+                double v1 = stretch.v1();
+                double uMid = along(sheet.u(a), sheet.u(b), between);
+                double vMid = along(sheet.v(a), sheet.v(b), between);
+                int fFrom = stretch.fFrom();
+                int fAt = stretch.fTo();
+                int gFrom = stretch.gFrom();
+                int gAt = stretch.gTo();
+                int[] rowAt;
+                int[] rowStart;
+                if (backs) {
+                    rowStart = rowFrom != null ? new int[] {rowFrom[0]} : new int[] {apex(f, a, middle)};
+                    rowAt = new int[] {j == cuts.length - 1 ? apex(f, b, middle) : apex(f, u1, v1, middle)};
+                } else {
+                    double beyond0 = j == 1 ? -past[2 * k] : onCut(bend, out, fChain, gChain, t0, between);
+                    double beyond1 = j == cuts.length - 1 ? past[2 * k + 1] : onCut(bend, out, fChain, gChain, t1, between);
+                    double lowRow = fLower ? lower : upper;
+                    double highRow = fLower ? upper : lower;
+                    // Each row leans from its own layer's crease as that layer is placed (f's row from f's).
+                    rowStart = new int[] {row(f, bend, u0, v0, out, beyond0, lowRow, uMid, vMid, rowFrom == null ? -1 : rowFrom[0],
+                            crept(f, fFrom, u0, v0)),
+                        row(f, bend, u0, v0, out, beyond0, highRow, uMid, vMid, rowFrom == null ? -1 : rowFrom[1], crept(f, gFrom, u0, v0))};
+                    rowAt = new int[] {row(f, bend, u1, v1, out, beyond1, lowRow, uMid, vMid, -1, crept(f, fAt, u1, v1)),
+                        row(f, bend, u1, v1, out, beyond1, highRow, uMid, vMid, -1, crept(f, gAt, u1, v1))};
+                }
+                boolean squashed = !backs && !onWall[k] && insideAt(fChain, between) && insideAt(gChain, between);
+                if (!squashed) {
+                    int fm0 = rowStart[0];
+                    int fm1 = rowAt[0];
+                    int gm0 = rowStart[rowStart.length - 1];
+                    int gm1 = rowAt[rowAt.length - 1];
+                    addBendCap(bend.host(), new int[] {fFrom, fAt, fm1, fm0}, after, caps, capAfter);
+                    if (!backs) {
+                        addBendCap(bend.host(), new int[] {fm0, fm1, gm1, gm0}, after, caps, capAfter);
+                    }
+                    addBendCap(bend.host(), new int[] {gm0, gm1, gAt, gFrom}, after, caps, capAfter);
+                } else {
+                    joinSquashed(cornerNear(fChain, between, t0), cornerNear(gChain, between, t0), after, caps, capAfter);
+                }
+                rowFrom = rowAt;
+            }
         }
 
         /**
@@ -511,19 +594,27 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         private List<Builder> placeFacesApart(int shards) {
             List<Builder> parts = new ArrayList<>();
             for (int s = 0; s < shards; s++) {
-                parts.add(new Builder(this));
+                parts.add(new Builder(this, false));
             }
+            inParallel(shards, s -> parts.get(s).placeFaces(s, shards));
+            return parts;
+        }
+
+        /**
+         * Runs {@code share} for shares 0 to {@code shares} - 1 on the workers' threads and this
+         * one, each thread taking the next share not yet taken till none is left: a worker still
+         * busy with other work (the analysis' hosts) when this thread has taken them all finds
+         * none, and this thread waits only for shares begun, never for a task still queued.
+         */
+        private static void inParallel(int shares, java.util.function.IntConsumer share) {
             java.util.concurrent.atomic.AtomicInteger next = new java.util.concurrent.atomic.AtomicInteger();
-            java.util.concurrent.CountDownLatch done = new java.util.concurrent.CountDownLatch(shards);
+            java.util.concurrent.CountDownLatch done = new java.util.concurrent.CountDownLatch(shares);
             java.util.concurrent.atomic.AtomicReference<Throwable> failed = new java.util.concurrent.atomic.AtomicReference<>();
-            // Each thread takes the next share not yet taken, till none is left: a worker still
-            // busy with the analysis' hosts when this thread has taken them all finds none, and
-            // this thread waits only for shares begun, never for a task still queued.
-            Runnable placing = () -> {
-                for (int s = next.getAndIncrement(); s < shards; s = next.getAndIncrement()) {
+            Runnable taking = () -> {
+                for (int s = next.getAndIncrement(); s < shares; s = next.getAndIncrement()) {
                     try {
                         if (failed.get() == null) {
-                            parts.get(s).placeFaces(s, shards);
+                            share.accept(s);
                         }
                     } catch (RuntimeException | Error e) {
                         failed.compareAndSet(null, e);
@@ -533,13 +624,13 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 }
             };
             for (int t = 1; t < Workers.threads(); t++) {
-                Workers.pool().execute(placing);
+                Workers.pool().execute(taking);
             }
-            placing.run();
+            taking.run();
             try {
                 done.await();
             } catch (InterruptedException e) {
-                next.set(shards);
+                next.set(shares);
                 Thread.currentThread().interrupt();
                 throw new java.util.concurrent.CancellationException("interrupted");
             }
@@ -550,7 +641,6 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             if (failure instanceof Error error) {
                 throw error;
             }
-            return parts;
         }
 
         /** Where this builder's lists end after each face it placed: vertices, paper faces, caps, vertices crept. */
@@ -804,7 +894,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             boolean crept = xy[0] != x || xy[1] != y;
             frame.toSpace(xy[0], xy[1], height(f), point, 0);
             for (int copy = first; copy >= 0; copy = nextCopy.get(copy)) {
-                if (copyHost.get(copy) == host && copyLevel.get(copy) == levels[f] && closer(copy, point, exact)) {
+                if (hostOfCopy(copy) == host && copyLevel.get(copy - base) == levels[f] && closer(copy, point, exact)) {
                     return copy;
                 }
             }
@@ -816,8 +906,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 }
             }
             int made = add(point, u, v);
-            copyHost.set(made, host);
-            copyLevel.set(made, levels[f]);
+            copyHost.set(made - base, host);
+            copyLevel.set(made - base, levels[f]);
             if (crept) {
                 if (creptCount == creptVertices.length) {
                     creptVertices = java.util.Arrays.copyOf(creptVertices, 2 * creptCount + 8);
@@ -963,7 +1053,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         private double[] crept(int f, int placed, double u, double v) {
             Isometry2 pose = sheet.pose(f);
             HostFrame frame = frames[sheet.host(f)];
-            double[] point = {xyz.get(3 * placed), xyz.get(3 * placed + 1), xyz.get(3 * placed + 2)};
+            double[] point = {spaceAt(placed, 0), spaceAt(placed, 1), spaceAt(placed, 2)};
             return new double[] {frame.localX(point) - pose.x(u, v), frame.localY(point) - pose.y(u, v)};
         }
 
@@ -1754,12 +1844,12 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
 
         /** The frame x of space vertex {@code vertex}. */
         private double spaceX(HostFrame frame, int vertex) {
-            return frame.localX(new double[] {xyz.get(3 * vertex), xyz.get(3 * vertex + 1), xyz.get(3 * vertex + 2)});
+            return frame.localX(new double[] {spaceAt(vertex, 0), spaceAt(vertex, 1), spaceAt(vertex, 2)});
         }
 
         /** The frame y of space vertex {@code vertex}. */
         private double spaceY(HostFrame frame, int vertex) {
-            return frame.localY(new double[] {xyz.get(3 * vertex), xyz.get(3 * vertex + 1), xyz.get(3 * vertex + 2)});
+            return frame.localY(new double[] {spaceAt(vertex, 0), spaceAt(vertex, 1), spaceAt(vertex, 2)});
         }
 
         /**
@@ -1779,7 +1869,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             for (int side = 0; side < 4; side += 2) {
                 int a = quad[side];
                 int b = quad[side + 1];
-                if (copyHost.get(a) < 0 && copyHost.get(b) < 0) {
+                if (hostOfCopy(a) < 0 && hostOfCopy(b) < 0) {
                     continue; // between the bend's rows, or points made on a crease between a layer's corners
                 }
                 addLineCap(a, b, after, caps, capAfter);
@@ -1794,9 +1884,9 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         private void addLineCap(int a, int b, int after, List<int[]> caps, IntList capAfter) {
             double[] middle = new double[3];
             for (int d = 0; d < 3; d++) {
-                middle[d] = (xyz.get(3 * a + d) + xyz.get(3 * b + d)) / 2;
+                middle[d] = (spaceAt(a, d) + spaceAt(b, d)) / 2;
             }
-            int m = capVertex(middle, (uv.get(2 * a) + uv.get(2 * b)) / 2, (uv.get(2 * a + 1) + uv.get(2 * b + 1)) / 2);
+            int m = capVertex(middle, (paperAt(a, 0) + paperAt(b, 0)) / 2, (paperAt(a, 1) + paperAt(b, 1)) / 2);
             caps.add(new int[] {a, m, b});
             capAfter.add(after);
         }
@@ -1826,7 +1916,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          * fell off the strip (truth 1: three pieces in space).
          */
         private void joinSquashed(int f, int g, int after, List<int[]> caps, IntList capAfter) {
-            if (f == g || closer(f, new double[] {xyz.get(3 * g), xyz.get(3 * g + 1), xyz.get(3 * g + 2)}, exact)) {
+            if (f == g || closer(f, new double[] {spaceAt(g, 0), spaceAt(g, 1), spaceAt(g, 2)}, exact)) {
                 return;
             }
             addLineCap(f, g, after, caps, capAfter);
@@ -1834,7 +1924,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
 
         /** Whether space vertex {@code vertex} lies on the mitre of concave edge k of the frame's host, within {@link #ON_MITRE}. */
         private boolean onMitre(HostFrame frame, int k, int vertex) {
-            double[] point = {xyz.get(3 * vertex), xyz.get(3 * vertex + 1), xyz.get(3 * vertex + 2)};
+            double[] point = {spaceAt(vertex, 0), spaceAt(vertex, 1), spaceAt(vertex, 2)};
             double x = frame.localX(point);
             double y = frame.localY(point);
             double tan = frame.mitreAt(k, x, y);
@@ -2070,7 +2160,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     int b = (int) edge[3];
                     double[] point = new double[3];
                     for (int d = 0; d < 3; d++) {
-                        point[d] = xyz.get(3 * a + d) + w * (xyz.get(3 * b + d) - xyz.get(3 * a + d));
+                        point[d] = spaceAt(a, d) + w * (spaceAt(b, d) - spaceAt(a, d));
                     }
                     return capVertex(point, u, v);
                 }
@@ -2084,7 +2174,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         /** A vertex of a cap's middle rows, made for no face's layer: shared with none. */
         private int capVertex(double[] point, double u, double v) {
             int made = add(point, u, v);
-            copyHost.set(made, -1);
+            copyHost.set(made - base, -1);
             return made;
         }
 
@@ -2107,19 +2197,37 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             return capVertex(point, u, v);
         }
 
+        /**
+         * Coordinate d (x, y, z) of space vertex v: of the paper placed before this builder's
+         * ({@link #shared}) below {@link #base}, of this builder's own from there.
+         */
+        private double spaceAt(int v, int d) {
+            return v < base ? shared.xyz.get(3 * v + d) : xyz.get(3 * (v - base) + d);
+        }
+
+        /** Paper coordinate d (u, v) of space vertex v ({@link #spaceAt}). */
+        private double paperAt(int v, int d) {
+            return v < base ? shared.uv.get(2 * v + d) : uv.get(2 * (v - base) + d);
+        }
+
+        /** The triangle space vertex v was made for, -1 for a cap's ({@link #spaceAt}). */
+        private int hostOfCopy(int v) {
+            return v < base ? shared.copyHost.get(v) : copyHost.get(v - base);
+        }
+
         private boolean closer(int copy, double[] point, double distance) {
-            double dx = xyz.get(3 * copy) - point[0];
-            double dy = xyz.get(3 * copy + 1) - point[1];
-            double dz = xyz.get(3 * copy + 2) - point[2];
+            double dx = spaceAt(copy, 0) - point[0];
+            double dy = spaceAt(copy, 1) - point[1];
+            double dz = spaceAt(copy, 2) - point[2];
             return dx * dx + dy * dy + dz * dz <= distance * distance;
         }
 
         private boolean samePlace(int a, int b) {
-            return closer(a, new double[] {xyz.get(3 * b), xyz.get(3 * b + 1), xyz.get(3 * b + 2)}, merge);
+            return closer(a, new double[] {spaceAt(b, 0), spaceAt(b, 1), spaceAt(b, 2)}, merge);
         }
 
         private int add(double[] point, double u, double v) {
-            int made = copyHost.size();
+            int made = base + copyHost.size();
             copyHost.add(-1);
             if (nextCopy != null) {
                 copyLevel.add(-1);

@@ -73,5 +73,8 @@ class ListsTest {
         renumbered.addNumbered(arrays, 0, new int[] {10, 11, 12});
         org.junit.jupiter.api.Assertions.assertArrayEquals(new int[] {12, 11}, renumbered.get(0));
         org.junit.jupiter.api.Assertions.assertArrayEquals(new int[] {10, 11, 12}, renumbered.get(1));
+        PackedIntArrays shifted = new PackedIntArrays();
+        shifted.addShifted(arrays, 0, 1, 100); // 1 and up raised by 100, 0 kept
+        org.junit.jupiter.api.Assertions.assertArrayEquals(new int[] {0, 101, 102}, shifted.get(0));
     }
 }
