@@ -1,5 +1,6 @@
 package ifold.wrap;
 
+import ifold.mesh.IndexedPolygons;
 import ifold.refine.HamiltonianRefinement;
 import java.util.ArrayList;
 import java.util.List;
@@ -57,10 +58,19 @@ public final class Seam {
      */
     public static Chosen wrap(HamiltonianRefinement.Result refinement, Wrap.Options options, Wrap.Watcher watcher) throws Wrap.WrapException {
         int tries = tries(refinement);
+        List<Double> shares = new ArrayList<>();
+        for (int k = 0; k < tries; k++) {
+            shares.add(TRIED[k]);
+        }
+        double rolled = tries > 1 ? rollShare(refinement) : Double.NaN;
+        if (!Double.isNaN(rolled)) {
+            shares.add(rolled);
+            tries++;
+        }
         Chosen best = null;
         List<Integer> layers = new ArrayList<>();
         for (int k = 0; k < tries; k++) {
-            HamiltonianRefinement.Result begun = k == 0 ? refinement : refinement.begunAt(TRIED[k]);
+            HamiltonianRefinement.Result begun = k == 0 ? refinement : refinement.begunAt(shares.get(k));
             Wrap.Result result;
             try {
                 result = Wrap.wrap(begun, options, share(watcher, k, tries));
@@ -77,12 +87,48 @@ public final class Seam {
             int most = placed.analysis().maxLayers();
             layers.add(most);
             if (best == null || most < best.placed().analysis().maxLayers()) {
-                best = new Chosen(begun, result, placed, TRIED[k], null, seconds);
+                best = new Chosen(begun, result, placed, shares.get(k), null, seconds);
             }
         }
         return new Chosen(best.refinement(), best.result(), best.placed(), best.along(),
                 tries > 1 ? java.util.Collections.unmodifiableList(layers) : List.of(),
                 best.measureSeconds());
+    }
+
+    /**
+     * Where round its path a strip is begun so that its end is rolled round a spike's apex
+     * (docs/wrap.md, Limits, "What 24 layers at the spike's apex would take"): the share of the
+     * way round of the first triangle entered at a true sharp vertex, its corner there under the
+     * preparation's target, whose triangle before has a corner there too (the path then ends on
+     * that one, its base running from the vertex); NaN where no cyclic path has one. Tried
+     * besides {@link #TRIED}: none of those begins there on the shared spike.
+     */
+    static double rollShare(HamiltonianRefinement.Result refinement) {
+        IndexedPolygons mesh = refinement.mesh();
+        int[] starts = refinement.componentStart();
+        for (int c = 0; c + 1 < starts.length; c++) {
+            int length = starts[c + 1] - starts[c];
+            if (!refinement.cyclic(c) || length < 3) {
+                continue;
+            }
+            for (int j = 0; j < length; j++) {
+                int[] corners = corners(mesh, starts[c] + j);
+                int[] exit = PathPlan.sharedEdge(corners, corners(mesh, starts[c] + (j + 1) % length));
+                if (exit == null) {
+                    continue;
+                }
+                int v = PathPlan.third(corners, exit);
+                int[] before = corners(mesh, starts[c] + (j + length - 1) % length);
+                if ((before[0] == v || before[1] == v || before[2] == v) && ApexRoll.sharpStart(mesh, corners, v)) {
+                    return (double) j / length;
+                }
+            }
+        }
+        return Double.NaN;
+    }
+
+    private static int[] corners(IndexedPolygons mesh, int f) {
+        return new int[] {mesh.faceVertex(f, 0), mesh.faceVertex(f, 1), mesh.faceVertex(f, 2)};
     }
 
     /** How many starts are tried: all of {@link #TRIED} for a short path with a cyclic component, else one. */

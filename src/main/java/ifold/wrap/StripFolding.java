@@ -100,6 +100,13 @@ final class StripFolding {
      */
     private int sharpSide;
     private double sharpX;
+    /**
+     * The true sharp vertex (a spike's apex) the strip begins at and ends rolled round
+     * ({@link #rollApex}), -1 none; and for each host round it, how far from it the roll covers
+     * the host's whole width, where that host's triangles stop short of it.
+     */
+    private int rolledApex = -1;
+    private Map<Integer, Double> rollCovers;
     /** The path's triangles (from 0) on each host, found when a triangle at a sharp corner first asks. */
     private Map<Integer, List<Integer>> pathOnHost;
 
@@ -122,6 +129,7 @@ final class StripFolding {
 
     Strip fold() throws FoldException, WrapException {
         int[] after = new int[plan.m];
+        rolledApex = rollApex();
         for (int i = 0; i < plan.m; i++) {
             pathIndex = i;
             intoHost = toHost[plan.first + i];
@@ -158,7 +166,16 @@ final class StripFolding {
         double[] hostCorners = hostFrames[hostOf(i)].corners();
         stopShort(i, frame, hostCorners);
         sharpEnd(i, frame, hostCorners);
-        double[] bottom = last ? null : evenedUp(edges, k, d, i, hostCorners);
+        boolean skip = i == 0 && rolledApex >= 0;
+        if (skip) {
+            // The first passes begin where the whole band lies that far from the apex or more:
+            // a band of height s below the apex reaches s / sin α along an edge at α to the base.
+            double x0 = frame.apexX();
+            double sine = h / Math.max(Math.hypot(x0, h), Math.hypot(frame.baseLength() - x0, h));
+            h -= rollReach(0) * sine;
+            k = passes(h, w);
+        }
+        double[] bottom = last || skip ? null : evenedUp(edges, k, d, i, hostCorners);
         if (bottom != null) {
             k = bottom.length;
         } else {
@@ -166,7 +183,7 @@ final class StripFolding {
             for (int j = 0; j < k; j++) {
                 bottom[j] = h - (j + 1) * w;
             }
-            if (!last || lastTurnsShort(frame, k, h, hostCorners)) {
+            if (!last || rolledApex >= 0 || lastTurnsShort(frame, k, h, hostCorners)) {
                 int shortTurn = shortTurn(edges, k, d, hostCorners);
                 for (int j = shortTurn + 1; j < k; j++) {
                     bottom[j] = (k - 1 - j) * w;
@@ -185,7 +202,8 @@ final class StripFolding {
         int passes = k + (last && overlapped(plan, w) ? 1 : 0);
         // Where the strip runs back over the last pass to the corner it leaves by, the turn into
         // that pass, at the same corner, stands back from it (runsBackToCorner).
-        double lastTurnFrom = !last && runsBackToCorner(i, k, d, hostCorners) ? SHORT_OF_CORNER * w : 0;
+        double lastTurnFrom = !last && runsBackToCorner(i, k, d, hostCorners) ? SHORT_OF_CORNER * w
+                : last && rolledApex >= 0 && k >= 2 && (k % 2 == 1 ? d : -d) != towardsRolledApex(i) ? rolledTurnFrom(frame) : 0;
         for (int j = 0; j + 1 < k; j++) {
             // Joined, not formatted: a wrap makes hundreds of thousands of these notes, and a
             // formatter each was a hundredth of what the 5,000-triangle torus allocated.
@@ -194,7 +212,18 @@ final class StripFolding {
             d = -d;
         }
         passNote = "pass " + k + " of " + passes;
-        if (last) {
+        if (last && rolledApex >= 0) {
+            if (d != towardsRolledApex(i)) {
+                detail = "the strip turns back to roll round the apex";
+                tailFold(Kind.OVERLAP, host, endOfPass(edges, d, bottom[k - 1]), 0, 0, 1, Placement.OVER);
+                d = -d;
+            }
+            // The host is finished first: a flap tucked along an edge the roll then crosses
+            // would be folded round the roll's crossing (a tuck's bend under its cap, 0.04 T
+            // through it, on bench/corners' 5° and 10° spikes).
+            tuckAll(i);
+            roll(i);
+        } else if (last) {
             double end = endOfPass(edges, d, bottom[k - 1]);
             if (overlapped(plan, w)) {
                 detail = "the strip turns back to end at corner " + cornerName(plan.ends.end());
@@ -207,6 +236,128 @@ final class StripFolding {
         } else {
             leave(i, edges, d);
         }
+    }
+
+    /**
+     * The vertex the strip's end is rolled round, -1 none: the vertex v the first triangle is
+     * entered at, where v is a true sharp vertex (angle sum under 90°) and the first triangle's
+     * corner there is under the preparation's target (no preparation widens it), and the last
+     * triangle's base ends at v ({@link Seam} tries the strip begun there). Paper kept on one face
+     * by tucks lays 180°/θ layers where a side of the strip passes a corner of θ (72 on the
+     * shared spike's 2.5° faces, each face having one); rolled round the apex, over the solid's
+     * edges there, the strip's end corner lays 90°/Θ, Θ the vertex's angle sum (12 on the spike),
+     * and the other triangles stop short of the apex where the roll covers their host.
+     */
+    private int rollApex() {
+        if (plan.m < 2) {
+            return -1;
+        }
+        int v = plan.start[0];
+        int last = plan.m - 1;
+        if (plan.baseFrom[last] != v && plan.baseTo[last] != v || !ApexRoll.sharpStart(mesh, plan.corners[0], v)) {
+            return -1;
+        }
+        rollCovers = ApexRoll.coverage(mesh, plan, pieces, v, last, w);
+        return rollCovers == null ? -1 : v;
+    }
+
+    /**
+     * How far short of the rolled apex a triangle of path triangle i's host stops: where the roll
+     * stops covering the host's whole width. Nearer, the turns stopped there lie under the caps
+     * of the roll's first creases over the host's edges, which reach as far (the spike's second,
+     * 15 widths along an edge, crossed a tuck's bend along it 0.48 T deep with the turns at 0.9
+     * of it, 4 pairs of caps; 8 at 0.3 of a width over the tangent of the face's angle).
+     */
+    private double rollReach(int i) {
+        return rollCovers.get(hostOf(i));
+    }
+
+    /**
+     * Where above the base the turn into the last pass of the last triangle lies beyond its edge
+     * from the rolled apex, where that pass runs away from the apex and the strip back along it
+     * to be rolled: the run back covers the band along the base up to the apex, so the turn need
+     * not reach it. Its creases a width (and the margin) past where that edge leaves the band,
+     * the farthest the pass before still covers the triangle above the band from: its corner
+     * beyond the edge (the host's), tucked along it, then starts where the cap of the roll's
+     * first crease over that edge ends, w / sin φ along it. Turned at the band's top, the tuck's
+     * bend lay under that cap, 3 or 4 pairs of caps 0.04 T deep on bench/corners' 5° and 10°
+     * spikes; turned at the apex, 4 pairs at 3°; 1.3 widths past, a hole (coverage 0.99976).
+     */
+    private double rolledTurnFrom(HostFrame frame) {
+        double run = towardsRolledApex(plan.m - 1) < 0 ? frame.apexX() : frame.baseLength() - frame.apexX();
+        return w + (w + margin) * frame.altitude() / run;
+    }
+
+    /** The direction (+1 along x, -1 against) of path triangle i's base towards the rolled apex, an end of it. */
+    private int towardsRolledApex(int i) {
+        return plan.baseFrom[i] == rolledApex ? -1 : 1;
+    }
+
+    /**
+     * Rolls the strip's end round the rolled apex, its last pass (of path triangle i) running
+     * into it with a side through it: the tail is folded over the line of the host's edge at the
+     * apex that runs back into the strip from there (each crease through the apex, at the
+     * angles the faces sum to from that side: 1.25°, 3.75°, … on the shared spike), onto the host
+     * across, and so on round, until the next such edge would lie at 90° or more; then the strip
+     * ends square through the apex. Each piece is a wedge of a face at the apex, under the strip's
+     * far side, and lands over what it meets: 90°/Θ layers at the apex, Θ the angle sum.
+     */
+    private void roll(int i) throws FoldException, WrapException {
+        double[] apexP = position(mesh, rolledApex);
+        int cameFrom = -1;
+        // At most one fold a degree of the 90° rolled, for faces of a degree: a guard, not a limit
+        // met (36 folds on the spike, 90 on the 1° one of bench/corners).
+        for (int round = 0; round < 10000; round++) {
+            int host = sheet.tailHost();
+            HostFrame f = hostFrames[host];
+            int[] cs = pieces.corners[host];
+            int n = cs.length;
+            int ka = -1;
+            for (int k = 0; k < n; k++) {
+                if (cs[k] == rolledApex) {
+                    ka = k;
+                }
+            }
+            Isometry2 pose = sheet.tailPose();
+            Isometry2 inv = pose.inverse();
+            double ax = f.localX(apexP);
+            double ay = f.localY(apexP);
+            // The side of the strip through the apex, and into the strip from it.
+            double va = inv.y(ax, ay);
+            int s = va < w / 2 ? 1 : -1;
+            int next = -1;
+            for (int c : new int[] {cs[(ka + 1) % n], cs[(ka + n - 1) % n]}) {
+                if (c == cameFrom) {
+                    continue;
+                }
+                double[] cp = position(mesh, c);
+                double du = inv.dx(f.localX(cp) - ax, f.localY(cp) - ay);
+                double dv = inv.dy(f.localX(cp) - ax, f.localY(cp) - ay);
+                // Back along the strip from the apex and into it: the edge the tail crosses next.
+                if (du < 0 && s * dv > 0) {
+                    next = c;
+                }
+            }
+            if (next < 0) {
+                detail = "the strip's end rolled round the apex";
+                record(Kind.END, plan.first + i, sheet.endTail(ax, ay, pose.dx(0, 1), pose.dy(0, 1)));
+                return;
+            }
+            int across = ApexRoll.hostAcross(pieces, host, rolledApex, next);
+            if (across < 0) {
+                throw new IllegalStateException("no host across the edge " + rolledApex + "-" + next + " of the rolled apex");
+            }
+            HostFrame g = hostFrames[across];
+            double[] cp = position(mesh, next);
+            Isometry2 development = Isometry2.taking(ax, ay, f.localX(cp), f.localY(cp), g.localX(apexP), g.localY(apexP), g.localX(cp), g.localY(cp));
+            int hostBefore = sheet.tailHost();
+            Isometry2 before = sheet.tailPose();
+            detail = "roll round the apex";
+            int face = sheet.crossTail(ax, ay, f.localX(cp) - ax, f.localY(cp) - ay, across, development);
+            recordTail(Kind.EDGE_CROSSING, plan.first + i, face, hostBefore, before, true);
+            cameFrom = next;
+        }
+        throw new IllegalStateException("the roll does not end");
     }
 
     /**
@@ -558,6 +709,12 @@ final class StripFolding {
      */
     private void stopShort(int i, HostFrame frame, double[] hostCorners) {
         stopX = Double.NaN;
+        if (rolledApex >= 0 && i > 0 && (plan.baseFrom[i] == rolledApex || plan.baseTo[i] == rolledApex)) {
+            double reach = rollReach(i);
+            stopSide = plan.baseTo[i] == rolledApex ? 1 : -1;
+            stopX = stopSide > 0 ? frame.baseLength() - reach : reach;
+            return;
+        }
         if (!baseInsideHost(i, frame, hostCorners)) {
             return;
         }

@@ -102,7 +102,13 @@ public class WrapTest {
                 hostChanges += result.hostOf()[t] != result.hostOf()[t + 1] ? 1 : 0;
             }
         }
-        assertEquals(hostChanges, result.count(Wrap.Kind.EDGE_CROSSING));
+        // The last triangle is left nowhere: its folds over edges are its end rolled round a
+        // spike's apex (StripFolding.roll), each over an edge there.
+        int rolled = 0;
+        for (Wrap.Step step : result.steps()) {
+            rolled += step.kind() == Wrap.Kind.EDGE_CROSSING && step.pathIndex() == step.pathLength() - 1 ? 1 : 0;
+        }
+        assertEquals(hostChanges, result.count(Wrap.Kind.EDGE_CROSSING) - rolled);
         // The sixth truth, read from the FOLD file: the layers are in an order flat paper can have.
         List<ifold.foldfile.FoldFile.Folded> sheets = new ArrayList<>();
         for (Wrap.Strip strip : result.strips()) {

@@ -1,0 +1,167 @@
+package ifold.wrap;
+
+import static ifold.wrap.Wrap.position;
+
+import ifold.geom.Tolerance;
+import ifold.mesh.IndexedPolygons;
+import ifold.refine.FacePreparation;
+import java.util.HashMap;
+import java.util.Map;
+
+/**
+ * The strip's end rolled round a spike's apex (docs/wrap.md, Limits, "What 24 layers at the
+ * spike's apex would take"): where the path is begun at a triangle entered at a true sharp vertex
+ * and ends on the one before, whose base runs from it, the last pass runs into the apex and the
+ * strip goes on over each of the solid's edges there in turn, all its creases through the apex,
+ * until it ends square through it ({@link StripFolding} folds it). Its corner lays 90°/Θ layers
+ * there, Θ the vertex's angle sum, where a side of the strip tucked on each face lays 180°/θ on
+ * each, θ the face's angle. These are the rules that decide where it is done and how far from the
+ * apex it covers each face.
+ */
+final class ApexRoll {
+    private ApexRoll() {
+    }
+
+    /**
+     * Whether a path triangle of corners {@code corners} entered at v may have the strip's end
+     * rolled round v: v a true sharp vertex of the model (angle sum under 90°), and the corner
+     * there of the triangle's plane (the triangles at v in that plane) under the preparation's
+     * target, which no preparation widens (the flat figure3's corner of 35°, a sharp vertex of
+     * 70° summed over its two sides, is none).
+     */
+    static boolean sharpStart(IndexedPolygons mesh, int[] corners, int v) {
+        int k = v == corners[0] ? 0 : v == corners[1] ? 1 : v == corners[2] ? 2 : -1;
+        // Its own corner first: the walk of every face below is for the few that pass.
+        if (k < 0 || Math.toDegrees(LayerFloor.angle(mesh, v, corners[(k + 1) % 3], corners[(k + 2) % 3])) >= FacePreparation.TARGET_ANGLE) {
+            return false;
+        }
+        double[] normal = normal(mesh, corners[0], corners[1], corners[2]);
+        double sum = 0;
+        double inPlane = 0;
+        for (int f = 0; f < mesh.faceCount(); f++) {
+            int n = mesh.faceSize(f);
+            for (int j = 0; j < n; j++) {
+                if (mesh.faceVertex(f, j) == v) {
+                    double angle = LayerFloor.angle(mesh, v, mesh.faceVertex(f, (j + 1) % n), mesh.faceVertex(f, (j + n - 1) % n));
+                    sum += angle;
+                    double[] other = normal(mesh, mesh.faceVertex(f, 0), mesh.faceVertex(f, 1), mesh.faceVertex(f, 2));
+                    inPlane += dot(normal, other) > 1 - Tolerance.RELATIVE_EQUALITY ? angle : 0;
+                }
+            }
+        }
+        return LayerFloor.sharp(sum) && Math.toDegrees(inPlane) < FacePreparation.TARGET_ANGLE;
+    }
+
+    /** The unit normal of the triangle a, b, c of {@code mesh}. */
+    private static double[] normal(IndexedPolygons mesh, int a, int b, int c) {
+        double[] pa = position(mesh, a);
+        return unit(cross(minus(position(mesh, b), pa), minus(position(mesh, c), pa)));
+    }
+
+    /**
+     * How far from apex v the roll of the strip's end (the last triangle's last pass along its
+     * base into v, then over each edge at v in turn) covers each host round v across its whole
+     * width: w / sin φ, φ the angle from the base at which the roll leaves the host's wedge the
+     * first time it has crossed all of it. Null where a host round v is not a plane's corner.
+     */
+    static Map<Integer, Double> coverage(IndexedPolygons mesh, PathPlan plan, HostPieces pieces, int v, int last, double w) {
+        double[] apex = position(mesh, v);
+        int other = plan.baseFrom[last] == v ? plan.baseTo[last] : plan.baseFrom[last];
+        double[] along = unit(minus(position(mesh, other), apex));
+        double[] inward = minus(position(mesh, plan.start[last]), apex);
+        int start = pieces.hostOf[plan.first + last];
+        int[] cs = pieces.corners[start];
+        int ka = indexOf(cs, v);
+        if (ka < 0) {
+            return null;
+        }
+        int out = -1;
+        int back = -1;
+        for (int c : new int[] {cs[(ka + 1) % cs.length], cs[(ka + cs.length - 1) % cs.length]}) {
+            double[] d = minus(position(mesh, c), apex);
+            if (dot(cross(along, d), cross(along, inward)) > 0) {
+                out = c;
+            } else {
+                back = c;
+            }
+        }
+        if (out < 0 || back < 0) {
+            return null;
+        }
+        double phi = angle(along, minus(position(mesh, out), apex));
+        double rest = angle(along, minus(position(mesh, back), apex));
+        Map<Integer, Double> covers = new HashMap<>();
+        int host = start;
+        int from = out;
+        for (int round = 0; round < 64; round++) {
+            host = hostAcross(pieces, host, v, from);
+            if (host < 0) {
+                return null;
+            }
+            int[] hc = pieces.corners[host];
+            int k = indexOf(hc, v);
+            if (k < 0) {
+                return null;
+            }
+            int next = hc[(k + 1) % hc.length] == from ? hc[(k + hc.length - 1) % hc.length] : hc[(k + 1) % hc.length];
+            double wedge = angle(minus(position(mesh, from), apex), minus(position(mesh, next), apex));
+            if (host == start) {
+                covers.put(host, w / Math.sin(Math.min(Math.PI / 2, phi + rest)));
+                return covers;
+            }
+            phi += wedge;
+            covers.put(host, w / Math.sin(Math.min(Math.PI / 2, phi)));
+            from = next;
+        }
+        return null;
+    }
+
+    private static int indexOf(int[] a, int x) {
+        for (int k = 0; k < a.length; k++) {
+            if (a[k] == x) {
+                return k;
+            }
+        }
+        return -1;
+    }
+
+    private static double[] minus(double[] a, double[] b) {
+        return new double[] {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+    }
+
+    private static double[] cross(double[] a, double[] b) {
+        return new double[] {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    }
+
+    private static double dot(double[] a, double[] b) {
+        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    }
+
+    private static double[] unit(double[] a) {
+        double n = Math.sqrt(dot(a, a));
+        return new double[] {a[0] / n, a[1] / n, a[2] / n};
+    }
+
+    private static double angle(double[] a, double[] b) {
+        return Math.atan2(Math.sqrt(dot(cross(a, b), cross(a, b))), dot(a, b));
+    }
+
+    /** The host other than {@code host} with the edge from corner a to corner b, -1 none. */
+    static int hostAcross(HostPieces pieces, int host, int a, int b) {
+        for (int h = 0; h < pieces.corners.length; h++) {
+            if (h == host) {
+                continue;
+            }
+            int[] cs = pieces.corners[h];
+            for (int k = 0; k < cs.length; k++) {
+                int x = cs[k];
+                int y = cs[(k + 1) % cs.length];
+                if (x == a && y == b || x == b && y == a) {
+                    return h;
+                }
+            }
+        }
+        return -1;
+    }
+
+}
