@@ -112,7 +112,7 @@ class WrappedPaperCollisionsTest {
         assertTrue(result.isClean(), result::summary);
     }
 
-    /** The shared polyhedra without concave edges: clean, the spike's 74 layers at its apex too. */
+    /** The shared polyhedra without concave edges: clean, the spike too (14 layers, its strip's end rolled round its apex). */
     @ParameterizedTest
     @ValueSource(strings = {"dodecahedron.off", "hex_prism.off", "house.off", "long_box.off", "spike.off"})
     void wrapsOfTheSharedConvexPolyhedraAreClean(String name) throws Exception {
