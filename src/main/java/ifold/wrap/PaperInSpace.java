@@ -323,20 +323,11 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             doneWithFaces();
             standingOut.run();
             int[] hosts = hostList.toArray();
-            // The bends below, once every bend is known.
-            int next = 0;
-            for (int f = 0, here = 0; f < faces; f++) {
-                int n = sheet.loopLength(f);
-                for (int i = 0; i < n; i++, here++) {
-                    if (!flatSides.get(here)) {
-                        continue;
-                    }
-                    int g = flatAcross.get(next++);
-                    int a = sheet.loopVertex(f, i);
-                    int b = sheet.loopVertex(f, (i + 1) % n);
-                    // the paper runs on flat, or bends over an edge with no thickness where the two sides meet
-                    addCap(chain(f, i, a, b), chain(g, side(g, a, b), a, b), a, b, pieceStart[g + 1] - 1, -1, false, caps, capAfter);
-                }
+            // The caps of the joins that are not bends, and the bends below, once every bend is known.
+            if (shards == 1) {
+                placeFlatCaps(flatSides, flatAcross, 0, faces, 0, 0);
+            } else {
+                joinCaps(placeFlatCapsApart(flatSides, flatAcross, shards));
             }
             // Each bend's faces f and g, its crease a, b, and where each face's paper begins and ends along it.
             int[][] bendCorners = new int[bends.size()][];
@@ -362,7 +353,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     placeBend(at, k);
                 }
             } else {
-                joinBends(placeBendsApart(at, shards));
+                joinCaps(placeBendsApart(at, shards));
             }
             Creep creep = creptCount == 0 ? Creep.NONE
                     : new Creep(java.util.Arrays.copyOf(creptVertices, creptCount), java.util.Arrays.copyOf(creptFrom, 3 * creptCount));
@@ -373,7 +364,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          * Places the bends' caps in {@code shards} runs of consecutive bends on the workers'
          * threads and this one, each run in a builder of its own ({@link #Builder(Builder,
          * boolean)}): a bend's caps read the faces' vertices and make their own, none of another
-         * bend's, so the runs joined in order ({@link #joinBends}) are the caps one builder
+         * bend's, so the runs joined in order ({@link #joinCaps}) are the caps one builder
          * makes bend after bend.
          */
         private List<Builder> placeBendsApart(BendsAt at, int shards) {
@@ -392,8 +383,54 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             }
         }
 
+        /**
+         * The caps where the paper runs on flat or over an edge (no bend), of faces {@code from}
+         * to {@code to} - 1: {@code here} and {@code next} are where face {@code from}'s sides
+         * begin among the sides ({@code flatSides}, set for each side that joins a later face
+         * other than by a bend) and among those sides' faces across ({@code flatAcross}).
+         */
+        private void placeFlatCaps(java.util.BitSet flatSides, IntList flatAcross, int from, int to, int here, int next) {
+            for (int f = from; f < to; f++) {
+                int n = sheet.loopLength(f);
+                for (int i = 0; i < n; i++, here++) {
+                    if (!flatSides.get(here)) {
+                        continue;
+                    }
+                    int g = flatAcross.get(next++);
+                    int a = sheet.loopVertex(f, i);
+                    int b = sheet.loopVertex(f, (i + 1) % n);
+                    // the paper runs on flat, or bends over an edge with no thickness where the two sides meet
+                    addCap(chain(f, i, a, b), chain(g, side(g, a, b), a, b), a, b, pieceStart[g + 1] - 1, -1, false, caps, capAfter);
+                }
+            }
+        }
+
+        /** {@link #placeFlatCaps} in {@code shards} runs of consecutive faces, as {@link #placeBendsApart} places the bends. */
+        private List<Builder> placeFlatCapsApart(java.util.BitSet flatSides, IntList flatAcross, int shards) {
+            int faces = sheet.faceCount();
+            int[] from = new int[shards + 1];
+            int[] here = new int[shards + 1];
+            int[] next = new int[shards + 1];
+            for (int s = 0, f = 0, side = 0, across = 0; s <= shards; s++) {
+                from[s] = (int) ((long) faces * s / shards);
+                for (; f < from[s]; f++) {
+                    for (int i = 0; i < sheet.loopLength(f); i++, side++) {
+                        across += flatSides.get(side) ? 1 : 0;
+                    }
+                }
+                here[s] = side;
+                next[s] = across;
+            }
+            List<Builder> parts = new ArrayList<>();
+            for (int s = 0; s < shards; s++) {
+                parts.add(new Builder(this, true));
+            }
+            inParallel(shards, s -> parts.get(s).placeFlatCaps(flatSides, flatAcross, from[s], from[s + 1], here[s], next[s]));
+            return parts;
+        }
+
         /** Takes the caps that {@code parts} made, run after run, their own vertices numbered on from this builder's. */
-        private void joinBends(List<Builder> parts) {
+        private void joinCaps(List<Builder> parts) {
             for (Builder part : parts) {
                 int by = copyHost.size() - part.base;
                 copyHost.addRange(part.copyHost, 0, part.copyHost.size());
