@@ -660,8 +660,9 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     }
                 }
             };
+            List<java.util.concurrent.Future<?>> helping = new ArrayList<>();
             for (int t = 1; t < Workers.threads(); t++) {
-                Workers.pool().execute(taking);
+                helping.add(Workers.pool().submit(taking));
             }
             taking.run();
             try {
@@ -670,6 +671,11 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 next.set(shares);
                 Thread.currentThread().interrupt();
                 throw new java.util.concurrent.CancellationException("interrupted");
+            } finally {
+                // A task still queued would hold the shares' builders till a worker got to it.
+                for (java.util.concurrent.Future<?> help : helping) {
+                    help.cancel(false);
+                }
             }
             Throwable failure = failed.get();
             if (failure instanceof RuntimeException runtime) {
