@@ -27,26 +27,6 @@ public final class DoubleList {
         size++;
     }
 
-    /** Appends values {@code from} to {@code to} - 1 of {@code source}, a block's stretch at a time. */
-    public void addRange(DoubleList source, int from, int to) {
-        if (from < 0 || to > source.size || from > to) {
-            throw new IndexOutOfBoundsException(from + " to " + to + " of " + source.size);
-        }
-        while (from < to) {
-            int block = size >>> SHIFT;
-            if (block == blocks.length) {
-                blocks = Arrays.copyOf(blocks, 2 * block);
-            }
-            if (blocks[block] == null) {
-                blocks[block] = new double[BLOCK];
-            }
-            int n = Math.min(to - from, Math.min(BLOCK - (size & MASK), BLOCK - (from & MASK)));
-            System.arraycopy(source.blocks[from >>> SHIFT], from & MASK, blocks[block], size & MASK, n);
-            size += n;
-            from += n;
-        }
-    }
-
     public double get(int i) {
         if (i < 0 || i >= size) {
             throw new IndexOutOfBoundsException(i + " of " + size);
@@ -56,17 +36,6 @@ public final class DoubleList {
 
     public int size() {
         return size;
-    }
-
-    /**
-     * Lets go of the blocks that hold only values before {@code index}: a list read once from
-     * its start, copied elsewhere, is not held twice over meanwhile. Those values are gone.
-     */
-    public void letGoBefore(int index) {
-        // From the last block wholly before it back to the first already let go: each block once.
-        for (int block = Math.min(index >>> SHIFT, blocks.length) - 1; block >= 0 && blocks[block] != null; block--) {
-            blocks[block] = null;
-        }
     }
 
     public void set(int i, double value) {

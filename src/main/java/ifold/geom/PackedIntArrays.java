@@ -31,29 +31,6 @@ public final class PackedIntArrays extends AbstractList<int[]> implements Random
         return true;
     }
 
-    /** Appends array i of {@code source}, each value v replaced by {@code numbers[v]}. */
-    public void addNumbered(PackedIntArrays source, int i, int[] numbers) {
-        int from = source.start(i);
-        int to = source.starts.get(i + 1);
-        for (int k = from; k < to; k++) {
-            values.add(numbers[source.values.get(k)]);
-        }
-        starts.add(values.size());
-        modCount++;
-    }
-
-    /** Appends array i of {@code source}, each value from {@code from} up raised by {@code by}. */
-    public void addShifted(PackedIntArrays source, int i, int from, int by) {
-        int start = source.start(i);
-        int end = source.starts.get(i + 1);
-        for (int k = start; k < end; k++) {
-            int value = source.values.get(k);
-            values.add(value >= from ? value + by : value);
-        }
-        starts.add(values.size());
-        modCount++;
-    }
-
     /** A new array of the values of array i. */
     @Override
     public int[] get(int i) {
@@ -68,12 +45,6 @@ public final class PackedIntArrays extends AbstractList<int[]> implements Random
     @Override
     public int size() {
         return starts.size() - 1;
-    }
-
-    /** Lets go of the blocks that hold only arrays before array {@code i} ({@link IntList#letGoBefore}): those are gone. */
-    public void letGoBefore(int i) {
-        values.letGoBefore(starts.get(i));
-        starts.letGoBefore(i);
     }
 
     /** How many values array i holds. */

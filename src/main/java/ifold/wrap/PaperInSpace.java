@@ -3,7 +3,6 @@ package ifold.wrap;
 import ifold.geom.DoubleList;
 import ifold.geom.IntList;
 import ifold.geom.PackedIntArrays;
-import ifold.io.Workers;
 import ifold.sheet.HostFrame;
 import ifold.sheet.Isometry2;
 import ifold.sheet.Polygons2;
@@ -119,19 +118,10 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
 
     /** The strip placed in space. */
     public static PaperInSpace of(Sheet sheet, HostFrame[] frames) {
-        return of(sheet, frames, 0);
-    }
-
-    /**
-     * The strip placed in space, its faces placed in {@code shards} shares by host on as many
-     * threads as there are ({@code 0}: as many shares as suit the wrap and the machine); the
-     * same paper however many, to the bit.
-     */
-    static PaperInSpace of(Sheet sheet, HostFrame[] frames, int shards) {
         // The builder's working lists are garbage once it is done, and its points are copied out
         // one list at a time, each let go as it is copied: on the 5,000-triangle torus the lists,
         // the points and their copies held at once were the run's peak.
-        Built built = new Builder(sheet, frames).build(shards);
+        Built built = new Builder(sheet, frames).build();
         double[] xyz = built.xyz().drain();
         double[] uv = built.uv().drain();
         return new PaperInSpace(xyz, uv, built.paper(), built.hosts(), built.caps(), built.capAfter(), built.creep(), built.pieceStart());
@@ -163,7 +153,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         /**
          * For each space vertex made for a paper vertex or a cut point, the next made for the same
          * point (-1: none); null once the faces are placed, as {@link #firstCopy} and {@link
-         * #copyLevel} then are: the bends' caps share no vertex by them.
+         * #copyLevel} then are: the caps share no vertex by them ({@link #doneWithFaces}).
          */
         private IntList nextCopy = new IntList();
         private final double merge;
@@ -171,13 +161,6 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         /** The triangle and level each space vertex was made for (caps' middle rows: -1). */
         private final IntList copyHost = new IntList();
         private IntList copyLevel = new IntList();
-        /**
-         * For a builder of some bends' caps ({@link #placeBendsApart}), the builder whose faces
-         * they bend, and how many vertices it had made: the vertices below that number are its,
-         * this builder's own are numbered on from there. (0 and null for any other builder.)
-         */
-        private final int base;
-        private final Builder shared;
         /** Each face's corners as placed whole (null for a face placed in pieces). */
         private int[][] corners;
         /**
@@ -186,22 +169,17 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          * edges of pieces begin in {@link #sideEdges}.
          */
         private int[] sidesOf;
-        private IntList sideStarts = new IntList();
+        private final IntList sideStarts = new IntList();
         /**
          * The pieces' edges along the sides of their faces, {@link #SIDE_EDGE} numbers each: from,
          * to (along the side), their two vertices, 1 where squashed, and at each end the unit
          * normal (x, y on the host's frame) of the line across its region that cut it there (where
          * a wall or a concave stretch ends; NaN where none did).
          */
-        private DoubleList sideEdges = new DoubleList();
+        private final DoubleList sideEdges = new DoubleList();
         private static final int SIDE_EDGE = 9;
         /** The pieces of face f are paper faces pieceStart[f] to pieceStart[f + 1] - 1. */
         private int[] pieceStart;
-        /** The paper faces (the pieces of the sheet's faces), the triangle each rests on, the caps and the face each exists from. */
-        private final PackedIntArrays paper = new PackedIntArrays();
-        private final IntList hostList = new IntList();
-        private final PackedIntArrays caps = new PackedIntArrays();
-        private final IntList capAfter = new IntList();
         /** Where paper ends at the concave edges of its host. */
         private ConcaveWalls walls;
         /** The vertices made moved in from a concave edge (in the order made, so increasing), and where the paper put them. */
@@ -210,8 +188,6 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         private int creptCount;
 
         Builder(Sheet sheet, HostFrame[] frames) {
-            this.base = 0;
-            this.shared = null;
             this.sheet = sheet;
             this.frames = frames;
             this.levels = sheet.levels();
@@ -225,37 +201,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             java.util.Arrays.fill(firstCopy, -1);
         }
 
-        /**
-         * A builder of a share of {@code from}'s work, with the folds, walls and mitres it found.
-         * Of some of its faces ({@code bending} false: {@link #placeFacesApart}), in lists of its
-         * own, their corners and sides written into {@code from}'s arrays, which each face's
-         * builder alone writes. Of some of its bends' caps ({@code bending}: {@link
-         * #placeBendsApart}), once {@code from} has placed the faces: it reads their vertices,
-         * corners and sides, and makes vertices and caps of its own.
-         */
-        private Builder(Builder from, boolean bending) {
-            this.base = bending ? from.copyHost.size() : 0;
-            this.shared = bending ? from : null;
-            this.sheet = from.sheet;
-            this.frames = from.frames;
-            this.levels = from.levels;
-            this.merge = from.merge;
-            this.exact = from.exact;
-            this.walls = from.walls;
-            this.corners = from.corners;
-            this.sidesOf = from.sidesOf;
-            if (bending) {
-                this.sideStarts = from.sideStarts;
-                this.sideEdges = from.sideEdges;
-                this.pieceStart = from.pieceStart;
-                doneWithFaces(); // no vertex is shared by chains here
-            } else {
-                this.firstCopy = new int[sheet.vertexCount()];
-                java.util.Arrays.fill(firstCopy, -1);
-            }
-        }
-
-        Built build(int asked) {
+        Built build() {
             int faces = sheet.faceCount();
             // Flat folds first, from the sheet alone (two faces across a paper edge on one host at
             // two levels): how far each bend stands out depends on the folds nested about its
@@ -300,34 +246,46 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             walls = ConcaveWalls.of(bends, ranks, backToBack, frames, sheet.thickness(), sheet.tolerance(), stackTop);
             boolean[] onWall = walls.along();
 
+            List<int[]> paper = new PackedIntArrays();
+            IntList hostList = new IntList();
+            List<int[]> caps = new PackedIntArrays();
+            IntList capAfter = new IntList();
             corners = new int[faces][];
             sidesOf = new int[faces];
             pieceStart = new int[faces + 1];
-            int shards = !(sheet.thickness() > 0) ? 1 : asked > 0 ? asked : shards(faces);
-            // How far each bend stands out comes of the folds alone, not of the faces' placing:
-            // where the faces are placed in shares, a worker free of them finds it meanwhile,
-            // and where none took it this thread does, once they are placed.
-            java.util.concurrent.FutureTask<Standing> standingOut = new java.util.concurrent.FutureTask<>(
-                    () -> standing(bends, ranks, nested));
-            if (shards > 1) {
-                Workers.pool().execute(standingOut);
-            }
-            if (shards == 1) {
-                for (int f = 0; f < faces; f++) {
-                    placeFace(f);
-                    pieceStart[f + 1] = paper.size();
+            for (int f = 0; f < faces; f++) {
+                List<List<Corner>> pieces = pieces(f);
+                sidesOf[f] = -1;
+                if (pieces == null) {
+                    int[] loop = sheet.loop(f);
+                    int[] placed = new int[loop.length];
+                    for (int i = 0; i < loop.length; i++) {
+                        placed[i] = vertex(f, loop[i]);
+                    }
+                    corners[f] = placed;
+                    paper.add(placed);
+                    hostList.add(sheet.host(f));
+                } else {
+                    placePieces(f, pieces, paper, hostList, caps, capAfter);
                 }
-            } else {
-                join(placeFacesApart(shards), shards);
+                pieceStart[f + 1] = paper.size();
             }
             doneWithFaces();
-            standingOut.run();
             int[] hosts = hostList.toArray();
-            // The caps of the joins that are not bends, and the bends below, once every bend is known.
-            if (shards == 1) {
-                placeFlatCaps(flatSides, flatAcross, 0, faces, 0, 0);
-            } else {
-                joinCaps(placeFlatCapsApart(flatSides, flatAcross, shards));
+            // The bends below, once every bend is known.
+            int next = 0;
+            for (int f = 0, here = 0; f < faces; f++) {
+                int n = sheet.loopLength(f);
+                for (int i = 0; i < n; i++, here++) {
+                    if (!flatSides.get(here)) {
+                        continue;
+                    }
+                    int g = flatAcross.get(next++);
+                    int a = sheet.loopVertex(f, i);
+                    int b = sheet.loopVertex(f, (i + 1) % n);
+                    // the paper runs on flat, or bends over an edge with no thickness where the two sides meet
+                    addCap(chain(f, i, a, b), chain(g, side(g, a, b), a, b), a, b, pieceStart[g + 1] - 1, -1, false, caps, capAfter);
+                }
             }
             // Each bend's faces f and g, its crease a, b, and where each face's paper begins and ends along it.
             int[][] bendCorners = new int[bends.size()][];
@@ -342,221 +300,6 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 bendCorners[k] = new int[] {f, g, a, b, (int) fChain[0][2], (int) fChain[fChain.length - 1][3], (int) gChain[0][2],
                     (int) gChain[gChain.length - 1][3]};
             }
-            Standing standing = Workers.result(standingOut);
-            double[] outs = standing.outs();
-            double[] slopes = standing.slopes();
-            double[] past = standing.past();
-
-            BendsAt at = new BendsAt(bends, bendCorners, bendEdges, outs, slopes, past, backToBack, onWall);
-            if (shards == 1) {
-                for (int k = 0; k < bends.size(); k++) {
-                    placeBend(at, k);
-                }
-            } else {
-                joinCaps(placeBendsApart(at, shards));
-            }
-            Creep creep = creptCount == 0 ? Creep.NONE
-                    : new Creep(java.util.Arrays.copyOf(creptVertices, creptCount), java.util.Arrays.copyOf(creptFrom, 3 * creptCount));
-            return new Built(xyz, uv, paper, hosts, caps, capAfter.toArray(), creep, pieceStart);
-        }
-
-        /**
-         * Places the bends' caps in {@code shards} runs of consecutive bends on the workers'
-         * threads and this one, each run in a builder of its own ({@link #Builder(Builder,
-         * boolean)}): a bend's caps read the faces' vertices and make their own, none of another
-         * bend's, so the runs joined in order ({@link #joinCaps}) are the caps one builder
-         * makes bend after bend.
-         */
-        private List<Builder> placeBendsApart(BendsAt at, int shards) {
-            List<Builder> parts = new ArrayList<>();
-            for (int s = 0; s < shards; s++) {
-                parts.add(new Builder(this, true));
-            }
-            int count = at.bends().size();
-            inParallel(shards, s -> parts.get(s).placeBends(at, (int) ((long) count * s / shards), (int) ((long) count * (s + 1) / shards)));
-            return parts;
-        }
-
-        private void placeBends(BendsAt at, int from, int to) {
-            for (int k = from; k < to; k++) {
-                placeBend(at, k);
-            }
-        }
-
-        /**
-         * The caps where the paper runs on flat or over an edge (no bend), of faces {@code from}
-         * to {@code to} - 1: {@code here} and {@code next} are where face {@code from}'s sides
-         * begin among the sides ({@code flatSides}, set for each side that joins a later face
-         * other than by a bend) and among those sides' faces across ({@code flatAcross}).
-         */
-        private void placeFlatCaps(java.util.BitSet flatSides, IntList flatAcross, int from, int to, int here, int next) {
-            for (int f = from; f < to; f++) {
-                int n = sheet.loopLength(f);
-                for (int i = 0; i < n; i++, here++) {
-                    if (!flatSides.get(here)) {
-                        continue;
-                    }
-                    int g = flatAcross.get(next++);
-                    int a = sheet.loopVertex(f, i);
-                    int b = sheet.loopVertex(f, (i + 1) % n);
-                    // the paper runs on flat, or bends over an edge with no thickness where the two sides meet
-                    addCap(chain(f, i, a, b), chain(g, side(g, a, b), a, b), a, b, pieceStart[g + 1] - 1, -1, false, caps, capAfter);
-                }
-            }
-        }
-
-        /** {@link #placeFlatCaps} in {@code shards} runs of consecutive faces, as {@link #placeBendsApart} places the bends. */
-        private List<Builder> placeFlatCapsApart(java.util.BitSet flatSides, IntList flatAcross, int shards) {
-            int faces = sheet.faceCount();
-            int[] from = new int[shards + 1];
-            int[] here = new int[shards + 1];
-            int[] next = new int[shards + 1];
-            for (int s = 0, f = 0, side = 0, across = 0; s <= shards; s++) {
-                from[s] = (int) ((long) faces * s / shards);
-                for (; f < from[s]; f++) {
-                    for (int i = 0; i < sheet.loopLength(f); i++, side++) {
-                        across += flatSides.get(side) ? 1 : 0;
-                    }
-                }
-                here[s] = side;
-                next[s] = across;
-            }
-            List<Builder> parts = new ArrayList<>();
-            for (int s = 0; s < shards; s++) {
-                parts.add(new Builder(this, true));
-            }
-            inParallel(shards, s -> parts.get(s).placeFlatCaps(flatSides, flatAcross, from[s], from[s + 1], here[s], next[s]));
-            return parts;
-        }
-
-        /** Takes the caps that {@code parts} made, run after run, their own vertices numbered on from this builder's. */
-        private void joinCaps(List<Builder> parts) {
-            for (Builder part : parts) {
-                int by = copyHost.size() - part.base;
-                copyHost.addRange(part.copyHost, 0, part.copyHost.size());
-                xyz.addRange(part.xyz, 0, part.xyz.size());
-                uv.addRange(part.uv, 0, part.uv.size());
-                for (int c = 0; c < part.caps.size(); c++) {
-                    caps.addShifted(part.caps, c, part.base, by);
-                }
-                capAfter.addRange(part.capAfter, 0, part.capAfter.size());
-            }
-        }
-
-        /** The bends' folds and how far each stands out, for {@link #placeBend}. */
-        private record BendsAt(List<NestedBends.Bend> bends, int[][] corners, IntList edges, double[] outs, double[] slopes, double[] past,
-                int[] backToBack, boolean[] onWall) {
-        }
-
-        /**
-         * The caps of bend k: from its two layers' chains along its crease, the facets of the
-         * paper bent about it, standing out as far as it does.
-         */
-        private void placeBend(BendsAt at, int k) {
-            List<NestedBends.Bend> bends = at.bends();
-            int[][] bendCorners = at.corners();
-            IntList bendEdges = at.edges();
-            double[] outs = at.outs();
-            double[] slopes = at.slopes();
-            double[] past = at.past();
-            int[] backToBack = at.backToBack();
-            boolean[] onWall = at.onWall();
-            int[] c = bendCorners[k];
-            int f = c[0];
-            int g = c[1];
-            NestedBends.Bend bend = bends.get(k);
-            double out = outs[k];
-            if ((c[4] == c[6] || samePlace(c[4], c[6])) && (c[5] == c[7] || samePlace(c[5], c[7]))) {
-                return; // paper of no thickness folded flat: nothing to bridge
-            }
-            int after = pieceStart[g + 1] - 1;
-            // The two layers' chains along the crease, made again rather than kept for every bend.
-            double[][] fChain = chain(f, bendEdges.get(5 * k + 1), c[2], c[3]);
-            double[][] gChain = chain(g, side(g, c[2], c[3]), c[2], c[3]);
-            if (out == 0 && !ConcaveWalls.standsBack(backToBack, onWall, k)) {
-                addCap(fChain, gChain, c[2], c[3], after, bend.host(), !onWall[k], caps, capAfter);
-                return;
-            }
-            if (fChain.length == 1 && gChain.length == 1) {
-                wholeBend(k, c, bend, out, out == 0 ? apexHeight(bends, backToBack, k) : 0, slopes[k], past, after, caps, capAfter);
-                return;
-            }
-            // Where its faces are placed in pieces, the bend goes from piece to piece as they meet the crease.
-            boolean backs = out == 0;
-            double middle = backs ? apexHeight(bends, backToBack, k) : (height(f) + height(g)) / 2;
-            boolean fLower = height(f) < height(g);
-            double lower = Math.min(height(f), height(g)) + (backs ? 0 : out / slopes[k]);
-            double upper = Math.max(height(f), height(g)) - out;
-            double[] cuts = backs ? cutsAlong(fChain, gChain) : withRowCuts(cutsAlong(fChain, gChain), bend, out, lower, upper);
-            int a = c[2];
-            int b = c[3];
-            // Stretch by stretch between the points where either layer's pieces meet the crease.
-            // Where a wall ends, the pieces on its two sides put one point of the crease in two
-            // places (on the wall, and out on the mitre): each stretch takes its ends from the
-            // pieces that run along it, and places its rows as it lies, beside the walls and
-            // mitres that its middle is. Taken from whichever piece came first along the chain,
-            // a stretch beyond a wall's end got a corner on the wall at one end, and its rows
-            // beside the wall there, while the layers it joined stood off it: on the torus the
-            // bend, and the bend it wraps, twisted through each other and through the walls.
-            int[] rowFrom = null;
-            for (int j = 1; j < cuts.length; j++) {
-                Stretch stretch = stretch(fChain, gChain, a, b, cuts[j - 1], cuts[j]);
-                double t0 = stretch.from();
-                double t1 = stretch.to();
-                double between = stretch.middle();
-                double u0 = stretch.u0();
-                double v0 = stretch.v0();
-                double u1 = stretch.u1();
-                double v1 = stretch.v1();
-                double uMid = along(sheet.u(a), sheet.u(b), between);
-                double vMid = along(sheet.v(a), sheet.v(b), between);
-                int fFrom = stretch.fFrom();
-                int fAt = stretch.fTo();
-                int gFrom = stretch.gFrom();
-                int gAt = stretch.gTo();
-                int[] rowAt;
-                int[] rowStart;
-                if (backs) {
-                    rowStart = rowFrom != null ? new int[] {rowFrom[0]} : new int[] {apex(f, a, middle)};
-                    rowAt = new int[] {j == cuts.length - 1 ? apex(f, b, middle) : apex(f, u1, v1, middle)};
-                } else {
-                    double beyond0 = j == 1 ? -past[2 * k] : onCut(bend, out, fChain, gChain, t0, between);
-                    double beyond1 = j == cuts.length - 1 ? past[2 * k + 1] : onCut(bend, out, fChain, gChain, t1, between);
-                    double lowRow = fLower ? lower : upper;
-                    double highRow = fLower ? upper : lower;
-                    // Each row leans from its own layer's crease as that layer is placed (f's row from f's).
-                    rowStart = new int[] {row(f, bend, u0, v0, out, beyond0, lowRow, uMid, vMid, rowFrom == null ? -1 : rowFrom[0],
-                            crept(f, fFrom, u0, v0)),
-                        row(f, bend, u0, v0, out, beyond0, highRow, uMid, vMid, rowFrom == null ? -1 : rowFrom[1], crept(f, gFrom, u0, v0))};
-                    rowAt = new int[] {row(f, bend, u1, v1, out, beyond1, lowRow, uMid, vMid, -1, crept(f, fAt, u1, v1)),
-                        row(f, bend, u1, v1, out, beyond1, highRow, uMid, vMid, -1, crept(f, gAt, u1, v1))};
-                }
-                boolean squashed = !backs && !onWall[k] && insideAt(fChain, between) && insideAt(gChain, between);
-                if (!squashed) {
-                    int fm0 = rowStart[0];
-                    int fm1 = rowAt[0];
-                    int gm0 = rowStart[rowStart.length - 1];
-                    int gm1 = rowAt[rowAt.length - 1];
-                    addBendCap(bend.host(), new int[] {fFrom, fAt, fm1, fm0}, after, caps, capAfter);
-                    if (!backs) {
-                        addBendCap(bend.host(), new int[] {fm0, fm1, gm1, gm0}, after, caps, capAfter);
-                    }
-                    addBendCap(bend.host(), new int[] {gm0, gm1, gAt, gFrom}, after, caps, capAfter);
-                } else {
-                    joinSquashed(cornerNear(fChain, between, t0), cornerNear(gChain, between, t0), after, caps, capAfter);
-                }
-                rowFrom = rowAt;
-            }
-        }
-
-        /**
-         * How far each bend stands out from its crease, the slope of the room beyond its host's
-         * edge, and how far its rows run past its crease's two ends ({@link NestedBends#mitres}).
-         */
-        private record Standing(double[] outs, double[] slopes, double[] past) {
-        }
-
-        private Standing standing(List<NestedBends.Bend> bends, int[] ranks, NestedBends nested) {
             double[] outs = new double[bends.size()];
             double[] slopes = new double[bends.size()];
             for (int k = 0; k < bends.size(); k++) {
@@ -579,219 +322,103 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             nested.keepNested(outs);
             double[] past = nested.mitres(outs, CoplanarHosts.of(frames, sheet.tolerance()));
             stopRowsOnPaper(bends, outs, past);
-            return new Standing(outs, slopes, past);
-        }
 
-        /**
-         * Places face f: whole, each corner a vertex shared with the faces that place it alike,
-         * or in pieces where its paper creeps ({@link #pieces}).
-         */
-        private void placeFace(int f) {
-            List<List<Corner>> pieces = pieces(f);
-            sidesOf[f] = -1;
-            if (pieces == null) {
-                int[] loop = sheet.loop(f);
-                int[] placed = new int[loop.length];
-                for (int i = 0; i < loop.length; i++) {
-                    placed[i] = vertex(f, loop[i]);
+            for (int k = 0; k < bends.size(); k++) {
+                int[] c = bendCorners[k];
+                int f = c[0];
+                int g = c[1];
+                NestedBends.Bend bend = bends.get(k);
+                double out = outs[k];
+                if ((c[4] == c[6] || samePlace(c[4], c[6])) && (c[5] == c[7] || samePlace(c[5], c[7]))) {
+                    continue; // paper of no thickness folded flat: nothing to bridge
                 }
-                corners[f] = placed;
-                paper.add(placed);
-                hostList.add(sheet.host(f));
-            } else {
-                placePieces(f, pieces, paper, hostList, caps, capAfter);
-            }
-        }
-
-        /** Wraps smaller than this many faces are placed on one thread: the threads would cost more than they save. */
-        private static final int FACES_APART = 20_000;
-
-        /**
-         * Into how many shares, by host, the faces are placed ({@link #placeFacesApart}) where the
-         * caller did not say. (Without thickness, always one: paper on neighbouring hosts then
-         * shares vertices.)
-         */
-        private static int shards(int faces) {
-            int threads = Workers.threads();
-            if (threads == 1 || faces < FACES_APART) {
-                return 1;
-            }
-            return 2 * threads; // more shares than threads: a thread free sooner takes another
-        }
-
-        /**
-         * Places the faces in {@code shards} shares on the workers' threads and this one, host by
-         * host (those of host h in share h mod shards), each share in a builder of its own:
-         * vertices are shared, and cut points found, only among faces of one host and level,
-         * and each builder places its faces in the order of the sheet, so each host's paper is
-         * placed as one builder for all would place it ({@link #join} puts it back in that
-         * order). On the 5,000-triangle torus placing the faces is three fifths of placing the
-         * paper, and one core was idle for most of it once the analysis' hosts were done.
-         */
-        private List<Builder> placeFacesApart(int shards) {
-            List<Builder> parts = new ArrayList<>();
-            for (int s = 0; s < shards; s++) {
-                parts.add(new Builder(this, false));
-            }
-            inParallel(shards, s -> parts.get(s).placeFaces(s, shards));
-            return parts;
-        }
-
-        /**
-         * Runs {@code share} for shares 0 to {@code shares} - 1 on the workers' threads and this
-         * one, each thread taking the next share not yet taken till none is left: a worker still
-         * busy with other work (the analysis' hosts) when this thread has taken them all finds
-         * none, and this thread waits only for shares begun, never for a task still queued.
-         */
-        private static void inParallel(int shares, java.util.function.IntConsumer share) {
-            java.util.concurrent.atomic.AtomicInteger next = new java.util.concurrent.atomic.AtomicInteger();
-            java.util.concurrent.CountDownLatch done = new java.util.concurrent.CountDownLatch(shares);
-            java.util.concurrent.atomic.AtomicReference<Throwable> failed = new java.util.concurrent.atomic.AtomicReference<>();
-            Runnable taking = () -> {
-                for (int s = next.getAndIncrement(); s < shares; s = next.getAndIncrement()) {
-                    try {
-                        if (failed.get() == null) {
-                            share.accept(s);
-                        }
-                    } catch (RuntimeException | Error e) {
-                        failed.compareAndSet(null, e);
-                    } finally {
-                        done.countDown();
-                    }
-                }
-            };
-            List<java.util.concurrent.Future<?>> helping = new ArrayList<>();
-            for (int t = 1; t < Workers.threads(); t++) {
-                helping.add(Workers.pool().submit(taking));
-            }
-            taking.run();
-            try {
-                done.await();
-            } catch (InterruptedException e) {
-                next.set(shares);
-                Thread.currentThread().interrupt();
-                throw new java.util.concurrent.CancellationException("interrupted");
-            } finally {
-                // A task still queued would hold the shares' builders till a worker got to it.
-                for (java.util.concurrent.Future<?> help : helping) {
-                    help.cancel(false);
-                }
-            }
-            Throwable failure = failed.get();
-            if (failure instanceof RuntimeException runtime) {
-                throw runtime;
-            }
-            if (failure instanceof Error error) {
-                throw error;
-            }
-        }
-
-        /** Where this builder's lists end after each face it placed: vertices, paper faces, caps, vertices crept. */
-        private final IntList vertexEnds = new IntList();
-        private final IntList paperEnds = new IntList();
-        private final IntList capEnds = new IntList();
-        private final IntList creptEnds = new IntList();
-
-        /** Places the faces of share {@code shard} of {@code shards} ({@link #placeFacesApart}), in the sheet's order. */
-        private void placeFaces(int shard, int shards) {
-            for (int f = 0; f < sheet.faceCount(); f++) {
-                if (sheet.host(f) % shards != shard) {
+                int after = pieceStart[g + 1] - 1;
+                // The two layers' chains along the crease, made again rather than kept for every bend.
+                double[][] fChain = chain(f, bendEdges.get(5 * k + 1), c[2], c[3]);
+                double[][] gChain = chain(g, side(g, c[2], c[3]), c[2], c[3]);
+                if (out == 0 && !ConcaveWalls.standsBack(backToBack, onWall, k)) {
+                    addCap(fChain, gChain, c[2], c[3], after, bend.host(), !onWall[k], caps, capAfter);
                     continue;
                 }
-                placeFace(f);
-                vertexEnds.add(copyHost.size());
-                paperEnds.add(paper.size());
-                capEnds.add(caps.size());
-                creptEnds.add(creptCount);
-            }
-            doneWithFaces();
-        }
-
-        /**
-         * Takes the faces that {@code parts} placed, face by face in the sheet's order, with their
-         * vertices, pieces, sides and caps, numbered as one builder placing every face in that
-         * order numbers them; each part's lists are let go as they are taken, so that the paper is
-         * not held twice over.
-         */
-        private void join(List<Builder> parts, int shards) {
-            int[] taken = new int[shards]; // faces
-            int[] vertexFrom = new int[shards];
-            int[] paperFrom = new int[shards];
-            int[] capFrom = new int[shards];
-            int[] creptAt = new int[shards];
-            int[][] numbered = new int[shards][]; // each part's vertices as numbered here
-            int crept = 0;
-            for (int s = 0; s < shards; s++) {
-                numbered[s] = new int[parts.get(s).copyHost.size()];
-                crept += parts.get(s).creptCount;
-            }
-            creptVertices = new int[crept];
-            creptFrom = new double[3 * crept];
-            for (int f = 0; f < sheet.faceCount(); f++) {
-                int s = sheet.host(f) % shards;
-                Builder part = parts.get(s);
-                int face = taken[s]++;
-                int[] number = numbered[s];
-                int vertexEnd = part.vertexEnds.get(face);
-                for (int v = vertexFrom[s], here = copyHost.size(); v < vertexEnd; v++) {
-                    number[v] = here + v - vertexFrom[s];
+                if (fChain.length == 1 && gChain.length == 1) {
+                    wholeBend(k, c, bend, out, out == 0 ? apexHeight(bends, backToBack, k) : 0, slopes[k], past, after, caps, capAfter);
+                    continue;
                 }
-                copyHost.addRange(part.copyHost, vertexFrom[s], vertexEnd);
-                xyz.addRange(part.xyz, 3 * vertexFrom[s], 3 * vertexEnd);
-                uv.addRange(part.uv, 2 * vertexFrom[s], 2 * vertexEnd);
-                vertexFrom[s] = vertexEnd;
-                part.xyz.letGoBefore(3 * vertexEnd);
-                part.uv.letGoBefore(2 * vertexEnd);
-                part.copyHost.letGoBefore(vertexEnd);
-                int paperEnd = part.paperEnds.get(face);
-                for (int p = paperFrom[s]; p < paperEnd; p++) {
-                    paper.addNumbered(part.paper, p, number);
-                }
-                hostList.addRange(part.hostList, paperFrom[s], paperEnd);
-                paperFrom[s] = paperEnd;
-                part.paper.letGoBefore(paperEnd);
-                pieceStart[f + 1] = paper.size();
-                if (corners[f] != null) {
-                    for (int k = 0; k < corners[f].length; k++) {
-                        corners[f][k] = number[corners[f][k]];
+                // Where its faces are placed in pieces, the bend goes from piece to piece as they meet the crease.
+                boolean backs = out == 0;
+                double middle = backs ? apexHeight(bends, backToBack, k) : (height(f) + height(g)) / 2;
+                boolean fLower = height(f) < height(g);
+                double lower = Math.min(height(f), height(g)) + (backs ? 0 : out / slopes[k]);
+                double upper = Math.max(height(f), height(g)) - out;
+                double[] cuts = backs ? cutsAlong(fChain, gChain) : withRowCuts(cutsAlong(fChain, gChain), bend, out, lower, upper);
+                int a = c[2];
+                int b = c[3];
+                // Stretch by stretch between the points where either layer's pieces meet the crease.
+                // Where a wall ends, the pieces on its two sides put one point of the crease in two
+                // places (on the wall, and out on the mitre): each stretch takes its ends from the
+                // pieces that run along it, and places its rows as it lies, beside the walls and
+                // mitres that its middle is. Taken from whichever piece came first along the chain,
+                // a stretch beyond a wall's end got a corner on the wall at one end, and its rows
+                // beside the wall there, while the layers it joined stood off it: on the torus the
+                // bend, and the bend it wraps, twisted through each other and through the walls.
+                int[] rowFrom = null;
+                for (int j = 1; j < cuts.length; j++) {
+                    Stretch stretch = stretch(fChain, gChain, a, b, cuts[j - 1], cuts[j]);
+                    double t0 = stretch.from();
+                    double t1 = stretch.to();
+                    double between = stretch.middle();
+                    double u0 = stretch.u0();
+                    double v0 = stretch.v0();
+                    double u1 = stretch.u1();
+                    double v1 = stretch.v1();
+                    double uMid = along(sheet.u(a), sheet.u(b), between);
+                    double vMid = along(sheet.v(a), sheet.v(b), between);
+                    int fFrom = stretch.fFrom();
+                    int fAt = stretch.fTo();
+                    int gFrom = stretch.gFrom();
+                    int gAt = stretch.gTo();
+                    int[] rowAt;
+                    int[] rowStart;
+                    if (backs) {
+                        rowStart = rowFrom != null ? new int[] {rowFrom[0]} : new int[] {apex(f, a, middle)};
+                        rowAt = new int[] {j == cuts.length - 1 ? apex(f, b, middle) : apex(f, u1, v1, middle)};
+                    } else {
+                        double beyond0 = j == 1 ? -past[2 * k] : onCut(bend, out, fChain, gChain, t0, between);
+                        double beyond1 = j == cuts.length - 1 ? past[2 * k + 1] : onCut(bend, out, fChain, gChain, t1, between);
+                        double lowRow = fLower ? lower : upper;
+                        double highRow = fLower ? upper : lower;
+                        // Each row leans from its own layer's crease as that layer is placed (f's row from f's).
+                        rowStart = new int[] {row(f, bend, u0, v0, out, beyond0, lowRow, uMid, vMid, rowFrom == null ? -1 : rowFrom[0],
+                                crept(f, fFrom, u0, v0)),
+                            row(f, bend, u0, v0, out, beyond0, highRow, uMid, vMid, rowFrom == null ? -1 : rowFrom[1], crept(f, gFrom, u0, v0))};
+                        rowAt = new int[] {row(f, bend, u1, v1, out, beyond1, lowRow, uMid, vMid, -1, crept(f, fAt, u1, v1)),
+                            row(f, bend, u1, v1, out, beyond1, highRow, uMid, vMid, -1, crept(f, gAt, u1, v1))};
                     }
-                }
-                int capEnd = part.capEnds.get(face);
-                for (int c = capFrom[s]; c < capEnd; c++) {
-                    caps.addNumbered(part.caps, c, number);
-                    capAfter.add(paper.size() - 1); // a tear between the face's pieces: after its last
-                }
-                capFrom[s] = capEnd;
-                if (sidesOf[f] >= 0) {
-                    int start = sidesOf[f];
-                    int sides = sheet.loopLength(f);
-                    int firstEdge = part.sideStarts.get(start);
-                    int lastEdge = part.sideStarts.get(start + sides);
-                    int here = sideEdges.size() / SIDE_EDGE;
-                    sidesOf[f] = sideStarts.size();
-                    for (int i = 0; i <= sides; i++) {
-                        sideStarts.add(part.sideStarts.get(start + i) - firstEdge + here);
+                    boolean squashed = !backs && !onWall[k] && insideAt(fChain, between) && insideAt(gChain, between);
+                    if (!squashed) {
+                        int fm0 = rowStart[0];
+                        int fm1 = rowAt[0];
+                        int gm0 = rowStart[rowStart.length - 1];
+                        int gm1 = rowAt[rowAt.length - 1];
+                        addBendCap(bend.host(), new int[] {fFrom, fAt, fm1, fm0}, after, caps, capAfter);
+                        if (!backs) {
+                            addBendCap(bend.host(), new int[] {fm0, fm1, gm1, gm0}, after, caps, capAfter);
+                        }
+                        addBendCap(bend.host(), new int[] {gm0, gm1, gAt, gFrom}, after, caps, capAfter);
+                    } else {
+                        joinSquashed(cornerNear(fChain, between, t0), cornerNear(gChain, between, t0), after, caps, capAfter);
                     }
-                    sideEdges.addRange(part.sideEdges, SIDE_EDGE * firstEdge, SIDE_EDGE * lastEdge);
-                    for (int e = here; e < here + lastEdge - firstEdge; e++) { // its two vertices
-                        sideEdges.set(SIDE_EDGE * e + 2, number[(int) sideEdges.get(SIDE_EDGE * e + 2)]);
-                        sideEdges.set(SIDE_EDGE * e + 3, number[(int) sideEdges.get(SIDE_EDGE * e + 3)]);
-                    }
-                    part.sideStarts.letGoBefore(start + sides + 1);
-                    part.sideEdges.letGoBefore(SIDE_EDGE * lastEdge);
+                    rowFrom = rowAt;
                 }
-                int creptEnd = part.creptEnds.get(face);
-                for (int c = creptAt[s]; c < creptEnd; c++, creptCount++) {
-                    creptVertices[creptCount] = number[part.creptVertices[c]];
-                    System.arraycopy(part.creptFrom, 3 * c, creptFrom, 3 * creptCount, 3);
-                }
-                creptAt[s] = creptEnd;
             }
+            Creep creep = creptCount == 0 ? Creep.NONE
+                    : new Creep(java.util.Arrays.copyOf(creptVertices, creptCount), java.util.Arrays.copyOf(creptFrom, 3 * creptCount));
+            return new Built(xyz, uv, paper, hosts, caps, capAfter.toArray(), creep, pieceStart);
         }
 
         /**
          * Lets go of what only placing the faces needed (the copies' chains and levels, the cut
-         * points): on the 5,000-triangle torus about 180 MB, held till the paper was done.
+         * points): on the 5,000-triangle torus about 180 MB, held till the caps were done too.
          */
         private void doneWithFaces() {
             firstCopy = null;
@@ -937,7 +564,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             boolean crept = xy[0] != x || xy[1] != y;
             frame.toSpace(xy[0], xy[1], height(f), point, 0);
             for (int copy = first; copy >= 0; copy = nextCopy.get(copy)) {
-                if (hostOfCopy(copy) == host && copyLevel.get(copy - base) == levels[f] && closer(copy, point, exact)) {
+                if (copyHost.get(copy) == host && copyLevel.get(copy) == levels[f] && closer(copy, point, exact)) {
                     return copy;
                 }
             }
@@ -949,8 +576,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 }
             }
             int made = add(point, u, v);
-            copyHost.set(made - base, host);
-            copyLevel.set(made - base, levels[f]);
+            copyHost.set(made, host);
+            copyLevel.set(made, levels[f]);
             if (crept) {
                 if (creptCount == creptVertices.length) {
                     creptVertices = java.util.Arrays.copyOf(creptVertices, 2 * creptCount + 8);
@@ -1096,7 +723,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         private double[] crept(int f, int placed, double u, double v) {
             Isometry2 pose = sheet.pose(f);
             HostFrame frame = frames[sheet.host(f)];
-            double[] point = {spaceAt(placed, 0), spaceAt(placed, 1), spaceAt(placed, 2)};
+            double[] point = {xyz.get(3 * placed), xyz.get(3 * placed + 1), xyz.get(3 * placed + 2)};
             return new double[] {frame.localX(point) - pose.x(u, v), frame.localY(point) - pose.y(u, v)};
         }
 
@@ -1887,12 +1514,12 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
 
         /** The frame x of space vertex {@code vertex}. */
         private double spaceX(HostFrame frame, int vertex) {
-            return frame.localX(new double[] {spaceAt(vertex, 0), spaceAt(vertex, 1), spaceAt(vertex, 2)});
+            return frame.localX(new double[] {xyz.get(3 * vertex), xyz.get(3 * vertex + 1), xyz.get(3 * vertex + 2)});
         }
 
         /** The frame y of space vertex {@code vertex}. */
         private double spaceY(HostFrame frame, int vertex) {
-            return frame.localY(new double[] {spaceAt(vertex, 0), spaceAt(vertex, 1), spaceAt(vertex, 2)});
+            return frame.localY(new double[] {xyz.get(3 * vertex), xyz.get(3 * vertex + 1), xyz.get(3 * vertex + 2)});
         }
 
         /**
@@ -1912,7 +1539,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             for (int side = 0; side < 4; side += 2) {
                 int a = quad[side];
                 int b = quad[side + 1];
-                if (hostOfCopy(a) < 0 && hostOfCopy(b) < 0) {
+                if (copyHost.get(a) < 0 && copyHost.get(b) < 0) {
                     continue; // between the bend's rows, or points made on a crease between a layer's corners
                 }
                 addLineCap(a, b, after, caps, capAfter);
@@ -1927,9 +1554,9 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         private void addLineCap(int a, int b, int after, List<int[]> caps, IntList capAfter) {
             double[] middle = new double[3];
             for (int d = 0; d < 3; d++) {
-                middle[d] = (spaceAt(a, d) + spaceAt(b, d)) / 2;
+                middle[d] = (xyz.get(3 * a + d) + xyz.get(3 * b + d)) / 2;
             }
-            int m = capVertex(middle, (paperAt(a, 0) + paperAt(b, 0)) / 2, (paperAt(a, 1) + paperAt(b, 1)) / 2);
+            int m = capVertex(middle, (uv.get(2 * a) + uv.get(2 * b)) / 2, (uv.get(2 * a + 1) + uv.get(2 * b + 1)) / 2);
             caps.add(new int[] {a, m, b});
             capAfter.add(after);
         }
@@ -1959,7 +1586,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          * fell off the strip (truth 1: three pieces in space).
          */
         private void joinSquashed(int f, int g, int after, List<int[]> caps, IntList capAfter) {
-            if (f == g || closer(f, new double[] {spaceAt(g, 0), spaceAt(g, 1), spaceAt(g, 2)}, exact)) {
+            if (f == g || closer(f, new double[] {xyz.get(3 * g), xyz.get(3 * g + 1), xyz.get(3 * g + 2)}, exact)) {
                 return;
             }
             addLineCap(f, g, after, caps, capAfter);
@@ -1967,7 +1594,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
 
         /** Whether space vertex {@code vertex} lies on the mitre of concave edge k of the frame's host, within {@link #ON_MITRE}. */
         private boolean onMitre(HostFrame frame, int k, int vertex) {
-            double[] point = {spaceAt(vertex, 0), spaceAt(vertex, 1), spaceAt(vertex, 2)};
+            double[] point = {xyz.get(3 * vertex), xyz.get(3 * vertex + 1), xyz.get(3 * vertex + 2)};
             double x = frame.localX(point);
             double y = frame.localY(point);
             double tan = frame.mitreAt(k, x, y);
@@ -2203,7 +1830,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     int b = (int) edge[3];
                     double[] point = new double[3];
                     for (int d = 0; d < 3; d++) {
-                        point[d] = spaceAt(a, d) + w * (spaceAt(b, d) - spaceAt(a, d));
+                        point[d] = xyz.get(3 * a + d) + w * (xyz.get(3 * b + d) - xyz.get(3 * a + d));
                     }
                     return capVertex(point, u, v);
                 }
@@ -2217,7 +1844,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         /** A vertex of a cap's middle rows, made for no face's layer: shared with none. */
         private int capVertex(double[] point, double u, double v) {
             int made = add(point, u, v);
-            copyHost.set(made - base, -1);
+            copyHost.set(made, -1);
             return made;
         }
 
@@ -2240,37 +1867,19 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             return capVertex(point, u, v);
         }
 
-        /**
-         * Coordinate d (x, y, z) of space vertex v: of the paper placed before this builder's
-         * ({@link #shared}) below {@link #base}, of this builder's own from there.
-         */
-        private double spaceAt(int v, int d) {
-            return v < base ? shared.xyz.get(3 * v + d) : xyz.get(3 * (v - base) + d);
-        }
-
-        /** Paper coordinate d (u, v) of space vertex v ({@link #spaceAt}). */
-        private double paperAt(int v, int d) {
-            return v < base ? shared.uv.get(2 * v + d) : uv.get(2 * (v - base) + d);
-        }
-
-        /** The triangle space vertex v was made for, -1 for a cap's ({@link #spaceAt}). */
-        private int hostOfCopy(int v) {
-            return v < base ? shared.copyHost.get(v) : copyHost.get(v - base);
-        }
-
         private boolean closer(int copy, double[] point, double distance) {
-            double dx = spaceAt(copy, 0) - point[0];
-            double dy = spaceAt(copy, 1) - point[1];
-            double dz = spaceAt(copy, 2) - point[2];
+            double dx = xyz.get(3 * copy) - point[0];
+            double dy = xyz.get(3 * copy + 1) - point[1];
+            double dz = xyz.get(3 * copy + 2) - point[2];
             return dx * dx + dy * dy + dz * dz <= distance * distance;
         }
 
         private boolean samePlace(int a, int b) {
-            return closer(a, new double[] {spaceAt(b, 0), spaceAt(b, 1), spaceAt(b, 2)}, merge);
+            return closer(a, new double[] {xyz.get(3 * b), xyz.get(3 * b + 1), xyz.get(3 * b + 2)}, merge);
         }
 
         private int add(double[] point, double u, double v) {
-            int made = base + copyHost.size();
+            int made = copyHost.size();
             copyHost.add(-1);
             if (nextCopy != null) {
                 copyLevel.add(-1);
