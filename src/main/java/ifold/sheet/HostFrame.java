@@ -417,7 +417,11 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
         for (int i = 0; i + 2 < room[k].length; i += 3) {
             boolean fromStart = room[k][i] <= near;
             boolean toEnd = room[k][i + 1] >= edge[4] - near;
-            if ((fromStart || s >= room[k][i] - reach) && (toEnd || s <= room[k][i + 1] + reach)) {
+            // A stretch of no room (a host in the same plane, across a cut) counts only where the
+            // point reaches into it: a crease along a convex stretch that ends where the cut
+            // begins (a reflex corner of the face) leans over its own stretch alone.
+            double into = room[k][i + 2] == 0 ? 2 * near - reach : -reach;
+            if ((fromStart || s >= room[k][i] + into) && (toEnd || s <= room[k][i + 1] - into)) {
                 least = Math.min(least, room[k][i + 2]);
             }
         }

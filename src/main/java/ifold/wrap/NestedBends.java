@@ -69,6 +69,11 @@ final class NestedBends {
     private final int[] ranks;
     /** Each bend's partner back to back on its line (a fold on the other side of it, overlapping it along the line and in levels), or -1. */
     private final int[] backToBack;
+    /**
+     * Each bend's own host where the bends are met in their planes' frames ({@link
+     * #mitres(double[], CoplanarHosts)}), else null.
+     */
+    private int[] ownHosts;
 
     private NestedBends(List<Bend> bends, double tolerance) {
         this.bends = bends;
@@ -447,6 +452,10 @@ final class NestedBends {
         }
         NestedBends met = new NestedBends(inPlanes, tolerance);
         System.arraycopy(lineOf, 0, met.lineOf, 0, lineOf.length);
+        met.ownHosts = new int[bends.size()];
+        for (int k = 0; k < bends.size(); k++) {
+            met.ownHosts[k] = bends.get(k).host();
+        }
         return met.mitresInFrames(out);
     }
 
@@ -622,7 +631,13 @@ final class NestedBends {
         // whole bend; on the torus such rows ran through the lower facet of a bend over a convex
         // edge that stood out away from them).
         double across = dx * other.nx() + dy * other.ny();
-        double enters = across > 0 ? 0 : out[f / 2];
+        // Rows of two hosts of one plane, met at a reflex corner of their face, stop where the
+        // corner's two bands halve it, each as far along as it stands out: stopped on the
+        // other's row, the nested bends of each side, standing out by their ranks, ended on
+        // lines of their own, and crossed those of the other side between them (t_prism's
+        // folds along the bar's underside and the stem's side, at the corners where they meet).
+        boolean twoHosts = ownHosts != null && ownHosts[e / 2] != ownHosts[f / 2];
+        double enters = across > 0 ? 0 : twoHosts ? out[e / 2] : out[f / 2];
         double t = (enters - out[e / 2] * (bend.nx() * other.nx() + bend.ny() * other.ny())
                 - ((x(e) - x(f)) * other.nx() + (y(e) - y(f)) * other.ny())) / across;
         boolean taken = Math.abs(across) > MITRED_SINE && t < 0 && -t <= 4 * (out[e / 2] + out[f / 2]) && -t < length / 2;

@@ -351,6 +351,21 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 double lower = Math.min(height(f), height(g)) + (backs ? 0 : out / slopes[k]);
                 double upper = Math.max(height(f), height(g)) - out;
                 double[] cuts = backs ? cutsAlong(fChain, gChain) : withRowCuts(cutsAlong(fChain, gChain), bend, out, lower, upper);
+                // Where a row's end is mitred short (past < 0), the crease runs on beyond the
+                // mitre's start: a stretch there has its rows on the mitre, standing out the less
+                // the nearer the crease's end, and no wall (it would lie in the mitre's plane).
+                // At the full row, cut stretches beyond the mitre crossed the bends across it
+                // (t_prism's stem, whose layers are cut where they stand back from its cut).
+                double span = Polygons2.length(bend.bx() - bend.ax(), bend.by() - bend.ay());
+                double zoneA = backs ? 0 : -past[2 * k] / span;
+                double zoneB = backs ? 1 : 1 + past[2 * k + 1] / span;
+                boolean zoned = false;
+                for (int j = 1; j + 1 < cuts.length; j++) {
+                    zoned |= cuts[j] < zoneA - SAME_CUT || cuts[j] > zoneB + SAME_CUT;
+                }
+                if (zoned) {
+                    cuts = withCuts(cuts, zoneA, zoneB);
+                }
                 int a = c[2];
                 int b = c[3];
                 // Stretch by stretch between the points where either layer's pieces meet the crease.
@@ -385,17 +400,27 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     } else {
                         double beyond0 = j == 1 ? -past[2 * k] : onCut(bend, out, fChain, gChain, t0, between);
                         double beyond1 = j == cuts.length - 1 ? past[2 * k + 1] : onCut(bend, out, fChain, gChain, t1, between);
-                        double lowRow = fLower ? lower : upper;
-                        double highRow = fLower ? upper : lower;
+                        double out0 = zoned ? out * zoneScale(t0, zoneA, zoneB) : out;
+                        double out1 = zoned ? out * zoneScale(t1, zoneA, zoneB) : out;
+                        beyond0 = out0 < out ? 0 : beyond0;
+                        beyond1 = out1 < out ? 0 : beyond1;
+                        double lowRow0 = rowHeight(f, g, out0, slopes[k], fLower);
+                        double highRow0 = rowHeight(f, g, out0, slopes[k], !fLower);
+                        double lowRow1 = rowHeight(f, g, out1, slopes[k], fLower);
+                        double highRow1 = rowHeight(f, g, out1, slopes[k], !fLower);
                         // Each row leans from its own layer's crease as that layer is placed (f's row from f's).
-                        rowStart = new int[] {row(f, bend, u0, v0, out, beyond0, lowRow, uMid, vMid, rowFrom == null ? -1 : rowFrom[0],
+                        rowStart = new int[] {row(f, bend, u0, v0, out0, beyond0, lowRow0, uMid, vMid, rowFrom == null ? -1 : rowFrom[0],
                                 crept(f, fFrom, u0, v0)),
-                            row(f, bend, u0, v0, out, beyond0, highRow, uMid, vMid, rowFrom == null ? -1 : rowFrom[1], crept(f, gFrom, u0, v0))};
-                        rowAt = new int[] {row(f, bend, u1, v1, out, beyond1, lowRow, uMid, vMid, -1, crept(f, fAt, u1, v1)),
-                            row(f, bend, u1, v1, out, beyond1, highRow, uMid, vMid, -1, crept(f, gAt, u1, v1))};
+                            row(f, bend, u0, v0, out0, beyond0, highRow0, uMid, vMid, rowFrom == null ? -1 : rowFrom[1], crept(f, gFrom, u0, v0))};
+                        rowAt = new int[] {row(f, bend, u1, v1, out1, beyond1, lowRow1, uMid, vMid, -1, crept(f, fAt, u1, v1)),
+                            row(f, bend, u1, v1, out1, beyond1, highRow1, uMid, vMid, -1, crept(f, gAt, u1, v1))};
                     }
+                    boolean inZone = zoned && (t0 >= zoneB - SAME_CUT || t1 <= zoneA + SAME_CUT);
                     boolean squashed = !backs && !onWall[k] && insideAt(fChain, between) && insideAt(gChain, between);
-                    if (!squashed) {
+                    if (!squashed && inZone) {
+                        addBendCap(bend.host(), new int[] {fFrom, fAt, rowAt[0], rowStart[0]}, after, caps, capAfter);
+                        addBendCap(bend.host(), new int[] {rowStart[1], rowAt[1], gAt, gFrom}, after, caps, capAfter);
+                    } else if (!squashed) {
                         int fm0 = rowStart[0];
                         int fm1 = rowAt[0];
                         int gm0 = rowStart[rowStart.length - 1];
@@ -1739,6 +1764,40 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
 
         /** Cuts along a crease closer than this (of its length) are one. */
         private static final double SAME_CUT = 1e-9;
+
+        /** The height of the lower row (lower: the one leaning out at {@code slope}) or the upper of the bend between f and g standing {@code out}. */
+        private double rowHeight(int f, int g, double out, double slope, boolean lower) {
+            return lower ? Math.min(height(f), height(g)) + out / slope : Math.max(height(f), height(g)) - out;
+        }
+
+        /** How far out, as a share of the row's, a bend stands at t along its crease where its row's end is mitred short ({@code zoneA}, {@code zoneB}). */
+        private static double zoneScale(double t, double zoneA, double zoneB) {
+            if (t < zoneA - SAME_CUT) {
+                return Math.max(0, t / zoneA);
+            }
+            if (t > zoneB + SAME_CUT) {
+                return Math.max(0, (1 - t) / (1 - zoneB));
+            }
+            return 1;
+        }
+
+        /** The cuts with those at {@code from} and {@code to} added (where inside and not already there). */
+        private static double[] withCuts(double[] cuts, double from, double to) {
+            double[] all = java.util.Arrays.copyOf(cuts, cuts.length + 2);
+            int n = cuts.length;
+            for (double t : new double[] {from, to}) {
+                boolean there = false;
+                for (double c : cuts) {
+                    there |= Math.abs(c - t) <= SAME_CUT;
+                }
+                if (!there && t > SAME_CUT && t < 1 - SAME_CUT) {
+                    all[n++] = t;
+                }
+            }
+            all = java.util.Arrays.copyOf(all, n);
+            java.util.Arrays.sort(all);
+            return all;
+        }
 
         /**
          * How far along its crease (from its end a towards b) a bend's row, {@code out} beyond

@@ -37,6 +37,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
+import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.ValueSource;
 
 /**
@@ -201,14 +202,18 @@ class WrappedPaperCollisionsTest {
      * corners of their faces, and each host's bends over its own convex edge stood out into the
      * same notch of air as the neighbouring host's: 26 crossing pairs of caps on the L (1.95 T
      * deep) and 2 on the plus (0.58 T), until rows mitred against the bends of coplanar hosts.
+     * Folds along a convex edge that end where a cut begins stood on their crease, nested walls
+     * on one line overlapping in its plane (the L 124, the plus 381 pairs): they now stand out
+     * over their own stretch, their rows stopping where the corner's bands halve it (77, 188).
      */
     @ParameterizedTest
-    @ValueSource(strings = {"l", "plus"})
-    void polycubesBendsAtTheReflexCornersOfTheirFacesCrossNothing(String shape) throws Exception {
+    @CsvSource({"l, 77", "plus, 188"})
+    void polycubesBendsAtTheReflexCornersOfTheirFacesCrossNothing(String shape, int most) throws Exception {
         List<int[]> cubes = shape.equals("l") ? Polycubes.l() : Polycubes.plus();
         Result result = wrapAndCheck(Polycubes.surface(cubes), "polycube " + shape);
         assertEquals(0, result.modelCrossings() + result.pointsInside(), result::summary);
         assertEquals(0, result.crossingPairs(), result::summary);
+        assertTrue(result.coplanarPairs() <= most, result::summary);
     }
 
     /**

@@ -498,8 +498,12 @@ public class WrapTest {
      * one reflex corner to the other, and paper beyond the cut is tucked along it on both sides.
      * The folds nested on one side stand back from the cut into their host, a thickness a rank,
      * as at a concave edge (there is no room across: the other host's paper lies there at the
-     * same heights): standing on the cut's line they overlapped in its plane, 478 pairs; 38 are
-     * left, where folds along the bar's underside edge end at the cut's ends.
+     * same heights): standing on the cut's line they overlapped in its plane, 478 pairs; 38 were
+     * left, where folds along the bar's underside edge end at the cut's ends, nested walls on
+     * their creases (the cut's room, none, counted from the point they end on). They now stand
+     * out over their own stretch of the edge, their rows stopping where the reflex corner's two
+     * bands halve it, as the stem's folds along its side do: 15 left (stem folds of rank 1 whose
+     * layers stand back from the cut's walls by the corner), no crossing pairs.
      */
     @Test
     void theTPrismsFoldsAlongItsCutStandBackFromIt() throws Exception {
@@ -509,7 +513,7 @@ public class WrapTest {
         Wrap.Result result = wrapAndCheck(mesh, new Wrap.Options(Double.NaN, Double.NaN), 2000);
         ifold.check.PaperCollisions.Result collisions = collisions(dir.resolve("t_prism.obj"), result, mesh);
         assertEquals(0, collisions.crossingPairs() + collisions.modelCrossings() + collisions.pointsInside(), collisions.summary());
-        assertTrue(collisions.coplanarPairs() <= 38, collisions.summary());
+        assertTrue(collisions.coplanarPairs() <= 15, collisions.summary());
     }
 
     /**
