@@ -404,9 +404,10 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
     /**
      * The room beyond edge k by frame point (x, y): the least of its stretches that the point's
      * projection on the edge lies within {@code reach} of, or beyond the edge's end where the
-     * stretch runs to it; {@link #OPEN} where none does.
+     * stretch runs to it; {@link #OPEN} where none does. A stretch of no room counts only where
+     * the bend reaches into it, from the point to its row {@code lean} along the edge.
      */
-    private double roomBy(int k, double x, double y, double reach) {
+    private double roomBy(int k, double x, double y, double reach, double lean) {
         if (room[k] == null) {
             return OPEN;
         }
@@ -417,11 +418,18 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
         for (int i = 0; i + 2 < room[k].length; i += 3) {
             boolean fromStart = room[k][i] <= near;
             boolean toEnd = room[k][i + 1] >= edge[4] - near;
-            // A stretch of no room (a host in the same plane, across a cut) counts only where the
-            // point reaches into it: a crease along a convex stretch that ends where the cut
-            // begins (a reflex corner of the face) leans over its own stretch alone.
-            double into = room[k][i + 2] == 0 ? 2 * near - reach : -reach;
-            if ((fromStart || s >= room[k][i] + into) && (toEnd || s <= room[k][i + 1] - into)) {
+            if (room[k][i + 2] == 0) {
+                // A stretch of no room (a host in the same plane, across a cut) counts only where
+                // the bend, from its crease's point to its row, reaches into it: a crease along a
+                // convex stretch that ends where the cut begins (a reflex corner of the face), or
+                // one whose row leans away from a cut beginning there (square_frame's diagonals
+                // from its inner corners), leans over its own stretch alone.
+                if (s + Math.max(0, lean) >= room[k][i] + 2 * near && s + Math.min(0, lean) <= room[k][i + 1] - 2 * near) {
+                    least = Math.min(least, room[k][i + 2]);
+                }
+                continue;
+            }
+            if ((fromStart || s >= room[k][i] - reach) && (toEnd || s <= room[k][i + 1] + reach)) {
                 least = Math.min(least, room[k][i + 2]);
             }
         }
@@ -508,7 +516,7 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
             }
             // The stretches of the edge the bend could reach beside: as far along it as it leans.
             double reach = Math.abs(nx * dx + ny * dy) / length * out + Tolerance.ON_PLANE * length;
-            double edgeRoom = roomBy(k, x, y, reach);
+            double edgeRoom = roomBy(k, x, y, reach, (nx * dx + ny * dy) / length * out);
             if (edgeRoom >= OPEN) {
                 continue;
             }
