@@ -74,6 +74,8 @@ final class NestedBends {
      * #mitres(double[], CoplanarHosts)}), else null.
      */
     private int[] ownHosts;
+    /** Whether each end's row was last stopped by {@link #mitres} on the bends of another host of its plane. */
+    private boolean[] acrossHosts;
 
     private NestedBends(List<Bend> bends, double tolerance) {
         this.bends = bends;
@@ -456,12 +458,20 @@ final class NestedBends {
         for (int k = 0; k < bends.size(); k++) {
             met.ownHosts[k] = bends.get(k).host();
         }
-        return met.mitresInFrames(out);
+        double[] past = met.mitresInFrames(out);
+        acrossHosts = met.acrossHosts;
+        return past;
+    }
+
+    /** Whether end e's row (2k for bend k's end a, 2k + 1 for b) stops on the bends of another host of its plane, at a reflex corner of their face. */
+    boolean mitredAcrossHosts(int e) {
+        return acrossHosts != null && acrossHosts[e];
     }
 
     /** {@link #mitres(double[])} for the bends as framed: a corner's ends meet where their frame and coordinates agree. */
     private double[] mitresInFrames(double[] out) {
         double[] past = new double[2 * bends.size()];
+        acrossHosts = new boolean[2 * bends.size()];
         if (!(tolerance > 0)) {
             return past;
         }
@@ -580,7 +590,11 @@ final class NestedBends {
                     if (lineOf[ends[runStart[run]] / 2] == lineOf[e / 2] || runLow[run] >= bend.high() || bend.low() >= runHigh[run]) {
                         continue;
                     }
-                    past[e] = Math.min(past[e], stop(e, ends, runStart[run], runStart[run + 1], out, wall));
+                    double stop = stop(e, ends, runStart[run], runStart[run + 1], out, wall);
+                    if (stop < past[e]) {
+                        past[e] = stop;
+                        acrossHosts[e] = otherHost;
+                    }
                     if (wall[0]) {
                         // A wall on its crease: those turned farther from the row's crease
                         // cross the row nearer its end, and stop it less.

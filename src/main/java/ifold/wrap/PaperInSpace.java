@@ -355,10 +355,14 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 // mitre's start: a stretch there has its rows on the mitre, standing out the less
                 // the nearer the crease's end, and no wall (it would lie in the mitre's plane).
                 // At the full row, cut stretches beyond the mitre crossed the bends across it
-                // (t_prism's stem, whose layers are cut where they stand back from its cut).
+                // (t_prism's stem, whose layers are cut where they stand back from its cut). Only
+                // rows stopped on another host's bends (at a reflex corner of their face), and not
+                // at a crease's end on a concave edge, whose layers are pressed onto its mitres.
                 double span = Polygons2.length(bend.bx() - bend.ax(), bend.by() - bend.ay());
-                double zoneA = backs ? 0 : -past[2 * k] / span;
-                double zoneB = backs ? 1 : 1 + past[2 * k + 1] / span;
+                double zoneA = backs || !nested.mitredAcrossHosts(2 * k) || onConcaveEdge(bend.host(), bend.ax(), bend.ay()) ? 0
+                        : -past[2 * k] / span;
+                double zoneB = backs || !nested.mitredAcrossHosts(2 * k + 1) || onConcaveEdge(bend.host(), bend.bx(), bend.by()) ? 1
+                        : 1 + past[2 * k + 1] / span;
                 boolean zoned = false;
                 for (int j = 1; j + 1 < cuts.length; j++) {
                     zoned |= cuts[j] < zoneA - SAME_CUT || cuts[j] > zoneB + SAME_CUT;
@@ -420,6 +424,12 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     if (!squashed && inZone) {
                         addBendCap(bend.host(), new int[] {fFrom, fAt, rowAt[0], rowStart[0]}, after, caps, capAfter);
                         addBendCap(bend.host(), new int[] {rowStart[1], rowAt[1], gAt, gFrom}, after, caps, capAfter);
+                        // The two layers' rows stand apart on the mitre: a line between them at each
+                        // point where the stretches meet, so that the bend joins its layers there.
+                        if (t0 <= SAME_CUT) {
+                            joinSquashed(rowStart[0], rowStart[1], after, caps, capAfter);
+                        }
+                        joinSquashed(rowAt[0], rowAt[1], after, caps, capAfter);
                     } else if (!squashed) {
                         int fm0 = rowStart[0];
                         int fm1 = rowAt[0];
@@ -1764,6 +1774,25 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
 
         /** Cuts along a crease closer than this (of its length) are one. */
         private static final double SAME_CUT = 1e-9;
+
+        /**
+         * Whether frame point (x, y) of host h lies on a concave edge of it (not a cut's): a crease
+         * ending there has its layers pressed onto the edge's mitres, and its rows on a mitre
+         * between stretches tore the bend from its layers (the coarse tori 10 × 6 and 14 × 6, by
+         * their inner equators).
+         */
+        private boolean onConcaveEdge(int h, double x, double y) {
+            HostFrame frame = frames[h];
+            if (frame.mitre() == null) {
+                return false;
+            }
+            for (int k = 0; k < frame.corners().length / 2; k++) {
+                if (frame.mitre()[k] != null && frame.along(k, x, y, x, y, sheet.tolerance()) && frame.mitreAt(k, x, y) > HostFrame.CUT_TAN) {
+                    return true;
+                }
+            }
+            return false;
+        }
 
         /** The height of the lower row (lower: the one leaning out at {@code slope}) or the upper of the bend between f and g standing {@code out}. */
         private double rowHeight(int f, int g, double out, double slope, boolean lower) {

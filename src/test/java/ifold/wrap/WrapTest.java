@@ -265,6 +265,22 @@ public class WrapTest {
     }
 
     /**
+     * Coarse tori with flat rings (`ifold generate torus --across 6`), whose rings are cut into
+     * hosts by spokes: a bend standing out over a ring's edge whose row is mitred short against
+     * the bends of the host across had its rows there on the mitre and no wall, and where its
+     * crease ended on the inner equator's concave edge, its layers pressed onto the mitres there,
+     * the bend was torn from them (truth 3, two faces 4 thicknesses apart with no cap, on 10 × 6
+     * and 14 × 6 from the CLI's wrap). Only rows mitred against another host's bends go onto
+     * the mitre now, not at an end on a concave edge, and a line joins the two layers' rows at
+     * each point between such stretches.
+     */
+    @ParameterizedTest
+    @ValueSource(ints = {10, 14})
+    void aRingedTorusIsNotTornWhereARowIsMitredBesideAConcaveEdge(int around) throws Exception {
+        wrapAndCheck(build(Solids.torus(3, 1, around, 6)), new Wrap.Options(Double.NaN, Double.NaN), 2000);
+    }
+
+    /**
      * A 4,000-triangle torus (`ifold generate torus --around 100 --across 20`) wraps whole at
      * the defaults: with a tolerance of a billionth of the model, its strip met a corner's edge
      * by a hair beyond its end (1.4e-8, the tolerance 1.2e-8) on triangle 12,041 and the wrap was
