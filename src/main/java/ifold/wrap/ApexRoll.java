@@ -1,5 +1,9 @@
 package ifold.wrap;
 
+import static ifold.geom.Vectors.cross;
+import static ifold.geom.Vectors.dot;
+import static ifold.geom.Vectors.sub;
+import static ifold.geom.Vectors.unit;
 import static ifold.wrap.Wrap.position;
 
 import ifold.geom.Tolerance;
@@ -55,7 +59,7 @@ final class ApexRoll {
     /** The unit normal of the triangle a, b, c of {@code mesh}. */
     private static double[] normal(IndexedPolygons mesh, int a, int b, int c) {
         double[] pa = position(mesh, a);
-        return unit(cross(minus(position(mesh, b), pa), minus(position(mesh, c), pa)));
+        return unit(cross(sub(position(mesh, b), pa), sub(position(mesh, c), pa)));
     }
 
     /**
@@ -67,8 +71,8 @@ final class ApexRoll {
     static Map<Integer, Double> coverage(IndexedPolygons mesh, PathPlan plan, HostPieces pieces, int v, int last, double w) {
         double[] apex = position(mesh, v);
         int other = plan.baseFrom[last] == v ? plan.baseTo[last] : plan.baseFrom[last];
-        double[] along = unit(minus(position(mesh, other), apex));
-        double[] inward = minus(position(mesh, plan.start[last]), apex);
+        double[] along = unit(sub(position(mesh, other), apex));
+        double[] inward = sub(position(mesh, plan.start[last]), apex);
         int start = pieces.hostOf[plan.first + last];
         int[] cs = pieces.corners[start];
         int ka = indexOf(cs, v);
@@ -78,7 +82,7 @@ final class ApexRoll {
         int out = -1;
         int back = -1;
         for (int c : new int[] {cs[(ka + 1) % cs.length], cs[(ka + cs.length - 1) % cs.length]}) {
-            double[] d = minus(position(mesh, c), apex);
+            double[] d = sub(position(mesh, c), apex);
             if (dot(cross(along, d), cross(along, inward)) > 0) {
                 out = c;
             } else {
@@ -88,8 +92,8 @@ final class ApexRoll {
         if (out < 0 || back < 0) {
             return null;
         }
-        double phi = angle(along, minus(position(mesh, out), apex));
-        double rest = angle(along, minus(position(mesh, back), apex));
+        double phi = angle(along, sub(position(mesh, out), apex));
+        double rest = angle(along, sub(position(mesh, back), apex));
         Map<Integer, Double> covers = new HashMap<>();
         int host = start;
         int from = out;
@@ -104,7 +108,7 @@ final class ApexRoll {
                 return null;
             }
             int next = hc[(k + 1) % hc.length] == from ? hc[(k + hc.length - 1) % hc.length] : hc[(k + 1) % hc.length];
-            double wedge = angle(minus(position(mesh, from), apex), minus(position(mesh, next), apex));
+            double wedge = angle(sub(position(mesh, from), apex), sub(position(mesh, next), apex));
             if (host == start) {
                 covers.put(host, w / Math.sin(Math.min(Math.PI / 2, phi + rest)));
                 return covers;
@@ -123,23 +127,6 @@ final class ApexRoll {
             }
         }
         return -1;
-    }
-
-    private static double[] minus(double[] a, double[] b) {
-        return new double[] {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-    }
-
-    private static double[] cross(double[] a, double[] b) {
-        return new double[] {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-    }
-
-    private static double dot(double[] a, double[] b) {
-        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-    }
-
-    private static double[] unit(double[] a) {
-        double n = Math.sqrt(dot(a, a));
-        return new double[] {a[0] / n, a[1] / n, a[2] / n};
     }
 
     private static double angle(double[] a, double[] b) {
