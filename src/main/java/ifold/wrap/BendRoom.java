@@ -52,8 +52,8 @@ final class BendRoom {
      * As {@link #of(IndexedPolygons, int[], HostFrame[], double)}, with every cut between
      * coplanar hosts a stretch of no mitre ({@link #CUT_MITRE}), not only those on the line of a
      * side running on: a cut that is a whole edge of both hosts stops {@code cornerRoom} short of
-     * a reflex corner of the plane's region and of a point where three or more of its hosts meet
-     * (NaN: only the cuts on the line of a side, as the hinge strip has them).
+     * a point where three or more of its plane's hosts meet (NaN: only the cuts on the line of a
+     * side, as the hinge strip has them).
      */
     static HostFrame[] of(IndexedPolygons mesh, int[] hostOf, HostFrame[] frames, double tolerance, double cornerRoom) {
         // Each host edge's stretches that limit bends (from, to and the slope) and its concave
@@ -148,7 +148,9 @@ final class BendRoom {
      * spoke from a reflex corner) the folds along the sides at its ends end on its walls, and
      * walls standing back from the cut up to its ends moved their corners off their creases (the
      * L prism's diagonal: 11 crossing pairs, 0.9 T deep; the coarse tori's rings: 4 each, one
-     * point): such a cut's walls stop {@link #CUT_CORNER_ROOM} short of those ends.
+     * point): such a cut's walls stop {@link #CUT_CORNER_ROOM} short of an end where three or
+     * more hosts meet, and at a reflex corner stand back only where no crease from the corner
+     * crosses their nest ({@link ConcaveWalls}).
      */
     private static boolean runsOnAsASide(HostFrame near, int k, HostFrame far, double[] a, double[] b, double tolerance) {
         double[] edge = near.edge(k);
@@ -176,58 +178,30 @@ final class BendRoom {
     }
 
     /**
-     * The points where the whole cuts' walls stop short: each vertex where a plane shared by
-     * hosts turns through more than 180° and less than 360° (a reflex corner of its region: the
-     * fold along the side that ends there had its corner moved square to the cut, off its
-     * crease, and its bend twisted through the paper beside it, on the L prism's diagonal), or
-     * where three or more of its hosts meet (figure3's corners inside its face, where four and
-     * five cuts meet: 40 crossing pairs with walls up to them).
+     * The points where the whole cuts' walls stop short: each vertex where three or more hosts of
+     * one plane meet (figure3's corners inside its face, where four and five cuts meet: 40
+     * crossing pairs with walls up to them). At a reflex corner of a plane's region the walls run
+     * up to the corner, but for folds whose nest a crease from the corner crosses
+     * ({@link ConcaveWalls}); stopped short there too, the nested folds of the corner's last tenth
+     * of a width stood on the cut's line, their walls in one plane (square_frame 397 pairs in one
+     * plane, figure3 731; 138 and 513 with the walls up to its reflex corners).
      */
     private static List<double[]> cutCorners(IndexedPolygons mesh, List<List<Integer>> facesAt, int[] hostOf, CoplanarHosts planes) {
         List<double[]> corners = new ArrayList<>();
-        Map<Integer, Double> turn = new HashMap<>();
         Map<Integer, Set<Integer>> hosts = new HashMap<>();
         for (int v = 0; v < mesh.vertexCount(); v++) {
-            turn.clear();
             hosts.clear();
-            double[] p = position(mesh, v);
             for (int t : facesAt.get(v)) {
-                int plane = planes.planeOf(hostOf[t]);
-                hosts.computeIfAbsent(plane, x -> new HashSet<>()).add(hostOf[t]);
-                int n = mesh.faceSize(t);
-                for (int k = 0; k < n; k++) {
-                    if (mesh.faceVertex(t, k) == v) {
-                        turn.merge(plane, angle(p, position(mesh, mesh.faceVertex(t, (k + 1) % n)),
-                                position(mesh, mesh.faceVertex(t, (k + n - 1) % n))), Double::sum);
-                    }
-                }
+                hosts.computeIfAbsent(planes.planeOf(hostOf[t]), x -> new HashSet<>()).add(hostOf[t]);
             }
-            for (Map.Entry<Integer, Set<Integer>> plane : hosts.entrySet()) {
-                double around = turn.get(plane.getKey());
-                if (plane.getValue().size() >= 3 || (plane.getValue().size() == 2 && around > Math.PI + ANGLE_TOLERANCE
-                        && around < 2 * Math.PI - ANGLE_TOLERANCE)) {
-                    corners.add(p);
+            for (Set<Integer> plane : hosts.values()) {
+                if (plane.size() >= 3) {
+                    corners.add(position(mesh, v));
                     break;
                 }
             }
         }
         return corners;
-    }
-
-    /** How far a corner's sum of angles must pass 180° to be a reflex corner, and fall short of 360°. */
-    private static final double ANGLE_TOLERANCE = 1e-6;
-
-    /** The angle at p between the directions to a and to b. */
-    private static double angle(double[] p, double[] a, double[] b) {
-        double dot = 0;
-        double la = 0;
-        double lb = 0;
-        for (int i = 0; i < 3; i++) {
-            dot += (a[i] - p[i]) * (b[i] - p[i]);
-            la += (a[i] - p[i]) * (a[i] - p[i]);
-            lb += (b[i] - p[i]) * (b[i] - p[i]);
-        }
-        return Math.acos(Math.max(-1, Math.min(1, dot / Math.sqrt(la * lb))));
     }
 
     private static boolean same(double[] p, double[] q, double tolerance) {
@@ -354,13 +328,13 @@ final class BendRoom {
     static final double CUT_MITRE = 1e-9;
 
     /**
-     * How far short of a reflex corner of its face, or of a point where three or more hosts of
-     * its plane meet, the walls along a cut that is a whole edge of both hosts stop, in strip
-     * widths. Up to them, figure3 crossed itself in 40 pairs, the 14 × 6 torus in 4, the 10 × 6
-     * in 4 more than before; a tenth of a width short, none does (0.03 of a width: the L prism,
-     * square_frame and figure3 wrapped as at a tenth). With none at reflex corners of 270° (the
-     * L prism's, square_frame's), the L prism wrapped from its first start crossed in 3 pairs
-     * (0.28 T) by its reflex corner.
+     * How far short of a point where three or more hosts of its plane meet the walls along a cut
+     * that is a whole edge of both hosts stop, in strip widths. Up to them, figure3 crossed itself
+     * in 40 pairs; a tenth of a width short, none does (0.03 of a width: figure3 wrapped as at a
+     * tenth). They stopped so short of reflex corners of the face too, until the folds there whose
+     * nest a crease from the corner crosses were left on their crease instead
+     * ({@link ConcaveWalls}): with none at reflex corners, the L prism wrapped from its first start
+     * crossed in 3 pairs (0.28 T) by its reflex corner.
      */
     static final double CUT_CORNER_ROOM = 0.1;
 

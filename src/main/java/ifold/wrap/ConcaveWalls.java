@@ -34,8 +34,9 @@ import java.util.Map;
  * back into their own host, a thickness a rank, and no longer stand one inside another on the
  * cut's line, overlapping in its plane. A fold that runs on beyond the cut along a convex
  * stretch of the same side stands out as before. A cut that is a whole edge of both hosts is
- * taken so too ({@code BendRoom.WHOLE_CUT_MITRE}), but for a tenth of a width at its ends on a
- * reflex corner of the face or where three or more hosts meet ({@code BendRoom.CUT_CORNER_ROOM}),
+ * taken so too ({@code BendRoom.WHOLE_CUT_MITRE}), but for a tenth of a width at its ends where
+ * three or more hosts meet ({@code BendRoom.CUT_CORNER_ROOM}) and for folds at a reflex corner of
+ * the face whose nest a crease from the corner crosses (they stay on their crease),
  * and its folds stand back by the ranks of their own nest (the folds along it whose stretches
  * overlap, and theirs), not by the most along the whole edge: the other host's paper stands back
  * from the cut too, and a lone fold standing back as far as the deepest nest along the edge left
@@ -159,6 +160,7 @@ final class ConcaveWalls {
                 most.merge(key(bend.host(), edgeOf[k]), need[k], Math::max);
             }
         }
+        leaveOnCreaseWhereCrossedAtACorner(bends, along, onCut, edgeOf, frames, tolerance);
         double[] nestMost = cutNests(bends, along, onCut, edgeOf, need, from, to);
         List<List<Wall>> wallsOf = new ArrayList<>(java.util.Collections.nCopies(frames.length, (List<Wall>) null));
         for (int k = 0; k < bends.size(); k++) {
@@ -192,6 +194,89 @@ final class ConcaveWalls {
             backWallsByHost[h] = backWallsOf.get(h) == null ? null : backWallsOf.get(h).toArray(new BackWall[0]);
         }
         return new ConcaveWalls(thickness, tolerance, wallsOf, backWallsByHost, along, stackTop);
+    }
+
+    /**
+     * Leaves on its crease each fold along a whole cut where a crease of its host that runs into
+     * the host from an end of the cut (not along a side: the line of the neighbour's side running
+     * on past a reflex corner) ends on the fold's crease with one layer between the fold's layers
+     * and the other not. Its wall would move the one layer's corner square to the cut, off that
+     * crease, and leave the other on it, and the bend between the two would lean through the wall
+     * (the L prism's reflex corner, where a fold along the line of the side y = 1 ends on a short
+     * fold along the diagonal: 3 crossing pairs, 0.28 T).
+     */
+    private static void leaveOnCreaseWhereCrossedAtACorner(List<NestedBends.Bend> bends, boolean[] along, boolean[] onCut,
+            int[] edgeOf, HostFrame[] frames, double tolerance) {
+        Map<Integer, List<Integer>> byHost = new HashMap<>();
+        for (int k = 0; k < bends.size(); k++) {
+            if (along[k] && onCut[k]) {
+                byHost.computeIfAbsent(bends.get(k).host(), h -> new ArrayList<>());
+            }
+        }
+        for (int j = 0; j < bends.size() && !byHost.isEmpty(); j++) {
+            List<Integer> ofHost = byHost.get(bends.get(j).host());
+            if (ofHost != null) {
+                ofHost.add(j);
+            }
+        }
+        for (int k = 0; k < bends.size(); k++) {
+            if (along[k] && onCut[k]) {
+                HostFrame frame = frames[bends.get(k).host()];
+                along[k] = !crossedAtACorner(k, bends, byHost.get(bends.get(k).host()), frame.edge(edgeOf[k]), frame, tolerance);
+            }
+        }
+    }
+
+    /**
+     * Whether a crease of bend k's host (its bends {@code ofHost}) from an end of k's edge
+     * ({@link #leaveOnCreaseWhereCrossedAtACorner}) crosses k's nest.
+     */
+    private static boolean crossedAtACorner(int k, List<NestedBends.Bend> bends, List<Integer> ofHost, double[] edge, HostFrame frame,
+            double tolerance) {
+        NestedBends.Bend wall = bends.get(k);
+        for (int j : ofHost) {
+            NestedBends.Bend other = bends.get(j);
+            if (j == k) {
+                continue;
+            }
+            boolean lowHeld = other.low() >= wall.low() && other.low() <= wall.high();
+            boolean highHeld = other.high() >= wall.low() && other.high() <= wall.high();
+            if (lowHeld == highHeld) {
+                continue; // both layers held, or neither: they stay together
+            }
+            boolean aOn = onCrease(wall, other.ax(), other.ay(), tolerance);
+            boolean bOn = onCrease(wall, other.bx(), other.by(), tolerance);
+            boolean fromEnd = aOn && atEnd(edge, other.ax(), other.ay(), tolerance) || bOn && atEnd(edge, other.bx(), other.by(), tolerance);
+            if (fromEnd && !(aOn && bOn) && !alongASide(frame, other, tolerance)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Whether the bend's crease lies along a side of the frame's polygon. */
+    private static boolean alongASide(HostFrame frame, NestedBends.Bend bend, double tolerance) {
+        for (int k = 0; k < frame.corners().length / 2; k++) {
+            if (frame.along(k, bend.ax(), bend.ay(), bend.bx(), bend.by(), tolerance)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Whether frame point (x, y) is either end of the edge (x, y of its first corner, dx, dy, its length), to the tolerance. */
+    private static boolean atEnd(double[] edge, double x, double y, double tolerance) {
+        return Math.hypot(x - edge[0], y - edge[1]) <= tolerance || Math.hypot(x - edge[0] - edge[2], y - edge[1] - edge[3]) <= tolerance;
+    }
+
+    /** Whether frame point (x, y) lies on the bend's crease, to the tolerance. */
+    private static boolean onCrease(NestedBends.Bend bend, double x, double y, double tolerance) {
+        double dx = bend.bx() - bend.ax();
+        double dy = bend.by() - bend.ay();
+        double length = Math.sqrt(dx * dx + dy * dy);
+        double s = ((x - bend.ax()) * dx + (y - bend.ay()) * dy) / length;
+        double off = ((x - bend.ax()) * dy - (y - bend.ay()) * dx) / length;
+        return Math.abs(off) <= tolerance && s >= -tolerance && s <= length + tolerance;
     }
 
     /**
