@@ -5,10 +5,8 @@ import ifold.mesh.IndexedPolygons;
 import ifold.sheet.HostFrame;
 import java.util.ArrayList;
 import java.util.HashMap;
-import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
 
 /**
  * How far the bends of flat folds along each edge of a host may stand out beyond it: the room
@@ -45,17 +43,16 @@ final class BendRoom {
      * @param tolerance how far off a polygon's edge a mesh edge may lie and still be on it
      */
     static HostFrame[] of(IndexedPolygons mesh, int[] hostOf, HostFrame[] frames, double tolerance) {
-        return of(mesh, hostOf, frames, tolerance, Double.NaN);
+        return of(mesh, hostOf, frames, tolerance, false);
     }
 
     /**
      * As {@link #of(IndexedPolygons, int[], HostFrame[], double)}, with every cut between
      * coplanar hosts a stretch of no mitre ({@link #CUT_MITRE}), not only those on the line of a
-     * side running on: a cut that is a whole edge of both hosts stops {@code cornerRoom} short of
-     * a point where three or more of its plane's hosts meet (NaN: only the cuts on the line of a
-     * side, as the hinge strip has them).
+     * side running on, where {@code wholeCuts} (false: only the cuts on the line of a side, as the
+     * hinge strip has them).
      */
-    static HostFrame[] of(IndexedPolygons mesh, int[] hostOf, HostFrame[] frames, double tolerance, double cornerRoom) {
+    static HostFrame[] of(IndexedPolygons mesh, int[] hostOf, HostFrame[] frames, double tolerance, boolean wholeCuts) {
         // Each host edge's stretches that limit bends (from, to and the slope) and its concave
         // stretches (from, to and tan(φ/2)), three numbers a stretch.
         List<List<List<Double>>> room = new ArrayList<>();
@@ -77,7 +74,6 @@ final class BendRoom {
         }
         List<List<Integer>> facesAt = facesAt(mesh);
         CoplanarHosts planes = CoplanarHosts.of(frames, tolerance);
-        List<double[]> cutCorners = Double.isNaN(cornerRoom) ? null : cutCorners(mesh, facesAt, hostOf, planes);
         Map<Integer, List<Integer>> sharing = planes.shared();
         for (int t = 0; t < mesh.faceCount(); t++) {
             int n = mesh.faceSize(t);
@@ -89,8 +85,8 @@ final class BendRoom {
                 if (other == null) {
                     firstSide.put(key, t);
                 } else if (hostOf[other] != hostOf[t]) {
-                    limit(mesh, u, v, other, t, hostOf, frames, room, mitre, tolerance, cutCorners, cornerRoom);
-                    limit(mesh, u, v, t, other, hostOf, frames, room, mitre, tolerance, cutCorners, cornerRoom);
+                    limit(mesh, u, v, other, t, hostOf, frames, room, mitre, tolerance, wholeCuts);
+                    limit(mesh, u, v, t, other, hostOf, frames, room, mitre, tolerance, wholeCuts);
                     for (int[] sides : new int[][] {{other, t}, {t, other}}) {
                         List<Integer> plane = sharing.get(planes.planeOf(hostOf[sides[0]]));
                         if (plane != null) {
@@ -148,9 +144,9 @@ final class BendRoom {
      * spoke from a reflex corner) the folds along the sides at its ends end on its walls, and
      * walls standing back from the cut up to its ends moved their corners off their creases (the
      * L prism's diagonal: 11 crossing pairs, 0.9 T deep; the coarse tori's rings: 4 each, one
-     * point): such a cut's walls stop {@link #CUT_CORNER_ROOM} short of an end where three or
-     * more hosts meet, and at a reflex corner stand back only where no crease from the corner
-     * crosses their nest ({@link ConcaveWalls}).
+     * point): such a cut's walls stand back by their own nest's ranks ({@link #WHOLE_CUT_MITRE}),
+     * and a fold at its end whose nest a crease from the end crosses stays on its crease
+     * ({@link ConcaveWalls}).
      */
     private static boolean runsOnAsASide(HostFrame near, int k, HostFrame far, double[] a, double[] b, double tolerance) {
         double[] edge = near.edge(k);
@@ -175,37 +171,6 @@ final class BendRoom {
             return lo < -tolerance || hi > edge[4] + tolerance || lo > tolerance || hi < edge[4] - tolerance;
         }
         return false;
-    }
-
-    /**
-     * The points where the whole cuts' walls stop short: each vertex where three or more hosts of
-     * one plane meet (figure3's corners inside its face, where four and five cuts meet: 40
-     * crossing pairs with walls up to them). At a reflex corner of a plane's region the walls run
-     * up to the corner, but for folds whose nest a crease from the corner crosses
-     * ({@link ConcaveWalls}); stopped short there too, the nested folds of the corner's last tenth
-     * of a width stood on the cut's line, their walls in one plane (square_frame 397 pairs in one
-     * plane, figure3 731; 138 and 513 with the walls up to its reflex corners).
-     */
-    private static List<double[]> cutCorners(IndexedPolygons mesh, List<List<Integer>> facesAt, int[] hostOf, CoplanarHosts planes) {
-        List<double[]> corners = new ArrayList<>();
-        Map<Integer, Set<Integer>> hosts = new HashMap<>();
-        for (int v = 0; v < mesh.vertexCount(); v++) {
-            hosts.clear();
-            for (int t : facesAt.get(v)) {
-                hosts.computeIfAbsent(planes.planeOf(hostOf[t]), x -> new HashSet<>()).add(hostOf[t]);
-            }
-            for (Set<Integer> plane : hosts.values()) {
-                if (plane.size() >= 3) {
-                    corners.add(position(mesh, v));
-                    break;
-                }
-            }
-        }
-        return corners;
-    }
-
-    private static boolean same(double[] p, double[] q, double tolerance) {
-        return Math.abs(p[0] - q[0]) <= tolerance && Math.abs(p[1] - q[1]) <= tolerance && Math.abs(p[2] - q[2]) <= tolerance;
     }
 
     /** Whether triangle {@code far} turns away below the plane of {@code near}: a convex edge between them, not a flat one. */
@@ -328,17 +293,6 @@ final class BendRoom {
     static final double CUT_MITRE = 1e-9;
 
     /**
-     * How far short of a point where three or more hosts of its plane meet the walls along a cut
-     * that is a whole edge of both hosts stop, in strip widths. Up to them, figure3 crossed itself
-     * in 40 pairs; a tenth of a width short, none does (0.03 of a width: figure3 wrapped as at a
-     * tenth). They stopped so short of reflex corners of the face too, until the folds there whose
-     * nest a crease from the corner crosses were left on their crease instead
-     * ({@link ConcaveWalls}): with none at reflex corners, the L prism wrapped from its first start
-     * crossed in 3 pairs (0.28 T) by its reflex corner.
-     */
-    static final double CUT_CORNER_ROOM = 0.1;
-
-    /**
      * The mitre of a cut that is a whole edge of both hosts: none for the paper, as
      * {@link #CUT_MITRE}, but told apart from it so that {@link ConcaveWalls} stands the folds
      * along it back by their own nest's ranks, not by the most along the whole edge.
@@ -347,8 +301,7 @@ final class BendRoom {
 
     /** Limits the room of the edge of {@code near}'s host that mesh edge (u, v) lies along, by the turn to {@code far}'s host. */
     private static void limit(IndexedPolygons mesh, int u, int v, int near, int far, int[] hostOf, HostFrame[] frames,
-            List<List<List<Double>>> room, List<List<List<Double>>> mitre, double tolerance, List<double[]> cutCorners,
-            double cornerRoom) {
+            List<List<List<Double>>> room, List<List<List<Double>>> mitre, double tolerance, boolean wholeCuts) {
         HostFrame frame = frames[hostOf[near]];
         double slope = slope(frame, frames[hostOf[far]], mesh, far, tolerance);
         double concave = slope >= HostFrame.OPEN ? concaveTurn(frame, frames[hostOf[far]], mesh, far, tolerance) : 0;
@@ -377,30 +330,13 @@ final class BendRoom {
                     cut.add(Math.min(sa, sb));
                     cut.add(Math.max(sa, sb));
                     cut.add(CUT_MITRE);
-                } else if (slope == 0 && cutCorners != null) {
-                    // A whole edge of both hosts: its walls stand back but for cornerRoom at its
-                    // ends where a fold along a side of the host ends on it (a reflex corner) or
-                    // where other cuts meet it, whose corners the walls would move off their creases.
-                    double lo = Math.min(sa, sb);
-                    double hi = Math.max(sa, sb);
-                    double[] start = new double[3];
-                    double[] end = new double[3];
-                    frame.toSpace(edge[0], edge[1], 0, start, 0);
-                    frame.toSpace(edge[0] + edge[2], edge[1] + edge[3], 0, end, 0);
-                    for (double[] corner : cutCorners) {
-                        if (same(corner, start, tolerance)) {
-                            lo = Math.max(lo, cornerRoom);
-                        }
-                        if (same(corner, end, tolerance)) {
-                            hi = Math.min(hi, edge[4] - cornerRoom);
-                        }
-                    }
-                    if (lo < hi) {
-                        List<Double> cut = mitre.get(hostOf[near]).get(k);
-                        cut.add(lo);
-                        cut.add(hi);
-                        cut.add(WHOLE_CUT_MITRE);
-                    }
+                } else if (slope == 0 && wholeCuts) {
+                    // A whole edge of both hosts (a diagonal or a spoke): walls by nest up to its
+                    // ends, but for folds there that a crease from the end crosses (ConcaveWalls).
+                    List<Double> cut = mitre.get(hostOf[near]).get(k);
+                    cut.add(Math.min(sa, sb));
+                    cut.add(Math.max(sa, sb));
+                    cut.add(WHOLE_CUT_MITRE);
                 }
             }
         }

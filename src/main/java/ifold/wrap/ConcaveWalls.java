@@ -34,9 +34,10 @@ import java.util.Map;
  * back into their own host, a thickness a rank, and no longer stand one inside another on the
  * cut's line, overlapping in its plane. A fold that runs on beyond the cut along a convex
  * stretch of the same side stands out as before. A cut that is a whole edge of both hosts is
- * taken so too ({@code BendRoom.WHOLE_CUT_MITRE}), but for a tenth of a width at its ends where
- * three or more hosts meet ({@code BendRoom.CUT_CORNER_ROOM}) and for folds at a reflex corner of
- * the face whose nest a crease from the corner crosses (they stay on their crease),
+ * taken so too ({@code BendRoom.WHOLE_CUT_MITRE}), up to its ends, but for folds at an end whose
+ * nest a crease from there crosses (they stay on their crease; walls stopped a tenth of a width
+ * short of reflex corners and of points where three or more hosts meet before, their last
+ * stretch's nests on the cut's line),
  * and its folds stand back by the ranks of their own nest (the folds along it whose stretches
  * overlap, and theirs), not by the most along the whole edge: the other host's paper stands back
  * from the cut too, and a lone fold standing back as far as the deepest nest along the edge left
@@ -197,13 +198,18 @@ final class ConcaveWalls {
     }
 
     /**
-     * Leaves on its crease each fold along a whole cut where a crease of its host that runs into
-     * the host from an end of the cut (not along a side: the line of the neighbour's side running
-     * on past a reflex corner) ends on the fold's crease with one layer between the fold's layers
-     * and the other not. Its wall would move the one layer's corner square to the cut, off that
-     * crease, and leave the other on it, and the bend between the two would lean through the wall
-     * (the L prism's reflex corner, where a fold along the line of the side y = 1 ends on a short
-     * fold along the diagonal: 3 crossing pairs, 0.28 T).
+     * Leaves on its crease each fold along a whole cut where another crease of its host from an end
+     * of the cut ends on the fold's crease with one layer between the fold's layers and the other
+     * not: its wall would move the one layer's corner square to the cut and leave the other, and
+     * the bend between the two would lean through the wall. Such a crease runs into the host (the
+     * line of the neighbour's side running on past a reflex corner: on the L prism a fold along y
+     * = 1 ending on a short fold along the diagonal, 3 crossing pairs, 0.28 T), or along another
+     * cut meeting this one where three or more hosts meet, wrapping more levels than the fold
+     * (figure3's corners inside its face, where four and five cuts meet: with both walled, their
+     * levels interleaved, the two walls crossed each other, 40 crossing pairs, 1.9 T deep). Of two
+     * such folds the one wrapping more stands back, and the other's nest stays on one line: left
+     * on its crease too, figure3 had 342 pairs in one plane rather than 243. A fold along a side
+     * over a convex edge stands out over that side and moves with no wall of the cut.
      */
     private static void leaveOnCreaseWhereCrossedAtACorner(List<NestedBends.Bend> bends, boolean[] along, boolean[] onCut,
             int[] edgeOf, HostFrame[] frames, double tolerance) {
@@ -229,7 +235,7 @@ final class ConcaveWalls {
 
     /**
      * Whether a crease of bend k's host (its bends {@code ofHost}) from an end of k's edge
-     * ({@link #leaveOnCreaseWhereCrossedAtACorner}) crosses k's nest.
+     * ({@code edge}) crosses k's nest ({@link #leaveOnCreaseWhereCrossedAtACorner}).
      */
     private static boolean crossedAtACorner(int k, List<NestedBends.Bend> bends, List<Integer> ofHost, double[] edge, HostFrame frame,
             double tolerance) {
@@ -247,21 +253,31 @@ final class ConcaveWalls {
             boolean aOn = onCrease(wall, other.ax(), other.ay(), tolerance);
             boolean bOn = onCrease(wall, other.bx(), other.by(), tolerance);
             boolean fromEnd = aOn && atEnd(edge, other.ax(), other.ay(), tolerance) || bOn && atEnd(edge, other.bx(), other.by(), tolerance);
-            if (fromEnd && !(aOn && bOn) && !alongASide(frame, other, tolerance)) {
-                return true;
+            if (!fromEnd || aOn && bOn) {
+                continue;
+            }
+            int side = sideAlong(frame, other, tolerance);
+            if (side < 0) {
+                return true; // into the host
+            }
+            double tan = frame.mitreAlong(side, other.ax(), other.ay(), other.bx(), other.by(), tolerance);
+            int wraps = other.high() - other.low();
+            int ownWraps = wall.high() - wall.low();
+            if (tan > 0 && tan <= HostFrame.CUT_TAN && (wraps > ownWraps || wraps == ownWraps && j < k)) {
+                return true; // along another cut, wrapping more (or as many, and made first)
             }
         }
         return false;
     }
 
-    /** Whether the bend's crease lies along a side of the frame's polygon. */
-    private static boolean alongASide(HostFrame frame, NestedBends.Bend bend, double tolerance) {
+    /** The side of the frame's polygon the bend's crease lies along; -1 if none. */
+    private static int sideAlong(HostFrame frame, NestedBends.Bend bend, double tolerance) {
         for (int k = 0; k < frame.corners().length / 2; k++) {
             if (frame.along(k, bend.ax(), bend.ay(), bend.bx(), bend.by(), tolerance)) {
-                return true;
+                return k;
             }
         }
-        return false;
+        return -1;
     }
 
     /** Whether frame point (x, y) is either end of the edge (x, y of its first corner, dx, dy, its length), to the tolerance. */

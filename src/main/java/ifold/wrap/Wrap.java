@@ -557,8 +557,7 @@ public final class Wrap {
         if (fewestFaces + cornerTucks.fewestFaces() > options.maxFaces()) {
             throw new FaceLimitException(cornerTucks.refusal(mesh, plans, alone, width, widest, passes, fewestFaces, options.maxFaces()));
         }
-        HostFrame[] frames = BendRoom.of(mesh, pieces.hostOf, pieces.frames(mesh, triangleFrames), tolerance,
-                BendRoom.CUT_CORNER_ROOM * width);
+        HostFrame[] frames = BendRoom.of(mesh, pieces.hostOf, pieces.frames(mesh, triangleFrames), tolerance, true);
         Isometry2[] toHost = new Isometry2[mesh.faceCount()];
         for (PathPlan plan : plans) {
             for (int i = 0; i < plan.m; i++) {
