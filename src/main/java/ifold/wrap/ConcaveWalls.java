@@ -2,6 +2,7 @@ package ifold.wrap;
 
 import ifold.geom.Tolerance;
 import ifold.sheet.HostFrame;
+import ifold.sheet.Polygons2;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
@@ -34,12 +35,12 @@ import java.util.Map;
  * back into their own host, a thickness a rank, and no longer stand one inside another on the
  * cut's line, overlapping in its plane. A fold that runs on beyond the cut along a convex
  * stretch of the same side stands out as before. A cut that is a whole edge of both hosts is
- * taken so too ({@code BendRoom.WHOLE_CUT_MITRE}), up to its ends, but for folds at an end whose
- * nest a crease from there crosses (they stay on their crease; walls stopped a tenth of a width
- * short of reflex corners and of points where three or more hosts meet before, their last
- * stretch's nests on the cut's line),
- * and its folds stand back by the ranks of their own nest (the folds along it whose stretches
- * overlap, and theirs), not by the most along the whole edge: the other host's paper stands back
+ * taken so too ({@code BendRoom.WHOLE_CUT_MITRE}), up to its ends, but for folds whose walls
+ * other creases would run into ({@link #leaveOnCreaseWhereCrossed}: they stay on their crease;
+ * walls stopped a tenth of a width short of reflex corners and of points where three or more
+ * hosts meet before, their last stretch's nests on the cut's line). Its folds stand back half a
+ * thickness ({@link #CUT_CLEARANCE}) and by the ranks of their own nest (the folds along it whose
+ * stretches overlap, and theirs), not by the most along the whole edge: the other host's paper stands back
  * from the cut too, and a lone fold standing back as far as the deepest nest along the edge left
  * the surface beside the cut bare under its lower layer (the 14 × 6 torus's ring, 4 thicknesses
  * by a spoke; figure3 by a spoke from an inner corner).
@@ -157,11 +158,20 @@ final class ConcaveWalls {
             double tan = frame.mitreAlong(edgeOf[k], bend.ax(), bend.ay(), bend.bx(), bend.by(), tolerance);
             need[k] = (bend.high() + 0.5) * thickness * tan + ranks[k] * thickness;
             onCut[k] = Math.abs(tan - BendRoom.WHOLE_CUT_MITRE) < BendRoom.CUT_MITRE / 2; // a whole cut: walls by nest
+            if (onCut[k]) {
+                need[k] += CUT_CLEARANCE * thickness;
+            }
             if (!onCut[k]) {
                 most.merge(key(bend.host(), edgeOf[k]), need[k], Math::max);
             }
         }
-        leaveOnCreaseWhereCrossedAtACorner(bends, along, onCut, edgeOf, frames, tolerance);
+        // Where each wall would stand with every fold of the cut walled, to find the folds whose
+        // walls another crease runs into; the nests of those left are taken again without them.
+        double[] reach = cutNests(bends, along, onCut, edgeOf, need, from, to);
+        for (int k = 0; k < bends.size(); k++) {
+            reach[k] += (0.5 - ranks[k]) * thickness; // the wall, and the half of the paper's thickness on its far side
+        }
+        leaveOnCreaseWhereCrossed(bends, ranks, along, onCut, edgeOf, reach, frames, tolerance);
         double[] nestMost = cutNests(bends, along, onCut, edgeOf, need, from, to);
         List<List<Wall>> wallsOf = new ArrayList<>(java.util.Collections.nCopies(frames.length, (List<Wall>) null));
         for (int k = 0; k < bends.size(); k++) {
@@ -198,21 +208,42 @@ final class ConcaveWalls {
     }
 
     /**
-     * Leaves on its crease each fold along a whole cut where another crease of its host from an end
-     * of the cut ends on the fold's crease with one layer between the fold's layers and the other
-     * not: its wall would move the one layer's corner square to the cut and leave the other, and
-     * the bend between the two would lean through the wall. Such a crease runs into the host (the
-     * line of the neighbour's side running on past a reflex corner: on the L prism a fold along y
-     * = 1 ending on a short fold along the diagonal, 3 crossing pairs, 0.28 T), or along another
-     * cut meeting this one where three or more hosts meet, wrapping more levels than the fold
-     * (figure3's corners inside its face, where four and five cuts meet: with both walled, their
-     * levels interleaved, the two walls crossed each other, 40 crossing pairs, 1.9 T deep). Of two
-     * such folds the one wrapping more stands back, and the other's nest stays on one line: left
-     * on its crease too, figure3 had 342 pairs in one plane rather than 243. A fold along a side
-     * over a convex edge stands out over that side and moves with no wall of the cut.
+     * How far, in thicknesses, each fold along a whole cut stands back from it at the least (the
+     * outermost of a nest; those it wraps a thickness a rank farther). Paper is a thickness thick,
+     * and the walls of both hosts' outermost folds stood on the cut's line, in one plane:
+     * square_frame 128 of its 138 pairs, figure3 51 of 243, the rings 6 to 16 × 6 most of theirs.
      */
-    private static void leaveOnCreaseWhereCrossedAtACorner(List<NestedBends.Bend> bends, boolean[] along, boolean[] onCut,
-            int[] edgeOf, HostFrame[] frames, double tolerance) {
+    static final double CUT_CLEARANCE = 0.5;
+
+    /**
+     * Leaves on its crease each fold along a whole cut whose wall another crease of its host would
+     * run into. Its wall, {@code reach} in from the cut with the half thickness beyond, moves the
+     * paper of its levels there; a crease with one layer among those levels and the other not,
+     * ending within that reach beside the wall, not square to the cut, would have the one layer's
+     * end moved off it and the other left, the bend between them leaning through the wall. Such a
+     * crease:
+     * <ul>
+     * <li>runs into the host from an end of the cut, ending on the fold's crease there (the line
+     *     of the neighbour's side running on past a reflex corner: on the L prism a fold along
+     *     y = 1 ending on a short fold along the diagonal, 3 crossing pairs, 0.28 T);
+     * <li>runs along another cut from the same end, where three or more hosts meet, its fold
+     *     wrapping more levels (figure3's corners inside its face, where four and five cuts meet:
+     *     both nests walled, their levels interleaved, 40 crossing pairs, 1.9 T). Of two such folds
+     *     the one wrapping more stands back; with both on their crease figure3 had 342 pairs in
+     *     one plane rather than 243;
+     * <li>ends within the reach, off the cut's line, beside the wall (a fold of figure3 by its
+     *     reflex corner (3.05, 0.9), its crease from the cut's line 12.8 thicknesses from the
+     *     corner to 2.6 in from it, once walls stood half a thickness back: 2 crossing pairs,
+     *     0.05 T).
+     * </ul>
+     * And a bend standing out from a crease at an end of the cut, not along a side, leaning over
+     * the fold's span, stands over where the wall is (the L prism's top, at its reflex corner, a
+     * fold square to the diagonal standing out 3 thicknesses along it: 3 crossing pairs, 0.35 T,
+     * once walls stood half a thickness back). A fold along a side over a convex edge stands out
+     * over that side, beyond the host, and meets no wall of the cut.
+     */
+    private static void leaveOnCreaseWhereCrossed(List<NestedBends.Bend> bends, int[] ranks, boolean[] along, boolean[] onCut,
+            int[] edgeOf, double[] reach, HostFrame[] frames, double tolerance) {
         Map<Integer, List<Integer>> byHost = new HashMap<>();
         for (int k = 0; k < bends.size(); k++) {
             if (along[k] && onCut[k]) {
@@ -225,50 +256,124 @@ final class ConcaveWalls {
                 ofHost.add(j);
             }
         }
+        boolean[] crossed = new boolean[bends.size()];
         for (int k = 0; k < bends.size(); k++) {
             if (along[k] && onCut[k]) {
                 HostFrame frame = frames[bends.get(k).host()];
-                along[k] = !crossedAtACorner(k, bends, byHost.get(bends.get(k).host()), frame.edge(edgeOf[k]), frame, tolerance);
+                crossed[k] = crossed(k, bends, ranks, byHost.get(bends.get(k).host()), frame.edge(edgeOf[k]), reach[k], frame, tolerance);
             }
+        }
+        for (int k = 0; k < bends.size(); k++) {
+            along[k] &= !crossed[k];
         }
     }
 
     /**
-     * Whether a crease of bend k's host (its bends {@code ofHost}) from an end of k's edge
-     * ({@code edge}) crosses k's nest ({@link #leaveOnCreaseWhereCrossedAtACorner}).
+     * Whether a crease of bend k's host (its bends {@code ofHost}) runs into k's wall, along edge
+     * {@code edge} of its host, {@code reach} in from it ({@link #leaveOnCreaseWhereCrossed}).
      */
-    private static boolean crossedAtACorner(int k, List<NestedBends.Bend> bends, List<Integer> ofHost, double[] edge, HostFrame frame,
-            double tolerance) {
+    private static boolean crossed(int k, List<NestedBends.Bend> bends, int[] ranks, List<Integer> ofHost, double[] edge, double reach,
+            HostFrame frame, double tolerance) {
         NestedBends.Bend wall = bends.get(k);
         for (int j : ofHost) {
             NestedBends.Bend other = bends.get(j);
             if (j == k) {
                 continue;
             }
+            int side = sideAlong(frame, other, tolerance);
+            double sideTan = side < 0 ? 0 : frame.mitreAlong(side, other.ax(), other.ay(), other.bx(), other.by(), tolerance);
+            boolean alongACut = sideTan > 0 && sideTan <= HostFrame.CUT_TAN;
+            if (side >= 0 && !alongACut) {
+                continue; // along a side over a convex edge: it stands out beyond the host
+            }
+            boolean aOn = onCrease(wall, other.ax(), other.ay(), tolerance);
+            boolean bOn = onCrease(wall, other.bx(), other.by(), tolerance);
+            boolean aEnd = aOn && atEnd(edge, other.ax(), other.ay(), tolerance);
+            boolean bEnd = bOn && atEnd(edge, other.bx(), other.by(), tolerance);
+            if (aOn && bOn) {
+                continue; // along the fold itself
+            }
+            if (side < 0 && ranks[j] > 0 && (aEnd || bEnd) && leansOver(wall, other, aEnd)) {
+                return true;
+            }
             boolean lowHeld = other.low() >= wall.low() && other.low() <= wall.high();
             boolean highHeld = other.high() >= wall.low() && other.high() <= wall.high();
             if (lowHeld == highHeld) {
                 continue; // both layers held, or neither: they stay together
             }
-            boolean aOn = onCrease(wall, other.ax(), other.ay(), tolerance);
-            boolean bOn = onCrease(wall, other.bx(), other.by(), tolerance);
-            boolean fromEnd = aOn && atEnd(edge, other.ax(), other.ay(), tolerance) || bOn && atEnd(edge, other.bx(), other.by(), tolerance);
-            if (!fromEnd || aOn && bOn) {
-                continue;
-            }
-            int side = sideAlong(frame, other, tolerance);
-            if (side < 0) {
-                return true; // into the host
-            }
-            double tan = frame.mitreAlong(side, other.ax(), other.ay(), other.bx(), other.by(), tolerance);
-            int wraps = other.high() - other.low();
-            int ownWraps = wall.high() - wall.low();
-            if (tan > 0 && tan <= HostFrame.CUT_TAN && (wraps > ownWraps || wraps == ownWraps && j < k)) {
-                return true; // along another cut, wrapping more (or as many, and made first)
+            if (aEnd || bEnd) {
+                int wraps = other.high() - other.low();
+                int ownWraps = wall.high() - wall.low();
+                if (side < 0 || wraps > ownWraps || wraps == ownWraps && j < k) {
+                    return true; // into the host, or along another cut wrapping more (or as many, and made first)
+                }
+            } else if (side < 0 && endsBesideWall(wall, other, edge, reach, frame, tolerance)) {
+                return true;
             }
         }
         return false;
     }
+
+    /** Whether the bend {@code other}, its crease from an end of the wall's crease (its a end, or b), stands out over the wall's span. */
+    private static boolean leansOver(NestedBends.Bend wall, NestedBends.Bend other, boolean fromA) {
+        double cx = fromA ? other.ax() : other.bx();
+        double cy = fromA ? other.ay() : other.by();
+        // Into the span: towards the wall's end farther from that corner.
+        boolean aFarther = Math.hypot(wall.ax() - cx, wall.ay() - cy) > Math.hypot(wall.bx() - cx, wall.by() - cy);
+        double dx = (aFarther ? wall.ax() : wall.bx()) - cx;
+        double dy = (aFarther ? wall.ay() : wall.by()) - cy;
+        return other.nx() * dx + other.ny() * dy > 0;
+    }
+
+    /**
+     * Whether an end of the crease of {@code other}, not square to the cut (edge {@code edge} of
+     * the host) nor along it, lies off the cut's line, less than {@code reach} into the host,
+     * beside the wall's crease.
+     */
+    private static boolean endsBesideWall(NestedBends.Bend wall, NestedBends.Bend other, double[] edge, double reach, HostFrame frame,
+            double tolerance) {
+        double jx = other.bx() - other.ax();
+        double jy = other.by() - other.ay();
+        double cosine = Math.abs(jx * edge[2] + jy * edge[3]) / (Polygons2.length(jx, jy) * edge[4]);
+        if (cosine < SQUARE_COSINE || cosine > 1 - SQUARE_COSINE) {
+            return false; // square to the cut, its held layer moved along it; or along the cut
+        }
+        // Into the host: the side of the edge's line its polygon lies on.
+        double inward = Math.signum(inFrom(edge, centre(frame)[0], centre(frame)[1]));
+        double wx = wall.bx() - wall.ax();
+        double wy = wall.by() - wall.ay();
+        double length = Polygons2.length(wx, wy);
+        for (int end = 0; end < 2; end++) {
+            double x = end == 0 ? other.ax() : other.bx();
+            double y = end == 0 ? other.ay() : other.by();
+            double s = ((x - wall.ax()) * wx + (y - wall.ay()) * wy) / length;
+            double in = inward * inFrom(edge, x, y);
+            if (s >= -tolerance && s <= length + tolerance && in > tolerance && in < reach) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** How far frame point (x, y) lies to the left of the edge (x, y of its first corner, dx, dy, its length). */
+    private static double inFrom(double[] edge, double x, double y) {
+        return ((x - edge[0]) * -edge[3] + (y - edge[1]) * edge[2]) / edge[4];
+    }
+
+    /** The middle of the frame's polygon's corners. */
+    private static double[] centre(HostFrame frame) {
+        double[] corners = frame.corners();
+        int n = corners.length / 2;
+        double[] centre = new double[2];
+        for (int i = 0; i < n; i++) {
+            centre[0] += corners[2 * i] / n;
+            centre[1] += corners[2 * i + 1] / n;
+        }
+        return centre;
+    }
+
+    /** A crease within this cosine of square to a cut, or of along it, is taken so ({@link #endsBesideWall}). */
+    private static final double SQUARE_COSINE = 0.02;
 
     /** The side of the frame's polygon the bend's crease lies along; -1 if none. */
     private static int sideAlong(HostFrame frame, NestedBends.Bend bend, double tolerance) {
