@@ -33,7 +33,8 @@ import java.util.Map;
  * taken as a concave edge of no mitre ({@code BendRoom.CUT_MITRE}): across it lies the other
  * host's paper at the same heights, no room to stand out into, so folds nested along it stand
  * back into their own host, a thickness a rank, and no longer stand one inside another on the
- * cut's line, overlapping in its plane. A fold that runs on beyond the cut along a convex
+ * cut's line, overlapping in its plane; the outermost half a thickness back ({@link #CUT_CLEARANCE}),
+ * clear of the other host's paper. A fold that runs on beyond the cut along a convex
  * stretch of the same side stands out as before. A cut that is a whole edge of both hosts is
  * taken so too ({@code BendRoom.WHOLE_CUT_MITRE}), up to its ends, but for folds whose walls
  * other creases would run into ({@link #leaveOnCreaseWhereCrossed}: they stay on their crease;
@@ -158,8 +159,8 @@ final class ConcaveWalls {
             double tan = frame.mitreAlong(edgeOf[k], bend.ax(), bend.ay(), bend.bx(), bend.by(), tolerance);
             need[k] = (bend.high() + 0.5) * thickness * tan + ranks[k] * thickness;
             onCut[k] = Math.abs(tan - BendRoom.WHOLE_CUT_MITRE) < BendRoom.CUT_MITRE / 2; // a whole cut: walls by nest
-            if (onCut[k]) {
-                need[k] += CUT_CLEARANCE * thickness;
+            if (tan <= HostFrame.CUT_TAN) {
+                need[k] += CUT_CLEARANCE * thickness; // along a cut, either kind
             }
             if (!onCut[k]) {
                 most.merge(key(bend.host(), edgeOf[k]), need[k], Math::max);
@@ -208,10 +209,11 @@ final class ConcaveWalls {
     }
 
     /**
-     * How far, in thicknesses, each fold along a whole cut stands back from it at the least (the
+     * How far, in thicknesses, each fold along a cut stands back from it at the least (the
      * outermost of a nest; those it wraps a thickness a rank farther). Paper is a thickness thick,
-     * and the walls of both hosts' outermost folds stood on the cut's line, in one plane:
-     * square_frame 128 of its 138 pairs, figure3 51 of 243, the rings 6 to 16 × 6 most of theirs.
+     * and the walls of both hosts' outermost folds stood on the cut's line, in one plane: on the
+     * whole cuts square_frame 128 of its 138 pairs, figure3 51 of 243, the rings 6 to 16 × 6 most
+     * of theirs; on the cuts along a side's line t_prism 3 of 15, the polycube plus 16 of 60.
      */
     static final double CUT_CLEARANCE = 0.5;
 

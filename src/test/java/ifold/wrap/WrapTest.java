@@ -519,7 +519,8 @@ public class WrapTest {
      * their creases (the cut's room, none, counted from the point they end on). They now stand
      * out over their own stretch of the edge, their rows stopping where the reflex corner's two
      * bands halve it, as the stem's folds along its side do: 15 left (stem folds of rank 1 whose
-     * layers stand back from the cut's walls by the corner), no crossing pairs.
+     * layers stand back from the cut's walls by the corner), no crossing pairs; 12 since the
+     * outermost folds along a cut stand half a thickness back from it, clear of the other host's.
      */
     @Test
     void theTPrismsFoldsAlongItsCutStandBackFromIt() throws Exception {
@@ -529,7 +530,7 @@ public class WrapTest {
         Wrap.Result result = wrapAndCheck(mesh, new Wrap.Options(Double.NaN, Double.NaN), 2000);
         ifold.check.PaperCollisions.Result collisions = collisions(dir.resolve("t_prism.obj"), result, mesh);
         assertEquals(0, collisions.crossingPairs() + collisions.modelCrossings() + collisions.pointsInside(), collisions.summary());
-        assertTrue(collisions.coplanarPairs() <= 15, collisions.summary());
+        assertTrue(collisions.coplanarPairs() <= 12, collisions.summary());
     }
 
     /**
