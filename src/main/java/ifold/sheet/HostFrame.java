@@ -310,6 +310,20 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
         return keepFromLine(corners[2 * k], corners[2 * k + 1], -dy / length, dx / length, k, keep, point);
     }
 
+    /** Whether {@link #keepFrom} moves {@code point}: it lies nearer the line of edge k than {@code keep} (the same sums, so the same answer). */
+    public boolean keepsFrom(int k, double keep, double[] point) {
+        double dx = edgeDx(k);
+        double dy = edgeDy(k);
+        double length = Polygons2.length(dx, dy);
+        return needsMoving(corners[2 * k], corners[2 * k + 1], -dy / length, dx / length, keep, point);
+    }
+
+    /** keepFromLine's test: how far the point must move towards (nx, ny) to lie {@code keep} from the line, more than rounding. */
+    private static boolean needsMoving(double px, double py, double nx, double ny, double keep, double[] point) {
+        double need = keep - ((point[0] - px) * nx + (point[1] - py) * ny);
+        return need > keep * 1e-12;
+    }
+
     /**
      * {@link #keepFrom} for any line: through (px, py), {@code keep} from it towards the unit
      * normal (nx, ny), sliding along an edge of the polygon where straight would leave it; edge
@@ -317,10 +331,10 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
      */
     public boolean keepFromLine(double px, double py, double nx, double ny, int skip, double keep, double[] point) {
         int k = skip;
-        double need = keep - ((point[0] - px) * nx + (point[1] - py) * ny);
-        if (!(need > keep * 1e-12)) {
+        if (!needsMoving(px, py, nx, ny, keep, point)) {
             return false;
         }
+        double need = keep - ((point[0] - px) * nx + (point[1] - py) * ny);
         double dx = nx;
         double dy = ny;
         double amount = need;
