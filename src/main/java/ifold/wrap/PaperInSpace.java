@@ -138,6 +138,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
      */
     static final double NEST_TOLERANCE = 0.01;
 
+    public static final long[] STATS = new long[8];
+
     private static final class Builder {
         private final Sheet sheet;
         private final HostFrame[] frames;
@@ -932,9 +934,11 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             }
             double tiny = Math.max(sheet.tolerance() * 1e-3, 1e-6 * size);
             List<double[]> regions = regions(f, whole, tiny);
+            STATS[0]++;
             if (regions.isEmpty()) {
                 return null;
             }
+            STATS[1]++; STATS[2] += regions.size();
             List<List<Corner>> pieces = new ArrayList<>();
             pieces.add(whole);
             inside.clear();
@@ -992,6 +996,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             if (pieces.size() <= 1) {
                 return null;
             }
+            STATS[3]++; STATS[4] += pieces.size();
             joinCuts(pieces, tiny);
             return pieces;
         }
@@ -1011,6 +1016,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 }
             }
             List<Corner> cuts = new ArrayList<>(byId.values());
+            int cornersAll = 0; for (List<Corner> pc : pieces) cornersAll += pc.size();
+            STATS[5] += cuts.size(); STATS[6] += (long) cornersAll * cuts.size();
             for (int p = 0; p < pieces.size(); p++) {
                 List<Corner> piece = pieces.get(p);
                 List<Corner> joined = new ArrayList<>(piece.size());
