@@ -60,7 +60,7 @@ final class ConcaveWalls {
      * The walls of one host that may hold one level, in the order they were made, with the edge
      * each stands along ({@code edges}, beside them, so that a wall along an edge the point is
      * far from is passed over without being read) and, for each edge of the host's polygon, how
-     * far in the farthest of them stands (0: none along it).
+     * far in the farthest of them stands (NaN: none along it).
      */
     private record LevelWalls(Wall[] walls, int[] edges, double[] farthest) {
         static final LevelWalls NONE = new LevelWalls(new Wall[0], new int[0], new double[0]);
@@ -68,10 +68,11 @@ final class ConcaveWalls {
         static LevelWalls of(List<Wall> walls, int edgesOfHost) {
             int[] edges = new int[walls.size()];
             double[] farthest = new double[edgesOfHost];
+            java.util.Arrays.fill(farthest, Double.NaN);
             for (int i = 0; i < walls.size(); i++) {
                 Wall wall = walls.get(i);
                 edges[i] = wall.edge();
-                farthest[wall.edge()] = Math.max(farthest[wall.edge()], wall.in());
+                farthest[wall.edge()] = Double.isNaN(farthest[wall.edge()]) ? wall.in() : Math.max(farthest[wall.edge()], wall.in());
             }
             return new LevelWalls(walls.toArray(new Wall[0]), edges, farthest);
         }
@@ -87,7 +88,7 @@ final class ConcaveWalls {
             }
             long reach = 0;
             for (int k = 0; k < farthest.length; k++) {
-                if (farthest[k] > 0 && frame.keepsFrom(k, farthest[k], p)) {
+                if (!Double.isNaN(farthest[k]) && frame.keepsFrom(k, farthest[k], p)) {
                     reach |= 1L << k;
                 }
             }
