@@ -1,6 +1,7 @@
 package ifold.sheet;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -77,6 +78,38 @@ class HostFrameTest {
         double fromBase = at[1];
         double fromSide = (at[0] * t - at[1]) * Math.cos(Math.toRadians(30));
         assertTrue(fromBase >= 0.05 - 1e-12 && fromSide >= 0.05 - 1e-12, "0.05 from both edges: " + fromBase + ", " + fromSide);
+    }
+
+    /**
+     * {@link HostFrame#keepsFrom} says whether {@link HostFrame#keepFrom} would move a point, so
+     * that the walls a point lies far from can be passed over: the same answer for points inside,
+     * on and beyond the edge's line, at the keep's distance, a rounding step either side of it,
+     * and near a corner where the move slides along the other edge.
+     */
+    @Test
+    void keepsFromAnswersAsKeepFromMoves() {
+        HostFrame triangle = host(new double[] {0, 0, 1, 0, 0.3, 0.7}, null);
+        double keep = 0.1;
+        double[] ys = {-0.05, 0, 0.02, Math.nextDown(keep), keep, Math.nextUp(keep), keep * (1 - 1e-13), keep * (1 - 1e-11), 0.3, 0.6};
+        int moved = 0;
+        for (int k = 0; k < 3; k++) {
+            for (double x : new double[] {0.01, 0.2, 0.5, 0.9}) {
+                for (double y : ys) {
+                    // The point that distance in from edge k, at a place x along it (each edge in its own terms).
+                    double[] edge = triangle.edge(k);
+                    double tx = edge[2] / edge[4];
+                    double ty = edge[3] / edge[4];
+                    double[] p = {edge[0] + x * edge[2] - y * ty, edge[1] + x * edge[3] + y * tx};
+                    boolean says = triangle.keepsFrom(k, keep, p);
+                    double[] q = p.clone();
+                    boolean moves = triangle.keepFrom(k, keep, q);
+                    assertEquals(moves, says, "edge " + k + " at " + x + ", " + y + " in");
+                    assertArrayEquals(p, says ? p : q, "a point keepsFrom lets be does not move");
+                    moved += moves ? 1 : 0;
+                }
+            }
+        }
+        assertTrue(moved > 40 && moved < 100, "points both near and far: " + moved + " of 120 moved");
     }
 
     /**
