@@ -315,13 +315,12 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
         double dx = edgeDx(k);
         double dy = edgeDy(k);
         double length = Polygons2.length(dx, dy);
-        return needsMoving(corners[2 * k], corners[2 * k + 1], -dy / length, dx / length, keep, point);
+        return need(corners[2 * k], corners[2 * k + 1], -dy / length, dx / length, keep, point) > keep * 1e-12;
     }
 
-    /** keepFromLine's test: how far the point must move towards (nx, ny) to lie {@code keep} from the line, more than rounding. */
-    private static boolean needsMoving(double px, double py, double nx, double ny, double keep, double[] point) {
-        double need = keep - ((point[0] - px) * nx + (point[1] - py) * ny);
-        return need > keep * 1e-12;
+    /** How far the point must move towards (nx, ny) to lie {@code keep} from the line through (px, py); it moves where more than rounding. */
+    private static double need(double px, double py, double nx, double ny, double keep, double[] point) {
+        return keep - ((point[0] - px) * nx + (point[1] - py) * ny);
     }
 
     /**
@@ -331,10 +330,10 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
      */
     public boolean keepFromLine(double px, double py, double nx, double ny, int skip, double keep, double[] point) {
         int k = skip;
-        if (!needsMoving(px, py, nx, ny, keep, point)) {
+        double need = need(px, py, nx, ny, keep, point);
+        if (!(need > keep * 1e-12)) {
             return false;
         }
-        double need = keep - ((point[0] - px) * nx + (point[1] - py) * ny);
         double dx = nx;
         double dy = ny;
         double amount = need;

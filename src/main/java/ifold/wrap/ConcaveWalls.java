@@ -380,7 +380,8 @@ final class ConcaveWalls {
             return false; // square to the cut, its held layer moved along it; or along the cut
         }
         // Into the host: the side of the edge's line its polygon lies on.
-        double inward = Math.signum(inFrom(edge, centre(frame)[0], centre(frame)[1]));
+        double[] centre = centre(frame);
+        double inward = Math.signum(inFrom(edge, centre[0], centre[1]));
         double wx = wall.bx() - wall.ax();
         double wy = wall.by() - wall.ay();
         double length = Polygons2.length(wx, wy);
