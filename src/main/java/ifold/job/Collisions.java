@@ -98,6 +98,26 @@ public final class Collisions {
     }
 
     /**
+     * How many collisions the seam counts against a start of a wrap ({@code Seam.PaperCheck}):
+     * pairs crossing or overlapping in one plane, crossings of the model and points inside it, by
+     * the independent checker on the OBJ text of {@code strips}; -1 where {@link #notChecked}
+     * says why not.
+     */
+    public static int count(List<PaperInSpace> strips, double thickness, IndexedPolygons model) {
+        PaperCollisions.Result result;
+        try {
+            result = check(strips, thickness, model, null, new PaperCollisions.Options(0, PaperCollisions.Options.DEFAULT.threads()));
+        } catch (IOException e) {
+            throw new UncheckedIOException(e); // no file is read
+        }
+        if (result == null) {
+            return -1;
+        }
+        long count = (long) result.crossingPairs() + result.coplanarPairs() + result.modelCrossings() + result.pointsInside();
+        return (int) Math.min(Integer.MAX_VALUE, count);
+    }
+
+    /**
      * Adds a check made already ({@link #check}, or null where none was) to a report's figures as
      * {@link #addTo} does.
      */

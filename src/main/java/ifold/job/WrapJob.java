@@ -152,7 +152,10 @@ public final class WrapJob {
             int tries = Seam.tries(path.refinement());
             watcher.stage("wrapping " + path.refinement().mesh().faceCount() + " triangles"
                     + (tries > 1 ? ", begun at " + tries + " places round the path" : ""));
-            seam = Seam.wrap(path.refinement(), request.options(), watcher);
+            // Of the starts tried, one whose paper the independent checker finds colliding is kept
+            // only where all collide.
+            seam = Seam.wrap(path.refinement(), request.options(), watcher,
+                    (tried, placed) -> Collisions.count(placed.geometries(), tried.thickness(), tried.mesh()));
             path = new WrapPath(path.preparation(), seam.refinement(), path.prepared());
             result = seam.result();
         }
@@ -171,6 +174,7 @@ public final class WrapJob {
             Map<String, Object> begun = new java.util.LinkedHashMap<>();
             begun.put("along", seam.along());
             begun.put("layersTried", seam.layersTried());
+            begun.put("collisionsTried", seam.collisionsTried());
             figures.put("seam", begun);
         }
         if (NearOrigin.moved(movedBy)) {

@@ -19,6 +19,13 @@ import java.util.List;
  * tie: the refinement's own start is tried first. A long path is wrapped once: each try would
  * cost as much as the wrap, and with thousands of triangles its most layers are the more likely
  * to lie at a crowded corner far from where it begins.
+ *
+ * <p>Fewest layers are not enough: a start may give paper that passes through itself where
+ * another does not (an irregular pentagonal pyramid begun at its apex, rolled round it, made 37
+ * layers and 63 crossing pairs of caps, where the other starts made 54 layers and none). So
+ * where a {@link PaperCheck} is given, a start whose paper collides is kept only where every
+ * start's does. The check belongs to whoever calls: the seam folds paper, the independent
+ * checker (which reads the exported file) judges it.
  */
 public final class Seam {
     /** Refinements of more triangles than this, all their components' together, are wrapped from their own start alone. */
@@ -30,6 +37,20 @@ public final class Seam {
     private Seam() {
     }
 
+    /** What the seam asks of a start's paper besides its layers. */
+    @FunctionalInterface
+    public interface PaperCheck {
+        /** No check: the start with fewest layers is kept, whatever its paper. */
+        PaperCheck NONE = (result, placed) -> -1;
+
+        /**
+         * How many collisions {@code placed}, the paper of {@code result}, has (pairs crossing or
+         * overlapping in one plane, crossings of the model, points inside it): 0 where it is
+         * sound, -1 where it is not checked (taken as sound).
+         */
+        int collisions(Wrap.Result result, PlacedWrap placed);
+    }
+
     /**
      * A wrap begun where it has fewest layers.
      *
@@ -39,24 +60,37 @@ public final class Seam {
      * @param along where round the path it begins, from 0 (the refinement's own start) to 1
      * @param layersTried the most layers of each start tried, in the order of {@link #TRIED}, null
      *     for a start whose wrap failed (empty where one alone was tried)
+     * @param collisionsTried the collisions the {@link PaperCheck} found on each start tried, in
+     *     the same order, null for a start not checked (one with more layers than a sound start
+     *     before it, one whose wrap failed, or one the check passed by); empty where one alone was tried
      * @param measureSeconds how long placing and measuring the wrap kept took (the other tries' count as wrapping)
      */
     public record Chosen(HamiltonianRefinement.Result refinement, Wrap.Result result, PlacedWrap placed, double along,
-            List<Integer> layersTried, double measureSeconds) {
+            List<Integer> layersTried, List<Integer> collisionsTried, double measureSeconds) {
+    }
+
+    /** As {@link #wrap(HamiltonianRefinement.Result, Wrap.Options, Wrap.Watcher, PaperCheck)}, asking nothing of the paper. */
+    public static Chosen wrap(HamiltonianRefinement.Result refinement, Wrap.Options options, Wrap.Watcher watcher) throws Wrap.WrapException {
+        return wrap(refinement, options, watcher, PaperCheck.NONE);
     }
 
     /**
-     * Wraps the refinement from where it has fewest layers: from each start of {@link #TRIED}
-     * where its paths have at most {@link #MOST_TRIANGLES} triangles in all and one is a cycle,
-     * else from its own. Every cyclic component begins the same share of the way round its path:
-     * one wrap's layers are its deepest strip's, and a start for each component would take a
-     * wrap more to put together.
+     * Wraps the refinement from where it has fewest layers and its paper is sound: from each
+     * start of {@link #TRIED} where its paths have at most {@link #MOST_TRIANGLES} triangles in
+     * all and one is a cycle, else from its own. Every cyclic component begins the same share of
+     * the way round its path: one wrap's layers are its deepest strip's, and a start for each
+     * component would take a wrap more to put together.
      * A start whose wrap fails (too many faces, a triangle the tucks cannot finish) is passed
      * over, unless it is the first: its failure is the wrap's.
+     * Of several starts, {@code check} is asked of the first and of each that would be kept for
+     * its layers, or that may be kept because the paper kept so far collides: a sound start is
+     * kept before one that collides, then the fewest layers, then (of starts that collide) the
+     * fewest collisions, then the first tried.
      *
      * @throws Wrap.WrapException as {@link Wrap#wrap(HamiltonianRefinement.Result, Wrap.Options, Wrap.Watcher)}, from the refinement's own start
      */
-    public static Chosen wrap(HamiltonianRefinement.Result refinement, Wrap.Options options, Wrap.Watcher watcher) throws Wrap.WrapException {
+    public static Chosen wrap(HamiltonianRefinement.Result refinement, Wrap.Options options, Wrap.Watcher watcher, PaperCheck check)
+            throws Wrap.WrapException {
         int tries = tries(refinement);
         List<Double> shares = new ArrayList<>();
         for (int k = 0; k < tries; k++) {
@@ -68,7 +102,10 @@ public final class Seam {
             tries++;
         }
         Chosen best = null;
+        boolean bestCollides = false;
+        int bestFound = 0;
         List<Integer> layers = new ArrayList<>();
+        List<Integer> collisions = new ArrayList<>();
         for (int k = 0; k < tries; k++) {
             HamiltonianRefinement.Result begun = k == 0 ? refinement : refinement.begunAt(shares.get(k));
             Wrap.Result result;
@@ -79,6 +116,7 @@ public final class Seam {
                     throw e;
                 }
                 layers.add(null); // kept in its place: the report lists the starts in order
+                collisions.add(null);
                 continue;
             }
             long measuring = System.nanoTime();
@@ -86,12 +124,32 @@ public final class Seam {
             double seconds = (System.nanoTime() - measuring) * 1e-9;
             int most = placed.analysis().maxLayers();
             layers.add(most);
-            if (best == null || most < best.placed().analysis().maxLayers()) {
-                best = new Chosen(begun, result, placed, shares.get(k), null, seconds);
+            boolean fewer = best == null || most < best.placed().analysis().maxLayers();
+            Integer found = null;
+            if (tries > 1 && (fewer || bestCollides)) {
+                found = check.collisions(result, placed);
+                found = found < 0 ? null : found;
+            }
+            collisions.add(found);
+            boolean collides = found != null && found > 0;
+            boolean kept;
+            if (best == null) {
+                kept = true;
+            } else if (collides != bestCollides) {
+                kept = !collides;
+            } else {
+                // Of two that collide with as many layers, the one colliding less: each start was checked.
+                kept = fewer || collides && most == best.placed().analysis().maxLayers() && found < bestFound;
+            }
+            if (kept) {
+                best = new Chosen(begun, result, placed, shares.get(k), null, null, seconds);
+                bestCollides = collides;
+                bestFound = collides ? found : 0;
             }
         }
         return new Chosen(best.refinement(), best.result(), best.placed(), best.along(),
                 tries > 1 ? java.util.Collections.unmodifiableList(layers) : List.of(),
+                tries > 1 ? java.util.Collections.unmodifiableList(collisions) : List.of(),
                 best.measureSeconds());
     }
 
