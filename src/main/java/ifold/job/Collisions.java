@@ -4,6 +4,7 @@ import ifold.check.PaperCollisions;
 import ifold.mesh.IndexedPolygons;
 import ifold.wrap.WrapExport;
 import ifold.wrap.PaperInSpace;
+import ifold.wrap.Seam;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
@@ -96,6 +97,13 @@ public final class Collisions {
             throw new UncheckedIOException(e); // no file is read
         }
     }
+
+    /**
+     * The check the wrap command hands the seam ({@link Seam#wrap(ifold.refine.HamiltonianRefinement.Result,
+     * ifold.wrap.Wrap.Options, ifold.wrap.Wrap.Watcher, Seam.PaperCheck)}): {@link #count} on a start's paper, against
+     * the triangles it was folded on.
+     */
+    public static final Seam.PaperCheck OF_SEAM = (result, placed) -> count(placed.geometries(), result.thickness(), result.mesh());
 
     /**
      * How many collisions the seam counts against a start of a wrap ({@code Seam.PaperCheck}):

@@ -154,8 +154,7 @@ public final class WrapJob {
                     + (tries > 1 ? ", begun at " + tries + " places round the path" : ""));
             // Of the starts tried, one whose paper the independent checker finds colliding is kept
             // only where all collide.
-            seam = Seam.wrap(path.refinement(), request.options(), watcher,
-                    (tried, placed) -> Collisions.count(placed.geometries(), tried.thickness(), tried.mesh()));
+            seam = Seam.wrap(path.refinement(), request.options(), watcher, Collisions.OF_SEAM);
             path = new WrapPath(path.preparation(), seam.refinement(), path.prepared());
             result = seam.result();
         }

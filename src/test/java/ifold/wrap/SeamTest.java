@@ -178,8 +178,7 @@ class SeamTest {
         }
         HalfedgeMesh pyramid = mesh(soup);
         HamiltonianRefinement.Result refinement = ifold.job.WrapPath.of(pyramid).refinement();
-        Seam.Chosen chosen = Seam.wrap(refinement, DEFAULTS, Wrap.Watcher.NONE,
-                (result, placed) -> ifold.job.Collisions.count(placed.geometries(), result.thickness(), result.mesh()));
+        Seam.Chosen chosen = Seam.wrap(refinement, DEFAULTS, Wrap.Watcher.NONE, ifold.job.Collisions.OF_SEAM);
         List<Integer> layers = chosen.layersTried();
         List<Integer> collisions = chosen.collisionsTried();
         assertEquals(Seam.TRIED.length + 1, layers.size(), "the roll's start is tried too: " + layers);

@@ -140,7 +140,8 @@ public class WrapTest {
      * no crossing pairs, pairs in one plane, model crossings or points inside; gives its most layers.
      */
     static int wrapAsTheCommandDoesAndCheck(Path dir, HalfedgeMesh model) throws Exception {
-        Seam.Chosen chosen = Seam.wrap(ifold.job.WrapPath.of(model).refinement(), new Wrap.Options(Double.NaN, Double.NaN), Wrap.Watcher.NONE);
+        Seam.Chosen chosen = Seam.wrap(ifold.job.WrapPath.of(model).refinement(), new Wrap.Options(Double.NaN, Double.NaN), Wrap.Watcher.NONE,
+                ifold.job.Collisions.OF_SEAM);
         check(dir, chosen.result(), model, 1, 2000);
         ifold.check.PaperCollisions.Result collisions = ifold.check.PaperCollisions.check(Files.readString(dir.resolve("wrap.obj")),
                 chosen.result().thickness(), ifold.job.Collisions.modelTriangles(model));
