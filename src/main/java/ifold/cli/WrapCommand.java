@@ -44,7 +44,7 @@ import picocli.CommandLine.Model.CommandSpec;
             + "shared edge to the next. The paper rests on the model's flat convex pieces (a cube's face is one): it runs flat "
             + "over the edges inside one, and the excess beyond a piece's edges is tucked under it. Faces whose triangles have an "
             + "angle under 20 degrees are triangulated again, and followed where that makes less paper. The path is a cycle: "
-            + "where it has at most 1,000 triangles in all, the strip is tried beginning at four places round it and the wrap with "
+            + "where it has at most 1,000 triangles in all and is likely to make at most 100,000 faces, the strip is tried beginning at four places round it and the wrap with "
             + "the fewest layers kept, of those whose paper the collision check finds sound where any is (the report's seam). An open surface is covered on the side its faces face. The animation plays the folds with the camera following the strip, then turns once around "
             + "the model; it takes two minutes unless --seconds says otherwise. In a window where there is a display; as "
             + "one movie, wrap.mp4, where there is none (--frames DIR for PNGs). The OBJ holds each strip as an object strip-K. "

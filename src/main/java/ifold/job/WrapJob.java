@@ -149,7 +149,7 @@ public final class WrapJob {
             }
             stopIfAsked(watcher);
             refinedAt = System.nanoTime();
-            int tries = Seam.tries(path.refinement());
+            int tries = Seam.tries(path.refinement(), request.options().width());
             watcher.stage("wrapping " + path.refinement().mesh().faceCount() + " triangles"
                     + (tries > 1 ? ", begun at " + tries + " places round the path" : ""));
             // Of the starts tried, one whose paper the independent checker finds colliding is kept

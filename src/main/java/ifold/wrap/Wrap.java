@@ -407,10 +407,30 @@ public final class Wrap {
      * take, before any fold: to choose between two paths of one model.
      */
     public static long likelyFaces(HamiltonianRefinement.Result refinement) {
-        List<PathPlan> plans = plans(refinement.mesh(), refinement.componentStart(), null);
-        double width = narrowest(refinement.mesh(), plans)[0] / DEFAULT_PASSES;
+        return likelyFaces(refinement, Double.NaN);
+    }
+
+    /** As {@link #likelyFaces(HamiltonianRefinement.Result)} at {@code width}, NaN for the default. */
+    public static long likelyFaces(HamiltonianRefinement.Result refinement, double width) {
+        IndexedPolygons mesh = refinement.mesh();
+        List<PathPlan> plans = plans(mesh, refinement.componentStart(), null);
+        double widest = narrowest(mesh, plans)[0];
+        if (Double.isNaN(width)) {
+            width = widest / DEFAULT_PASSES;
+        }
         if (!(width > 0) || !Double.isFinite(width)) {
             return Long.MAX_VALUE;
+        }
+        double[] angleSums = null;
+        for (PathPlan plan : plans) {
+            if (plan.frames[plan.m - 1] == null) { // the last triangle's corner depends on the width, as in a wrap
+                angleSums = angleSums != null ? angleSums : LayerFloor.angleSums(mesh);
+                try {
+                    chooseLastStart(mesh, plan, width, widest, angleSums);
+                } catch (WrapException e) {
+                    return Long.MAX_VALUE; // too wide: no wrap to count
+                }
+            }
         }
         return faces(plans, width, HostPieces.of(refinement.mesh()).alone(), true);
     }

@@ -198,11 +198,32 @@ class SeamTest {
         // 288 triangles, refined into 1,438: more than a seam is tried for.
         HamiltonianRefinement.Result refinement = ifold.job.WrapPath.of(mesh(Solids.torus(3, 1, 16, 9))).refinement();
         assertTrue(refinement.mesh().faceCount() > Seam.MOST_TRIANGLES);
-        assertEquals(1, Seam.tries(refinement));
+        assertEquals(1, Seam.tries(refinement, Double.NaN));
         Seam.Chosen chosen = Seam.wrap(refinement, DEFAULTS, Wrap.Watcher.NONE);
         assertEquals(0.0, chosen.along());
         assertEquals(List.of(), chosen.layersTried());
         assertSame(refinement, chosen.refinement());
+    }
+
+    /**
+     * A short path wrapped with a narrow strip is wrapped once too: the cube at width 1e-4 (about
+     * 600,000 faces likely) took 248 s and 1.56 GiB from four starts, 53 s and 1.13 GiB from one
+     * (a machine busy with other work). At 0.001 (61,000 likely, 48,689 made) four are tried.
+     */
+    @Test
+    void aShortPathLikelyToMakeManyFacesIsWrappedOnce() throws Exception {
+        HamiltonianRefinement.Result refinement = ifold.job.WrapPath.of(mesh(Solids.cube())).refinement();
+        assertEquals(Seam.TRIED.length, Seam.tries(refinement, Double.NaN));
+        assertEquals(Seam.TRIED.length, Seam.tries(refinement, 0.001));
+        assertTrue(Wrap.likelyFaces(refinement, 3e-4) > Seam.MOST_FACES, "likely " + Wrap.likelyFaces(refinement, 3e-4));
+        assertEquals(1, Seam.tries(refinement, 3e-4));
+        // The estimate follows the faces made, from above, at widths the test can afford.
+        for (double width : new double[] {0.01, 0.003}) {
+            Wrap.Result wrapped = Wrap.wrap(refinement, new Wrap.Options(width, Double.NaN));
+            long made = wrapped.strips().get(0).sheet().faceCount();
+            long likely = Wrap.likelyFaces(refinement, width);
+            assertTrue(likely >= made && likely < 2 * made, width + ": likely " + likely + ", made " + made);
+        }
     }
 
     static Stream<String> polyhedra() {
