@@ -421,15 +421,13 @@ public final class Wrap {
         if (!(width > 0) || !Double.isFinite(width)) {
             return Long.MAX_VALUE;
         }
-        double[] angleSums = null;
+        // The last triangle's corner depends on the width, as in a wrap.
+        double[] angleSums = LayerFloor.angleSums(mesh);
         for (PathPlan plan : plans) {
-            if (plan.frames[plan.m - 1] == null) { // the last triangle's corner depends on the width, as in a wrap
-                angleSums = angleSums != null ? angleSums : LayerFloor.angleSums(mesh);
-                try {
-                    chooseLastStart(mesh, plan, width, widest, angleSums);
-                } catch (WrapException e) {
-                    return Long.MAX_VALUE; // too wide: no wrap to count
-                }
+            try {
+                chooseLastStart(mesh, plan, width, widest, angleSums);
+            } catch (WrapException e) {
+                return Long.MAX_VALUE; // too wide for it: no wrap to count
             }
         }
         return faces(plans, width, HostPieces.of(refinement.mesh()).alone(), true);
