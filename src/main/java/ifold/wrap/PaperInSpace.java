@@ -171,6 +171,15 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          * edges of pieces begin in {@link #sideEdges}.
          */
         private int[] sidesOf;
+        /**
+         * Faces placed whole that lie wholly in a region where their layer creeps, pressed onto the
+         * region's line with no area: along their sides they count as squashed, as such pieces do,
+         * so that a bend between two layers both pressed there is left out. Counted as unsquashed,
+         * a fold of levels 0 and 1 from the far end of a wall's crease at square_frame's outer
+         * corners (its crease 2 T long, wholly within the wall's reach) drew its bend on the wall's
+         * line, in the wall's plane: 2 pairs in one plane at each of five corners.
+         */
+        private boolean[] pressedWhole;
         private final IntList sideStarts = new IntList();
         /**
          * The pieces' edges along the sides of their faces, {@link #SIDE_EDGE} numbers each: from,
@@ -254,17 +263,19 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             IntList capAfter = new IntList();
             corners = new int[faces][];
             sidesOf = new int[faces];
+            pressedWhole = new boolean[faces];
             pieceStart = new int[faces + 1];
             for (int f = 0; f < faces; f++) {
                 List<List<Corner>> pieces = pieces(f);
                 sidesOf[f] = -1;
-                if (pieces == null) {
+                if (pieces == null || pieces.size() == 1) {
                     int[] loop = sheet.loop(f);
                     int[] placed = new int[loop.length];
                     for (int i = 0; i < loop.length; i++) {
                         placed[i] = vertex(f, loop[i]);
                     }
                     corners[f] = placed;
+                    pressedWhole[f] = pieces != null && spaceArea(placed) <= 1e-6 * sheetArea(pieces.get(0));
                     paper.add(placed);
                     hostList.add(sheet.host(f));
                 } else {
@@ -891,7 +902,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
 
         /**
          * Face f cut into pieces each of which lies wholly in or wholly out of each region where
-         * its paper creeps ({@link #regions}); null where the face meets none (it is placed whole).
+         * its paper creeps ({@link #regions}); null where the face meets none, and the face alone
+         * where it lies wholly in one (both placed whole).
          *
          * <p>Paper in such a region is placed on the region's line (a mitre, a fold's wall): it
          * ends there. A face placed by its corners alone, some crept and some not, is drawn as if
@@ -994,7 +1006,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 pieces = next;
             }
             if (pieces.size() <= 1) {
-                return null;
+                // Whole: met by no region, or lying wholly in one (placed whole, pressed onto its line).
+                return pieces.size() == 1 && inside.contains(pieces.get(0)) ? pieces : null;
             }
             STATS[3]++; STATS[4] += pieces.size();
             joinCuts(pieces, tiny);
@@ -1409,8 +1422,9 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 int first = corners[f][i];
                 int second = corners[f][(i + 1) % sheet.loopLength(f)];
                 double none = Double.NaN;
-                return new double[][] {forward ? new double[] {0, 1, first, second, 0, none, none, none, none}
-                        : new double[] {0, 1, second, first, 0, none, none, none, none}};
+                double in = pressedWhole[f] ? 1 : 0;
+                return new double[][] {forward ? new double[] {0, 1, first, second, in, none, none, none, none}
+                        : new double[] {0, 1, second, first, in, none, none, none, none}};
             }
             int from = sideStarts.get(sidesOf[f] + i);
             int to = sideStarts.get(sidesOf[f] + i + 1);

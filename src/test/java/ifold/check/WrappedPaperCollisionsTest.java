@@ -177,16 +177,20 @@ class WrappedPaperCollisionsTest {
      * Paper kept out of the solid at concave edges of 90 degrees, where the layers of each face
      * ran into the solid across (the shared square_frame: 184 crossings of the model and 260
      * points inside; t_prism 86 and 108) and into each other (4,112 and 2,206 crossing pairs;
-     * none now, their walls along the cuts of their faces still overlapping in one plane).
+     * none now). Pairs overlapping in one plane, at most: square_frame none since a face pressed
+     * whole onto a wall's line counts as squashed, its bend with the layer across left out (10
+     * before, two at each of five outer corners, in the wall's plane); t_prism's are bends at
+     * its reflex corners.
      */
     @ParameterizedTest
-    @ValueSource(strings = {"square_frame.off", "t_prism.off"})
-    void concaveEdgesKeepPaperOutOfTheSolid(String name) throws Exception {
+    @CsvSource({"square_frame.off, 0", "t_prism.off, 10"})
+    void concaveEdgesKeepPaperOutOfTheSolid(String name, int most) throws Exception {
         Path file = SharedMeshes.ROOT.resolve("polyhedra").resolve(name);
         assumeTrue(Files.isRegularFile(file), "../shared/meshes is absent");
         Result result = wrapAndCheck(file);
         assertEquals(0, result.modelCrossings() + result.pointsInside(), result::summary);
         assertEquals(0, result.crossingPairs(), result::summary);
+        assertTrue(result.coplanarPairs() <= most, result::summary);
     }
 
     /** The L-prism of WrapTest, one concave edge of 90 degrees: nothing in the solid, no paper crossing paper. */

@@ -521,7 +521,8 @@ public class WrapTest {
      * out over their own stretch of the edge, their rows stopping where the reflex corner's two
      * bands halve it, as the stem's folds along its side do: 15 left (stem folds of rank 1 whose
      * layers stand back from the cut's walls by the corner), no crossing pairs; 12 since the
-     * outermost folds along a cut stand half a thickness back from it, clear of the other host's.
+     * outermost folds along a cut stand half a thickness back from it, clear of the other host's;
+     * 10 since a face pressed whole onto a wall's line counts as squashed.
      */
     @Test
     void theTPrismsFoldsAlongItsCutStandBackFromIt() throws Exception {
@@ -531,7 +532,7 @@ public class WrapTest {
         Wrap.Result result = wrapAndCheck(mesh, new Wrap.Options(Double.NaN, Double.NaN), 2000);
         ifold.check.PaperCollisions.Result collisions = collisions(dir.resolve("t_prism.obj"), result, mesh);
         assertEquals(0, collisions.crossingPairs() + collisions.modelCrossings() + collisions.pointsInside(), collisions.summary());
-        assertTrue(collisions.coplanarPairs() <= 12, collisions.summary());
+        assertTrue(collisions.coplanarPairs() <= 10, collisions.summary());
     }
 
     /**
@@ -553,9 +554,12 @@ public class WrapTest {
      * figure3 crossed in 40 pairs): figure3 513 → 243. And half a thickness back at the least,
      * the walls of both hosts' outermost folds no longer on the cut's line, with the folds whose
      * walls other creases would run into left on their crease: 60 → 12, 157 → 10, 243 → 192.
+     * And a face pressed whole onto a wall's line counts as squashed, so a bend between two
+     * layers both pressed there is left out, not drawn in the wall's plane: 12 → 12, 10 → 0,
+     * 192 → 179.
      */
     @ParameterizedTest
-    @CsvSource({"l-prism, 12", "square_frame, 10", "figure3, 192"})
+    @CsvSource({"l-prism, 12", "square_frame, 0", "figure3, 179"})
     void foldsAlongAWholeCutStandBackFromIt(String name, int most) throws Exception {
         HalfedgeMesh mesh;
         if (name.equals("l-prism")) {
