@@ -426,11 +426,18 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                         double lowRow1 = rowHeight(f, g, out1, slopes[k], fLower);
                         double highRow1 = rowHeight(f, g, out1, slopes[k], !fLower);
                         // Each row leans from its own layer's crease as that layer is placed (f's row from f's).
-                        rowStart = new int[] {row(f, bend, u0, v0, out0, beyond0, lowRow0, uMid, vMid, rowFrom == null ? -1 : rowFrom[0],
-                                crept(f, fFrom, u0, v0)),
-                            row(f, bend, u0, v0, out0, beyond0, highRow0, uMid, vMid, rowFrom == null ? -1 : rowFrom[1], crept(f, gFrom, u0, v0))};
-                        rowAt = new int[] {row(f, bend, u1, v1, out1, beyond1, lowRow1, uMid, vMid, -1, crept(f, fAt, u1, v1)),
-                            row(f, bend, u1, v1, out1, beyond1, highRow1, uMid, vMid, -1, crept(f, gAt, u1, v1))};
+                        double[] fCrept0 = crept(f, fFrom, u0, v0);
+                        double[] gCrept0 = crept(f, gFrom, u0, v0);
+                        double[] fCrept1 = crept(f, fAt, u1, v1);
+                        double[] gCrept1 = crept(f, gAt, u1, v1);
+                        boolean short0 = j == 1 && past[2 * k] < 0;
+                        boolean short1 = j == cuts.length - 1 && past[2 * k + 1] < 0;
+                        rowStart = new int[] {row(f, bend, u0, v0, out0, shortOrCrept(bend, beyond0, short0, fCrept0), lowRow0, uMid, vMid,
+                                rowFrom == null ? -1 : rowFrom[0], fCrept0),
+                            row(f, bend, u0, v0, out0, shortOrCrept(bend, beyond0, short0, gCrept0), highRow0, uMid, vMid,
+                                rowFrom == null ? -1 : rowFrom[1], gCrept0)};
+                        rowAt = new int[] {row(f, bend, u1, v1, out1, shortOrCrept(bend, beyond1, short1, fCrept1), lowRow1, uMid, vMid, -1, fCrept1),
+                            row(f, bend, u1, v1, out1, shortOrCrept(bend, beyond1, short1, gCrept1), highRow1, uMid, vMid, -1, gCrept1)};
                     }
                     boolean inZone = zoned && (t0 >= zoneB - SAME_CUT || t1 <= zoneA + SAME_CUT);
                     boolean squashed = !backs && !onWall[k] && insideAt(fChain, between) && insideAt(gChain, between);
@@ -725,6 +732,25 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         /** {@link #row(int, NestedBends.Bend, int, double, double, double)} at paper point (u, v) of the crease. */
         private int row(int f, NestedBends.Bend bend, double u, double v, double out, double along, double height) {
             return row(f, bend, u, v, out, along, height, Double.NaN, Double.NaN, -1, NOT_CREPT);
+        }
+
+        /**
+         * How far along its crease (from a towards b) a row moves at an end of the crease where it
+         * stops short ({@code isShort}: {@code along} from that end inwards, a mitre against
+         * another's bends), given that its layer's point there crept by {@code creep} (x, y on the
+         * host's frame): the row stops as far in as the farther of the two, not their sum. A layer
+         * standing back from a cut's wall at a reflex corner crept back along the crease, and the
+         * row, stopped short by the mitre as well, lay back over the stretch before (on t_prism's
+         * stem, a rank-1 bend's row at its end 1 T behind where its stretch began, its wall folded
+         * back over its own wall in its plane: 10 pairs in one plane).
+         */
+        private static double shortOrCrept(NestedBends.Bend bend, double along, boolean isShort, double[] creep) {
+            double length = Polygons2.length(bend.bx() - bend.ax(), bend.by() - bend.ay());
+            double crept = (creep[0] * (bend.bx() - bend.ax()) + creep[1] * (bend.by() - bend.ay())) / length;
+            if (!isShort || along * crept <= 0) {
+                return along;
+            }
+            return Math.abs(along) > Math.abs(crept) ? along - crept : 0;
         }
 
         /** No creep: a crease point where its paper lays it. */

@@ -522,7 +522,11 @@ public class WrapTest {
      * bands halve it, as the stem's folds along its side do: 15 left (stem folds of rank 1 whose
      * layers stand back from the cut's walls by the corner), no crossing pairs; 12 since the
      * outermost folds along a cut stand half a thickness back from it, clear of the other host's;
-     * 10 since a face pressed whole onto a wall's line counts as squashed.
+     * 10 since a face pressed whole onto a wall's line counts as squashed; none since a row
+     * stopped short at its crease's end (the mitre at the reflex corner), where its layer crept
+     * back along the crease from the cut's wall, stops at the farther of the two, not their sum
+     * (the stem's rank-1 bends by the reflex corners, whose last row lay 1 T behind where its
+     * stretch began, its wall folded back over the stretch before in its plane).
      */
     @Test
     void theTPrismsFoldsAlongItsCutStandBackFromIt() throws Exception {
@@ -532,7 +536,7 @@ public class WrapTest {
         Wrap.Result result = wrapAndCheck(mesh, new Wrap.Options(Double.NaN, Double.NaN), 2000);
         ifold.check.PaperCollisions.Result collisions = collisions(dir.resolve("t_prism.obj"), result, mesh);
         assertEquals(0, collisions.crossingPairs() + collisions.modelCrossings() + collisions.pointsInside(), collisions.summary());
-        assertTrue(collisions.coplanarPairs() <= 10, collisions.summary());
+        assertEquals(0, collisions.coplanarPairs(), collisions.summary());
     }
 
     /**
