@@ -537,7 +537,9 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
             double mx = dy / length;
             double my = -dx / length;
             double beyond = (x - px) * mx + (y - py) * my;
-            double towards = nx * mx + ny * my - edgeRoom / slope;
+            // Standing out along the edge's line to rounding, it comes no nearer beyond it.
+            double across = Math.abs(nx * mx + ny * my) <= Tolerance.ON_PLANE ? 0 : nx * mx + ny * my;
+            double towards = across - edgeRoom / slope;
             if (towards > 0) {
                 most = Math.min(most, Math.max(0, (height * edgeRoom - beyond) / towards));
             }

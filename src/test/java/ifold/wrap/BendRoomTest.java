@@ -139,6 +139,30 @@ class BendRoomTest {
         assertEquals(0.005, f.lean(f.localX(a), f.localY(a), nx, ny, height, slope, 0.005), 1e-12);
         assertEquals(0, f.lean(f.localX(d), f.localY(d), nx, ny, height, slope, 0.005), 1e-12);
     }
+
+    /**
+     * A bend standing out along the line of an edge of no room, from a point on it, comes no
+     * nearer beyond it, whichever way rounding tips its direction and its point: on the L prism's
+     * top, three folds from the reflex corner square to the diagonal (rank 2, 1 and 0) stood on one
+     * line, 12 pairs in one plane, as the first leaned out 1e-13 towards the cut from 1e-13 beyond
+     * it and was held to 0, while the fold wrapping them, tipped the other way, stood out 3 T.
+     */
+    @Test
+    void aBendStandingOutAlongAnEdgeOfNoRoomIsNotHeldByRounding() {
+        double turn = Math.toRadians(60);
+        HostFrame f = halfConvex(turn);
+        double height = 0.01;
+        double slope = Math.tan(turn / 2);
+        // Along the edge (+x in space), tipped 2e-13 out of the host (+y), from 1e-13 beyond the edge.
+        double nx = f.ex()[0] + 2e-13 * f.ex()[1];
+        double ny = f.ey()[0] + 2e-13 * f.ey()[1];
+        double[] d = {1.8, 1e-13, 0};
+        double[] inside = {1.8, -0.001, 0};
+        assertEquals(0, roomBeyond(f, new double[] {1.2, 0, 0}, d), "setup: beside the coplanar host, no room");
+        assertEquals(0.005, f.lean(f.localX(d), f.localY(d), nx, ny, height, slope, 0.005), 1e-12);
+        // Standing out across the edge from inside, it is held as before.
+        assertEquals(0.001, f.lean(f.localX(inside), f.localY(inside), f.ex()[1], f.ey()[1], height, slope, 0.005), 1e-9);
+    }
     /**
      * A face cut into two convex hosts through the end of a concave edge: host A (a triangle)
      * has the concave edge (0,0,0)-(1,0,0) under a wall rising from it, host B (a quad) only a

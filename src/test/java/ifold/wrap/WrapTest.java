@@ -560,10 +560,12 @@ public class WrapTest {
      * walls other creases would run into left on their crease: 60 → 12, 157 → 10, 243 → 192.
      * And a face pressed whole onto a wall's line counts as squashed, so a bend between two
      * layers both pressed there is left out, not drawn in the wall's plane: 12 → 12, 10 → 0,
-     * 192 → 179.
+     * 192 → 179. And a bend standing out along a cut's line from a point on it is no longer held
+     * on its crease by rounding (HostFrame.lean): the L prism's three folds from its reflex corner
+     * square to the diagonal, nested, stood on one line: 12 → 0.
      */
     @ParameterizedTest
-    @CsvSource({"l-prism, 12", "square_frame, 0", "figure3, 179"})
+    @CsvSource({"l-prism, 0", "square_frame, 0", "figure3, 179"})
     void foldsAlongAWholeCutStandBackFromIt(String name, int most) throws Exception {
         HalfedgeMesh mesh;
         if (name.equals("l-prism")) {
