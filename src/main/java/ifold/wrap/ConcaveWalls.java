@@ -169,10 +169,12 @@ final class ConcaveWalls {
 
     /**
      * The walls of {@code bends} that lie along a concave edge of their host, with the
-     * {@code ranks} NestedBends gave them; {@code stackTop} is how high each host's stack stands.
+     * {@code ranks} NestedBends gave them; {@code stackTop} is how high each host's stack stands,
+     * {@code outs} how far each bend stands out from its crease, walls aside (0 for one along a
+     * cut or a concave edge, which has no room there either way).
      */
     static ConcaveWalls of(List<NestedBends.Bend> bends, int[] ranks, int[] backToBack, HostFrame[] frames, double thickness,
-            double tolerance, double[] stackTop) {
+            double tolerance, double[] stackTop, double[] outs) {
         boolean[] along = new boolean[bends.size()];
         int[] edgeOf = new int[bends.size()];
         // The most any fold along an edge needs, by host and edge: its upper layer's mitre plus its rank.
@@ -211,7 +213,7 @@ final class ConcaveWalls {
         for (int k = 0; k < bends.size(); k++) {
             reach[k] += (0.5 - ranks[k]) * thickness; // the wall, and the half of the paper's thickness on its far side
         }
-        leaveOnCreaseWhereCrossed(bends, ranks, along, onCut, edgeOf, reach, frames, tolerance);
+        leaveOnCreaseWhereCrossed(bends, outs, along, onCut, edgeOf, reach, frames, tolerance);
         double[] nestMost = cutNests(bends, along, onCut, edgeOf, need, from, to);
         List<List<Wall>> wallsOf = new ArrayList<>(java.util.Collections.nCopies(frames.length, (List<Wall>) null));
         for (int k = 0; k < bends.size(); k++) {
@@ -280,11 +282,15 @@ final class ConcaveWalls {
      * And a bend standing out from a crease at an end of the cut, not along a side, leaning over
      * the fold's span, stands over where the wall is (the L prism's top, at its reflex corner, a
      * fold square to the diagonal standing out 3 thicknesses along it: 3 crossing pairs, 0.35 T,
-     * once walls stood half a thickness back). A fold along a side over a convex edge stands out
-     * over that side, beyond the host, and meets no wall of the cut.
+     * once walls stood half a thickness back), where it stands out at all ({@code outs}, as the
+     * bends stand out before any wall is known): one with no room stands on its crease and meets
+     * no wall (figure3's nest along the spoke from its reflex corner (1.1, -0.15), levels 0 to 9,
+     * 4 to 7 and 5 to 6, was left on its crease for a rank-1 fold from the corner that stands out
+     * 0 there: their walls on one line, 12 pairs in one plane). A fold along a side over a convex
+     * edge stands out over that side, beyond the host, and meets no wall of the cut.
      */
-    private static void leaveOnCreaseWhereCrossed(List<NestedBends.Bend> bends, int[] ranks, boolean[] along, boolean[] onCut,
-            int[] edgeOf, double[] reach, HostFrame[] frames, double tolerance) {
+    private static void leaveOnCreaseWhereCrossed(List<NestedBends.Bend> bends, double[] outs, boolean[] along,
+            boolean[] onCut, int[] edgeOf, double[] reach, HostFrame[] frames, double tolerance) {
         Map<Integer, List<Integer>> byHost = new HashMap<>();
         for (int k = 0; k < bends.size(); k++) {
             if (along[k] && onCut[k]) {
@@ -301,7 +307,8 @@ final class ConcaveWalls {
         for (int k = 0; k < bends.size(); k++) {
             if (along[k] && onCut[k]) {
                 HostFrame frame = frames[bends.get(k).host()];
-                crossed[k] = crossed(k, bends, ranks, byHost.get(bends.get(k).host()), frame.edge(edgeOf[k]), reach[k], frame, tolerance);
+                crossed[k] = crossed(k, bends, outs, byHost.get(bends.get(k).host()), frame.edge(edgeOf[k]), reach[k], frame,
+                        tolerance);
             }
         }
         for (int k = 0; k < bends.size(); k++) {
@@ -313,8 +320,8 @@ final class ConcaveWalls {
      * Whether a crease of bend k's host (its bends {@code ofHost}) runs into k's wall, along edge
      * {@code edge} of its host, {@code reach} in from it ({@link #leaveOnCreaseWhereCrossed}).
      */
-    private static boolean crossed(int k, List<NestedBends.Bend> bends, int[] ranks, List<Integer> ofHost, double[] edge, double reach,
-            HostFrame frame, double tolerance) {
+    private static boolean crossed(int k, List<NestedBends.Bend> bends, double[] outs, List<Integer> ofHost, double[] edge,
+            double reach, HostFrame frame, double tolerance) {
         NestedBends.Bend wall = bends.get(k);
         for (int j : ofHost) {
             NestedBends.Bend other = bends.get(j);
@@ -334,7 +341,7 @@ final class ConcaveWalls {
             if (aOn && bOn) {
                 continue; // along the fold itself
             }
-            if (side < 0 && ranks[j] > 0 && (aEnd || bEnd) && leansOver(wall, other, aEnd)) {
+            if (side < 0 && outs[j] > 0 && (aEnd || bEnd) && leansOver(wall, other, aEnd)) {
                 return true;
             }
             boolean lowHeld = other.low() >= wall.low() && other.low() <= wall.high();

@@ -254,7 +254,11 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             for (int f = 0; f < faces; f++) {
                 stackTop[sheet.host(f)] = Math.max(stackTop[sheet.host(f)], (levels[f] + 1) * sheet.thickness());
             }
-            walls = ConcaveWalls.of(bends, ranks, backToBack, frames, sheet.thickness(), sheet.tolerance(), stackTop);
+            // Which folds stand out at all, before any wall is known: a fold along a cut or a
+            // concave edge has no room there and stands out 0 either way, so the others' outs
+            // are the same as once the walls are known.
+            double[] outsBeforeWalls = standOut(bends, ranks, nested, new boolean[bends.size()], new double[bends.size()]);
+            walls = ConcaveWalls.of(bends, ranks, backToBack, frames, sheet.thickness(), sheet.tolerance(), stackTop, outsBeforeWalls);
             boolean[] onWall = walls.along();
 
             List<int[]> paper = new PackedIntArrays();
@@ -313,26 +317,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 bendCorners[k] = new int[] {f, g, a, b, (int) fChain[0][2], (int) fChain[fChain.length - 1][3], (int) gChain[0][2],
                     (int) gChain[gChain.length - 1][3]};
             }
-            double[] outs = new double[bends.size()];
             double[] slopes = new double[bends.size()];
-            for (int k = 0; k < bends.size(); k++) {
-                NestedBends.Bend bend = bends.get(k);
-                // Each rank steps out by a thickness, less where the room beyond the host's edge
-                // is narrow: the lower side then leans out at the room's slope s, and a bend of
-                // rank r (its layers at least 2r + 1 apart) keeps a wall between its two sides:
-                // r·step·(1/s + 1) <= 2r·T.
-                if (ranks[k] == 0 || walls.along(k)) {
-                    continue; // on its crease whatever the room, or on its wall at a concave edge
-                }
-                HostFrame frame = frames[bend.host()];
-                slopes[k] = frame.roomBeyond(bend.ax(), bend.ay(), bend.bx(), bend.by(), sheet.tolerance());
-                double out = ranks[k] * sheet.thickness() * Math.min(1, 2 * slopes[k] / (1 + slopes[k]));
-                double low = (bend.low() + 0.5) * sheet.thickness();
-                out = frame.lean(bend.ax(), bend.ay(), bend.nx(), bend.ny(), low, slopes[k], out);
-                outs[k] = frame.lean(bend.bx(), bend.by(), bend.nx(), bend.ny(), low, slopes[k], out);
-            }
-            FacingBends.keepApart(bends, outs, sheet.thickness() * NEST_TOLERANCE);
-            nested.keepNested(outs);
+            double[] outs = standOut(bends, ranks, nested, onWall, slopes);
             double[] past = nested.mitres(outs, CoplanarHosts.of(frames, sheet.tolerance()));
             stopRowsOnPaper(bends, outs, past);
 
@@ -469,6 +455,33 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             Creep creep = creptCount == 0 ? Creep.NONE
                     : new Creep(java.util.Arrays.copyOf(creptVertices, creptCount), java.util.Arrays.copyOf(creptFrom, 3 * creptCount));
             return new Built(xyz, uv, paper, hosts, caps, capAfter.toArray(), creep, pieceStart);
+        }
+
+        /**
+         * How far each bend stands out from its crease ({@code slopes}: the room beyond the
+         * host's edge it leans at, filled in): none for a fold on a wall ({@code onWall}).
+         */
+        private double[] standOut(List<NestedBends.Bend> bends, int[] ranks, NestedBends nested, boolean[] onWall, double[] slopes) {
+            double[] outs = new double[bends.size()];
+            for (int k = 0; k < bends.size(); k++) {
+                NestedBends.Bend bend = bends.get(k);
+                // Each rank steps out by a thickness, less where the room beyond the host's edge
+                // is narrow: the lower side then leans out at the room's slope s, and a bend of
+                // rank r (its layers at least 2r + 1 apart) keeps a wall between its two sides:
+                // r·step·(1/s + 1) <= 2r·T.
+                if (ranks[k] == 0 || onWall[k]) {
+                    continue; // on its crease whatever the room, or on its wall at a concave edge
+                }
+                HostFrame frame = frames[bend.host()];
+                slopes[k] = frame.roomBeyond(bend.ax(), bend.ay(), bend.bx(), bend.by(), sheet.tolerance());
+                double out = ranks[k] * sheet.thickness() * Math.min(1, 2 * slopes[k] / (1 + slopes[k]));
+                double low = (bend.low() + 0.5) * sheet.thickness();
+                out = frame.lean(bend.ax(), bend.ay(), bend.nx(), bend.ny(), low, slopes[k], out);
+                outs[k] = frame.lean(bend.bx(), bend.by(), bend.nx(), bend.ny(), low, slopes[k], out);
+            }
+            FacingBends.keepApart(bends, outs, sheet.thickness() * NEST_TOLERANCE);
+            nested.keepNested(outs);
+            return outs;
         }
 
         /**
