@@ -11,18 +11,27 @@ import java.nio.charset.StandardCharsets;
  * ...", "X11Util: Open ..."), which say nothing to a user, under iFold's one line; stopped while
  * JOGL is still starting, it prints that it could not register its temporary files' cleanup
  * ("Warning: Caught Exception due to initializing TmpRoot:", then the exception's trace), as
- * the JVM was already shutting down. Lines that begin with {@code X11Util} go, and that warning
- * with the lines of its trace after it (those that begin with a tab, "java." or "Caused by");
+ * the JVM was already shutting down; stopped while its X11 factory sets up, that it caught and
+ * handled the exception ("Caught handled GLException: ...", then its own trace). Lines that
+ * begin with {@code X11Util} go, and those two with the lines of their trace after them (those
+ * that begin with a tab, "java.", "Caused by", or JOGL's "    [" and "Caused[");
  * everything else passes as written, a line at a time (a progress bar's carriage returns and
  * flushes pass at once).
  */
 final class JoglNoise extends OutputStream {
     /** JOGL's warning that it could not register its temporary files' cleanup: the trace after it goes too. */
     private static final byte[] WARNING = ascii("Warning: Caught Exception due to initializing TmpRoot");
+    /**
+     * JOGL's report of an exception it handled itself, the trace after it going too: stopped while
+     * its X11 factory was setting up, it could not ("Caught handled GLException:
+     * X11GLXDrawableFactory - Could not initialize shared resources ...", a signal in one run of
+     * 20 of LauncherTest's, the machine busy).
+     */
+    private static final byte[] HANDLED = ascii("Caught handled GLException");
     /** The beginnings of JOGL's lines that go. */
-    private static final byte[][] DROPPED = {ascii("X11Util"), WARNING};
-    /** The beginnings of a trace's lines, which go after a dropped warning. */
-    private static final byte[][] TRACE = {ascii("\t"), ascii("java."), ascii("Caused by")};
+    private static final byte[][] DROPPED = {ascii("X11Util"), WARNING, HANDLED};
+    /** The beginnings of a trace's lines, which go after a dropped warning: Java's, and JOGL's own ("    [0]: ...", "Caused[0] by ..."). */
+    private static final byte[][] TRACE = {ascii("\t"), ascii("java."), ascii("Caused by"), ascii("    ["), ascii("Caused[")};
 
     private final OutputStream out;
     /** The line begun and not yet passed on: held only while it may still begin as one that goes. */
@@ -59,7 +68,7 @@ final class JoglNoise extends OutputStream {
             if (state == WHOLE) {
                 dropping = true;
                 // A trace's line matches only after the warning: the trace goes on.
-                inTrace = inTrace || java.util.Arrays.equals(held, WARNING);
+                inTrace = inTrace || java.util.Arrays.equals(held, WARNING) || java.util.Arrays.equals(held, HANDLED);
                 line.reset();
                 return;
             }

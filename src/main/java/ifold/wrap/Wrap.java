@@ -413,6 +413,10 @@ public final class Wrap {
     /** As {@link #likelyFaces(HamiltonianRefinement.Result)} at {@code width}, NaN for the default. */
     public static long likelyFaces(HamiltonianRefinement.Result refinement, double width) {
         IndexedPolygons mesh = refinement.mesh();
+        double across = across(mesh);
+        if (!(across >= SMALLEST_MODEL && across <= LARGEST_MODEL)) {
+            return Long.MAX_VALUE; // a model that a wrap refuses for its size: nothing to count (its frames could not be made)
+        }
         List<PathPlan> plans = plans(mesh, refinement.componentStart(), null);
         double widest = narrowest(mesh, plans)[0];
         if (Double.isNaN(width)) {

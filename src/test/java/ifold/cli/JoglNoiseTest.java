@@ -40,6 +40,24 @@ class JoglNoiseTest {
     }
 
     @Test
+    void joglsHandledExceptionOfAShutdownWhileItSetsUpGoesWithItsTrace() {
+        // As LauncherTest's signal at a random moment met it once (the machine busy, 2026-12-05).
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        PrintStream err = new PrintStream(new JoglNoise(bytes), true, StandardCharsets.UTF_8);
+        err.println("ifold: interrupted: nothing written");
+        err.println("Caught handled GLException: X11GLXDrawableFactory - Could not initialize shared resources for "
+                + "X11GraphicsDevice[type .x11, connection :0, unitID 0, handle 0x0, owner false] on thread main-SharedResourceRunner");
+        err.println("    [0]: jogamp.opengl.x11.glx.X11GLXDrawableFactory$SharedResourceImplementation.createSharedResource(X11GLXDrawableFactory.java:306)");
+        err.println("    [1]: jogamp.opengl.SharedResourceRunner.run(SharedResourceRunner.java:353)");
+        err.println("Caused[0] by NullPointerException: Cannot invoke \"jogamp.opengl.SharedResourceRunner.getOrCreateShared\" on thread main-SharedResourceRunner");
+        err.println("    [0]: jogamp.opengl.x11.glx.X11GLXDrawableFactory.isGLXVersionGreaterEqualOneThree(X11GLXDrawableFactory.java:496)");
+        err.println("a line of iFold's ends the trace");
+        err.println("    [1]: an indented line after it passes");
+        assertEquals("ifold: interrupted: nothing written\na line of iFold's ends the trace\n    [1]: an indented line after it passes\n",
+                bytes.toString(StandardCharsets.UTF_8));
+    }
+
+    @Test
     void aProgressBarsCarriageReturnsPassAtOnce() {
         ByteArrayOutputStream bytes = new ByteArrayOutputStream();
         PrintStream err = new PrintStream(new JoglNoise(bytes), true, StandardCharsets.UTF_8);
