@@ -109,6 +109,73 @@ final class BendRoom {
         return limited;
     }
 
+    /**
+     * The frames with each concave stretch of an edge that runs on as a convex stretch at a
+     * {@link HostFrame.Stop} mitred on over the convex stretch, with its own tan(φ/2), as far as
+     * the stop keeps paper from the corner: the stack of the face across times the stop's slope
+     * ({@code stackTop[wall] * slope}, as {@link HostFrame#stopped} keeps it).
+     *
+     * <p>At a polycube's vertex with 4 of its 8 octants filled, two lines of edges run from
+     * concave to convex through it, and four faces meet: A and B across the concave stretch of
+     * one line, the convex stretch of that line between B and C, and D across the other line
+     * from A (convex) and from C (concave). A's folds tucked along its convex edge with D stand out
+     * a thickness a rank into the wedge of air over that edge, and the layers of B stack up in
+     * that wedge: B's paper ran on up to its edge with C past the corner, and those bends ran
+     * through it (C's bends into D's paper likewise): 6 random cubes (seed 2) crossed in 52 pairs
+     * of caps, 2 T deep, all by such a vertex. B's and D's layers now end on their mitres near the
+     * corner as they do along the concave stretch, and the bends beside them stand clear. Paper
+     * going over the convex edge there keeps from the corner already ({@link HostFrame#stopped}).
+     *
+     * @param frames the hosts' frames, with their stops and mitres
+     * @param stackTop how high each host's stack stands (its top layer's upper side)
+     * @param tolerance how far a stretch's end may lie from its stop's corner and still end there
+     * @return the frames, those with a stretch mitred on replaced (the same array where none is)
+     */
+    static HostFrame[] mitredOnPastStops(HostFrame[] frames, double[] stackTop, double tolerance) {
+        HostFrame[] mitred = frames;
+        for (int h = 0; h < frames.length; h++) {
+            HostFrame frame = frames[h];
+            if (frame.stops() == null || frame.mitre() == null) {
+                continue;
+            }
+            double[][] mitre = null;
+            for (HostFrame.Stop stop : frame.stops()) {
+                double[] stretches = (mitre != null ? mitre : frame.mitre())[stop.edge()];
+                double keep = stackTop[stop.wall()] * stop.slope();
+                if (stretches == null || !(keep > 0)) {
+                    continue;
+                }
+                double length = frame.edge(stop.edge())[4];
+                for (int i = 0; i + 2 < stretches.length; i += 3) {
+                    // The concave stretch that ends at the stop, on the side the convex stretch does not run on to.
+                    boolean before = stop.toward() > 0 && Math.abs(stretches[i + 1] - stop.at()) <= tolerance;
+                    boolean after = stop.toward() < 0 && Math.abs(stretches[i] - stop.at()) <= tolerance;
+                    if (!before && !after || stretches[i + 2] <= HostFrame.CUT_TAN) {
+                        continue;
+                    }
+                    if (mitre == null) {
+                        mitre = frame.mitre().clone();
+                    }
+                    double[] longer = mitre[stop.edge()].clone();
+                    if (before) {
+                        longer[i + 1] = Math.min(length, stop.at() + keep);
+                    } else {
+                        longer[i] = Math.max(0, stop.at() - keep);
+                    }
+                    mitre[stop.edge()] = longer;
+                    stretches = longer;
+                }
+            }
+            if (mitre != null) {
+                if (mitred == frames) {
+                    mitred = frames.clone();
+                }
+                mitred[h] = frame.withEdges(frame.room(), mitre);
+            }
+        }
+        return mitred;
+    }
+
     /** Each edge's stretches as an array (null for an edge with none), or null where no edge has any. */
     private static double[][] stretches(List<List<Double>> edges) {
         double[][] stretches = new double[edges.size()][];

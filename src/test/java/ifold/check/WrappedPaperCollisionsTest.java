@@ -227,6 +227,24 @@ class WrappedPaperCollisionsTest {
     }
 
     /**
+     * 6 random cubes (seed 2; {@code ifold generate polycube --cubes 6 --seed 2}): by the vertex
+     * (2, 0, 0), 4 of its 8 octants filled, the edge x = 2, y = 0 runs on from concave (above) to
+     * convex (below), and y = 0, z = 0 from convex to concave. The folds tucked along each convex
+     * edge stood out a thickness a rank into the wedge of air over it, where the paper of the face
+     * across the corner stood up to its own edge: 52 crossing pairs of caps, 2 T deep, all there;
+     * 11 pairs in one plane, before and after.
+     * That face's layers are now mitred on past the corner as along its concave stretch
+     * (BendRoom.mitredOnPastStops), and the bends stand beside them.
+     */
+    @Test
+    void bendsAtAVertexWhereAConvexEdgeRunsOnAsAConcaveOneCrossNothing() throws Exception {
+        Result result = wrapAndCheck(Polycubes.surface(Polycubes.random(6, 2)), "6 random cubes");
+        assertEquals(0, result.modelCrossings() + result.pointsInside(), result::summary);
+        assertEquals(0, result.crossingPairs(), result::summary);
+        assertTrue(result.coplanarPairs() <= 11, result::summary);
+    }
+
+    /**
      * Star-shaped icosahedra (each corner's radius scaled by 0.6 to 1.4, as bench/random-solids
      * makes them, seed 31·n): at a corner of a host a pass's end is folded under along a crease
      * from the corner and the next fold runs from the same corner a few degrees off it, facing
