@@ -51,8 +51,20 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
      *     towards its first
      * @param wall the host of the face across the corner
      * @param slope how far along the edge paper keeps per height of that face's stack
+     * @param beside tan(φ/2) of a concave stretch that ends at the corner on another host of
+     *     this one's plane, on this edge's line, where the stretch runs on as the convex one (the
+     *     face cut into hosts at the corner); 0 where none does
      */
-    public record Stop(int edge, double at, double toward, int wall, double slope) {
+    public record Stop(int edge, double at, double toward, int wall, double slope, double beside) {
+        /** A stop with no concave stretch beside it on another host. */
+        public Stop(int edge, double at, double toward, int wall, double slope) {
+            this(edge, at, toward, wall, slope, 0);
+        }
+
+        /** This stop with {@code beside} the concave stretch's tan(φ/2). */
+        public Stop beside(double tan) {
+            return new Stop(edge, at, toward, wall, slope, tan);
+        }
     }
 
     /*

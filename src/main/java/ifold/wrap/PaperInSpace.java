@@ -1645,6 +1645,11 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 }
                 addLineCap(a, b, after, caps, capAfter);
             }
+            // Its side from the layer's crease to the rows, or from row to row, where not one point:
+            // the two layers' facets were otherwise joined only where their rows met their creases,
+            // and two corners of turns pressed with their neighbours fell off the strip (50
+            // random cubes, seed 1, mitred on past the corners of its faces: five pieces in space).
+            joinSquashed(quad[0], quad[3], after, caps, capAfter);
         }
 
         /**

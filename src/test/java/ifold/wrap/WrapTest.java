@@ -403,6 +403,19 @@ public class WrapTest {
         wrapAndCheck(build(Polycubes.surface(Polycubes.random(20, 4))), new Wrap.Options(Double.NaN, Double.NaN), 2000);
     }
 
+    /**
+     * 50 random cubes (seed 1): mitred on past the corners where a concave edge runs on as a
+     * convex one (BendRoom.mitredOnPastStops), the facets of bends pressed onto a mitre from all
+     * four corners were drawn as the layers' creases alone, no line from a crease to the rows nor
+     * between the rows: two corners of turns folded under there, pressed with their neighbours,
+     * fell off the strip (truth 1: five pieces in space). Such a facet's sides between the crease
+     * and the rows are now lines of no area (PaperInSpace.addPressed).
+     */
+    @Test
+    void fiftyRandomCubesStayOnePiece() throws Exception {
+        wrapAndCheck(build(Polycubes.surface(Polycubes.random(50, 1))), new Wrap.Options(Double.NaN, Double.NaN), 2000);
+    }
+
     /** A prism 0.7 high on an L of three unit squares: two non-convex hexagons and six quads. */
     public static PolygonSoup lPrism() {
         return prism(new double[][] {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, 0.7);
