@@ -97,11 +97,15 @@ final class ConcaveWalls {
     }
 
     /**
-     * A fold standing back to back with another on its crease line ({@link NestedBends#backToBack}):
-     * from (ax, ay) to (bx, by) on its host, its layers {@code low} to {@code high} on the side
-     * away from (nx, ny), the way it would stand out.
+     * A fold standing back from its crease: from (ax, ay) to (bx, by) on its host, its layers
+     * {@code low} to {@code high} on the side away from (nx, ny), the way it would stand out,
+     * {@code keep} back from the crease. Back to back with another on its crease line ({@link
+     * NestedBends#backToBack}), half a thickness, its bend reaching the crease where the other's
+     * does; or, nested on one line in folds that stand on it ({@code stepping}), a thickness for
+     * each, its bend standing there too.
      */
-    private record BackWall(double ax, double ay, double bx, double by, double nx, double ny, int low, int high) {
+    private record BackWall(double ax, double ay, double bx, double by, double nx, double ny, int low, int high, double keep,
+            boolean stepping) {
     }
 
     private final double thickness;
@@ -119,13 +123,16 @@ final class ConcaveWalls {
      * point (4.6M on the 5,000-triangle torus).
      */
     private final BackWall[][] backWallsOf;
+    /** Each bend's own wall where it steps back into its layers, nested on one line (null where it does not). */
+    private final BackWall[] stepsBack;
     private final boolean[] along;
     /** How high each host's stack stands: the top of its highest layer (for the stops of convex edges, {@link HostFrame.Stop}). */
     private final double[] stackTop;
 
-    private ConcaveWalls(double thickness, double tolerance, List<List<Wall>> wallsOf, BackWall[][] backWallsOf,
+    private ConcaveWalls(double thickness, double tolerance, List<List<Wall>> wallsOf, BackWall[][] backWallsOf, BackWall[] stepsBack,
             boolean[] along, double[] stackTop, HostFrame[] frames) {
         this.thickness = thickness;
+        this.stepsBack = stepsBack;
         this.tolerance = tolerance;
         this.backWallsOf = backWallsOf;
         this.along = along;
@@ -240,13 +247,115 @@ final class ConcaveWalls {
                 backWallsOf.set(bend.host(), new ArrayList<>());
             }
             backWallsOf.get(bend.host())
-                    .add(new BackWall(bend.ax(), bend.ay(), bend.bx(), bend.by(), bend.nx(), bend.ny(), bend.low(), bend.high()));
+                    .add(new BackWall(bend.ax(), bend.ay(), bend.bx(), bend.by(), bend.nx(), bend.ny(), bend.low(), bend.high(),
+                            thickness / 2, false));
+        }
+        BackWall[] stepsBack = stepBack(bends, backToBack, frames, thickness, tolerance, outs, along);
+        for (int k = 0; k < bends.size(); k++) {
+            int host = bends.get(k).host();
+            if (stepsBack[k] != null) {
+                if (backWallsOf.get(host) == null) {
+                    backWallsOf.set(host, new ArrayList<>());
+                }
+                backWallsOf.get(host).add(stepsBack[k]);
+            }
         }
         BackWall[][] backWallsByHost = new BackWall[frames.length][];
         for (int h = 0; h < frames.length; h++) {
             backWallsByHost[h] = backWallsOf.get(h) == null ? null : backWallsOf.get(h).toArray(new BackWall[0]);
         }
-        return new ConcaveWalls(thickness, tolerance, wallsOf, backWallsByHost, along, stackTop, frames);
+        return new ConcaveWalls(thickness, tolerance, wallsOf, backWallsByHost, stepsBack, along, stackTop, frames);
+    }
+
+    /**
+     * The folds that step back into their layers (null for the rest): nested on one line that is
+     * no side of their host, none of them standing out ({@code outs}: no room beyond the line)
+     * nor on a wall, nor back to back, each stands back a thickness for each such fold wrapping
+     * it, its layers ending there and its bend standing there, as walls do at a concave edge. All
+     * on their crease, their bends stood one inside another in the line's plane: figure3 by its
+     * corner (1.1, -0.15), a fold of levels 0 to 3 from the corner, 35 thicknesses long, with no
+     * room (it would stand out across the spoke's line from the corner), and the fold of levels 1
+     * and 2 it wraps, 4 pairs in one plane. Nests along a side (a cut) are left as they are: where
+     * they end at a corner beside another cut's walls, their levels interleaved, stepping back
+     * crossed those walls (figure3, one start: 26 crossing pairs, 1.5 T deep, all but one within 0.11 of (0.8, 1.05)). Nor one whose step would
+     * take its layers out of a bend wrapping them ({@link #steppingOut}).
+     */
+    private static BackWall[] stepBack(List<NestedBends.Bend> bends, int[] backToBack, HostFrame[] frames, double thickness,
+            double tolerance, double[] outs, boolean[] along) {
+        BackWall[] stepsBack = new BackWall[bends.size()];
+        Map<Integer, List<Integer>> onCrease = new HashMap<>();
+        for (int k = 0; k < bends.size(); k++) {
+            NestedBends.Bend bend = bends.get(k);
+            if (!along[k] && !(outs[k] > 0) && backToBack[k] < 0 && sideAlong(frames[bend.host()], bend, tolerance) < 0) {
+                onCrease.computeIfAbsent(bend.host(), h -> new ArrayList<>()).add(k);
+            }
+        }
+        for (List<Integer> ofHost : onCrease.values()) {
+            for (int k : ofHost) {
+                NestedBends.Bend bend = bends.get(k);
+                int wrapping = 0;
+                for (int j : ofHost) {
+                    NestedBends.Bend other = bends.get(j);
+                    if (j != k && other.low() < bend.low() && other.high() > bend.high() && other.nx() * bend.nx() + other.ny() * bend.ny() > 0
+                            && sameLine(other, bend, thickness * NEST_ON_LINE) && overlapping(other, bend, tolerance)) {
+                        wrapping++;
+                    }
+                }
+                if (wrapping > 0 && !steppingOut(k, wrapping * thickness, bends, outs, tolerance)) {
+                    stepsBack[k] = new BackWall(bend.ax(), bend.ay(), bend.bx(), bend.by(), bend.nx(), bend.ny(), bend.low(), bend.high(),
+                            wrapping * thickness, true);
+                }
+            }
+        }
+        return stepsBack;
+    }
+
+    /**
+     * Whether bend k's layers, stepping {@code keep} back from its crease, would step out of a
+     * bend from its crease whose levels wrap k's: one of its host, its crease off k's line with an
+     * end on k's crease, where the step takes them beyond that crease and the bend stands out less
+     * than the step ({@code outs}; the
+     * rings of 6 to 16 around by 6 across: by the corners of their hosts on the top, a fold of
+     * levels 2 and 3 stepping a thickness back from its crease's end, where folds of levels 1 to
+     * 6 and 0 to 7 standing out 0.74 and 1.48 thicknesses begin, crossed their bends).
+     */
+    private static boolean steppingOut(int k, double keep, List<NestedBends.Bend> bends, double[] outs, double tolerance) {
+        NestedBends.Bend bend = bends.get(k);
+        for (int j = 0; j < bends.size(); j++) {
+            NestedBends.Bend other = bends.get(j);
+            if (other.host() != bend.host() || other.low() >= bend.low() || other.high() <= bend.high()
+                    || !onCrease(bend, other.ax(), other.ay(), tolerance) && !onCrease(bend, other.bx(), other.by(), tolerance)
+                    || onCrease(bend, other.ax(), other.ay(), tolerance) && onCrease(bend, other.bx(), other.by(), tolerance)) {
+                continue;
+            }
+            double beyond = -keep * (bend.nx() * other.nx() + bend.ny() * other.ny());
+            if (beyond > tolerance && outs[j] < keep - tolerance) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Creases within this many thicknesses of one line share it (as {@code PaperInSpace.NEST_TOLERANCE}). */
+    private static final double NEST_ON_LINE = 0.01;
+
+    /** Whether both ends of b's crease lie on the line of a's, within {@code within}. */
+    private static boolean sameLine(NestedBends.Bend a, NestedBends.Bend b, double within) {
+        double dx = a.bx() - a.ax();
+        double dy = a.by() - a.ay();
+        double length = Math.sqrt(dx * dx + dy * dy);
+        return Math.abs((b.ax() - a.ax()) * dy - (b.ay() - a.ay()) * dx) / length <= within
+                && Math.abs((b.bx() - a.ax()) * dy - (b.by() - a.ay()) * dx) / length <= within;
+    }
+
+    /** Whether the creases of a and b, on one line, share more than the tolerance of it. */
+    private static boolean overlapping(NestedBends.Bend a, NestedBends.Bend b, double tolerance) {
+        double dx = a.bx() - a.ax();
+        double dy = a.by() - a.ay();
+        double length = Math.sqrt(dx * dx + dy * dy);
+        double sa = ((b.ax() - a.ax()) * dx + (b.ay() - a.ay()) * dy) / length;
+        double sb = ((b.bx() - a.ax()) * dx + (b.by() - a.ay()) * dy) / length;
+        return Math.min(length, Math.max(sa, sb)) - Math.max(0, Math.min(sa, sb)) > tolerance;
     }
 
     /**
@@ -538,7 +647,7 @@ final class ConcaveWalls {
         BackWall[] backs = thickness > 0 ? backWallsOf[host] : null;
         for (BackWall back : backs == null ? NO_BACK_WALLS : backs) {
             double middle = -((cx - back.ax()) * back.nx() + (cy - back.ay()) * back.ny());
-            if (level >= back.low() - Tolerance.RELATIVE_EQUALITY && level <= back.high() + Tolerance.RELATIVE_EQUALITY && middle > tolerance) {
+            if (!back.stepping() && level >= back.low() - Tolerance.RELATIVE_EQUALITY && level <= back.high() + Tolerance.RELATIVE_EQUALITY && middle > tolerance) {
                 return true;
             }
         }
@@ -548,6 +657,11 @@ final class ConcaveWalls {
     /** Whether bend k stands back from its crease, back to back with another ({@link #place}). */
     static boolean standsBack(int[] backToBack, boolean[] alongWall, int k) {
         return backToBack[k] >= 0 && !alongWall[k] && !alongWall[backToBack[k]];
+    }
+
+    /** Whether bend k steps back into its layers, nested in folds on its line ({@link #place}). */
+    boolean stepsBack(int k) {
+        return stepsBack[k] != null;
     }
 
     /** Which bends stand on a wall at a concave edge. */
@@ -603,7 +717,7 @@ final class ConcaveWalls {
         if (backs != null) {
             for (BackWall back : backs) {
                 if (holds(back, level, cx, cy, x, y)) {
-                    frame.keepFromLine(back.ax(), back.ay(), -back.nx(), -back.ny(), -1, thickness / 2, out);
+                    frame.keepFromLine(back.ax(), back.ay(), -back.nx(), -back.ny(), -1, back.keep(), out);
                 }
             }
         }
@@ -654,7 +768,7 @@ final class ConcaveWalls {
         if (backs != null) {
             for (BackWall back : backs) {
                 if (holds(back, level, cx, cy, x, y)) {
-                    slideAlongMitre(frame, back, height, thickness / 2, out);
+                    slideAlongMitre(frame, back, height, back.keep(), out);
                 }
             }
         }
@@ -663,15 +777,23 @@ final class ConcaveWalls {
     /**
      * Where a bend back to back with another has its apex: on its crease, halfway up (at
      * {@code height}), mitred by a concave edge and slid along the mitre's line back onto the
-     * crease, where the other's apex is.
+     * crease, where the other's apex is; bend k's, where it steps back into its layers ({@link
+     * #stepBack}), on its wall.
      */
-    void apex(int host, HostFrame frame, double x, double y, double height, double[] out) {
+    void apex(int k, int host, HostFrame frame, double x, double y, double height, double[] out) {
         frame.mitred(x, y, height, out);
+        if (thickness > 0 && stepsBack[k] != null) {
+            slideAlongMitre(frame, stepsBack[k], height, stepsBack[k].keep(), out);
+            return;
+        }
         BackWall[] backs = thickness > 0 ? backWallsOf[host] : null;
         if (backs == null) {
             return;
         }
         for (BackWall back : backs) {
+            if (back.stepping()) {
+                continue; // its apex stands back with it (above)
+            }
             double dx = back.bx() - back.ax();
             double dy = back.by() - back.ay();
             double length = Math.sqrt(dx * dx + dy * dy);
@@ -698,7 +820,7 @@ final class ConcaveWalls {
         double s = ((x - back.ax()) * dx + (y - back.ay()) * dy) / length;
         double inside = -((x - back.ax()) * back.nx() + (y - back.ay()) * back.ny());
         double middle = -((cx - back.ax()) * back.nx() + (cy - back.ay()) * back.ny());
-        return middle > tolerance && s >= -tolerance && s <= length + tolerance && inside >= -tolerance && inside < thickness / 2;
+        return middle > tolerance && s >= -tolerance && s <= length + tolerance && inside >= -tolerance && inside < back.keep();
     }
 
     /**

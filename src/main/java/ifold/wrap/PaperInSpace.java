@@ -341,7 +341,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 // The two layers' chains along the crease, made again rather than kept for every bend.
                 double[][] fChain = chain(f, bendEdges.get(5 * k + 1), c[2], c[3]);
                 double[][] gChain = chain(g, side(g, c[2], c[3]), c[2], c[3]);
-                if (out == 0 && !ConcaveWalls.standsBack(backToBack, onWall, k)) {
+                if (out == 0 && !ConcaveWalls.standsBack(backToBack, onWall, k) && !walls.stepsBack(k)) {
                     addCap(fChain, gChain, c[2], c[3], after, bend.host(), !onWall[k], caps, capAfter);
                     continue;
                 }
@@ -404,8 +404,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     int[] rowAt;
                     int[] rowStart;
                     if (backs) {
-                        rowStart = rowFrom != null ? new int[] {rowFrom[0]} : new int[] {apex(f, a, middle)};
-                        rowAt = new int[] {j == cuts.length - 1 ? apex(f, b, middle) : apex(f, u1, v1, middle)};
+                        rowStart = rowFrom != null ? new int[] {rowFrom[0]} : new int[] {apex(k, f, a, middle)};
+                        rowAt = new int[] {j == cuts.length - 1 ? apex(k, f, b, middle) : apex(k, f, u1, v1, middle)};
                     } else {
                         double beyond0 = j == 1 ? -past[2 * k] : onCut(bend, out, fChain, gChain, t0, between);
                         double beyond1 = j == cuts.length - 1 ? past[2 * k + 1] : onCut(bend, out, fChain, gChain, t1, between);
@@ -548,7 +548,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          */
         private double apexHeight(List<NestedBends.Bend> bends, int[] backToBack, int k) {
             NestedBends.Bend bend = bends.get(k);
-            NestedBends.Bend other = bends.get(backToBack[k]);
+            // One stepping back into its layers, nested on one line (no fold back to back): halfway between them.
+            NestedBends.Bend other = backToBack[k] < 0 ? bend : bends.get(backToBack[k]);
             int low = Math.max(bend.low(), other.low());
             int high = Math.min(bend.high(), other.high());
             // As height() places the two levels, so that two bends of the same levels (a hinge strip's
@@ -1820,8 +1821,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             int f = c[0];
             int g = c[1];
             if (out == 0) {
-                int apexA = apex(f, c[2], middle);
-                int apexB = apex(f, c[3], middle);
+                int apexA = apex(k, f, c[2], middle);
+                int apexB = apex(k, f, c[3], middle);
                 caps.add(new int[] {c[4], c[5], apexB, apexA});
                 caps.add(new int[] {apexA, apexB, c[7], c[6]});
                 capAfter.add(after);
@@ -2009,19 +2010,20 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
 
 
         /**
-         * The crease's point at paper vertex p (of face f's pose) at {@code height}: a bend's apex,
-         * on the crease line where no fold back to back moves it, mitred by a concave edge.
+         * The crease's point at paper vertex p (of face f's pose) at {@code height}: bend k's apex,
+         * on the crease line where no fold back to back moves it, mitred by a concave edge; where
+         * bend k steps back into its layers ({@link ConcaveWalls#stepsBack}), on its wall.
          */
-        private int apex(int f, int p, double height) {
-            return apex(f, sheet.u(p), sheet.v(p), height);
+        private int apex(int k, int f, int p, double height) {
+            return apex(k, f, sheet.u(p), sheet.v(p), height);
         }
 
-        /** {@link #apex(int, int, double)} at paper point (u, v) of the crease. */
-        private int apex(int f, double u, double v, double height) {
+        /** {@link #apex(int, int, int, double)} at paper point (u, v) of the crease. */
+        private int apex(int k, int f, double u, double v, double height) {
             Isometry2 pose = sheet.pose(f);
             double[] point = new double[3];
             double[] xy = new double[2];
-            walls.apex(sheet.host(f), frames[sheet.host(f)], pose.x(u, v), pose.y(u, v), height, xy);
+            walls.apex(k, sheet.host(f), frames[sheet.host(f)], pose.x(u, v), pose.y(u, v), height, xy);
             frames[sheet.host(f)].toSpace(xy[0], xy[1], height, point, 0);
             return capVertex(point, u, v);
         }
