@@ -277,8 +277,9 @@ final class ConcaveWalls {
      * room (it would stand out across the spoke's line from the corner), and the fold of levels 1
      * and 2 it wraps, 4 pairs in one plane. Nests along a side (a cut) are left as they are: where
      * they end at a corner beside another cut's walls, their levels interleaved, stepping back
-     * crossed those walls (figure3, one start: 26 crossing pairs, 1.5 T deep, all but one within 0.11 of (0.8, 1.05)). Nor one whose step would
-     * take its layers out of a bend wrapping them ({@link #steppingOut}).
+     * crossed those walls (figure3, one start: 26 crossing pairs, 1.5 T deep, all but one within
+     * 0.11 of (0.8, 1.05)). Nor one whose step would take its layers out of a bend wrapping them
+     * ({@link #steppingOut}).
      */
     private static BackWall[] stepBack(List<NestedBends.Bend> bends, int[] backToBack, HostFrame[] frames, double thickness,
             double tolerance, double[] outs, boolean[] along) {
@@ -305,7 +306,7 @@ final class ConcaveWalls {
                 for (int i = 0; i < byLow.length && lows[i] < bend.low(); i++) {
                     NestedBends.Bend other = bends.get(byLow[i]);
                     if (other.high() > bend.high() && other.nx() * bend.nx() + other.ny() * bend.ny() > 0
-                            && sameLine(other, bend, thickness * NEST_ON_LINE) && overlapping(other, bend, tolerance)) {
+                            && sameLine(other, bend, thickness * PaperInSpace.NEST_TOLERANCE) && overlapping(other, bend, tolerance)) {
                         wrapping++;
                     }
                 }
@@ -355,9 +356,6 @@ final class ConcaveWalls {
         }
         return false;
     }
-
-    /** Creases within this many thicknesses of one line share it (as {@code PaperInSpace.NEST_TOLERANCE}). */
-    private static final double NEST_ON_LINE = 0.01;
 
     /** Whether both ends of b's crease lie on the line of a's, within {@code within}. */
     private static boolean sameLine(NestedBends.Bend a, NestedBends.Bend b, double within) {
