@@ -8,6 +8,9 @@ import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.Supplier;
 
 /**
  * The threads that iFold's data-parallel steps (reading and writing big models) share: one per
@@ -44,6 +47,82 @@ public final class Workers {
             }
         }
         return p;
+    }
+
+    /** A loop's body over indices {@code from} (inclusive) to {@code to}, with its thread's own scratch. */
+    @FunctionalInterface
+    public interface Chunk<S> {
+        void run(int from, int to, S scratch);
+    }
+
+    /**
+     * Runs {@code body} over the indices 0 to {@code n} in chunks of {@code size}, on the calling
+     * thread and on whichever of the pool's threads come free to join in: each chunk is taken by
+     * the first to ask, so the caller never waits for a thread busy with other work (the pool may
+     * be analysing a wrap's hosts meanwhile), only for the chunks already taken. Each thread taking
+     * part gets its own scratch from {@code scratch}. The body must write only what belongs to its
+     * own indices: then the result does not depend on which thread ran which chunk.
+     */
+    public static <S> void forChunks(int n, int size, Supplier<S> scratch, Chunk<S> body) {
+        if (size < 1) {
+            throw new IllegalArgumentException("chunks of at least one index, got " + size);
+        }
+        if (n <= size || threads() == 1) {
+            if (n > 0) {
+                body.run(0, n, scratch.get());
+            }
+            return;
+        }
+        AtomicInteger next = new AtomicInteger();
+        // Helpers count themselves in before they take a chunk: a chunk taken is then always
+        // counted when the caller, having found none left, waits for the count to fall to 0.
+        AtomicInteger helping = new AtomicInteger();
+        AtomicReference<Throwable> failed = new AtomicReference<>();
+        Object done = new Object();
+        Runnable help = () -> {
+            helping.incrementAndGet();
+            try {
+                S own = null;
+                for (int from = next.getAndAdd(size); from < n && failed.get() == null; from = next.getAndAdd(size)) {
+                    if (own == null) {
+                        own = scratch.get();
+                    }
+                    body.run(from, Math.min(n, from + size), own);
+                }
+            } catch (Throwable t) {
+                failed.compareAndSet(null, t);
+                next.set(n); // the others stop at their next chunk
+            } finally {
+                synchronized (done) {
+                    helping.decrementAndGet();
+                    done.notifyAll();
+                }
+            }
+        };
+        for (int t = 1; t < threads(); t++) {
+            pool().execute(help);
+        }
+        help.run();
+        boolean interrupted = false;
+        synchronized (done) {
+            while (helping.get() > 0) {
+                try {
+                    done.wait();
+                } catch (InterruptedException e) {
+                    interrupted = true; // the chunks taken finish quickly; the interrupt is kept for the caller
+                }
+            }
+        }
+        if (interrupted) {
+            Thread.currentThread().interrupt();
+        }
+        Throwable t = failed.get();
+        if (t instanceof RuntimeException runtime) {
+            throw runtime;
+        }
+        if (t instanceof Error error) {
+            throw error;
+        }
     }
 
     /**

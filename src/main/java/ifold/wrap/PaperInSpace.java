@@ -3,6 +3,7 @@ package ifold.wrap;
 import ifold.geom.DoubleList;
 import ifold.geom.IntList;
 import ifold.geom.PackedIntArrays;
+import ifold.io.Workers;
 import ifold.sheet.HostFrame;
 import ifold.sheet.Isometry2;
 import ifold.sheet.Polygons2;
@@ -137,8 +138,6 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
      * bends would stand within touching distance of each other there ({@link NestedBends}).
      */
     static final double NEST_TOLERANCE = 0.01;
-
-    public static final long[] STATS = new long[8];
 
     private static final class Builder {
         private final Sheet sheet;
@@ -275,23 +274,25 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             sidesOf = new int[faces];
             pressedWhole = new boolean[faces];
             pieceStart = new int[faces + 1];
-            for (int f = 0; f < faces; f++) {
-                List<List<Corner>> pieces = pieces(f);
-                sidesOf[f] = -1;
-                if (pieces == null || pieces.size() == 1) {
-                    int[] loop = sheet.loop(f);
-                    int[] placed = new int[loop.length];
-                    for (int i = 0; i < loop.length; i++) {
-                        placed[i] = vertex(f, loop[i]);
+            try (PiecesAhead ahead = new PiecesAhead(faces)) {
+                for (int f = 0; f < faces; f++) {
+                    FacePieces pieces = ahead.next();
+                    sidesOf[f] = -1;
+                    if (pieces == null || pieces.pieces().size() == 1) {
+                        int[] loop = sheet.loop(f);
+                        int[] placed = new int[loop.length];
+                        for (int i = 0; i < loop.length; i++) {
+                            placed[i] = vertex(f, loop[i]);
+                        }
+                        corners[f] = placed;
+                        pressedWhole[f] = pieces != null && spaceArea(placed) <= 1e-6 * sheetArea(pieces.pieces().get(0));
+                        paper.add(placed);
+                        hostList.add(sheet.host(f));
+                    } else {
+                        placePieces(f, pieces, paper, hostList, caps, capAfter);
                     }
-                    corners[f] = placed;
-                    pressedWhole[f] = pieces != null && spaceArea(placed) <= 1e-6 * sheetArea(pieces.get(0));
-                    paper.add(placed);
-                    hostList.add(sheet.host(f));
-                } else {
-                    placePieces(f, pieces, paper, hostList, caps, capAfter);
+                    pieceStart[f + 1] = paper.size();
                 }
-                pieceStart[f + 1] = paper.size();
             }
             doneWithFaces();
             int[] hosts = hostList.toArray();
@@ -506,6 +507,104 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             inside.clear();
         }
 
+        /** A face's pieces ({@link #pieces}), and which of them lie in a region where paper creeps. */
+        private record FacePieces(List<List<Corner>> pieces, boolean[] inside) {
+        }
+
+        /**
+         * Each face's pieces in turn, cut on a thread of their own ahead of the placing where there
+         * are two threads: on two cores cutting was a quarter of placing the 5,000-triangle torus's
+         * paper, placing the faces cut before it another quarter, one after the other. The cutting
+         * reads only what does not change while faces are placed (the sheet, the frames, the
+         * walls) and writes only the cut points, which the placing does not read: each corner on
+         * a cut carries what the placing needs of its point ({@link CutPoint}), as it was once
+         * the face was cut. So the faces are placed exactly as when cut and placed one by one.
+         */
+        private final class PiecesAhead implements AutoCloseable {
+            /** Faces cut at a time, and batches cut ahead at most: the thread hands over a batch, not a face. */
+            private static final int BATCH = 512;
+            private static final int AHEAD = 8;
+            private final int faces;
+            private final java.util.concurrent.BlockingQueue<Object> cut;
+            private final Thread cutting;
+            private volatile boolean stopped;
+            private FacePieces[] batch = new FacePieces[0];
+            private int inBatch;
+            private int next;
+
+            PiecesAhead(int faces) {
+                this.faces = faces;
+                if (Workers.threads() < 2 || faces <= BATCH) {
+                    cut = null;
+                    cutting = null;
+                    return;
+                }
+                cut = new java.util.concurrent.ArrayBlockingQueue<>(AHEAD);
+                cutting = new Thread(this::cutAll, "ifold-pieces");
+                cutting.setDaemon(true);
+                cutting.start();
+            }
+
+            /** The next face's pieces: null where it is placed whole. */
+            FacePieces next() {
+                if (cut == null) {
+                    return pieces(next++);
+                }
+                if (inBatch == batch.length) {
+                    Object taken;
+                    try {
+                        taken = cut.take();
+                    } catch (InterruptedException e) {
+                        Thread.currentThread().interrupt();
+                        throw new java.util.concurrent.CancellationException("interrupted");
+                    }
+                    if (taken instanceof RuntimeException failed) {
+                        throw failed;
+                    }
+                    if (taken instanceof Error failed) {
+                        throw failed;
+                    }
+                    batch = (FacePieces[]) taken;
+                    inBatch = 0;
+                }
+                next++;
+                return batch[inBatch++];
+            }
+
+            private void cutAll() {
+                try {
+                    for (int from = 0; from < faces && !stopped; from += BATCH) {
+                        FacePieces[] faceBatch = new FacePieces[Math.min(BATCH, faces - from)];
+                        for (int k = 0; k < faceBatch.length; k++) {
+                            faceBatch[k] = pieces(from + k);
+                        }
+                        handOver(faceBatch);
+                    }
+                } catch (RuntimeException | Error failed) {
+                    handOver(failed);
+                }
+            }
+
+            private void handOver(Object item) {
+                try {
+                    while (!stopped && !cut.offer(item, 100, java.util.concurrent.TimeUnit.MILLISECONDS)) {
+                        // the placing is behind: wait, unless it has stopped
+                    }
+                } catch (InterruptedException e) {
+                    stopped = true;
+                }
+            }
+
+            /** Stops the cutting where the placing ends early (it failed): the thread lets go of what it holds. */
+            @Override
+            public void close() {
+                if (cutting != null) {
+                    stopped = true;
+                    cut.clear();
+                }
+            }
+        }
+
         /**
          * Stops the rows of bends standing out where flat paper between their layers leaves their
          * crease's end at an angle ({@link RowsOnPaper}): every face's corners are offered.
@@ -515,7 +614,23 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             if (!rows.any()) {
                 return;
             }
+            // Most corners have no bend's end standing out at them: their sides are placed only
+            // where one has (every corner's were a sixth of the placing). Which faces have such a
+            // corner is asked on every thread (the rows are only read), the rows stopped in order.
+            boolean[] atAnEnd = new boolean[sheet.faceCount()];
+            Workers.forChunks(sheet.faceCount(), 8192, () -> null, (from, to, none) -> {
+                for (int f = from; f < to; f++) {
+                    Isometry2 pose = sheet.pose(f);
+                    for (int i = 0; i < sheet.loopLength(f) && !atAnEnd[f]; i++) {
+                        int v = sheet.loopVertex(f, i);
+                        atAnEnd[f] = rows.near(sheet.host(f), levels[f], pose.x(sheet.u(v), sheet.v(v)), pose.y(sheet.u(v), sheet.v(v)));
+                    }
+                }
+            });
             for (int f = 0; f < sheet.faceCount(); f++) {
+                if (!atAnEnd[f]) {
+                    continue;
+                }
                 Isometry2 pose = sheet.pose(f);
                 int n = sheet.loopLength(f);
                 int host = sheet.host(f);
@@ -523,8 +638,6 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     int v = sheet.loopVertex(f, i);
                     double x = pose.x(sheet.u(v), sheet.v(v));
                     double y = pose.y(sheet.u(v), sheet.v(v));
-                    // Most corners have no bend's end standing out at them: their sides are
-                    // placed only where one has (every corner's were a sixth of the placing).
                     if (!rows.near(host, levels[f], x, y)) {
                         continue;
                     }
@@ -834,6 +947,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             final double v;
             final int id;
             final int side;
+            /** For a corner on a cut, its point as the face's cutting left it ({@link #pieces}); null for a paper vertex. */
+            CutPoint point;
 
             Corner(double x, double y, double u, double v, int id, int side) {
                 this.x = x;
@@ -843,6 +958,14 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 this.id = id;
                 this.side = side;
             }
+        }
+
+        /**
+         * What placing a corner on a cut reads of its point: the two paper vertices of the sheet
+         * edge it lies on (-1 where none), and the unit normal of a line across a region that cut
+         * there (NaN: none did).
+         */
+        private record CutPoint(int one, int two, double lineA, double lineB) {
         }
 
         /** A piece cut in two: the part on the line's positive side and on its negative side (null where none). */
@@ -859,7 +982,11 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             }
         }
 
-        /** For each piece of the face last cut that lies in a region, the region it was cut to (by identity). */
+        /**
+         * For each piece of the face last cut that lies in a region, the region it was cut to (by
+         * identity). This, {@link #inside} and the cut points ({@link #cutPoints}, {@link #cutCells},
+         * {@link #cutNext}) are the cutting's own: on the thread that cuts ahead ({@link PiecesAhead}).
+         */
         private final java.util.Map<List<Corner>, double[]> holding = new java.util.IdentityHashMap<>();
 
         /**
@@ -881,7 +1008,10 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          */
         private DoubleList cutPoints = new DoubleList();
         private static final int CUT_POINT = 10;
-        /** The first space vertex made of each cut point (-1: none; the others by {@link #nextCopy}). */
+        /**
+         * The first space vertex made of each cut point (-1: none; the others by {@link #nextCopy}):
+         * the placing's own, not the cutting's, which runs ahead of it ({@link PiecesAhead}).
+         */
         private IntList cutCopies = new IntList();
 
         /**
@@ -960,7 +1090,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          * Cut where the regions begin and end, each piece is placed as it lies: whole, or squashed
          * onto its region's line (where the paper ends, it has no area).
          */
-        private List<List<Corner>> pieces(int f) {
+        private FacePieces pieces(int f) {
             int host = sheet.host(f);
             if (!(sheet.thickness() > 0) || walls == null) {
                 return null;
@@ -992,11 +1122,9 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             }
             double tiny = Math.max(sheet.tolerance() * 1e-3, 1e-6 * size);
             List<double[]> regions = regions(f, whole, tiny);
-            STATS[0]++;
             if (regions.isEmpty()) {
                 return null;
             }
-            STATS[1]++; STATS[2] += regions.size();
             List<List<Corner>> pieces = new ArrayList<>();
             pieces.add(whole);
             inside.clear();
@@ -1053,11 +1181,20 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             }
             if (pieces.size() <= 1) {
                 // Whole: met by no region, or lying wholly in one (placed whole, pressed onto its line).
-                return pieces.size() == 1 && inside.contains(pieces.get(0)) ? pieces : null;
+                return pieces.size() == 1 && inside.contains(pieces.get(0)) ? new FacePieces(pieces, new boolean[] {true}) : null;
             }
-            STATS[3]++; STATS[4] += pieces.size();
             joinCuts(pieces, tiny);
-            return pieces;
+            boolean[] inRegion = new boolean[pieces.size()];
+            for (int p = 0; p < pieces.size(); p++) {
+                inRegion[p] = inside.contains(pieces.get(p));
+                for (Corner c : pieces.get(p)) {
+                    if (c.id < 0) {
+                        int at = CUT_POINT * (-1 - c.id);
+                        c.point = new CutPoint((int) cutPoints.get(at + 4), (int) cutPoints.get(at + 5), cutPoints.get(at + 8), cutPoints.get(at + 9));
+                    }
+                }
+            }
+            return new FacePieces(pieces, inRegion);
         }
 
         /**
@@ -1075,8 +1212,6 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 }
             }
             List<Corner> cuts = new ArrayList<>(byId.values());
-            int cornersAll = 0; for (List<Corner> pc : pieces) cornersAll += pc.size();
-            STATS[5] += cuts.size(); STATS[6] += (long) cornersAll * cuts.size();
             for (int p = 0; p < pieces.size(); p++) {
                 List<Corner> piece = pieces.get(p);
                 List<Corner> joined = new ArrayList<>(piece.size());
@@ -1090,9 +1225,20 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     double dx = there.x - here.x;
                     double dy = there.y - here.y;
                     double length2 = dx * dx + dy * dy;
-                    List<double[]> between = new ArrayList<>();
+                    // A corner on the edge lies in its box: one more than tiny outside is either
+                    // off its line or past an end by more than tiny, as the tests below find too
+                    // (half the corners of the 5,000-triangle torus's faces were tested against all
+                    // their face's cuts: 49 million tests).
+                    double left = Math.min(here.x, there.x) - tiny;
+                    double right = Math.max(here.x, there.x) + tiny;
+                    double bottom = Math.min(here.y, there.y) - tiny;
+                    double top = Math.max(here.y, there.y) + tiny;
+                    List<double[]> between = null;
                     for (int i = 0; i < cuts.size(); i++) {
                         Corner c = cuts.get(i);
+                        if (!(c.x >= left && c.x <= right && c.y >= bottom && c.y <= top)) {
+                            continue;
+                        }
                         if (c.id == here.id || c.id == there.id || !(length2 > 0)) {
                             continue;
                         }
@@ -1100,8 +1246,14 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                         double off = Math.abs((c.x - here.x) * dy - (c.y - here.y) * dx) / Math.sqrt(length2);
                         // On the edge to rounding (a crossing of it), not merely near it.
                         if (off <= 1e-6 * tiny && t * Math.sqrt(length2) > tiny && (1 - t) * Math.sqrt(length2) > tiny) {
+                            if (between == null) {
+                                between = new ArrayList<>();
+                            }
                             between.add(new double[] {t, i});
                         }
+                    }
+                    if (between == null) {
+                        continue;
                     }
                     between.sort((a, b) -> Double.compare(a[0], b[0]));
                     for (double[] at : between) {
@@ -1216,13 +1368,12 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             // lines crossing an edge at one point, where a wall ends on a mitre).
             int known = cutAt(sheet.host(f), levels[f], u, v);
             if (known < 0) {
-                known = cutCopies.size();
+                known = cutPoints.size() / CUT_POINT;
                 // And the sheet edge it lies on (its two paper vertices), where it lies on one.
                 for (double value : new double[] {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), u, v, one, two, sheet.host(f), levels[f],
                     Double.NaN, Double.NaN}) {
                     cutPoints.add(value);
                 }
-                cutCopies.add(-1);
                 long cell = cell(sheet.host(f), levels[f], Math.floorDiv(Math.round(u / SAME_POINT), CELL_POINTS),
                         Math.floorDiv(Math.round(v / SAME_POINT), CELL_POINTS));
                 if (known >= cutNext.length) {
@@ -1300,25 +1451,24 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 return vertex(f, c.id, bx, by);
             }
             int index = -1 - c.id;
-            double[] cut = new double[CUT_POINT];
-            for (int k = 0; k < CUT_POINT; k++) {
-                cut[k] = cutPoints.get(CUT_POINT * index + k);
-            }
             // On a sheet edge that goes over an edge of the surface to another host, it is kept from
             // the end of that edge as the edge's ends are (HostFrame.Stop).
             double[] over = null;
-            if (cut[4] >= 0 && frames[sheet.host(f)].stops() != null) {
-                int g = sheet.faceAcross((int) cut[4], (int) cut[5]);
+            if (c.point.one() >= 0 && frames[sheet.host(f)].stops() != null) {
+                int g = sheet.faceAcross(c.point.one(), c.point.two());
                 if (g < 0) {
-                    g = sheet.faceAcross((int) cut[5], (int) cut[4]);
+                    g = sheet.faceAcross(c.point.two(), c.point.one());
                 }
                 if (g >= 0 && sheet.host(g) != sheet.host(f)) {
                     Isometry2 pose = sheet.pose(f);
-                    int p = (int) cut[4];
-                    int q = (int) cut[5];
+                    int p = c.point.one();
+                    int q = c.point.two();
                     over = new double[] {pose.x(sheet.u(p), sheet.v(p)), pose.y(sheet.u(p), sheet.v(p)), pose.x(sheet.u(q), sheet.v(q)),
                         pose.y(sheet.u(q), sheet.v(q))};
                 }
+            }
+            while (cutCopies.size() <= index) {
+                cutCopies.add(-1);
             }
             int v = placed(f, c.x, c.y, c.u, c.v, over, bx, by, cutCopies.get(index));
             cutCopies.set(index, linked(cutCopies.get(index), v));
@@ -1332,8 +1482,9 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          * are placed apart along the cut between them (the end of a wall, where the paper on one
          * side ends on the wall and on the other runs on to its mitre) a cap across, of no area.
          */
-        private void placePieces(int f, List<List<Corner>> pieces, List<int[]> paper, IntList hostList, List<int[]> caps,
+        private void placePieces(int f, FacePieces facePieces, List<int[]> paper, IntList hostList, List<int[]> caps,
                 IntList capAfter) {
+            List<List<Corner>> pieces = facePieces.pieces();
             int[] loop = sheet.loop(f);
             List<List<double[]>> along = new ArrayList<>();
             for (int i = 0; i < loop.length; i++) {
@@ -1341,7 +1492,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             }
             java.util.Map<List<Integer>, int[]> cuts = new java.util.HashMap<>();
             List<int[]> tears = new ArrayList<>();
-            for (List<Corner> piece : pieces) {
+            for (int p = 0; p < pieces.size(); p++) {
+                List<Corner> piece = pieces.get(p);
                 double bx = 0;
                 double by = 0;
                 for (Corner c : piece) {
@@ -1356,7 +1508,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 paper.add(placed);
                 hostList.add(sheet.host(f));
                 // A piece in a region where paper creeps, pressed onto the line where its layer ends.
-                boolean squashed = inside.contains(piece) && spaceArea(placed) <= 1e-6 * sheetArea(piece);
+                boolean squashed = facePieces.inside()[p] && spaceArea(placed) <= 1e-6 * sheetArea(piece);
                 for (int k = 0; k < n; k++) {
                     Corner here = piece.get(k);
                     Corner there = piece.get((k + 1) % n);
@@ -1401,8 +1553,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             if (c.id >= 0) {
                 return new double[] {Double.NaN, Double.NaN};
             }
-            int p = CUT_POINT * (-1 - c.id);
-            return new double[] {cutPoints.get(p + 8), cutPoints.get(p + 9)};
+            return new double[] {c.point.lineA(), c.point.lineB()};
         }
 
         /** The area of a polygon of space vertices. */
