@@ -121,6 +121,31 @@ class SharpApexTest {
     }
 
     /**
+     * A tetrahedral spike 12 high over an irregular base, its apex off centre (a newcomer's shape,
+     * 2026-12-05): its strip rolled round the apex lays 13 layers, clean (measured 2026-12-06).
+     * Before, the turns of the triangles stopped short of the apex laid their paper a width
+     * nearer it than the stop, beyond the faces' edges, and those tucks' bends lay under the caps
+     * of the roll's creases over the edges: 14 layers but 12 crossing pairs of caps, so the seam
+     * kept a sound start of 39.
+     */
+    @Test
+    void anOffCentreSpikeKeepsTheRollsStartAndItsPaperIsSound() throws Exception {
+        PolygonSoup soup = new PolygonSoup();
+        soup.addVertex(0, 0, 0);
+        soup.addVertex(1, 0, 0);
+        soup.addVertex(0.4, 0.9, 0);
+        soup.addVertex(0.55, 0.3, 12);
+        soup.addTriangle(0, 2, 1);
+        soup.addTriangle(0, 1, 3);
+        soup.addTriangle(1, 2, 3);
+        soup.addTriangle(2, 0, 3);
+        HalfedgeMesh spike = MeshBuilder.build(soup, MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();
+        assertTrue(!Double.isNaN(Seam.rollShare(ifold.job.WrapPath.of(spike).refinement())), "setup: the roll's start is tried");
+        int layers = wrapAndCheck(spike);
+        assertTrue(layers <= 13, layers + " layers");
+    }
+
+    /**
      * Spikes of faces just past the preparation's target of 20°, where the roll is not offered:
      * their triangles stop short of the apex too (StripFolding.STOPS_SHORT_BELOW), 18 and 16
      * layers, measured, where the tucks piled 29 at 20.5° and 22 at 21.5°.
