@@ -194,8 +194,9 @@ public final class WrapJob {
     /**
      * Where the seam passed over a start with fewer layers than the one kept because its paper
      * collides, one line saying so, naming {@code model}; null where it did not. (The irregular
-     * pentagonal pyramid of SeamTest: "begun where its paper is sound: a start with 37 layers, not
-     * 54, was passed over, the collision check finding 63 collisions in its paper".)
+     * pentagonal pyramid of SeamTest, before its roll was mended: "begun where its paper is
+     * sound: a start with 37 layers, not 54, was passed over, the collision check finding 63
+     * collisions in its paper".)
      */
     static String passedOver(String model, Seam.Chosen seam) {
         int kept = seam.placed().analysis().maxLayers();

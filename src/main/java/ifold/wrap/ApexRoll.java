@@ -63,12 +63,25 @@ final class ApexRoll {
     }
 
     /**
-     * How far from apex v the roll of the strip's end (the last triangle's last pass along its
-     * base into v, then over each edge at v in turn) covers each host round v across its whole
-     * width: w / sin φ, φ the angle from the base at which the roll leaves the host's wedge the
-     * first time it has crossed all of it. Null where a host round v is not a plane's corner.
+     * How far from the apex the roll covers a host round it.
+     *
+     * @param whole how far it covers the host's whole width: w / sin φ, φ the angle from the
+     *     last pass's side at which the roll leaves the host's wedge the first time it has
+     *     crossed all of it
+     * @param entering how far along the host's edge the roll first crosses into it by the cap of
+     *     that crease reaches: w / sin φ, φ the angle of that edge from the last pass's side (as
+     *     far as the host before it is covered whole)
+     * @param enteredBy the host's corner at the other end of that edge from the apex
      */
-    static Map<Integer, Double> coverage(IndexedPolygons mesh, PathPlan plan, HostPieces pieces, int v, int last, double w) {
+    record Reach(double whole, double entering, int enteredBy) {
+    }
+
+    /**
+     * How far from apex v the roll of the strip's end (the last triangle's last pass along its
+     * base into v, then over each edge at v in turn) covers each host round v ({@link Reach}).
+     * Null where a host round v is not a plane's corner.
+     */
+    static Map<Integer, Reach> coverage(IndexedPolygons mesh, PathPlan plan, HostPieces pieces, int v, int last, double w) {
         double[] apex = position(mesh, v);
         int other = plan.baseFrom[last] == v ? plan.baseTo[last] : plan.baseFrom[last];
         double[] along = unit(sub(position(mesh, other), apex));
@@ -94,7 +107,7 @@ final class ApexRoll {
         }
         double phi = angle(along, sub(position(mesh, out), apex));
         double rest = angle(along, sub(position(mesh, back), apex));
-        Map<Integer, Double> covers = new HashMap<>();
+        Map<Integer, Reach> covers = new HashMap<>();
         int host = start;
         int from = out;
         for (int round = 0; round < 64; round++) {
@@ -109,15 +122,26 @@ final class ApexRoll {
             }
             int next = hc[(k + 1) % hc.length] == from ? hc[(k + hc.length - 1) % hc.length] : hc[(k + 1) % hc.length];
             double wedge = angle(sub(position(mesh, from), apex), sub(position(mesh, next), apex));
+            double entering = w / Math.sin(Math.min(Math.PI / 2, phi));
             if (host == start) {
-                covers.put(host, w / Math.sin(Math.min(Math.PI / 2, phi + rest)));
+                covers.put(host, new Reach(w / Math.sin(Math.min(Math.PI / 2, phi + rest)), entering, from));
                 return covers;
             }
             phi += wedge;
-            covers.put(host, w / Math.sin(Math.min(Math.PI / 2, phi)));
+            covers.put(host, new Reach(w / Math.sin(Math.min(Math.PI / 2, phi)), entering, from));
             from = next;
         }
         return null;
+    }
+
+    /**
+     * Whether the segment from apex v to vertex {@code end} of {@code mesh} runs along the edge
+     * by which the roll first enters a host ({@link Reach#enteredBy}).
+     */
+    static boolean alongEntered(IndexedPolygons mesh, int v, Reach reach, int end) {
+        double[] apex = position(mesh, v);
+        double[] along = unit(sub(position(mesh, end), apex));
+        return dot(along, unit(sub(position(mesh, reach.enteredBy()), apex))) > 1 - Tolerance.RELATIVE_EQUALITY;
     }
 
     private static int indexOf(int[] a, int x) {

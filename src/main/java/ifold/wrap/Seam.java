@@ -22,7 +22,8 @@ import java.util.List;
  *
  * <p>Fewest layers are not enough: a start may give paper that passes through itself where
  * another does not (an irregular pentagonal pyramid begun at its apex, rolled round it, made 37
- * layers and 63 crossing pairs of caps, where the other starts made 54 layers and none). So
+ * layers and 63 crossing pairs of caps, where the other starts made 54 layers and none, until
+ * its roll was mended: 22 and none). So
  * where a {@link PaperCheck} is given, a start whose paper collides is kept only where every
  * start's does. The check belongs to whoever calls: the seam folds paper, the independent
  * checker (which reads the exported file) judges it.

@@ -88,7 +88,8 @@ final class StripFolding {
     private Isometry2 intoHost;
     /**
      * Where the triangle being wrapped stops short of a sharp corner of its host at an end of its
-     * base: the x of its frame that no turn, fold back or end passes towards that end; NaN where none.
+     * base: the x of its frame that no turn, fold back or end passes towards that end (at the
+     * roll's stop, that no fold's paper passes, save for {@link #stopSlack}); NaN where none.
      */
     private double stopX = Double.NaN;
     /** The end of the base that {@link #stopX} keeps clear: +1 its end at x = base length, -1 at x = 0. */
@@ -114,10 +115,11 @@ final class StripFolding {
     /**
      * The true sharp vertex (a spike's apex) the strip begins at and ends rolled round
      * ({@link #rollApex}), -1 none; and for each host round it, how far from it the roll covers
-     * the host's whole width, where that host's triangles stop short of it.
+     * the host's whole width, where that host's triangles stop short of it, and how far its
+     * crease into the host reaches along the edge it crosses ({@link ApexRoll.Reach}).
      */
     private int rolledApex = -1;
-    private Map<Integer, Double> rollCovers;
+    private Map<Integer, ApexRoll.Reach> rollCovers;
     /** The path's triangles (from 0) on each host, found when a triangle at a sharp corner first asks. */
     private Map<Integer, List<Integer>> pathOnHost;
 
@@ -177,13 +179,10 @@ final class StripFolding {
         double[] hostCorners = hostFrames[hostOf(i)].corners();
         stopShort(i, frame, hostCorners);
         sharpEnd(i, frame, hostCorners);
-        boolean skip = i == 0 && rolledApex >= 0;
+        double drop = rolledDrop(i);
+        boolean skip = drop > 0;
         if (skip) {
-            // The first passes begin where the whole band lies that far from the apex or more:
-            // a band of height s below the apex reaches s / sin α along an edge at α to the base.
-            double x0 = frame.apexX();
-            double sine = h / Math.max(Math.hypot(x0, h), Math.hypot(frame.baseLength() - x0, h));
-            h -= rollReach(0) * sine;
+            h -= drop;
             k = passes(h, w);
         }
         double[] bottom = last || skip ? null : evenedUp(edges, k, d, i, hostCorners);
@@ -280,7 +279,43 @@ final class StripFolding {
      * of it, 4 pairs of caps; 8 at 0.3 of a width over the tangent of the face's angle).
      */
     private double rollReach(int i) {
-        return rollCovers.get(hostOf(i));
+        return rollCovers.get(hostOf(i)).whole();
+    }
+
+    /**
+     * How far below its apex path triangle i's passes begin, where it is entered at the rolled
+     * apex: the first triangle, or one the path comes back to the apex by (an irregular
+     * pentagonal pyramid's path enters its apex twice; begun at the apex there, its first pass
+     * crossed the apex with a side of the strip, under the roll's creases: 63 crossing pairs of
+     * caps). Its passes begin where the whole band lies as far from the apex as the roll covers
+     * the host's whole width or more (a band of height s below the apex reaches s / sin α along
+     * an edge at α to the base); 0 for any other triangle.
+     */
+    private double rolledDrop(int i) {
+        if (rolledApex < 0 || plan.start[i] != rolledApex) {
+            return 0;
+        }
+        HostFrame frame = plan.frames[i];
+        double h = frame.altitude();
+        double x0 = frame.apexX();
+        double sineFrom = h / Math.hypot(x0, h);
+        double sineTo = h / Math.hypot(frame.baseLength() - x0, h);
+        double drop = rollReach(i) * Math.min(sineFrom, sineTo);
+        if (i > 0) {
+            // Where a side runs along the host's edge that the roll first crosses into the host
+            // by, the band meets that edge no nearer than that crease's cap reaches, farther
+            // than R: nearer, the first pass, wider than the face there, was tucked over that
+            // edge under the cap (the pentagonal pyramid: 4 crossing pairs of caps, 1.26 T deep).
+            // Not the first triangle's: its host is the roll's own, entered last, and the spikes
+            // so begun were left bare by their apex (coverage 1 − 2·10⁻⁵).
+            ApexRoll.Reach reach = rollCovers.get(hostOf(i));
+            for (int end : new int[] {plan.baseFrom[i], plan.baseTo[i]}) {
+                if (ApexRoll.alongEntered(mesh, rolledApex, reach, end)) {
+                    drop = Math.max(drop, reach.entering() * (end == plan.baseFrom[i] ? sineFrom : sineTo));
+                }
+            }
+        }
+        return drop;
     }
 
     /**
@@ -452,7 +487,8 @@ final class StripFolding {
      * and the triangle does not stop short of it ({@link #stopShort}: evened up there as at a
      * corner), or where no two turns have their gadgets so. A triangle that stops short of a
      * sharp corner and leaves by it is evened up the other way: its last pass runs away from
-     * that corner, the fold back lying at the other end.
+     * that corner, the fold back lying at the other end; where it stops where the roll round
+     * that corner stops covering its host ({@link #stopsAtRoll}), into the corner, to the stop.
      */
     private double[] evenedUp(SlantedEdges edges, int k, int d, int i, double[] host) {
         int towardsExit = plan.start[i + 1] == plan.baseTo[i] ? 1 : -1;
@@ -466,8 +502,12 @@ final class StripFolding {
         // rather than into the corner and a fold back beyond it, so that its last pass, the fold
         // back and the next first pass are not three sides of the strip round the corner (a
         // square pyramid of 2.5° faces had two such corners of a face, 216 layers, now 74).
+        // At the roll's stop the other way: the next triangle begins short of the apex too
+        // (rolledDrop), its first pass and the turn into it beyond the stop, and a last pass run
+        // away from the apex and back to that turn left the band between them bare (the irregular
+        // pentagonal pyramid: coverage 1 − 9·10⁻⁷); run into the apex, it reaches the stop.
         boolean leavesBySharp = !Double.isNaN(stopX) && plan.start[i + 1] == (stopSide > 0 ? plan.baseTo[i] : plan.baseFrom[i]);
-        if (leavesBySharp ? k < 2 || lastDirection != towardsExit
+        if (leavesBySharp ? k < 2 || (lastDirection == towardsExit) == stopsAtRoll
                 : k < 2 || lastDirection == towardsExit || gadgetOnHost(edges, lastDirection, 0, w, host)) {
             return null;
         }
@@ -891,7 +931,7 @@ final class StripFolding {
                 there.localX(a), there.localY(a), there.localX(b), there.localY(b));
         Isometry2 back = development.inverse();
         int dNext = firstDirection(plan, i + 1, w);
-        double centre = there.altitude() - w / 2;
+        double centre = there.altitude() - rolledDrop(i + 1) - w / 2;
         double cx = back.x(0, centre);
         double cy = back.y(0, centre);
         double ox = back.dx(dNext, 0);

@@ -159,13 +159,16 @@ class SeamTest {
     }
 
     /**
-     * A tall pentagonal pyramid over an irregular base (found by a newcomer's try, 2026-12-05):
-     * begun at its apex and rolled round it, its strip makes 37 layers and 63 crossing pairs of
-     * caps within 0.2 of the apex, where its four other starts make 54 and none. As the wrap
-     * command asks, the independent checker judges each start: the sound one is kept.
+     * A tall pentagonal pyramid over an irregular base (found by a newcomer's try, 2026-12-05),
+     * whose path enters its apex twice: begun at the apex and rolled round it, its strip made 37
+     * layers and 63 crossing pairs of caps within 0.2 of the apex, where its four other starts
+     * make 54 and none, and the seam (asking the independent checker of each start, as the wrap
+     * command does) kept a sound start of 54. Now the triangle the path comes back to the apex by
+     * begins short of it too (StripFolding.rolledDrop): 22 layers, measured (2026-12-06), and
+     * its paper sound, so the roll's start is kept.
      */
     @Test
-    void anIrregularPyramidKeepsASoundStartOverTheRollThatCrosses() throws Exception {
+    void anIrregularPyramidKeepsTheRollsStartItsPaperSound() throws Exception {
         PolygonSoup soup = new PolygonSoup();
         double[][] base = {{0, 0}, {1, 0}, {1.3, 0.8}, {0.4, 1.1}, {-0.2, 0.5}};
         for (double[] corner : base) {
@@ -184,10 +187,9 @@ class SeamTest {
         assertEquals(Seam.TRIED.length + 1, layers.size(), "the roll's start is tried too: " + layers);
         int rolled = Seam.TRIED.length;
         assertTrue(layers.get(rolled) < Collections.min(layers.subList(0, rolled)), "the roll has fewest layers: " + layers);
-        assertTrue(collisions.get(rolled) > 0, "the roll's paper collides: " + collisions);
-        assertEquals(0, collisions.get(0));
-        assertTrue(chosen.along() != Seam.rollShare(refinement), "a start that does not collide is kept: " + collisions);
-        assertEquals(layers.get(0), chosen.placed().analysis().maxLayers());
+        assertEquals(0, collisions.get(rolled), "the roll's paper is sound: " + collisions);
+        assertEquals(Seam.rollShare(refinement), chosen.along(), "the roll's start is kept: " + layers);
+        assertTrue(chosen.placed().analysis().maxLayers() <= 22, layers.toString());
         WrapTest.check(dir, chosen.result(), pyramid, refinement.componentCount(), 2000);
         PaperCollisions.Result check = PaperCollisions.check(Files.readString(dir.resolve("wrap.obj")), chosen.result().thickness());
         assertTrue(check.isClean(), check.summary());
