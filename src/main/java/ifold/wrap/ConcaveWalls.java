@@ -220,7 +220,7 @@ final class ConcaveWalls {
         for (int k = 0; k < bends.size(); k++) {
             reach[k] += (0.5 - ranks[k]) * thickness; // the wall, and the half of the paper's thickness on its far side
         }
-        leaveOnCreaseWhereCrossed(bends, outs, along, onCut, edgeOf, reach, frames, tolerance);
+        leaveOnCreaseWhereCrossed(bends, outs, along, onCut, edgeOf, reach, frames, tolerance, thickness);
         double[] nestMost = cutNests(bends, along, onCut, edgeOf, need, from, to);
         List<List<Wall>> wallsOf = new ArrayList<>(java.util.Collections.nCopies(frames.length, (List<Wall>) null));
         for (int k = 0; k < bends.size(); k++) {
@@ -233,7 +233,15 @@ final class ConcaveWalls {
             if (wallsOf.get(bend.host()) == null) {
                 wallsOf.set(bend.host(), new ArrayList<>());
             }
-            wallsOf.get(bend.host()).add(new Wall(edgeOf[k], from[k], to[k], bend.low(), bend.high(), in, edge));
+            // A fold along a whole cut up to a corner where another whole cut meets it holds its
+            // layers up to that cut, not only beside its crease: at an obtuse corner the strip
+            // beside the crease leaves out a sliver by the other cut, where its layers went unmoved.
+            HostFrame frame = frames[bend.host()];
+            int corners = frame.corners().length / 2;
+            boolean fromCorner = onCut[k] && from[k] <= tolerance && wholeCut(frame, (edgeOf[k] + corners - 1) % corners);
+            boolean toCorner = onCut[k] && to[k] >= edge[4] - tolerance && wholeCut(frame, (edgeOf[k] + 1) % corners);
+            wallsOf.get(bend.host()).add(new Wall(edgeOf[k], fromCorner ? Double.NEGATIVE_INFINITY : from[k],
+                    toCorner ? Double.POSITIVE_INFINITY : to[k], bend.low(), bend.high(), in, edge));
         }
         // Two folds back to back on one crease line cannot both stand on it: each stands back half
         // a thickness, its layers ending on its own side (where it does not already stand on a wall).
@@ -357,6 +365,21 @@ final class ConcaveWalls {
         return false;
     }
 
+    /** Whether edge k of the frame's polygon is a whole cut, a cut between two hosts of a plane from end to end ({@code BendRoom.WHOLE_CUT_MITRE}). */
+    private static boolean wholeCut(HostFrame frame, int k) {
+        double[] stretches = frame.mitre() == null ? null : frame.mitre()[k];
+        if (stretches == null) {
+            return false;
+        }
+        for (int i = 0; i + 2 < stretches.length; i += 3) {
+            if (Math.abs(stretches[i + 2] - BendRoom.WHOLE_CUT_MITRE) >= BendRoom.CUT_MITRE / 2) {
+                return false;
+            }
+        }
+        double[] edge = frame.edge(k);
+        return withinStretches(stretches, 0, edge[4], Tolerance.ON_PLANE * edge[4]);
+    }
+
     /** Whether both ends of b's crease lie on the line of a's, within {@code within}. */
     private static boolean sameLine(NestedBends.Bend a, NestedBends.Bend b, double within) {
         double dx = a.bx() - a.ax();
@@ -397,10 +420,14 @@ final class ConcaveWalls {
      *     of the neighbour's side running on past a reflex corner: on the L prism a fold along
      *     y = 1 ending on a short fold along the diagonal, 3 crossing pairs, 0.28 T);
      * <li>runs along another cut from the same end, where three or more hosts meet, its fold
-     *     wrapping more levels (figure3's corners inside its face, where four and five cuts meet:
-     *     both nests walled, their levels interleaved, 40 crossing pairs, 1.9 T). Of two such folds
-     *     the one wrapping more stands back; with both on their crease figure3 had 342 pairs in
-     *     one plane rather than 243;
+     *     wrapping more levels, and the bend of one of the two, its layers held back from the
+     *     other's cut by different walls there, would slant through a wall along that cut ({@link
+     *     #slantsThrough}). Of two such folds the one wrapping more stands back; with both on their
+     *     crease figure3 had 342 pairs in one plane rather than 243. Elsewhere both stand back, their
+     *     walls meeting in the corner of the two cuts (each holding paper up to the other cut, paper
+     *     within both squashed into it, {@link #place}): figure3's nests there left on their crease
+     *     stood in one plane, 124 of its 128 pairs (walled both before these, they crossed in 76
+     *     pairs, 1.5 T);
      * <li>ends within the reach, off the cut's line, beside the wall (a fold of figure3 by its
      *     reflex corner (3.05, 0.9), its crease from the cut's line 12.8 thicknesses from the
      *     corner to 2.6 in from it, once walls stood half a thickness back: 2 crossing pairs,
@@ -417,7 +444,7 @@ final class ConcaveWalls {
      * edge stands out over that side, beyond the host, and meets no wall of the cut.
      */
     private static void leaveOnCreaseWhereCrossed(List<NestedBends.Bend> bends, double[] outs, boolean[] along,
-            boolean[] onCut, int[] edgeOf, double[] reach, HostFrame[] frames, double tolerance) {
+            boolean[] onCut, int[] edgeOf, double[] reach, HostFrame[] frames, double tolerance, double thickness) {
         Map<Integer, List<Integer>> byHost = new HashMap<>();
         for (int k = 0; k < bends.size(); k++) {
             if (along[k] && onCut[k]) {
@@ -434,8 +461,8 @@ final class ConcaveWalls {
         for (int k = 0; k < bends.size(); k++) {
             if (along[k] && onCut[k]) {
                 HostFrame frame = frames[bends.get(k).host()];
-                crossed[k] = crossed(k, bends, outs, byHost.get(bends.get(k).host()), frame.edge(edgeOf[k]), reach[k], frame,
-                        tolerance);
+                crossed[k] = crossed(k, bends, outs, byHost.get(bends.get(k).host()), frame.edge(edgeOf[k]), reach, frame,
+                        tolerance, along, onCut, edgeOf, thickness);
             }
         }
         for (int k = 0; k < bends.size(); k++) {
@@ -448,7 +475,8 @@ final class ConcaveWalls {
      * {@code edge} of its host, {@code reach} in from it ({@link #leaveOnCreaseWhereCrossed}).
      */
     private static boolean crossed(int k, List<NestedBends.Bend> bends, double[] outs, List<Integer> ofHost, double[] edge,
-            double reach, HostFrame frame, double tolerance) {
+            double[] reaches, HostFrame frame, double tolerance, boolean[] along, boolean[] onCut, int[] edgeOf, double thickness) {
+        double reach = reaches[k];
         NestedBends.Bend wall = bends.get(k);
         for (int j : ofHost) {
             NestedBends.Bend other = bends.get(j);
@@ -479,14 +507,78 @@ final class ConcaveWalls {
             if (aEnd || bEnd) {
                 int wraps = other.high() - other.low();
                 int ownWraps = wall.high() - wall.low();
-                if (side < 0 || wraps > ownWraps || wraps == ownWraps && j < k) {
-                    return true; // into the host, or along another cut wrapping more (or as many, and made first)
+                if (side < 0) {
+                    return true; // into the host
+                }
+                if (wraps > ownWraps || wraps == ownWraps && j < k) {
+                    // Along another cut wrapping more (or as many, and made first): both walled, where
+                    // either's bend would run through a wall along the other's cut.
+                    double cx = aEnd ? other.ax() : other.bx();
+                    double cy = aEnd ? other.ay() : other.by();
+                    if (slantsThrough(k, j, cx, cy, bends, reaches, along, onCut, edgeOf, ofHost, tolerance, thickness)
+                            || slantsThrough(j, k, cx, cy, bends, reaches, along, onCut, edgeOf, ofHost, tolerance, thickness)) {
+                        return true;
+                    }
                 }
             } else if (side < 0 && endsBesideWall(wall, other, edge, reach, frame, tolerance)) {
                 return true;
             }
         }
         return false;
+    }
+
+    /**
+     * Whether fold k's bend, walled along its cut from the corner (cx, cy) where fold j's cut meets
+     * it, would run through a wall along j's cut. The walls along j's cut from that corner ({@code
+     * reaches}, less the half thickness beyond each) hold k's layers back from j's cut, each as far
+     * as the farthest wall holding it, and squash them into the corner of the two cuts' walls
+     * short of that ({@link #place}); so k's bend runs from its lower layer, as far from j's cut as
+     * that is held, to its upper layer, as far as that is, slanting across the walls standing
+     * between. A wall there whose levels meet the heights the bend spans at its distance (above its
+     * lower layer up to the slant, or from the slant up to its upper layer) is run through: on
+     * figure3 by (2.1, 1.15), a fold of levels 0 to 3 from its lower layer unheld to its upper
+     * layer 2.5 thicknesses back, through a wall of levels 1 to 5 standing 1.5 back (5 crossing
+     * pairs, 0.06 T).
+     */
+    private static boolean slantsThrough(int k, int j, double cx, double cy, List<NestedBends.Bend> bends, double[] reaches,
+            boolean[] along, boolean[] onCut, int[] edgeOf, List<Integer> ofHost, double tolerance, double thickness) {
+        NestedBends.Bend fold = bends.get(k);
+        double atLow = 0;
+        double atHigh = 0;
+        for (int g : ofHost) {
+            NestedBends.Bend wall = bends.get(g);
+            if (fromCorner(g, j, cx, cy, bends, along, onCut, edgeOf, tolerance)) {
+                double in = reaches[g] - thickness / 2;
+                atLow = wall.low() <= fold.low() && fold.low() <= wall.high() ? Math.max(atLow, in) : atLow;
+                atHigh = wall.low() <= fold.high() && fold.high() <= wall.high() ? Math.max(atHigh, in) : atHigh;
+            }
+        }
+        if (Math.abs(atHigh - atLow) <= tolerance) {
+            return false; // it stands square: no slant
+        }
+        int span = fold.high() - fold.low();
+        for (int g : ofHost) {
+            NestedBends.Bend wall = bends.get(g);
+            double in = reaches[g] - thickness / 2;
+            if (!fromCorner(g, j, cx, cy, bends, along, onCut, edgeOf, tolerance) || in <= Math.min(atLow, atHigh) + tolerance
+                    || in >= Math.max(atLow, atHigh) - tolerance) {
+                continue;
+            }
+            double bottom = atLow < atHigh ? fold.low() : fold.high() - span * (in - atHigh) / (atLow - atHigh);
+            double top = atLow < atHigh ? fold.low() + span * (in - atLow) / (atHigh - atLow) : fold.high();
+            if (wall.low() < top - Tolerance.RELATIVE_EQUALITY && wall.high() > bottom + Tolerance.RELATIVE_EQUALITY) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Whether fold g is walled along the same cut as fold j, its crease from the corner (cx, cy). */
+    private static boolean fromCorner(int g, int j, double cx, double cy, List<NestedBends.Bend> bends, boolean[] along, boolean[] onCut,
+            int[] edgeOf, double tolerance) {
+        NestedBends.Bend wall = bends.get(g);
+        return along[g] && onCut[g] && edgeOf[g] == edgeOf[j] && bends.get(g).host() == bends.get(j).host()
+                && (Math.hypot(wall.ax() - cx, wall.ay() - cy) <= tolerance || Math.hypot(wall.bx() - cx, wall.by() - cy) <= tolerance);
     }
 
     /** Whether the bend {@code other}, its crease from an end of the wall's crease (its a end, or b), stands out over the wall's span. */
@@ -746,6 +838,9 @@ final class ConcaveWalls {
         }
         // Where two cuts' walls meet at a corner, a move off one may bring the point nearer the other: again, as the mitres do.
         LevelWalls near = wallsNear(host, level);
+        double startX = out[0];
+        double startY = out[1];
+        long cutEdges = 0; // the edges along cuts whose walls moved it (bit k for edge k)
         for (int round = 0; round < 4; round++) {
             boolean cutMoved = false;
             // Only the walls along edges the point lies near can move it: most lie near none, and
@@ -775,6 +870,7 @@ final class ConcaveWalls {
                     double tan = frame.mitreAt(wall.edge(), wx, wy);
                     if (tan > 0 && frame.keepFrom(wall.edge(), wall.in(), out)) {
                         cutMoved |= tan <= HostFrame.CUT_TAN;
+                        cutEdges |= tan <= HostFrame.CUT_TAN && wall.edge() < Long.SIZE ? 1L << wall.edge() : 0;
                         reach = near.reaching(frame, out);
                     }
                 }
@@ -783,6 +879,9 @@ final class ConcaveWalls {
                 break;
             }
         }
+        if (cutEdges != 0) {
+            intoCorner(frame, level, near, startX, startY, own ? startX : bx, own ? startY : by, out);
+        }
         if (backs != null) {
             for (BackWall back : backs) {
                 if (holds(back, level, cx, cy, x, y)) {
@@ -790,6 +889,88 @@ final class ConcaveWalls {
                 }
             }
         }
+    }
+
+    /**
+     * Paper at frame point (x, y), of a piece lying as its point (zx, zy) does, that walls along
+     * whole cuts of its host moved: where the walls holding its level along two such cuts meeting
+     * at a corner both reach (zx, zy), it lies where the two walls meet, squashed into their corner;
+     * where one does, on that wall's line, or at that corner where the line lies within the other's
+     * reach (into {@code out}). Moved off one wall and then off the other, square to each (the cuts
+     * meet at 92° on figure3), paper within both came to rest wherever the second move left it,
+     * pieces of one layer in a small fan around the corner, over its paper beyond (12 pairs in one
+     * plane). Left as the moves placed it where walls along one cut, or along three, hold it.
+     */
+    private void intoCorner(HostFrame frame, double level, LevelWalls near, double x, double y, double zx, double zy, double[] out) {
+        int edgeA = -1;
+        int edgeB = -1;
+        double inA = 0;
+        double inB = 0;
+        for (Wall wall : near.walls()) {
+            if (level < wall.low() - Tolerance.RELATIVE_EQUALITY || level > wall.high() + Tolerance.RELATIVE_EQUALITY) {
+                continue;
+            }
+            double[] edge = wall.line();
+            double s = ((zx - edge[0]) * edge[2] + (zy - edge[1]) * edge[3]) / edge[4];
+            double tan = frame.mitreAt(wall.edge(), zx, zy);
+            if (s < wall.from() - tolerance || s > wall.to() + tolerance || !(tan > 0) || tan > HostFrame.CUT_TAN) {
+                continue;
+            }
+            double in = ((zx - edge[0]) * -edge[3] + (zy - edge[1]) * edge[2]) / edge[4];
+            double startIn = ((x - edge[0]) * -edge[3] + (y - edge[1]) * edge[2]) / edge[4];
+            if (Math.min(in, startIn) >= wall.in() - tolerance) {
+                continue; // beyond the wall: it holds nothing here
+            }
+            if (edgeA < 0 || edgeA == wall.edge()) {
+                inA = edgeA < 0 ? wall.in() : Math.max(inA, wall.in());
+                edgeA = wall.edge();
+            } else if (edgeB < 0 || edgeB == wall.edge()) {
+                inB = edgeB < 0 ? wall.in() : Math.max(inB, wall.in());
+                edgeB = wall.edge();
+            } else {
+                return; // three cuts: as the moves left it
+            }
+        }
+        if (edgeB < 0 || !wholeCut(frame, edgeA) || !wholeCut(frame, edgeB)) {
+            return;
+        }
+        double[] a = frame.edge(edgeA);
+        double[] b = frame.edge(edgeB);
+        // Inward unit normals: left of each edge, the polygon running counter-clockwise.
+        double ax = -a[3] / a[4];
+        double ay = a[2] / a[4];
+        double bx = -b[3] / b[4];
+        double by = b[2] / b[4];
+        boolean withinA = inA - ((zx - a[0]) * ax + (zy - a[1]) * ay) > tolerance;
+        boolean withinB = inB - ((zx - b[0]) * bx + (zy - b[1]) * by) > tolerance;
+        if (!(withinA && withinB)) {
+            // On one wall's line, where that lies beyond the other's reach.
+            double needA = Math.max(0, inA - ((x - a[0]) * ax + (y - a[1]) * ay));
+            double needB = Math.max(0, inB - ((x - b[0]) * bx + (y - b[1]) * by));
+            double onAx = x + needA * ax;
+            double onAy = y + needA * ay;
+            if (inB - ((onAx - b[0]) * bx + (onAy - b[1]) * by) <= tolerance) {
+                out[0] = onAx;
+                out[1] = onAy;
+                return;
+            }
+            double onBx = x + needB * bx;
+            double onBy = y + needB * by;
+            if (inA - ((onBx - a[0]) * ax + (onBy - a[1]) * ay) <= tolerance) {
+                out[0] = onBx;
+                out[1] = onBy;
+                return;
+            }
+        }
+        // Where the two walls' lines meet: n_A . p = cA and n_B . p = cB.
+        double cA = inA + a[0] * ax + a[1] * ay;
+        double cB = inB + b[0] * bx + b[1] * by;
+        double det = ax * by - ay * bx;
+        if (Math.abs(det) < Tolerance.ON_PLANE) {
+            return; // the cuts on one line: as the moves left it
+        }
+        out[0] = (cA * by - ay * cB) / det;
+        out[1] = (ax * cB - cA * bx) / det;
     }
 
     /**

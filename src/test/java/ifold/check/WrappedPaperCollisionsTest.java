@@ -320,9 +320,10 @@ class WrappedPaperCollisionsTest {
     /**
      * Issue 21's measure: the paper the wrap command exports (`ifold wrap M --no-view
      * --export-obj`), read from the file and checked against the model, on every model of
-     * models/ and the shared polyhedra. Each is clean but figure3, whose nested folds where its
-     * cuts meet still overlap in one plane (128 pairs from the start the seam keeps, 2026-12-05;
-     * crossing nothing).
+     * models/ and the shared polyhedra. Each is clean but figure3, whose nested folds along a cut
+     * by its reflex corner (3.05, 0.9) still overlap in one plane (4 pairs from the start the seam
+     * keeps, crossing nothing; 128 before the nests where its cuts meet were walled both, their
+     * walls meeting in the corner of the two cuts, 2026-12-06).
      */
     @ParameterizedTest
     @MethodSource("everyModel")
@@ -342,7 +343,7 @@ class WrappedPaperCollisionsTest {
         assertTrue(check.capFaces() > 0, "setup: folded paper");
         if (file.getFileName().toString().equals("figure3.off")) {
             assertEquals(0, check.crossingPairs() + check.modelCrossings() + check.pointsInside(), check::summary);
-            assertTrue(check.coplanarPairs() <= 128, check::summary);
+            assertTrue(check.coplanarPairs() <= 4, check::summary);
         } else {
             assertTrue(check.isClean(), check::summary);
         }
