@@ -81,6 +81,25 @@ class NestedBendsTest {
     }
 
     @Test
+    void aRowThatWouldRunThroughAWallNearlyInLineStopsOnItFarFromTheCorner() {
+        // As at a random frustum's side face: wall W runs up the y axis from the corner, standing
+        // on its crease, levels 1 to 18; B leaves the corner 7.6 degrees off W, levels 1 to 4,
+        // and stands out 0.1 towards W. B's row meets W's line 0.1 / tan(7.6°) = 0.75 from the
+        // corner, 7.5 times as far as it stands out (held to 4 times, the row ran on square
+        // through W: 5 crossing pairs of caps, 0.99 T deep).
+        double angle = Math.toRadians(7.6);
+        Bend w = new Bend(0, 0, 0, 0, 2, 1, 0, 1, 18);
+        Bend b = new Bend(0, -2 * Math.sin(angle), 2 * Math.cos(angle), 0, 0, Math.cos(angle), Math.sin(angle), 1, 4);
+        double[] past = NestedBends.of(List.of(w, b), TOLERANCE).mitres(new double[] {0, 0.1});
+        assertEquals(-0.1 / Math.tan(angle), past[3], 1e-12);
+        assertEquals(0, past[2], "B's other end is free");
+        // Nearly in line (within asin 0.1, 5.7 degrees), the corner is left square.
+        double inLine = Math.toRadians(5);
+        Bend near = new Bend(0, -2 * Math.sin(inLine), 2 * Math.cos(inLine), 0, 0, Math.cos(inLine), Math.sin(inLine), 1, 4);
+        assertArrayEquals(new double[4], NestedBends.of(List.of(w, near), TOLERANCE).mitres(new double[] {0, 0.1}));
+    }
+
+    @Test
     void aRowThatComesToAFoldFromItsLayersSideStopsOnItsCrease() {
         // As at a corner of the torus's outer half: B runs along the x axis to the corner and
         // stands out 0.1 towards +y; A leaves the corner at 60 degrees, into B's band, and stands
