@@ -13,12 +13,13 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * A convex solid not designed for (docs/wrap.md, Limits, "Found trying shapes not designed
  * for"): a random frustum whose paper crossed itself in 5 pairs of caps, 0.99 T deep, from every
- * start the seam tries. On a side face, by the 94° corner where two of its edges meet the top,
- * a tuck along one edge folded under the paper reaching past it, its fold running on past the
- * corner; the tuck along the other edge then folded that stretch of the fold under too, 7.6° off
- * the first edge. That fold (levels 1 to 4, standing out a thickness round the fold it wraps) ran
- * its row through the wall standing on the first edge (levels 1 to 18): its mitre lay 7.5 T from
- * the corner, more than the 4 times its out that mitres were held to.
+ * start the seam tries. On a side face, by its 94° corner at the top (where its slanted side
+ * meets its edge along the top), a tuck along the slanted side folded under the paper reaching
+ * past it, its fold running on past the corner; the tuck along the top then folded that stretch
+ * of the fold under too, 7.6° off the slanted side. That fold (levels 1 to 4, standing out a
+ * thickness round the fold it wraps) ran its row through the wall standing on the slanted side
+ * (levels 1 to 18): its mitre lay 7.5 T from the corner, more than the 4 times its out that
+ * mitres were held to.
  */
 class RandomFrustumTest {
     @TempDir
