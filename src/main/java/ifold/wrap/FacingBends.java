@@ -91,7 +91,7 @@ final class FacingBends {
             }
         }
         // Each bend's limit is its own to write: the bends are shared out among the threads (on
-        // two cores a tenth of placing the 5,000-triangle torus's paper ran here, on one).
+        // two cores a seventh of placing the 5,000-triangle torus's paper ran here, on one).
         Grid grid = new Grid(bends, out, host, low, high, nx, ny, cell, heads, bendOf, before, tolerance);
         double[] limit = new double[n];
         Workers.forChunks(n, 4096, () -> new Scratch(n), (from, to, scratch) -> {
