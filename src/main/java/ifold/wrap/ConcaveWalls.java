@@ -220,7 +220,14 @@ final class ConcaveWalls {
         for (int k = 0; k < bends.size(); k++) {
             reach[k] += (0.5 - ranks[k]) * thickness; // the wall, and the half of the paper's thickness on its far side
         }
-        leaveOnCreaseWhereCrossed(bends, outs, along, onCut, edgeOf, reach, frames, tolerance, thickness);
+        // The levels each wall holds: its own, widened where a crease ends beside it.
+        int[] lows = new int[bends.size()];
+        int[] highs = new int[bends.size()];
+        for (int k = 0; k < bends.size(); k++) {
+            lows[k] = bends.get(k).low();
+            highs[k] = bends.get(k).high();
+        }
+        leaveOnCreaseWhereCrossed(bends, outs, along, onCut, edgeOf, reach, frames, tolerance, thickness, lows, highs);
         double[] nestMost = cutNests(bends, along, onCut, edgeOf, need, from, to);
         List<List<Wall>> wallsOf = new ArrayList<>(java.util.Collections.nCopies(frames.length, (List<Wall>) null));
         for (int k = 0; k < bends.size(); k++) {
@@ -241,7 +248,7 @@ final class ConcaveWalls {
             boolean fromCorner = onCut[k] && from[k] <= tolerance && wholeCut(frame, (edgeOf[k] + corners - 1) % corners);
             boolean toCorner = onCut[k] && to[k] >= edge[4] - tolerance && wholeCut(frame, (edgeOf[k] + 1) % corners);
             wallsOf.get(bend.host()).add(new Wall(edgeOf[k], fromCorner ? Double.NEGATIVE_INFINITY : from[k],
-                    toCorner ? Double.POSITIVE_INFINITY : to[k], bend.low(), bend.high(), in, edge));
+                    toCorner ? Double.POSITIVE_INFINITY : to[k], lows[k], highs[k], in, edge));
         }
         // Two folds back to back on one crease line cannot both stand on it: each stands back half
         // a thickness, its layers ending on its own side (where it does not already stand on a wall).
@@ -410,7 +417,7 @@ final class ConcaveWalls {
 
     /**
      * Leaves on its crease each fold along a whole cut whose wall another crease of its host would
-     * run into. Its wall, {@code reach} in from the cut with the half thickness beyond, moves the
+     * run into, or widens the levels the wall holds ({@code lows}, {@code highs}, below). Its wall, {@code reach} in from the cut with the half thickness beyond, moves the
      * paper of its levels there; a crease with one layer among those levels and the other not,
      * ending within that reach beside the wall, not square to the cut, would have the one layer's
      * end moved off it and the other left, the bend between them leaning through the wall. Such a
@@ -428,11 +435,16 @@ final class ConcaveWalls {
      *     within both squashed into it, {@link #place}): figure3's nests there left on their crease
      *     stood in one plane, 124 of its 128 pairs (walled both before these, they crossed in 76
      *     pairs, 1.5 T);
-     * <li>ends within the reach, off the cut's line, beside the wall (a fold of figure3 by its
-     *     reflex corner (3.05, 0.9), its crease from the cut's line 12.8 thicknesses from the
-     *     corner to 2.6 in from it, once walls stood half a thickness back: 2 crossing pairs,
-     *     0.05 T).
      * </ul>
+     * A crease ending within the reach, off the cut's line, beside the wall leaves the fold walled,
+     * but the wall holds that crease's other layer too ({@code lows}, {@code highs}: its levels
+     * widened to both), so that the bend stands square behind the wall rather than slanting from
+     * its unheld layer at the crease's end through the wall's foot to its held layer. Figure3 by
+     * its reflex corner (3.05, 0.9): a fold of levels 0 to 2, its crease from the cut's line 12.8
+     * thicknesses from the corner to 2.6 in from it, beside the walls of a nest of levels 1 to 5
+     * and 2 to 3 (3.5 and 4.5 thicknesses back, in a nest with others along the cut); walled with
+     * their own levels, 2 crossing pairs (0.05 T); left on their crease, as before, 4 pairs in one
+     * plane on the cut's line.
      * And a bend standing out from a crease at an end of the cut, not along a side, leaning over
      * the fold's span, stands over where the wall is (the L prism's top, at its reflex corner, a
      * fold square to the diagonal standing out 3 thicknesses along it: 3 crossing pairs, 0.35 T,
@@ -444,7 +456,8 @@ final class ConcaveWalls {
      * edge stands out over that side, beyond the host, and meets no wall of the cut.
      */
     private static void leaveOnCreaseWhereCrossed(List<NestedBends.Bend> bends, double[] outs, boolean[] along,
-            boolean[] onCut, int[] edgeOf, double[] reach, HostFrame[] frames, double tolerance, double thickness) {
+            boolean[] onCut, int[] edgeOf, double[] reach, HostFrame[] frames, double tolerance, double thickness, int[] lows,
+            int[] highs) {
         Map<Integer, List<Integer>> byHost = new HashMap<>();
         for (int k = 0; k < bends.size(); k++) {
             if (along[k] && onCut[k]) {
@@ -462,7 +475,7 @@ final class ConcaveWalls {
             if (along[k] && onCut[k]) {
                 HostFrame frame = frames[bends.get(k).host()];
                 crossed[k] = crossed(k, bends, outs, byHost.get(bends.get(k).host()), frame.edge(edgeOf[k]), reach, frame,
-                        tolerance, along, onCut, edgeOf, thickness);
+                        tolerance, along, onCut, edgeOf, thickness, lows, highs);
             }
         }
         for (int k = 0; k < bends.size(); k++) {
@@ -475,7 +488,8 @@ final class ConcaveWalls {
      * {@code edge} of its host, {@code reach} in from it ({@link #leaveOnCreaseWhereCrossed}).
      */
     private static boolean crossed(int k, List<NestedBends.Bend> bends, double[] outs, List<Integer> ofHost, double[] edge,
-            double[] reaches, HostFrame frame, double tolerance, boolean[] along, boolean[] onCut, int[] edgeOf, double thickness) {
+            double[] reaches, HostFrame frame, double tolerance, boolean[] along, boolean[] onCut, int[] edgeOf, double thickness,
+            int[] lows, int[] highs) {
         double reach = reaches[k];
         NestedBends.Bend wall = bends.get(k);
         for (int j : ofHost) {
@@ -521,7 +535,9 @@ final class ConcaveWalls {
                     }
                 }
             } else if (side < 0 && endsBesideWall(wall, other, edge, reach, frame, tolerance)) {
-                return true;
+                // The wall holds the other layer too, so that the bend stands behind it.
+                lows[k] = Math.min(lows[k], other.low());
+                highs[k] = Math.max(highs[k], other.high());
             }
         }
         return false;

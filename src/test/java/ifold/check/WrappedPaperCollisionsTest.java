@@ -125,15 +125,17 @@ class WrappedPaperCollisionsTest {
 
     /**
      * figure3's one face is cut into convex hosts; a tuck along a cut folds a stack whose bends,
-     * with no room beside them (the neighbour's paper lies in the same plane), stand in one plane:
-     * they overlap there but cross nothing (2,104 pairs crossed, 8.4 T deep, before).
+     * with no room beside them (the neighbour's paper lies in the same plane), stood in one plane
+     * on the cut's line (2,104 pairs crossed, 8.4 T deep, before they stood so; 2,252 overlapping
+     * in one plane then). They now stand back from the cut into their own host, walls a thickness
+     * a rank apart; the last 4 overlapping, by the reflex corner (3.05, 0.9), were a nest of
+     * levels 1 to 5 and 2 to 3 left on the cut's line because a crease (levels 0 to 2) ends beside
+     * its wall: a wall holding one of that fold's layers now holds the other too.
      */
     @Test
-    void figure3sBendsAlongItsCutsOverlapButCrossNothing() throws Exception {
+    void figure3sBendsAlongItsCutsCrossNothingNorOverlap() throws Exception {
         Result result = wrapAndCheck(Path.of("models", "figure3.off"));
-        assertEquals(0, result.crossingPairs(), result::summary);
-        assertEquals(0, result.modelCrossings() + result.pointsInside(), result::summary);
-        assertTrue(result.coplanarPairs() > 0, "setup: stacks folded along the cuts " + result.summary());
+        assertTrue(result.isClean(), result::summary);
     }
 
     /**

@@ -584,10 +584,13 @@ public class WrapTest {
      * where two whole cuts meet, the nests along both walled, their walls meeting in the corner
      * of the two cuts (paper within both walls' reach squashed into it, each wall holding paper
      * up to the other cut), but where a bend, slanting from one layer held back by the other
-     * cut's walls to its other, would run through one of those walls: 163 → 4.
+     * cut's walls to its other, would run through one of those walls: 163 → 4. And a wall beside
+     * which a crease ends, holding one of that fold's layers, holds the other too, rather than
+     * being left on its crease (figure3's nest of levels 1 to 5 and 2 to 3 by the reflex corner
+     * (3.05, 0.9), beside the end of a fold of levels 0 to 2): 4 → 0.
      */
     @ParameterizedTest
-    @CsvSource({"l-prism, 0", "square_frame, 0", "figure3, 4"})
+    @CsvSource({"l-prism, 0", "square_frame, 0", "figure3, 0"})
     void foldsAlongAWholeCutStandBackFromIt(String name, int most) throws Exception {
         HalfedgeMesh mesh;
         if (name.equals("l-prism")) {
