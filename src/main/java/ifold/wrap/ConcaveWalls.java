@@ -128,10 +128,13 @@ final class ConcaveWalls {
     private final boolean[] along;
     /** How high each host's stack stands: the top of its highest layer (for the stops of convex edges, {@link HostFrame.Stop}). */
     private final double[] stackTop;
+    /** By host and corner, whether the corner lies inside its face ({@link #cornersInFace}). */
+    private final boolean[][] inFace;
 
     private ConcaveWalls(double thickness, double tolerance, List<List<Wall>> wallsOf, BackWall[][] backWallsOf, BackWall[] stepsBack,
-            boolean[] along, double[] stackTop, HostFrame[] frames) {
+            boolean[] along, double[] stackTop, HostFrame[] frames, boolean[][] inFace) {
         this.thickness = thickness;
+        this.inFace = inFace;
         this.stepsBack = stepsBack;
         this.tolerance = tolerance;
         this.backWallsOf = backWallsOf;
@@ -229,6 +232,7 @@ final class ConcaveWalls {
         }
         leaveOnCreaseWhereCrossed(bends, outs, along, onCut, edgeOf, reach, frames, tolerance, thickness, lows, highs);
         double[] nestMost = cutNests(bends, along, onCut, edgeOf, need, from, to);
+        boolean[][] inFace = cornersInFace(frames);
         List<List<Wall>> wallsOf = new ArrayList<>(java.util.Collections.nCopies(frames.length, (List<Wall>) null));
         for (int k = 0; k < bends.size(); k++) {
             if (!along[k]) {
@@ -243,10 +247,14 @@ final class ConcaveWalls {
             // A fold along a whole cut up to a corner where another whole cut meets it holds its
             // layers up to that cut, not only beside its crease: at an obtuse corner the strip
             // beside the crease leaves out a sliver by the other cut, where its layers went unmoved.
+            // Only at a corner inside the face: at a reflex corner of the face (the star prism's
+            // inner corners, the cuts 108 degrees apart) the walls held so crossed the tips' paper.
             HostFrame frame = frames[bend.host()];
             int corners = frame.corners().length / 2;
-            boolean fromCorner = onCut[k] && from[k] <= tolerance && wholeCut(frame, (edgeOf[k] + corners - 1) % corners);
-            boolean toCorner = onCut[k] && to[k] >= edge[4] - tolerance && wholeCut(frame, (edgeOf[k] + 1) % corners);
+            boolean fromCorner = onCut[k] && from[k] <= tolerance && wholeCut(frame, (edgeOf[k] + corners - 1) % corners)
+                    && inFace[bend.host()][edgeOf[k]];
+            boolean toCorner = onCut[k] && to[k] >= edge[4] - tolerance && wholeCut(frame, (edgeOf[k] + 1) % corners)
+                    && inFace[bend.host()][(edgeOf[k] + 1) % corners];
             wallsOf.get(bend.host()).add(new Wall(edgeOf[k], fromCorner ? Double.NEGATIVE_INFINITY : from[k],
                     toCorner ? Double.POSITIVE_INFINITY : to[k], lows[k], highs[k], in, edge));
         }
@@ -279,7 +287,7 @@ final class ConcaveWalls {
         for (int h = 0; h < frames.length; h++) {
             backWallsByHost[h] = backWallsOf.get(h) == null ? null : backWallsOf.get(h).toArray(new BackWall[0]);
         }
-        return new ConcaveWalls(thickness, tolerance, wallsOf, backWallsByHost, stepsBack, along, stackTop, frames);
+        return new ConcaveWalls(thickness, tolerance, wallsOf, backWallsByHost, stepsBack, along, stackTop, frames, inFace);
     }
 
     /**
@@ -370,6 +378,55 @@ final class ConcaveWalls {
             }
         }
         return false;
+    }
+
+    /**
+     * By host and corner (corner k where edge k starts), whether the corner lies inside its face:
+     * every host of its plane with a corner there is bounded there by whole cuts on both sides
+     * (figure3's corners (0.8, 1.05) and (2.1, 1.15), where four and five cuts meet), rather than
+     * by an edge of the face (the star prism's inner corners, reflex corners of its star faces,
+     * where the tips' hosts meet the face's edges).
+     */
+    private static boolean[][] cornersInFace(HostFrame[] frames) {
+        boolean[][] inFace = new boolean[frames.length][];
+        for (int h = 0; h < frames.length; h++) {
+            int n = frames[h].corners().length / 2;
+            inFace[h] = new boolean[n];
+            for (int c = 0; c < n; c++) {
+                inFace[h][c] = wholeCut(frames[h], c) && wholeCut(frames[h], (c + n - 1) % n) && cutsOnly(frames, frames[h], c);
+            }
+        }
+        return inFace;
+    }
+
+    /** Whether every host of the plane of corner c of the frame with a corner there has whole cuts on both sides of it. */
+    private static boolean cutsOnly(HostFrame[] frames, HostFrame frame, int c) {
+        double[] p = inSpace(frame, c);
+        double[] normal = frame.normal();
+        for (HostFrame other : frames) {
+            double[] n2 = other.normal();
+            if (normal[0] * n2[0] + normal[1] * n2[1] + normal[2] * n2[2] < 1 - Tolerance.ON_PLANE) {
+                continue;
+            }
+            int n = other.corners().length / 2;
+            for (int i = 0; i < n; i++) {
+                double[] q = inSpace(other, i);
+                double apart = Math.sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+                if (apart <= 100 * Tolerance.ON_PLANE && !(wholeCut(other, i) && wholeCut(other, (i + n - 1) % n))) {
+                    return false;
+                }
+            }
+        }
+        return true;
+    }
+
+    /** Corner c of the frame's polygon, in space. */
+    private static double[] inSpace(HostFrame frame, int c) {
+        double x = frame.corners()[2 * c];
+        double y = frame.corners()[2 * c + 1];
+        double[] o = frame.origin();
+        return new double[] {o[0] + x * frame.ex()[0] + y * frame.ey()[0], o[1] + x * frame.ex()[1] + y * frame.ey()[1],
+                o[2] + x * frame.ex()[2] + y * frame.ey()[2]};
     }
 
     /** Whether edge k of the frame's polygon is a whole cut, a cut between two hosts of a plane from end to end ({@code BendRoom.WHOLE_CUT_MITRE}). */
@@ -896,7 +953,7 @@ final class ConcaveWalls {
             }
         }
         if (cutEdges != 0) {
-            intoCorner(frame, level, near, startX, startY, own ? startX : bx, own ? startY : by, out);
+            intoCorner(host, frame, level, near, startX, startY, own ? startX : bx, own ? startY : by, out);
         }
         if (backs != null) {
             for (BackWall back : backs) {
@@ -917,7 +974,7 @@ final class ConcaveWalls {
      * pieces of one layer in a small fan around the corner, over its paper beyond (12 pairs in one
      * plane). Left as the moves placed it where walls along one cut, or along three, hold it.
      */
-    private void intoCorner(HostFrame frame, double level, LevelWalls near, double x, double y, double zx, double zy, double[] out) {
+    private void intoCorner(int host, HostFrame frame, double level, LevelWalls near, double x, double y, double zx, double zy, double[] out) {
         int edgeA = -1;
         int edgeB = -1;
         double inA = 0;
@@ -949,6 +1006,11 @@ final class ConcaveWalls {
         }
         if (edgeB < 0 || !wholeCut(frame, edgeA) || !wholeCut(frame, edgeB)) {
             return;
+        }
+        int corners = frame.corners().length / 2;
+        int corner = edgeB == (edgeA + 1) % corners ? edgeB : edgeA == (edgeB + 1) % corners ? edgeA : -1;
+        if (corner >= 0 && !inFace[host][corner]) {
+            return; // a reflex corner of the face (the star prism's): as the moves left it
         }
         double[] a = frame.edge(edgeA);
         double[] b = frame.edge(edgeB);
