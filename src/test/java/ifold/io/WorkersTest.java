@@ -37,10 +37,12 @@ class WorkersTest {
     @Timeout(20)
     void theCallerDoesNotWaitForAPoolBusyWithOtherWork() throws Exception {
         // Every thread of the pool held by another task: the caller does all the chunks itself.
+        // (The pool was sized when first used, perhaps while another test asked for more threads.)
+        int poolThreads = ((java.util.concurrent.ThreadPoolExecutor) Workers.pool()).getMaximumPoolSize();
         CountDownLatch release = new CountDownLatch(1);
-        CountDownLatch held = new CountDownLatch(Workers.threads());
+        CountDownLatch held = new CountDownLatch(poolThreads);
         java.util.List<Future<?>> holding = new java.util.ArrayList<>();
-        for (int t = 0; t < Workers.threads(); t++) {
+        for (int t = 0; t < poolThreads; t++) {
             holding.add(Workers.pool().submit(() -> {
                 held.countDown();
                 release.await();
