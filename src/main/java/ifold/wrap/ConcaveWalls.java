@@ -388,32 +388,63 @@ final class ConcaveWalls {
      * where the tips' hosts meet the face's edges).
      */
     private static boolean[][] cornersInFace(HostFrame[] frames) {
+        // The corners not between two whole cuts, filed by a cell of space NEAR across: each
+        // corner between two is compared only with those in the cells about it, not with every
+        // host's (a model of many cut faces would cost the square of its hosts).
+        Map<Long, List<int[]>> open = new HashMap<>();
+        for (int h = 0; h < frames.length; h++) {
+            int n = frames[h].corners().length / 2;
+            for (int c = 0; c < n; c++) {
+                if (!(wholeCut(frames[h], c) && wholeCut(frames[h], (c + n - 1) % n))) {
+                    double[] p = inSpace(frames[h], c);
+                    open.computeIfAbsent(nearCell(p, 0, 0, 0), key -> new ArrayList<>()).add(new int[] {h, c});
+                }
+            }
+        }
         boolean[][] inFace = new boolean[frames.length][];
         for (int h = 0; h < frames.length; h++) {
             int n = frames[h].corners().length / 2;
             inFace[h] = new boolean[n];
             for (int c = 0; c < n; c++) {
-                inFace[h][c] = wholeCut(frames[h], c) && wholeCut(frames[h], (c + n - 1) % n) && cutsOnly(frames, frames[h], c);
+                inFace[h][c] = wholeCut(frames[h], c) && wholeCut(frames[h], (c + n - 1) % n) && cutsOnly(frames, frames[h], c, open);
             }
         }
         return inFace;
     }
 
-    /** Whether every host of the plane of corner c of the frame with a corner there has whole cuts on both sides of it. */
-    private static boolean cutsOnly(HostFrame[] frames, HostFrame frame, int c) {
+    /** Corners of hosts this near in space are one ({@link #cornersInFace}). */
+    private static final double NEAR = 100 * Tolerance.ON_PLANE;
+
+    /** The cell NEAR across of point p moved by (dx, dy, dz) cells. */
+    private static long nearCell(double[] p, int dx, int dy, int dz) {
+        long x = (long) Math.floor(p[0] / NEAR) + dx;
+        long y = (long) Math.floor(p[1] / NEAR) + dy;
+        long z = (long) Math.floor(p[2] / NEAR) + dz;
+        return (x * 0x9E3779B97F4A7C15L + y) * 0xC2B2AE3D27D4EB4FL + z;
+    }
+
+    /**
+     * Whether no host of the plane of corner c of the frame has a corner there that is not
+     * between whole cuts on both sides ({@code open}: such corners by {@link #nearCell}).
+     */
+    private static boolean cutsOnly(HostFrame[] frames, HostFrame frame, int c, Map<Long, List<int[]>> open) {
         double[] p = inSpace(frame, c);
         double[] normal = frame.normal();
-        for (HostFrame other : frames) {
-            double[] n2 = other.normal();
-            if (normal[0] * n2[0] + normal[1] * n2[1] + normal[2] * n2[2] < 1 - Tolerance.ON_PLANE) {
-                continue;
-            }
-            int n = other.corners().length / 2;
-            for (int i = 0; i < n; i++) {
-                double[] q = inSpace(other, i);
-                double apart = Math.sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
-                if (apart <= 100 * Tolerance.ON_PLANE && !(wholeCut(other, i) && wholeCut(other, (i + n - 1) % n))) {
-                    return false;
+        for (int dx = -1; dx <= 1; dx++) {
+            for (int dy = -1; dy <= 1; dy++) {
+                for (int dz = -1; dz <= 1; dz++) {
+                    for (int[] corner : open.getOrDefault(nearCell(p, dx, dy, dz), List.of())) {
+                        HostFrame other = frames[corner[0]];
+                        double[] n2 = other.normal();
+                        if (normal[0] * n2[0] + normal[1] * n2[1] + normal[2] * n2[2] < 1 - Tolerance.ON_PLANE) {
+                            continue;
+                        }
+                        double[] q = inSpace(other, corner[1]);
+                        double apart = Math.sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+                        if (apart <= NEAR) {
+                            return false;
+                        }
+                    }
                 }
             }
         }
