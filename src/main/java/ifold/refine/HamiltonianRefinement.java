@@ -138,7 +138,7 @@ public final class HamiltonianRefinement {
         if (t != triangleCount) {
             throw new IllegalStateException("walk emitted " + t + " triangles, expected " + triangleCount);
         }
-        return new Result(new RefinedMesh(mesh, path, incentres, new EdgeSet(treeEdge)), componentStart, treeEdge);
+        return new Result(new RefinedMesh(mesh, path, incentres, new EdgeSet(treeEdge), false), componentStart, treeEdge);
     }
 
     /**

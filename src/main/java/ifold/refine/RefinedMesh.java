@@ -14,7 +14,9 @@ import ifold.mesh.PolygonSoup;
  *
  * <p>The triangles are not stored as vertex triples. Each is the part of an original face cut
  * off by one of its halfedges {@code h}: the whole sub-triangle (incentre, from(h), to(h)), or
- * its first or second half when the edge of {@code h} is split at its midpoint. So the path is
+ * its first or second half when the edge of {@code h} is split at its midpoint; on the path
+ * through a mesh's own triangles ({@link CycleCoverPath}), the face itself (its corner opposite
+ * h, from(h), to(h)), the split edges those of its splices. So the path is
  * one {@code int} per triangle, {@code h << 2 | part}, and the refinement of 1.4 million
  * triangles takes about a third of the memory that explicit triples would.
  */
@@ -22,6 +24,8 @@ public final class RefinedMesh implements IndexedPolygons {
     static final int WHOLE = 0;
     static final int FIRST_HALF = 1;
     static final int SECOND_HALF = 2;
+    /** The whole face, its corner opposite {@code h} in the incentre's place ({@link CycleCoverPath}). */
+    static final int FACE = 3;
 
     private final HalfedgeMesh original;
     /** Per triangle in path order: the halfedge it stands on, shifted left by 2, or'ed with its part. */
@@ -31,11 +35,23 @@ public final class RefinedMesh implements IndexedPolygons {
     /** The tree edges, one bit per original edge, with the number of set bits before each word. */
     private final EdgeSet treeEdges;
 
-    RefinedMesh(HalfedgeMesh original, int[] path, double[] incentres, EdgeSet treeEdges) {
+    /** Whether the path passes the original triangles whole but where it splices ({@link CycleCoverPath}). */
+    private final boolean ownTriangles;
+
+    RefinedMesh(HalfedgeMesh original, int[] path, double[] incentres, EdgeSet treeEdges, boolean ownTriangles) {
         this.original = original;
         this.path = path;
         this.incentres = incentres;
         this.treeEdges = treeEdges;
+        this.ownTriangles = ownTriangles;
+    }
+
+    /**
+     * Whether this is the path through the original triangles themselves ({@link CycleCoverPath}),
+     * rather than the Hamiltonian refinement.
+     */
+    public boolean ownTriangles() {
+        return ownTriangles;
     }
 
     /**
@@ -52,7 +68,7 @@ public final class RefinedMesh implements IndexedPolygons {
                 turned[from + i] = path[from + Math.floorMod(i + shift[c], length)];
             }
         }
-        return new RefinedMesh(original, turned, incentres, treeEdges);
+        return new RefinedMesh(original, turned, incentres, treeEdges, ownTriangles);
     }
 
     /** The mesh that was refined; its vertices are the first vertices of this one. */
@@ -97,10 +113,10 @@ public final class RefinedMesh implements IndexedPolygons {
     public int faceVertex(int t, int k) {
         int code = path[t];
         int h = code >>> 2;
-        if (k == 0) {
-            return original.vertexCount() + original.face(h);
-        }
         int part = code & 3;
+        if (k == 0) {
+            return part == FACE ? original.toVertex(original.next(h)) : original.vertexCount() + original.face(h);
+        }
         if (k == 1) {
             return part == SECOND_HALF ? midpoint(h) : original.fromVertex(h);
         }
@@ -116,7 +132,7 @@ public final class RefinedMesh implements IndexedPolygons {
         return original.face(path[t] >>> 2);
     }
 
-    /** The original halfedge that triangle {@code t} stands on: its side opposite the incentre lies along it. */
+    /** The original halfedge that triangle {@code t} stands on: its side opposite the incentre (or the face's corner) lies along it. */
     public int parentHalfedge(int t) {
         return path[t] >>> 2;
     }

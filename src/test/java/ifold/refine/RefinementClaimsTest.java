@@ -28,7 +28,7 @@ class RefinementClaimsTest {
         HamiltonianRefinement.Result good = HamiltonianRefinement.refine(CUBE);
         RefinedMesh mesh = good.mesh();
         RefinedMesh wrong = new RefinedMesh(mesh.original(), path != null ? path : (int[]) field(mesh, "path"),
-                incentres != null ? incentres : (double[]) field(mesh, "incentres"), (EdgeSet) field(mesh, "treeEdges"));
+                incentres != null ? incentres : (double[]) field(mesh, "incentres"), (EdgeSet) field(mesh, "treeEdges"), false);
         return new HamiltonianRefinement.Result(wrong, good.componentStart(), good.treeEdge());
     }
 
