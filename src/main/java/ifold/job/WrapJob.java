@@ -178,6 +178,10 @@ public final class WrapJob {
             begun.put("along", seam.along());
             begun.put("layersTried", seam.layersTried());
             begun.put("collisionsTried", seam.collisionsTried());
+            if (!seam.ownLayersTried().isEmpty()) {
+                begun.put("ownLayersTried", seam.ownLayersTried());
+                begun.put("ownCollisionsTried", seam.ownCollisionsTried());
+            }
             figures.put("seam", begun);
         }
         if (NearOrigin.moved(movedBy)) {

@@ -98,6 +98,8 @@ public record WrapPath(FacePreparation.Result preparation, HamiltonianRefinement
         figures.put("centredRegions", preparation.centredRegions());
         figures.put("preparedRegions", preparation.prepared());
         figures.put("used", prepared);
+        // The Hamiltonian refinement's 5n - 2 triangles, or the model's own where the seam kept them.
+        figures.put("follows", refinement.mesh().ownTriangles() ? "ownTriangles" : "refinement");
         figures.put("trianglesBefore", preparation.trianglesBefore());
         figures.put("trianglesAfter", preparation.trianglesAfter());
         figures.put("targetAngle", FacePreparation.TARGET_ANGLE);

@@ -1,6 +1,7 @@
 package ifold.wrap;
 
 import ifold.mesh.IndexedPolygons;
+import ifold.refine.CycleCoverPath;
 import ifold.refine.HamiltonianRefinement;
 import java.util.ArrayList;
 import java.util.List;
@@ -76,7 +77,11 @@ public final class Seam {
      * @param measureSeconds how long placing and measuring the wrap kept took (the other tries' count as wrapping)
      */
     public record Chosen(HamiltonianRefinement.Result refinement, Wrap.Result result, PlacedWrap placed, double along,
-            List<Integer> layersTried, List<Integer> collisionsTried, double measureSeconds) {
+            List<Integer> layersTried, List<Integer> collisionsTried, double measureSeconds, List<Integer> ownLayersTried,
+            List<Integer> ownCollisionsTried) {
+        Chosen(HamiltonianRefinement.Result refinement, Wrap.Result result, PlacedWrap placed, double along, double measureSeconds) {
+            this(refinement, result, placed, along, null, null, measureSeconds, null, null);
+        }
     }
 
     /** As {@link #wrap(HamiltonianRefinement.Result, Wrap.Options, Wrap.Watcher, PaperCheck)}, asking nothing of the paper. */
@@ -152,15 +157,67 @@ public final class Seam {
                 kept = fewer || collides && most == best.placed().analysis().maxLayers() && found < bestFound;
             }
             if (kept) {
-                best = new Chosen(begun, result, placed, shares.get(k), null, null, seconds);
+                best = new Chosen(begun, result, placed, shares.get(k), seconds);
                 bestCollides = collides;
                 bestFound = collides ? found : 0;
+            }
+        }
+        // The path through the model's own triangles, where the refinement's starts were tried:
+        // kept only where the check finds its paper sound and it has fewer layers, or the
+        // refinement's paper collides from every start.
+        List<Integer> ownLayers = new ArrayList<>();
+        List<Integer> ownCollisions = new ArrayList<>();
+        HamiltonianRefinement.Result own = tries > 1 && !refinement.mesh().ownTriangles() ? CycleCoverPath.of(refinement.mesh().original()) : null;
+        if (own != null && tries(own, options.width()) > 1) {
+            Wrap.Watcher quiet = stoppedBy(watcher);
+            for (double share : OWN_TRIED) {
+                HamiltonianRefinement.Result begun = share == 0 ? own : own.begunAt(share);
+                Wrap.Result result;
+                try {
+                    result = Wrap.wrap(begun, options, quiet);
+                } catch (Wrap.WrapException e) {
+                    ownLayers.add(null);
+                    ownCollisions.add(null);
+                    continue;
+                }
+                long measuring = System.nanoTime();
+                PlacedWrap placed = PlacedWrap.of(result);
+                double seconds = (System.nanoTime() - measuring) * 1e-9;
+                int most = placed.analysis().maxLayers();
+                ownLayers.add(most);
+                if (!bestCollides && most >= best.placed().analysis().maxLayers()) {
+                    ownCollisions.add(null);
+                    continue;
+                }
+                int found = check.collisions(result, placed);
+                ownCollisions.add(found >= 0 ? found : null);
+                if (found == 0 && (bestCollides || most < best.placed().analysis().maxLayers())) {
+                    best = new Chosen(begun, result, placed, share, seconds);
+                    bestCollides = false;
+                }
             }
         }
         return new Chosen(best.refinement(), best.result(), best.placed(), best.along(),
                 tries > 1 ? java.util.Collections.unmodifiableList(layers) : List.of(),
                 tries > 1 ? java.util.Collections.unmodifiableList(collisions) : List.of(),
-                best.measureSeconds());
+                best.measureSeconds(), java.util.Collections.unmodifiableList(ownLayers), java.util.Collections.unmodifiableList(ownCollisions));
+    }
+
+    /** Where round the path through the model's own triangles its strip is tried beginning. */
+    static final double[] OWN_TRIED = {0, 0.5};
+
+    /** A watcher that is told nothing but is asked whether to stop: the tries along the own triangles, after the refinement's progress is full. */
+    private static Wrap.Watcher stoppedBy(Wrap.Watcher watcher) {
+        return new Wrap.Watcher() {
+            @Override
+            public void wrapped(int done, int total) {
+            }
+
+            @Override
+            public boolean stopped() {
+                return watcher.stopped();
+            }
+        };
     }
 
     /**

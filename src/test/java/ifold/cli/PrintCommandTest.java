@@ -67,7 +67,7 @@ class PrintCommandTest {
         double mm = 0;
         int outlines = 0;
         Pattern cut = Pattern.compile("<polygon class=\"cut\" points=\"([-0-9.]+),[-0-9.]+ ([-0-9.]+),");
-        String digits = "%0" + Integer.toString(pages).length() + "d";
+        String digits = "%0" + counts.group(1).length() + "d"; // as wide as the last page's number is written
         for (int p = 1; p <= pages; p++) {
             String page = Files.readString(dir.resolve("cube-" + String.format(digits, p) + ".svg"));
             Matcher m = cut.matcher(page);
@@ -207,23 +207,24 @@ class PrintCommandTest {
         Path pdf = dir.resolve("cube-steps.pdf");
         CliTest.Run run = CliTest.run("wrap", "models/cube.off", "--no-view", "--export-diagrams", pdf.toString());
         assertEquals(0, run.code(), run.err());
-        // The first triangle fold by fold (20 panels: the strip begins half way round the path,
-        // where the cube has fewest layers), then the 57 others a panel each; the list of steps on
-        // the title page and one more.
-        assertTrue(run.out().contains("wrote " + pdf + ": 15 pages, 77 steps"), run.out());
+        // The first triangle fold by fold (6 panels: the strip runs along the cube's own 12
+        // triangles, begun half way round, where it has fewest layers and its paper is sound),
+        // then the 11 others a panel each; the list of steps on the title page and one more.
+        assertTrue(run.out().contains("wrote " + pdf + ": 4 pages, 17 steps"), run.out());
         assertTrue(Files.size(pdf) < 5_000_000, "the paper outside each panel left out: " + Files.size(pdf) + " bytes");
         if (!tool("pdftotext")) {
             return;
         }
         Path text = dir.resolve("cube-steps.txt");
-        assertEquals(0, new ProcessBuilder("pdftotext", "-f", "3", "-l", "3", pdf.toString(), text.toString()).start().waitFor());
+        assertEquals(0, new ProcessBuilder("pdftotext", "-f", "2", "-l", "2", pdf.toString(), text.toString()).start().waitFor());
         String words = Files.readString(text).replaceAll("\\s+", " ");
-        assertTrue(words.contains("triangle 1 of 58: pass 1 of 9: turn, 45° valley fold (fold 1 of 20)"), words);
+        assertTrue(words.contains("triangle 1 of 12: pass 1 of 3: turn, 45° valley fold (fold 1 of 6)"), words);
         Path later = dir.resolve("cube-later.txt");
-        assertEquals(0, new ProcessBuilder("pdftotext", "-f", "6", "-l", "6", pdf.toString(), later.toString()).start().waitFor());
+        assertEquals(0, new ProcessBuilder("pdftotext", "-f", "3", "-l", "3", pdf.toString(), later.toString()).start().waitFor());
         words = Files.readString(later).replaceAll("\\s+", " ");
-        // Its panel says which printed creases it makes: those after the first triangle's 20.
-        assertTrue(words.contains("triangle 2 of 58: 20 turn folds, 6 gadget folds (creases 21–46 on the print)"), words);
+        // Its panel says which printed creases it makes: those after the first triangle's 6.
+        assertTrue(words.contains("triangle 2 of 12: 6 turn folds, 6 gadget folds, 1 crossing to the next triangle, 4 tucks"
+                + " (creases 7–23 on the print)"), words);
     }
 
     /** The pixels of a valley's blue (or a mountain's red) in a panel of the top row, from x0 to x1 mm across, at {@code dpi}. */

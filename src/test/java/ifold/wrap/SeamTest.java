@@ -135,7 +135,11 @@ class SeamTest {
         // A check finding the fewest layers' paper colliding: the next fewest is kept. The check is
         // asked of the first start, and then of each with fewer layers than the one kept so far.
         List<Integer> asked = new ArrayList<>();
+        // (The starts along the cube's own triangles, tried after, are found colliding here: see theCubeFollowsItsOwnTriangles...)
         Seam.Chosen chosen = Seam.wrap(refinement, DEFAULTS, Wrap.Watcher.NONE, (result, placed) -> {
+            if (ownTriangles(result)) {
+                return 1;
+            }
             int layers = placed.analysis().maxLayers();
             asked.add(layers);
             return layers == 13 ? 5 : 0;
@@ -147,15 +151,48 @@ class SeamTest {
         // Every start colliding: each is asked, and the fewest layers kept, then the fewest collisions.
         asked.clear();
         chosen = Seam.wrap(refinement, DEFAULTS, Wrap.Watcher.NONE, (result, placed) -> {
+            if (ownTriangles(result)) {
+                return 100;
+            }
             asked.add(placed.analysis().maxLayers());
             return 100 - placed.analysis().maxLayers();
         });
         assertEquals(tried, asked);
         assertEquals(13, chosen.placed().analysis().maxLayers());
         assertEquals(java.util.Arrays.asList(85, 84, 87, 86), chosen.collisionsTried());
-        // A start unchecked (-1) counts as sound; with no check the fewest layers are kept.
+        // A start unchecked (-1) counts as sound; with no check the fewest layers are kept (the
+        // own triangles' starts are kept only where the check finds them sound: never without one).
         assertEquals(13, Seam.wrap(refinement, DEFAULTS, Wrap.Watcher.NONE, (result, placed) -> -1).placed().analysis().maxLayers());
         assertEquals(13, Seam.wrap(refinement, DEFAULTS, Wrap.Watcher.NONE).placed().analysis().maxLayers());
+    }
+
+    /**
+     * The cube along its own triangles (ifold.refine.CycleCoverPath) makes 9 layers from both of
+     * its starts, against 13 at best along the refinement; the independent checker finds 5
+     * collisions in the first's paper and none in the second's (measured 2026-12-06), so the second
+     * is kept, with every truth.
+     */
+    @Test
+    void theCubeFollowsItsOwnTrianglesWhereTheirPaperIsSoundWithFewerLayers() throws Exception {
+        HalfedgeMesh cube = mesh(Solids.cube());
+        HamiltonianRefinement.Result refinement = ifold.job.WrapPath.of(cube).refinement();
+        Seam.Chosen chosen = Seam.wrap(refinement, DEFAULTS, Wrap.Watcher.NONE, ifold.job.Collisions.OF_SEAM);
+        assertEquals(List.of(9, 9), chosen.ownLayersTried());
+        assertEquals(java.util.Arrays.asList(5, 0), chosen.ownCollisionsTried());
+        assertTrue(ownTriangles(chosen.result()), "kept along the refinement");
+        assertEquals(Seam.OWN_TRIED[1], chosen.along());
+        assertEquals(9, chosen.placed().analysis().maxLayers());
+        WrapTest.check(dir, chosen.result(), cube, 1, 2000);
+        PaperCollisions.Result collisions = PaperCollisions.check(Files.readString(dir.resolve("wrap.obj")), chosen.result().thickness());
+        assertEquals(0, collisions.crossingPairs(), collisions.summary());
+        // A check finding every start along the own triangles colliding keeps the refinement's best sound start.
+        Seam.Chosen refined = Seam.wrap(refinement, DEFAULTS, Wrap.Watcher.NONE, (result, placed) -> ownTriangles(result) ? 3 : 0);
+        assertTrue(!ownTriangles(refined.result()));
+        assertEquals(13, refined.placed().analysis().maxLayers());
+    }
+
+    static boolean ownTriangles(Wrap.Result result) {
+        return result.mesh() instanceof ifold.refine.RefinedMesh path && path.ownTriangles();
     }
 
     /**
