@@ -192,6 +192,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
         private int[] pieceStart;
         /** Where paper ends at the concave edges of its host. */
         private ConcaveWalls walls;
+        /** The bends standing out beyond the edges the strip crosses, known before the caps over those edges. */
+        private CrossingOverBends crossings;
         /** The vertices made moved in from a concave edge (in the order made, so increasing), and where the paper put them. */
         private int[] creptVertices = new int[0];
         private double[] creptFrom = new double[0];
@@ -296,6 +298,13 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
             }
             doneWithFaces();
             int[] hosts = hostList.toArray();
+            // How far each bend stands out, for the caps over edges (CrossingOverBends) and the bends.
+            double[] slopes = new double[bends.size()];
+            double[] outs = standOut(bends, ranks, nested, onWall, slopes);
+            double[] past = nested.mitres(outs, CoplanarHosts.of(frames, sheet.tolerance()));
+            stopRowsOnPaper(bends, outs, past);
+            crossings = new CrossingOverBends(bends, outs, frames, sheet.thickness(),
+                    Math.max(sheet.tolerance(), sheet.thickness() * NEST_TOLERANCE));
             // The bends below, once every bend is known.
             int next = 0;
             for (int f = 0, here = 0; f < faces; f++) {
@@ -308,7 +317,11 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     int a = sheet.loopVertex(f, i);
                     int b = sheet.loopVertex(f, (i + 1) % n);
                     // the paper runs on flat, or bends over an edge with no thickness where the two sides meet
-                    addCap(chain(f, i, a, b), chain(g, side(g, a, b), a, b), a, b, pieceStart[g + 1] - 1, -1, false, caps, capAfter);
+                    if (sheet.host(f) != sheet.host(g) && sheet.thickness() > 0) {
+                        addCrossingCap(f, g, chain(f, i, a, b), chain(g, side(g, a, b), a, b), a, b, pieceStart[g + 1] - 1, caps, capAfter);
+                    } else {
+                        addCap(chain(f, i, a, b), chain(g, side(g, a, b), a, b), a, b, pieceStart[g + 1] - 1, -1, false, caps, capAfter);
+                    }
                 }
             }
             // Each bend's faces f and g, its crease a, b, and where each face's paper begins and ends along it.
@@ -324,10 +337,6 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 bendCorners[k] = new int[] {f, g, a, b, (int) fChain[0][2], (int) fChain[fChain.length - 1][3], (int) gChain[0][2],
                     (int) gChain[gChain.length - 1][3]};
             }
-            double[] slopes = new double[bends.size()];
-            double[] outs = standOut(bends, ranks, nested, onWall, slopes);
-            double[] past = nested.mitres(outs, CoplanarHosts.of(frames, sheet.tolerance()));
-            stopRowsOnPaper(bends, outs, past);
 
             for (int k = 0; k < bends.size(); k++) {
                 int[] c = bendCorners[k];
@@ -1687,6 +1696,73 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     joinSquashed(cornerNear(f, s.middle(), s.from()), cornerNear(g, s.middle(), s.from()), after, caps, capAfter);
                 }
             }
+        }
+
+        /**
+         * The cap where the strip crosses an edge from face f on one host to face g on another
+         * (their chains along the crease a, b, as {@link #addCap} takes them): a quad for each
+         * stretch, as there; but where it would run through a bend of the host of the higher
+         * layer standing out beyond the edge ({@link CrossingOverBends}), each stretch goes over
+         * it, out from the higher layer to the mitre and down from there to the lower.
+         */
+        private void addCrossingCap(int f, int g, double[][] fChain, double[][] gChain, int a, int b, int after, List<int[]> caps,
+                IntList capAfter) {
+            double[] cuts = cutsAlong(fChain, gChain);
+            Stretch[] stretches = new Stretch[cuts.length - 1];
+            for (int k = 1; k < cuts.length; k++) {
+                stretches[k - 1] = stretch(fChain, gChain, a, b, cuts[k - 1], cuts[k]);
+            }
+            int high = -1; // the face whose host's bends the cap goes over: f or g
+            double[] crease = null;
+            for (int face : new int[] {f, g}) {
+                double[] line = creaseOn(face, a, b);
+                for (Stretch s : stretches) {
+                    boolean isF = face == f;
+                    if (crossings.runsThrough(sheet.host(face), line, s.from(), s.to(), point(isF ? s.fFrom() : s.gFrom()),
+                            point(isF ? s.fTo() : s.gTo()), point(isF ? s.gFrom() : s.fFrom()), point(isF ? s.gTo() : s.fTo()))) {
+                        high = face;
+                        crease = line;
+                        break;
+                    }
+                }
+                if (high >= 0) {
+                    break;
+                }
+            }
+            double slope = high < 0 ? 0 : crossings.mitre(sheet.host(high), sheet.host(high == f ? g : f), crease);
+            if (slope <= HostFrame.CUT_TAN) {
+                high = -1; // not over a convex edge: no mitre to go out to
+            }
+            for (Stretch s : stretches) {
+                if (sameOrAt(s.fFrom(), s.gFrom()) && sameOrAt(s.fTo(), s.gTo())) {
+                    continue;
+                }
+                if (high < 0) {
+                    caps.add(new int[] {s.fFrom(), s.fTo(), s.gTo(), s.gFrom()});
+                    capAfter.add(after);
+                    continue;
+                }
+                int host = sheet.host(high);
+                int over0 = capVertex(crossings.overMitre(host, crease, point(high == f ? s.fFrom() : s.gFrom()), slope), s.u0(), s.v0());
+                int over1 = capVertex(crossings.overMitre(host, crease, point(high == f ? s.fTo() : s.gTo()), slope), s.u1(), s.v1());
+                caps.add(new int[] {s.fFrom(), s.fTo(), over1, over0});
+                capAfter.add(after);
+                caps.add(new int[] {over0, over1, s.gTo(), s.gFrom()});
+                capAfter.add(after);
+            }
+        }
+
+        /** Crease a, b on face f's host's frame as f lies (ax, ay, bx, by), and the middle of f there (x, y). */
+        private double[] creaseOn(int f, int a, int b) {
+            Isometry2 pose = sheet.pose(f);
+            double[] middle = middle(f);
+            return new double[] {pose.x(sheet.u(a), sheet.v(a)), pose.y(sheet.u(a), sheet.v(a)), pose.x(sheet.u(b), sheet.v(b)),
+                pose.y(sheet.u(b), sheet.v(b)), middle[0], middle[1]};
+        }
+
+        /** Space vertex v's point. */
+        private double[] point(int v) {
+            return new double[] {xyz.get(3 * v), xyz.get(3 * v + 1), xyz.get(3 * v + 2)};
         }
 
         /**

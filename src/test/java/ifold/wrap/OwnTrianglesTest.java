@@ -2,7 +2,9 @@ package ifold.wrap;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import ifold.job.Collisions;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.PolygonSoup;
@@ -47,5 +49,32 @@ class OwnTrianglesTest {
         }
         Wrap.Result result = Wrap.wrap(own, new Wrap.Options(Double.NaN, Double.NaN));
         WrapTest.check(dir, result, mesh, 1, 300);
+    }
+
+    /**
+     * Along its own triangles the strip crosses a model edge between every two triangles, and
+     * the edge it leaves a triangle by (or comes back over to a triangle cut for a splice) has
+     * had that triangle's excess tucked under along it: the cap over the edge, from a layer high
+     * on one side down to a low one across, ran through the tucks' bends standing out beyond the
+     * edge. It goes over them, by the mitre ({@link CrossingOverBends}). Before: the 320-triangle
+     * icosphere 18 crossing pairs of caps (0.26 to 0.92 T deep, at five places), the cube 5 (14 T,
+     * its edges' mitre at 45°, as steep as a bend may lean).
+     */
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("crossedOverTucks")
+    void capsOverEdgesGoOverTheBendsStandingOutBeyondThem(String name, PolygonSoup soup) throws Exception {
+        HalfedgeMesh mesh = mesh(soup);
+        Wrap.Result result = Wrap.wrap(CycleCoverPath.of(mesh), new Wrap.Options(Double.NaN, Double.NaN));
+        PlacedWrap placed = PlacedWrap.of(result);
+        int caps = 0;
+        for (PaperInSpace strip : placed.geometries()) {
+            caps += strip.caps().size();
+        }
+        assertTrue(caps > 0, "check the setup: thick paper, bent at its folds");
+        assertEquals(0, Collisions.count(placed.geometries(), result.thickness(), result.mesh()), "crossing pairs, in one plane, into the model");
+    }
+
+    static Stream<Arguments> crossedOverTucks() {
+        return Stream.of(Arguments.of("icosphere", Solids.icosphere(2)), Arguments.of("cube", Solids.cube()));
     }
 }
