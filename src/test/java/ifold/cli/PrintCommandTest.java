@@ -207,10 +207,10 @@ class PrintCommandTest {
         Path pdf = dir.resolve("cube-steps.pdf");
         CliTest.Run run = CliTest.run("wrap", "models/cube.off", "--no-view", "--export-diagrams", pdf.toString());
         assertEquals(0, run.code(), run.err());
-        // The first triangle fold by fold (6 panels: the strip runs along the cube's own 12
-        // triangles, begun half way round, where it has fewest layers and its paper is sound),
-        // then the 11 others a panel each; the list of steps on the title page and one more.
-        assertTrue(run.out().contains("wrote " + pdf + ": 4 pages, 17 steps"), run.out());
+        // The first triangle fold by fold (15 panels: the strip runs along the cube's own 12
+        // triangles, where it has fewest layers and its paper is sound), then the 11 others a
+        // panel each; the list of steps on the title page and one more.
+        assertTrue(run.out().contains("wrote " + pdf + ": 6 pages, 26 steps"), run.out());
         assertTrue(Files.size(pdf) < 5_000_000, "the paper outside each panel left out: " + Files.size(pdf) + " bytes");
         if (!tool("pdftotext")) {
             return;
@@ -218,13 +218,12 @@ class PrintCommandTest {
         Path text = dir.resolve("cube-steps.txt");
         assertEquals(0, new ProcessBuilder("pdftotext", "-f", "2", "-l", "2", pdf.toString(), text.toString()).start().waitFor());
         String words = Files.readString(text).replaceAll("\\s+", " ");
-        assertTrue(words.contains("triangle 1 of 12: pass 1 of 3: turn, 45° valley fold (fold 1 of 6)"), words);
+        assertTrue(words.contains("triangle 1 of 12: pass 1 of 5: turn, 45° valley fold (fold 1 of 15)"), words);
         Path later = dir.resolve("cube-later.txt");
-        assertEquals(0, new ProcessBuilder("pdftotext", "-f", "3", "-l", "3", pdf.toString(), later.toString()).start().waitFor());
+        assertEquals(0, new ProcessBuilder("pdftotext", "-f", "4", "-l", "4", pdf.toString(), later.toString()).start().waitFor());
         words = Files.readString(later).replaceAll("\\s+", " ");
-        // Its panel says which printed creases it makes: those after the first triangle's 6.
-        assertTrue(words.contains("triangle 2 of 12: 6 turn folds, 6 gadget folds, 1 crossing to the next triangle, 4 tucks"
-                + " (creases 7–23 on the print)"), words);
+        // Its panel says which printed creases it makes: those after the first triangle's 15.
+        assertTrue(words.contains("triangle 2 of 12: 4 turn folds, 2 gadget folds (creases 16–21 on the print)"), words);
     }
 
     /** The pixels of a valley's blue (or a mountain's red) in a panel of the top row, from x0 to x1 mm across, at {@code dpi}. */

@@ -168,9 +168,9 @@ class SeamTest {
 
     /**
      * The cube along its own triangles (ifold.refine.CycleCoverPath) makes 9 layers from both of
-     * its starts, against 13 at best along the refinement; the independent checker finds 5
-     * collisions in the first's paper and none in the second's (measured 2026-12-06), so the second
-     * is kept, with every truth.
+     * its starts, against 13 at best along the refinement; the independent checker finds its first
+     * start's paper sound (5 collisions before caps over edges went over the bends beside them,
+     * CrossingOverBends, measured 2026-12-06), so that one is kept, with every truth.
      */
     @Test
     void theCubeFollowsItsOwnTrianglesWhereTheirPaperIsSoundWithFewerLayers() throws Exception {
@@ -178,9 +178,10 @@ class SeamTest {
         HamiltonianRefinement.Result refinement = ifold.job.WrapPath.of(cube).refinement();
         Seam.Chosen chosen = Seam.wrap(refinement, DEFAULTS, Wrap.Watcher.NONE, ifold.job.Collisions.OF_SEAM);
         assertEquals(List.of(9, 9), chosen.ownLayersTried());
-        assertEquals(java.util.Arrays.asList(5, 0), chosen.ownCollisionsTried());
+        // The second start, with as many layers as the first kept, is not checked.
+        assertEquals(java.util.Arrays.asList(0, null), chosen.ownCollisionsTried());
         assertTrue(ownTriangles(chosen.result()), "kept along the refinement");
-        assertEquals(Seam.OWN_TRIED[1], chosen.along());
+        assertEquals(Seam.OWN_TRIED[0], chosen.along());
         assertEquals(9, chosen.placed().analysis().maxLayers());
         WrapTest.check(dir, chosen.result(), cube, 1, 2000);
         PaperCollisions.Result collisions = PaperCollisions.check(Files.readString(dir.resolve("wrap.obj")), chosen.result().thickness());
