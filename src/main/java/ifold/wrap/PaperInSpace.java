@@ -179,6 +179,11 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          * line, in the wall's plane: 2 pairs in one plane at each of five corners.
          */
         private boolean[] pressedWhole;
+        /**
+         * The layers' points made on a crease that a bend's facet pressed flat onto a mitre left
+         * out ({@link #addPressed}), since the stretch being drawn began.
+         */
+        private IntList leftOut = new IntList();
         private final IntList sideStarts = new IntList();
         /**
          * The pieces' edges along the sides of their faces, {@link #SIDE_EDGE} numbers each: from,
@@ -396,6 +401,9 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 // beside the wall there, while the layers it joined stood off it: on the torus the
                 // bend, and the bend it wraps, twisted through each other and through the walls.
                 int[] rowFrom = null;
+                // The points a facet of the stretch before pressed flat left out (joinSquashedStretch).
+                int[] leftOutBefore = new int[0];
+                leftOut = new IntList();
                 for (int j = 1; j < cuts.length; j++) {
                     Stretch stretch = stretch(fChain, gChain, a, b, cuts[j - 1], cuts[j]);
                     double t0 = stretch.from();
@@ -463,8 +471,10 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                         }
                         addBendCap(bend.host(), new int[] {gm0, gm1, gAt, gFrom}, after, caps, capAfter);
                     } else {
-                        joinSquashed(cornerNear(fChain, between, t0), cornerNear(gChain, between, t0), after, caps, capAfter);
+                        joinSquashedStretch(fChain, gChain, stretch, leftOutBefore, after, caps, capAfter);
                     }
+                    leftOutBefore = leftOut.toArray();
+                    leftOut = new IntList();
                     rowFrom = rowAt;
                 }
             }
@@ -1869,6 +1879,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 int a = quad[side];
                 int b = quad[side + 1];
                 if (copyHost.get(a) < 0 && copyHost.get(b) < 0) {
+                    leftOut.add(a);
+                    leftOut.add(b);
                     continue; // between the bend's rows, or points made on a crease between a layer's corners
                 }
                 addLineCap(a, b, after, caps, capAfter);
@@ -1924,6 +1936,45 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 return;
             }
             addLineCap(f, g, after, caps, capAfter);
+        }
+
+        /**
+         * Joins the two layers of a squashed stretch of a bend placed in pieces: from a corner of
+         * each layer's piece along it ({@link #joinSquashed}), and at the point where it meets the
+         * stretch before, where a facet of that one pressed flat onto a mitre left a layer's point
+         * there out ({@code leftOutBefore}) and either layer's point is not the corner joined. A
+         * facet pressed flat ({@link #addPressed}) joins the bend's layers where its stretch
+         * begins, and leaves out a layer's side whose two ends are points made on the crease
+         * (between that layer's corners): the stretch after joins them where it begins. Squashed,
+         * that stretch joined the corners of its pieces only, and where one layer's side pressed
+         * onto the mitre's line runs on past the point (one piece of that layer along both
+         * stretches, the other layer's pieces meeting the crease between its corners), its point
+         * there was joined to nothing, a few thicknesses from the other layer's. The strip along
+         * the model's own triangles lays each triangle's last pass along its exit edge, concave on
+         * a torus's inner half, and tucks the pass's ends under along the triangle's sides, whose
+         * creases run into that edge's mitre: the 16 x 8 torus tore so at 29 places, the 60 x 7
+         * torus at 117, all at whole triangles (WrapTruths, not torn). The refinement's wraps are
+         * as they were.
+         */
+        private void joinSquashedStretch(double[][] f, double[][] g, Stretch s, int[] leftOutBefore, int after, List<int[]> caps,
+                IntList capAfter) {
+            int fCorner = cornerNear(f, s.middle(), s.from());
+            int gCorner = cornerNear(g, s.middle(), s.from());
+            joinSquashed(fCorner, gCorner, after, caps, capAfter);
+            if (!(sameOrAt(s.fFrom(), fCorner) && sameOrAt(s.gFrom(), gCorner))
+                    && (atAny(leftOutBefore, s.fFrom()) || atAny(leftOutBefore, s.gFrom()))) {
+                joinSquashed(s.fFrom(), s.gFrom(), after, caps, capAfter);
+            }
+        }
+
+        /** Whether space vertex {@code vertex} is one of {@code vertices}, or at the same place. */
+        private boolean atAny(int[] vertices, int vertex) {
+            for (int v : vertices) {
+                if (sameOrAt(v, vertex)) {
+                    return true;
+                }
+            }
+            return false;
         }
 
         /** Whether space vertex {@code vertex} lies on the mitre of concave edge k of the frame's host, within {@link #ON_MITRE}. */
