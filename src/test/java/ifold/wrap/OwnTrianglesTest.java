@@ -63,7 +63,7 @@ class OwnTrianglesTest {
      * on one side down to a low one across, ran through the tucks' bends standing out beyond the
      * edge. It goes over them, by the mitre ({@link CrossingOverBends}). Before: the 320-triangle
      * icosphere 18 crossing pairs of caps (0.26 to 0.92 T deep, at five places), the cube 5 (14 T,
-     * its edges' mitre at 45°, as steep as a bend may lean).
+     * its edges' mitre at 45°, as steep as a bend may lean), the stretched octahedron 4 (0.1 T).
      */
     @ParameterizedTest(name = "{0}")
     @MethodSource("crossedOverTucks")
@@ -80,6 +80,20 @@ class OwnTrianglesTest {
     }
 
     static Stream<Arguments> crossedOverTucks() {
-        return Stream.of(Arguments.of("icosphere", Solids.icosphere(2)), Arguments.of("cube", Solids.cube()));
+        return Stream.of(Arguments.of("icosphere", Solids.icosphere(2)), Arguments.of("cube", Solids.cube()),
+                // bench/RandomSolids' stretched octahedron of seed 22: a cap 0.005 T inside a bend's row
+                Arguments.of("stretched octahedron", stretched(Solids.octahedron(), 1.3629123241859193, 1.6690478921624499, 3.293111619863882)));
+    }
+
+    /** {@code soup} scaled along the axes. */
+    static PolygonSoup stretched(PolygonSoup soup, double sx, double sy, double sz) {
+        PolygonSoup out = new PolygonSoup();
+        for (int v = 0; v < soup.vertexCount(); v++) {
+            out.addVertex(sx * soup.coordinate(v, 0), sy * soup.coordinate(v, 1), sz * soup.coordinate(v, 2));
+        }
+        for (int f = 0; f < soup.faceCount(); f++) {
+            out.addFace(new int[] {soup.faceVertex(f, 0), soup.faceVertex(f, 1), soup.faceVertex(f, 2)}, 3, 0);
+        }
+        return out;
     }
 }
