@@ -65,8 +65,9 @@ final class WrapCommand implements Callable<Integer> {
     String method;
 
     @Option(names = "--width", paramLabel = "W",
-            description = "the strip's width (default: a third of the widest every triangle of the path takes, its smallest altitude "
-                + "from the corner the strip enters by; for the hinge strip, the lattice's square, or that over a whole number)")
+            description = "the strip's width (default and most: a third of the widest every triangle of the path takes, its smallest "
+                + "altitude from the corner the strip enters by, wider strips' paper crossing itself; for the hinge strip, the "
+                + "lattice's square, or that over a whole number)")
     Double width;
 
     @Option(names = "--thickness", paramLabel = "T", description = "the paper's thickness (default: the width / " + Wrap.WIDTHS_A_THICKNESS + ")")

@@ -148,6 +148,10 @@ public final class WrapJob {
                 watcher.note(kept);
             }
             stopIfAsked(watcher);
+            String tooWide = widerThanSound(path.refinement(), request.options().width());
+            if (tooWide != null) {
+                throw new Wrap.TooWideException(tooWide);
+            }
             refinedAt = System.nanoTime();
             int tries = Seam.tries(path.refinement(), request.options().width());
             watcher.stage("wrapping " + path.refinement().mesh().faceCount() + " triangles"
@@ -193,6 +197,33 @@ public final class WrapJob {
         return new Outcome(loaded, mesh, movedBy, path, result, placed.geometries(), analysis, figures,
                 new Seconds((loadedAt - started) * 1e-9, (refinedAt - loadedAt) * 1e-9, (wrappedAt - refinedAt) * 1e-9 - measured,
                         (analysedAt - wrappedAt) * 1e-9 + measured));
+    }
+
+    /**
+     * Why a strip {@code width} wide is refused though the path takes it, or null where it is not:
+     * wider than the default, a third of the widest. The engine folds strips up to the widest, but
+     * their paper is sound only so far, as measured (2026-12-06, the 19 models of the comparison
+     * set and the 320-triangle icosphere, each at the default, 0.4 and 0.5 of the widest): at
+     * 0.4 the 576-triangle torus's layer order had 8 violations and 108 crossing pairs, at 0.5 the
+     * dodecahedron, figure3 and the torus crossed themselves (1, 11 and 84 pairs), and from 0.6
+     * the icosphere's (307 to 1,993 pairs); at the widest the cube, tetrahedron, octahedron and
+     * icosahedron (24, 9, 59, 171). Wider strips lay the turns, gadgets, tucks and folds over
+     * edges of neighbouring triangles at the hosts' corners (docs/wrap.md, Limits). A width over
+     * the widest is left to the engine, which names the triangle it does not fit.
+     */
+    static String widerThanSound(HamiltonianRefinement.Result refinement, double width) {
+        if (Double.isNaN(width) || !Wrap.takesSize(refinement.mesh())) {
+            return null; // the default, or a model the engine refuses for its size, saying so
+        }
+        double widest = Wrap.widest(refinement);
+        double sound = Wrap.defaultWidth(refinement);
+        if (!(width > sound * (1 + 1e-12)) || widest < width * (1 - 1e-12)) {
+            return null;
+        }
+        return String.format(java.util.Locale.ROOT, "the strip width %s is wider than %s, a third of the widest strip the path"
+                + " takes (%s): wider strips lay the turns and tucks of neighbouring triangles together at the corners of the"
+                + " faces, where their paper crosses itself (docs/wrap.md, Limits); give --width %s or less", width, sound, widest,
+                sound);
     }
 
     /**

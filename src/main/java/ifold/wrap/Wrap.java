@@ -393,6 +393,15 @@ public final class Wrap {
     }
 
     /**
+     * Whether a wrap takes a model of {@code mesh}'s size, {@link #SMALLEST_MODEL} to
+     * {@link #LARGEST_MODEL} across: of one it refuses, no frame (and so no widest strip) can be made.
+     */
+    public static boolean takesSize(IndexedPolygons mesh) {
+        double across = across(mesh);
+        return across >= SMALLEST_MODEL && across <= LARGEST_MODEL;
+    }
+
+    /**
      * A third of the widest strip: every triangle then takes at least three passes, so that the
      * zig-zag shows, and the paper is used about twice as well as by the widest strip, whose
      * turns and gadgets outweigh the one or two passes most triangles would get.

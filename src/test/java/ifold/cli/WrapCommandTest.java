@@ -198,6 +198,11 @@ class WrapCommandTest {
         assertOptionError(CliTest.run(concat(new String[] {"demo", "zigzag", "--thickness", "1e-300"}, outputs)), "--thickness");
         CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--width", "0.3"}, outputs)),
                 "too wide for triangle", "of 58 on the path");
+        // Under the widest (0.1913) but over a third of it: the path takes it, but wider strips'
+        // paper crosses itself (at half the widest the torus 84 crossing pairs, 2026-12-06).
+        CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--width", "0.1"}, outputs)),
+                "the strip width 0.1 is wider than 0.0637805720608482", "a third of the widest strip the path takes (0.1913417161825448",
+                "give --width 0.0637805720608482");
         CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", dir.resolve("missing.off").toString()}, outputs)),
                 "missing.off", "no such file");
         Path broken = dir.resolve("broken.off");

@@ -98,10 +98,11 @@ class MainWindowFilesTest extends WindowTestBase {
         int without = pixelsOf(window.view.picture(), 0xE0262B, 40);
         assertTrue(red > without + 5, "red where paper collides (along the cuts): " + red + " pixels, " + without + " without");
         onEdt(() -> {
-            window.parameters.wrapWidth.setText("0.1");
+            // Under the default (0.0623, a third of the widest 0.1869): a wider strip is refused.
+            window.parameters.wrapWidth.setText("0.05");
             return null;
         });
-        waitFor("the narrower wrap", 60, () -> "0.1".equals(window.report.value("width")));
+        waitFor("the narrower wrap", 60, () -> "0.05".equals(window.report.value("width")));
         // Another model starts from its own width, not the one typed for the cube.
         onEdt(() -> {
             window.open(Path.of("models", "tetrahedron.off"));
@@ -110,7 +111,7 @@ class MainWindowFilesTest extends WindowTestBase {
         waitFor("the tetrahedron wrapped", 60, () -> window.plan() != null && window.plan().job() instanceof Job.WrapModel w
                 && w.model().endsWith("tetrahedron.off") && !window.isWorking());
         assertEquals("", onEdt(() -> window.parameters.wrapWidth.getText()));
-        assertTrue(!"0.1".equals(onEdt(() -> window.report.value("width"))), "the tetrahedron's own width");
+        assertTrue(!"0.05".equals(onEdt(() -> window.report.value("width"))), "the tetrahedron's own width");
     }
 
     /**
