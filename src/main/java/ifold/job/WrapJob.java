@@ -205,7 +205,7 @@ public final class WrapJob {
      * their paper is sound only so far, as measured (2026-12-06, the 19 models of the comparison
      * set and the 320-triangle icosphere, each at the default, 0.4 and 0.5 of the widest): at
      * 0.4 the 576-triangle torus's layer order had 8 violations and 108 crossing pairs, at 0.5 the
-     * dodecahedron, figure3 and the torus crossed themselves (1, 11 and 84 pairs), and from 0.6
+     * dodecahedron, figure3 and the torus crossed themselves (2, 11 and 84 pairs), and from 0.6
      * the icosphere's (307 to 1,993 pairs); at the widest the cube, tetrahedron, octahedron and
      * icosahedron (24, 9, 59, 171). Wider strips lay the turns, gadgets, tucks and folds over
      * edges of neighbouring triangles at the hosts' corners (docs/wrap.md, Limits). A width over
