@@ -217,6 +217,12 @@ public final class WrapJob {
         }
         double widest = Wrap.widest(refinement);
         double sound = Wrap.defaultWidth(refinement);
+        // The seam also tries the path along the model's own triangles, whose default is wider.
+        HamiltonianRefinement.Result own = Seam.ownPath(refinement, Double.NaN);
+        if (own != null) {
+            widest = Math.max(widest, Wrap.widest(own));
+            sound = Math.max(sound, Wrap.defaultWidth(own));
+        }
         if (!(width > sound * (1 + 1e-12)) || widest < width * (1 - 1e-12)) {
             return null;
         }

@@ -121,15 +121,19 @@ public final class Seam {
         int bestFound = 0;
         List<Integer> layers = new ArrayList<>();
         List<Integer> collisions = new ArrayList<>();
+        HamiltonianRefinement.Result own = ownPath(refinement, options.width());
+        Wrap.WrapException firstFailure = null;
         for (int k = 0; k < tries; k++) {
             HamiltonianRefinement.Result begun = k == 0 ? refinement : refinement.begunAt(shares.get(k));
             Wrap.Result result;
             try {
                 result = Wrap.wrap(begun, options, share(watcher, k, tries));
             } catch (Wrap.WrapException e) {
-                if (k == 0) {
+                if (k == 0 && own == null) {
                     throw e;
                 }
+                // A width too wide for the refinement's pieces may suit the own triangles.
+                firstFailure = k == 0 ? e : firstFailure;
                 layers.add(null); // kept in its place: the report lists the starts in order
                 collisions.add(null);
                 continue;
@@ -167,8 +171,7 @@ public final class Seam {
         // refinement's paper collides from every start.
         List<Integer> ownLayers = new ArrayList<>();
         List<Integer> ownCollisions = new ArrayList<>();
-        HamiltonianRefinement.Result own = tries > 1 && !refinement.mesh().ownTriangles() ? CycleCoverPath.of(refinement.mesh().original()) : null;
-        if (own != null && tries(own, options.width()) > 1) {
+        if (own != null) {
             Wrap.Watcher quiet = stoppedBy(watcher);
             for (double share : OWN_TRIED) {
                 HamiltonianRefinement.Result begun = share == 0 ? own : own.begunAt(share);
@@ -185,6 +188,13 @@ public final class Seam {
                 double seconds = (System.nanoTime() - measuring) * 1e-9;
                 int most = placed.analysis().maxLayers();
                 ownLayers.add(most);
+                if (best == null) { // the refinement's first start failed: the own triangles' first that wraps
+                    int found = check.collisions(result, placed);
+                    ownCollisions.add(found >= 0 ? found : null);
+                    best = new Chosen(begun, result, placed, share, seconds);
+                    bestCollides = found > 0;
+                    continue;
+                }
                 if (!bestCollides && most >= best.placed().analysis().maxLayers()) {
                     ownCollisions.add(null);
                     continue;
@@ -197,10 +207,27 @@ public final class Seam {
                 }
             }
         }
+        if (best == null) {
+            throw firstFailure;
+        }
         return new Chosen(best.refinement(), best.result(), best.placed(), best.along(),
                 tries > 1 ? java.util.Collections.unmodifiableList(layers) : List.of(),
                 tries > 1 ? java.util.Collections.unmodifiableList(collisions) : List.of(),
                 best.measureSeconds(), java.util.Collections.unmodifiableList(ownLayers), java.util.Collections.unmodifiableList(ownCollisions));
+    }
+
+    /**
+     * The path through the model's own triangles that the seam tries after the refinement's
+     * starts ({@link CycleCoverPath}), or null where it tries none: where the refinement's paths
+     * are short ({@link #MOST_TRIANGLES}) and a wrap along the own triangles at {@code width} (NaN
+     * for their default) is likely to make at most {@link #MOST_FACES} faces, along a cycle.
+     */
+    public static HamiltonianRefinement.Result ownPath(HamiltonianRefinement.Result refinement, double width) {
+        if (refinement.mesh().ownTriangles() || refinement.mesh().faceCount() > MOST_TRIANGLES) {
+            return null;
+        }
+        HamiltonianRefinement.Result own = CycleCoverPath.of(refinement.mesh().original());
+        return own != null && tries(own, width) > 1 ? own : null;
     }
 
     /** Where round the path through the model's own triangles its strip is tried beginning. */

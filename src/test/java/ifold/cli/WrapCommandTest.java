@@ -196,13 +196,16 @@ class WrapCommandTest {
         // Layers a billionth of the model apart cannot be told apart; no thickness at all can.
         assertOptionError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--thickness", "1e-300"}, outputs)), "--thickness");
         assertOptionError(CliTest.run(concat(new String[] {"demo", "zigzag", "--thickness", "1e-300"}, outputs)), "--thickness");
-        CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--width", "0.3"}, outputs)),
+        // Wider than the widest strip of both paths the seam tries: the refinement's 58 triangles
+        // (0.1913) and the cube's own 12 (0.7071).
+        CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--width", "0.8"}, outputs)),
                 "too wide for triangle", "of 58 on the path");
-        // Under the widest (0.1913) but over a third of it: the path takes it, but wider strips'
-        // paper crosses itself (at half the widest the torus 84 crossing pairs, 2026-12-06).
-        CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--width", "0.1"}, outputs)),
-                "the strip width 0.1 is wider than 0.0637805720608482", "a third of the widest strip the path takes (0.1913417161825448",
-                "give --width 0.0637805720608482");
+        // Under the widest but over a third of it: the path takes it, but wider strips' paper
+        // crosses itself (at half the widest the torus 84 crossing pairs, 2026-12-06). The bound
+        // is the own triangles' default, the wider of the two paths' (0.0638 on the refinement's).
+        CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--width", "0.3"}, outputs)),
+                "the strip width 0.3 is wider than 0.2357022603955158", "a third of the widest strip the path takes (0.7071067811865475",
+                "give --width 0.2357022603955158");
         CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", dir.resolve("missing.off").toString()}, outputs)),
                 "missing.off", "no such file");
         Path broken = dir.resolve("broken.off");
@@ -243,12 +246,15 @@ class WrapCommandTest {
         Path obj = dir.resolve("r.obj");
         String[] outputs = {"--no-view", "--report", report.toString(), "--export-obj", obj.toString()};
         assertOptionError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--max-faces", "0"}, outputs)), "--max-faces");
-        // The cube's default wrap takes 331 passes, at least 662 faces by the estimate, and makes 1,160.
-        CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--max-faces", "600"}, outputs)),
-                "cube.off", "331 passes", "(at least 662)", "more than the limit of 600 faces", "no strip the path takes fits: the widest, 0.1913",
+        // The cube's default wrap along the refinement takes 331 passes, at least 662 faces by the
+        // estimate, and makes 1,160; along its own triangles (tried too, and kept where it fits:
+        // at a limit of 600 it does) it makes 236, so at 200 both fail and the refinement's failure is said.
+        CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--max-faces", "200"}, outputs)),
+                "cube.off", "331 passes", "(at least 662)", "more than the limit of 200 faces", "no strip the path takes fits: the widest, 0.1913",
                 "--max-faces");
-        CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--max-faces", "1000"}, outputs)),
-                "cube.off", "faces of paper on triangle", "more than the limit of 1000 faces", "--max-faces");
+        // figure3 has a boundary, so no path along its own triangles: its wrap of 1,539 faces stops at the limit.
+        CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", "models/figure3.off", "--max-faces", "1000"}, outputs)),
+                "figure3.off", "faces of paper on triangle", "more than the limit of 1000 faces", "--max-faces");
         assertFalse(Files.exists(report), "no report after a failure");
         assertFalse(Files.exists(obj), "no OBJ after a failure");
         assertEquals(0, CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--max-faces", "100000"}, outputs)).code());

@@ -172,7 +172,7 @@ class MainWindowFilesTest extends WindowTestBase {
         window = App.open(null, settings());
         settled();
         onEdt(() -> {
-            window.parameters.show(new Job.WrapModel(Path.of("models", "cube.off"), "0.5", ""));
+            window.parameters.show(new Job.WrapModel(Path.of("models", "cube.off"), "0.8", "")); // wider than either path's widest
             return null;
         });
         waitFor("the cube drawn", 60, () -> !window.isWorking() && window.plan() != null && window.plan().job() instanceof Job.View v
