@@ -177,7 +177,7 @@ public final class WrapJob {
             throw new Refused(stretched);
         }
         Map<String, Object> figures = Reports.wrap(model.toString(), mesh.faceCount(), loaded.repairs(), path, result, analysis);
-        if (seam != null && !seam.layersTried().isEmpty()) {
+        if (seam != null && (!seam.layersTried().isEmpty() || !seam.ownLayersTried().isEmpty())) {
             Map<String, Object> begun = new java.util.LinkedHashMap<>();
             begun.put("along", seam.along());
             begun.put("layersTried", seam.layersTried());

@@ -223,7 +223,7 @@ public final class Seam {
      * for their default) is likely to make at most {@link #MOST_FACES} faces, along a cycle.
      */
     public static HamiltonianRefinement.Result ownPath(HamiltonianRefinement.Result refinement, double width) {
-        if (refinement.mesh().ownTriangles() || refinement.mesh().faceCount() > MOST_TRIANGLES) {
+        if (refinement.mesh().ownTriangles() || refinement.mesh().original().faceCount() > MOST_TRIANGLES) {
             return null;
         }
         HamiltonianRefinement.Result own = CycleCoverPath.of(refinement.mesh().original());
