@@ -155,6 +155,14 @@ final class CrossingOverBends {
     /** The direction in space, in the host's plane and square to the crease, away from the crossing's face. */
     private double[] outward(int host, double[] crease) {
         HostFrame frame = frames[host];
+        double[] n = awayInPlane(crease);
+        double[] ex = frame.ex();
+        double[] ey = frame.ey();
+        return new double[] {n[0] * ex[0] + n[1] * ey[0], n[0] * ex[1] + n[1] * ey[1], n[0] * ex[2] + n[1] * ey[2]};
+    }
+
+    /** The unit normal of the crease in its host's plane (x, y), pointing away from the crossing's face (given as in {@link #runsThrough}). */
+    private static double[] awayInPlane(double[] crease) {
         double length = Math.hypot(crease[2] - crease[0], crease[3] - crease[1]);
         double nx = (crease[3] - crease[1]) / length;
         double ny = -(crease[2] - crease[0]) / length;
@@ -162,9 +170,7 @@ final class CrossingOverBends {
             nx = -nx;
             ny = -ny;
         }
-        double[] ex = frame.ex();
-        double[] ey = frame.ey();
-        return new double[] {nx * ex[0] + ny * ey[0], nx * ex[1] + ny * ey[1], nx * ex[2] + ny * ey[2]};
+        return new double[] {nx, ny};
     }
 
     /**
@@ -174,16 +180,10 @@ final class CrossingOverBends {
      */
     double[] overMitre(int host, double[] crease, double[] high, double slope) {
         HostFrame frame = frames[host];
-        double length = Math.hypot(crease[2] - crease[0], crease[3] - crease[1]);
-        double nx = (crease[3] - crease[1]) / length;
-        double ny = -(crease[2] - crease[0]) / length;
-        if (nx * (crease[4] - crease[0]) + ny * (crease[5] - crease[1]) > 0) {
-            nx = -nx;
-            ny = -ny;
-        }
+        double[] n = awayInPlane(crease);
         double z = frame.height(high);
         double[] point = new double[3];
-        frame.toSpace(frame.localX(high) + nx * z * slope, frame.localY(high) + ny * z * slope, z, point, 0);
+        frame.toSpace(frame.localX(high) + n[0] * z * slope, frame.localY(high) + n[1] * z * slope, z, point, 0);
         return point;
     }
 
