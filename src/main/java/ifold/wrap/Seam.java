@@ -96,11 +96,16 @@ public final class Seam {
      * the way round its path: one wrap's layers are its deepest strip's, and a start for each
      * component would take a wrap more to put together.
      * A start whose wrap fails (too many faces, a triangle the tucks cannot finish) is passed
-     * over, unless it is the first: its failure is the wrap's.
+     * over, unless it is the first and no path along the model's own triangles is tried: its
+     * failure is the wrap's.
      * Of several starts, {@code check} is asked of the first and of each that would be kept for
      * its layers, or that may be kept because the paper kept so far collides: a sound start is
      * kept before one that collides, then the fewest layers, then (of starts that collide) the
      * fewest collisions, then the first tried.
+     * Then, where {@link #ownPath} gives one, the strip along the model's own triangles from each
+     * start of {@link #OWN_TRIED}: kept only where {@code check} finds it sound (0, not -1) and it
+     * has fewer layers than the start kept, or every start kept so far collides; where the
+     * refinement's first start failed, its first that wraps is kept as the first start would be.
      *
      * @throws Wrap.WrapException as {@link Wrap#wrap(HamiltonianRefinement.Result, Wrap.Options, Wrap.Watcher)}, from the refinement's own start
      */
@@ -218,9 +223,9 @@ public final class Seam {
 
     /**
      * The path through the model's own triangles that the seam tries after the refinement's
-     * starts ({@link CycleCoverPath}), or null where it tries none: where the refinement's paths
-     * are short ({@link #MOST_TRIANGLES}) and a wrap along the own triangles at {@code width} (NaN
-     * for their default) is likely to make at most {@link #MOST_FACES} faces, along a cycle.
+     * starts ({@link CycleCoverPath}), or null where it tries none: where the mesh the refinement
+     * refined has at most {@link #MOST_TRIANGLES} triangles, and a wrap along them at {@code width}
+     * (NaN for their default) is likely to make at most {@link #MOST_FACES} faces, along a cycle.
      */
     public static HamiltonianRefinement.Result ownPath(HamiltonianRefinement.Result refinement, double width) {
         if (refinement.mesh().ownTriangles() || refinement.mesh().original().faceCount() > MOST_TRIANGLES) {
