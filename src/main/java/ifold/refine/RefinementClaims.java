@@ -61,19 +61,49 @@ public final class RefinementClaims {
      */
     public static List<String> violations(HalfedgeMesh input, HamiltonianRefinement.Result result) {
         List<String> problems = new ArrayList<>();
+        int n = input.faceCount();
+        int c = result.componentCount();
+        int count = result.mesh().faceCount();
+        if (count != 5 * n - 2 * c) {
+            problems.add(count + " triangles, expected 5n - 2c = " + (5 * n - 2 * c));
+        }
+        if (!addPathViolations(input, result, problems)) {
+            return problems;
+        }
+        double in = minAngleDegrees(input);
+        double out = minAngleDegrees(result.mesh());
+        // Half the input's angle is reached exactly at the corners, so allow rounding only.
+        if (out < in / 2 * (1 - 1e-9)) {
+            problems.add("smallest angle " + out + " degrees is less than half the input's " + in);
+        }
+        return problems;
+    }
+
+    /**
+     * Every claim that any path of triangles through {@code input} makes and {@code result}
+     * breaks, as sentences (the refinement's, or the path through its own triangles,
+     * {@link CycleCoverPath}): consecutive triangles of a component share an edge; no triangle
+     * twice; each face covered by the path's triangles within it, with its area; the original
+     * vertices kept in place.
+     */
+    public static List<String> pathViolations(HalfedgeMesh input, HamiltonianRefinement.Result result) {
+        List<String> problems = new ArrayList<>();
+        addPathViolations(input, result, problems);
+        return problems;
+    }
+
+    /** Adds {@link #pathViolations} to {@code problems}; false where the path is of another model, its faces not to be compared. */
+    private static boolean addPathViolations(HalfedgeMesh input, HamiltonianRefinement.Result result, List<String> problems) {
         RefinedMesh refined = result.mesh();
         int n = input.faceCount();
         int c = result.componentCount();
         int count = refined.faceCount();
-        if (count != 5 * n - 2 * c) {
-            problems.add(count + " triangles, expected 5n - 2c = " + (5 * n - 2 * c));
-        }
         HalfedgeMesh refinedFrom = refined.original();
         if (refinedFrom.faceCount() != n || refinedFrom.vertexCount() != input.vertexCount()) {
             // The claims below compare each face with its sub-triangles: on another model they cannot be read.
             problems.add("the refinement is of another model: " + refinedFrom.faceCount() + " faces and " + refinedFrom.vertexCount()
                     + " vertices, not " + n + " and " + input.vertexCount());
-            return problems;
+            return false;
         }
         int[] tri = new int[3 * count];
         for (int t = 0; t < count; t++) {
@@ -130,13 +160,7 @@ public final class RefinementClaims {
                 break;
             }
         }
-        double in = minAngleDegrees(input);
-        double out = minAngleDegrees(refined);
-        // Half the input's angle is reached exactly at the corners, so allow rounding only.
-        if (out < in / 2 * (1 - 1e-9)) {
-            problems.add("smallest angle " + out + " degrees is less than half the input's " + in);
-        }
-        return problems;
+        return true;
     }
 
     private static int sharedVertices(int[] tri, int s, int t) {
