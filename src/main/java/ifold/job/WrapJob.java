@@ -148,13 +148,15 @@ public final class WrapJob {
                 watcher.note(kept);
             }
             stopIfAsked(watcher);
-            String tooWide = widerThanSound(path.refinement(), request.options().width());
+            String tooWide = widerThanSound(path.refinement(), request.options());
             if (tooWide != null) {
                 throw new Wrap.TooWideException(tooWide);
             }
             refinedAt = System.nanoTime();
             int tries = Seam.tries(path.refinement(), request.options().width());
-            watcher.stage("wrapping " + path.refinement().mesh().faceCount() + " triangles"
+            HamiltonianRefinement.Result instead = Seam.ownInstead(path.refinement(), request.options());
+            watcher.stage(instead != null ? "wrapping the model's own " + instead.mesh().faceCount() + " triangles"
+                    : "wrapping " + path.refinement().mesh().faceCount() + " triangles"
                     + (tries > 1 ? ", begun at " + tries + " places round the path" : ""));
             // Of the starts tried, one whose paper the independent checker finds colliding is kept
             // only where all collide.
@@ -211,7 +213,8 @@ public final class WrapJob {
      * edges of neighbouring triangles at the hosts' corners (docs/wrap.md, Limits). A width over
      * the widest is left to the engine, which names the triangle it does not fit.
      */
-    static String widerThanSound(HamiltonianRefinement.Result refinement, double width) {
+    static String widerThanSound(HamiltonianRefinement.Result refinement, Wrap.Options options) {
+        double width = options.width();
         if (Double.isNaN(width) || !Wrap.takesSize(refinement.mesh())) {
             return null; // the default, or a model the engine refuses for its size, saying so
         }
@@ -219,6 +222,9 @@ public final class WrapJob {
         double sound = Wrap.defaultWidth(refinement);
         // The seam also tries the path along the model's own triangles, whose default is wider.
         HamiltonianRefinement.Result own = Seam.ownPath(refinement, Double.NaN);
+        if (own == null) {
+            own = Seam.ownInstead(refinement, options); // a big model's, where it is folded along them
+        }
         if (own != null) {
             widest = Math.max(widest, Wrap.widest(own));
             sound = Math.max(sound, Wrap.defaultWidth(own));

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import ifold.check.PaperCollisions;
+import ifold.job.Collisions;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.PolygonSoup;
@@ -249,6 +250,32 @@ class SeamTest {
         assertEquals(0.0, chosen.along());
         assertEquals(List.of(), chosen.layersTried());
         assertSame(refinement, chosen.refinement());
+    }
+
+    /**
+     * A big closed model is wrapped once, along its own triangles, which make fewer faces: the
+     * 1,280-triangle icosphere's 1,364 triangles (its refinement's 6,398 likely to make 287,000
+     * faces) likely make about 105,000. Every truth holds on the paper, and the independent check
+     * finds it sound; the refinement would be folded where that wrap failed.
+     */
+    @Test
+    void aBigClosedModelIsWrappedOnceAlongItsOwnTriangles(@TempDir Path dir) throws Exception {
+        HalfedgeMesh sphere = mesh(Solids.icosphere(3));
+        HamiltonianRefinement.Result refinement = ifold.job.WrapPath.of(sphere).refinement();
+        assertTrue(sphere.faceCount() > Seam.MOST_TRIANGLES);
+        HamiltonianRefinement.Result own = Seam.ownInstead(refinement, DEFAULTS);
+        assertTrue(own != null && own.mesh().ownTriangles(), "along its own triangles");
+        assertTrue(Wrap.likelyFaces(own) * 2 < Wrap.likelyFaces(refinement), Wrap.likelyFaces(own) + " against " + Wrap.likelyFaces(refinement));
+        Seam.Chosen chosen = Seam.wrap(refinement, DEFAULTS, Wrap.Watcher.NONE, Collisions.OF_SEAM);
+        assertTrue(chosen.refinement().mesh().ownTriangles(), "the own triangles' wrap is kept");
+        assertEquals(own.mesh().faceCount(), chosen.result().strips().get(0).triangles());
+        assertEquals(List.of(), chosen.layersTried(), "wrapped once");
+        assertEquals(List.of(), chosen.ownLayersTried());
+        WrapTest.check(dir, chosen.result(), sphere, 1, 300);
+        PaperCollisions.Result check = PaperCollisions.check(Files.readString(dir.resolve("wrap.obj")), chosen.result().thickness());
+        assertTrue(check.isClean(), check.summary());
+        // A model at most MOST_TRIANGLES is left to the tries of both paths, and an open one has no own path.
+        assertEquals(null, Seam.ownInstead(ifold.job.WrapPath.of(mesh(Solids.icosphere(2))).refinement(), DEFAULTS));
     }
 
     /**
