@@ -74,7 +74,8 @@ final class WrapCommand implements Callable<Integer> {
     Double thickness;
 
     @Option(names = "--max-faces", paramLabel = "N", defaultValue = "" + Wrap.DEFAULT_MAX_FACES,
-            description = "the most faces of paper the wrap may make, about " + Wrap.BYTES_PER_FACE + " bytes of memory each (default ${DEFAULT-VALUE}: a gibibyte's worth)")
+            description = "the most faces of paper the wrap may make, about " + Wrap.BYTES_PER_FACE + " bytes of memory each (default ${DEFAULT-VALUE}: a gibibyte's worth;"
+                + " a default width that would pass it widens to fit, up to the widest)")
     int maxFaces;
 
     @Option(names = "--strict", description = "refuse defective input instead of repairing it")

@@ -167,6 +167,10 @@ public final class WrapJob {
             }
             path = new WrapPath(path.preparation(), seam.refinement(), path.prepared());
             result = seam.result();
+            String widened = widened(model.toString(), path.refinement(), request.options(), result);
+            if (widened != null) {
+                watcher.note(widened);
+            }
         }
         long wrappedAt = System.nanoTime();
         stopIfAsked(watcher);
@@ -236,6 +240,20 @@ public final class WrapJob {
                 + " takes (%s): wider strips lay the turns and tucks of neighbouring triangles together at the corners of the"
                 + " faces, where their paper crosses itself (docs/wrap.md, Limits); give --width %s or less", width, sound, widest,
                 sound);
+    }
+
+    /**
+     * Where the default strip was widened past a third of the widest to keep within the face
+     * limit ({@code Wrap.fittingDefault}), one line saying so, naming {@code model}; null where it was not.
+     */
+    static String widened(String model, HamiltonianRefinement.Result path, Wrap.Options options, Wrap.Result result) {
+        double third = Wrap.defaultWidth(path);
+        if (!Double.isNaN(options.width()) || !(result.width() > third * (1 + 1e-9))) {
+            return null;
+        }
+        return String.format(java.util.Locale.ROOT, "%s: the strip is %.4g wide, wider than the default third of the widest (%.4g), to keep"
+                + " within the limit of %,d faces of paper (--max-faces raises it)", model,
+                result.width(), third, options.maxFaces());
     }
 
     /**

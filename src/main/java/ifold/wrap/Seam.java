@@ -115,6 +115,7 @@ public final class Seam {
     public static Chosen wrap(HamiltonianRefinement.Result refinement, Wrap.Options options, Wrap.Watcher watcher, PaperCheck check)
             throws Wrap.WrapException {
         HamiltonianRefinement.Result instead = ownInstead(refinement, options);
+        Wrap.WrapException insteadFailure = null;
         if (instead != null) {
             try {
                 Wrap.Result result = Wrap.wrap(instead, options, watcher);
@@ -123,7 +124,10 @@ public final class Seam {
                 return new Chosen(instead, result, placed, 0, List.of(), List.of(), (System.nanoTime() - measuring) * 1e-9, List.of(),
                         List.of());
             } catch (Wrap.WrapException e) {
-                // Folded along the refinement instead, whose failure, where it fails too, is the wrap's.
+                // Folded along the refinement instead; where that fails too, this failure is the
+                // wrap's: the own triangles are the likelier to fit (igl_fertility.off's refusal
+                // names their widest strip, 832,963 faces likely, not the refinement's 2.8 million).
+                insteadFailure = e;
             }
         }
         int tries = tries(refinement, options.width());
@@ -150,7 +154,7 @@ public final class Seam {
                 result = Wrap.wrap(begun, options, share(watcher, k, tries));
             } catch (Wrap.WrapException e) {
                 if (k == 0 && own == null) {
-                    throw e;
+                    throw insteadFailure != null ? insteadFailure : e;
                 }
                 // A width too wide for the refinement's pieces may suit the own triangles.
                 firstFailure = k == 0 ? e : firstFailure;

@@ -24,6 +24,7 @@ import ifold.sheet.Tuck;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.function.DoubleToLongFunction;
 
 /**
  * Wraps a surface in one strip of paper per component, along the Hamiltonian path of its
@@ -434,8 +435,11 @@ public final class Wrap {
         if (!(width > 0) || !Double.isFinite(width)) {
             return Long.MAX_VALUE;
         }
-        // The last triangle's corner depends on the width, as in a wrap.
-        double[] angleSums = LayerFloor.angleSums(mesh);
+        return likelyFaces(mesh, plans, width, widest, LayerFloor.angleSums(mesh), HostPieces.of(mesh).alone());
+    }
+
+    /** The faces {@code plans} are likely to make at {@code width}, each last triangle entered as a wrap at that width enters it. */
+    private static long likelyFaces(IndexedPolygons mesh, List<PathPlan> plans, double width, double widest, double[] angleSums, boolean[] alone) {
         for (PathPlan plan : plans) {
             try {
                 chooseLastStart(mesh, plan, width, widest, angleSums);
@@ -443,7 +447,34 @@ public final class Wrap {
                 return Long.MAX_VALUE; // too wide for it: no wrap to count
             }
         }
-        return faces(plans, width, HostPieces.of(refinement.mesh()).alone(), true);
+        return faces(plans, width, alone, true);
+    }
+
+    /**
+     * The width a wrap takes where none is given: {@link #defaultWidth}, a third of the
+     * {@code widest}, unless the paths are likely to make more than {@code maxFaces} faces at
+     * it; then the narrowest wider strip likely to fit, up to the widest (where none fits, the
+     * third, which the face limit then refuses, naming the widths). A big scan's narrowest
+     * triangles set a strip so narrow that its big ones need thousands of passes: along its own
+     * triangles the cow ({@code common3d_spot.obj}, 5,856 triangles) is likely to make 1,008,739
+     * faces at a third of its widest strip, 452,114 at the widest. Strips wider than a third lay
+     * the turns and tucks of neighbouring triangles together at corners, where the paper may
+     * cross itself (docs/wrap.md, Limits): a wrap rather than a refusal. The faces are counted as
+     * the refusal counts them, a sharp corner's tucks too ({@link CornerTucks}).
+     */
+    private static double fittingDefault(IndexedPolygons mesh, List<PathPlan> plans, boolean[] alone, double[] angleSums,
+            CornerTucks cornerTucks, double widest, int maxFaces) {
+        double third = widest / DEFAULT_PASSES;
+        // As the refusal counts them (CornerTucks.refusal): a needle's tucks may be the most of its faces.
+        DoubleToLongFunction likely = w -> {
+            long faces = likelyFaces(mesh, plans, w, widest, angleSums, alone);
+            return faces == Long.MAX_VALUE ? faces : faces + cornerTucks.likelyFaces(plans, w);
+        };
+        if (likely.applyAsLong(third) <= maxFaces) {
+            return third;
+        }
+        double fits = narrowestFitting(likely, third, widest, maxFaces);
+        return Double.isNaN(fits) ? third : fits;
     }
 
     /** The passes the narrowest triangle gets at the default width. */
@@ -522,7 +553,12 @@ public final class Wrap {
         double[] narrowestTriangle = narrowest(mesh, plans);
         double widest = narrowestTriangle[0];
         int narrowest = (int) narrowestTriangle[1];
-        double width = Double.isNaN(options.width()) ? widest / DEFAULT_PASSES : options.width();
+        HostPieces pieces = HostPieces.of(mesh);
+        boolean[] alone = pieces.alone();
+        double[] angleSums = LayerFloor.angleSums(mesh);
+        CornerTucks cornerTucks = CornerTucks.of(mesh, pieces);
+        double width = Double.isNaN(options.width()) ? fittingDefault(mesh, plans, alone, angleSums, cornerTucks, widest, options.maxFaces())
+                : options.width();
         if (!(width > 0) || !Double.isFinite(width)) { // no triangle with an altitude to take a default from
             throw new WrapException("no triangle gives the strip a width: give one");
         }
@@ -541,7 +577,6 @@ public final class Wrap {
         }
         List<Strip> strips = new ArrayList<>();
         List<Step> steps = new ArrayList<>();
-        double[] angleSums = LayerFloor.angleSums(mesh);
         for (int c = 0; c < plans.size(); c++) {
             PathPlan plan = plans.get(c);
             for (int i = 0; i + 1 < plan.m; i++) {
@@ -570,8 +605,6 @@ public final class Wrap {
                 }
             }
         }
-        HostPieces pieces = HostPieces.of(mesh);
-        boolean[] alone = pieces.alone();
         long fewestFaces = faces(plans, width, alone, false);
         if (fewestFaces > options.maxFaces()) {
             double fits = narrowestFitting(plans, alone, width, widest, options.maxFaces());
@@ -584,7 +617,6 @@ public final class Wrap {
         }
         // The tucks at a sharp corner grow as 1/θ and the passes' floor leaves them out: count
         // them too, or a needle folds its passes for a minute before its tucks pass the limit.
-        CornerTucks cornerTucks = CornerTucks.of(mesh, pieces);
         if (fewestFaces + cornerTucks.fewestFaces() > options.maxFaces()) {
             throw new FaceLimitException(cornerTucks.refusal(mesh, plans, alone, width, widest, passes, fewestFaces, options.maxFaces()));
         }

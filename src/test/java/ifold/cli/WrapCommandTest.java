@@ -260,6 +260,23 @@ class WrapCommandTest {
         assertEquals(0, CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--max-faces", "100000"}, outputs)).code());
     }
 
+    /**
+     * A default strip that would pass the face limit widens to fit it, and a line says so: the
+     * 1,280-triangle icosphere, along its own 1,364 triangles, is likely to make 104,741 faces at
+     * a third of its widest strip (0.02354) and 83,571 at half of it.
+     */
+    @Test
+    void aDefaultStripPastTheLimitWidensToFitItSayingSo() throws Exception {
+        Path sphere = dir.resolve("sphere.off");
+        assertEquals(0, CliTest.run("generate", "icosphere", "--subdivisions", "3", "-o", sphere.toString()).code());
+        CliTest.Run run = CliTest.run("wrap", sphere.toString(), "--no-view", "--max-faces", "90000");
+        assertEquals(0, run.code(), run.err());
+        assertTrue(run.err().contains("sphere.off: the strip is 0.03069 wide, wider than the default third of the widest (0.02354), to keep within the"
+                + " limit of 90,000 faces of paper (--max-faces raises it)"), run.err());
+        assertTrue(run.out().contains("1280 triangles -> 1364 on the path, 1 strip ") && run.out().contains(" x 0.03069 "), run.out());
+        assertFalse(CliTest.run("wrap", sphere.toString(), "--no-view").err().contains("wider than the default"), "no line at the default");
+    }
+
     private static void assertOptionError(CliTest.Run run, String option) {
         assertEquals(2, run.code(), "a mistyped option exits 2: " + run.err());
         assertTrue(run.err().startsWith("ifold: option " + option), run.err());

@@ -703,7 +703,8 @@ public class WrapTest {
     @Test
     void aWrapStopsAtItsLimitOfFaces() throws Exception {
         HamiltonianRefinement.Result refinement = HamiltonianRefinement.refine(build(Solids.cube()));
-        Wrap.Options options = new Wrap.Options(Double.NaN, Double.NaN);
+        // The default's width, given: a default would widen to fit the limit.
+        Wrap.Options options = new Wrap.Options(Wrap.defaultWidth(refinement), Double.NaN);
         Wrap.Result whole = Wrap.wrap(refinement, options);
         int faces = whole.strips().get(0).sheet().faceCount();
         Wrap.wrap(refinement, options.withMaxFaces(faces)); // exactly enough
@@ -750,6 +751,31 @@ public class WrapTest {
         Wrap.Result result = Wrap.wrap(refinement, new Wrap.Options(width, Double.NaN, null, limit));
         int faces = result.strips().get(0).sheet().faceCount();
         assertTrue(faces <= limit && faces > limit / 2, "fits, and not by far: " + faces);
+    }
+
+    /**
+     * Where a third of the widest strip would pass the face limit, the default is the narrowest
+     * wider strip likely to fit, up to the widest: a scan's slivers set the widest, and its big
+     * triangles need thousands of passes of a third of it (the cow's 5,856 triangles were refused
+     * along either path). Where even the widest would not fit, the third is refused as before.
+     */
+    @Test
+    void theDefaultWidensToFitTheFaceLimit() throws Exception {
+        HamiltonianRefinement.Result refinement = HamiltonianRefinement.refine(build(Solids.cube()));
+        double widest = Wrap.widest(refinement);
+        long atThird = Wrap.likelyFaces(refinement);
+        long atWidest = Wrap.likelyFaces(refinement, widest);
+        assertTrue(atWidest < atThird, atWidest + " against " + atThird);
+        int limit = (int) ((atThird + atWidest) / 2);
+        Wrap.Result result = Wrap.wrap(refinement, new Wrap.Options(Double.NaN, Double.NaN, null, limit));
+        assertTrue(result.width() > widest / 3 * 1.01 && result.width() <= widest, "wider than a third, up to the widest: " + result.width());
+        assertEquals(Wrap.defaultThickness(result.width()), result.thickness(), 0, "the thickness follows the width");
+        assertTrue(result.strips().get(0).sheet().faceCount() <= limit);
+        assertEquals(widest / 3, Wrap.wrap(refinement, new Wrap.Options(Double.NaN, Double.NaN, null, (int) atThird)).width(), 0,
+                "a third where that fits");
+        Wrap.FaceLimitException none = assertThrows(Wrap.FaceLimitException.class,
+                () -> Wrap.wrap(refinement, new Wrap.Options(Double.NaN, Double.NaN, null, (int) (atWidest / 2))));
+        assertTrue(none.getMessage().contains("more than the limit of " + atWidest / 2 + " faces"), none.getMessage());
     }
 
     private static ParameterException assertParameter(String parameter, org.junit.jupiter.api.function.Executable make) {
