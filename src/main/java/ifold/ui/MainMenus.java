@@ -57,7 +57,8 @@ final class MainMenus {
         window.showModel.addActionListener(e -> window.showSurface());
         show.add(window.showModel);
         window.refinement.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_H, ctrl | shift));
-        window.refinement.setToolTipText("a wrap's model refined, lighter to darker along the path the strip follows, tree edges in green");
+        window.refinement.setToolTipText("the triangles the strip follows, lighter to darker along its path: the refinement's, tree edges"
+                + " in green, or the model's own where the wrap follows them");
         window.refinement.addActionListener(e -> window.showSurface());
         show.add(window.refinement);
         window.showCollisions.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_C, ctrl | shift));

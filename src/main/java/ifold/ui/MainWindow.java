@@ -64,7 +64,7 @@ final class MainWindow extends JFrame {
     final JCheckBoxMenuItem showModel = new JCheckBoxMenuItem("Model", true);
     final JCheckBoxMenuItem showCollisions = new JCheckBoxMenuItem("Collisions", false);
     final JCheckBoxMenuItem captions = new JCheckBoxMenuItem("Captions", true);
-    final JCheckBoxMenuItem refinement = new JCheckBoxMenuItem("Refinement and Hamiltonian path", false);
+    final JCheckBoxMenuItem refinement = new JCheckBoxMenuItem("Path of triangles", false);
     /** What needs a model open: the wrap's card has one. */
     final JMenuItem modelInformation;
     final JMenuItem exportRefinement;

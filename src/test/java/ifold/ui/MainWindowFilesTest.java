@@ -61,7 +61,7 @@ class MainWindowFilesTest extends WindowTestBase {
         assertTrue(window.view.awaitFrame(30_000));
         BufferedImage plain = window.view.picture();
         onEdt(() -> {
-            menuItem(window, "Refinement and Hamiltonian path").doClick();
+            menuItem(window, "Path of triangles").doClick();
             return null;
         });
         assertTrue(window.view.awaitFrame(30_000));

@@ -36,7 +36,7 @@ class MainWindowTest extends WindowTestBase {
         assertEquals(Planning.plan(Job.ZigZag.DEMO, Progress.NONE).folds().size(), (int) onEdt(() -> window.timeline.folds.getModel().getSize()));
         // Every menu the issue asks for, each item with its shortcut.
         for (String item : List.of("Open model", "Open fold script", "Export frames", "Export movie", "Export OBJ", "Export FOLD",
-                "Export report", "Export figure", "Quit", "Model", "Refinement and Hamiltonian path", "Collisions", "Paper colours", "Captions", "Reset camera", "Underside", "Zig-zag a triangle", "Turn gadget",
+                "Export report", "Export figure", "Quit", "Model", "Path of triangles", "Collisions", "Paper colours", "Captions", "Reset camera", "Underside", "Zig-zag a triangle", "Turn gadget",
                 "Wrap the model", "Play a script", "Keys", "New model", "Model information", "Export refinement")) {
             assertNotNull(onEdt(() -> menuItem(window, item).getAccelerator()), item + " has a shortcut");
         }
