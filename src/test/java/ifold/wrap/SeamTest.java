@@ -274,6 +274,25 @@ class SeamTest {
         WrapTest.check(dir, chosen.result(), sphere, 1, 300);
         PaperCollisions.Result check = PaperCollisions.check(Files.readString(dir.resolve("wrap.obj")), chosen.result().thickness());
         assertTrue(check.isClean(), check.summary());
+        // Past the face limit along its own triangles, that failure is the wrap's at once: the
+        // refinement, likely to make more, is not folded after it.
+        Wrap.Options tight = new Wrap.Options(chosen.result().width(), Double.NaN, null, 70_000);
+        java.util.Set<Integer> folded = new java.util.TreeSet<>();
+        Wrap.Watcher watcher = new Wrap.Watcher() {
+            @Override
+            public void wrapped(int done, int total) {
+                folded.add(total);
+            }
+
+            @Override
+            public boolean stopped() {
+                return false;
+            }
+        };
+        Wrap.FaceLimitException limit = org.junit.jupiter.api.Assertions.assertThrows(Wrap.FaceLimitException.class,
+                () -> Seam.wrap(refinement, tight, watcher, Collisions.OF_SEAM));
+        assertTrue(limit.getMessage().contains(" of " + own.mesh().faceCount() + " on the path"), limit.getMessage());
+        assertEquals(java.util.Set.of(own.mesh().faceCount()), folded, "only the own triangles were folded");
         // A model at most MOST_TRIANGLES is left to the tries of both paths, and an open one has no own path.
         assertEquals(null, Seam.ownInstead(ifold.job.WrapPath.of(mesh(Solids.icosphere(2))).refinement(), DEFAULTS));
     }
