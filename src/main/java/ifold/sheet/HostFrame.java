@@ -430,9 +430,10 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
      * The room beyond edge k by frame point (x, y): the least of its stretches that the point's
      * projection on the edge lies within {@code reach} of, or beyond the edge's end where the
      * stretch runs to it; {@link #OPEN} where none does. A stretch of no room counts only where
-     * the bend reaches into it, from the point to its row {@code lean} along the edge.
+     * the bend reaches into it, from the point to its row {@code lean} along the edge, by more
+     * than {@code tolerance} (how far apart the sheet's points are one).
      */
-    private double roomBy(int k, double x, double y, double reach, double lean) {
+    private double roomBy(int k, double x, double y, double reach, double lean, double tolerance) {
         if (room[k] == null) {
             return OPEN;
         }
@@ -448,8 +449,13 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
                 // the bend, from its crease's point to its row, reaches into it: a crease along a
                 // convex stretch that ends where the cut begins (a reflex corner of the face), or
                 // one whose row leans away from a cut beginning there (square_frame's diagonals
-                // from its inner corners), leans over its own stretch alone.
-                if (s + Math.max(0, lean) >= room[k][i] + 2 * near && s + Math.min(0, lean) <= room[k][i + 1] - 2 * near) {
+                // from its inner corners), leans over its own stretch alone. The crease's point
+                // is good to the sheet's tolerance: at a reflex corner of the big torus's flat
+                // bottom ring (its hosts' corners 93.6 degrees) a crease along the inner edge
+                // ended 1.1e-9 inside the cut's stretch from the corner, beyond 2 * near
+                // (5.7e-10), and its nest of folds was held onto its line, walls on each other.
+                double slack = Math.max(2 * near, tolerance);
+                if (s + Math.max(0, lean) >= room[k][i] + slack && s + Math.min(0, lean) <= room[k][i + 1] - slack) {
                     least = Math.min(least, room[k][i + 2]);
                 }
                 continue;
@@ -522,8 +528,10 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
      * {@code height} above this host, and stay within the room beyond every edge of the host:
      * its farthest point no farther beyond an edge's line than its height times that edge's room.
      * A crease inside the host at a small angle to an edge would otherwise lean out over it.
+     * The point is good to {@code tolerance}: a bend reaching into a stretch of no room by no
+     * more than that, from a crease ending by it, is not held by it.
      */
-    public double lean(double x, double y, double nx, double ny, double height, double slope, double out) {
+    public double lean(double x, double y, double nx, double ny, double height, double slope, double out, double tolerance) {
         if (room == null) {
             return out;
         }
@@ -541,7 +549,7 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
             }
             // The stretches of the edge the bend could reach beside: as far along it as it leans.
             double reach = Math.abs(nx * dx + ny * dy) / length * out + Tolerance.ON_PLANE * length;
-            double edgeRoom = roomBy(k, x, y, reach, (nx * dx + ny * dy) / length * out);
+            double edgeRoom = roomBy(k, x, y, reach, (nx * dx + ny * dy) / length * out, tolerance);
             if (edgeRoom >= OPEN) {
                 continue;
             }

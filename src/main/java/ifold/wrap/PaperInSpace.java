@@ -502,8 +502,8 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 slopes[k] = frame.roomBeyond(bend.ax(), bend.ay(), bend.bx(), bend.by(), sheet.tolerance());
                 double out = ranks[k] * sheet.thickness() * Math.min(1, 2 * slopes[k] / (1 + slopes[k]));
                 double low = (bend.low() + 0.5) * sheet.thickness();
-                out = frame.lean(bend.ax(), bend.ay(), bend.nx(), bend.ny(), low, slopes[k], out);
-                outs[k] = frame.lean(bend.bx(), bend.by(), bend.nx(), bend.ny(), low, slopes[k], out);
+                out = frame.lean(bend.ax(), bend.ay(), bend.nx(), bend.ny(), low, slopes[k], out, sheet.tolerance());
+                outs[k] = frame.lean(bend.bx(), bend.by(), bend.nx(), bend.ny(), low, slopes[k], out, sheet.tolerance());
             }
             FacingBends.keepApart(bends, outs, sheet.thickness() * NEST_TOLERANCE);
             nested.keepNested(outs);

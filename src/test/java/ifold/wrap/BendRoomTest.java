@@ -136,8 +136,8 @@ class BendRoomTest {
         double slope = Math.tan(turn / 2);
         double nx = f.ex()[1];
         double ny = f.ey()[1];
-        assertEquals(0.005, f.lean(f.localX(a), f.localY(a), nx, ny, height, slope, 0.005), 1e-12);
-        assertEquals(0, f.lean(f.localX(d), f.localY(d), nx, ny, height, slope, 0.005), 1e-12);
+        assertEquals(0.005, f.lean(f.localX(a), f.localY(a), nx, ny, height, slope, 0.005, 0), 1e-12);
+        assertEquals(0, f.lean(f.localX(d), f.localY(d), nx, ny, height, slope, 0.005, 0), 1e-12);
     }
 
     /**
@@ -159,9 +159,52 @@ class BendRoomTest {
         double[] d = {1.8, 1e-13, 0};
         double[] inside = {1.8, -0.001, 0};
         assertEquals(0, roomBeyond(f, new double[] {1.2, 0, 0}, d), "setup: beside the coplanar host, no room");
-        assertEquals(0.005, f.lean(f.localX(d), f.localY(d), nx, ny, height, slope, 0.005), 1e-12);
+        assertEquals(0.005, f.lean(f.localX(d), f.localY(d), nx, ny, height, slope, 0.005, 0), 1e-12);
         // Standing out across the edge from inside, it is held as before.
-        assertEquals(0.001, f.lean(f.localX(inside), f.localY(inside), f.ex()[1], f.ey()[1], height, slope, 0.005), 1e-9);
+        assertEquals(0.001, f.lean(f.localX(inside), f.localY(inside), f.ex()[1], f.ey()[1], height, slope, 0.005, 0), 1e-9);
+    }
+
+    /**
+     * A crease along a convex edge that ends at a reflex corner of a face cut into coplanar
+     * hosts leans over its own stretch, even where its end is off the corner by as much as the
+     * sheet's tolerance. The host is one of the 2,200-triangle torus's flat bottom ring
+     * ({@code generate torus --around 50 --across 22}; its figures as that wrap placed them): a
+     * trapezoid whose inner edge 0 (from the origin) turns by 16.4 degrees, its sides 1 and 3 cut
+     * from the coplanar hosts beside it (no room), its corners at the inner edge 93.6 degrees, so
+     * that a bend standing out beyond the inner edge at its end leans 3.6 degrees over the line of
+     * the cut, into the air beyond the ring's inner rim. Along that wrap's strip, a crease of the
+     * inner edge (a tuck's fold of rank 2, levels 1 to 8) ended 1.13e-9 from the corner along the
+     * cut, beyond the 5.7e-10 the cut's stretch was given, and was held to 1.4e-12 (its nest with
+     * it): three bends' walls on one line, 306 pairs in one plane, 17 such corners.
+     */
+    @Test
+    void aCreaseEndingAtAReflexCornerToTheSheetsToleranceStandsOut() {
+        double[] corners = {0, 0, 0.2865443944172902, -0.21605729861159578, 0.4718368564541063, 0, 0.15675221575932002,
+            0.23757692570102157};
+        double slope = 0.14405102110761064; // tan(8.2 degrees): half the turn of the inner and outer edges
+        HostFrame frame = new HostFrame(new double[] {0, 0, 0}, new double[] {1, 0, 0}, new double[] {0, 1, 0}, new double[] {0, 0, 1},
+                corners, null, null, null);
+        double[][] room = new double[4][];
+        for (int k = 0; k < 4; k++) {
+            room[k] = new double[] {0, frame.edge(k)[4], k % 2 == 0 ? slope : 0};
+        }
+        frame = frame.withEdges(room, null);
+        double thickness = 2.1402138410246894E-4;
+        double tolerance = 8e-9; // a billionth of the model's size
+        // The crease's end: on side 3, 1.13e-9 from the corner; the bend stands out along edge 0's outward normal.
+        double[] toCorner3 = {corners[6] / frame.edge(3)[4], corners[7] / frame.edge(3)[4]};
+        double x = 1.13e-9 * toCorner3[0];
+        double y = 1.13e-9 * toCorner3[1];
+        double nx = frame.edge(0)[3] / frame.edge(0)[4];
+        double ny = -frame.edge(0)[2] / frame.edge(0)[4];
+        double out = 2 * thickness * 2 * slope / (1 + slope); // rank 2
+        double height = 1.5 * thickness;
+        double[] end = {-0.0171 * ny, 0.0171 * nx}; // the crease's other end, a strip's width along the inner edge
+        assertTrue(frame.along(0, x, y, end[0], end[1], tolerance) && frame.roomBeyond(x, y, end[0], end[1], tolerance) == slope,
+                "setup: the crease lies along the inner edge");
+        assertEquals(out, frame.lean(x, y, nx, ny, height, slope, out, tolerance), 1e-15);
+        // Held by the cut, as before, where its end lies farther along the cut than the tolerance.
+        assertEquals(0, frame.lean(20 * x, 20 * y, nx, ny, height, slope, out, tolerance), 1e-10);
     }
     /**
      * A face cut into two convex hosts through the end of a concave edge: host A (a triangle)
