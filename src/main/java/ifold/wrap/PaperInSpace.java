@@ -1697,10 +1697,15 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 // Paper of both layers squashed where it ends (a fold inside a wall's, or running
                 // into a mitre): the bend is not there, where the paper across has the room.
                 boolean squashed = dropSquashed && insideAt(f, s.middle()) && insideAt(g, s.middle());
+                // A stretch of no length (both layers' ends at one place each) is a line from layer
+                // to layer, joined as squashed paper is: drawn as a quad, it was a sliver to the
+                // collision check, in the plane of the wall beside it (the 5,000-triangle torus
+                // along its own triangles, 2 of its pairs in one plane, by walls of levels 13 to 16).
+                boolean noLength = sameOrAt(s.fFrom(), s.fTo()) && sameOrAt(s.gFrom(), s.gTo());
                 if (flat && !(sameOrAt(s.fFrom(), s.gFrom()) && sameOrAt(s.fTo(), s.gTo()))) {
                     caps.add(quad);
                     capAfter.add(after);
-                } else if (!flat && !squashed) {
+                } else if (!flat && !squashed && !noLength) {
                     addBendCap(bendHost, quad, after, caps, capAfter);
                 } else if (!flat) {
                     joinSquashed(cornerNear(f, s.middle(), s.from()), cornerNear(g, s.middle(), s.from()), after, caps, capAfter);
