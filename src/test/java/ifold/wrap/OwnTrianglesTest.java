@@ -23,9 +23,9 @@ import org.junit.jupiter.params.provider.MethodSource;
  * The strip along the model's own triangles ({@link CycleCoverPath}) rather than the refinement's
  * 5n - 2: on convex solids at the default width it keeps every truth, and on a torus, whose
  * inner half's concave edges each triangle's last pass lies along (its paper there pressed onto
- * the edge's mitre), too; but there its paper still crosses itself at caps (the 16 x 8 torus:
- * 226 collisions), and at the widest strip the 320-triangle icosphere's layer order has 149
- * violations: docs/wrap.md, Limits.
+ * the edge's mitre), too, and its paper is sound there (the 16 x 8 torus had 226 collisions at
+ * caps before caps over edges went over the bends beside them); at the widest strip the
+ * 320-triangle icosphere's layer order has 149 violations: docs/wrap.md, Limits.
  */
 class OwnTrianglesTest {
 
