@@ -86,7 +86,7 @@ class OwnTrianglesTest {
      * paper faces with a corner twice (80 violations of truth 1), as the CGAL elephant at the
      * defaults had 1,062 such faces and the cow 310.
      */
-    @org.junit.jupiter.api.Test
+    @Test
     void piecesOfASmallTorusHaveNoRepeatedCorners(@TempDir Path dir) throws Exception {
         HalfedgeMesh mesh = mesh(stretched(Solids.torus(3, 1, 16, 8), 0.001, 0.001, 0.001));
         Wrap.Result result = Wrap.wrap(CycleCoverPath.of(mesh), new Wrap.Options(Double.NaN, Double.NaN));
@@ -140,7 +140,7 @@ class OwnTrianglesTest {
      * as pairs in one plane (38 → 9). The 16 × 8 torus had 4 such slivers among its 3,777
      * triangles of caps; now none.
      */
-    @org.junit.jupiter.api.Test
+    @Test
     void capsOfNoAreaHaveNoneToTheLastBit() throws Exception {
         HalfedgeMesh mesh = mesh(Solids.torus(3, 1, 16, 8));
         PlacedWrap placed = PlacedWrap.of(Wrap.wrap(CycleCoverPath.of(mesh), new Wrap.Options(Double.NaN, Double.NaN)));
@@ -184,7 +184,7 @@ class OwnTrianglesTest {
      * stretch, not changed here: drawn as lines too, they changed eight wraps of the comparison
      * and none of their collisions, nor the torus's).
      */
-    @org.junit.jupiter.api.Test
+    @Test
     void stretchesOfNoLengthAreLines() throws Exception {
         HalfedgeMesh mesh = mesh(ifold.mesh.Polycubes.surface(ifold.mesh.Polycubes.random(20, 4)));
         Wrap.Result result = Wrap.wrap(ifold.job.WrapPath.of(mesh).refinement(), new Wrap.Options(Double.NaN, Double.NaN));
