@@ -148,19 +148,20 @@ public final class WrapJob {
                 watcher.note(kept);
             }
             stopIfAsked(watcher);
-            String tooWide = widerThanSound(path.refinement(), request.options());
+            // A big model's path along its own triangles, asked once: the width's bound, the stage and the seam need it.
+            HamiltonianRefinement.Result instead = Seam.ownInstead(path.refinement(), request.options());
+            String tooWide = widerThanSound(path.refinement(), instead, request.options());
             if (tooWide != null) {
                 throw new Wrap.TooWideException(tooWide);
             }
             refinedAt = System.nanoTime();
             int tries = Seam.tries(path.refinement(), request.options().width());
-            HamiltonianRefinement.Result instead = Seam.ownInstead(path.refinement(), request.options());
             watcher.stage(instead != null ? "wrapping the model's own " + instead.mesh().faceCount() + " triangles"
                     : "wrapping " + path.refinement().mesh().faceCount() + " triangles"
                     + (tries > 1 ? ", begun at " + tries + " places round the path" : ""));
             // Of the starts tried, one whose paper the independent checker finds colliding is kept
             // only where all collide.
-            seam = Seam.wrap(path.refinement(), request.options(), watcher, Collisions.OF_SEAM);
+            seam = Seam.wrap(path.refinement(), instead, request.options(), watcher, Collisions.OF_SEAM);
             String passedOver = passedOver(model.toString(), seam);
             if (passedOver != null) {
                 watcher.note(passedOver);
@@ -215,9 +216,11 @@ public final class WrapJob {
      * the icosphere's (307 to 1,993 pairs); at the widest the cube, tetrahedron, octahedron and
      * icosahedron (24, 9, 59, 171). Wider strips lay the turns, gadgets, tucks and folds over
      * edges of neighbouring triangles at the hosts' corners (docs/wrap.md, Limits). A width over
-     * the widest is left to the engine, which names the triangle it does not fit.
+     * the widest is left to the engine, which names the triangle it does not fit. Of the paths
+     * tried, the model's own triangles' too: the seam's short one, or {@code instead}, a big
+     * model's ({@code Seam.ownInstead}; null where there is none).
      */
-    static String widerThanSound(HamiltonianRefinement.Result refinement, Wrap.Options options) {
+    static String widerThanSound(HamiltonianRefinement.Result refinement, HamiltonianRefinement.Result instead, Wrap.Options options) {
         double width = options.width();
         if (Double.isNaN(width) || !Wrap.takesSize(refinement.mesh())) {
             return null; // the default, or a model the engine refuses for its size, saying so
@@ -227,7 +230,7 @@ public final class WrapJob {
         // The seam also tries the path along the model's own triangles, whose default is wider.
         HamiltonianRefinement.Result own = Seam.ownPath(refinement, Double.NaN);
         if (own == null) {
-            own = Seam.ownInstead(refinement, options); // a big model's, where it is folded along them
+            own = instead; // a big model's, where it is folded along them
         }
         if (own != null) {
             widest = Math.max(widest, Wrap.widest(own));

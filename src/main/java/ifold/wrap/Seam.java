@@ -114,14 +114,21 @@ public final class Seam {
      */
     public static Chosen wrap(HamiltonianRefinement.Result refinement, Wrap.Options options, Wrap.Watcher watcher, PaperCheck check)
             throws Wrap.WrapException {
-        HamiltonianRefinement.Result instead = ownInstead(refinement, options);
+        return wrap(refinement, ownInstead(refinement, options), options, watcher, check);
+    }
+
+    /**
+     * As {@link #wrap(HamiltonianRefinement.Result, Wrap.Options, Wrap.Watcher, PaperCheck)},
+     * given {@code instead}, what {@link #ownInstead} gives for the refinement and {@code options}
+     * (a caller that asked it already need not find the matching again).
+     */
+    public static Chosen wrap(HamiltonianRefinement.Result refinement, HamiltonianRefinement.Result instead, Wrap.Options options,
+            Wrap.Watcher watcher, PaperCheck check) throws Wrap.WrapException {
         Wrap.WrapException insteadFailure = null;
         if (instead != null) {
             try {
-                Wrap.Result result = Wrap.wrap(instead, options, watcher);
-                long measuring = System.nanoTime();
-                PlacedWrap placed = PlacedWrap.of(result);
-                return new Chosen(instead, result, placed, 0, List.of(), List.of(), (System.nanoTime() - measuring) * 1e-9, List.of(),
+                Chosen alone = placed(instead, Wrap.wrap(instead, options, watcher), 0);
+                return new Chosen(instead, alone.result(), alone.placed(), 0, List.of(), List.of(), alone.measureSeconds(), List.of(),
                         List.of());
             } catch (Wrap.FaceLimitException e) {
                 // The refinement, likely to make more faces, would pass the limit too, after as
@@ -167,9 +174,8 @@ public final class Seam {
                 collisions.add(null);
                 continue;
             }
-            long measuring = System.nanoTime();
-            PlacedWrap placed = PlacedWrap.of(result);
-            double seconds = (System.nanoTime() - measuring) * 1e-9;
+            Chosen tried = placed(begun, result, shares.get(k));
+            PlacedWrap placed = tried.placed();
             int most = placed.analysis().maxLayers();
             layers.add(most);
             boolean fewer = best == null || most < best.placed().analysis().maxLayers();
@@ -190,7 +196,7 @@ public final class Seam {
                 kept = fewer || collides && most == best.placed().analysis().maxLayers() && found < bestFound;
             }
             if (kept) {
-                best = new Chosen(begun, result, placed, shares.get(k), seconds);
+                best = tried;
                 bestCollides = collides;
                 bestFound = collides ? found : 0;
             }
@@ -212,15 +218,14 @@ public final class Seam {
                     ownCollisions.add(null);
                     continue;
                 }
-                long measuring = System.nanoTime();
-                PlacedWrap placed = PlacedWrap.of(result);
-                double seconds = (System.nanoTime() - measuring) * 1e-9;
+                Chosen tried = placed(begun, result, share);
+                PlacedWrap placed = tried.placed();
                 int most = placed.analysis().maxLayers();
                 ownLayers.add(most);
                 if (best == null) { // the refinement's first start failed: the own triangles' first that wraps
                     int found = check.collisions(result, placed);
                     ownCollisions.add(found >= 0 ? found : null);
-                    best = new Chosen(begun, result, placed, share, seconds);
+                    best = tried;
                     bestCollides = found > 0;
                     continue;
                 }
@@ -231,7 +236,7 @@ public final class Seam {
                 int found = check.collisions(result, placed);
                 ownCollisions.add(found >= 0 ? found : null);
                 if (found == 0 && (bestCollides || most < best.placed().analysis().maxLayers())) {
-                    best = new Chosen(begun, result, placed, share, seconds);
+                    best = tried;
                     bestCollides = false;
                 }
             }
@@ -243,6 +248,13 @@ public final class Seam {
                 tries > 1 ? java.util.Collections.unmodifiableList(layers) : List.of(),
                 tries > 1 ? java.util.Collections.unmodifiableList(collisions) : List.of(),
                 best.measureSeconds(), java.util.Collections.unmodifiableList(ownLayers), java.util.Collections.unmodifiableList(ownCollisions));
+    }
+
+    /** A start's wrap placed in space and measured, how long that took its {@link Chosen#measureSeconds}. */
+    private static Chosen placed(HamiltonianRefinement.Result begun, Wrap.Result result, double along) {
+        long measuring = System.nanoTime();
+        PlacedWrap placed = PlacedWrap.of(result);
+        return new Chosen(begun, result, placed, along, (System.nanoTime() - measuring) * 1e-9);
     }
 
     /**
