@@ -3,7 +3,6 @@ package ifold.refine;
 import ifold.geom.Triangles;
 import ifold.geom.UnionFind;
 import ifold.mesh.HalfedgeMesh;
-import java.util.ArrayDeque;
 import java.util.Arrays;
 
 /**
@@ -23,9 +22,18 @@ import java.util.Arrays;
  * </ol>
  * Each triangle has one matched edge, so it is cut for at most one splice: a component of n
  * triangles covered by k cycles becomes a path of n + 6(k - 1) triangles, and every triangle
- * not cut keeps its own angles rather than half of them. Where there is no perfect matching (a
- * surface with a boundary, whose triangles have fewer than three neighbours), there is no such
- * path, and the refinement is followed.
+ * not cut keeps its own angles rather than half of them.
+ *
+ * <p>On a surface with a boundary a triangle with a side on it has two neighbours, and keeps
+ * both for its cycle; an ear (two sides on the boundary) is on no cycle; and the triangles with
+ * three neighbours need not have a perfect matching among themselves ({@link #cover}). A
+ * triangle on no cycle is cut from its incentre as the refinement cuts every triangle, and gone
+ * round as the refinement goes round its spanning tree, a node of the tree of its own: the path
+ * goes into it by one half of a side and out by the other half, round its incentre and every
+ * node joined on across its other sides. A cut triangle is three pieces and one more for each
+ * side split, so the path is as long as the refinement's there and as the cycles' elsewhere:
+ * the shared capsule's 10,000 triangles (a sphere split open along a seam, 200 ears at its
+ * poles) become a path of 23,006 pieces, 2,698 of them cut, against the refinement's 49,998.
  *
  * <p>The result is a {@link HamiltonianRefinement.Result} whose {@link RefinedMesh} lists whole
  * triangles ({@code RefinedMesh.FACE}) among the pieces of the cut ones, its split edges in
@@ -37,7 +45,7 @@ public final class CycleCoverPath {
 
     /**
      * The path through {@code mesh}'s own triangles, a cycle for each connected component, or null
-     * where it has none this way (a triangle with a side on a boundary; no perfect matching).
+     * where it has none this way (a lone triangle, which the refinement cuts as this would).
      *
      * @throws IllegalArgumentException if a face is not a triangle or has no area
      */
@@ -52,32 +60,134 @@ public final class CycleCoverPath {
             if (Triangles.isDegenerate(xyz, mesh.fromVertex(h), mesh.toVertex(h), mesh.toVertex(mesh.next(h)))) {
                 throw new IllegalArgumentException("face " + f + " has no area, so it has no incentre");
             }
-            for (int k = 0; k < 3; k++, h = mesh.next(h)) {
-                if (mesh.face(HalfedgeMesh.twin(h)) < 0) {
-                    return null; // a side on the boundary: fewer than three neighbours
-                }
+            if (neighbours(mesh, f) == 0) {
+                return null; // a lone triangle: no cycle passes it
             }
         }
         if (faces == 0 || mesh.halfedgeCount() > (Integer.MAX_VALUE >>> 2)) {
             return null;
         }
-        int[] matched = Matching.perfect(mesh);
-        if (matched == null) {
-            return null;
+        return new Splicer(mesh, cover(mesh)).path();
+    }
+
+    /** How many neighbours triangle {@code f} has across its sides (three but on a boundary). */
+    static int neighbours(HalfedgeMesh mesh, int f) {
+        int count = 0;
+        int h = mesh.faceHalfedge(f);
+        for (int k = 0; k < 3; k++, h = mesh.next(h)) {
+            count += mesh.face(HalfedgeMesh.twin(h)) >= 0 ? 1 : 0;
         }
-        return new Splicer(mesh, matched).path();
+        return count;
     }
 
     /**
-     * A perfect matching of the dual graph by Edmonds' blossoms, begun from a greedy one: each
-     * triangle's matched halfedge (the side across which its partner lies), or null where the
-     * graph has none.
+     * Which triangles are cut (on no cycle, gone round from their incentres) and each other
+     * triangle's side off its cycle: the side across which its partner lies, or, where a
+     * neighbour is cut, the side facing it; -1 for a triangle with a side on the boundary, whose
+     * two others are its cycle's.
+     */
+    record Cover(int[] offCycle, boolean[] cut) {
+    }
+
+    /**
+     * The cover of {@code mesh}'s triangles by cycles and cut triangles, as few cut as this finds.
+     * A triangle on a cycle passes two of its sides to the cycle, so one with three neighbours
+     * is matched to one of them, or faces a cut one, and one with two faces none. Ears (one
+     * neighbour) are cut, and then every triangle left with fewer than two neighbours not cut;
+     * the triangles left with three are matched, a maximum matching; a neighbour of one left
+     * unmatched is cut, and the rest matched again, until every triangle left with three has a
+     * partner. A closed mesh's matching is perfect at once.
+     */
+    static Cover cover(HalfedgeMesh mesh) {
+        int faces = mesh.faceCount();
+        boolean[] cut = new boolean[faces];
+        int[] live = new int[faces]; // neighbours not cut
+        int[] queue = new int[faces];
+        int tail = 0;
+        for (int f = 0; f < faces; f++) {
+            live[f] = neighbours(mesh, f);
+            if (live[f] < 2) {
+                cut[f] = true;
+                queue[tail++] = f;
+            }
+        }
+        Matching m = new Matching(mesh);
+        while (true) {
+            // A cut triangle leaves its neighbours one fewer: any with fewer than two is cut too.
+            for (int head = 0; head < tail; head++) {
+                int h = mesh.faceHalfedge(queue[head]);
+                for (int k = 0; k < 3; k++, h = mesh.next(h)) {
+                    int g = mesh.face(HalfedgeMesh.twin(h));
+                    if (g >= 0 && !cut[g] && --live[g] < 2) {
+                        cut[g] = true;
+                        queue[tail++] = g;
+                    }
+                }
+            }
+            tail = 0;
+            for (int f = 0; f < faces; f++) {
+                m.node[f] = !cut[f] && live[f] == 3;
+            }
+            m.match();
+            // A triangle left unmatched faces a neighbour cut for it, and needs no partner. Cut
+            // itself, it would take its three neighbours' sides off their cycles, and their
+            // partners would be left unmatched in turn (the shared capsule: 49,982 pieces
+            // rather than 23,006).
+            for (int f = 0; f < faces; f++) {
+                if (m.node[f] && m.mate[f] < 0 && !cut[f]) {
+                    int h = mesh.faceHalfedge(f);
+                    int neighbour = f;
+                    for (int k = 0; k < 3; k++, h = mesh.next(h)) {
+                        int g = mesh.face(HalfedgeMesh.twin(h));
+                        if (g >= 0 && !cut[g]) {
+                            neighbour = g;
+                            break;
+                        }
+                    }
+                    cut[neighbour] = true;
+                    queue[tail++] = neighbour;
+                }
+            }
+            if (tail == 0) {
+                break;
+            }
+        }
+        int[] offCycle = new int[faces];
+        for (int f = 0; f < faces; f++) {
+            offCycle[f] = -1;
+            if (cut[f]) {
+                continue;
+            }
+            int h = mesh.faceHalfedge(f);
+            for (int k = 0; k < 3; k++, h = mesh.next(h)) {
+                int g = mesh.face(HalfedgeMesh.twin(h));
+                if (g >= 0 && (m.node[f] ? g == m.mate[f] : cut[g])) {
+                    offCycle[f] = h;
+                    break;
+                }
+            }
+        }
+        // Two triangles sharing two sides: one side matched on both, the same edge.
+        for (int f = 0; f < faces; f++) {
+            int g = m.node[f] ? m.mate[f] : -1;
+            if (g >= 0 && HalfedgeMesh.twin(offCycle[f]) != offCycle[g]) {
+                offCycle[g] = HalfedgeMesh.twin(offCycle[f]);
+            }
+        }
+        return new Cover(offCycle, cut);
+    }
+
+    /**
+     * A maximum matching of the dual graph's nodes (triangles; which, set by the caller) by
+     * Edmonds' blossoms, begun from a greedy one.
      */
     static final class Matching {
         private final HalfedgeMesh mesh;
         private final int faces;
+        /** Whether each triangle is a node of the graph: the others are not matched. */
+        final boolean[] node;
         /** The partner of each triangle, -1 while unmatched. */
-        private final int[] mate;
+        final int[] mate;
         private final int[] parent;
         private final int[] base;
         private final boolean[] inQueue;
@@ -85,7 +195,7 @@ public final class CycleCoverPath {
         private final boolean[] onPath;
         private final int[] queue;
 
-        private Matching(HalfedgeMesh mesh) {
+        Matching(HalfedgeMesh mesh) {
             this.mesh = mesh;
             this.faces = mesh.faceCount();
             mate = new int[faces];
@@ -95,49 +205,36 @@ public final class CycleCoverPath {
             inBlossom = new boolean[faces];
             onPath = new boolean[faces];
             queue = new int[faces];
+            node = new boolean[faces];
         }
 
-        static int[] perfect(HalfedgeMesh mesh) {
-            Matching m = new Matching(mesh);
-            Arrays.fill(m.mate, -1);
-            // Greedy first, the triangle with fewest free neighbours taking one: few are left to augment.
-            for (int f = 0; f < m.faces; f++) {
-                if (m.mate[f] < 0) {
+        /** The triangle across halfedge {@code h} where it is a node of the graph, else -1. */
+        private int across(int h) {
+            int g = mesh.face(HalfedgeMesh.twin(h));
+            return g >= 0 && node[g] ? g : -1;
+        }
+
+        /** Matches the nodes, from none matched: greedily, then along augmenting paths. */
+        void match() {
+            Arrays.fill(mate, -1);
+            for (int f = 0; f < faces; f++) {
+                if (node[f] && mate[f] < 0) {
                     int h = mesh.faceHalfedge(f);
                     for (int k = 0; k < 3; k++, h = mesh.next(h)) {
-                        int g = mesh.face(HalfedgeMesh.twin(h));
-                        if (g != f && m.mate[g] < 0) {
-                            m.mate[f] = g;
-                            m.mate[g] = f;
+                        int g = across(h);
+                        if (g >= 0 && g != f && mate[g] < 0) {
+                            mate[f] = g;
+                            mate[g] = f;
                             break;
                         }
                     }
                 }
             }
-            for (int f = 0; f < m.faces; f++) {
-                if (m.mate[f] < 0 && !m.augment(f)) {
-                    return null;
+            for (int f = 0; f < faces; f++) {
+                if (node[f] && mate[f] < 0) {
+                    augment(f); // where no path augments from f now, none will later: f stays unmatched
                 }
             }
-            int[] matchedHalfedge = new int[m.faces];
-            for (int f = 0; f < m.faces; f++) {
-                matchedHalfedge[f] = -1;
-                int h = mesh.faceHalfedge(f);
-                for (int k = 0; k < 3; k++, h = mesh.next(h)) {
-                    if (mesh.face(HalfedgeMesh.twin(h)) == m.mate[f]) {
-                        matchedHalfedge[f] = h;
-                        break;
-                    }
-                }
-            }
-            // Two triangles sharing two sides: one side matched on both, the same edge.
-            for (int f = 0; f < m.faces; f++) {
-                int g = m.mate[f];
-                if (HalfedgeMesh.twin(matchedHalfedge[f]) != matchedHalfedge[g]) {
-                    matchedHalfedge[g] = HalfedgeMesh.twin(matchedHalfedge[f]);
-                }
-            }
-            return matchedHalfedge;
         }
 
         /** Edmonds' search from the free triangle {@code root}: whether it found a path to augment along. */
@@ -155,8 +252,8 @@ public final class CycleCoverPath {
                 int v = queue[head++];
                 int h = mesh.faceHalfedge(v);
                 for (int k = 0; k < 3; k++, h = mesh.next(h)) {
-                    int to = mesh.face(HalfedgeMesh.twin(h));
-                    if (to == v || base[v] == base[to] || mate[v] == to) {
+                    int to = across(h);
+                    if (to < 0 || to == v || base[v] == base[to] || mate[v] == to) {
                         continue;
                     }
                     if (to == root || mate[to] >= 0 && parent[mate[to]] >= 0) {
@@ -223,21 +320,31 @@ public final class CycleCoverPath {
         }
     }
 
-    /** The cycles of the unmatched edges, spliced into one per component, emitted as pieces. */
+    /**
+     * The cycles of the edges not matched, spliced into one per component, and the triangles on
+     * no such cycle gone round from their incentres as the refinement goes round its triangles;
+     * emitted as pieces.
+     */
     private static final class Splicer {
         private final HalfedgeMesh mesh;
         private final int[] matched;
-        /** The cycle each triangle lies on. */
-        private final int[] cycleOf;
-        /** Whether each edge is split for a splice. */
+        /** The node of the tree each triangle belongs to: its cycle, or itself where it is cut (on no cycle). */
+        private final int[] nodeOf;
+        /** Whether each triangle lies on a cycle (else it is cut from its incentre, every side a piece). */
+        private final boolean[] onCycle;
+        /** Whether each edge is split for a splice: the edges of the tree joining the nodes. */
         private final boolean[] split;
         private int[] path;
         private int emitted;
 
-        Splicer(HalfedgeMesh mesh, int[] matched) {
+        Splicer(HalfedgeMesh mesh, Cover cover) {
             this.mesh = mesh;
-            this.matched = matched;
-            this.cycleOf = new int[mesh.faceCount()];
+            this.matched = cover.offCycle();
+            this.nodeOf = new int[mesh.faceCount()];
+            this.onCycle = new boolean[mesh.faceCount()];
+            for (int f = 0; f < onCycle.length; f++) {
+                onCycle[f] = !cover.cut()[f];
+            }
             this.split = new boolean[mesh.edgeCount()];
         }
 
@@ -267,36 +374,75 @@ public final class CycleCoverPath {
             return Triangles.twiceArea(xyz, a, b, c) / longest;
         }
 
-        /** The halfedge of {@code f} other than {@code matched[f]} and {@code not}: the cycle's way on. */
+        /** The halfedge of {@code f} other than {@code matched[f]}, {@code not} and a side on the boundary: the cycle's way on. */
         private int otherCycleSide(int f, int not) {
             int h = mesh.faceHalfedge(f);
             for (int k = 0; k < 3; k++, h = mesh.next(h)) {
-                if (h != matched[f] && h != not) {
+                if (h != matched[f] && h != not && mesh.face(HalfedgeMesh.twin(h)) >= 0) {
                     return h;
                 }
             }
             throw new IllegalStateException("triangle " + f + " has no side left for its cycle");
         }
 
-        HamiltonianRefinement.Result path() {
+        /** Whether the side of halfedge {@code h} joins two triangles on cycles and is off neither's cycle: a cycle's way on. */
+        private boolean cycleSide(int h) {
+            int g = mesh.face(HalfedgeMesh.twin(h));
+            return g >= 0 && onCycle[mesh.face(h)] && onCycle[g] && h != matched[mesh.face(h)] && HalfedgeMesh.twin(h) != matched[g];
+        }
+
+        /**
+         * Numbers the nodes of the tree: each cycle (the triangles not cut, joined by their cycle
+         * sides, two each), and each cut triangle on its own. How many.
+         */
+        private int nodes() {
             int faces = mesh.faceCount();
-            // The cycles.
-            Arrays.fill(cycleOf, -1);
-            int cycles = 0;
+            Arrays.fill(nodeOf, -1);
+            int nodes = 0;
+            int[] queue = new int[faces];
             for (int s = 0; s < faces; s++) {
-                if (cycleOf[s] >= 0) {
+                if (nodeOf[s] >= 0) {
                     continue;
                 }
-                int f = s;
-                int out = otherCycleSide(s, -1);
-                while (cycleOf[f] < 0) {
-                    cycleOf[f] = cycles;
-                    int in = HalfedgeMesh.twin(out);
-                    f = mesh.face(in);
-                    out = otherCycleSide(f, in);
+                nodeOf[s] = nodes;
+                if (onCycle[s]) {
+                    int head = 0;
+                    int tail = 0;
+                    queue[tail++] = s;
+                    while (head < tail) {
+                        int f = queue[head++];
+                        int sides = 0;
+                        int h = mesh.faceHalfedge(f);
+                        for (int k = 0; k < 3; k++, h = mesh.next(h)) {
+                            if (cycleSide(h)) {
+                                sides++;
+                                int g = mesh.face(HalfedgeMesh.twin(h));
+                                if (nodeOf[g] < 0) {
+                                    nodeOf[g] = nodes;
+                                    queue[tail++] = g;
+                                }
+                            }
+                        }
+                        if (sides != 2) {
+                            throw new IllegalStateException("triangle " + f + " has " + sides + " sides on its cycle");
+                        }
+                    }
                 }
-                cycles++;
+                nodes++;
             }
+            return nodes;
+        }
+
+        /** Whether the side of halfedge {@code h} may join its triangle's node to another's: any side of a cut triangle, a cycle's triangle's matched side. */
+        private boolean joins(int h) {
+            int f = mesh.face(h);
+            return !onCycle[f] || matched[f] == h;
+        }
+
+        /** The path, or null where it would be longer than an array holds. */
+        HamiltonianRefinement.Result path() {
+            int faces = mesh.faceCount();
+            int nodes = nodes();
             double[] incentres = new double[3 * faces];
             double[] xyz = mesh.positionArray();
             for (int f = 0; f < faces; f++) {
@@ -305,12 +451,15 @@ public final class CycleCoverPath {
             }
             // A spanning forest of splices, the widest first (Kruskal): a splice's pieces are
             // narrower than its triangles, and the narrowest triangle of the path sets the widest strip.
-            int[] candidates = new int[faces];
+            int[] candidates = new int[mesh.halfedgeCount() / 2];
             int count = 0;
             for (int f = 0; f < faces; f++) {
-                int g = mesh.face(HalfedgeMesh.twin(matched[f]));
-                if (f < g && cycleOf[f] != cycleOf[g]) {
-                    candidates[count++] = matched[f];
+                int h = mesh.faceHalfedge(f);
+                for (int k = 0; k < 3; k++, h = mesh.next(h)) {
+                    int g = mesh.face(HalfedgeMesh.twin(h));
+                    if (f < g && nodeOf[f] != nodeOf[g] && joins(h) && joins(HalfedgeMesh.twin(h))) {
+                        candidates[count++] = h;
+                    }
                 }
             }
             double[] narrowest = new double[count];
@@ -320,29 +469,42 @@ public final class CycleCoverPath {
                 narrowest[i] = Math.min(narrowestPiece(xyz, incentres, candidates[i]), narrowestPiece(xyz, incentres, HalfedgeMesh.twin(candidates[i])));
             }
             Arrays.sort(order, (x, y) -> Double.compare(narrowest[y], narrowest[x]));
-            int[] joined = UnionFind.pieces(cycles);
+            int[] joined = UnionFind.pieces(nodes);
             for (int i : order) {
                 int h = candidates[i];
                 int f = mesh.face(h);
                 int g = mesh.face(HalfedgeMesh.twin(h));
-                if (UnionFind.find(joined, cycleOf[f]) != UnionFind.find(joined, cycleOf[g])) {
-                    UnionFind.union(joined, cycleOf[f], cycleOf[g]);
+                if (UnionFind.find(joined, nodeOf[f]) != UnionFind.find(joined, nodeOf[g])) {
+                    UnionFind.union(joined, nodeOf[f], nodeOf[g]);
                     split[HalfedgeMesh.edge(h)] = true;
                 }
             }
-            int splices = 0;
-            for (boolean s : split) {
-                splices += s ? 1 : 0;
+            // A triangle on a cycle is one piece, or four where it is spliced; a cut one three and
+            // one more for each split side.
+            long pieces = 0;
+            for (int f = 0; f < faces; f++) {
+                int splits = 0;
+                int h = mesh.faceHalfedge(f);
+                for (int k = 0; k < 3; k++, h = mesh.next(h)) {
+                    splits += split[HalfedgeMesh.edge(h)] ? 1 : 0;
+                }
+                pieces += onCycle[f] ? (splits == 0 ? 1 : 4) : 3 + splits;
             }
-            path = new int[faces + 6 * splices];
-            // One walk per component, from its lowest triangle: round its cycle, into each cycle spliced on.
-            boolean[] walked = new boolean[cycles];
-            int[] componentStart = new int[cycles + 1];
+            if (pieces > Integer.MAX_VALUE - 8) {
+                return null;
+            }
+            path = new int[(int) pieces];
+            // One tour per component, from its lowest triangle: round its cycle, or round its pieces,
+            // into each node joined on in its turn.
+            boolean[] toured = new boolean[nodes];
+            int[] componentStart = new int[faces + 1];
             int components = 0;
             for (int s = 0; s < faces; s++) {
-                if (!walked[cycleOf[s]]) {
+                int root = UnionFind.find(joined, nodeOf[s]);
+                if (!toured[root]) {
+                    toured[root] = true;
                     componentStart[components++] = emitted;
-                    walk(s, walked);
+                    tour(s);
                 }
             }
             componentStart[components] = emitted;
@@ -353,78 +515,136 @@ public final class CycleCoverPath {
                     Arrays.copyOf(componentStart, components + 1), split);
         }
 
-        /**
-         * A cycle being walked: it began at the spliced triangle {@code stop}, and when the walk
-         * comes back to it, the pieces {@code closing} are emitted and the walk goes on round the
-         * cycle it was spliced from, by the side {@code outAfter}.
-         */
-        private record Round(int stop, int[] closing, int outAfter) {
+        // What is left to emit, last first: a piece, or a node to go round, entered across a side at a corner.
+        private static final int PIECE = 0;
+        /** A cut triangle gone round from a side at a corner (side -1: the first triangle, gone round from its first side). */
+        private static final int CUT = 1;
+        /** A cycle's triangle entered across its matched side at a corner: its cycle gone round from it back to it. */
+        private static final int CYCLE = 2;
+        /** The next triangle round a cycle, entered across a side, the cycle ending at a triangle. */
+        private static final int ROUND = 3;
+
+        private int[] tasks = new int[64];
+        private int top;
+
+        private void push(int kind, int a, int b, int c) {
+            if (top + 4 > tasks.length) {
+                tasks = Arrays.copyOf(tasks, 2 * tasks.length);
+            }
+            tasks[top++] = kind;
+            tasks[top++] = a;
+            tasks[top++] = b;
+            tasks[top++] = c;
         }
 
-        /** Emits the component of {@code start}'s cycle, every cycle spliced on walked in its turn. */
-        private void walk(int start, boolean[] walked) {
-            walked[cycleOf[start]] = true;
-            ArrayDeque<Round> rounds = new ArrayDeque<>();
-            rounds.push(new Round(start, null, -1)); // the walk ends back at its start
-            int f = start;
-            int out = otherCycleSide(start, -1);
-            int in = otherCycleSide(start, out); // as if from the triangle before it round the cycle
-            while (true) {
-                int next = emitTriangle(f, in, out, walked, rounds);
-                int g = mesh.face(HalfedgeMesh.twin(next));
-                while (g == rounds.peek().stop) {
-                    Round done = rounds.pop();
-                    if (done.closing == null) {
-                        return;
+        /** Emits the component of triangle {@code start}, every node joined on gone round in its turn. */
+        private void tour(int start) {
+            top = 0;
+            if (onCycle[start]) {
+                int out = otherCycleSide(start, -1);
+                round(start, otherCycleSide(start, out), start); // as if from the triangle before it round the cycle
+            } else {
+                goRound(start, -1, -1);
+            }
+            while (top > 0) {
+                top -= 4;
+                int kind = tasks[top];
+                int a = tasks[top + 1];
+                int b = tasks[top + 2];
+                int c = tasks[top + 3];
+                switch (kind) {
+                    case PIECE -> path[emitted++] = a;
+                    case CUT -> goRound(a, b, c);
+                    case CYCLE -> enterCycle(a, b, c);
+                    default -> {
+                        if (a != c) {
+                            round(a, b, c);
+                        }
                     }
-                    for (int code : done.closing) {
-                        path[emitted++] = code;
-                    }
-                    next = done.outAfter;
-                    g = mesh.face(HalfedgeMesh.twin(next));
                 }
-                in = HalfedgeMesh.twin(next);
-                f = g;
-                out = otherCycleSide(f, in);
             }
         }
 
+        /** The half of side {@code h} at its end {@code v}, as a piece. */
+        private int half(int h, int v) {
+            return h << 2 | (mesh.fromVertex(h) == v ? RefinedMesh.FIRST_HALF : RefinedMesh.SECOND_HALF);
+        }
+
         /**
-         * Emits triangle {@code f}, entered by its side {@code in} and left by {@code out}, and
-         * returns the side the walk leaves by: whole, leaving by {@code out}; or, where its matched
-         * edge splices on a cycle not yet walked, its pieces up to that cycle, which is pushed on
-         * {@code rounds} with the pieces that close it, leaving by the spliced triangle's side.
-         * The path goes A, E1 | F1, C, (round the cycle spliced on), D, F2 | E2, B: A and B the
-         * pieces on the sides entered and left by, E1 and E2 the halves of the matched edge at the
-         * corner it shares with A and with B, F1 and F2 the halves on the far side, C and D the
-         * pieces there beside them.
+         * Pushes, to be emitted in this order: the pieces of side {@code h} of a cut triangle or a
+         * spliced one, gone along from its end {@code v}: its whole piece, or where it is split, its
+         * half at {@code v}, the node across it gone round (entered at {@code v}), and its other half.
+         * Pushed last first, as all pushes here.
          */
-        private int emitTriangle(int f, int in, int out, boolean[] walked, ArrayDeque<Round> rounds) {
-            int e = matched[f];
-            int g = mesh.face(HalfedgeMesh.twin(e));
-            if (!split[HalfedgeMesh.edge(e)] || walked[cycleOf[g]]) {
-                path[emitted++] = in << 2 | RefinedMesh.FACE;
-                return out;
+        private void pushSide(int h, int v) {
+            if (!split[HalfedgeMesh.edge(h)]) {
+                push(PIECE, h << 2 | RefinedMesh.WHOLE, 0, 0);
+                return;
             }
-            walked[cycleOf[g]] = true;
-            int v1 = sharedCorner(e, in);
-            int across = HalfedgeMesh.twin(e);
-            int nearHalf = mesh.fromVertex(e) == v1 ? RefinedMesh.FIRST_HALF : RefinedMesh.SECOND_HALF;
-            int farHalf = RefinedMesh.FIRST_HALF + RefinedMesh.SECOND_HALF - nearHalf; // across runs the other way
-            int leave = sideAt(g, across, v1);
-            int back = sideAt(g, across, otherEnd(e, v1));
-            path[emitted++] = in << 2 | RefinedMesh.WHOLE;
-            path[emitted++] = e << 2 | nearHalf;
-            path[emitted++] = across << 2 | farHalf;
-            path[emitted++] = leave << 2 | RefinedMesh.WHOLE;
-            int[] closing = {
-                back << 2 | RefinedMesh.WHOLE,
-                across << 2 | nearHalf,
-                e << 2 | farHalf,
-                out << 2 | RefinedMesh.WHOLE,
-            };
-            rounds.push(new Round(g, closing, out));
-            return leave;
+            int across = HalfedgeMesh.twin(h);
+            push(PIECE, half(h, otherEnd(h, v)), 0, 0);
+            push(onCycle[mesh.face(across)] ? CYCLE : CUT, mesh.face(across), across, v);
+            push(PIECE, half(h, v), 0, 0);
+        }
+
+        /**
+         * Goes round cut triangle {@code t} from its incentre, entered across side {@code in} at
+         * corner {@code v} (the half of {@code in} there first, its other half last), or, where
+         * {@code in} is -1, from its first side on.
+         */
+        private void goRound(int t, int in, int v) {
+            if (in < 0) {
+                int h = mesh.faceHalfedge(t);
+                int h1 = mesh.next(h);
+                int h2 = mesh.next(h1);
+                pushSide(h2, mesh.fromVertex(h2));
+                pushSide(h1, mesh.fromVertex(h1));
+                pushSide(h, mesh.fromVertex(h));
+                return;
+            }
+            int first = sideAt(t, in, v);
+            int w = otherEnd(first, v);
+            int second = sideAt(t, first, w);
+            push(PIECE, half(in, otherEnd(in, v)), 0, 0);
+            pushSide(second, w);
+            pushSide(first, v);
+            push(PIECE, half(in, v), 0, 0);
+        }
+
+        /**
+         * Goes round the cycle of triangle {@code g}, entered across its matched side {@code in}
+         * at corner {@code v}: the half of {@code in} there, the piece on its side at {@code v},
+         * round the cycle and back, the piece on its third side, the other half of {@code in}.
+         */
+        private void enterCycle(int g, int in, int v) {
+            int leave = sideAt(g, in, v);
+            int back = sideAt(g, in, otherEnd(in, v));
+            push(PIECE, half(in, otherEnd(in, v)), 0, 0);
+            push(PIECE, back << 2 | RefinedMesh.WHOLE, 0, 0);
+            push(ROUND, mesh.face(HalfedgeMesh.twin(leave)), HalfedgeMesh.twin(leave), g);
+            push(PIECE, leave << 2 | RefinedMesh.WHOLE, 0, 0);
+            push(PIECE, half(in, v), 0, 0);
+        }
+
+        /**
+         * Triangle {@code f} of a cycle, entered by its side {@code in}, left by the other side of
+         * its cycle, and the cycle on to {@code stop}: whole, or, where its matched side is split
+         * (a node joined on, other than the one the cycle was entered from, at {@code stop}), its
+         * pieces round that node. The path goes A, E1 | (the node across), E2, B: A and B the
+         * pieces on the sides entered and left by, E1 and E2 the halves of the matched side at the
+         * corner it shares with A and with B.
+         */
+        private void round(int f, int in, int stop) {
+            int out = otherCycleSide(f, in);
+            push(ROUND, mesh.face(HalfedgeMesh.twin(out)), HalfedgeMesh.twin(out), stop);
+            int e = matched[f];
+            if (e < 0 || !split[HalfedgeMesh.edge(e)]) {
+                push(PIECE, in << 2 | RefinedMesh.FACE, 0, 0);
+                return;
+            }
+            push(PIECE, out << 2 | RefinedMesh.WHOLE, 0, 0);
+            pushSide(e, sharedCorner(e, in));
+            push(PIECE, in << 2 | RefinedMesh.WHOLE, 0, 0);
         }
 
         /** The corner that halfedges {@code a} and {@code b} of one triangle share. */

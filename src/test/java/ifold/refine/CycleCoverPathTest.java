@@ -1,6 +1,7 @@
 package ifold.refine;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -9,6 +10,7 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.io.MeshReaders;
+import ifold.testing.OpenSurfaces;
 import ifold.testing.SharedMeshes;
 import ifold.mesh.PolygonSoup;
 import ifold.mesh.Solids;
@@ -59,9 +61,83 @@ class CycleCoverPathTest {
     }
 
     @Test
-    void aSurfaceWithABoundaryHasNoSuchPath() {
+    void aLoneTriangleHasNoSuchPath() {
         assertNull(CycleCoverPath.of(HamiltonianRefinementTest.triangles(Solids.triangle())));
-        assertNull(CycleCoverPath.of(HamiltonianRefinementTest.triangles(Solids.figure3())));
+    }
+
+    /** A triangle on a cycle is one piece, or four where a splice cuts it; a cut one three and one more for each split side. */
+    static int pieces(HalfedgeMesh mesh, HamiltonianRefinement.Result result, boolean[] cut) {
+        int pieces = 0;
+        for (int f = 0; f < mesh.faceCount(); f++) {
+            int splits = 0;
+            int h = mesh.faceHalfedge(f);
+            for (int k = 0; k < 3; k++, h = mesh.next(h)) {
+                splits += result.treeEdge()[HalfedgeMesh.edge(h)] ? 1 : 0;
+            }
+            pieces += cut[f] ? 3 + splits : splits == 0 ? 1 : 4;
+        }
+        return pieces;
+    }
+
+    @Test
+    void anOpenTubeIsCoveredByCyclesAsAClosedSurfaceIs() {
+        // Its end rings' triangles have a side on the boundary and keep both others for their cycle.
+        HalfedgeMesh mesh = HamiltonianRefinementTest.triangles(OpenSurfaces.tube(12, 5));
+        HamiltonianRefinement.Result result = CycleCoverPath.of(mesh);
+        assertNotNull(result);
+        assertEquals(List.of(), violations(mesh, result));
+        CycleCoverPath.Cover cover = CycleCoverPath.cover(mesh);
+        for (boolean cut : cover.cut()) {
+            assertFalse(cut, "a triangle cut");
+        }
+        int splices = 0;
+        for (boolean split : result.treeEdge()) {
+            splices += split ? 1 : 0;
+        }
+        assertEquals(mesh.faceCount() + 6 * splices, result.mesh().faceCount());
+    }
+
+    @Test
+    void earsAreCutAndGoneRoundFromTheirIncentres() {
+        // A flat grid: an ear at two of its corners, which no cycle passes.
+        HalfedgeMesh mesh = HamiltonianRefinementTest.triangles(OpenSurfaces.grid(6));
+        CycleCoverPath.Cover cover = CycleCoverPath.cover(mesh);
+        int cut = 0;
+        for (int f = 0; f < mesh.faceCount(); f++) {
+            if (CycleCoverPath.neighbours(mesh, f) == 1) {
+                assertTrue(cover.cut()[f], "an ear not cut");
+            }
+            cut += cover.cut()[f] ? 1 : 0;
+        }
+        // Its boundary's triangles keep both other sides for their cycles, which an ear ends:
+        // 48 of its 72 are cut, and the path is 280 pieces, against the refinement's 358.
+        assertTrue(cut >= 2 && cut < mesh.faceCount(), cut + " of " + mesh.faceCount() + " cut");
+        HamiltonianRefinement.Result result = CycleCoverPath.of(mesh);
+        assertEquals(List.of(), violations(mesh, result));
+        assertEquals(pieces(mesh, result, cover.cut()), result.mesh().faceCount());
+        assertTrue(result.mesh().faceCount() < 5 * mesh.faceCount() - 2, "as long as the refinement");
+    }
+
+    @Test
+    void aTriangleLeftUnmatchedFacesANeighbourCutForIt() {
+        // figure3: 12 triangles of one plane, a boundary all round, no perfect matching of those with three neighbours.
+        HalfedgeMesh mesh = HamiltonianRefinementTest.triangles(Solids.figure3());
+        CycleCoverPath.Cover cover = CycleCoverPath.cover(mesh);
+        HamiltonianRefinement.Result result = CycleCoverPath.of(mesh);
+        assertEquals(List.of(), violations(mesh, result));
+        assertEquals(pieces(mesh, result, cover.cut()), result.mesh().faceCount());
+        for (int f = 0; f < mesh.faceCount(); f++) {
+            if (!cover.cut()[f]) {
+                // On a cycle: two sides to triangles on cycles, the third (if any) matched or facing a cut one.
+                int h = mesh.faceHalfedge(f);
+                int onCycles = 0;
+                for (int k = 0; k < 3; k++, h = mesh.next(h)) {
+                    int g = mesh.face(HalfedgeMesh.twin(h));
+                    onCycles += g >= 0 && !cover.cut()[g] && h != cover.offCycle()[f] ? 1 : 0;
+                }
+                assertEquals(2, onCycles, "triangle " + f + "'s sides on its cycle");
+            }
+        }
     }
 
     static Stream<String> valid() {
@@ -70,17 +146,18 @@ class CycleCoverPathTest {
 
     @ParameterizedTest(name = "{0}")
     @MethodSource("valid")
-    void everyClosedSharedModelGetsOne(String name) throws Exception {
+    void everySharedModelGetsOne(String name) throws Exception {
         assumeTrue(SharedMeshes.present(), "../shared/meshes is absent");
         PolygonSoup soup = MeshReaders.read(SharedMeshes.ROOT.resolve("valid").resolve(name));
         HalfedgeMesh mesh = MeshBuilder.build(soup, MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();
         HamiltonianRefinement.Result result = CycleCoverPath.of(mesh);
-        if (Topology.of(mesh).boundaryLoops() > 0) {
-            assertNull(result, "a surface with a boundary");
-            return;
-        }
-        assertNotNull(result, "a closed surface");
+        assertNotNull(result, "a path");
         assertEquals(List.of(), violations(mesh, result));
+        assertEquals(Topology.of(mesh).components(), result.componentCount());
+        assertEquals(pieces(mesh, result, CycleCoverPath.cover(mesh).cut()), result.mesh().faceCount());
+        if (Topology.of(mesh).boundaryLoops() == 0) {
+            assertTrue(result.mesh().faceCount() < 1.2 * mesh.faceCount(), "a closed surface's cycles: few splices");
+        }
     }
 
     /**
