@@ -44,8 +44,9 @@ public final class CycleCoverPath {
     }
 
     /**
-     * The path through {@code mesh}'s own triangles, a cycle for each connected component, or null
-     * where it has none this way (a lone triangle, which the refinement cuts as this would).
+     * The path through {@code mesh}'s own triangles, a cycle for each connected component (a lone
+     * triangle's three pieces round its incentre, as the refinement's), or null where the mesh is
+     * too big for one array of pieces.
      *
      * @throws IllegalArgumentException if a face is not a triangle or has no area
      */
@@ -59,9 +60,6 @@ public final class CycleCoverPath {
             }
             if (Triangles.isDegenerate(xyz, mesh.fromVertex(h), mesh.toVertex(h), mesh.toVertex(mesh.next(h)))) {
                 throw new IllegalArgumentException("face " + f + " has no area, so it has no incentre");
-            }
-            if (neighbours(mesh, f) == 0) {
-                return null; // a lone triangle: no cycle passes it
             }
         }
         if (faces == 0 || mesh.halfedgeCount() > (Integer.MAX_VALUE >>> 2)) {

@@ -3,7 +3,6 @@ package ifold.refine;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
-import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
@@ -61,8 +60,12 @@ class CycleCoverPathTest {
     }
 
     @Test
-    void aLoneTriangleHasNoSuchPath() {
-        assertNull(CycleCoverPath.of(HamiltonianRefinementTest.triangles(Solids.triangle())));
+    void aLoneTriangleIsGoneRoundFromItsIncentreAsTheRefinementGoesRoundIt() {
+        HalfedgeMesh mesh = HamiltonianRefinementTest.triangles(Solids.triangle());
+        HamiltonianRefinement.Result result = CycleCoverPath.of(mesh);
+        assertEquals(3, result.mesh().faceCount());
+        assertEquals(List.of(), violations(mesh, result));
+        assertEquals(HamiltonianRefinement.refine(mesh).mesh().faceCount(), result.mesh().faceCount());
     }
 
     /** A triangle on a cycle is one piece, or four where a splice cuts it; a cut one three and one more for each split side. */
@@ -137,6 +140,64 @@ class CycleCoverPathTest {
                 }
                 assertEquals(2, onCycles, "triangle " + f + "'s sides on its cycle");
             }
+        }
+    }
+
+    /**
+     * Random pieces of an icosphere (grown from a triangle, some holes punched in half of them):
+     * surfaces with boundaries of every shape, ears, lone triangles and several components. Each
+     * gets a path that keeps every claim, a cycle per component.
+     */
+    @Test
+    void everyRandomPieceOfASphereGetsOne() throws Exception {
+        HalfedgeMesh sphere = HamiltonianRefinementTest.triangles(Solids.icosphere(2));
+        int n = sphere.faceCount();
+        double[] xyz = sphere.positionArray();
+        java.util.Random random = new java.util.Random(11);
+        for (int trial = 0; trial < 150; trial++) {
+            boolean[] in = new boolean[n];
+            List<Integer> frontier = new ArrayList<>(List.of(random.nextInt(n)));
+            int size = 1 + random.nextInt(n - 1);
+            for (int count = 0; count < size && !frontier.isEmpty(); ) {
+                int f = frontier.remove(random.nextInt(frontier.size()));
+                if (!in[f]) {
+                    in[f] = true;
+                    count++;
+                    int h = sphere.faceHalfedge(f);
+                    for (int k = 0; k < 3; k++, h = sphere.next(h)) {
+                        frontier.add(sphere.face(HalfedgeMesh.twin(h)));
+                    }
+                }
+            }
+            PolygonSoup soup = new PolygonSoup();
+            int[] id = new int[sphere.vertexCount()];
+            java.util.Arrays.fill(id, -1);
+            boolean holes = random.nextBoolean();
+            for (int f = 0; f < n; f++) {
+                if (!in[f] || holes && random.nextInt(12) == 0) {
+                    continue;
+                }
+                int[] corner = new int[3];
+                int h = sphere.faceHalfedge(f);
+                for (int k = 0; k < 3; k++, h = sphere.next(h)) {
+                    int v = sphere.fromVertex(h);
+                    if (id[v] < 0) {
+                        id[v] = soup.addVertex(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]);
+                    }
+                    corner[k] = id[v];
+                }
+                soup.addTriangle(corner[0], corner[1], corner[2]);
+            }
+            if (soup.faceCount() == 0) {
+                continue;
+            }
+            // Repairs may split a vertex the piece touches itself at: the mesh built is what is covered.
+            HalfedgeMesh mesh = MeshBuilder.build(soup, MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();
+            HamiltonianRefinement.Result result = CycleCoverPath.of(mesh);
+            assertNotNull(result, "trial " + trial);
+            assertEquals(List.of(), violations(mesh, result), "trial " + trial);
+            assertEquals(Topology.of(mesh).components(), result.componentCount(), "trial " + trial);
+            assertEquals(pieces(mesh, result, CycleCoverPath.cover(mesh).cut()), result.mesh().faceCount(), "trial " + trial);
         }
     }
 
