@@ -85,6 +85,13 @@ public final class CycleCoverPath {
      * two others are its cycle's.
      */
     record Cover(int[] offCycle, boolean[] cut) {
+        int cutCount() {
+            int count = 0;
+            for (boolean c : cut) {
+                count += c ? 1 : 0;
+            }
+            return count;
+        }
     }
 
     /**
@@ -94,9 +101,30 @@ public final class CycleCoverPath {
      * neighbour) are cut, and then every triangle left with fewer than two neighbours not cut;
      * the triangles left with three are matched, a maximum matching; a neighbour of one left
      * unmatched is cut, and the rest matched again, until every triangle left with three has a
-     * partner. A closed mesh's matching is perfect at once.
+     * partner. A closed mesh's matching is perfect at once. Which neighbour to cut is tried two
+     * ways, and the cover with fewer cut kept: which is better depends on the mesh, by far (any
+     * neighbour: the shared capsule 2,698 of 10,000 cut, the elephant with holes 3,197 of 4,463;
+     * one with no partner to lose: 9,488 and 1,497).
      */
     static Cover cover(HalfedgeMesh mesh) {
+        Cover any = cover(mesh, false);
+        boolean boundary = false;
+        for (int f = 0; f < mesh.faceCount() && !boundary; f++) {
+            boundary = neighbours(mesh, f) < 3;
+        }
+        if (!boundary) {
+            return any; // closed: matched at once, nothing cut
+        }
+        Cover unmatched = cover(mesh, true);
+        return unmatched.cutCount() < any.cutCount() ? unmatched : any;
+    }
+
+    /**
+     * The cover as {@link #cover(HalfedgeMesh)} finds it, cutting for a triangle left unmatched
+     * its first neighbour not cut, or where {@code unmatchedFirst}, one that is not matched
+     * (with two neighbours left, or facing a cut one) where it has such.
+     */
+    private static Cover cover(HalfedgeMesh mesh, boolean unmatchedFirst) {
         int faces = mesh.faceCount();
         boolean[] cut = new boolean[faces];
         int[] live = new int[faces]; // neighbours not cut
@@ -137,9 +165,8 @@ public final class CycleCoverPath {
                     int neighbour = f;
                     for (int k = 0; k < 3; k++, h = mesh.next(h)) {
                         int g = mesh.face(HalfedgeMesh.twin(h));
-                        if (g >= 0 && !cut[g]) {
+                        if (g >= 0 && !cut[g] && (neighbour == f || unmatchedFirst && !m.node[g])) {
                             neighbour = g;
-                            break;
                         }
                     }
                     cut[neighbour] = true;
