@@ -275,14 +275,14 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
     }
 
     /** How far frame point p lies in from the line of edge k (negative beyond it). */
-    private double inside(int k, double[] p) {
+    public double inside(int k, double[] p) {
         double dx = edgeDx(k);
         double dy = edgeDy(k);
         return ((p[0] - corners[2 * k]) * -dy + (p[1] - corners[2 * k + 1]) * dx) / Polygons2.length(dx, dy);
     }
 
     /** Moves p to where the lines {@code keepK} in from edge k and {@code keepJ} in from edge j meet, if they do, and it lies in the polygon. */
-    private void meet(int k, double keepK, int j, double keepJ, double[] p) {
+    public void meet(int k, double keepK, int j, double keepJ, double[] p) {
         double[] a = edge(k);
         double[] b = edge(j);
         double ax = -a[3] / a[4];

@@ -606,7 +606,11 @@ final class BendRoom {
         double cos = Math.max(-1, Math.min(1, n[0] * m[0] + n[1] * m[1] + n[2] * m[2]));
         // A wedge of air all but closed (the faces back to back) leaves paper no room: its
         // layers go as far in as the host lets them (HostFrame.keepFrom).
-        return Math.min(1e6, Math.sqrt((1 - cos) / Math.max(1 + cos, Tolerance.COPLANAR_COSINE)));
+        // A turn so slight that its tan(φ/2) is under HostFrame.CUT_TAN is still a concave edge, not a
+        // cut between coplanar hosts: its paper keeps from a mitre just over CUT_TAN, so that it is
+        // not taken for a cut's and left on the edge's line, nearer than its own mitre (a bumpy
+        // icosphere's edge turning by 1.7e-6 rad: layers 0.012 high on its line, 1e-8 short).
+        return Math.max(2 * HostFrame.CUT_TAN, Math.min(1e6, Math.sqrt((1 - cos) / Math.max(1 + cos, Tolerance.COPLANAR_COSINE))));
     }
 
     private static double[] position(IndexedPolygons mesh, int v) {

@@ -945,6 +945,7 @@ final class ConcaveWalls {
         double startX = out[0];
         double startY = out[1];
         long cutEdges = 0; // the edges along cuts whose walls moved it (bit k for edge k)
+        boolean walled = false; // whether a wall along a concave edge (not a cut's) moved it
         for (int round = 0; round < 4; round++) {
             boolean cutMoved = false;
             // Only the walls along edges the point lies near can move it: most lie near none, and
@@ -974,6 +975,7 @@ final class ConcaveWalls {
                     double tan = frame.mitreAt(wall.edge(), wx, wy);
                     if (tan > 0 && frame.keepFrom(wall.edge(), wall.in(), out)) {
                         cutMoved |= tan <= HostFrame.CUT_TAN;
+                        walled |= tan > HostFrame.CUT_TAN;
                         cutEdges |= tan <= HostFrame.CUT_TAN && wall.edge() < Long.SIZE ? 1L << wall.edge() : 0;
                         reach = near.reaching(frame, out);
                     }
@@ -985,11 +987,64 @@ final class ConcaveWalls {
         }
         if (cutEdges != 0) {
             intoCorner(host, frame, level, near, startX, startY, own ? startX : bx, own ? startY : by, out);
+        } else if (walled) {
+            keepFromEach(frame, level, near, height, bx, by, out);
         }
         if (backs != null) {
             for (BackWall back : backs) {
                 if (holds(back, level, cx, cy, x, y)) {
                     slideAlongMitre(frame, back, height, back.keep(), out);
+                }
+            }
+        }
+    }
+
+    /**
+     * Paper at frame point {@code out} that the walls along concave edges moved: each wall moves it
+     * straight in from its edge, and near a corner sharper than 90 degrees that brings it nearer
+     * the other edge than its mitre, or than a wall along that edge holding its level. Mitred and
+     * walled again, round by round, until it keeps from each; then where the two lines it still
+     * falls short of meet.
+     */
+    private void keepFromEach(HostFrame frame, double level, LevelWalls near, double height, double bx, double by, double[] out) {
+        if (frame.mitre() == null) {
+            return;
+        }
+        boolean own = Double.isNaN(bx);
+        int n = frame.corners().length / 2;
+        double[] keep = new double[n];
+        for (int round = 0; round < 4; round++) {
+            java.util.Arrays.fill(keep, 0);
+            double wx = own ? out[0] : bx;
+            double wy = own ? out[1] : by;
+            for (int k = 0; k < n; k++) {
+                double tan = frame.mitreAt(k, wx, wy);
+                keep[k] = tan > HostFrame.CUT_TAN ? height * tan : 0;
+            }
+            for (Wall wall : near.walls()) {
+                if (level < wall.low() - Tolerance.RELATIVE_EQUALITY || level > wall.high() + Tolerance.RELATIVE_EQUALITY) {
+                    continue;
+                }
+                double[] edge = wall.line();
+                double s = ((wx - edge[0]) * edge[2] + (wy - edge[1]) * edge[3]) / edge[4];
+                if (s >= wall.from() - tolerance && s <= wall.to() + tolerance && frame.mitreAt(wall.edge(), wx, wy) > HostFrame.CUT_TAN) {
+                    keep[wall.edge()] = Math.max(keep[wall.edge()], wall.in());
+                }
+            }
+            boolean moved = false;
+            for (int k = 0; k < n; k++) {
+                // Short by more than rounding: a move of 1e-16 reshaped a cap of the torus.
+                moved |= keep[k] > 0 && frame.inside(k, out) < keep[k] * (1 - 1e-9) && frame.keepFrom(k, keep[k], out);
+            }
+            if (!moved) {
+                return;
+            }
+        }
+        // Two edges at a corner sharper than 90 degrees, each move off one bringing it nearer the other: where their lines meet.
+        for (int k = 0; k < n; k++) {
+            for (int j = k + 1; j < n; j++) {
+                if (keep[k] > 0 && keep[j] > 0 && (frame.inside(k, out) < keep[k] * (1 - 1e-9) || frame.inside(j, out) < keep[j] * (1 - 1e-9))) {
+                    frame.meet(k, keep[k], j, keep[j], out);
                 }
             }
         }
