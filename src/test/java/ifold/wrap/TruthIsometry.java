@@ -25,7 +25,10 @@ final class TruthIsometry {
      * {@code normal}, whose neighbour across rises above its plane, turning by φ; {@code mitre}
      * is tan(φ/2).
      */
-    record ConcaveSide(double[] normal, double[] a, double[] b, double mitre) {
+    record ConcaveSide(double[] normal, double[] a, double[] b, double mitre, double[] apex) {
+        ConcaveSide(double[] normal, double[] a, double[] b, double mitre) {
+            this(normal, a, b, mitre, null);
+        }
     }
 
     /** Every side of every concave edge of the model: edges are matched by their corners' coordinates. */
@@ -57,7 +60,8 @@ final class TruthIsometry {
                         double cos = Math.max(-1, Math.min(1, m[0] * o[0] + m[1] * o[1] + m[2] * o[2]));
                         double[] p = Arrays.copyOfRange(model.corners, 9 * near + 3 * side[1], 9 * near + 3 * side[1] + 3);
                         double[] q = Arrays.copyOfRange(model.corners, 9 * near + 3 * ((side[1] + 1) % 3), 9 * near + 3 * ((side[1] + 1) % 3) + 3);
-                        concave.add(new ConcaveSide(m, p, q, Math.sqrt((1 - cos) / Math.max(1 + cos, 1e-12))));
+                        double[] r = Arrays.copyOfRange(model.corners, 9 * near + 3 * ((side[1] + 2) % 3), 9 * near + 3 * ((side[1] + 2) % 3) + 3);
+                        concave.add(new ConcaveSide(m, p, q, Math.sqrt((1 - cos) / Math.max(1 + cos, 1e-12)), r));
                     }
                 }
             }
@@ -299,7 +303,10 @@ final class TruthIsometry {
             int plane = -1;
             for (int i = 0; i < planes.size() && plane < 0; i++) {
                 double[] n = planes.get(i).normal();
-                if (times(n, m) > 1 - 1e-9 && Math.abs(times(n, minus(side.a(), planes.get(i).a()))) <= eps) {
+                // One plane: the side's whole triangle on the plane's, not only its edge (the two
+                // sides of a concave edge turning by under 4.5e-5 rad have normals within 1 - 1e-9).
+                if (times(n, m) > 1 - 1e-9 && Math.abs(times(n, minus(side.a(), planes.get(i).a()))) <= eps
+                        && Math.abs(times(n, minus(side.b(), planes.get(i).a()))) <= eps && Math.abs(times(n, minus(side.apex(), planes.get(i).a()))) <= eps) {
                     plane = i;
                 }
             }
