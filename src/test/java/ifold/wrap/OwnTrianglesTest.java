@@ -71,12 +71,16 @@ class OwnTrianglesTest {
      */
     @Test
     void aBigTorusIsWrappedAlongItsOwnTrianglesWithEveryTruth(@TempDir Path dir) throws Exception {
-        HalfedgeMesh torus = mesh(Solids.torus(3, 1, 40, 14));
-        HamiltonianRefinement.Result refinement = ifold.job.WrapPath.of(torus).refinement();
+        wrapsAlongItsOwnTriangles(dir, mesh(Solids.torus(3, 1, 40, 14)), 1198);
+    }
+
+    /** Wraps a model of more than 1,000 triangles as the wrap command does: along its own {@code triangles}, every truth kept, its paper sound. */
+    private static void wrapsAlongItsOwnTriangles(Path dir, HalfedgeMesh model, int triangles) throws Exception {
+        HamiltonianRefinement.Result refinement = ifold.job.WrapPath.of(model).refinement();
         Seam.Chosen chosen = Seam.wrap(refinement, new Wrap.Options(Double.NaN, Double.NaN), Wrap.Watcher.NONE, Collisions.OF_SEAM);
         assertTrue(chosen.refinement().mesh().ownTriangles(), "along its own triangles");
-        assertEquals(1198, chosen.result().strips().get(0).triangles());
-        WrapTest.check(dir, chosen.result(), torus, 1, 300);
+        assertEquals(triangles, chosen.result().strips().get(0).triangles());
+        WrapTest.check(dir, chosen.result(), model, 1, 300);
         assertEquals(0, Collisions.count(chosen.placed().geometries(), chosen.result().thickness(), chosen.result().mesh()),
                 "crossing pairs, in one plane, into the model");
     }
@@ -89,14 +93,7 @@ class OwnTrianglesTest {
      */
     @Test
     void aBigOpenTubeIsWrappedAlongItsOwnTrianglesWithEveryTruth(@TempDir Path dir) throws Exception {
-        HalfedgeMesh tube = mesh(OpenSurfaces.tube(48, 12));
-        HamiltonianRefinement.Result refinement = ifold.job.WrapPath.of(tube).refinement();
-        Seam.Chosen chosen = Seam.wrap(refinement, new Wrap.Options(Double.NaN, Double.NaN), Wrap.Watcher.NONE, Collisions.OF_SEAM);
-        assertTrue(chosen.refinement().mesh().ownTriangles(), "along its own triangles");
-        assertEquals(1218, chosen.result().strips().get(0).triangles());
-        WrapTest.check(dir, chosen.result(), tube, 1, 300);
-        assertEquals(0, Collisions.count(chosen.placed().geometries(), chosen.result().thickness(), chosen.result().mesh()),
-                "crossing pairs, in one plane, into the model");
+        wrapsAlongItsOwnTriangles(dir, mesh(OpenSurfaces.tube(48, 12)), 1218);
     }
 
     /**
