@@ -40,11 +40,15 @@ import java.util.Map;
  * other creases would run into ({@link #leaveOnCreaseWhereCrossed}: they stay on their crease;
  * walls stopped a tenth of a width short of reflex corners and of points where three or more
  * hosts meet before, their last stretch's nests on the cut's line). Its folds stand back half a
- * thickness ({@link #CUT_CLEARANCE}) and by the ranks of their own nest (the folds along it whose
- * stretches overlap, and theirs), not by the most along the whole edge: the other host's paper stands back
- * from the cut too, and a lone fold standing back as far as the deepest nest along the edge left
- * the surface beside the cut bare under its lower layer (the 14 × 6 torus's ring, 4 thicknesses
- * by a spoke; figure3 by a spoke from an inner corner).
+ * thickness ({@link #CUT_CLEARANCE}), and a thickness farther than each fold of the cut that
+ * wraps them ({@link #cutWalls}), not by the most along the whole edge, nor by the most of the
+ * folds chained to them by stretches that overlap or only touch: the other host's paper stands
+ * back from the cut too, and a lone fold standing back as far as the deepest nest along the edge
+ * left the surface beside the cut bare under its lower layer (the 14 × 6 torus's ring, 4
+ * thicknesses by a spoke; figure3 by a spoke from an inner corner; figure3 along its own
+ * triangles, whose passes tuck their ends along a spoke one after another, their stretches
+ * touching end to end, a fold of levels 1 to 6 6.5 thicknesses back, chained to a nest of rank 6
+ * by the corner (1.9, 0.1)).
  */
 final class ConcaveWalls {
     /**
@@ -219,9 +223,10 @@ final class ConcaveWalls {
         }
         // Where each wall would stand with every fold of the cut walled, to find the folds whose
         // walls another crease runs into; the nests of those left are taken again without them.
-        double[] reach = cutNests(bends, along, onCut, edgeOf, need, from, to);
+        boolean[][] inFace = cornersInFace(frames);
+        double[] reach = cutWalls(bends, along, onCut, edgeOf, need, ranks, from, to, thickness, tolerance, frames, inFace);
         for (int k = 0; k < bends.size(); k++) {
-            reach[k] += (0.5 - ranks[k]) * thickness; // the wall, and the half of the paper's thickness on its far side
+            reach[k] += 0.5 * thickness; // the wall, and the half of the paper's thickness on its far side
         }
         // The levels each wall holds: its own, widened where a crease ends beside it.
         int[] lows = new int[bends.size()];
@@ -231,8 +236,7 @@ final class ConcaveWalls {
             highs[k] = bends.get(k).high();
         }
         leaveOnCreaseWhereCrossed(bends, outs, along, onCut, edgeOf, reach, frames, tolerance, thickness, lows, highs);
-        double[] nestMost = cutNests(bends, along, onCut, edgeOf, need, from, to);
-        boolean[][] inFace = cornersInFace(frames);
+        double[] cutIn = cutWalls(bends, along, onCut, edgeOf, need, ranks, from, to, thickness, tolerance, frames, inFace);
         List<List<Wall>> wallsOf = new ArrayList<>(java.util.Collections.nCopies(frames.length, (List<Wall>) null));
         for (int k = 0; k < bends.size(); k++) {
             if (!along[k]) {
@@ -240,7 +244,7 @@ final class ConcaveWalls {
             }
             NestedBends.Bend bend = bends.get(k);
             double[] edge = frames[bend.host()].edge(edgeOf[k]);
-            double in = (onCut[k] ? nestMost[k] : most.get(key(bend.host(), edgeOf[k]))) - ranks[k] * thickness;
+            double in = onCut[k] ? cutIn[k] : most.get(key(bend.host(), edgeOf[k])) - ranks[k] * thickness;
             if (wallsOf.get(bend.host()) == null) {
                 wallsOf.set(bend.host(), new ArrayList<>());
             }
@@ -773,11 +777,56 @@ final class ConcaveWalls {
     }
 
     /**
-     * For each fold along a cut, the most any fold of its nest needs: the folds along the same
-     * edge of the host whose stretches overlap it, and theirs, and so on. Across a cut the other
-     * host's paper stands back too, so a fold standing back farther than its own nest asks left
-     * the surface by the cut bare under its lower layer. Each fold runs along its edge from
-     * {@code from} to {@code to}.
+     * How far in from its cut each fold along a whole cut stands ({@code onCut}, still
+     * {@code along}): its own need less its rank (its upper layer's mitre and the clearance), and
+     * a thickness farther in than each fold of the cut that wraps it (its levels strictly between
+     * that fold's, their stretches overlapping by more than {@link #SHARED} of a thickness). A
+     * fold that reaches a reflex corner of the face stands as far back as the most of the folds
+     * chained to it ({@link #cutNests}), as all did before: the rules for walls meeting there
+     * ({@link #leaveOnCreaseWhereCrossed}) were made so, and with the star prism's walls along
+     * the cuts from its inner corners standing by their own nests, two of them with levels
+     * interleaved met in the corner at half a thickness, and its paper crossed there (8 → 18
+     * crossing pairs, WrappedPaperCollisionsTest).
+     */
+    private static double[] cutWalls(List<NestedBends.Bend> bends, boolean[] along, boolean[] onCut, int[] edgeOf, double[] need,
+            int[] ranks, double[] from, double[] to, double thickness, double tolerance, HostFrame[] frames, boolean[][] inFace) {
+        double[] in = new double[bends.size()];
+        double[] nests = cutNests(bends, along, onCut, edgeOf, need, from, to);
+        Map<Long, List<Integer>> byEdge = new HashMap<>();
+        for (int k = 0; k < bends.size(); k++) {
+            if (along[k] && onCut[k]) {
+                byEdge.computeIfAbsent(key(bends.get(k).host(), edgeOf[k]), x -> new ArrayList<>()).add(k);
+            }
+        }
+        for (List<Integer> group : byEdge.values()) {
+            // Widest span of levels first: a fold wrapping another spans more levels.
+            Integer[] sorted = group.toArray(new Integer[0]);
+            java.util.Arrays.sort(sorted, (a, b) -> Integer.compare(bends.get(b).high() - bends.get(b).low(),
+                    bends.get(a).high() - bends.get(a).low()));
+            for (int i = 0; i < sorted.length; i++) {
+                int k = sorted[i];
+                NestedBends.Bend bend = bends.get(k);
+                in[k] = need[k] - ranks[k] * thickness;
+                if (atReflexCorner(frames[bend.host()], inFace[bend.host()], edgeOf[k], from[k], to[k], tolerance)) {
+                    in[k] = nests[k] - ranks[k] * thickness;
+                }
+                for (int j = 0; j < i; j++) {
+                    int o = sorted[j];
+                    NestedBends.Bend outer = bends.get(o);
+                    if (outer.low() < bend.low() && bend.high() < outer.high() && outer.nx() * bend.nx() + outer.ny() * bend.ny() > 0
+                            && Math.min(to[o], to[k]) - Math.max(from[o], from[k]) > SHARED * thickness) {
+                        in[k] = Math.max(in[k], in[o] + thickness);
+                    }
+                }
+            }
+        }
+        return in;
+    }
+
+    /**
+     * For each fold along a whole cut, the most any fold of its nest needs, the nest taken as
+     * every fold of the edge chained to it by stretches that overlap or touch ({@link #cutWalls}
+     * takes it for the folds that reach a reflex corner of the face).
      */
     private static double[] cutNests(List<NestedBends.Bend> bends, boolean[] along, boolean[] onCut, int[] edgeOf, double[] need,
             double[] from, double[] to) {
@@ -814,6 +863,19 @@ final class ConcaveWalls {
         }
         return result;
     }
+
+    /**
+     * Whether a fold along edge {@code edge} of a host's polygon, from {@code from} to {@code to}
+     * along it, reaches an end of the edge that is a reflex corner of the face ({@code inFace}
+     * false there: {@link #cornersInFace}).
+     */
+    private static boolean atReflexCorner(HostFrame frame, boolean[] inFace, int edge, double from, double to, double tolerance) {
+        int corners = frame.corners().length / 2;
+        return from <= tolerance && !inFace[edge] || to >= frame.edge(edge)[4] - tolerance && !inFace[(edge + 1) % corners];
+    }
+
+    /** How much of the cut two folds share before one wraps the other, in thicknesses: as {@code NestedBends} takes it. */
+    private static final double SHARED = PaperInSpace.NEST_TOLERANCE * 0.05;
 
     /**
      * The walls on {@code host} along edge {@code edge} of its polygon that hold paper at

@@ -9,6 +9,7 @@ import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.PolygonSoup;
 import ifold.mesh.Solids;
+import ifold.mesh.io.MeshReaders;
 import ifold.refine.CycleCoverPath;
 import ifold.refine.HamiltonianRefinement;
 import ifold.testing.OpenSurfaces;
@@ -19,6 +20,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
+import org.junit.jupiter.params.provider.ValueSource;
 
 /**
  * The strip along the model's own triangles ({@link CycleCoverPath}) rather than the refinement's
@@ -60,6 +62,60 @@ class OwnTrianglesTest {
         }
         Wrap.Result result = Wrap.wrap(own, new Wrap.Options(Double.NaN, Double.NaN));
         WrapTest.check(dir, result, mesh, 1, 300);
+    }
+
+    /**
+     * figure3 (one flat, non-convex face of 12 triangles, cut into convex hosts) along its own
+     * triangles, from both of the seam's starts: every truth holds at 2,000 points, and from the
+     * start the seam would keep (halfway) the paper is sound. Folds tucked along a cut between
+     * two hosts of the plane stand back from it, each a thickness farther in than each fold of
+     * the cut wrapping it; they stood back as far as the deepest of all the folds chained to them
+     * by stretches overlapping or only touching along the cut, a lone fold of levels 1 to 6
+     * beside the issue's point (2.045, 0.839) 6.5 thicknesses (its chain ran to a fold of rank 6
+     * by the corner (1.9, 0.1)), and the surface between it and the cut was bare: 4 and 5 of
+     * 2,000 points (from the start and from halfway), 87 and 100 of 100,000; now 0 and 0, and 8
+     * and 11 of 100,000 (within half a thickness of a cut, or one rank: docs/wrap.md, Limits).
+     */
+    @ParameterizedTest(name = "from {0} of the way round")
+    @ValueSource(doubles = {0, 0.5})
+    void figure3AlongItsOwnTrianglesIsCoveredBesideItsCuts(double share, @TempDir Path dir) throws Exception {
+        HalfedgeMesh mesh = mesh(MeshReaders.read(Path.of("models", "figure3.off")));
+        HamiltonianRefinement.Result own = CycleCoverPath.of(mesh);
+        HamiltonianRefinement.Result begun = share == 0 ? own : own.begunAt(share);
+        Wrap.Result result = Wrap.wrap(begun, new Wrap.Options(Double.NaN, Double.NaN));
+        WrapTest.check(dir, result, mesh, 1, 2000);
+        PlacedWrap placed = PlacedWrap.of(result);
+        assertTrue(covered(placed, 2.045, 0.839), "the issue's point lies under paper");
+        if (share == 0.5) {
+            assertEquals(0, Collisions.count(placed.geometries(), result.thickness(), result.mesh()),
+                    "crossing pairs, in one plane, into the model");
+        }
+    }
+
+    /** Whether a paper face lying flat over the plane z = 0 covers point (x, y) of it. */
+    private static boolean covered(PlacedWrap placed, double x, double y) {
+        for (PaperInSpace strip : placed.geometries()) {
+            double[] xyz = strip.xyz();
+            for (int[] face : strip.paperFaces()) {
+                double area = 0;
+                boolean left = true;
+                boolean right = true;
+                boolean flat = true;
+                for (int c = 0; c < face.length; c++) {
+                    int a = 3 * face[c];
+                    int b = 3 * face[(c + 1) % face.length];
+                    area += xyz[a] * xyz[b + 1] - xyz[b] * xyz[a + 1];
+                    double side = (xyz[b] - xyz[a]) * (y - xyz[a + 1]) - (xyz[b + 1] - xyz[a + 1]) * (x - xyz[a]);
+                    left &= side >= 0;
+                    right &= side <= 0;
+                    flat &= xyz[a + 2] > 0 && Math.abs(xyz[a + 2] - xyz[3 * face[0] + 2]) < 1e-12;
+                }
+                if (flat && Math.abs(area) > 1e-12 && (left || right)) {
+                    return true;
+                }
+            }
+        }
+        return false;
     }
 
     /**
