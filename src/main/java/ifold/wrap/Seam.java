@@ -1,7 +1,6 @@
 package ifold.wrap;
 
 import ifold.mesh.IndexedPolygons;
-import ifold.mesh.Topology;
 import ifold.refine.CycleCoverPath;
 import ifold.refine.HamiltonianRefinement;
 import java.util.ArrayList;
@@ -276,16 +275,14 @@ public final class Seam {
     /**
      * The path through the model's own triangles that the seam tries after the refinement's
      * starts ({@link CycleCoverPath}), or null where it tries none: where the mesh the refinement
-     * refined has at most {@link #MOST_TRIANGLES} triangles and no boundary, and a wrap along them at {@code width}
+     * refined has at most {@link #MOST_TRIANGLES} triangles (closed or with a boundary: figure3's
+     * strip along its own triangles, from halfway, has 16 layers rather than 20, its paper sound
+     * and every truth kept, since the walls along its cuts stand back no farther than their own
+     * nests ask, docs/wrap.md, Limits), and a wrap along them at {@code width}
      * (NaN for their default) is likely to make at most {@link #MOST_FACES} faces, along a cycle.
      */
     public static HamiltonianRefinement.Result ownPath(HamiltonianRefinement.Result refinement, double width) {
-        if (refinement.mesh().ownTriangles() || refinement.mesh().original().faceCount() > MOST_TRIANGLES
-                || Topology.of(refinement.mesh().original()).boundaryLoops() > 0) {
-            // Not on a surface with a boundary: figure3's strip along its own triangles has 16
-            // layers rather than 20 and is sound, but leaves a sliver of the model 0.002 wide
-            // bare by a crossing into a spliced triangle (WrapTruths, covered; docs/wrap.md,
-            // Limits), which the seam's check of collisions does not see.
+        if (refinement.mesh().ownTriangles() || refinement.mesh().original().faceCount() > MOST_TRIANGLES) {
             return null;
         }
         HamiltonianRefinement.Result own = CycleCoverPath.of(refinement.mesh().original());

@@ -192,6 +192,27 @@ class SeamTest {
     }
 
     /**
+     * A surface with a boundary is tried along its own triangles too: figure3 (one flat,
+     * non-convex face, its boundary all round) makes 16 layers along them from both starts,
+     * against 20 at best along the refinement; the first start's paper crosses itself (12 pairs
+     * at caps), the second's is sound and kept, with every truth (it left the surface by its cuts
+     * bare until the walls of folds along a cut stood back no farther than their own nests ask:
+     * docs/wrap.md, Limits).
+     */
+    @Test
+    void figure3FollowsItsOwnTrianglesThoughItHasABoundary() throws Exception {
+        HalfedgeMesh figure3 = mesh(MeshReaders.read(Path.of("models", "figure3.off")));
+        Seam.Chosen chosen = Seam.wrap(ifold.job.WrapPath.of(figure3).refinement(), DEFAULTS, Wrap.Watcher.NONE,
+                ifold.job.Collisions.OF_SEAM);
+        assertEquals(List.of(16, 16), chosen.ownLayersTried());
+        assertEquals(List.of(12, 0), chosen.ownCollisionsTried());
+        assertTrue(ownTriangles(chosen.result()), "kept along its own triangles");
+        assertEquals(Seam.OWN_TRIED[1], chosen.along());
+        assertEquals(16, chosen.placed().analysis().maxLayers());
+        WrapTest.check(dir, chosen.result(), figure3, 1, 2000);
+    }
+
+    /**
      * The cube along its own triangles (ifold.refine.CycleCoverPath) makes 9 layers from both of
      * its starts, against 13 at best along the refinement; the independent checker finds its first
      * start's paper sound (5 collisions before caps over edges went over the bends beside them,
