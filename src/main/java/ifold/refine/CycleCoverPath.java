@@ -30,14 +30,10 @@ import java.util.Arrays;
  * triangle on no cycle is cut from its incentre as the refinement cuts every triangle, and gone
  * round as the refinement goes round its spanning tree, a node of the tree of its own: the path
  * goes into it by one half of a side and out by the other half, round its incentre and every
- * node joined on across its other sides (three pieces and one more for each side split). One
- * joined by a single side, a leaf of the tree (an ear, mostly), is halved instead by the line
- * from its corner opposite that side to the side's midpoint: two pieces, each at least half as
- * wide as the triangle where those round its incentre are a third as wide or less (the elephant
- * with holes' widest strip 0.00107 -> 0.00151, and it wraps at the defaults). So the path is as
- * long as the refinement's about the cut triangles and as the cycles' elsewhere: the shared
- * capsule's 10,000 triangles (a sphere split open along a seam, 200 ears at its poles) become a
- * path of 20,838 pieces, 2,698 triangles cut, against the refinement's 49,998.
+ * node joined on across its other sides. A cut triangle is three pieces and one more for each
+ * side split, so the path is as long as the refinement's there and as the cycles' elsewhere:
+ * the shared capsule's 10,000 triangles (a sphere split open along a seam, 200 ears at its
+ * poles) become a path of 23,006 pieces, 2,698 of them cut, against the refinement's 49,998.
  *
  * <p>The result is a {@link HamiltonianRefinement.Result} whose {@link RefinedMesh} lists whole
  * triangles ({@code RefinedMesh.FACE}) among the pieces of the cut ones, its split edges in
@@ -66,7 +62,7 @@ public final class CycleCoverPath {
                 throw new IllegalArgumentException("face " + f + " has no area, so it has no incentre");
             }
         }
-        if (faces == 0 || mesh.halfedgeCount() > (Integer.MAX_VALUE >>> RefinedMesh.SHIFT)) {
+        if (faces == 0 || mesh.halfedgeCount() > (Integer.MAX_VALUE >>> 2)) {
             return null;
         }
         return new Splicer(mesh, cover(mesh)).path();
@@ -508,21 +504,16 @@ public final class CycleCoverPath {
                     split[HalfedgeMesh.edge(h)] = true;
                 }
             }
-            // Each component's tour begins at its lowest triangle.
-            boolean[] toured = new boolean[nodes];
-            boolean[] first = new boolean[faces];
-            for (int s = 0; s < faces; s++) {
-                int root = UnionFind.find(joined, nodeOf[s]);
-                first[s] = !toured[root];
-                toured[root] = true;
-            }
-            // A triangle on a cycle is one piece, or four where it is spliced; a cut one two where
-            // it is a leaf of the tree, entered by its one split side, else three and one more for
-            // each split side.
+            // A triangle on a cycle is one piece, or four where it is spliced; a cut one three and
+            // one more for each split side.
             long pieces = 0;
             for (int f = 0; f < faces; f++) {
-                int splits = splits(f);
-                pieces += onCycle[f] ? (splits == 0 ? 1 : 4) : splits == 1 && !first[f] ? 2 : 3 + splits;
+                int splits = 0;
+                int h = mesh.faceHalfedge(f);
+                for (int k = 0; k < 3; k++, h = mesh.next(h)) {
+                    splits += split[HalfedgeMesh.edge(h)] ? 1 : 0;
+                }
+                pieces += onCycle[f] ? (splits == 0 ? 1 : 4) : 3 + splits;
             }
             if (pieces > Integer.MAX_VALUE - 8) {
                 return null;
@@ -530,10 +521,13 @@ public final class CycleCoverPath {
             path = new int[(int) pieces];
             // One tour per component, from its lowest triangle: round its cycle, or round its pieces,
             // into each node joined on in its turn.
+            boolean[] toured = new boolean[nodes];
             int[] componentStart = new int[faces + 1];
             int components = 0;
             for (int s = 0; s < faces; s++) {
-                if (first[s]) {
+                int root = UnionFind.find(joined, nodeOf[s]);
+                if (!toured[root]) {
+                    toured[root] = true;
                     componentStart[components++] = emitted;
                     tour(s);
                 }
@@ -598,22 +592,7 @@ public final class CycleCoverPath {
 
         /** The half of side {@code h} at its end {@code v}, as a piece. */
         private int half(int h, int v) {
-            return h << RefinedMesh.SHIFT | (mesh.fromVertex(h) == v ? RefinedMesh.FIRST_HALF : RefinedMesh.SECOND_HALF);
-        }
-
-        /** The half of the face of side {@code h} at its end {@code v}, cut from the corner opposite h to h's midpoint, as a piece. */
-        private int faceHalf(int h, int v) {
-            return h << RefinedMesh.SHIFT | (mesh.fromVertex(h) == v ? RefinedMesh.FACE_FIRST_HALF : RefinedMesh.FACE_SECOND_HALF);
-        }
-
-        /** How many of triangle {@code f}'s sides are split. */
-        private int splits(int f) {
-            int count = 0;
-            int h = mesh.faceHalfedge(f);
-            for (int k = 0; k < 3; k++, h = mesh.next(h)) {
-                count += split[HalfedgeMesh.edge(h)] ? 1 : 0;
-            }
-            return count;
+            return h << 2 | (mesh.fromVertex(h) == v ? RefinedMesh.FIRST_HALF : RefinedMesh.SECOND_HALF);
         }
 
         /**
@@ -624,7 +603,7 @@ public final class CycleCoverPath {
          */
         private void pushSide(int h, int v) {
             if (!split[HalfedgeMesh.edge(h)]) {
-                push(PIECE, h << RefinedMesh.SHIFT | RefinedMesh.WHOLE, 0, 0);
+                push(PIECE, h << 2 | RefinedMesh.WHOLE, 0, 0);
                 return;
             }
             int across = HalfedgeMesh.twin(h);
@@ -639,14 +618,6 @@ public final class CycleCoverPath {
          * {@code in} is -1, from its first side on.
          */
         private void goRound(int t, int in, int v) {
-            if (in >= 0 && splits(t) == 1) {
-                // A leaf of the tree (an ear, mostly): its two halves about the side it is joined
-                // by, cut from the corner opposite, each at least half as wide as the triangle
-                // where its pieces round the incentre are a third as wide or less.
-                push(PIECE, faceHalf(in, otherEnd(in, v)), 0, 0);
-                push(PIECE, faceHalf(in, v), 0, 0);
-                return;
-            }
             if (in < 0) {
                 int h = mesh.faceHalfedge(t);
                 int h1 = mesh.next(h);
@@ -674,9 +645,9 @@ public final class CycleCoverPath {
             int leave = sideAt(g, in, v);
             int back = sideAt(g, in, otherEnd(in, v));
             push(PIECE, half(in, otherEnd(in, v)), 0, 0);
-            push(PIECE, back << RefinedMesh.SHIFT | RefinedMesh.WHOLE, 0, 0);
+            push(PIECE, back << 2 | RefinedMesh.WHOLE, 0, 0);
             push(ROUND, mesh.face(HalfedgeMesh.twin(leave)), HalfedgeMesh.twin(leave), g);
-            push(PIECE, leave << RefinedMesh.SHIFT | RefinedMesh.WHOLE, 0, 0);
+            push(PIECE, leave << 2 | RefinedMesh.WHOLE, 0, 0);
             push(PIECE, half(in, v), 0, 0);
         }
 
@@ -693,12 +664,12 @@ public final class CycleCoverPath {
             push(ROUND, mesh.face(HalfedgeMesh.twin(out)), HalfedgeMesh.twin(out), stop);
             int e = matched[f];
             if (e < 0 || !split[HalfedgeMesh.edge(e)]) {
-                push(PIECE, in << RefinedMesh.SHIFT | RefinedMesh.FACE, 0, 0);
+                push(PIECE, in << 2 | RefinedMesh.FACE, 0, 0);
                 return;
             }
-            push(PIECE, out << RefinedMesh.SHIFT | RefinedMesh.WHOLE, 0, 0);
+            push(PIECE, out << 2 | RefinedMesh.WHOLE, 0, 0);
             pushSide(e, sharedCorner(e, in));
-            push(PIECE, in << RefinedMesh.SHIFT | RefinedMesh.WHOLE, 0, 0);
+            push(PIECE, in << 2 | RefinedMesh.WHOLE, 0, 0);
         }
 
         /** The corner that halfedges {@code a} and {@code b} of one triangle share. */
