@@ -286,7 +286,11 @@ public final class Seam {
             return null;
         }
         HamiltonianRefinement.Result own = CycleCoverPath.of(refinement.mesh().original());
-        return own != null && tries(own, width) > 1 ? own : null;
+        // No shorter than the refinement's, it is cut everywhere as the refinement is (a lone
+        // triangle: its three pieces round the incentre), and trying it only tries the
+        // refinement's other starts after its first has failed (a needle of 0.011 degrees, whose
+        // first start's tucks fail at once, then tucked for minutes from the others).
+        return own != null && own.mesh().faceCount() < refinement.mesh().faceCount() && tries(own, width) > 1 ? own : null;
     }
 
     /**
