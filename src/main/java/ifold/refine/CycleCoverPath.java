@@ -108,12 +108,8 @@ public final class CycleCoverPath {
      */
     static Cover cover(HalfedgeMesh mesh) {
         Cover any = cover(mesh, false);
-        boolean boundary = false;
-        for (int f = 0; f < mesh.faceCount() && !boundary; f++) {
-            boundary = neighbours(mesh, f) < 3;
-        }
-        if (!boundary) {
-            return any; // closed: matched at once, nothing cut
+        if (any.cutCount() == 0) {
+            return any; // none cut (a closed mesh, matched at once; an open tube): none fewer
         }
         Cover unmatched = cover(mesh, true);
         return unmatched.cutCount() < any.cutCount() ? unmatched : any;
