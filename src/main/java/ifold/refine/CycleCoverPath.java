@@ -30,10 +30,15 @@ import java.util.Arrays;
  * triangle on no cycle is cut from its incentre as the refinement cuts every triangle, and gone
  * round as the refinement goes round its spanning tree, a node of the tree of its own: the path
  * goes into it by one half of a side and out by the other half, round its incentre and every
- * node joined on across its other sides. A cut triangle is three pieces and one more for each
- * side split, so the path is as long as the refinement's there and as the cycles' elsewhere:
- * the shared capsule's 10,000 triangles (a sphere split open along a seam, 200 ears at its
- * poles) become a path of 23,006 pieces, 2,698 of them cut, against the refinement's 49,998.
+ * node joined on across its other sides (three pieces and one more for each side split). One
+ * joined by a single side, a leaf of the tree (an ear, mostly), may be halved instead
+ * ({@link Leaf#HALVED}) by the line from its corner opposite that side to the side's midpoint:
+ * two pieces, each at least half as wide as the triangle where those round its incentre are a
+ * third as wide or less (the elephant with holes' widest strip 0.00107 -> 0.00151). So the path
+ * is as long as the refinement's about the cut triangles and as the cycles' elsewhere: the shared
+ * capsule's 10,000 triangles (a sphere split open along a seam, 200 ears at its poles) become a
+ * path of 23,006 pieces round the incentres, 20,838 with its leaves halved, 2,698 triangles cut,
+ * against the refinement's 49,998.
  *
  * <p>The result is a {@link HamiltonianRefinement.Result} whose {@link RefinedMesh} lists whole
  * triangles ({@code RefinedMesh.FACE}) among the pieces of the cut ones, its split edges in
@@ -51,6 +56,90 @@ public final class CycleCoverPath {
      * @throws IllegalArgumentException if a face is not a triangle or has no area
      */
     public static HamiltonianRefinement.Result of(HalfedgeMesh mesh) {
+        return of(mesh, Way.PLAIN);
+    }
+
+    /**
+     * How a cut triangle joined to the rest of the path by one side only, a leaf of the tree of
+     * splices (an ear, mostly), is gone round. Halved, the strip may be wider, but on figure3 its
+     * own path crossed itself from both starts (12 and 16 pairs) where round the incentres one
+     * start is sound: only the seam's big models try both ({@code Seam.ownInstead}).
+     */
+    public enum Leaf {
+        /** From its incentre, as the refinement goes round every triangle: four pieces. */
+        ROUND_INCENTRE,
+        /** Halved by the line from its corner opposite the side it is joined by to that side's midpoint: two pieces. */
+        HALVED
+    }
+
+    /**
+     * The choices a path through the own triangles leaves open, each of which may widen the
+     * narrowest triangle of the path, which sets the widest strip, or narrow it.
+     *
+     * @param sliversFirst whether the matching begins with each sliver matched across its longest
+     *     side, narrowest first ({@link #SLIVER}): a triangle matched there is passed by its two
+     *     shorter sides, never left across the side it is narrowest over, but the cycles and
+     *     splices change with it (igl_fertility.off's widest strip 0.2543 -> 0.4134; the cow's
+     *     0.00389 -> 0.00134, set by a splice's pieces)
+     * @param leaf how a cut triangle at a leaf of the splices' tree is gone round
+     */
+    public record Way(boolean sliversFirst, Leaf leaf) {
+        /** The greedy matching in the triangles' order, every cut triangle round its incentre: the seam's short paths. */
+        public static final Way PLAIN = new Way(false, Leaf.ROUND_INCENTRE);
+    }
+
+    /**
+     * A sliver, for {@link Way#sliversFirst}: a triangle whose altitude onto its longest side is
+     * under this fraction of the median such altitude of the mesh's triangles (none on a solid of
+     * like triangles: the cube's, an icosphere's).
+     */
+    static final double SLIVER = 0.5;
+
+    /**
+     * {@link #of(HalfedgeMesh)} made {@code way}.
+     *
+     * @throws IllegalArgumentException if a face is not a triangle or has no area
+     */
+    public static HamiltonianRefinement.Result of(HalfedgeMesh mesh, Way way) {
+        return checked(mesh) ? new Splicer(mesh, cover(mesh, way.sliversFirst()), way.leaf() == Leaf.HALVED).path() : null;
+    }
+
+    /**
+     * The paths of every {@link Way} that makes a path of its own (a closed mesh has no leaves to
+     * halve; a mesh without slivers, no sliver to match first), the plain way's first; empty where
+     * the mesh is too big for one array of pieces.
+     *
+     * @throws IllegalArgumentException if a face is not a triangle or has no area
+     */
+    public static java.util.List<HamiltonianRefinement.Result> ways(HalfedgeMesh mesh) {
+        java.util.List<HamiltonianRefinement.Result> paths = new java.util.ArrayList<>();
+        if (!checked(mesh)) {
+            return paths;
+        }
+        for (boolean sliversFirst : new boolean[] {false, true}) {
+            if (sliversFirst && slivers(mesh).length == 0) {
+                continue;
+            }
+            Cover cover = cover(mesh, sliversFirst);
+            for (Leaf leaf : Leaf.values()) {
+                if (leaf == Leaf.HALVED && cover.cutCount() == 0) {
+                    continue;
+                }
+                HamiltonianRefinement.Result path = new Splicer(mesh, cover, leaf == Leaf.HALVED).path();
+                if (path != null) {
+                    paths.add(path);
+                }
+            }
+        }
+        return paths;
+    }
+
+    /**
+     * Whether {@code mesh} can have a path: not empty and not too big for one array of pieces.
+     *
+     * @throws IllegalArgumentException if a face is not a triangle or has no area
+     */
+    private static boolean checked(HalfedgeMesh mesh) {
         int faces = mesh.faceCount();
         double[] xyz = mesh.positionArray();
         for (int f = 0; f < faces; f++) {
@@ -62,10 +151,40 @@ public final class CycleCoverPath {
                 throw new IllegalArgumentException("face " + f + " has no area, so it has no incentre");
             }
         }
-        if (faces == 0 || mesh.halfedgeCount() > (Integer.MAX_VALUE >>> 2)) {
-            return null;
+        return faces > 0 && mesh.halfedgeCount() <= (Integer.MAX_VALUE >>> RefinedMesh.SHIFT);
+    }
+
+    /** The longest side of triangle {@code f} (the first of equals). */
+    static int longestSide(HalfedgeMesh mesh, int f) {
+        double[] xyz = mesh.positionArray();
+        int h = mesh.faceHalfedge(f);
+        int longest = h;
+        double most = -1;
+        for (int k = 0; k < 3; k++, h = mesh.next(h)) {
+            double length = Triangles.distance(xyz, mesh.fromVertex(h), mesh.toVertex(h));
+            if (length > most) {
+                most = length;
+                longest = h;
+            }
         }
-        return new Splicer(mesh, cover(mesh)).path();
+        return longest;
+    }
+
+    /** The slivers of {@code mesh} ({@link #SLIVER}), narrowest over its longest side first. */
+    static int[] slivers(HalfedgeMesh mesh) {
+        int faces = mesh.faceCount();
+        double[] xyz = mesh.positionArray();
+        double[] narrow = new double[faces];
+        for (int f = 0; f < faces; f++) {
+            int h = longestSide(mesh, f);
+            narrow[f] = Triangles.twiceArea(xyz, mesh.fromVertex(h), mesh.toVertex(h), mesh.toVertex(mesh.next(h)))
+                    / Triangles.distance(xyz, mesh.fromVertex(h), mesh.toVertex(h));
+        }
+        double[] sorted = narrow.clone();
+        Arrays.sort(sorted);
+        double sliver = faces == 0 ? 0 : SLIVER * sorted[faces / 2];
+        return java.util.stream.IntStream.range(0, faces).filter(f -> narrow[f] < sliver).boxed()
+                .sorted((a, b) -> Double.compare(narrow[a], narrow[b])).mapToInt(Integer::intValue).toArray();
     }
 
     /** How many neighbours triangle {@code f} has across its sides (three but on a boundary). */
@@ -107,20 +226,27 @@ public final class CycleCoverPath {
      * one with no partner to lose: 9,488 and 1,497).
      */
     static Cover cover(HalfedgeMesh mesh) {
-        Cover any = cover(mesh, false);
+        return cover(mesh, false);
+    }
+
+    /** {@link #cover(HalfedgeMesh)}, its matchings begun with the slivers where {@code sliversFirst} ({@link Way}). */
+    static Cover cover(HalfedgeMesh mesh, boolean sliversFirst) {
+        int[] slivers = sliversFirst ? slivers(mesh) : new int[0];
+        Cover any = cover(mesh, false, slivers);
         if (any.cutCount() == 0) {
             return any; // none cut (a closed mesh, matched at once; an open tube): none fewer
         }
-        Cover unmatched = cover(mesh, true);
+        Cover unmatched = cover(mesh, true, slivers);
         return unmatched.cutCount() < any.cutCount() ? unmatched : any;
     }
 
     /**
      * The cover as {@link #cover(HalfedgeMesh)} finds it, cutting for a triangle left unmatched
      * its first neighbour not cut, or where {@code unmatchedFirst}, one that is not matched
-     * (with two neighbours left, or facing a cut one) where it has such.
+     * (with two neighbours left, or facing a cut one) where it has such; the matchings begun with
+     * {@code slivers}, each across its longest side.
      */
-    private static Cover cover(HalfedgeMesh mesh, boolean unmatchedFirst) {
+    private static Cover cover(HalfedgeMesh mesh, boolean unmatchedFirst, int[] slivers) {
         int faces = mesh.faceCount();
         boolean[] cut = new boolean[faces];
         int[] live = new int[faces]; // neighbours not cut
@@ -133,7 +259,7 @@ public final class CycleCoverPath {
                 queue[tail++] = f;
             }
         }
-        Matching m = new Matching(mesh);
+        Matching m = new Matching(mesh, slivers);
         while (true) {
             // A cut triangle leaves its neighbours one fewer: any with fewer than two is cut too.
             for (int head = 0; head < tail; head++) {
@@ -200,7 +326,8 @@ public final class CycleCoverPath {
 
     /**
      * A maximum matching of the dual graph's nodes (triangles; which, set by the caller) by
-     * Edmonds' blossoms, begun from a greedy one.
+     * Edmonds' blossoms, begun from a greedy one (the triangles given first, each across its
+     * longest side).
      */
     static final class Matching {
         private final HalfedgeMesh mesh;
@@ -216,8 +343,12 @@ public final class CycleCoverPath {
         private final boolean[] onPath;
         private final int[] queue;
 
-        Matching(HalfedgeMesh mesh) {
+        /** The triangles matched first, each across its longest side where its partner there is free. */
+        private final int[] first;
+
+        Matching(HalfedgeMesh mesh, int[] first) {
             this.mesh = mesh;
+            this.first = first;
             this.faces = mesh.faceCount();
             mate = new int[faces];
             parent = new int[faces];
@@ -238,6 +369,13 @@ public final class CycleCoverPath {
         /** Matches the nodes, from none matched: greedily, then along augmenting paths. */
         void match() {
             Arrays.fill(mate, -1);
+            for (int f : first) {
+                int g = node[f] && mate[f] < 0 ? across(longestSide(mesh, f)) : -1;
+                if (g >= 0 && g != f && mate[g] < 0) {
+                    mate[f] = g;
+                    mate[g] = f;
+                }
+            }
             for (int f = 0; f < faces; f++) {
                 if (node[f] && mate[f] < 0) {
                     int h = mesh.faceHalfedge(f);
@@ -355,11 +493,14 @@ public final class CycleCoverPath {
         private final boolean[] onCycle;
         /** Whether each edge is split for a splice: the edges of the tree joining the nodes. */
         private final boolean[] split;
+        /** Whether a cut triangle joined by one split side is halved about it rather than gone round from its incentre ({@link Leaf}). */
+        private final boolean halveLeaves;
         private int[] path;
         private int emitted;
 
-        Splicer(HalfedgeMesh mesh, Cover cover) {
+        Splicer(HalfedgeMesh mesh, Cover cover, boolean halveLeaves) {
             this.mesh = mesh;
+            this.halveLeaves = halveLeaves;
             this.matched = cover.offCycle();
             this.nodeOf = new int[mesh.faceCount()];
             this.onCycle = new boolean[mesh.faceCount()];
@@ -500,16 +641,21 @@ public final class CycleCoverPath {
                     split[HalfedgeMesh.edge(h)] = true;
                 }
             }
-            // A triangle on a cycle is one piece, or four where it is spliced; a cut one three and
-            // one more for each split side.
+            // Each component's tour begins at its lowest triangle.
+            boolean[] toured = new boolean[nodes];
+            boolean[] first = new boolean[faces];
+            for (int s = 0; s < faces; s++) {
+                int root = UnionFind.find(joined, nodeOf[s]);
+                first[s] = !toured[root];
+                toured[root] = true;
+            }
+            // A triangle on a cycle is one piece, or four where it is spliced; a cut one two where
+            // it is a leaf of the tree, entered by its one split side, and leaves are halved, else
+            // three and one more for each split side.
             long pieces = 0;
             for (int f = 0; f < faces; f++) {
-                int splits = 0;
-                int h = mesh.faceHalfedge(f);
-                for (int k = 0; k < 3; k++, h = mesh.next(h)) {
-                    splits += split[HalfedgeMesh.edge(h)] ? 1 : 0;
-                }
-                pieces += onCycle[f] ? (splits == 0 ? 1 : 4) : 3 + splits;
+                int splits = splits(f);
+                pieces += onCycle[f] ? (splits == 0 ? 1 : 4) : halveLeaves && splits == 1 && !first[f] ? 2 : 3 + splits;
             }
             if (pieces > Integer.MAX_VALUE - 8) {
                 return null;
@@ -517,13 +663,10 @@ public final class CycleCoverPath {
             path = new int[(int) pieces];
             // One tour per component, from its lowest triangle: round its cycle, or round its pieces,
             // into each node joined on in its turn.
-            boolean[] toured = new boolean[nodes];
             int[] componentStart = new int[faces + 1];
             int components = 0;
             for (int s = 0; s < faces; s++) {
-                int root = UnionFind.find(joined, nodeOf[s]);
-                if (!toured[root]) {
-                    toured[root] = true;
+                if (first[s]) {
                     componentStart[components++] = emitted;
                     tour(s);
                 }
@@ -588,7 +731,22 @@ public final class CycleCoverPath {
 
         /** The half of side {@code h} at its end {@code v}, as a piece. */
         private int half(int h, int v) {
-            return h << 2 | (mesh.fromVertex(h) == v ? RefinedMesh.FIRST_HALF : RefinedMesh.SECOND_HALF);
+            return h << RefinedMesh.SHIFT | (mesh.fromVertex(h) == v ? RefinedMesh.FIRST_HALF : RefinedMesh.SECOND_HALF);
+        }
+
+        /** The half of the face of side {@code h} at its end {@code v}, cut from the corner opposite h to h's midpoint, as a piece. */
+        private int faceHalf(int h, int v) {
+            return h << RefinedMesh.SHIFT | (mesh.fromVertex(h) == v ? RefinedMesh.FACE_FIRST_HALF : RefinedMesh.FACE_SECOND_HALF);
+        }
+
+        /** How many of triangle {@code f}'s sides are split. */
+        private int splits(int f) {
+            int count = 0;
+            int h = mesh.faceHalfedge(f);
+            for (int k = 0; k < 3; k++, h = mesh.next(h)) {
+                count += split[HalfedgeMesh.edge(h)] ? 1 : 0;
+            }
+            return count;
         }
 
         /**
@@ -599,7 +757,7 @@ public final class CycleCoverPath {
          */
         private void pushSide(int h, int v) {
             if (!split[HalfedgeMesh.edge(h)]) {
-                push(PIECE, h << 2 | RefinedMesh.WHOLE, 0, 0);
+                push(PIECE, h << RefinedMesh.SHIFT | RefinedMesh.WHOLE, 0, 0);
                 return;
             }
             int across = HalfedgeMesh.twin(h);
@@ -614,6 +772,14 @@ public final class CycleCoverPath {
          * {@code in} is -1, from its first side on.
          */
         private void goRound(int t, int in, int v) {
+            if (halveLeaves && in >= 0 && splits(t) == 1) {
+                // A leaf of the tree (an ear, mostly): its two halves about the side it is joined
+                // by, cut from the corner opposite, each at least half as wide as the triangle
+                // where its pieces round the incentre are a third as wide or less.
+                push(PIECE, faceHalf(in, otherEnd(in, v)), 0, 0);
+                push(PIECE, faceHalf(in, v), 0, 0);
+                return;
+            }
             if (in < 0) {
                 int h = mesh.faceHalfedge(t);
                 int h1 = mesh.next(h);
@@ -641,9 +807,9 @@ public final class CycleCoverPath {
             int leave = sideAt(g, in, v);
             int back = sideAt(g, in, otherEnd(in, v));
             push(PIECE, half(in, otherEnd(in, v)), 0, 0);
-            push(PIECE, back << 2 | RefinedMesh.WHOLE, 0, 0);
+            push(PIECE, back << RefinedMesh.SHIFT | RefinedMesh.WHOLE, 0, 0);
             push(ROUND, mesh.face(HalfedgeMesh.twin(leave)), HalfedgeMesh.twin(leave), g);
-            push(PIECE, leave << 2 | RefinedMesh.WHOLE, 0, 0);
+            push(PIECE, leave << RefinedMesh.SHIFT | RefinedMesh.WHOLE, 0, 0);
             push(PIECE, half(in, v), 0, 0);
         }
 
@@ -660,12 +826,12 @@ public final class CycleCoverPath {
             push(ROUND, mesh.face(HalfedgeMesh.twin(out)), HalfedgeMesh.twin(out), stop);
             int e = matched[f];
             if (e < 0 || !split[HalfedgeMesh.edge(e)]) {
-                push(PIECE, in << 2 | RefinedMesh.FACE, 0, 0);
+                push(PIECE, in << RefinedMesh.SHIFT | RefinedMesh.FACE, 0, 0);
                 return;
             }
-            push(PIECE, out << 2 | RefinedMesh.WHOLE, 0, 0);
+            push(PIECE, out << RefinedMesh.SHIFT | RefinedMesh.WHOLE, 0, 0);
             pushSide(e, sharedCorner(e, in));
-            push(PIECE, in << 2 | RefinedMesh.WHOLE, 0, 0);
+            push(PIECE, in << RefinedMesh.SHIFT | RefinedMesh.WHOLE, 0, 0);
         }
 
         /** The corner that halfedges {@code a} and {@code b} of one triangle share. */

@@ -109,7 +109,7 @@ public final class HamiltonianRefinement {
             Triangles.incenter(xyz, mesh.fromVertex(h), mesh.toVertex(h), mesh.toVertex(mesh.next(h)), incentres, 3 * f);
         }
 
-        if (mesh.halfedgeCount() > (Integer.MAX_VALUE >>> 2)) {
+        if (mesh.halfedgeCount() > (Integer.MAX_VALUE >>> RefinedMesh.SHIFT)) {
             throw new IllegalArgumentException("too many halfedges to refine: " + mesh.halfedgeCount());
         }
         int triangleCount = 5 * faces - 2 * components;
@@ -125,11 +125,11 @@ public final class HamiltonianRefinement {
                     // First half on this side, then cross into the neighbour's second half and
                     // go on around the neighbour.
                     int across = HalfedgeMesh.twin(h);
-                    path[t++] = h << 2 | RefinedMesh.FIRST_HALF;
-                    path[t++] = across << 2 | RefinedMesh.SECOND_HALF;
+                    path[t++] = h << RefinedMesh.SHIFT | RefinedMesh.FIRST_HALF;
+                    path[t++] = across << RefinedMesh.SHIFT | RefinedMesh.SECOND_HALF;
                     h = mesh.next(across);
                 } else {
-                    path[t++] = h << 2 | RefinedMesh.WHOLE;
+                    path[t++] = h << RefinedMesh.SHIFT | RefinedMesh.WHOLE;
                     h = mesh.next(h);
                 }
             } while (h != start);

@@ -16,8 +16,9 @@ import ifold.mesh.PolygonSoup;
  * off by one of its halfedges {@code h}: the whole sub-triangle (incentre, from(h), to(h)), or
  * its first or second half when the edge of {@code h} is split at its midpoint; on the path
  * through a mesh's own triangles ({@link CycleCoverPath}), the face itself (its corner opposite
- * h, from(h), to(h)), the split edges those of its splices. So the path is
- * one {@code int} per triangle, {@code h << 2 | part}, and the refinement of 1.4 million
+ * h, from(h), to(h)), the split edges those of its splices, or its half on the side of h's
+ * start or end where that side is split (the face cut from that corner to the side's
+ * midpoint). So the path is one {@code int} per triangle, {@code h << SHIFT | part}, and the refinement of 1.4 million
  * triangles takes about a third of the memory that explicit triples would.
  */
 public final class RefinedMesh implements IndexedPolygons {
@@ -26,6 +27,13 @@ public final class RefinedMesh implements IndexedPolygons {
     static final int SECOND_HALF = 2;
     /** The whole face, its corner opposite {@code h} in the incentre's place ({@link CycleCoverPath}). */
     static final int FACE = 3;
+    /** The face's half at from(h) where h's edge is split: its corner opposite h, from(h), the midpoint ({@link CycleCoverPath}). */
+    static final int FACE_FIRST_HALF = 4;
+    /** The face's half at to(h) where h's edge is split: its corner opposite h, the midpoint, to(h). */
+    static final int FACE_SECOND_HALF = 5;
+    /** A path code is the halfedge shifted left by this, or'ed with its part. */
+    static final int SHIFT = 3;
+    private static final int PART = (1 << SHIFT) - 1;
 
     private final HalfedgeMesh original;
     /** Per triangle in path order: the halfedge it stands on, shifted left by 2, or'ed with its part. */
@@ -112,15 +120,15 @@ public final class RefinedMesh implements IndexedPolygons {
     @Override
     public int faceVertex(int t, int k) {
         int code = path[t];
-        int h = code >>> 2;
-        int part = code & 3;
+        int h = code >>> SHIFT;
+        int part = code & PART;
         if (k == 0) {
-            return part == FACE ? original.toVertex(original.next(h)) : original.vertexCount() + original.face(h);
+            return part >= FACE ? original.toVertex(original.next(h)) : original.vertexCount() + original.face(h);
         }
         if (k == 1) {
-            return part == SECOND_HALF ? midpoint(h) : original.fromVertex(h);
+            return part == SECOND_HALF || part == FACE_SECOND_HALF ? midpoint(h) : original.fromVertex(h);
         }
-        return part == FIRST_HALF ? midpoint(h) : original.toVertex(h);
+        return part == FIRST_HALF || part == FACE_FIRST_HALF ? midpoint(h) : original.toVertex(h);
     }
 
     private int midpoint(int h) {
@@ -129,12 +137,12 @@ public final class RefinedMesh implements IndexedPolygons {
 
     /** The original face that triangle {@code t} lies in. */
     public int parentFace(int t) {
-        return original.face(path[t] >>> 2);
+        return original.face(path[t] >>> SHIFT);
     }
 
     /** The original halfedge that triangle {@code t} stands on: its side opposite the incentre (or the face's corner) lies along it. */
     public int parentHalfedge(int t) {
-        return path[t] >>> 2;
+        return path[t] >>> SHIFT;
     }
 
     @Override

@@ -13,6 +13,7 @@ import ifold.mesh.MeshBuilder;
 import ifold.mesh.PolygonSoup;
 import ifold.mesh.Solids;
 import ifold.mesh.io.MeshReaders;
+import ifold.refine.CycleCoverPath;
 import ifold.refine.HamiltonianRefinement;
 import ifold.testing.SharedMeshes;
 import java.nio.file.Files;
@@ -210,6 +211,54 @@ class SeamTest {
         assertEquals(Seam.OWN_TRIED[1], chosen.along());
         assertEquals(16, chosen.placed().analysis().maxLayers());
         WrapTest.check(dir, chosen.result(), figure3, 1, 2000);
+    }
+
+    /**
+     * A big surface with holes follows its own triangles with the cut ones at the leaves of the
+     * splices' tree halved, where that is likely to make fewer faces: the CGAL elephant with holes
+     * (4,463 triangles), whose pieces round the incentres set a widest strip of 0.00107 and about
+     * 752,778 faces at it, past the default limit, so that it was refused; its leaves halved (and
+     * its slivers matched first), 0.00150 and within the limit (it wraps at the defaults, 9,343
+     * triangles on the path).
+     */
+    @Test
+    void aBigSurfaceWithHolesHalvesTheLeavesOfItsPathWhereThatFitsTheLimit() throws Exception {
+        assumeTrue(SharedMeshes.present(), "../shared/meshes is absent");
+        HalfedgeMesh elephant = mesh(MeshReaders.read(SharedMeshes.ROOT.resolve("valid").resolve("cgal_elephant-with-holes.off")));
+        HamiltonianRefinement.Result refinement = ifold.job.WrapPath.of(elephant).refinement();
+        HamiltonianRefinement.Result own = Seam.ownInstead(refinement, DEFAULTS);
+        HalfedgeMesh original = refinement.mesh().original();
+        HamiltonianRefinement.Result round = CycleCoverPath.of(original);
+        assertEquals(CycleCoverPath.of(original, new CycleCoverPath.Way(true, CycleCoverPath.Leaf.HALVED)).mesh().faceCount(), own.mesh().faceCount(),
+                "its leaves halved, its slivers matched first");
+        assertTrue(own.mesh().faceCount() < round.mesh().faceCount());
+        long roundFaces = Wrap.likelyFaces(round, Wrap.widest(round.mesh(), round.componentStart()));
+        long halvedFaces = Wrap.likelyFaces(own, Wrap.widest(own.mesh(), own.componentStart()));
+        assertTrue(roundFaces > Wrap.DEFAULT_MAX_FACES, roundFaces + " faces at the widest round the incentres");
+        assertTrue(halvedFaces <= Wrap.DEFAULT_MAX_FACES, halvedFaces + " faces at the widest halved");
+    }
+
+    /**
+     * A big closed scan with slivers follows its own triangles matched with the slivers first,
+     * each across its longest side, where that is likely to make fewer faces:
+     * {@code igl_fertility.off} (9,000 triangles), whose slivers left across their longest sides
+     * set a widest strip of 0.2543 and about 832,963 faces at it, past the default limit, so
+     * that it was refused; matched so, 0.4134 and within the limit (it wraps at the defaults).
+     */
+    @Test
+    void aBigScanMatchesItsSliversAcrossTheirLongestSidesWhereThatFitsTheLimit() throws Exception {
+        assumeTrue(SharedMeshes.present(), "../shared/meshes is absent");
+        HalfedgeMesh fertility = mesh(MeshReaders.read(SharedMeshes.ROOT.resolve("valid").resolve("igl_fertility.off")));
+        HamiltonianRefinement.Result refinement = ifold.job.WrapPath.of(fertility).refinement();
+        HamiltonianRefinement.Result own = Seam.ownInstead(refinement, DEFAULTS);
+        HalfedgeMesh original = refinement.mesh().original();
+        HamiltonianRefinement.Result plain = CycleCoverPath.of(original);
+        HamiltonianRefinement.Result sliversFirst = CycleCoverPath.of(original, new CycleCoverPath.Way(true, CycleCoverPath.Leaf.ROUND_INCENTRE));
+        assertEquals(sliversFirst.mesh().faceCount(), own.mesh().faceCount(), "its slivers matched first");
+        long plainFaces = Wrap.likelyFaces(plain, Wrap.widest(plain.mesh(), plain.componentStart()));
+        long ownFaces = Wrap.likelyFaces(own, Wrap.widest(own.mesh(), own.componentStart()));
+        assertTrue(plainFaces > Wrap.DEFAULT_MAX_FACES, plainFaces + " faces at the widest, matched plainly");
+        assertTrue(ownFaces <= Wrap.DEFAULT_MAX_FACES, ownFaces + " faces at the widest, the slivers matched first");
     }
 
     /**
