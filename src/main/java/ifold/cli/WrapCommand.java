@@ -16,6 +16,7 @@ import ifold.scene.Animation;
 import ifold.scene.Scene;
 import ifold.wrap.LayerFloor;
 import ifold.wrap.PaperInSpace;
+import ifold.wrap.Seam;
 import ifold.wrap.Wrap;
 import ifold.wrap.WrapAnalysis;
 import ifold.wrap.WrapExport;
@@ -237,11 +238,11 @@ final class WrapCommand implements Callable<Integer> {
     /** The hinge strip's line: squares and passes, the strip, its folds by kind, layers, efficiency, coverage. */
     static String hingeSummary(Path model, HalfedgeMesh mesh, WrapPath path, Wrap.Result result, WrapAnalysis analysis) {
         return String.format(Locale.ROOT, "%s: %d %s -> %d squares of side %.4g, %d passes (%d turning), %s, "
-                + "%d diagonal turns, %d edge crossings, %d layers at most (a stack of %d), paper efficiency %.3f, coverage %.3f, "
+                + "%d diagonal turns, %d edge crossings, %d layers at most (a stack of %d), paper efficiency %.3f, coverage %s, "
                 + "isometry error %.1e", model, mesh.faceCount(), mesh.faceCount() == 1 ? "triangle" : "triangles",
                 path.squares().count(), path.squares().spacing(), path.tour().passes(), path.tour().turnCount(), paper(result),
                 result.count(Wrap.Kind.DIAGONAL_TURN), result.count(Wrap.Kind.EDGE_CROSSING), analysis.maxLayers(),
-                analysis.stackLevels(), analysis.surfaceArea() / analysis.paperArea(), analysis.coverage(), analysis.isometryError());
+                analysis.stackLevels(), analysis.surfaceArea() / analysis.paperArea(), coverage(analysis.coverage()), analysis.isometryError());
     }
 
     /** The strips' sizes: one as its size, several as their width and lengths, not as one strip as long as all. */
@@ -276,11 +277,24 @@ final class WrapCommand implements Callable<Integer> {
                 : String.format(Locale.ROOT, " (layers creep up to %.1f T at concave edges)", analysis.creep() / result.thickness());
         return String.format(Locale.ROOT, "%s: %d %s%s -> %d on the path, %s, "
                 + "%d turn folds, %d gadget folds, %d edge crossings, %d tucks, %d layers at most (a stack of %d%s), "
-                + "paper efficiency %.3f, coverage %.3f, isometry error %.1e%s", model, mesh.faceCount(),
+                + "paper efficiency %.3f, coverage %s, isometry error %.1e%s", model, mesh.faceCount(),
                 mesh.faceCount() == 1 ? "triangle" : "triangles", prepared, result.mesh().faceCount(),
                 paper, result.count(Wrap.Kind.ZIGZAG_TURN),
                 result.count(Wrap.Kind.TURN_GADGET), result.count(Wrap.Kind.EDGE_CROSSING), result.count(Wrap.Kind.TUCK),
-                analysis.maxLayers(), analysis.stackLevels(), atLeast, analysis.surfaceArea() / analysis.paperArea(), analysis.coverage(),
-                analysis.isometryError(), creep);
+                analysis.maxLayers(), analysis.stackLevels(), atLeast, analysis.surfaceArea() / analysis.paperArea(),
+                coverage(analysis.coverage()), analysis.isometryError(), creep);
+    }
+
+    /**
+     * The share of the surface the paper covers: 1.000 where it is whole but for rounding, else
+     * with as many digits as show what is bare, and how much (a scan's 0.99997 was "1.000").
+     */
+    static String coverage(double coverage) {
+        double bare = 1 - coverage;
+        if (!(bare > Seam.COVERAGE_TOLERANCE)) {
+            return String.format(Locale.ROOT, "%.3f", Math.min(coverage, 1));
+        }
+        int digits = Math.max(3, (int) Math.ceil(-Math.log10(bare)) + 1);
+        return String.format(Locale.ROOT, "%." + digits + "f (%.2g %% of the surface bare)", coverage, 100 * bare);
     }
 }

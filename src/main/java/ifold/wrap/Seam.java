@@ -263,7 +263,7 @@ public final class Seam {
     }
 
     /** The area of the model a wrap may leave bare, as a fraction: rounding's. */
-    static final double COVERAGE_TOLERANCE = 1e-9;
+    public static final double COVERAGE_TOLERANCE = 1e-9;
 
     /** A start's wrap placed in space and measured, how long that took its {@link Chosen#measureSeconds}. */
     private static Chosen placed(HamiltonianRefinement.Result begun, Wrap.Result result, double along) {

@@ -161,6 +161,16 @@ class WrapCommandTest {
                 "a corner of 0.011 degrees is sharper than the naive tuck-under can hide paper in", "0.1 degrees and wider", "widen it");
     }
 
+    /** Coverage short of whole shows how short: a scan's 0.99997 was printed 1.000. */
+    @Test
+    void coverageShortOfWholeSaysHowMuchIsBare() {
+        assertEquals("1.000", WrapCommand.coverage(1));
+        assertEquals("1.000", WrapCommand.coverage(1 - 1e-12), "rounding's");
+        assertEquals("0.999973 (0.0027 % of the surface bare)", WrapCommand.coverage(0.9999730669977533));
+        assertEquals("0.9999984 (0.00016 % of the surface bare)", WrapCommand.coverage(0.9999983775644257));
+        assertEquals("0.500 (50 % of the surface bare)", WrapCommand.coverage(0.5));
+    }
+
     @Test
     void oneTriangleIsOneTriangle() throws Exception {
         CliTest.Run run = CliTest.run("wrap", "models/triangle.off", "--no-view");
