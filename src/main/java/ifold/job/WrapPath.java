@@ -4,6 +4,8 @@ import ifold.mesh.GridSquares;
 import ifold.mesh.HalfedgeMesh;
 import ifold.refine.FacePreparation;
 import ifold.refine.HamiltonianRefinement;
+import ifold.geom.Triangles;
+import ifold.geom.Vectors;
 import ifold.refine.RefinementClaims;
 import ifold.wrap.HingeTour;
 import ifold.wrap.Wrap;
@@ -63,6 +65,70 @@ public record WrapPath(FacePreparation.Result preparation, HamiltonianRefinement
         HamiltonianRefinement.Result own = HamiltonianRefinement.refine(preparation.centred());
         return Wrap.likelyFaces(own) <= Wrap.likelyFaces(refined) ? new WrapPath(preparation, own, false)
                 : new WrapPath(preparation, refined, true);
+    }
+
+    /**
+     * The zig-zag's path this one is not: the prepared faces' refinement where this follows the
+     * model's own, and the other way round; null where nothing was prepared. Fewer faces are
+     * likely on the one {@link #of} follows, but not always fewer layers: a cone's base fanned
+     * from its centre in 32 thin triangles piles 64 layers there along the model's own, 37 along
+     * the prepared faces.
+     */
+    public WrapPath other() {
+        if (hinge() || preparation.prepared() == 0) {
+            return null;
+        }
+        return prepared ? new WrapPath(preparation, HamiltonianRefinement.refine(preparation.centred()), false)
+                : new WrapPath(preparation, HamiltonianRefinement.refine(preparation.mesh()), true);
+    }
+
+    /**
+     * Whether the prepared faces may lay fewer layers than this path, the model's own, at
+     * {@code point}: within {@code reach} of it lies a vertex inside a planar region (every face
+     * round it in one plane) where the triangles meet at a corner under the preparation's target
+     * (a cone's base fanned from its centre), which the preparation triangles again. At a solid's
+     * corner, where a long box's thin triangles meet too, the faces round it turn, and the
+     * prepared faces were as many layers or more.
+     */
+    public boolean fanNear(double[] point, double reach) {
+        if (hinge() || prepared || preparation.prepared() == 0) {
+            return false;
+        }
+        HalfedgeMesh own = preparation.centred();
+        double[] xyz = own.positionArray();
+        for (int v = 0; v < own.vertexCount(); v++) {
+            double dx = xyz[3 * v] - point[0];
+            double dy = xyz[3 * v + 1] - point[1];
+            double dz = xyz[3 * v + 2] - point[2];
+            if (dx * dx + dy * dy + dz * dz <= reach * reach && own.halfedge(v) >= 0 && !own.isBoundaryVertex(v) && thinFlatFan(own, v)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Whether every face round vertex {@code v} of {@code mesh} lies in one plane and one has a corner there under the preparation's target. */
+    private static boolean thinFlatFan(HalfedgeMesh mesh, int v) {
+        double[] xyz = mesh.positionArray();
+        double[] first = null;
+        boolean thin = false;
+        int start = mesh.halfedge(v);
+        int h = start;
+        do {
+            int a = mesh.toVertex(h);
+            int b = mesh.toVertex(mesh.next(h));
+            double[] pv = {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]};
+            double[] normal = Vectors.unit(Vectors.cross(Vectors.sub(new double[] {xyz[3 * a], xyz[3 * a + 1], xyz[3 * a + 2]}, pv),
+                    Vectors.sub(new double[] {xyz[3 * b], xyz[3 * b + 1], xyz[3 * b + 2]}, pv)));
+            if (first == null) {
+                first = normal;
+            } else if (Vectors.dot(first, normal) < 1 - 1e-9) {
+                return false;
+            }
+            thin |= Math.toDegrees(Triangles.angleAt(xyz, v, a, b)) < FacePreparation.TARGET_ANGLE;
+            h = HalfedgeMesh.twin(mesh.prev(h));
+        } while (h != start);
+        return thin;
     }
 
     /** Prepares and refines {@code mesh}, following the prepared path whatever it costs ({@code refine --prepare}). */

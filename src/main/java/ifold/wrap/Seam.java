@@ -76,12 +76,28 @@ public final class Seam {
      *     the same order, null for a start not checked (one with more layers than a sound start
      *     before it, one whose wrap failed, or one the check passed by); empty where one alone was tried
      * @param measureSeconds how long placing and measuring the wrap kept took (the other tries' count as wrapping)
+     * @param collisions the collisions the {@link PaperCheck} found on the start kept; null where it was not checked
      */
     public record Chosen(HamiltonianRefinement.Result refinement, Wrap.Result result, PlacedWrap placed, double along,
             List<Integer> layersTried, List<Integer> collisionsTried, double measureSeconds, List<Integer> ownLayersTried,
-            List<Integer> ownCollisionsTried) {
+            List<Integer> ownCollisionsTried, Integer collisions) {
         Chosen(HamiltonianRefinement.Result refinement, Wrap.Result result, PlacedWrap placed, double along, double measureSeconds) {
-            this(refinement, result, placed, along, null, null, measureSeconds, null, null);
+            this(refinement, result, placed, along, null, null, measureSeconds, null, null, null);
+        }
+
+        /** The most layers over any point of the wrap kept. */
+        public int maxLayers() {
+            return placed.analysis().maxLayers();
+        }
+
+        /**
+         * Whether this wrap is better than {@code other}, as the seam chooses between its starts:
+         * sound where the other's paper collides, else fewer layers.
+         */
+        public boolean betterThan(Chosen other) {
+            boolean collides = collisions != null && collisions > 0;
+            boolean otherCollides = other.collisions != null && other.collisions > 0;
+            return collides != otherCollides ? !collides : maxLayers() < other.maxLayers();
         }
     }
 
@@ -129,7 +145,7 @@ public final class Seam {
             try {
                 Chosen alone = placed(instead, Wrap.wrap(instead, options, watcher), 0);
                 return new Chosen(instead, alone.result(), alone.placed(), 0, List.of(), List.of(), alone.measureSeconds(), List.of(),
-                        List.of());
+                        List.of(), null);
             } catch (Wrap.FaceLimitException e) {
                 // The refinement, likely to make more faces, would pass the limit too, after as
                 // long again (the 5,120-triangle icosphere at width 0.004 stopped at triangle
@@ -155,6 +171,7 @@ public final class Seam {
         Chosen best = null;
         boolean bestCollides = false;
         int bestFound = 0;
+        Integer bestChecked = null; // what the check found on the best start, null where it was not checked
         List<Integer> layers = new ArrayList<>();
         List<Integer> collisions = new ArrayList<>();
         HamiltonianRefinement.Result own = ownPath(refinement, options.width());
@@ -199,6 +216,7 @@ public final class Seam {
                 best = tried;
                 bestCollides = collides;
                 bestFound = collides ? found : 0;
+                bestChecked = found;
             }
         }
         // The path through the model's own triangles, where the refinement's starts were tried:
@@ -227,6 +245,7 @@ public final class Seam {
                     ownCollisions.add(found >= 0 ? found : null);
                     best = tried;
                     bestCollides = found > 0;
+                    bestChecked = found >= 0 ? found : null;
                     continue;
                 }
                 if (!bestCollides && most >= best.placed().analysis().maxLayers() || !covers(placed)) {
@@ -238,6 +257,7 @@ public final class Seam {
                 if (found == 0 && (bestCollides || most < best.placed().analysis().maxLayers())) {
                     best = tried;
                     bestCollides = false;
+                    bestChecked = 0;
                 }
             }
         }
@@ -247,7 +267,7 @@ public final class Seam {
         return new Chosen(best.refinement(), best.result(), best.placed(), best.along(),
                 tries > 1 ? java.util.Collections.unmodifiableList(layers) : List.of(),
                 tries > 1 ? java.util.Collections.unmodifiableList(collisions) : List.of(),
-                best.measureSeconds(), java.util.Collections.unmodifiableList(ownLayers), java.util.Collections.unmodifiableList(ownCollisions));
+                best.measureSeconds(), java.util.Collections.unmodifiableList(ownLayers), java.util.Collections.unmodifiableList(ownCollisions), bestChecked);
     }
 
     /**
@@ -348,7 +368,7 @@ public final class Seam {
     static final double[] OWN_TRIED = {0, 0.5};
 
     /** A watcher that is told nothing but is asked whether to stop: the tries along the own triangles, after the refinement's progress is full. */
-    private static Wrap.Watcher stoppedBy(Wrap.Watcher watcher) {
+    public static Wrap.Watcher stoppedBy(Wrap.Watcher watcher) {
         return new Wrap.Watcher() {
             @Override
             public void wrapped(int done, int total) {

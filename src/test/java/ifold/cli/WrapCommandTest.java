@@ -161,6 +161,39 @@ class WrapCommandTest {
                 "a corner of 0.011 degrees is sharper than the naive tuck-under can hide paper in", "0.1 degrees and wider", "widen it");
     }
 
+    /**
+     * A cone of 24 sides whose base is fanned from its centre in 24 thin triangles (15 degree
+     * corners there): along the model's own triangles, the fewer faces likely, its most layers
+     * pile at that centre (38 from the best start); wrapped along its prepared faces too, the base
+     * triangulated again, 23, and that wrap is kept, sound.
+     */
+    @Test
+    void aConeWhoseBaseFansFromItsCentreIsWrappedAlongItsPreparedFaces() throws Exception {
+        Path model = dir.resolve("cone.off");
+        StringBuilder off = new StringBuilder("OFF\n26 48 0\n");
+        for (int s = 0; s < 24; s++) {
+            off.append(Math.cos(2 * Math.PI * s / 24)).append(' ').append(Math.sin(2 * Math.PI * s / 24)).append(" 0\n");
+        }
+        off.append("0 0 1\n0 0 0\n");
+        for (int s = 0; s < 24; s++) {
+            off.append("3 ").append(s).append(' ').append((s + 1) % 24).append(" 24\n");
+            off.append("3 25 ").append((s + 1) % 24).append(' ').append(s).append('\n');
+        }
+        Files.writeString(model, off);
+        Path report = dir.resolve("cone.json");
+        CliTest.Run run = CliTest.run("wrap", model.toString(), "--no-view", "--report", report.toString());
+        assertEquals(0, run.code(), run.err());
+        String json = Files.readString(report);
+        assertTrue(json.contains("\"otherPath\": {"), json);
+        assertTrue(json.contains("\"kept\": true"), json);
+        assertTrue(json.contains("\"used\": true"), "the prepared faces followed: " + json);
+        double first = CliTest.number(json, "firstLayers");
+        double kept = CliTest.number(json, "maxLayers");
+        assertTrue(kept < first - 10, kept + " layers kept, " + first + " along the model's own triangles");
+        assertEquals(0, CliTest.number(json, "pairs"), 0, json);
+        assertTrue(run.out().contains(" prepared ("), run.out());
+    }
+
     /** Coverage short of whole shows how short: a scan's 0.99997 was printed 1.000. */
     @Test
     void coverageShortOfWholeSaysHowMuchIsBare() {
