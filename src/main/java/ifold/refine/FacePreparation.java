@@ -86,6 +86,15 @@ public final class FacePreparation {
     /** The most times the regions may be triangulated, over the regions to prepare: a cascade of splits from region to region stops there. */
     private static final int ROUNDS = 20;
 
+    /**
+     * The most times one region is refined; after that it is triangulated from its boundary
+     * alone. Each refinement starts from the boundary, forgetting which points the last one
+     * added at a corner, and may halve the pieces there again: two regions meeting at such a
+     * corner gave each other a point a round, until Tinfour merged two (the shared cgal_mpi and
+     * trimesh_rabbit). No region of models/ or of the shared polyhedra is refined more than once.
+     */
+    static final int MOST_REFINEMENTS = 3;
+
     private FacePreparation() {
     }
 
@@ -330,12 +339,21 @@ public final class FacePreparation {
 
         /** The regions on both sides of split edge e must be triangulated again (with the split). */
         void markAcross(int e) {
+            markAcross(e, null);
+        }
+
+        /**
+         * The regions beside split edge e, but {@code splitter}, whose refinement put the split
+         * there, must be triangulated again (with the split): a point from a neighbour.
+         */
+        void markAcross(int e, PlanarRegion splitter) {
             for (int side = 0; side < 2; side++) {
                 int f = mesh.face(HalfedgeMesh.halfedgeOfEdge(e, side));
-                if (f >= 0) {
+                if (f >= 0 && regions.get(regionOf[f]) != splitter) {
                     PlanarRegion region = regions.get(regionOf[f]);
                     region.prepare = true;
                     region.dirty = true;
+                    region.triangulatedForOwnSplits = false;
                 }
             }
         }
@@ -362,7 +380,7 @@ public final class FacePreparation {
                     }
                     region.dirty = false;
                     try {
-                        region.triangulate(!region.sharp);
+                        region.triangulate(!region.sharp && region.refinements < MOST_REFINEMENTS);
                     } catch (RuntimeException refinementFailed) {
                         // Tinfour's refiner fails on some small regions (a lone triangle whose
                         // interpolation walk finds no edge): the region is then triangulated
@@ -408,8 +426,8 @@ public final class FacePreparation {
                         if (kind == CORNER) {
                             ids[c] = corner(soup, vertexId, (int) key);
                         } else if (kind == SPLIT) {
-                            int e = (int) ((key >>> 24) & 0xFFFFFFFFL);
-                            int i = (int) (key & 0xFFFFFF);
+                            int e = splitEdge(key);
+                            int i = splitIndex(key);
                             if (splitId[e] == null) {
                                 splitId[e] = new int[splits[e].length];
                                 Arrays.fill(splitId[e], -1);
@@ -483,6 +501,18 @@ public final class FacePreparation {
 
         static long splitKey(int e, int i) {
             return ((long) SPLIT << 56) | ((long) e << 24) | i;
+        }
+
+        static boolean isSplitKey(long key) {
+            return (int) (key >>> 56) == SPLIT;
+        }
+
+        static int splitEdge(long key) {
+            return (int) ((key >>> 24) & 0xFFFFFFFFL);
+        }
+
+        static int splitIndex(long key) {
+            return (int) (key & 0xFFFFFF);
         }
 
         static long insideKey(int i) {

@@ -59,6 +59,13 @@ final class PlanarRegion {
     boolean sharp;
     boolean prepare;
     boolean dirty;
+    /**
+     * Whether the region was triangulated again for the points its own refinement put on its
+     * boundary, since a neighbour last gave it one: once is enough ({@link #triangulate}).
+     */
+    boolean triangulatedForOwnSplits;
+    /** How many times the region was refined ({@link FacePreparation#MOST_REFINEMENTS}). */
+    int refinements;
     /** The triangles made, three corner keys each, and the points inside, x, y, z interleaved. */
     long[] triangles = new long[0];
     double[] interior = new double[0];
@@ -337,6 +344,7 @@ final class PlanarRegion {
             throw new FacePreparation.Unprepared("region " + index + " has no area to triangulate");
         }
         if (refine) {
+            refinements++;
             RuppertRefiner refiner = new RuppertRefiner(tin, FacePreparation.TARGET_ANGLE, FacePreparation.AREA_FLOOR);
             int boundaryPoints = points.size();
             // Each step inserts a point; counting steps, not the TIN's vertices, which Tinfour counts by a walk.
@@ -348,6 +356,10 @@ final class PlanarRegion {
         List<double[]> inside = new ArrayList<>();
         Map<Vertex, Long> made = new IdentityHashMap<>();
         List<Long> triangleKeys = new ArrayList<>();
+        int splitsBefore = splitCount(taken.keySet());
+        // Each corner's place along its edge where it splits one (NaN where not), for renumberSplits.
+        List<Double> splitPlaces = new ArrayList<>();
+        Map<Vertex, Double> madePlace = new IdentityHashMap<>();
         double[][] loop2d = loops2d(loops, points, taken);
         // Points the refinement put on the boundary end constrained edges: only those are looked for along it.
         Map<Vertex, Boolean> onBorder = new IdentityHashMap<>();
@@ -376,18 +388,32 @@ final class PlanarRegion {
             for (Vertex corner : corners) {
                 Integer at = known.get(corner);
                 if (at != null) {
-                    triangleKeys.add(keys.get(at));
+                    long key = keys.get(at);
+                    triangleKeys.add(key);
+                    splitPlaces.add(placeOnEdge(key, taken));
                     continue;
                 }
                 Long key = made.get(corner);
                 if (key == null) {
                     key = newPoint(corner, onBorder.containsKey(corner), loops, loop2d, taken, inside, o, e1, e2, scale);
                     made.put(corner, key);
+                    madePlace.put(corner, placeOnEdge(key, null));
                 }
                 triangleKeys.add(key);
+                splitPlaces.add(madePlace.get(corner));
             }
         }
         triangles = triangleKeys.stream().mapToLong(Long::longValue).toArray();
+        if (splitCount(taken.keySet()) > splitsBefore) {
+            renumberSplits(splitPlaces);
+            // Triangulated again once, with the new points as its own: the refinement then fits
+            // them. Not again for the points that run puts there: refined from its boundary, it
+            // has forgotten which points it added at a corner near the target angle, and halves
+            // the pieces there again every time (the shared capsule's 20.4° corners: two points a
+            // run, the pieces a millionth of the region, until Tinfour merged two of them).
+            dirty |= !triangulatedForOwnSplits;
+            triangulatedForOwnSplits = true;
+        }
         interior = new double[3 * inside.size()];
         for (int i = 0; i < inside.size(); i++) {
             System.arraycopy(inside.get(i), 0, interior, 3 * i, 3);
@@ -496,8 +522,44 @@ final class PlanarRegion {
         grown[now.length] = at;
         Arrays.sort(grown);
         splits[e] = grown;
-        run.markAcross(e);
-        dirty = true; // its keys of this edge's splits moved: triangulated again with the split as a point of its own
+        run.markAcross(e, this);
         return FacePreparation.Run.splitKey(e, Arrays.binarySearch(grown, at));
+    }
+
+    /** How many splits the edges hold now. */
+    private int splitCount(Iterable<Integer> edges) {
+        int count = 0;
+        for (int e : edges) {
+            count += splits[e] == null ? 0 : splits[e].length;
+        }
+        return count;
+    }
+
+    /**
+     * The parameter along its edge of the split a corner key names, as the key was made: from the
+     * splits this run took ({@code taken}), or from the edge's splits now where null; NaN where
+     * the key names no split.
+     */
+    private double placeOnEdge(long key, Map<Integer, double[]> taken) {
+        if (!FacePreparation.Run.isSplitKey(key)) {
+            return Double.NaN;
+        }
+        int e = FacePreparation.Run.splitEdge(key);
+        return (taken != null ? taken.get(e) : splits[e])[FacePreparation.Run.splitIndex(key)];
+    }
+
+    /**
+     * Renumbers the split corners of the triangles made, from their places along their edges
+     * ({@code places}, one a corner): a split this run added to an edge moved the numbers of
+     * those after it.
+     */
+    private void renumberSplits(List<Double> places) {
+        for (int k = 0; k < triangles.length; k++) {
+            double place = places.get(k);
+            if (!Double.isNaN(place)) {
+                int e = FacePreparation.Run.splitEdge(triangles[k]);
+                triangles[k] = FacePreparation.Run.splitKey(e, Arrays.binarySearch(splits[e], place));
+            }
+        }
     }
 }

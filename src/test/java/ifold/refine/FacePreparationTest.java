@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import ifold.geom.Triangles;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
 import ifold.mesh.PolygonSoup;
@@ -191,6 +192,67 @@ class FacePreparationTest {
         assertSame(box, result.mesh());
         assertNotNull(result.kept());
         assertTrue(result.kept().contains("too thin"), result.kept());
+    }
+
+    /** A prism of height {@code height} over the triangle (0, 0), (1, 0) turned {@code degrees} about the origin and scaled by {@code ratio}. */
+    static HalfedgeMesh wedge(double degrees, double ratio, double height) throws Exception {
+        double a = Math.toRadians(degrees);
+        double[][] corners = {{0, 0}, {1, 0}, {ratio * Math.cos(a), ratio * Math.sin(a)}};
+        PolygonSoup soup = new PolygonSoup();
+        for (int z = 0; z < 2; z++) {
+            for (double[] c : corners) {
+                soup.addVertex(c[0], c[1], z * height);
+            }
+        }
+        soup.addTriangle(0, 2, 1);
+        soup.addTriangle(3, 4, 5);
+        for (int k = 0; k < 3; k++) {
+            soup.addFace(new int[] {k, (k + 1) % 3, 3 + (k + 1) % 3, 3 + k}, 4, 0);
+        }
+        return build(soup);
+    }
+
+    @Test
+    void aCornerJustWiderThanTheTargetIsNotHalvedAgainAndAgain() throws Exception {
+        // The ends' 20.4° corners need nothing, but the thin sides cut the ends' edges, 0.7 and 1
+        // long, into pieces of other lengths; each end's refinement then split both edges at
+        // that corner, and, triangulated again for those points, split them again, halving the
+        // pieces there every time until Tinfour merged two ("region 0 (face 0) could not be
+        // triangulated, even from its boundary alone"), as the shared capsule's 20.4° corners did.
+        HalfedgeMesh wedge = wedge(20.4, 0.7, 0.2);
+        assertEquals(20.4, Math.toDegrees(Triangles.minAngle(wedge.positionArray(), 0, 1, 2)), 1e-9, "setup: the ends' smallest corner");
+        FacePreparation.Result result = FacePreparation.prepare(wedge);
+        assertNull(result.kept());
+        assertEquals(5, result.prepared(), "the sides, and the ends for the points on their edges");
+        SameSurface.assertSameSurface(wedge, result.mesh());
+        assertTrue(result.minAngleAfter() >= FacePreparation.TARGET_ANGLE, "smallest angle " + result.minAngleAfter());
+    }
+
+    @Test
+    void twoRegionsDoNotCutEachOtherForeverAtASharedCorner() throws Exception {
+        // A slanted frustum over a scalene triangle (found among random ones): refined from its
+        // boundary each time a neighbour gave it a point, each side gave the next one a point
+        // back at their shared corners, round after round, until Tinfour merged two ("region 4
+        // (face 6) could not be triangulated"). Each region is refined three times at most.
+        PolygonSoup soup = new PolygonSoup();
+        double[][] corners = {{0.7277428584784392, 0.34413468011841397, 0}, {0.9251277183430583, 0.5575746990939552, 0},
+            {0.16812460851228095, 0.7125184032915431, 0}, {0.18149909513999582, 0.4986947051575154, 0.20285017868816976},
+            {0.282511124645883, 0.6079229889746325, 0.20285017868816976}, {-0.10488647271148825, 0.6872156866561716, 0.20285017868816976}};
+        for (double[] c : corners) {
+            soup.addVertex(c[0], c[1], c[2]);
+        }
+        soup.addTriangle(0, 2, 1);
+        soup.addTriangle(3, 4, 5);
+        for (int k = 0; k < 3; k++) {
+            soup.addTriangle(k, (k + 1) % 3, 3 + (k + 1) % 3);
+            soup.addTriangle(k, 3 + (k + 1) % 3, 3 + k);
+        }
+        HalfedgeMesh frustum = build(soup);
+        FacePreparation.Result result = FacePreparation.prepare(frustum);
+        assertEquals(5, result.regions(), "setup: two ends and three trapezoids");
+        assertNull(result.kept());
+        SameSurface.assertSameSurface(frustum, result.mesh());
+        assertTrue(result.minAngleAfter() > result.minAngleBefore(), result.minAngleBefore() + " -> " + result.minAngleAfter());
     }
 
     @Test
