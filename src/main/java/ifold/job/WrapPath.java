@@ -10,6 +10,7 @@ import ifold.refine.RefinementClaims;
 import ifold.wrap.HingeTour;
 import ifold.wrap.Wrap;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 
 /**
@@ -138,12 +139,28 @@ public record WrapPath(FacePreparation.Result preparation, HamiltonianRefinement
     }
 
     /**
-     * Why the model's faces were kept as they are although some needed preparing, in one line
-     * naming {@code model}; null where they were prepared or needed none.
+     * Why the model's faces were kept as they are although some needed preparing, or which
+     * were kept while the others were prepared, in one line naming {@code model}; null where
+     * they were all prepared or needed none.
      */
     public String keptNote(String model) {
-        return preparation != null && preparation.kept() != null ? model + ": faces kept as they are, not prepared: " + preparation.kept() : null;
+        if (preparation == null) {
+            return null;
+        }
+        if (preparation.kept() != null) {
+            return model + ": faces kept as they are, not prepared: " + preparation.kept();
+        }
+        List<String> kept = preparation.keptRegions();
+        if (kept.isEmpty()) {
+            return null;
+        }
+        int shown = Math.min(kept.size(), KEPT_REGIONS_NAMED);
+        return model + ": faces kept as they are in " + kept.size() + (kept.size() == 1 ? " place" : " places") + ", the others prepared: "
+                + String.join("; ", kept.subList(0, shown)) + (kept.size() > shown ? "; and " + (kept.size() - shown) + " more" : "");
     }
+
+    /** The most regions kept as they are that {@link #keptNote} names, one line's worth. */
+    private static final int KEPT_REGIONS_NAMED = 3;
 
     /**
      * The report's figures of the path: for the zig-zag, the preparation's regions, triangles, and
@@ -176,6 +193,9 @@ public record WrapPath(FacePreparation.Result preparation, HamiltonianRefinement
         figures.put("minAngles", angles);
         if (preparation.kept() != null) {
             figures.put("kept", preparation.kept());
+        }
+        if (!preparation.keptRegions().isEmpty()) {
+            figures.put("keptRegions", preparation.keptRegions());
         }
         return figures;
     }

@@ -20,6 +20,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
+import java.util.TreeMap;
 import org.tinfour.common.IConstraint;
 import org.tinfour.common.IQuadEdge;
 import org.tinfour.common.PolygonConstraint;
@@ -62,7 +63,11 @@ import org.tinfour.standard.IncrementalTin;
  * another topology or area), or come out worse (a smallest angle under the model's, fifty times
  * its triangles), keeps the model's own triangles, and the result says why. A region that is
  * not a polygon with holes (it touches itself at a corner) is left as it is, like a sharp one;
- * a refinement stopped at its limit of points keeps what it made.
+ * a refinement stopped at its limit of points keeps what it made. A region that cannot be
+ * triangulated, or whose triangles would have a corner sharper than the model's sharpest (a
+ * sliver triangulated with the points its neighbours cut its edges at), keeps its own triangles
+ * on its own: the preparation runs again with its edges left uncut, the others prepared, and
+ * the result names it ({@link Result#keptRegions}).
  */
 public final class FacePreparation {
     /** The smallest angle the preparation aims for, in degrees (Ruppert's algorithm is proven to about 20.7°). */
@@ -85,6 +90,12 @@ public final class FacePreparation {
 
     /** The most times the regions may be triangulated, over the regions to prepare: a cascade of splits from region to region stops there. */
     private static final int ROUNDS = 20;
+
+    /**
+     * The most regions kept as they are while the others are prepared: each failure runs the
+     * preparation again with the regions found so far kept.
+     */
+    private static final int MOST_KEPT_REGIONS = 64;
 
     /**
      * The most times one region is refined; after that it is triangulated from its boundary
@@ -111,9 +122,11 @@ public final class FacePreparation {
      * @param centred the model with the regions fanned from their centre and no other change: its
      *     own triangles, as far as a wrap is concerned (the model itself where none was)
      * @param centredRegions the regions fanned from their centre
+     * @param keptRegions the regions kept as they are while the others were prepared, each in
+     *     words ("face 72: ..."); empty where none was
      */
     public record Result(HalfedgeMesh mesh, int regions, int prepared, int trianglesBefore, double minAngleBefore,
-            double minAngleAfter, String kept, HalfedgeMesh centred, int centredRegions) {
+            double minAngleAfter, String kept, HalfedgeMesh centred, int centredRegions, List<String> keptRegions) {
         public int trianglesAfter() {
             return mesh.faceCount();
         }
@@ -139,7 +152,7 @@ public final class FacePreparation {
         }
         Result result = new Run(centred).run();
         return new Result(result.mesh(), result.regions(), result.prepared(), mesh.faceCount(), RefinementClaims.minAngleDegrees(mesh),
-                result.minAngleAfter(), result.kept(), centred, centredRegions);
+                result.minAngleAfter(), result.kept(), centred, centredRegions, result.keptRegions());
     }
 
     /** One preparation of one mesh. */
@@ -153,9 +166,16 @@ public final class FacePreparation {
         private final List<PlanarRegion> regions = new ArrayList<>();
         /** The points splitting each edge of the mesh, as parameters t in (0, 1) from fromVertex(2e) to toVertex(2e); null for none. */
         final double[][] splits;
+        /** The regions kept as they are, by index, and why in words: found by an earlier run of the same mesh. */
+        private final Map<Integer, String> keptRegions;
 
         Run(HalfedgeMesh mesh) {
+            this(mesh, Map.of());
+        }
+
+        Run(HalfedgeMesh mesh, Map<Integer, String> keptRegions) {
             this.mesh = mesh;
+            this.keptRegions = keptRegions;
             this.xyz = mesh.positionArray();
             int faces = mesh.faceCount();
             normal = new double[3 * faces];
@@ -184,6 +204,11 @@ public final class FacePreparation {
             if (regions.isEmpty()) {
                 growRegions();
             }
+            for (Map.Entry<Integer, String> kept : keptRegions.entrySet()) {
+                PlanarRegion region = regions.get(kept.getKey());
+                region.keptBecause = kept.getValue();
+                region.sharp = true; // its edges not cut before the triangulation
+            }
             List<PlanarRegion> toPrepare = new ArrayList<>();
             for (PlanarRegion region : regions) {
                 if (region.minAngle < Math.toRadians(TARGET_ANGLE) && !region.sharp) {
@@ -196,17 +221,21 @@ public final class FacePreparation {
                 }
             }
             if (toPrepare.isEmpty()) {
-                return new Result(mesh, regions.size(), 0, mesh.faceCount(), before, before, null, mesh, 0);
+                return new Result(mesh, regions.size(), 0, mesh.faceCount(), before, before, null, mesh, 0, List.of());
             }
             try {
                 for (PlanarRegion region : toPrepare) {
                     region.prepare = true;
                 }
                 splitBoundaries(toPrepare);
-                triangulateUntilAgreed();
+                Map<Integer, String> failed = triangulateUntilAgreed();
+                failed.putAll(sharperThanTheModel(before));
+                if (!failed.isEmpty()) {
+                    return again(failed);
+                }
                 HalfedgeMesh prepared = assemble();
                 double after = RefinementClaims.minAngleDegrees(prepared);
-                if (after < before) {
+                if (sharperThan(after, before)) {
                     throw new Unprepared(String.format(Locale.ROOT, "the prepared triangles' smallest angle, %.3g degrees, is "
                             + "under the model's own %.3g (a feature thinner than its faces)", after, before));
                 }
@@ -218,10 +247,77 @@ public final class FacePreparation {
                 for (PlanarRegion region : regions) {
                     count += region.prepare ? 1 : 0;
                 }
-                return new Result(prepared, regions.size(), count, mesh.faceCount(), before, after, null, mesh, 0);
+                return new Result(prepared, regions.size(), count, mesh.faceCount(), before, after, null, mesh, 0,
+                        List.copyOf(keptRegions.values()));
             } catch (Unprepared e) {
-                return new Result(mesh, regions.size(), 0, mesh.faceCount(), before, before, e.getMessage(), mesh, 0);
+                return new Result(mesh, regions.size(), 0, mesh.faceCount(), before, before, e.getMessage(), mesh, 0, List.of());
             }
+        }
+
+        /**
+         * The preparation run again from the start with the regions that failed in this run kept
+         * as they are, their edges left uncut: a region across from one that failed has already
+         * taken the points its refinement put there.
+         */
+        private Result again(Map<Integer, String> failed) throws Unprepared {
+            Map<Integer, String> kept = new TreeMap<>(keptRegions);
+            kept.putAll(failed);
+            if (kept.size() > MOST_KEPT_REGIONS || kept.size() == keptRegions.size()) {
+                throw new Unprepared(kept.size() + " regions could not be prepared, among them " + failed.values().iterator().next());
+            }
+            return new Run(mesh, kept).run();
+        }
+
+        /**
+         * The prepared regions whose triangles have a corner sharper than the model's sharpest
+         * ({@code before}, in degrees), and why: those the prepared surface would be worse by (a
+         * sliver triangulated again with the points its neighbours cut its edges at).
+         */
+        private Map<Integer, String> sharperThanTheModel(double before) {
+            Map<Integer, String> sharper = new HashMap<>();
+            double[] corners = new double[9];
+            for (PlanarRegion region : regions) {
+                if (!region.prepare || region.keptBecause != null) {
+                    continue;
+                }
+                double sharpest = Math.PI;
+                for (int k = 0; k < region.triangles.length; k += 3) {
+                    for (int c = 0; c < 3; c++) {
+                        System.arraycopy(position(region, region.triangles[k + c]), 0, corners, 3 * c, 3);
+                    }
+                    sharpest = Math.min(sharpest, Triangles.minAngle(corners, 0, 1, 2));
+                }
+                if (sharperThan(Math.toDegrees(sharpest), before)) {
+                    sharper.put(region.index, region.describe() + String.format(Locale.ROOT, ": triangulated again with the points its "
+                            + "neighbours cut its edges at, it would have a corner of %.3g degrees, sharper than the model's sharpest, %.3g",
+                            Math.toDegrees(sharpest), before));
+                }
+            }
+            return sharper;
+        }
+
+        /** Whether {@code degrees} is sharper than {@code before} by more than rounding: a sliver triangulated again from its own corners is no sharper. */
+        private static boolean sharperThan(double degrees, double before) {
+            return degrees < before * (1 - Tolerance.RELATIVE_EQUALITY);
+        }
+
+        /** The point a corner key of {@code region} names. */
+        private double[] position(PlanarRegion region, long key) {
+            int kind = (int) (key >>> 56);
+            if (kind == CORNER) {
+                int v = (int) key;
+                return new double[] {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]};
+            }
+            if (kind == SPLIT) {
+                return pointOnEdge(splitEdge(key), splits[splitEdge(key)][splitIndex(key)]);
+            }
+            int i = (int) (key & 0xFFFFFFFFL);
+            return Arrays.copyOfRange(region.interior, 3 * i, 3 * i + 3);
+        }
+
+        /** Why region r keeps its triangles while the others are prepared; null where it may be prepared. */
+        String keptBecause(int r) {
+            return regions.get(r).keptBecause;
         }
 
         /** Fans from its centre each region that asks for it ({@link PlanarRegion#fanFromCentre}), to be assembled; how many. */
@@ -349,7 +445,7 @@ public final class FacePreparation {
         void markAcross(int e, PlanarRegion splitter) {
             for (int side = 0; side < 2; side++) {
                 int f = mesh.face(HalfedgeMesh.halfedgeOfEdge(e, side));
-                if (f >= 0 && regions.get(regionOf[f]) != splitter) {
+                if (f >= 0 && regions.get(regionOf[f]) != splitter && regions.get(regionOf[f]).keptBecause == null) {
                     PlanarRegion region = regions.get(regionOf[f]);
                     region.prepare = true;
                     region.dirty = true;
@@ -358,7 +454,9 @@ public final class FacePreparation {
             }
         }
 
-        private void triangulateUntilAgreed() throws Unprepared {
+        /** Triangulates the regions to prepare until they agree on their shared edges; the regions that could not be triangulated, and why. */
+        private Map<Integer, String> triangulateUntilAgreed() throws Unprepared {
+            Map<Integer, String> failed = new HashMap<>();
             int prepared = 0;
             for (PlanarRegion region : regions) {
                 if (region.prepare) {
@@ -390,13 +488,18 @@ public final class FacePreparation {
                         } catch (RuntimeException e) {
                             // The refiner's own words name its internals ("Cannot invoke
                             // Vertex.getX() because v is null"), which tell a user nothing.
-                            throw new Unprepared("region " + region.index + " (face " + region.seed + ") could not be"
-                                    + " triangulated, even from its boundary alone");
+                            failed.put(region.index, region.describe() + ": " + (e instanceof PlanarRegion.CutsAKeptRegion
+                                    ? "its triangles would cut the edge of a face kept as it is beside it"
+                                    : "its outline of " + region.outlinePoints() + " points (its corners and those its neighbours cut its "
+                                            + "edges at) could not be triangulated"));
+                            region.keptBecause = failed.get(region.index); // this run is given up: the others go on, to find more
+                            region.prepare = false;
                         }
                     }
                     changed = true;
                 }
             }
+            return failed;
         }
 
         /** The prepared mesh: the kept regions' triangles and the new ones, over the vertices they use. */

@@ -66,6 +66,8 @@ final class PlanarRegion {
     boolean triangulatedForOwnSplits;
     /** How many times the region was refined ({@link FacePreparation#MOST_REFINEMENTS}). */
     int refinements;
+    /** Why the region keeps its triangles while the others are prepared, in words; null where it may be prepared. */
+    String keptBecause;
     /** The triangles made, three corner keys each, and the points inside, x, y, z interleaved. */
     long[] triangles = new long[0];
     double[] interior = new double[0];
@@ -504,6 +506,10 @@ final class PlanarRegion {
     /** A split of the edge of halfedge h, at fraction s of its k-th piece along h between the splits t this run took. */
     private long addSplit(int h, int k, double[] t, double s) {
         int e = HalfedgeMesh.edge(h);
+        int across = mesh.face(HalfedgeMesh.twin(h));
+        if (across >= 0 && run.keptBecause(regionOf[across]) != null) {
+            throw new CutsAKeptRegion();
+        }
         boolean forward = h == HalfedgeMesh.halfedgeOfEdge(e, 0);
         int pieces = t.length + 1;
         // The piece's ends as parameters along the edge's first halfedge.
@@ -524,6 +530,33 @@ final class PlanarRegion {
         splits[e] = grown;
         run.markAcross(e, this);
         return FacePreparation.Run.splitKey(e, Arrays.binarySearch(grown, at));
+    }
+
+    /**
+     * The refinement put a point on the edge of a region kept as it is, whose triangles cannot
+     * take it: the region is then triangulated from its boundary alone.
+     */
+    static final class CutsAKeptRegion extends RuntimeException {
+        private static final long serialVersionUID = 1L;
+
+        CutsAKeptRegion() {
+            super(null, null, false, false);
+        }
+    }
+
+    /** The region in words, for a user: its seed face, and how many coplanar faces with it. */
+    String describe() {
+        return "face " + seed + (faces.size() > 1 ? " (with " + (faces.size() - 1) + " coplanar neighbour" + (faces.size() > 2 ? "s" : "") + ")" : "");
+    }
+
+    /** How many points its outline has: its boundary's corners and the splits of its edges. */
+    int outlinePoints() {
+        int count = 0;
+        for (int h : boundary()) {
+            int e = HalfedgeMesh.edge(h);
+            count += 1 + (splits[e] == null ? 0 : splits[e].length);
+        }
+        return count;
     }
 
     /** How many splits the edges hold now. */

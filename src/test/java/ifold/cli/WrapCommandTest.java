@@ -258,14 +258,16 @@ class WrapCommandTest {
         assertFalse(Files.exists(obj), "no OBJ after a failure");
     }
 
-    /** Why the model's faces are kept as they are is said in words, not in the library's exception. */
+    /** The faces kept as they are, and why, are said in words, not in the library's exception. */
     @Test
     void facesKeptAsTheyAreSayWhyInWords() throws Exception {
         Path mpi = ifold.testing.SharedMeshes.ROOT.resolve("valid/cgal_mpi.off");
         org.junit.jupiter.api.Assumptions.assumeTrue(Files.isRegularFile(mpi), "no shared meshes");
         CliTest.Run run = CliTest.run("wrap", mpi.toString(), "--no-view");
-        // Its sharp faces, triangulated again with the points their neighbours cut their edges at, are sharper still.
-        assertTrue(run.err().contains("faces kept as they are, not prepared: the prepared triangles' smallest angle"), run.err());
+        // Two sharp faces, triangulated again with the points their neighbours cut their edges
+        // at, would be sharper still: they keep their triangles, the others are prepared.
+        assertTrue(run.err().contains("faces kept as they are in 2 places, the others prepared: face "), run.err());
+        assertTrue(run.err().contains("sharper than the model's sharpest"), run.err());
         assertFalse(run.err().contains("Exception") || run.err().contains("tinfour"), run.err());
     }
 

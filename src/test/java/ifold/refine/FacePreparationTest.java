@@ -234,10 +234,20 @@ class FacePreparationTest {
         // boundary each time a neighbour gave it a point, each side gave the next one a point
         // back at their shared corners, round after round, until Tinfour merged two ("region 4
         // (face 6) could not be triangulated"). Each region is refined three times at most.
+        HalfedgeMesh frustum = frustum(new double[][] {{0.7277428584784392, 0.34413468011841397, 0},
+            {0.9251277183430583, 0.5575746990939552, 0}, {0.16812460851228095, 0.7125184032915431, 0},
+            {0.18149909513999582, 0.4986947051575154, 0.20285017868816976}, {0.282511124645883, 0.6079229889746325, 0.20285017868816976},
+            {-0.10488647271148825, 0.6872156866561716, 0.20285017868816976}});
+        FacePreparation.Result result = FacePreparation.prepare(frustum);
+        assertEquals(5, result.regions(), "setup: two ends and three trapezoids");
+        assertNull(result.kept());
+        SameSurface.assertSameSurface(frustum, result.mesh());
+        assertTrue(result.minAngleAfter() > result.minAngleBefore(), result.minAngleBefore() + " -> " + result.minAngleAfter());
+    }
+
+    /** A frustum of {@code corners}, three at its foot and three at its head, its sides cut in two from the foot's corners. */
+    private static HalfedgeMesh frustum(double[][] corners) throws Exception {
         PolygonSoup soup = new PolygonSoup();
-        double[][] corners = {{0.7277428584784392, 0.34413468011841397, 0}, {0.9251277183430583, 0.5575746990939552, 0},
-            {0.16812460851228095, 0.7125184032915431, 0}, {0.18149909513999582, 0.4986947051575154, 0.20285017868816976},
-            {0.282511124645883, 0.6079229889746325, 0.20285017868816976}, {-0.10488647271148825, 0.6872156866561716, 0.20285017868816976}};
         for (double[] c : corners) {
             soup.addVertex(c[0], c[1], c[2]);
         }
@@ -247,12 +257,43 @@ class FacePreparationTest {
             soup.addTriangle(k, (k + 1) % 3, 3 + (k + 1) % 3);
             soup.addTriangle(k, 3 + (k + 1) % 3, 3 + k);
         }
-        HalfedgeMesh frustum = build(soup);
+        return build(soup);
+    }
+
+    @Test
+    void aRegionThatWouldComeOutSharperIsKeptAndTheOthersArePrepared() throws Exception {
+        // A slanted frustum (found among random ones) whose head, a sliver, triangulated again
+        // with the points its thin sides cut its edges at, had a corner of 3.73° against the
+        // model's 6.17°: the whole model kept its triangles. The head alone keeps them now.
+        HalfedgeMesh frustum = frustum(new double[][] {{0.7324906626029803, 0.35828168671931826, 0},
+            {0.942361279530953, 0.2516763643231372, 0}, {0.30396468915119246, 0.8939390473582698, 0},
+            {0.2314775970764285, 0.1913669771622466, 0.3947179900968223}, {0.40995651580041453, 0.10070729859455892, 0.3947179900968223},
+            {-0.1329509899566358, 0.6469026206591886, 0.3947179900968223}});
         FacePreparation.Result result = FacePreparation.prepare(frustum);
-        assertEquals(5, result.regions(), "setup: two ends and three trapezoids");
         assertNull(result.kept());
+        assertEquals(1, result.keptRegions().size(), result.keptRegions().toString());
+        assertTrue(result.keptRegions().get(0).startsWith("face 1: "), "the head: " + result.keptRegions());
+        assertTrue(result.keptRegions().get(0).contains("sharper than the model's sharpest"), result.keptRegions().get(0));
+        assertEquals(4, result.prepared(), "the foot and the three sides");
         SameSurface.assertSameSurface(frustum, result.mesh());
-        assertTrue(result.minAngleAfter() > result.minAngleBefore(), result.minAngleBefore() + " -> " + result.minAngleAfter());
+        assertTrue(result.minAngleAfter() >= result.minAngleBefore(), result.minAngleBefore() + " -> " + result.minAngleAfter());
+        // The head's own triangle, its edges uncut.
+        double[] head = {0.2314775970764285, 0.1913669771622466, 0.3947179900968223};
+        assertTrue(hasTriangleAt(result.mesh(), head), "the head's triangle kept");
+    }
+
+    /** Whether a triangle of {@code mesh} has a corner at {@code point} and its other two at the head of the frustum (z the same), no point between. */
+    private static boolean hasTriangleAt(HalfedgeMesh mesh, double[] point) {
+        int inHead = 0;
+        for (int f = 0; f < mesh.faceCount(); f++) {
+            int h = mesh.faceHalfedge(f);
+            boolean allHead = true;
+            for (int c = 0; c < 3; c++, h = mesh.next(h)) {
+                allHead &= mesh.z(mesh.fromVertex(h)) == point[2];
+            }
+            inHead += allHead ? 1 : 0;
+        }
+        return inHead == 1;
     }
 
     @Test
@@ -267,6 +308,28 @@ class FacePreparationTest {
             SameSurface.assertSameSurface(mesh, result.mesh());
             assertTrue(result.minAngleAfter() >= Math.min(FacePreparation.TARGET_ANGLE, result.minAngleBefore()),
                     name + ": smallest angle " + result.minAngleBefore() + " -> " + result.minAngleAfter());
+        }
+    }
+
+    @Test
+    void theSharedModelsWhoseRegionsCouldNotBeTriangulatedArePrepared() throws Exception {
+        // Each kept its triangles whole: "region 68 (face 72) could not be triangulated, even
+        // from its boundary alone" (mpi), region 8652 (face 8924) (the capsule), region 1055
+        // (face 1169) (the rabbit). Now a few slivers keep theirs, the rest prepared.
+        assumeTrue(SharedMeshes.present(), "../shared/meshes is not here");
+        for (String name : List.of("cgal_mpi.off", "trimesh_capsule.obj", "trimesh_rabbit.obj")) {
+            Path file = SharedMeshes.ROOT.resolve("valid").resolve(name);
+            assumeTrue(Files.exists(file), file + " is not here");
+            HalfedgeMesh mesh = build(MeshReaders.read(file));
+            FacePreparation.Result result = FacePreparation.prepare(mesh);
+            assertNull(result.kept(), name);
+            assertTrue(result.prepared() > 0, name);
+            assertTrue(result.keptRegions().size() < result.prepared(), name + ": " + result.keptRegions());
+            for (String kept : result.keptRegions()) {
+                assertTrue(kept.startsWith("face ") && kept.contains("sharper than the model's sharpest"), name + ": " + kept);
+            }
+            SameSurface.assertSameSurface(mesh, result.mesh());
+            assertTrue(result.minAngleAfter() >= result.minAngleBefore(), name + ": " + result.minAngleBefore() + " -> " + result.minAngleAfter());
         }
     }
 
