@@ -416,6 +416,7 @@ final class PlanarRegion {
             dirty |= !triangulatedForOwnSplits;
             triangulatedForOwnSplits = true;
         }
+        dropFlatTriangles(taken.keySet());
         interior = new double[3 * inside.size()];
         for (int i = 0; i < inside.size(); i++) {
             System.arraycopy(inside.get(i), 0, interior, 3 * i, 3);
@@ -557,6 +558,96 @@ final class PlanarRegion {
             count += 1 + (splits[e] == null ? 0 : splits[e].length);
         }
         return count;
+    }
+
+    /**
+     * Drops the triangles whose three corners lie on one edge of the region's boundary, and fans
+     * each triangle whose side then runs along such an edge past points of it from its far
+     * corner to those points. Such a triangle is flat in space but not quite in the plane: the
+     * points of an edge, projected into the region's frame, stray from their line by a rounding,
+     * and Tinfour triangulated the slivers between them (the shared rabbit's face 1168: three
+     * on one edge, so that the whole region was kept as it is).
+     *
+     * @param edges the edges of the region's boundary
+     */
+    private void dropFlatTriangles(Iterable<Integer> edges) {
+        List<long[]> kept = new ArrayList<>();
+        for (int k = 0; k < triangles.length; k += 3) {
+            long[] triangle = {triangles[k], triangles[k + 1], triangles[k + 2]};
+            int e = edgeUnder(triangle[0], triangle[1], edges);
+            if (e < 0 || Double.isNaN(placeOn(e, triangle[2]))) {
+                kept.add(triangle);
+            }
+        }
+        if (kept.size() == triangles.length / 3) {
+            return;
+        }
+        List<long[]> fanned = new ArrayList<>();
+        while (!kept.isEmpty()) {
+            long[] triangle = kept.remove(kept.size() - 1);
+            boolean split = false;
+            for (int c = 0; c < 3 && !split; c++) {
+                long from = triangle[c];
+                long to = triangle[(c + 1) % 3];
+                long apex = triangle[(c + 2) % 3];
+                int e = edgeUnder(from, to, edges);
+                if (e < 0) {
+                    continue;
+                }
+                double a = placeOn(e, from);
+                double b = placeOn(e, to);
+                List<Long> between = new ArrayList<>();
+                double[] t = splits[e] == null ? new double[0] : splits[e];
+                for (int i = 0; i < t.length; i++) {
+                    if (t[i] > Math.min(a, b) && t[i] < Math.max(a, b)) {
+                        between.add(FacePreparation.Run.splitKey(e, i));
+                    }
+                }
+                if (between.isEmpty()) {
+                    continue;
+                }
+                if (a > b) {
+                    java.util.Collections.reverse(between);
+                }
+                // The points lie on the side between its ends: each piece keeps the triangle's orientation.
+                long previous = from;
+                for (long point : between) {
+                    kept.add(new long[] {previous, point, apex});
+                    previous = point;
+                }
+                kept.add(new long[] {previous, to, apex});
+                split = true;
+            }
+            if (!split) {
+                fanned.add(triangle);
+            }
+        }
+        triangles = new long[3 * fanned.size()];
+        for (int k = 0; k < fanned.size(); k++) {
+            System.arraycopy(fanned.get(k), 0, triangles, 3 * k, 3);
+        }
+    }
+
+    /** The edge of {@code edges} both corner keys lie on (a split of it, or one of its ends), or -1. */
+    private int edgeUnder(long a, long b, Iterable<Integer> edges) {
+        for (int e : edges) {
+            if (!Double.isNaN(placeOn(e, a)) && !Double.isNaN(placeOn(e, b))) {
+                return e;
+            }
+        }
+        return -1;
+    }
+
+    /** The parameter along edge e of the point a corner key names, from its first halfedge's start; NaN where it is not on e. */
+    private double placeOn(int e, long key) {
+        if (FacePreparation.Run.isSplitKey(key)) {
+            return FacePreparation.Run.splitEdge(key) == e ? splits[e][FacePreparation.Run.splitIndex(key)] : Double.NaN;
+        }
+        int h = HalfedgeMesh.halfedgeOfEdge(e, 0);
+        if (key == FacePreparation.Run.cornerKey(mesh.fromVertex(h))) {
+            return 0;
+        }
+        return key == FacePreparation.Run.cornerKey(mesh.toVertex(h)) ? 1 : Double.NaN;
     }
 
     /** How many splits the edges hold now. */

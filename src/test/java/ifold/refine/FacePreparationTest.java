@@ -330,6 +330,10 @@ class FacePreparationTest {
             }
             SameSurface.assertSameSurface(mesh, result.mesh());
             assertTrue(result.minAngleAfter() >= result.minAngleBefore(), name + ": " + result.minAngleBefore() + " -> " + result.minAngleAfter());
+            if (name.startsWith("trimesh_rabbit")) {
+                // Its faces 1136 and 1168 had flat triangles along an edge (3.80° and 0°): kept before.
+                assertEquals(List.of(), result.keptRegions(), name);
+            }
         }
     }
 
