@@ -92,10 +92,10 @@ public final class FacePreparation {
     private static final int ROUNDS = 20;
 
     /**
-     * The most regions kept as they are while the others are prepared: each failure runs the
-     * preparation again with the regions found so far kept.
+     * The most runs of the preparation: a run in which regions fail is run again with them kept
+     * as they are (the shared capsule's 32 slivers, mpi's 2: one run more each).
      */
-    private static final int MOST_KEPT_REGIONS = 64;
+    private static final int MOST_RUNS = 8;
 
     /**
      * The most times one region is refined; after that it is triangulated from its boundary
@@ -166,16 +166,19 @@ public final class FacePreparation {
         private final List<PlanarRegion> regions = new ArrayList<>();
         /** The points splitting each edge of the mesh, as parameters t in (0, 1) from fromVertex(2e) to toVertex(2e); null for none. */
         final double[][] splits;
-        /** The regions kept as they are, by index, and why in words: found by an earlier run of the same mesh. */
+        /** The regions kept as they are, by index, and why in words: found by the earlier runs of the same mesh. */
         private final Map<Integer, String> keptRegions;
+        /** How many runs of the same mesh came before this one. */
+        private final int earlierRuns;
 
         Run(HalfedgeMesh mesh) {
-            this(mesh, Map.of());
+            this(mesh, Map.of(), 0);
         }
 
-        Run(HalfedgeMesh mesh, Map<Integer, String> keptRegions) {
+        private Run(HalfedgeMesh mesh, Map<Integer, String> keptRegions, int earlierRuns) {
             this.mesh = mesh;
             this.keptRegions = keptRegions;
+            this.earlierRuns = earlierRuns;
             this.xyz = mesh.positionArray();
             int faces = mesh.faceCount();
             normal = new double[3 * faces];
@@ -262,10 +265,11 @@ public final class FacePreparation {
         private Result again(Map<Integer, String> failed) throws Unprepared {
             Map<Integer, String> kept = new TreeMap<>(keptRegions);
             kept.putAll(failed);
-            if (kept.size() > MOST_KEPT_REGIONS || kept.size() == keptRegions.size()) {
-                throw new Unprepared(kept.size() + " regions could not be prepared, among them " + failed.values().iterator().next());
+            if (earlierRuns + 1 >= MOST_RUNS) {
+                throw new Unprepared(kept.size() + " regions could not be prepared in " + MOST_RUNS + " runs, among them "
+                        + failed.values().iterator().next());
             }
-            return new Run(mesh, kept).run();
+            return new Run(mesh, kept, earlierRuns + 1).run();
         }
 
         /**
