@@ -9,7 +9,9 @@ import static ifold.wrap.Wrap.position;
 import ifold.geom.Tolerance;
 import ifold.mesh.IndexedPolygons;
 import ifold.refine.FacePreparation;
+import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.List;
 import java.util.Map;
 
 /**
@@ -20,7 +22,9 @@ import java.util.Map;
  * until it ends square through it ({@link StripFolding} folds it). Its corner lays 90°/Θ layers
  * there, Θ the vertex's angle sum, where a side of the strip tucked on each face lays 180°/θ on
  * each, θ the face's angle. These are the rules that decide where it is done and how far from the
- * apex it covers each face.
+ * apex it covers each face. The same roll ends the strip at a needle face's tip where the vertex
+ * is no spike ({@link #needleEnd}): the last pass runs along the needle's edge into the tip and
+ * covers the needle there, and the roll turns 90° over the wider faces beside it.
  */
 final class ApexRoll {
     private ApexRoll() {
@@ -54,6 +58,159 @@ final class ApexRoll {
             }
         }
         return LayerFloor.sharp(sum) && Math.toDegrees(inPlane) < FacePreparation.TARGET_ANGLE;
+    }
+
+    /**
+     * Whether the strip may end rolled round vertex v where the last path triangle, of corners
+     * {@code corners}, has its base from v to {@code other} and v is no true sharp vertex (angle
+     * sum 90° or more; a spike's apex is rolled from the triangle entered there,
+     * {@link #sharpStart}): the corner there of the triangle's plane (the triangles at v in that
+     * plane, a needle face's tip) under the preparation's target, and the base along that plane's
+     * edge, the triangle across it in another plane. The last pass, along the base into v, then
+     * covers the plane's whole width up to w / sin θ from v, θ that corner, and the roll turns
+     * the strip's end over the solid's edges at v through 90° without coming back to the plane.
+     * Tucked on the needle instead, a side of the strip passing its tip lays 180°/θ layers.
+     */
+    static boolean needleEnd(IndexedPolygons mesh, int[] corners, int v, int other) {
+        return !Double.isNaN(needleCorner(mesh, corners, v, other));
+    }
+
+    /** The needle's corner at v, in radians, where {@link #needleEnd} holds; NaN where it does not. */
+    static double needleCorner(IndexedPolygons mesh, int[] corners, int v, int other) {
+        int k = v == corners[0] ? 0 : v == corners[1] ? 1 : v == corners[2] ? 2 : -1;
+        if (k < 0 || other == v || Math.toDegrees(LayerFloor.angle(mesh, v, corners[(k + 1) % 3], corners[(k + 2) % 3])) >= FacePreparation.TARGET_ANGLE) {
+            return Double.NaN;
+        }
+        double[] normal = normal(mesh, corners[0], corners[1], corners[2]);
+        double sum = 0;
+        double inPlane = 0;
+        int across = 0;
+        // The faces at v, each its normal and its neighbours of v, for the knives' edges below.
+        List<double[]> normals = new ArrayList<>();
+        List<int[]> sides = new ArrayList<>();
+        for (int f = 0; f < mesh.faceCount(); f++) {
+            int n = mesh.faceSize(f);
+            boolean hasOther = false;
+            int at = -1;
+            for (int j = 0; j < n; j++) {
+                hasOther |= mesh.faceVertex(f, j) == other;
+                at = mesh.faceVertex(f, j) == v ? j : at;
+            }
+            if (at < 0) {
+                continue;
+            }
+            int after = mesh.faceVertex(f, (at + 1) % n);
+            int before = mesh.faceVertex(f, (at + n - 1) % n);
+            double angle = LayerFloor.angle(mesh, v, after, before);
+            sum += angle;
+            double[] faceNormal = normal(mesh, mesh.faceVertex(f, 0), mesh.faceVertex(f, 1), mesh.faceVertex(f, 2));
+            boolean coplanar = dot(normal, faceNormal) > 1 - Tolerance.RELATIVE_EQUALITY;
+            inPlane += coplanar ? angle : 0;
+            if (hasOther && !sameTriangle(mesh, f, corners)) {
+                across += coplanar ? 2 : 1;
+            }
+            normals.add(faceNormal);
+            sides.add(new int[] {after, before});
+        }
+        // No knife's edge at v, two faces nearly back to back, which the roll might have to cross
+        // (a tetrahedron with a needle face is a sliver with one, from the needle's tip to the tip
+        // of the needle across its short edge; knife below).
+        for (int a = 0; a < sides.size(); a++) {
+            for (int b = a + 1; b < sides.size(); b++) {
+                boolean shareEdge = sides.get(a)[0] == sides.get(b)[1] || sides.get(a)[1] == sides.get(b)[0];
+                if (shareEdge && backToBack(normals.get(a), normals.get(b))) {
+                    return Double.NaN;
+                }
+            }
+        }
+        return !LayerFloor.sharp(sum) && across == 1 && Math.toDegrees(inPlane) < FacePreparation.TARGET_ANGLE ? inPlane : Double.NaN;
+    }
+
+    /**
+     * Whether the edge between hosts a and b is a knife's: their faces meet at under the
+     * preparation's target angle, back to back within it.
+     */
+    private static boolean knife(IndexedPolygons mesh, HostPieces pieces, int a, int b) {
+        int[] ca = pieces.corners[a];
+        int[] cb = pieces.corners[b];
+        return backToBack(normal(mesh, ca[0], ca[1], ca[2]), normal(mesh, cb[0], cb[1], cb[2]));
+    }
+
+    /** Whether faces of unit normals a and b, sharing an edge, meet at under the preparation's target angle. */
+    private static boolean backToBack(double[] a, double[] b) {
+        return dot(a, b) < -Math.cos(Math.toRadians(FacePreparation.TARGET_ANGLE));
+    }
+
+    private static boolean sameTriangle(IndexedPolygons mesh, int f, int[] corners) {
+        if (mesh.faceSize(f) != 3) {
+            return false;
+        }
+        for (int j = 0; j < 3; j++) {
+            int c = mesh.faceVertex(f, j);
+            if (c != corners[0] && c != corners[1] && c != corners[2]) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /**
+     * How far from v the strip's end rolled round a needle's tip ({@link #needleEnd}) covers the
+     * needle's host, the last triangle's: its last pass, along the base (the host's edge) into v,
+     * covers the host's whole width to w / sin φ, φ the host's corner at v. The hosts the roll
+     * crosses after it have corners as wide as their faces' and keep their own paper at v; none
+     * is listed. Null where the base does not lie along the host's edge, or runs to the host's
+     * corner, or the roll would cross an edge with no host across or a knife's edge before it
+     * has turned 90°.
+     */
+    static Map<Integer, Reach> needleCoverage(IndexedPolygons mesh, PathPlan plan, HostPieces pieces, int v, int last, double w) {
+        double[] apex = position(mesh, v);
+        int other = plan.baseFrom[last] == v ? plan.baseTo[last] : plan.baseFrom[last];
+        double[] along = unit(sub(position(mesh, other), apex));
+        int host = pieces.hostOf[plan.first + last];
+        int[] cs = pieces.corners[host];
+        int ka = indexOf(cs, v);
+        if (ka < 0) {
+            return null;
+        }
+        int before = cs[(ka + cs.length - 1) % cs.length];
+        int after = cs[(ka + 1) % cs.length];
+        boolean alongBefore = dot(along, unit(sub(position(mesh, before), apex))) > 1 - Tolerance.RELATIVE_EQUALITY;
+        boolean alongAfter = dot(along, unit(sub(position(mesh, after), apex))) > 1 - Tolerance.RELATIVE_EQUALITY;
+        if (alongBefore == alongAfter) {
+            return null;
+        }
+        int out = alongBefore ? after : before;
+        // The base ending at the host's corner, the last pass begins with a fold beyond the host's
+        // edges there, tucked once the roll has laid it: a tuck through paper crossed into the next
+        // host tore it (a square pyramid's needle of 3°, its strip in two pieces in space).
+        if (other == (alongBefore ? before : after) || hostAcross(pieces, host, v, out) < 0) {
+            return null;
+        }
+        double phi = angle(along, sub(position(mesh, out), apex));
+        // The edges the roll crosses before it has turned 90°: none a knife's edge, whose faces
+        // lie nearly back to back. Thick paper bent round one stands out by its height over the
+        // tangent of half the edge's angle: tet15b's edge between its two near faces, 1.5°, put
+        // a cap of the roll 0.062 off the surface, 15 layers high there.
+        int across = host;
+        int from = out;
+        for (double at = phi; at < Math.PI / 2; ) {
+            int crossed = across;
+            across = hostAcross(pieces, across, v, from);
+            if (across < 0 || knife(mesh, pieces, crossed, across)) {
+                return null;
+            }
+            int[] hc = pieces.corners[across];
+            int k = indexOf(hc, v);
+            if (k < 0) {
+                return null;
+            }
+            int next = hc[(k + 1) % hc.length] == from ? hc[(k + hc.length - 1) % hc.length] : hc[(k + 1) % hc.length];
+            at += angle(sub(position(mesh, from), apex), sub(position(mesh, next), apex));
+            from = next;
+        }
+        // Entered by no crease: the roll leaves this host and turns 90° before it could come back.
+        return Map.of(host, new Reach(w / Math.sin(Math.min(Math.PI / 2, phi)), 0, out));
     }
 
     /** The unit normal of the triangle a, b, c of {@code mesh}. */

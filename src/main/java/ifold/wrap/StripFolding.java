@@ -256,7 +256,10 @@ final class StripFolding {
      * by tucks lays 180°/θ layers where a side of the strip passes a corner of θ (72 on the
      * shared spike's 2.5° faces, each face having one); rolled round the apex, over the solid's
      * edges there, the strip's end corner lays 90°/Θ, Θ the vertex's angle sum (12 on the spike),
-     * and the other triangles stop short of the apex where the roll covers their host.
+     * and the other triangles stop short of the apex where the roll covers their host. Else the
+     * end of the last triangle's base at a needle face's tip, where the vertex is no spike
+     * ({@link ApexRoll#needleEnd}, {@link ApexRoll#needleCoverage}): the roll covers the needle
+     * alone, whose other triangles stop short of the tip, the first among them.
      */
     private int rollApex() {
         if (plan.m < 2) {
@@ -264,11 +267,22 @@ final class StripFolding {
         }
         int v = plan.start[0];
         int last = plan.m - 1;
-        if (plan.baseFrom[last] != v && plan.baseTo[last] != v || !ApexRoll.sharpStart(mesh, plan.corners[0], v)) {
-            return -1;
+        if ((plan.baseFrom[last] == v || plan.baseTo[last] == v) && ApexRoll.sharpStart(mesh, plan.corners[0], v)) {
+            rollCovers = ApexRoll.coverage(mesh, plan, pieces, v, last, w);
+            return rollCovers == null ? -1 : v;
         }
-        rollCovers = ApexRoll.coverage(mesh, plan, pieces, v, last, w);
-        return rollCovers == null ? -1 : v;
+        // A needle's tip at a vertex that is no spike: the last pass runs along the needle's edge
+        // into it, and the roll covers the needle alone.
+        for (int end : new int[] {plan.baseFrom[last], plan.baseTo[last]}) {
+            int other = end == plan.baseFrom[last] ? plan.baseTo[last] : plan.baseFrom[last];
+            if (ApexRoll.needleEnd(mesh, plan.corners[last], end, other)) {
+                rollCovers = ApexRoll.needleCoverage(mesh, plan, pieces, end, last, w);
+                if (rollCovers != null) {
+                    return end;
+                }
+            }
+        }
+        return -1;
     }
 
     /**
@@ -292,7 +306,7 @@ final class StripFolding {
      * an edge at α to the base); 0 for any other triangle.
      */
     private double rolledDrop(int i) {
-        if (rolledApex < 0 || plan.start[i] != rolledApex) {
+        if (rolledApex < 0 || plan.start[i] != rolledApex || !rollCovers.containsKey(hostOf(i))) {
             return 0;
         }
         HostFrame frame = plan.frames[i];
@@ -380,7 +394,9 @@ final class StripFolding {
                 double du = inv.dx(f.localX(cp) - ax, f.localY(cp) - ay);
                 double dv = inv.dy(f.localX(cp) - ax, f.localY(cp) - ay);
                 // Back along the strip from the apex and into it: the edge the tail crosses next.
-                if (du < 0 && s * dv > 0) {
+                // Not one along the strip's side (a needle's edge under the last pass, rounded
+                // either way): no fold crosses the strip there.
+                if (du < 0 && s * dv > Tolerance.RELATIVE_EQUALITY * -du) {
                     next = c;
                 }
             }
@@ -802,7 +818,8 @@ final class StripFolding {
     private void stopShort(int i, HostFrame frame, double[] hostCorners) {
         stopX = Double.NaN;
         stopsAtRoll = false;
-        if (rolledApex >= 0 && i > 0 && (plan.baseFrom[i] == rolledApex || plan.baseTo[i] == rolledApex)) {
+        if (rolledApex >= 0 && (i > 0 || plan.start[0] != rolledApex) && (plan.baseFrom[i] == rolledApex || plan.baseTo[i] == rolledApex)
+                && rollCovers.containsKey(hostOf(i))) {
             double reach = rollReach(i);
             stopSide = plan.baseTo[i] == rolledApex ? 1 : -1;
             stopX = stopSide > 0 ? frame.baseLength() - reach : reach;
@@ -815,6 +832,14 @@ final class StripFolding {
             // (coverage 1 − 1.4·10⁻⁹ on the shared spike with the turns kept so).
             stopsAtRoll = true;
             stopSlack = reach * (1 - Math.cos(Math.toRadians(cornerAngle(rolledApex, hostOf(i), hostCorners))));
+            if (plan.start[0] != rolledApex) {
+                // A needle's tip (ApexRoll.needleEnd): the last pass covers the needle's far edge
+                // only to R, where a turn stopped at R, its 45° fold cutting the corner by that
+                // edge, covers it from half a width farther out (tet15b's 1.3° needle, rolled
+                // before its knife's edge ruled the roll out: a sliver bare, 5·10⁻⁸ of the area;
+                // half a width of slack 1.7·10⁻¹², a width none).
+                stopSlack = Math.max(stopSlack, NEEDLE_STOP_SLACK * w);
+            }
             return;
         }
         if (!baseInsideHost(i, frame, hostCorners)) {
@@ -851,6 +876,13 @@ final class StripFolding {
      * sliver by the apex is left bare (coverage 0.9999999).
      */
     static final double STOP_SHORT = 0.5;
+
+    /**
+     * How much nearer a needle's rolled tip than where its last pass stops covering the needle's
+     * whole width a stopped fold's paper may reach, in widths ({@link #stopShort}): one, the most
+     * a stopped turn's 45° fold cuts off by the needle's far edge.
+     */
+    static final double NEEDLE_STOP_SLACK = 1;
 
     /**
      * The corners, in degrees, at which triangles stop short ({@link #stopShort}): an eighth of
