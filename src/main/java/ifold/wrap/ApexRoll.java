@@ -9,6 +9,7 @@ import static ifold.wrap.Wrap.position;
 import ifold.geom.Tolerance;
 import ifold.mesh.IndexedPolygons;
 import ifold.refine.FacePreparation;
+import ifold.sheet.HostFrame;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
@@ -65,8 +66,9 @@ final class ApexRoll {
      * {@code corners}, has its base from v to {@code other} and v is no true sharp vertex (angle
      * sum 90° or more; a spike's apex is rolled from the triangle entered there,
      * {@link #sharpStart}): the corner there of the triangle's plane (the triangles at v in that
-     * plane, a needle face's tip) under the preparation's target, and the base along that plane's
-     * edge, the triangle across it in another plane. The last pass, along the base into v, then
+     * plane, a needle face's tip) under the preparation's target, the base along that plane's
+     * edge, the triangle across it in another plane, its far end short of the plane's corner, and
+     * no edge at v sharper than {@link #SHARPEST_EDGE_ROLLED}. The last pass, along the base into v, then
      * covers the plane's whole width up to w / sin θ from v, θ that corner, and the roll turns
      * the strip's end over the solid's edges at v through 90° without coming back to the plane.
      * Tucked on the needle instead, a side of the strip passing its tip lays 180°/θ layers.
@@ -88,12 +90,18 @@ final class ApexRoll {
         // The faces at v, each its normal and its neighbours of v, for the knives' edges below.
         List<double[]> normals = new ArrayList<>();
         List<int[]> sides = new ArrayList<>();
+        double atOther = 0;
         for (int f = 0; f < mesh.faceCount(); f++) {
             int n = mesh.faceSize(f);
             boolean hasOther = false;
             int at = -1;
             for (int j = 0; j < n; j++) {
-                hasOther |= mesh.faceVertex(f, j) == other;
+                if (mesh.faceVertex(f, j) == other) {
+                    hasOther = true;
+                    double[] faceNormal = normal(mesh, mesh.faceVertex(f, 0), mesh.faceVertex(f, 1), mesh.faceVertex(f, 2));
+                    atOther += dot(normal, faceNormal) > 1 - Tolerance.RELATIVE_EQUALITY
+                            ? LayerFloor.angle(mesh, other, mesh.faceVertex(f, (j + 1) % n), mesh.faceVertex(f, (j + n - 1) % n)) : 0;
+                }
                 at = mesh.faceVertex(f, j) == v ? j : at;
             }
             if (at < 0) {
@@ -112,9 +120,9 @@ final class ApexRoll {
             normals.add(faceNormal);
             sides.add(new int[] {after, before});
         }
-        // No knife's edge at v, two faces nearly back to back, which the roll might have to cross
-        // (a tetrahedron with a needle face is a sliver with one, from the needle's tip to the tip
-        // of the needle across its short edge; knife below).
+        // No edge at v too sharp to roll over, which the roll might have to cross (a tetrahedron
+        // with a needle face is a sliver with a knife's edge, from the needle's tip to the tip of
+        // the needle across its short edge; SHARPEST_EDGE_ROLLED).
         for (int a = 0; a < sides.size(); a++) {
             for (int b = a + 1; b < sides.size(); b++) {
                 boolean shareEdge = sides.get(a)[0] == sides.get(b)[1] || sides.get(a)[1] == sides.get(b)[0];
@@ -123,23 +131,28 @@ final class ApexRoll {
                 }
             }
         }
-        return !LayerFloor.sharp(sum) && across == 1 && Math.toDegrees(inPlane) < FacePreparation.TARGET_ANGLE ? inPlane : Double.NaN;
+        // The base's far end inside the needle's edge, not at its corner (the plane's angle there
+        // straight): the last pass then begins with a fold inside the needle, not beyond its
+        // corner, where it was tucked once the roll had laid it and the strip tore (a square
+        // pyramid's 3° needle: in two pieces in space).
+        boolean farEndOnEdge = atOther > Math.PI * (1 - Tolerance.RELATIVE_EQUALITY);
+        return !LayerFloor.sharp(sum) && across == 1 && farEndOnEdge && Math.toDegrees(inPlane) < FacePreparation.TARGET_ANGLE ? inPlane
+                : Double.NaN;
+    }
+
+    /** Whether faces of unit normals a and b, sharing an edge, meet at under {@link #SHARPEST_EDGE_ROLLED}. */
+    private static boolean backToBack(double[] a, double[] b) {
+        return dot(a, b) < -Math.cos(Math.toRadians(SHARPEST_EDGE_ROLLED));
     }
 
     /**
-     * Whether the edge between hosts a and b is a knife's: their faces meet at under the
-     * preparation's target angle, back to back within it.
+     * The sharpest edge, in degrees between its faces, that the roll round a needle's tip may
+     * cross: thick paper bent round an edge of δ stands out by its height over tan(δ / 2). Over
+     * tet15b's 1.5° the roll's cap stood 0.062 off the surface; over an irregular pyramid's 23.5°
+     * and 21.9° (its apex 0.2 off centre) 0.0030, twice what the paper's stack allows; rolls
+     * over edges of 64° and wider were sound.
      */
-    private static boolean knife(IndexedPolygons mesh, HostPieces pieces, int a, int b) {
-        int[] ca = pieces.corners[a];
-        int[] cb = pieces.corners[b];
-        return backToBack(normal(mesh, ca[0], ca[1], ca[2]), normal(mesh, cb[0], cb[1], cb[2]));
-    }
-
-    /** Whether faces of unit normals a and b, sharing an edge, meet at under the preparation's target angle. */
-    private static boolean backToBack(double[] a, double[] b) {
-        return dot(a, b) < -Math.cos(Math.toRadians(FacePreparation.TARGET_ANGLE));
-    }
+    static final double SHARPEST_EDGE_ROLLED = 45;
 
     private static boolean sameTriangle(IndexedPolygons mesh, int f, int[] corners) {
         if (mesh.faceSize(f) != 3) {
@@ -160,10 +173,11 @@ final class ApexRoll {
      * covers the host's whole width to w / sin φ, φ the host's corner at v. The hosts the roll
      * crosses after it have corners as wide as their faces' and keep their own paper at v; none
      * is listed. Null where the base does not lie along the host's edge, or runs to the host's
-     * corner, or the roll would cross an edge with no host across or a knife's edge before it
-     * has turned 90°.
+     * corner, or the roll would cross an edge with no host across or one too sharp
+     * ({@link #SHARPEST_EDGE_ROLLED}) before it has turned 90°.
      */
-    static Map<Integer, Reach> needleCoverage(IndexedPolygons mesh, PathPlan plan, HostPieces pieces, int v, int last, double w) {
+    static Map<Integer, Reach> needleCoverage(IndexedPolygons mesh, PathPlan plan, HostPieces pieces, HostFrame[] frames, int v, int last,
+            double w) {
         double[] apex = position(mesh, v);
         int other = plan.baseFrom[last] == v ? plan.baseTo[last] : plan.baseFrom[last];
         double[] along = unit(sub(position(mesh, other), apex));
@@ -181,23 +195,18 @@ final class ApexRoll {
             return null;
         }
         int out = alongBefore ? after : before;
-        // The base ending at the host's corner, the last pass begins with a fold beyond the host's
-        // edges there, tucked once the roll has laid it: a tuck through paper crossed into the next
-        // host tore it (a square pyramid's needle of 3°, its strip in two pieces in space).
-        if (other == (alongBefore ? before : after) || hostAcross(pieces, host, v, out) < 0) {
+        if (other == (alongBefore ? before : after) || hostAcross(pieces, host, v, out) < 0) { // needleCorner: never the host's corner
             return null;
         }
         double phi = angle(along, sub(position(mesh, out), apex));
-        // The edges the roll crosses before it has turned 90°: none a knife's edge, whose faces
-        // lie nearly back to back. Thick paper bent round one stands out by its height over the
-        // tangent of half the edge's angle: tet15b's edge between its two near faces, 1.5°, put
-        // a cap of the roll 0.062 off the surface, 15 layers high there.
+        // The edges the roll crosses before it has turned 90°: none too sharp to roll over
+        // (SHARPEST_EDGE_ROLLED; needleCorner asks it of every edge at v, this of the hosts').
         int across = host;
         int from = out;
         for (double at = phi; at < Math.PI / 2; ) {
             int crossed = across;
             across = hostAcross(pieces, across, v, from);
-            if (across < 0 || knife(mesh, pieces, crossed, across)) {
+            if (across < 0 || backToBack(frames[crossed].normal(), frames[across].normal())) {
                 return null;
             }
             int[] hc = pieces.corners[across];

@@ -160,6 +160,14 @@ final class PathPlan {
             int swap = preferred;
             preferred = other;
             other = swap;
+        } else if (!alongNeedle(mesh, plan, preferred) && alongNeedle(mesh, plan, other)) {
+            // Entered so that its base runs along a needle's edge from its tip, the strip's end
+            // rolled round the tip (ApexRoll.needleEnd); entered at the tip, its passes crossed
+            // the needle there, each side of the strip about 180°/θ layers (a closed square
+            // pyramid's 3° needle: 68). The triangle before takes a pass more (evenedUp).
+            int swap = preferred;
+            preferred = other;
+            other = swap;
         }
         int last = plan.m - 1;
         for (int s : new int[] {preferred, other}) {
@@ -170,6 +178,18 @@ final class PathPlan {
             }
         }
         throw new TooWideException(tooWide(mesh, plan.first + last, last, plan.m, width, plan.frames[last].altitude(), widest));
+    }
+
+    /**
+     * Whether the last triangle of {@code plan}, entered at vertex s, has its base along a needle's
+     * edge from its tip, where the strip's end is rolled ({@link ApexRoll#needleEnd}).
+     */
+    private static boolean alongNeedle(IndexedPolygons mesh, PathPlan plan, int s) {
+        int[] c = plan.corners[plan.m - 1];
+        int k = s == c[0] ? 0 : s == c[1] ? 1 : 2;
+        int a = c[(k + 1) % 3];
+        int b = c[(k + 2) % 3];
+        return ApexRoll.needleEnd(mesh, c, a, b) || ApexRoll.needleEnd(mesh, c, b, a);
     }
 
     /**

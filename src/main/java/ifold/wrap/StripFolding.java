@@ -276,7 +276,7 @@ final class StripFolding {
         for (int end : new int[] {plan.baseFrom[last], plan.baseTo[last]}) {
             int other = end == plan.baseFrom[last] ? plan.baseTo[last] : plan.baseFrom[last];
             if (ApexRoll.needleEnd(mesh, plan.corners[last], end, other)) {
-                rollCovers = ApexRoll.needleCoverage(mesh, plan, pieces, end, last, w);
+                rollCovers = ApexRoll.needleCoverage(mesh, plan, pieces, hostFrames, end, last, w);
                 if (rollCovers != null) {
                     return end;
                 }
