@@ -195,7 +195,9 @@ final class ApexRoll {
             return null;
         }
         int out = alongBefore ? after : before;
-        if (other == (alongBefore ? before : after) || hostAcross(pieces, host, v, out) < 0) { // needleCorner: never the host's corner
+        // The base's far end at the host's corner too, as needleCorner has it never: the host's
+        // corners are the plane's, less any cut where a plane is split into convex hosts.
+        if (other == (alongBefore ? before : after) || hostAcross(pieces, host, v, out) < 0) {
             return null;
         }
         double phi = angle(along, sub(position(mesh, out), apex));
