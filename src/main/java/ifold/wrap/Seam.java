@@ -406,26 +406,17 @@ public final class Seam {
      */
     static double rollShare(HamiltonianRefinement.Result refinement) {
         IndexedPolygons mesh = refinement.mesh();
-        int[] starts = refinement.componentStart();
-        for (int c = 0; c + 1 < starts.length; c++) {
-            int length = starts[c + 1] - starts[c];
-            if (!refinement.cyclic(c) || length < 3) {
-                continue;
+        double[] share = {Double.NaN};
+        eachExit(refinement, (start, j, length, corners, exit) -> {
+            int v = PathPlan.third(corners, exit);
+            int[] before = corners(mesh, start + (j + length - 1) % length);
+            if ((before[0] == v || before[1] == v || before[2] == v) && ApexRoll.sharpStart(mesh, corners, v)) {
+                share[0] = (double) j / length;
+                return false;
             }
-            for (int j = 0; j < length; j++) {
-                int[] corners = corners(mesh, starts[c] + j);
-                int[] exit = PathPlan.sharedEdge(corners, corners(mesh, starts[c] + (j + 1) % length));
-                if (exit == null) {
-                    continue;
-                }
-                int v = PathPlan.third(corners, exit);
-                int[] before = corners(mesh, starts[c] + (j + length - 1) % length);
-                if ((before[0] == v || before[1] == v || before[2] == v) && ApexRoll.sharpStart(mesh, corners, v)) {
-                    return (double) j / length;
-                }
-            }
-        }
-        return Double.NaN;
+            return true;
+        });
+        return share[0];
     }
 
     /**
@@ -440,9 +431,31 @@ public final class Seam {
      */
     static double needleShare(HamiltonianRefinement.Result refinement) {
         IndexedPolygons mesh = refinement.mesh();
+        double[] sharpest = {Double.POSITIVE_INFINITY};
+        double[] share = {Double.NaN};
+        eachExit(refinement, (start, j, length, corners, exit) -> {
+            for (int end = 0; end < 2; end++) {
+                double corner = ApexRoll.needleCorner(mesh, corners, exit[end], exit[1 - end]);
+                if (corner < sharpest[0]) {
+                    sharpest[0] = corner;
+                    share[0] = (double) ((j + 1) % length) / length;
+                }
+            }
+            return true;
+        });
+        return share[0];
+    }
+
+    /** What {@link #eachExit} is told of a triangle of a cyclic path: where it lies round the path, its corners, the edge it leaves by. */
+    private interface Exit {
+        /** @return whether to go on to the next triangle */
+        boolean visit(int componentStart, int j, int length, int[] corners, int[] exit);
+    }
+
+    /** Each triangle of each cyclic component of three or more, in path order, with the edge it shares with the next. */
+    private static void eachExit(HamiltonianRefinement.Result refinement, Exit visitor) {
+        IndexedPolygons mesh = refinement.mesh();
         int[] starts = refinement.componentStart();
-        double sharpest = Double.POSITIVE_INFINITY;
-        double share = Double.NaN;
         for (int c = 0; c + 1 < starts.length; c++) {
             int length = starts[c + 1] - starts[c];
             if (!refinement.cyclic(c) || length < 3) {
@@ -451,19 +464,11 @@ public final class Seam {
             for (int j = 0; j < length; j++) {
                 int[] corners = corners(mesh, starts[c] + j);
                 int[] exit = PathPlan.sharedEdge(corners, corners(mesh, starts[c] + (j + 1) % length));
-                if (exit == null) {
-                    continue;
-                }
-                for (int end = 0; end < 2; end++) {
-                    double corner = ApexRoll.needleCorner(mesh, corners, exit[end], exit[1 - end]);
-                    if (corner < sharpest) {
-                        sharpest = corner;
-                        share = (double) ((j + 1) % length) / length;
-                    }
+                if (exit != null && !visitor.visit(starts[c], j, length, corners, exit)) {
+                    return;
                 }
             }
         }
-        return share;
     }
 
     private static int[] corners(IndexedPolygons mesh, int f) {

@@ -223,19 +223,7 @@ class SeamTest {
      */
     @Test
     void aBigSurfaceWithHolesHalvesTheLeavesOfItsPathWhereThatFitsTheLimit() throws Exception {
-        assumeTrue(SharedMeshes.present(), "../shared/meshes is absent");
-        HalfedgeMesh elephant = mesh(MeshReaders.read(SharedMeshes.ROOT.resolve("valid").resolve("cgal_elephant-with-holes.off")));
-        HamiltonianRefinement.Result refinement = ifold.job.WrapPath.of(elephant).refinement();
-        HamiltonianRefinement.Result own = Seam.ownInstead(refinement, DEFAULTS);
-        HalfedgeMesh original = refinement.mesh().original();
-        HamiltonianRefinement.Result round = CycleCoverPath.of(original);
-        assertEquals(CycleCoverPath.of(original, new CycleCoverPath.Way(true, CycleCoverPath.Leaf.HALVED)).mesh().faceCount(), own.mesh().faceCount(),
-                "its leaves halved, its slivers matched first");
-        assertTrue(own.mesh().faceCount() < round.mesh().faceCount());
-        long roundFaces = Wrap.likelyFaces(round, Wrap.widest(round.mesh(), round.componentStart()));
-        long halvedFaces = Wrap.likelyFaces(own, Wrap.widest(own.mesh(), own.componentStart()));
-        assertTrue(roundFaces > Wrap.DEFAULT_MAX_FACES, roundFaces + " faces at the widest round the incentres");
-        assertTrue(halvedFaces <= Wrap.DEFAULT_MAX_FACES, halvedFaces + " faces at the widest halved");
+        followsTheWayThatFitsTheLimit("cgal_elephant-with-holes.off", new CycleCoverPath.Way(true, CycleCoverPath.Leaf.HALVED));
     }
 
     /**
@@ -247,18 +235,25 @@ class SeamTest {
      */
     @Test
     void aBigScanMatchesItsSliversAcrossTheirLongestSidesWhereThatFitsTheLimit() throws Exception {
+        followsTheWayThatFitsTheLimit("igl_fertility.off", new CycleCoverPath.Way(true, CycleCoverPath.Leaf.ROUND_INCENTRE));
+    }
+
+    /**
+     * The shared {@code model}, refused along its own triangles made the plain way (past the
+     * default face limit at their widest strip), is wrapped along them made {@code way}, within it.
+     */
+    private static void followsTheWayThatFitsTheLimit(String model, CycleCoverPath.Way way) throws Exception {
         assumeTrue(SharedMeshes.present(), "../shared/meshes is absent");
-        HalfedgeMesh fertility = mesh(MeshReaders.read(SharedMeshes.ROOT.resolve("valid").resolve("igl_fertility.off")));
-        HamiltonianRefinement.Result refinement = ifold.job.WrapPath.of(fertility).refinement();
+        HalfedgeMesh mesh = mesh(MeshReaders.read(SharedMeshes.ROOT.resolve("valid").resolve(model)));
+        HamiltonianRefinement.Result refinement = ifold.job.WrapPath.of(mesh).refinement();
         HamiltonianRefinement.Result own = Seam.ownInstead(refinement, DEFAULTS);
         HalfedgeMesh original = refinement.mesh().original();
+        assertEquals(CycleCoverPath.of(original, way).mesh().faceCount(), own.mesh().faceCount(), "made " + way);
         HamiltonianRefinement.Result plain = CycleCoverPath.of(original);
-        HamiltonianRefinement.Result sliversFirst = CycleCoverPath.of(original, new CycleCoverPath.Way(true, CycleCoverPath.Leaf.ROUND_INCENTRE));
-        assertEquals(sliversFirst.mesh().faceCount(), own.mesh().faceCount(), "its slivers matched first");
         long plainFaces = Wrap.likelyFaces(plain, Wrap.widest(plain.mesh(), plain.componentStart()));
         long ownFaces = Wrap.likelyFaces(own, Wrap.widest(own.mesh(), own.componentStart()));
-        assertTrue(plainFaces > Wrap.DEFAULT_MAX_FACES, plainFaces + " faces at the widest, matched plainly");
-        assertTrue(ownFaces <= Wrap.DEFAULT_MAX_FACES, ownFaces + " faces at the widest, the slivers matched first");
+        assertTrue(plainFaces > Wrap.DEFAULT_MAX_FACES, plainFaces + " faces at the widest, made plainly");
+        assertTrue(ownFaces <= Wrap.DEFAULT_MAX_FACES, ownFaces + " faces at the widest, made " + way);
     }
 
     /**
