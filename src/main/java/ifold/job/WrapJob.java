@@ -177,12 +177,13 @@ public final class WrapJob {
                 otherTried.put("prepared", other.prepared());
                 try {
                     Seam.Chosen otherSeam = Seam.wrap(other.refinement(), null, request.options(), Seam.stoppedBy(watcher), Collisions.OF_SEAM);
+                    boolean better = otherSeam.betterThan(seam);
                     otherTried.put("layers", otherSeam.maxLayers());
                     otherTried.put("collisions", otherSeam.collisions());
-                    otherTried.put("kept", otherSeam.betterThan(seam));
+                    otherTried.put("kept", better);
                     otherTried.put("firstLayers", seam.maxLayers());
                     otherTried.put("firstCollisions", seam.collisions());
-                    if (otherSeam.betterThan(seam)) {
+                    if (better) {
                         seam = otherSeam;
                         path = other;
                     }

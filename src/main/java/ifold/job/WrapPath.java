@@ -1,11 +1,11 @@
 package ifold.job;
 
+import ifold.geom.Triangles;
+import ifold.geom.Vectors;
 import ifold.mesh.GridSquares;
 import ifold.mesh.HalfedgeMesh;
 import ifold.refine.FacePreparation;
 import ifold.refine.HamiltonianRefinement;
-import ifold.geom.Triangles;
-import ifold.geom.Vectors;
 import ifold.refine.RefinementClaims;
 import ifold.wrap.HingeTour;
 import ifold.wrap.Wrap;
@@ -111,6 +111,7 @@ public record WrapPath(FacePreparation.Result preparation, HamiltonianRefinement
     /** Whether every face round vertex {@code v} of {@code mesh} lies in one plane and one has a corner there under the preparation's target. */
     private static boolean thinFlatFan(HalfedgeMesh mesh, int v) {
         double[] xyz = mesh.positionArray();
+        double[] pv = point(xyz, v);
         double[] first = null;
         boolean thin = false;
         int start = mesh.halfedge(v);
@@ -118,9 +119,7 @@ public record WrapPath(FacePreparation.Result preparation, HamiltonianRefinement
         do {
             int a = mesh.toVertex(h);
             int b = mesh.toVertex(mesh.next(h));
-            double[] pv = {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]};
-            double[] normal = Vectors.unit(Vectors.cross(Vectors.sub(new double[] {xyz[3 * a], xyz[3 * a + 1], xyz[3 * a + 2]}, pv),
-                    Vectors.sub(new double[] {xyz[3 * b], xyz[3 * b + 1], xyz[3 * b + 2]}, pv)));
+            double[] normal = Vectors.unit(Vectors.cross(Vectors.sub(point(xyz, a), pv), Vectors.sub(point(xyz, b), pv)));
             if (first == null) {
                 first = normal;
             } else if (Vectors.dot(first, normal) < 1 - 1e-9) {
@@ -130,6 +129,10 @@ public record WrapPath(FacePreparation.Result preparation, HamiltonianRefinement
             h = HalfedgeMesh.twin(mesh.prev(h));
         } while (h != start);
         return thin;
+    }
+
+    private static double[] point(double[] xyz, int v) {
+        return new double[] {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]};
     }
 
     /** Prepares and refines {@code mesh}, following the prepared path whatever it costs ({@code refine --prepare}). */

@@ -3,7 +3,9 @@ package ifold.refine;
 import ifold.geom.Triangles;
 import ifold.geom.UnionFind;
 import ifold.mesh.HalfedgeMesh;
+import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.List;
 
 /**
  * A path through the model's own triangles, which the zig-zag may follow instead of the
@@ -111,8 +113,8 @@ public final class CycleCoverPath {
      *
      * @throws IllegalArgumentException if a face is not a triangle or has no area
      */
-    public static java.util.List<HamiltonianRefinement.Result> ways(HalfedgeMesh mesh) {
-        java.util.List<HamiltonianRefinement.Result> paths = new java.util.ArrayList<>();
+    public static List<HamiltonianRefinement.Result> ways(HalfedgeMesh mesh) {
+        List<HamiltonianRefinement.Result> paths = new ArrayList<>();
         if (!checked(mesh)) {
             return paths;
         }
