@@ -118,11 +118,9 @@ public final class CycleCoverPath {
         if (!checked(mesh)) {
             return paths;
         }
-        for (boolean sliversFirst : new boolean[] {false, true}) {
-            if (sliversFirst && slivers(mesh).length == 0) {
-                continue;
-            }
-            Cover cover = cover(mesh, sliversFirst);
+        int[] slivers = slivers(mesh);
+        for (int[] first : slivers.length == 0 ? List.of(new int[0]) : List.of(new int[0], slivers)) {
+            Cover cover = coverMatching(mesh, first);
             for (Leaf leaf : Leaf.values()) {
                 if (leaf == Leaf.HALVED && cover.cutCount() == 0) {
                     continue;
@@ -233,12 +231,16 @@ public final class CycleCoverPath {
 
     /** {@link #cover(HalfedgeMesh)}, its matchings begun with the slivers where {@code sliversFirst} ({@link Way}). */
     static Cover cover(HalfedgeMesh mesh, boolean sliversFirst) {
-        int[] slivers = sliversFirst ? slivers(mesh) : new int[0];
-        Cover any = cover(mesh, false, slivers);
+        return coverMatching(mesh, sliversFirst ? slivers(mesh) : new int[0]);
+    }
+
+    /** {@link #cover(HalfedgeMesh)}, its matchings begun with the triangles {@code first}, each across its longest side. */
+    private static Cover coverMatching(HalfedgeMesh mesh, int[] first) {
+        Cover any = cover(mesh, false, first);
         if (any.cutCount() == 0) {
             return any; // none cut (a closed mesh, matched at once; an open tube): none fewer
         }
-        Cover unmatched = cover(mesh, true, slivers);
+        Cover unmatched = cover(mesh, true, first);
         return unmatched.cutCount() < any.cutCount() ? unmatched : any;
     }
 
