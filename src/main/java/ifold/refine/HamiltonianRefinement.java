@@ -76,6 +76,15 @@ public final class HamiltonianRefinement {
             }
             return new Result(mesh.rotated(componentStart, shift), componentStart, treeEdge);
         }
+
+        /**
+         * The same pieces with each component's path run the other way: each triangle is then
+         * left across the side it was entered by, and its passes, parallel to that side, are
+         * as many as its altitude over it takes (one way may be narrower or take fewer passes).
+         */
+        public Result reversed() {
+            return new Result(mesh.reversed(componentStart), componentStart, treeEdge);
+        }
     }
 
     /**

@@ -79,6 +79,19 @@ public final class RefinedMesh implements IndexedPolygons {
         return new RefinedMesh(original, turned, incentres, treeEdges, ownTriangles);
     }
 
+    /** The same pieces with each component's path run the other way. */
+    RefinedMesh reversed(int[] componentStart) {
+        int[] back = new int[path.length];
+        for (int c = 0; c + 1 < componentStart.length; c++) {
+            int from = componentStart[c];
+            int to = componentStart[c + 1];
+            for (int i = from; i < to; i++) {
+                back[i] = path[from + to - 1 - i];
+            }
+        }
+        return new RefinedMesh(original, back, incentres, treeEdges, ownTriangles);
+    }
+
     /** The mesh that was refined; its vertices are the first vertices of this one. */
     public HalfedgeMesh original() {
         return original;

@@ -361,11 +361,29 @@ public final class Seam {
         // crossed itself from both starts: the seam's short paths keep the plain way.
         HamiltonianRefinement.Result own = null;
         long faces = Long.MAX_VALUE;
-        for (HamiltonianRefinement.Result path : CycleCoverPath.ways(refinement.mesh().original())) {
+        List<HamiltonianRefinement.Result> ways = CycleCoverPath.ways(refinement.mesh().original());
+        for (HamiltonianRefinement.Result path : ways) {
             long likely = Wrap.likelyFaces(path, options.width());
             if (likely < faces) {
                 own = path;
                 faces = likely;
+            }
+        }
+        if (faces > options.maxFaces()) {
+            // No way fits at the width asked (the default: a third of its widest), and the strip
+            // is widened to fit (at a width given, the wrap refused): each way run back too, each triangle left across the side
+            // it was entered by, may take fewer passes or be wider at its narrowest
+            // (igl_fertility.off's plain way: its widest 0.2543 -> 0.4513, 1,930,445 faces
+            // likely at a third of it -> 1,210,416, fewer than any way run forwards). Not where
+            // one fits: the layers change with the way round as with the way, by chance (the
+            // 64 x 32 UV sphere's 48 -> 66, by its pole).
+            for (HamiltonianRefinement.Result way : ways) {
+                HamiltonianRefinement.Result back = way.reversed();
+                long likely = Wrap.likelyFaces(back, options.width());
+                if (likely < faces) {
+                    own = back;
+                    faces = likely;
+                }
             }
         }
         return own != null && faces < refined ? own : null;

@@ -144,6 +144,27 @@ class HamiltonianRefinementTest {
         assertThrows(IllegalArgumentException.class, () -> result.begunAt(Double.NaN));
     }
 
+    /** Each component run the other way keeps every claim, its triangles the same in the opposite order, and twice is as it was. */
+    @Test
+    void eachComponentMayBeRunTheOtherWay() {
+        HalfedgeMesh mesh = triangles(tetrahedronBesideOctahedron());
+        for (HamiltonianRefinement.Result result : List.of(HamiltonianRefinement.refine(mesh), CycleCoverPath.of(mesh))) {
+            HamiltonianRefinement.Result back = result.reversed();
+            assertEquals(List.of(), result.mesh().ownTriangles() ? CycleCoverPathTest.violations(mesh, back) : RefinementClaims.violations(mesh, back));
+            for (int c = 0; c < result.componentCount(); c++) {
+                int from = result.componentStart()[c];
+                int to = result.componentStart()[c + 1];
+                assertTrue(back.cyclic(c), "component " + c);
+                for (int t = from; t < to; t++) {
+                    for (int k = 0; k < 3; k++) {
+                        assertEquals(result.mesh().faceVertex(from + to - 1 - t, k), back.mesh().faceVertex(t, k));
+                        assertEquals(result.mesh().faceVertex(t, k), back.reversed().mesh().faceVertex(t, k));
+                    }
+                }
+            }
+        }
+    }
+
     @Test
     void eachComponentGetsItsOwnPath() {
         HalfedgeMesh mesh = triangles(tetrahedronBesideOctahedron());

@@ -223,37 +223,50 @@ class SeamTest {
      */
     @Test
     void aBigSurfaceWithHolesHalvesTheLeavesOfItsPathWhereThatFitsTheLimit() throws Exception {
-        followsTheWayThatFitsTheLimit("cgal_elephant-with-holes.off", new CycleCoverPath.Way(true, CycleCoverPath.Leaf.HALVED));
+        followsThePathThatFitsTheLimit("cgal_elephant-with-holes.off", "made " + HALVED_SLIVERS_FIRST,
+                original -> CycleCoverPath.of(original, HALVED_SLIVERS_FIRST));
     }
 
+    private static final CycleCoverPath.Way HALVED_SLIVERS_FIRST = new CycleCoverPath.Way(true, CycleCoverPath.Leaf.HALVED);
+
     /**
-     * A big closed scan with slivers follows its own triangles matched with the slivers first,
-     * each across its longest side, where that is likely to make fewer faces:
-     * {@code igl_fertility.off} (9,000 triangles), whose slivers left across their longest sides
-     * set a widest strip of 0.2543 and about 832,963 faces at it, past the default limit, so
-     * that it was refused; matched so, 0.4134 and within the limit (it wraps at the defaults).
+     * A big closed scan with slivers, which no way of making its path fits at the default width,
+     * follows its own triangles run the other way round where that is likely to make fewest
+     * faces: {@code igl_fertility.off} (9,000 triangles), whose slivers left across their longest
+     * sides set a widest strip of 0.2543 and about 832,963 faces at it, past the default limit,
+     * so that it was refused; run back, each is left across the side it was entered by, 0.4513
+     * and about 592,978, within the limit (matched with the slivers first, each across its
+     * longest side, 0.4134 and 624,334: wrapped so, 100 layers at most where run back it has 78).
      */
     @Test
-    void aBigScanMatchesItsSliversAcrossTheirLongestSidesWhereThatFitsTheLimit() throws Exception {
-        followsTheWayThatFitsTheLimit("igl_fertility.off", new CycleCoverPath.Way(true, CycleCoverPath.Leaf.ROUND_INCENTRE));
+    void aBigScanRunsItsPathBackWhereThatFitsTheLimit() throws Exception {
+        followsThePathThatFitsTheLimit("igl_fertility.off", "made plainly, run back", original -> CycleCoverPath.of(original).reversed());
     }
 
     /**
      * The shared {@code model}, refused along its own triangles made the plain way (past the
-     * default face limit at their widest strip), is wrapped along them made {@code way}, within it.
+     * default face limit at their widest strip), is wrapped along the {@code expected} path of
+     * them, within it.
      */
-    private static void followsTheWayThatFitsTheLimit(String model, CycleCoverPath.Way way) throws Exception {
+    private static void followsThePathThatFitsTheLimit(String model, String what,
+            java.util.function.Function<HalfedgeMesh, HamiltonianRefinement.Result> expected) throws Exception {
         assumeTrue(SharedMeshes.present(), "../shared/meshes is absent");
         HalfedgeMesh mesh = mesh(MeshReaders.read(SharedMeshes.ROOT.resolve("valid").resolve(model)));
         HamiltonianRefinement.Result refinement = ifold.job.WrapPath.of(mesh).refinement();
         HamiltonianRefinement.Result own = Seam.ownInstead(refinement, DEFAULTS);
         HalfedgeMesh original = refinement.mesh().original();
-        assertEquals(CycleCoverPath.of(original, way).mesh().faceCount(), own.mesh().faceCount(), "made " + way);
+        HamiltonianRefinement.Result path = expected.apply(original);
+        assertEquals(path.mesh().faceCount(), own.mesh().faceCount(), what);
+        for (int t = 0; t < path.mesh().faceCount(); t++) {
+            for (int k = 0; k < 3; k++) {
+                assertEquals(path.mesh().faceVertex(t, k), own.mesh().faceVertex(t, k), what + ": triangle " + t);
+            }
+        }
         HamiltonianRefinement.Result plain = CycleCoverPath.of(original);
         long plainFaces = Wrap.likelyFaces(plain, Wrap.widest(plain.mesh(), plain.componentStart()));
         long ownFaces = Wrap.likelyFaces(own, Wrap.widest(own.mesh(), own.componentStart()));
         assertTrue(plainFaces > Wrap.DEFAULT_MAX_FACES, plainFaces + " faces at the widest, made plainly");
-        assertTrue(ownFaces <= Wrap.DEFAULT_MAX_FACES, ownFaces + " faces at the widest, made " + way);
+        assertTrue(ownFaces <= Wrap.DEFAULT_MAX_FACES, ownFaces + " faces at the widest, " + what);
     }
 
     /**
@@ -333,6 +346,28 @@ class SeamTest {
         assertEquals(0.0, chosen.along());
         assertEquals(List.of(), chosen.layersTried());
         assertSame(refinement, chosen.refinement());
+    }
+
+    /**
+     * A big model that a way of making its path fits at the default width follows the way likely
+     * to make fewest faces run forwards, though one run back would make fewer still (the
+     * 5,120-triangle icosphere: 418,387 likely against 418,982); where none fits (a face limit under them all), each way is
+     * weighed run back too, and the fewest of all followed.
+     */
+    @Test
+    void aBigModelsPathIsRunBackOnlyWhereNoWayFits() throws Exception {
+        HalfedgeMesh sphere = mesh(Solids.icosphere(4));
+        HamiltonianRefinement.Result refinement = ifold.job.WrapPath.of(sphere).refinement();
+        long forwards = Long.MAX_VALUE;
+        long back = Long.MAX_VALUE;
+        for (HamiltonianRefinement.Result way : CycleCoverPath.ways(refinement.mesh().original())) {
+            forwards = Math.min(forwards, Wrap.likelyFaces(way));
+            back = Math.min(back, Wrap.likelyFaces(way.reversed()));
+        }
+        assertTrue(back < forwards, "setup: run back, " + back + " faces likely against " + forwards);
+        assertEquals(forwards, Wrap.likelyFaces(Seam.ownInstead(refinement, DEFAULTS)));
+        Wrap.Options tight = new Wrap.Options(Double.NaN, Double.NaN, null, (int) forwards - 1);
+        assertEquals(back, Wrap.likelyFaces(Seam.ownInstead(refinement, tight)));
     }
 
     /**
