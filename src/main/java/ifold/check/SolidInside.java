@@ -324,7 +324,8 @@ final class SolidInside {
         return Arrays.copyOf(out, 9 * kept);
     }
 
-    private static int find(int[] parent, int i) {
+    /** The root of i's piece in a union-find parent array (the checkers keep their own: they share no code with the engine). */
+    static int find(int[] parent, int i) {
         while (parent[i] != i) {
             parent[i] = parent[parent[i]];
             i = parent[i];
@@ -332,7 +333,8 @@ final class SolidInside {
         return i;
     }
 
-    private static void union(int[] parent, int i, int j) {
+    /** Joins the pieces of i and j, the lower root the root of both. */
+    static void union(int[] parent, int i, int j) {
         int a = find(parent, i);
         int b = find(parent, j);
         if (a != b) {

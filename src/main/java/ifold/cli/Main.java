@@ -118,6 +118,7 @@ public final class Main implements Runnable {
         SUBCOMMANDS.put("demo", DemoCommand.class);
         SUBCOMMANDS.put("refine", RefineCommand.class);
         SUBCOMMANDS.put("info", InfoCommand.class);
+        SUBCOMMANDS.put("check", CheckCommand.class);
         SUBCOMMANDS.put("generate", GenerateCommand.class);
         SUBCOMMANDS.put("help", CommandLine.HelpCommand.class);
     }

@@ -23,9 +23,18 @@ public final class WrapExport {
     private WrapExport() {
     }
 
+    /**
+     * Writes a wrap's strips under a header that names the model, the width, the thickness and
+     * the levels of the deepest stack: {@code ifold check} reads the last two from it, as how
+     * thick the paper is and how high above the surface it may lie.
+     */
     public static void writeObj(Path file, String model, Wrap.Result result, List<PaperInSpace> strips) throws IOException {
+        int stack = 0;
+        for (Wrap.Strip strip : result.strips()) {
+            stack = Math.max(stack, strip.sheet().stackLevels());
+        }
         writeObj(file, "iFold wrap of " + model.replace('\n', ' ') + ": " + strips.size() + (strips.size() == 1 ? " strip" : " strips") + ", width " + result.width()
-                + ", thickness " + result.thickness(), strips);
+                + ", thickness " + result.thickness() + ", a stack of " + stack + " levels", strips);
     }
 
     /**

@@ -62,12 +62,15 @@ class ReportsTest {
      */
     private Map<String, String> reports() throws Exception {
         Map<String, String[]> runs = new LinkedHashMap<>();
-        runs.put("wrap", new String[] {"wrap", "models/cube.off", "--no-view", "--export-fold", dir.resolve("a.fold").toString(), "--report", "R"});
+        runs.put("wrap", new String[] {"wrap", "models/cube.off", "--no-view", "--export-fold", dir.resolve("a.fold").toString(), "--export-obj",
+            dir.resolve("cube.obj").toString(), "--report", "R"});
         runs.put("wrap#thin", new String[] {"wrap", "models/cube.off", "--thickness", "0", "--no-view", "--report", "R"});
         runs.put("wrap#hinge", new String[] {"wrap", "models/cube.off", "--method", "hinge", "--no-view", "--report", "R"});
         runs.put("demo zigzag", new String[] {"demo", "zigzag", "--no-view", "--export-fold", dir.resolve("b.fold").toString(), "--report", "R"});
         runs.put("demo turn", new String[] {"demo", "turn", "--angle", "70", "--no-view", "--report", "R"});
         runs.put("fold", new String[] {"fold", "models/scripts/pleat20.fold", "--no-view", "--report", "R"});
+        runs.put("check", new String[] {"check", "models/cube.off", dir.resolve("cube.obj").toString(), "--fold", dir.resolve("a.fold").toString(),
+            "--report", "R"});
         runs.put("info", new String[] {"info", "models/torus.off", "--json"});
         runs.put("refine", new String[] {"refine", "models/torus.off", "-o", dir.resolve("t.off").toString(), "--json"});
         Map<String, String> reports = new LinkedHashMap<>();

@@ -8,7 +8,7 @@ import ifold.sheet.SheetChecks;
 import ifold.wrap.WrapAnalysis;
 import ifold.wrap.WrapExport;
 import ifold.wrap.PaperInSpace;
-import ifold.wrap.WrapTruths;
+import ifold.check.WrapTruths;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;

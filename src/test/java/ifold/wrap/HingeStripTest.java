@@ -3,6 +3,7 @@ package ifold.wrap;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import ifold.check.WrapTruths;
 import ifold.mesh.GridSquares;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;

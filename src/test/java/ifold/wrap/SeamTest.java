@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import ifold.check.PaperCollisions;
+import ifold.check.WrapTruths;
 import ifold.job.Collisions;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import ifold.check.WrapTruths;
 import ifold.geom.ParameterException;
 import ifold.sheet.Sheet;
 import java.nio.file.Files;

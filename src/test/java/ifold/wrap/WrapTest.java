@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import ifold.check.WrapTruths;
 import ifold.geom.ParameterException;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.IndexedPolygons;

@@ -1,8 +1,9 @@
-package ifold.wrap;
+package ifold.check;
 
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Map;
 
 /**
  * An independent check of the OBJ that {@code ifold wrap} writes: it reads the file's text itself
@@ -99,6 +100,9 @@ public final class WrapTruths {
     final double worstIsometry;
     /** Set by the last check; NaN before one. */
     double farthestFromSurface = Double.NaN;
+
+    /** How many violations of each truth the last check found, listed or not. */
+    private Map<String, Integer> violationCounts = Map.of();
     /** Truth 5 of {@link WrapTruths}. */
     final TruthSurface surface = new TruthSurface(this);
     /** Truth 4 of {@link WrapTruths}. */
@@ -309,6 +313,14 @@ public final class WrapTruths {
         return farthestFromSurface;
     }
 
+    /**
+     * How many violations of each truth (its name, as {@link #TILED}) the last {@link #check}
+     * found, those it did not list too; the truths that hold are left out. Empty before any check.
+     */
+    public Map<String, Integer> violationCounts() {
+        return violationCounts;
+    }
+
     int faces() {
         return faceStrip.length;
     }
@@ -366,6 +378,7 @@ public final class WrapTruths {
         coverage.checkCovered(report, model, geometry, eps, top, coverageSamples, seed, thickness > 0 ? concave : List.of(), crept,
                 foldsCrept ? thickness : 0);
         surface.checkOnSurface(report, model, geometry, eps, top);
+        violationCounts = report.counts();
         return report.finish();
     }
 

@@ -1,6 +1,5 @@
-package ifold.wrap;
+package ifold.check;
 
-import ifold.geom.UnionFind;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashMap;
@@ -80,7 +79,10 @@ final class TruthIsometry {
      */
     static List<ConcaveSide> cutSides(TruthModel model, double eps) {
         int n = model.corners.length / 9;
-        int[] region = UnionFind.pieces(n);
+        int[] region = new int[n];
+        for (int t = 0; t < n; t++) {
+            region[t] = t;
+        }
         Map<String, int[]> sides = new HashMap<>();
         List<int[]> inner = new ArrayList<>();
         List<int[]> borders = new ArrayList<>();
@@ -93,7 +95,7 @@ final class TruthIsometry {
                     sides.put(ab, new int[] {t, k});
                 } else if (coplanar(model, t, other[0], eps)) {
                     inner.add(new int[] {t, k, other[0], other[1]});
-                    UnionFind.union(region, t, other[0]);
+                    SolidInside.union(region, t, other[0]);
                 } else {
                     borders.add(new int[] {t, k});
                     borders.add(other);
@@ -105,24 +107,24 @@ final class TruthIsometry {
         boolean[] notConvex = new boolean[n];
         Map<Integer, List<Integer>> members = new HashMap<>();
         for (int t = 0; t < n; t++) {
-            members.computeIfAbsent(UnionFind.find(region, t), r -> new ArrayList<>()).add(t);
+            members.computeIfAbsent(SolidInside.find(region, t), r -> new ArrayList<>()).add(t);
         }
         for (int[] border : borders) {
             int t = border[0];
             double[] a = corner(model, t, border[1]);
             double[] in = crossed(model.normal(t), minus(corner(model, t, (border[1] + 1) % 3), a));
             double length = Math.sqrt(times(in, in));
-            for (int u : members.get(UnionFind.find(region, t))) {
+            for (int u : members.get(SolidInside.find(region, t))) {
                 for (int k = 0; k < 3; k++) {
                     if (times(minus(corner(model, u, k), a), in) < -eps * length) {
-                        notConvex[UnionFind.find(region, t)] = true;
+                        notConvex[SolidInside.find(region, t)] = true;
                     }
                 }
             }
         }
         List<ConcaveSide> cuts = new ArrayList<>();
         for (int[] edge : inner) {
-            if (notConvex[UnionFind.find(region, edge[0])]) {
+            if (notConvex[SolidInside.find(region, edge[0])]) {
                 cuts.add(new ConcaveSide(model.normal(edge[0]), corner(model, edge[0], edge[1]), corner(model, edge[0], (edge[1] + 1) % 3), 0));
                 cuts.add(new ConcaveSide(model.normal(edge[2]), corner(model, edge[2], edge[3]), corner(model, edge[2], (edge[3] + 1) % 3), 0));
             }

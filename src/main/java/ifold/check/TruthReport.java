@@ -1,6 +1,6 @@
-package ifold.wrap;
+package ifold.check;
 
-import ifold.wrap.WrapTruths.Violation;
+import ifold.check.WrapTruths.Violation;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
@@ -23,6 +23,17 @@ final class TruthReport {
         if (count <= WrapTruths.LISTED_PER_TRUTH) {
             byTruth.get(truth).add(new Violation(truth, message));
         }
+    }
+
+    /** How many violations of each truth were found, in truth order; the truths that hold left out. */
+    Map<String, Integer> counts() {
+        Map<String, Integer> found = new LinkedHashMap<>();
+        for (String truth : byTruth.keySet()) {
+            if (counts.containsKey(truth)) {
+                found.put(truth, counts.get(truth));
+            }
+        }
+        return found;
     }
 
     List<Violation> finish() {

@@ -1,13 +1,13 @@
-package ifold.wrap;
+package ifold.check;
 
-import static ifold.wrap.WrapTruthsTest.T;
-import static ifold.wrap.WrapTruthsTest.assertBroken;
-import static ifold.wrap.WrapTruthsTest.check;
-import static ifold.wrap.WrapTruthsTest.truths;
+import static ifold.check.WrapTruthsTest.T;
+import static ifold.check.WrapTruthsTest.assertBroken;
+import static ifold.check.WrapTruthsTest.check;
+import static ifold.check.WrapTruthsTest.truths;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import ifold.wrap.WrapTruths.Violation;
+import ifold.check.WrapTruths.Violation;
 import java.util.List;
 import java.util.Set;
 import org.junit.jupiter.api.Test;

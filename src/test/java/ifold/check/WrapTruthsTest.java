@@ -1,10 +1,10 @@
-package ifold.wrap;
+package ifold.check;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import ifold.wrap.WrapTruths.Violation;
+import ifold.check.WrapTruths.Violation;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;

@@ -1,7 +1,7 @@
-package ifold.wrap;
+package ifold.check;
 
-import ifold.wrap.WrapTruths.Faces;
-import ifold.wrap.WrapTruths.Ints;
+import ifold.check.WrapTruths.Faces;
+import ifold.check.WrapTruths.Ints;
 import java.util.List;
 import java.util.SplittableRandom;
 

@@ -1,6 +1,6 @@
-package ifold.wrap;
+package ifold.check;
 
-import ifold.wrap.WrapTruths.Ints;
+import ifold.check.WrapTruths.Ints;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.LinkedHashMap;

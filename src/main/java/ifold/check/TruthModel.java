@@ -1,4 +1,4 @@
-package ifold.wrap;
+package ifold.check;
 
 import java.util.Arrays;
 import java.util.List;

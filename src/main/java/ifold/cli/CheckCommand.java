@@ -1,0 +1,160 @@
+package ifold.cli;
+
+import ifold.check.WrapTruths;
+import ifold.io.AtomicFile;
+import ifold.job.CheckJob;
+import ifold.job.Collisions;
+import ifold.job.JobWatcher;
+import ifold.job.Json;
+import ifold.job.ModelFiles;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/** {@code ifold check MODEL PAPER.obj}: an exported wrap checked against its model by the independent checkers alone. */
+@Command(name = "check", mixinStandardHelpOptions = true,
+        description = {"Checks a wrap that 'ifold wrap --export-obj' wrote against its model, reading the files alone"
+                + " (nothing of the wrap is asked): the five truths of a wrap (each strip's paper tiles it once; no face is"
+                + " stretched, but where thick paper stands back from a concave edge; no face is torn from its neighbours;"
+                + " the model is covered; every face lies on it, at most as high as the stack), the collisions (paper"
+                + " crossing itself or the model, layers in one plane), and with --fold the layer order of the FOLD file"
+                + " --export-fold wrote. Unlike the wrap's report, a check is never skipped for the paper's size: half a"
+                + " million faces take minutes. Prints a line a check; exits 0 where every one holds, 1 where one does not.",
+                "The thickness and the stack's height are read from the OBJ's first line, the model moved as the wrap moved it."})
+final class CheckCommand implements Callable<Integer> {
+
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "MODEL", description = "the model that was wrapped: an .off, .obj, .ply or .stl file")
+    Path model;
+
+    @Parameters(index = "1", paramLabel = "PAPER.obj", description = "the paper, as 'ifold wrap --export-obj' wrote it")
+    Path paper;
+
+    @Option(names = "--fold", paramLabel = "FILE.fold", description = "the same wrap as 'ifold wrap --export-fold' wrote it: its layer order is checked too")
+    Path fold;
+
+    @Option(names = "--thickness", paramLabel = "T", description = "the paper's thickness (default: as the OBJ's first line says)")
+    Double thickness;
+
+    @Option(names = "--stack", paramLabel = "N", description = "the levels of the deepest stack: paper may lie N + 1 thicknesses above the surface"
+            + " (default: as the OBJ's first line says)")
+    Integer stack;
+
+    @Option(names = "--samples", paramLabel = "N", description = "random points of the model that must lie under paper (default: 2000)")
+    int samples = 2000;
+
+    @Option(names = "--report", paramLabel = "FILE", description = "write the figures of the checks as JSON")
+    Path report;
+
+    @Option(names = "--strict", description = "refuse a defective model instead of repairing it")
+    boolean strict;
+
+    @Override
+    public Integer call() {
+        PrintWriter err = spec.commandLine().getErr();
+        if (thickness != null && !(thickness >= 0 && Double.isFinite(thickness))) {
+            throw UserError.usage("option --thickness: " + thickness + " is not a thickness (0 or more)");
+        }
+        if (stack != null && stack < 0) {
+            throw UserError.usage("option --stack: " + stack + " is not a number of levels (0 or more)");
+        }
+        if (samples < 0) {
+            throw UserError.usage("option --samples: " + samples + " is not a number of points (0 or more)");
+        }
+        for (Path file : fold == null ? List.of(paper) : List.of(paper, fold)) {
+            String notAFile = ModelFiles.notAFile(file); // a missing one: reading it says so
+            if (notAFile != null) {
+                throw new UserError(notAFile);
+            }
+        }
+        if (report != null) {
+            OutputFiles.checkWritableFile(report, "--report", ".json");
+        }
+        CheckJob.Checked checked;
+        ProgressBar.WrapBar bar = ProgressBar.wrapping(err);
+        JobWatcher notes = LoadedModel.printingNotes(err);
+        JobWatcher watcher = new JobWatcher() {
+            @Override
+            public void stage(String what) {
+                bar.stage(what); // on a terminal, once the check has taken two seconds: a scan's take minutes
+            }
+
+            @Override
+            public void note(String line) {
+                bar.wipe();
+                notes.note(line);
+            }
+        };
+        try {
+            checked = CheckJob.run(new CheckJob.Request(model, paper, fold, thickness == null ? Double.NaN : thickness,
+                    stack == null ? -1 : stack, samples, strict), watcher);
+        } catch (ModelFiles.LoadFailure e) {
+            throw LoadedModel.refusal(e);
+        } catch (CheckJob.Unreadable e) {
+            throw new UserError(e.getMessage());
+        } finally {
+            bar.wipe();
+        }
+        PrintWriter out = spec.commandLine().getOut();
+        Map<String, Object> figures = checked.figures();
+        out.println(model + ", " + paper + ": " + figures.get("strips") + (figures.get("strips").equals(1) ? " strip, " : " strips, ")
+                + String.format(java.util.Locale.ROOT, "%,d faces of paper and %,d caps, thickness %s, a stack of %s levels",
+                        (Integer) figures.get("paperFaces"), (Integer) figures.get("capFaces"), figures.get("thickness"), figures.get("stackLayers")));
+        out.println("truths: " + truths(checked.truths(), figures.get("truths")));
+        out.println(checked.collisions() == null ? "collisions: not checked: " + Collisions.NO_THICKNESS
+                : checked.collisions().summary()); // "collisions: ..."
+        if (checked.layerOrder() != null) {
+            out.println(checked.layerOrder().summary()); // "layer order: ..."
+        }
+        out.flush();
+        if (report != null) {
+            String json = Json.write(figures);
+            try {
+                AtomicFile.write(report, stream -> stream.write(json.getBytes(StandardCharsets.UTF_8)), true);
+            } catch (java.io.IOException e) {
+                throw new UserError(report + ": cannot write: " + e.getMessage());
+            }
+        }
+        return checked.holds() ? 0 : UserError.EXIT_CODE;
+    }
+
+    /** A truth's name without its number: "isometric" for "2 isometric". */
+    private static String name(String truth) {
+        return truth.replaceFirst("^\\d+ ", "");
+    }
+
+    /** The truths' line: all hold, or each broken one counted, and the first violation in words. */
+    private static String truths(Map<String, Integer> counts, Object figures) {
+        if (counts.isEmpty()) {
+            List<String> names = new ArrayList<>();
+            for (String truth : List.of(WrapTruths.TILED, WrapTruths.ISOMETRIC, WrapTruths.NOT_TORN, WrapTruths.COVERED, WrapTruths.ON_SURFACE)) {
+                names.add(name(truth));
+            }
+            return "every one holds (" + String.join(", ", names) + ")";
+        }
+        int total = 0;
+        List<String> broken = new ArrayList<>();
+        String first = null;
+        for (Map.Entry<String, Integer> count : counts.entrySet()) {
+            total += count.getValue();
+            broken.add(name(count.getKey()) + " " + String.format(java.util.Locale.ROOT, "%,d", count.getValue()));
+            if (first == null && figures instanceof Map<?, ?> map && map.get(count.getKey()) instanceof Map<?, ?> truth
+                    && truth.get("first") instanceof List<?> listed && !listed.isEmpty()) {
+                first = listed.get(0).toString();
+            }
+        }
+        return String.format(java.util.Locale.ROOT, "%,d %s: %s", total, total == 1 ? "violation" : "violations",
+                String.join(", ", broken)) + (first == null ? "" : "; the first: " + first);
+    }
+}

@@ -1,0 +1,223 @@
+package ifold.job;
+
+import ifold.check.LayerOrder;
+import ifold.check.PaperCollisions;
+import ifold.check.WrapTruths;
+import ifold.mesh.HalfedgeMesh;
+import ifold.mesh.MeshBuilder;
+import java.io.IOException;
+import java.io.Reader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+/**
+ * An exported wrap checked against its model by the independent checkers alone, as
+ * {@code ifold check} runs it: the five truths of a wrap ({@link WrapTruths}: the paper tiles its
+ * strips, is not stretched, not torn, covers the model and lies on it), the collisions
+ * ({@link PaperCollisions}) of the same OBJ file, and where a FOLD file of the wrap is given, its
+ * layer order ({@link LayerOrder}). Nothing of the engine is asked: the thickness and the stack's
+ * height come from the OBJ's header (or the request), the model from its own file. Unlike the
+ * wrap's report, no check is skipped for the paper's size: a scan's half a million faces take
+ * minutes and gigabytes, which the one who asks for them has chosen to spend.
+ */
+public final class CheckJob {
+    private CheckJob() {
+    }
+
+    /**
+     * What to check.
+     *
+     * @param model the model the paper wraps, read and repaired as the wrap reads it
+     * @param paper the OBJ that {@code --export-obj} wrote
+     * @param fold the FOLD file that {@code --export-fold} wrote of the same wrap, or null
+     * @param thickness the paper's thickness, NaN for the OBJ header's
+     * @param stack the levels of the deepest stack, -1 for the OBJ header's
+     * @param samples how many random points of the model the coverage truth tries
+     * @param strict whether a model defect that could be repaired is refused instead
+     */
+    public record Request(Path model, Path paper, Path fold, double thickness, int stack, int samples, boolean strict) {
+    }
+
+    /** The figures of a check, and whether everything checked holds. */
+    public record Checked(Map<String, Object> figures, Map<String, Integer> truths, PaperCollisions.Result collisions,
+            LayerOrder.Result layerOrder) {
+        /**
+         * Whether every truth holds, no paper crosses itself or the model (where it has a
+         * thickness: {@code collisions} is null where it has none), and the layer order (where
+         * checked, else null) is valid.
+         */
+        public boolean holds() {
+            return truths.isEmpty() && (collisions == null || collisions.isClean()) && (layerOrder == null || layerOrder.valid());
+        }
+    }
+
+    /** A request the files cannot answer: an OBJ that is no wrap's, a FOLD file that is none, a header without what the check needs. */
+    public static final class Unreadable extends Exception {
+        private static final long serialVersionUID = 1L;
+
+        Unreadable(String message) {
+            super(message);
+        }
+    }
+
+    /** How many violations of each truth the figures list in words. */
+    static final int LISTED = 5;
+
+    private static final Pattern THICKNESS = Pattern.compile("thickness ([-+0-9.eE]+)");
+    private static final Pattern STACK = Pattern.compile("a stack of (\\d+) levels");
+    private static final Pattern MOVED = Pattern.compile("coordinates about \\(([^,()]+), ([^,()]+), ([^,()]+)\\)");
+
+    /**
+     * Checks the paper.
+     *
+     * @throws ModelFiles.LoadFailure where the model cannot be read or built
+     * @throws Unreadable where the OBJ or FOLD file cannot be read as a wrap, or lacks what the check needs
+     * @throws java.util.concurrent.CancellationException once the watcher says stop
+     */
+    public static Checked run(Request request, JobWatcher watcher) throws ModelFiles.LoadFailure, Unreadable {
+        ModelFiles.Loaded loaded = ModelFiles.loadSurface(request.model(), new MeshBuilder.Options(request.strict(), true), "check against",
+                watcher);
+        HalfedgeMesh mesh = loaded.built().mesh();
+        String text = readText(request.paper());
+        String header = text.startsWith("#") ? text.substring(0, Math.max(0, text.indexOf('\n'))) : "";
+        double thickness = Double.isNaN(request.thickness()) ? headerNumber(THICKNESS, header, request.paper(), "--thickness")
+                : request.thickness();
+        int stack = request.stack() >= 0 ? request.stack() : (int) headerNumber(STACK, header, request.paper(), "--stack");
+        double[] movedBy = movedBy(header, request.paper());
+        watcher.stopIfAsked();
+
+        watcher.stage("reading " + request.paper().getFileName());
+        WrapTruths truths;
+        try {
+            truths = WrapTruths.read(text);
+        } catch (IllegalArgumentException e) {
+            throw new Unreadable(request.paper() + ": " + e.getMessage());
+        }
+        watcher.stopIfAsked();
+        watcher.stage("checking the truths of " + request.paper().getFileName());
+        List<double[]> triangles = new ArrayList<>();
+        double[] flat = Collisions.modelTriangles(mesh);
+        for (int t = 0; t < flat.length / 9; t++) {
+            double[] triangle = new double[9];
+            for (int k = 0; k < 9; k++) {
+                triangle[k] = flat[9 * t + k] - movedBy[k % 3];
+            }
+            triangles.add(triangle);
+            System.arraycopy(triangle, 0, flat, 9 * t, 9);
+        }
+        List<WrapTruths.Violation> violations;
+        try {
+            violations = truths.check(triangles, thickness, stack, request.samples(), 1);
+        } catch (IllegalArgumentException e) {
+            throw new Unreadable(request.model() + ": " + e.getMessage()); // a model of no size or area
+        }
+        watcher.stopIfAsked();
+        PaperCollisions.Result collisions = null;
+        if (thickness > 0) { // paper of no thickness: every two layers that overlap touch, and the layer order is the check
+            watcher.stage("checking " + request.paper().getFileName() + " for collisions");
+            collisions = PaperCollisions.check(text, thickness, flat);
+            watcher.stopIfAsked();
+        }
+        LayerOrder.Result layerOrder = null;
+        if (request.fold() != null) {
+            watcher.stage("checking the layer order of " + request.fold().getFileName());
+            try (Reader reader = Files.newBufferedReader(request.fold(), StandardCharsets.UTF_8)) {
+                layerOrder = LayerOrder.check(reader);
+            } catch (java.nio.file.NoSuchFileException | java.nio.file.AccessDeniedException e) {
+                throw new Unreadable(ModelFiles.readError(request.fold(), e));
+            } catch (IOException | RuntimeException e) {
+                throw new Unreadable(notFold(request.fold(), e));
+            }
+        }
+
+        Map<String, Object> figures = new LinkedHashMap<>();
+        figures.put("model", request.model().toString());
+        figures.put("paper", request.paper().toString());
+        figures.put("strips", truths.strips());
+        figures.put("paperFaces", truths.paperFaces());
+        figures.put("capFaces", truths.capFaces());
+        figures.put("thickness", thickness);
+        figures.put("stackLayers", stack);
+        figures.put("truths", truthFigures(truths.violationCounts(), violations));
+        figures.put("collisions", collisions == null ? Map.of("notChecked", Collisions.NO_THICKNESS) : Collisions.figures(collisions));
+        if (layerOrder != null) {
+            figures.put("layerOrder", LayerOrders.figures(layerOrder));
+        }
+        return new Checked(figures, truths.violationCounts(), collisions, layerOrder);
+    }
+
+    /** {@code "hold"}, or the violations of each truth counted and the first few in words. */
+    static Object truthFigures(Map<String, Integer> counts, List<WrapTruths.Violation> violations) {
+        if (counts.isEmpty()) {
+            return "hold";
+        }
+        Map<String, Object> figures = new LinkedHashMap<>();
+        int total = 0;
+        for (int n : counts.values()) {
+            total += n;
+        }
+        figures.put("violations", total);
+        for (Map.Entry<String, Integer> count : counts.entrySet()) {
+            List<String> first = new ArrayList<>();
+            for (WrapTruths.Violation v : violations) {
+                if (v.truth().equals(count.getKey()) && first.size() < LISTED) {
+                    first.add(v.message());
+                }
+            }
+            Map<String, Object> truth = new LinkedHashMap<>();
+            truth.put("count", count.getValue());
+            truth.put("first", first);
+            figures.put(count.getKey(), truth);
+        }
+        return figures;
+    }
+
+    /** Why {@code fold} is no FOLD file the layer-order check can read, in one line, its line and column where the parser says them. */
+    static String notFold(Path fold, Exception e) {
+        String message = e.getMessage() == null ? e.toString() : e.getMessage();
+        Matcher at = Pattern.compile("line: (\\d+), column: (\\d+)").matcher(message);
+        String where = at.find() ? fold + ":" + at.group(1) + ":" + at.group(2) : fold.toString();
+        return where + ": not a FOLD file the layer order can be read from: " + message.lines().findFirst().orElse(message);
+    }
+
+    private static String readText(Path file) throws Unreadable {
+        try {
+            return Files.readString(file, StandardCharsets.UTF_8);
+        } catch (IOException | RuntimeException e) {
+            throw new Unreadable(ModelFiles.readError(file, e instanceof IOException io ? io : new IOException(e.getMessage(), e)));
+        }
+    }
+
+    private static double headerNumber(Pattern pattern, String header, Path paper, String option) throws Unreadable {
+        Matcher m = pattern.matcher(header);
+        if (!m.find()) {
+            throw new Unreadable(paper + ": its first line names no " + option.substring(2) + " (an OBJ that 'ifold wrap --export-obj' wrote does): give "
+                    + option);
+        }
+        try {
+            return Double.parseDouble(m.group(1));
+        } catch (NumberFormatException e) {
+            throw new Unreadable(paper + ": line 1: not a number: " + m.group(1));
+        }
+    }
+
+    /** Where the wrap moved the model to lie near its centre, as the header says: (0, 0, 0) where it says nothing. */
+    private static double[] movedBy(String header, Path paper) throws Unreadable {
+        Matcher m = MOVED.matcher(header);
+        if (!m.find()) {
+            return new double[3];
+        }
+        try {
+            return new double[] {Double.parseDouble(m.group(1).trim()), Double.parseDouble(m.group(2).trim()), Double.parseDouble(m.group(3).trim())};
+        } catch (NumberFormatException e) {
+            throw new Unreadable(paper + ": line 1: not a point: " + m.group());
+        }
+    }
+}
