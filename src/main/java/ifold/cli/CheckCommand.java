@@ -35,7 +35,7 @@ final class CheckCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "MODEL", description = "the model that was wrapped: an .off, .obj, .ply or .stl file")
+    @Parameters(index = "0", paramLabel = "MODEL", description = "the model that was wrapped: an OFF, OBJ, PLY or STL file")
     Path model;
 
     @Parameters(index = "1", paramLabel = "PAPER.obj", description = "the paper, as 'ifold wrap --export-obj' wrote it")
