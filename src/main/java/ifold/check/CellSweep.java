@@ -37,9 +37,9 @@ final class CellSweep {
     private final long[] here = new long[3];
     private final double[] extent = new double[3];
     /** Each finding's two triangles (the paper one, or the one of the lower face, first), what the test answered. */
-    private final PaperObj.Ints foundA = new PaperObj.Ints();
-    private final PaperObj.Ints foundB = new PaperObj.Ints();
-    private final PaperObj.Ints foundAnswer = new PaperObj.Ints();
+    private final Ints foundA = new Ints();
+    private final Ints foundB = new Ints();
+    private final Ints foundAnswer = new Ints();
     /** Each finding's depth in T (0 when coplanar) and segment (6 numbers). */
     private final PaperObj.Doubles foundDepth = new PaperObj.Doubles();
     private final PaperObj.Doubles foundSegment = new PaperObj.Doubles();

@@ -200,31 +200,6 @@ final class PaperObj {
         }
     }
 
-    /** A growable list of ints. */
-    static final class Ints {
-        private int[] items = new int[16];
-        private int size;
-
-        void add(int value) {
-            if (size == items.length) {
-                items = Arrays.copyOf(items, 2 * size);
-            }
-            items[size++] = value;
-        }
-
-        int size() {
-            return size;
-        }
-
-        int get(int i) {
-            return items[i];
-        }
-
-        int[] toArray() {
-            return Arrays.copyOf(items, size);
-        }
-    }
-
     /** A growable list of doubles. */
     static final class Doubles {
         private double[] items = new double[48];

@@ -1,7 +1,6 @@
 package ifold.check;
 
 import ifold.check.WrapTruths.Faces;
-import ifold.check.WrapTruths.Ints;
 import java.util.List;
 import java.util.SplittableRandom;
 

@@ -1,6 +1,5 @@
 package ifold.check;
 
-import ifold.check.WrapTruths.Ints;
 import java.util.Arrays;
 import java.util.HashMap;
 

@@ -237,7 +237,7 @@ final class TruthIsometry {
     final class SidesNear {
         private final List<ConcaveSide> concave;
         private final TruthGrid grid;
-        private final WrapTruths.Ints candidates = new WrapTruths.Ints();
+        private final Ints candidates = new Ints();
 
         SidesNear(List<ConcaveSide> concave, double top, double eps) {
             this.concave = concave;

@@ -588,34 +588,4 @@ public final class WrapTruths {
             return depth;
         }
     }
-
-    /** A growable list of ints. */
-    static final class Ints {
-        private int[] items = new int[8];
-        private int size;
-
-        void add(int value) {
-            if (size == items.length) {
-                items = Arrays.copyOf(items, 2 * size);
-            }
-            items[size++] = value;
-        }
-
-        int get(int i) {
-            return items[i];
-        }
-
-        int size() {
-            return size;
-        }
-
-        void clear() {
-            size = 0;
-        }
-
-        int[] toArray() {
-            return Arrays.copyOf(items, size);
-        }
-    }
-
 }

@@ -45,7 +45,13 @@ public final class CheckJob {
     public record Request(Path model, Path paper, Path fold, double thickness, int stack, int samples, boolean strict) {
     }
 
-    /** The figures of a check, and whether everything checked holds. */
+    /**
+     * The figures of a check, and whether everything checked holds.
+     *
+     * @param truths the violations of each truth broken, counted ({@link WrapTruths#violationCounts}); empty where every one holds
+     * @param collisions what the collision check found; null for paper of no thickness, not checked
+     * @param layerOrder what the layer-order check found; null where no FOLD file was given
+     */
     public record Checked(Map<String, Object> figures, Map<String, Integer> truths, PaperCollisions.Result collisions,
             LayerOrder.Result layerOrder) {
         /**
@@ -196,15 +202,20 @@ public final class CheckJob {
     }
 
     private static double headerNumber(Pattern pattern, String header, Path paper, String option) throws Unreadable {
+        // The last match: the header names the model first, whose name may hold the words.
         Matcher m = pattern.matcher(header);
-        if (!m.find()) {
+        String found = null;
+        while (m.find()) {
+            found = m.group(1);
+        }
+        if (found == null) {
             throw new Unreadable(paper + ": its first line names no " + option.substring(2) + " (an OBJ that 'ifold wrap --export-obj' wrote does): give "
                     + option);
         }
         try {
-            return Double.parseDouble(m.group(1));
+            return Double.parseDouble(found);
         } catch (NumberFormatException e) {
-            throw new Unreadable(paper + ": line 1: not a number: " + m.group(1));
+            throw new Unreadable(paper + ": line 1: not a number: " + found);
         }
     }
 
