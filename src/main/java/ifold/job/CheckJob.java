@@ -11,6 +11,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -100,30 +101,11 @@ public final class CheckJob {
         watcher.stopIfAsked();
 
         watcher.stage("reading " + request.paper().getFileName());
-        WrapTruths truths;
-        try {
-            truths = WrapTruths.read(text);
-        } catch (IllegalArgumentException e) {
-            throw new Unreadable(request.paper() + ": " + e.getMessage());
-        }
-        watcher.stopIfAsked();
-        watcher.stage("checking the truths of " + request.paper().getFileName());
-        List<double[]> triangles = new ArrayList<>();
         double[] flat = Collisions.modelTriangles(mesh);
-        for (int t = 0; t < flat.length / 9; t++) {
-            double[] triangle = new double[9];
-            for (int k = 0; k < 9; k++) {
-                triangle[k] = flat[9 * t + k] - movedBy[k % 3];
-            }
-            triangles.add(triangle);
-            System.arraycopy(triangle, 0, flat, 9 * t, 9);
+        for (int i = 0; i < flat.length; i++) {
+            flat[i] -= movedBy[i % 3];
         }
-        List<WrapTruths.Violation> violations;
-        try {
-            violations = truths.check(triangles, thickness, stack, request.samples(), 1);
-        } catch (IllegalArgumentException e) {
-            throw new Unreadable(request.model() + ": " + e.getMessage()); // a model of no size or area
-        }
+        Truths truths = truths(text, flat, thickness, stack, request, watcher);
         watcher.stopIfAsked();
         PaperCollisions.Result collisions = null;
         if (thickness > 0) { // paper of no thickness: every two layers that overlap touch, and the layer order is the check
@@ -131,6 +113,7 @@ public final class CheckJob {
             collisions = PaperCollisions.check(text, thickness, flat);
             watcher.stopIfAsked();
         }
+        text = null; // half a gigabyte for a scan's paper: not held through the layer order
         LayerOrder.Result layerOrder = null;
         if (request.fold() != null) {
             watcher.stage("checking the layer order of " + request.fold().getFileName());
@@ -151,12 +134,39 @@ public final class CheckJob {
         figures.put("capFaces", truths.capFaces());
         figures.put("thickness", thickness);
         figures.put("stackLayers", stack);
-        figures.put("truths", truthFigures(truths.violationCounts(), violations));
+        figures.put("truths", truthFigures(truths.counts(), truths.violations()));
         figures.put("collisions", collisions == null ? Map.of("notChecked", Collisions.NO_THICKNESS) : Collisions.figures(collisions));
         if (layerOrder != null) {
             figures.put("layerOrder", LayerOrders.figures(layerOrder));
         }
-        return new Checked(figures, truths.violationCounts(), collisions, layerOrder);
+        return new Checked(figures, truths.counts(), collisions, layerOrder);
+    }
+
+    /** What the truths found, and the paper's counts, without the checker's arrays: a scan's take gigabytes, wanted back before the collisions. */
+    private record Truths(int strips, int paperFaces, int capFaces, Map<String, Integer> counts, List<WrapTruths.Violation> violations) {
+    }
+
+    /** The five truths of the paper of {@code text} on the model's {@code triangles} (nine numbers each, moved as the paper). */
+    private static Truths truths(String text, double[] triangles, double thickness, int stack, Request request, JobWatcher watcher)
+            throws Unreadable {
+        WrapTruths truths;
+        try {
+            truths = WrapTruths.read(text);
+        } catch (IllegalArgumentException e) {
+            throw new Unreadable(request.paper() + ": " + e.getMessage());
+        }
+        watcher.stopIfAsked();
+        watcher.stage("checking the truths of " + request.paper().getFileName());
+        List<double[]> model = new ArrayList<>();
+        for (int t = 0; t < triangles.length / 9; t++) {
+            model.add(Arrays.copyOfRange(triangles, 9 * t, 9 * t + 9));
+        }
+        try {
+            List<WrapTruths.Violation> violations = truths.check(model, thickness, stack, request.samples(), 1);
+            return new Truths(truths.strips(), truths.paperFaces(), truths.capFaces(), truths.violationCounts(), violations);
+        } catch (IllegalArgumentException e) {
+            throw new Unreadable(request.model() + ": " + e.getMessage()); // a model of no size or area
+        }
     }
 
     /** {@code "hold"}, or the violations of each truth counted and the first few in words. */
