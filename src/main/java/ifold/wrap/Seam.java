@@ -371,12 +371,12 @@ public final class Seam {
         }
         if (faces > options.maxFaces()) {
             // No way fits at the width asked (the default: a third of its widest), and the strip
-            // is widened to fit (at a width given, the wrap refused): each way run back too, each triangle left across the side
-            // it was entered by, may take fewer passes or be wider at its narrowest
-            // (igl_fertility.off's plain way: its widest 0.2543 -> 0.4513, 1,930,445 faces
-            // likely at a third of it -> 1,210,416, fewer than any way run forwards). Not where
-            // one fits: the layers change with the way round as with the way, by chance (the
-            // 64 x 32 UV sphere's 48 -> 66, by its pole).
+            // is widened to fit (at a width given, the wrap refused): each way run back too, each
+            // triangle left across the side it was entered by, may take fewer passes or be wider
+            // at its narrowest (igl_fertility.off's plain way: its widest 0.2543 -> 0.4513,
+            // 1,930,445 faces likely at a third of it -> 1,210,416, fewer than any way run
+            // forwards). Not where one fits: the layers change with the way round as with the
+            // way, by chance (the 64 x 32 UV sphere's 48 -> 66, by its pole).
             for (HamiltonianRefinement.Result way : ways) {
                 HamiltonianRefinement.Result back = way.reversed();
                 long likely = Wrap.likelyFaces(back, options.width());
