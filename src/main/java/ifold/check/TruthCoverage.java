@@ -120,7 +120,7 @@ final class TruthCoverage {
             }
         }
         if (uncovered > 0) {
-            report.add(WrapTruths.COVERED, uncovered + " of " + samples + " model points lie under no paper");
+            report.summary(WrapTruths.COVERED, uncovered + " of " + samples + " model points lie under no paper");
         }
     }
 }

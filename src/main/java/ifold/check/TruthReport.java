@@ -11,6 +11,7 @@ import java.util.Map;
 final class TruthReport {
     private final Map<String, List<Violation>> byTruth = new LinkedHashMap<>();
     private final Map<String, Integer> counts = new HashMap<>();
+    private final Map<String, Violation> summaries = new HashMap<>();
 
     TruthReport() {
         for (String truth : List.of(WrapTruths.TILED, WrapTruths.ISOMETRIC, WrapTruths.NOT_TORN, WrapTruths.COVERED, WrapTruths.ON_SURFACE)) {
@@ -36,10 +37,18 @@ final class TruthReport {
         return found;
     }
 
+    /** A line that sums up a truth's violations (how many of the points tried): listed, not counted as one more. */
+    void summary(String truth, String message) {
+        summaries.put(truth, new Violation(truth, message));
+    }
+
     List<Violation> finish() {
         List<Violation> all = new ArrayList<>();
         byTruth.forEach((truth, list) -> {
             all.addAll(list);
+            if (summaries.containsKey(truth)) {
+                all.add(summaries.get(truth));
+            }
             int count = counts.getOrDefault(truth, 0);
             if (count > WrapTruths.LISTED_PER_TRUTH) {
                 all.add(new Violation(truth, (count - WrapTruths.LISTED_PER_TRUTH) + " more violations of this truth not listed"));

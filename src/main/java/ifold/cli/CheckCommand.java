@@ -69,8 +69,9 @@ final class CheckCommand implements Callable<Integer> {
         if (stack != null && stack < 0) {
             throw UserError.usage("option --stack: " + stack + " is not a number of levels (0 or more)");
         }
-        if (samples < 0) {
-            throw UserError.usage("option --samples: " + samples + " is not a number of points (0 or more)");
+        if (samples < 0 || samples > CheckJob.MOST_SAMPLES) {
+            throw UserError.usage(String.format(java.util.Locale.ROOT, "option --samples: %d is not a number of points (0 to %,d)", samples,
+                    CheckJob.MOST_SAMPLES));
         }
         for (Path file : fold == null ? List.of(paper) : List.of(paper, fold)) {
             String notAFile = ModelFiles.notAFile(file); // a missing one: reading it says so
@@ -101,6 +102,10 @@ final class CheckCommand implements Callable<Integer> {
                     stack == null ? -1 : stack, samples, strict), watcher);
         } catch (ModelFiles.LoadFailure e) {
             throw LoadedModel.refusal(e);
+        } catch (CheckJob.TooThick e) {
+            // Too thick as the options say: what the user typed; as the OBJ's header says: its data.
+            throw thickness != null || stack != null ? UserError.usage("option " + (thickness != null ? "--thickness" : "--stack") + ": "
+                    + e.getMessage()) : new UserError(paper + ": " + e.getMessage());
         } catch (CheckJob.Unreadable e) {
             throw new UserError(e.getMessage());
         } finally {

@@ -66,13 +66,30 @@ public final class CheckJob {
     }
 
     /** A request the files cannot answer: an OBJ that is no wrap's, a FOLD file that is none, a header without what the check needs. */
-    public static final class Unreadable extends Exception {
+    public static class Unreadable extends Exception {
         private static final long serialVersionUID = 1L;
 
         Unreadable(String message) {
             super(message);
         }
     }
+
+
+    /**
+     * Paper too thick for the model: its stack, (levels + 1) thicknesses, as high as the model
+     * is big (its bounding box's diagonal). No wrap makes it; checked, the creep zones would
+     * cover the model and the check take for ever.
+     */
+    public static final class TooThick extends Unreadable {
+        private static final long serialVersionUID = 1L;
+
+        TooThick(String message) {
+            super(message);
+        }
+    }
+
+    /** The most random points of the model the coverage truth tries: ten million take minutes. */
+    public static final int MOST_SAMPLES = 10_000_000;
 
     /** How many violations of each truth the figures list in words. */
     static final int LISTED = 5;
@@ -93,11 +110,19 @@ public final class CheckJob {
                 watcher);
         HalfedgeMesh mesh = loaded.built().mesh();
         String text = readText(request.paper());
+        if (text.isBlank()) {
+            throw new Unreadable(request.paper() + ": the file is empty");
+        }
         String header = text.startsWith("#") ? text.substring(0, Math.max(0, text.indexOf('\n'))) : "";
         double thickness = Double.isNaN(request.thickness()) ? headerNumber(THICKNESS, header, request.paper(), "--thickness")
                 : request.thickness();
         int stack = request.stack() >= 0 ? request.stack() : (int) headerNumber(STACK, header, request.paper(), "--stack");
         double[] movedBy = movedBy(header, request.paper());
+        double size = across(flat(mesh));
+        if (!((stack + 1.0) * thickness < size)) {
+            throw new TooThick("a stack of " + stack + " levels of paper " + thickness + " thick stands " + (stack + 1.0) * thickness
+                    + " high, higher than the model is big (" + size + " across): no wrap of it is that thick");
+        }
         watcher.stopIfAsked();
 
         watcher.stage("reading " + request.paper().getFileName());
@@ -155,6 +180,9 @@ public final class CheckJob {
         } catch (IllegalArgumentException e) {
             throw new Unreadable(request.paper() + ": " + e.getMessage());
         }
+        if (truths.paperFaces() == 0) {
+            throw new Unreadable(request.paper() + ": no faces of paper (an OBJ cut short?)");
+        }
         watcher.stopIfAsked();
         watcher.stage("checking the truths of " + request.paper().getFileName());
         List<double[]> model = new ArrayList<>();
@@ -167,6 +195,21 @@ public final class CheckJob {
         } catch (IllegalArgumentException e) {
             throw new Unreadable(request.model() + ": " + e.getMessage()); // a model of no size or area
         }
+    }
+
+    private static double[] flat(HalfedgeMesh mesh) {
+        return Collisions.modelTriangles(mesh);
+    }
+
+    /** The diagonal of the box round these triangles (nine numbers each). */
+    private static double across(double[] triangles) {
+        double[] low = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
+        double[] high = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        for (int i = 0; i < triangles.length; i++) {
+            low[i % 3] = Math.min(low[i % 3], triangles[i]);
+            high[i % 3] = Math.max(high[i % 3], triangles[i]);
+        }
+        return Math.sqrt(Math.pow(high[0] - low[0], 2) + Math.pow(high[1] - low[1], 2) + Math.pow(high[2] - low[2], 2));
     }
 
     /** {@code "hold"}, or the violations of each truth counted and the first few in words. */
@@ -200,12 +243,16 @@ public final class CheckJob {
         String message = e.getMessage() == null ? e.toString() : e.getMessage();
         Matcher at = Pattern.compile("line: (\\d+), column: (\\d+)").matcher(message);
         String where = at.find() ? fold + ":" + at.group(1) + ":" + at.group(2) : fold.toString();
-        return where + ": not a FOLD file the layer order can be read from: " + message.lines().findFirst().orElse(message);
+        // The parser's first line, without where it says it is reading (its location, given above).
+        String said = message.lines().findFirst().orElse(message).replaceAll("\\s*\\(start marker at \\[Source.*$", "").replaceAll("\\s*at \\[Source.*$", "");
+        return where + ": not a FOLD file the layer order can be read from: " + said;
     }
 
     private static String readText(Path file) throws Unreadable {
         try {
             return Files.readString(file, StandardCharsets.UTF_8);
+        } catch (java.nio.charset.CharacterCodingException e) {
+            throw new Unreadable(file + ": not a text file (not UTF-8): an OBJ is text");
         } catch (IOException | RuntimeException e) {
             throw new Unreadable(ModelFiles.readError(file, e instanceof IOException io ? io : new IOException(e.getMessage(), e)));
         }

@@ -122,5 +122,28 @@ class CheckCommandTest {
         Path junk = dir.resolve("junk.obj");
         Files.writeString(junk, "v 1 2\n");
         assertOneLineError(run("check", "models/cube.off", junk.toString(), "--thickness", "0.01", "--stack", "3"), "junk.obj: line 1");
+        // Paper whose stack stands higher than the model is big: no wrap's, and its creep zones would take the check for ever.
+        assertOneLineError(run("check", "models/cube.off", obj.toString(), "--thickness", "1"), "option --thickness", "16.0 high, higher than the model");
+        assertOneLineError(run("check", "models/cube.off", obj.toString(), "--stack", "2147483647"), "option --stack");
+        assertOneLineError(run("check", "models/cube.off", obj.toString(), "--samples", "2147483647"), "option --samples", "0 to 10,000,000");
+        Path thick = dir.resolve("thick.obj");
+        Files.writeString(thick, Files.readString(obj).replace("thickness 0.0029462782549439476", "thickness 0.5"));
+        assertOneLineError(run("check", "models/cube.off", thick.toString()), "thick.obj: a stack of 15 levels of paper 0.5 thick");
+        Path empty = dir.resolve("empty.obj");
+        Files.writeString(empty, "");
+        assertOneLineError(run("check", "models/cube.off", empty.toString()), "empty.obj: the file is empty");
+        Path binary = dir.resolve("binary.obj");
+        Files.write(binary, new byte[] {(byte) 0xff, (byte) 0xfe, 0, 1, (byte) 0x80});
+        assertOneLineError(run("check", "models/cube.off", binary.toString()), "binary.obj: not a text file");
+        Path cut = dir.resolve("cut.obj");
+        String text = Files.readString(obj);
+        Files.writeString(cut, text.substring(0, text.indexOf("\nvt ")));
+        assertOneLineError(run("check", "models/cube.off", cut.toString()), "cut.obj: no faces of paper");
+        Path shortFold = dir.resolve("short.fold");
+        String fold = Files.readString(dir.resolve("paper.fold"));
+        Files.writeString(shortFold, fold.substring(0, fold.length() / 2));
+        CliTest.Run truncated = run("check", "models/cube.off", obj.toString(), "--fold", shortFold.toString());
+        assertOneLineError(truncated, "short.fold:", "not a FOLD file");
+        assertTrue(!truncated.err().contains("[Source"), "no parser's inner words: " + truncated.err());
     }
 }
