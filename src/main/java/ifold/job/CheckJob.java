@@ -5,6 +5,7 @@ import ifold.check.PaperCollisions;
 import ifold.check.WrapTruths;
 import ifold.mesh.HalfedgeMesh;
 import ifold.mesh.MeshBuilder;
+import ifold.wrap.Wrap;
 import java.io.IOException;
 import java.io.Reader;
 import java.nio.charset.StandardCharsets;
@@ -118,7 +119,7 @@ public final class CheckJob {
                 : request.thickness();
         int stack = request.stack() >= 0 ? request.stack() : (int) headerNumber(STACK, header, request.paper(), "--stack");
         double[] movedBy = movedBy(header, request.paper());
-        double size = across(flat(mesh));
+        double size = Wrap.modelSize(mesh);
         if (!((stack + 1.0) * thickness < size)) {
             throw new TooThick("a stack of " + stack + " levels of paper " + thickness + " thick stands " + (stack + 1.0) * thickness
                     + " high, higher than the model is big (" + size + " across): no wrap of it is that thick");
@@ -195,21 +196,6 @@ public final class CheckJob {
         } catch (IllegalArgumentException e) {
             throw new Unreadable(request.model() + ": " + e.getMessage()); // a model of no size or area
         }
-    }
-
-    private static double[] flat(HalfedgeMesh mesh) {
-        return Collisions.modelTriangles(mesh);
-    }
-
-    /** The diagonal of the box round these triangles (nine numbers each). */
-    private static double across(double[] triangles) {
-        double[] low = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
-        double[] high = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
-        for (int i = 0; i < triangles.length; i++) {
-            low[i % 3] = Math.min(low[i % 3], triangles[i]);
-            high[i % 3] = Math.max(high[i % 3], triangles[i]);
-        }
-        return Math.sqrt(Math.pow(high[0] - low[0], 2) + Math.pow(high[1] - low[1], 2) + Math.pow(high[2] - low[2], 2));
     }
 
     /** {@code "hold"}, or the violations of each truth counted and the first few in words. */

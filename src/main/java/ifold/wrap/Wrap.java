@@ -680,7 +680,7 @@ public final class Wrap {
     }
 
     /** The model's size: its bounding box's diagonal (at least 1e-300). */
-    static double modelSize(IndexedPolygons mesh) {
+    public static double modelSize(IndexedPolygons mesh) {
         double[] min = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
         double[] max = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
         for (int v = 0; v < mesh.vertexCount(); v++) {

@@ -111,6 +111,9 @@ class CheckCommandTest {
         assertOneLineError(run("check", "models/cube.off", dir.resolve("none.obj").toString()), "none.obj: no such file");
         assertOneLineError(run("check", "models/cube.off", obj.toString(), "--stack", "-1"), "option --stack");
         assertOneLineError(run("check", "models/cube.off", obj.toString(), "--thickness", "-0.1"), "option --thickness");
+        assertOneLineError(run("check", "models/cube.off", obj.toString(), "--thickness", "NaN"), "option --thickness");
+        assertOneLineError(run("check", "models/cube.off", obj.toString(), "--samples", "-1"), "option --samples");
+        assertOneLineError(run("check", "models/cube.off", obj.toString(), "--report", dir.resolve("r.txt").toString()), "option --report");
         assertOneLineError(run("check", "models/cube.off", obj.toString(), "--fold", obj.toString()), "paper.obj:1:1: not a FOLD file");
         Path bare = dir.resolve("bare.obj");
         List<String> lines = new ArrayList<>(Files.readAllLines(obj));
