@@ -43,19 +43,15 @@ final class TruthCoverage {
     }
 
     /**
-     * Whether model point p, on a triangle of outward normal n, lies within the widest creep zone
-     * of the model's concave edges of a crept face on its plane (one truth 2 let stand back from
-     * a concave edge): where layers joined at a crease creep by different amounts, the crease
-     * opens a sliver no wider than that, which can run from the edge along the crease; a gap
-     * any wider, or beside paper that did not creep, is a hole. Folds back to back on one
-     * crease stand back from it by {@code foldCreep} (a thickness) at most: under their bends.
+     * Whether model point p, on a triangle of outward normal n, lies within {@code widest} of a
+     * crept face on its plane (one truth 2 let stand back from a concave edge or a cut between
+     * coplanar hosts): where layers joined at a crease creep by different amounts, the crease
+     * opens a sliver no wider than the widest creep zone, which can run from the edge along the
+     * crease; and a fold nested along a cut stands back a thickness for each fold wrapping it
+     * along the whole of its crease, beyond where those folds end, over bare surface no wider
+     * than that. A gap any wider, or beside paper that did not creep, is a hole.
      */
-    static boolean nearPaper(double[] p, double[] n, Faces geometry, List<TruthIsometry.ConcaveSide> concave, double top, double eps,
-            Ints candidates, boolean[] crept, double foldCreep) {
-        double widest = foldCreep;
-        for (TruthIsometry.ConcaveSide side : concave) {
-            widest = Math.max(widest, top * (side.mitre() + 1));
-        }
+    boolean nearPaper(double[] p, double[] n, Faces geometry, double top, double eps, Ints candidates, boolean[] crept, double widest) {
         if (widest == 0) {
             return false;
         }
@@ -66,11 +62,55 @@ final class TruthCoverage {
                 Math.max(p[1], p[1] + reach * n[1]) + around, Math.max(p[2], p[2] + reach * n[2]) + around, candidates);
         for (int k = 0; k < candidates.size(); k++) {
             int f = geometry.paper[candidates.get(k)];
-            if (crept[f] && depthOver(geometry, f, p, n, top, eps) >= -widest - eps) {
+            if (crept[f] && (depthOver(geometry, f, p, n, top, eps) >= -widest - eps || gapTo(f, p, n, top, eps) <= widest + eps)) {
                 return true;
             }
         }
         return false;
+    }
+
+    /**
+     * How far model point p, on a triangle of outward normal n, lies across from crept face f, seen
+     * along n: 0 under it, else the distance to its nearest side; infinity where a corner of f is
+     * not between 0 and {@code top} above p. Unlike {@link #depthOver} this does not ask f's own
+     * normal: the crept faces at a bend are often squashed to slivers (the paper that went into
+     * the bend), whose normal is noise; they lie where the bend begins.
+     */
+    double gapTo(int f, double[] p, double[] n, double top, double eps) {
+        int start = wrap.faceStart[f];
+        int count = wrap.faceStart[f + 1] - start;
+        // The corners seen along n, in a frame (e1, e2) of the plane across n through p.
+        double[] e1 = TruthIsometry.crossed(n, Math.abs(n[0]) < 0.9 ? new double[] {1, 0, 0} : new double[] {0, 1, 0});
+        double l1 = Math.sqrt(TruthIsometry.times(e1, e1));
+        for (int d = 0; d < 3; d++) {
+            e1[d] /= l1;
+        }
+        double[] e2 = TruthIsometry.crossed(n, e1);
+        double[] u = new double[count];
+        double[] v = new double[count];
+        for (int i = 0; i < count; i++) {
+            int c = 3 * wrap.cornerV[start + i];
+            double[] r = {wrap.xyz[c] - p[0], wrap.xyz[c + 1] - p[1], wrap.xyz[c + 2] - p[2]};
+            double height = TruthIsometry.times(r, n);
+            if (height < -eps || height > top + eps) {
+                return Double.POSITIVE_INFINITY;
+            }
+            u[i] = TruthIsometry.times(r, e1);
+            v[i] = TruthIsometry.times(r, e2);
+        }
+        boolean inside = false;
+        double nearest = Double.POSITIVE_INFINITY;
+        for (int i = 0, j = count - 1; i < count; j = i++) {
+            if ((v[i] > 0) != (v[j] > 0) && 0 < u[j] + (u[i] - u[j]) * (0 - v[j]) / (v[i] - v[j])) {
+                inside = !inside;
+            }
+            double du = u[i] - u[j];
+            double dv = v[i] - v[j];
+            double lengthSquared = du * du + dv * dv;
+            double t = lengthSquared == 0 ? 0 : Math.max(0, Math.min(1, -(u[j] * du + v[j] * dv) / lengthSquared));
+            nearest = Math.min(nearest, Math.hypot(u[j] + t * du, v[j] + t * dv));
+        }
+        return inside ? 0 : nearest;
     }
 
     /**
@@ -90,8 +130,13 @@ final class TruthCoverage {
         return geometry.spaceDepth(f, new double[] {p[0] + height * n[0], p[1] + height * n[1], p[2] + height * n[2]});
     }
 
+    /**
+     * Truth 4. {@code concave}: the model's concave sides, whose creep zones lie under the paper
+     * across; {@code creepWidth}: the widest gap beside crept paper that is no hole ({@link
+     * #nearPaper}).
+     */
     void checkCovered(TruthReport report, TruthModel model, Faces geometry, double eps, double top, int samples, long seed,
-            List<TruthIsometry.ConcaveSide> concave, boolean[] crept, double foldCreep) {
+            List<TruthIsometry.ConcaveSide> concave, boolean[] crept, double creepWidth) {
         SplittableRandom random = new SplittableRandom(seed);
         double[] p = new double[3];
         Ints candidates = new Ints();
@@ -114,7 +159,7 @@ final class TruthCoverage {
             for (int k = 0; k < candidates.size() && !covered; k++) {
                 covered = depthOver(geometry, geometry.paper[candidates.get(k)], p, n, top, eps) >= -eps;
             }
-            if (!covered && !inCreepZone(p, n, concave, top, eps) && !nearPaper(p, n, geometry, concave, top, eps, candidates, crept, foldCreep)) {
+            if (!covered && !inCreepZone(p, n, concave, top, eps) && !nearPaper(p, n, geometry, top, eps, candidates, crept, creepWidth)) {
                 uncovered++;
                 report.add(WrapTruths.COVERED, "model point " + WrapTruths.point(p) + " of triangle " + (t + 1) + " lies under no paper face");
             }

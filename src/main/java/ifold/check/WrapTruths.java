@@ -31,7 +31,9 @@ import java.util.Map;
  * (paper whose layer ends by a concave edge, pressed onto the line where it ends: truth 2 holds
  * their corners to the creep zone);</li>
  * <li>{@link #COVERED}: random points of the model lie under paper (but within the creep zone
- * of a concave edge, truth 2, where thick paper stands back from the edge);</li>
+ * of a concave edge, truth 2, where thick paper stands back from the edge and the paper across
+ * covers it; and beside paper that truth 2 let creep, within its creep zone: a fold nested along
+ * a cut stands back along the whole of its crease, beyond where the folds wrapping it end);</li>
  * <li>{@link #ON_SURFACE}: every paper face lies flat on the model, outside the solid and at most
  * (maxStack + 1) thicknesses above it: on one model triangle, or over triangles of one plane that
  * cover all of it (the strip lies flat across the edges between coplanar triangles); every cap
@@ -371,12 +373,16 @@ public final class WrapTruths {
         boolean[] crept = new boolean[faces()];
         isometry.checkIsometry(report, creepSides, thickness, maxStack, eps, crept);
         neighbours.checkNotTorn(report, eps, 2 * top);
-        boolean foldsCrept = false;
-        for (int f = 0; f < faces() && !foldsCrept; f++) {
-            foldsCrept = crept[f];
+        // Beside crept paper the surface may lie bare as far as truth 2 let it creep: the widest
+        // creep zone of a concave edge or a cut (the stack's height over a cut), or a thickness
+        // where folds back to back on one crease stand back from it, under their bends.
+        // (Only crept faces excuse a gap, and faces creep only where paper is thick.)
+        double creepWidth = thickness;
+        for (TruthIsometry.ConcaveSide side : creepSides) {
+            creepWidth = Math.max(creepWidth, top * (side.mitre() + 1));
         }
         coverage.checkCovered(report, model, geometry, eps, top, coverageSamples, seed, thickness > 0 ? concave : List.of(), crept,
-                foldsCrept ? thickness : 0);
+                creepWidth);
         surface.checkOnSurface(report, model, geometry, eps, top);
         violationCounts = report.counts();
         return report.finish();

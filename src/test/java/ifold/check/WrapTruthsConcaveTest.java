@@ -280,4 +280,73 @@ class WrapTruthsConcaveTest {
         List<Violation> violations = check(obj, SLIGHT_FOLD, T);
         assertTrue(violations.stream().noneMatch(v -> v.truth().equals(WrapTruths.ISOMETRIC)), violations.toString());
     }
+    /** An L of three unit squares in z = 0 (normal +z): A at the origin, B beside it along x, C beside it along y; the side x = 1 between A and B is a cut of a non-convex face. */
+    private static final List<double[]> FLAT_L = List.of(
+            new double[] {0, 0, 0, 1, 0, 0, 1, 1, 0},
+            new double[] {0, 0, 0, 1, 1, 0, 0, 1, 0},
+            new double[] {1, 0, 0, 2, 0, 0, 2, 1, 0},
+            new double[] {1, 0, 0, 2, 1, 0, 1, 1, 0},
+            new double[] {0, 1, 0, 1, 1, 0, 1, 2, 0},
+            new double[] {0, 1, 0, 1, 2, 0, 0, 2, 0});
+
+    /**
+     * The L's paper: B and C each under a square of their own, and A under a face that stands
+     * back {@code gap} from the cut x = 1, its sheet {@code squashed} longer than its place.
+     */
+    private static String flatL(double gap, double squashed) {
+        double x = 1 - gap;
+        double u = x + squashed;
+        return """
+                o strip-1
+                v 1 0 0.005
+                vt 0 0
+                v 2 0 0.005
+                vt 1 0
+                v 2 1 0.005
+                vt 1 1
+                v 1 1 0.005
+                vt 0 1
+                g paper
+                f 1/1 2/2 3/3 4/4
+                o strip-2
+                v 0 1 0.005
+                vt 0 0
+                v 1 1 0.005
+                vt 1 0
+                v 1 2 0.005
+                vt 1 1
+                v 0 2 0.005
+                vt 0 1
+                g paper
+                f 5/5 6/6 7/7 8/8
+                o strip-3
+                v 0 0 0.005
+                vt 0 0
+                v %s 0 0.005
+                vt %s 0
+                v %s 1 0.005
+                vt %s 1
+                v 0 1 0.005
+                vt 0 1
+                g paper
+                f 9/9 10/10 11/11 12/12
+                """.formatted(x, u, x, u);
+    }
+
+    /**
+     * Paper crept back from a cut between coplanar hosts (a fold nested along it stands back a
+     * thickness for each fold wrapping it, along the whole of its crease) leaves the surface
+     * beside the cut bare no wider than the stack is high, as truth 2 lets it creep: no hole
+     * (figure3's wrap had such a band, 2.5 thicknesses wide, by a fold wrapped along part of its
+     * length). Wider than that, or beside paper that did not creep, it is a hole.
+     */
+    @Test
+    void paperCreptBackFromACutLeavesNoHoleWithinItsCreep() {
+        // The check's stack of 1 level: paper stands at most 2 T = 0.02 high.
+        assertEquals(List.of(), check(flatL(0.015, 0.001), FLAT_L, T), "crept 0.015 back: within the creep");
+        List<Violation> isometric = check(flatL(0.015, 0), FLAT_L, T);
+        assertEquals(Set.of(WrapTruths.COVERED), truths(isometric), "placed 0.015 back without creeping: a hole");
+        List<Violation> far = check(flatL(0.03, 0.001), FLAT_L, T);
+        assertBroken(far, WrapTruths.COVERED, "of triangle 1 ", "lies under no paper face");
+    }
 }

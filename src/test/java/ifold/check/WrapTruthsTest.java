@@ -504,4 +504,36 @@ class WrapTruthsTest {
         assertEquals(List.of(), violations);
         assertTrue(seconds < 20, "took " + seconds + " s");
     }
+    /**
+     * The gap from a model point to a crept face seen along the normal does not ask the face's
+     * own normal: a sliver squashed where a fold's bend begins, wound the wrong way round (its
+     * normal -z over a +z triangle), is 0 away from a point under it, the distance to its long
+     * side from one beside it and to its end from one beyond it, and nowhere where it lies above
+     * the highest paper may lie.
+     */
+    @Test
+    void theGapToASquashedSliverIsMeasuredInTheModelsPlane() {
+        WrapTruths sliver = WrapTruths.read("""
+                o strip-1
+                v 0.5 0.0 0.005
+                vt 0.0 0.0
+                v 0.5 1.0 0.005
+                vt 0.0 1.0
+                v 0.5000001 1.0 0.005
+                vt 0.1 1.0
+                v 0.5000001 0.0 0.005
+                vt 0.1 0.0
+                g paper
+                f 1/1 4/4 3/3 2/2
+                """);
+        TruthCoverage coverage = new TruthCoverage(sliver);
+        double[] up = {0, 0, 1};
+        double eps = 1e-9;
+        assertEquals(0.0, coverage.gapTo(0, new double[] {0.50000005, 0.5, 0}, up, 0.01, eps));
+        assertEquals(0.003, coverage.gapTo(0, new double[] {0.4970000, 0.5, 0}, up, 0.01, eps), 1e-12);
+        assertEquals(0.004 - 1e-7, coverage.gapTo(0, new double[] {0.504, 0.25, 0}, up, 0.01, eps), 1e-12);
+        assertEquals(0.002, coverage.gapTo(0, new double[] {0.5, 1.002, 0}, up, 0.01, eps), 1e-12);
+        assertEquals(Double.POSITIVE_INFINITY, coverage.gapTo(0, new double[] {0.5, 0.5, 0}, up, 0.004, eps));
+        assertEquals(Double.POSITIVE_INFINITY, coverage.gapTo(0, new double[] {0.5, 0.5, 0.006}, up, 0.01, eps));
+    }
 }

@@ -60,6 +60,11 @@ public class WrapTest {
      * report against the file, and the layer order of its FOLD file.
      */
     static void check(Path dir, Wrap.Result result, IndexedPolygons model, int components, int samples) throws Exception {
+        check(dir, result, model, components, samples, 7);
+    }
+
+    /** As {@link #check(Path, Wrap.Result, IndexedPolygons, int, int)}, the coverage truth's points drawn from {@code seed}. */
+    static void check(Path dir, Wrap.Result result, IndexedPolygons model, int components, int samples, long seed) throws Exception {
         List<PaperInSpace> geometries = new ArrayList<>();
         for (Wrap.Strip strip : result.strips()) {
             geometries.add(PaperInSpace.of(strip.sheet(), result.frames()));
@@ -69,7 +74,7 @@ public class WrapTest {
         WrapExport.writeObj(obj, "test", result, geometries);
         WrapTruths truths = WrapTruths.read(Files.readString(obj));
         List<double[]> triangles = triangles(model);
-        List<WrapTruths.Violation> violations = truths.check(triangles, result.thickness(), analysis.stackLevels(), samples, 7);
+        List<WrapTruths.Violation> violations = truths.check(triangles, result.thickness(), analysis.stackLevels(), samples, seed);
         assertTrue(violations.isEmpty(), () -> violations.size() + " violations, the first: " + violations.subList(0, Math.min(5, violations.size())));
         // The report agrees with the file.
         assertEquals(components, truths.strips(), "one strip per component");
