@@ -338,8 +338,16 @@ final class BendRoom {
         return below;
     }
 
-    /** The least cosine between a convex edge and the normal of a face it leaves that stops paper on it: steeper faces need no stop. */
-    private static final double LEAST_COSINE = 0.1;
+    /**
+     * The least cosine between a convex edge and the normal of a face it leaves that stops paper
+     * on it: a face rising at least 30 degrees over the edge's line (a polycube's wall at 90, a
+     * roof at 45). A stop keeps paper from the corner as far as that face's stack is high over
+     * the sine of its rise, which grows without bound as the face lies flatter, where its layers
+     * meet the edge's as on one plane and no stop is needed: at 0.1 a bumpy sphere's gentle
+     * corners (faces rising 6 to 30 degrees) kept paper up to 6.7 stacks from them, its faces
+     * stretched, torn and crossing (docs/wrap.md, Limits).
+     */
+    private static final double LEAST_COSINE = 0.5;
 
     /**
      * The stops at corner {@code at} of the convex mesh edge from there to {@code to} between

@@ -1103,13 +1103,7 @@ final class ConcaveWalls {
             }
         }
         // Two edges at a corner sharper than 90 degrees, each move off one bringing it nearer the other: where their lines meet.
-        for (int k = 0; k < n; k++) {
-            for (int j = k + 1; j < n; j++) {
-                if (keep[k] > 0 && keep[j] > 0 && (frame.inside(k, out) < keep[k] * (1 - 1e-9) || frame.inside(j, out) < keep[j] * (1 - 1e-9))) {
-                    frame.meet(k, keep[k], j, keep[j], out);
-                }
-            }
-        }
+        frame.meetNearest(keep, out);
     }
 
     /**
