@@ -221,11 +221,16 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
 
     /**
      * Moves point p, which falls short of the lines {@code keep[k]} in from edges k (0: no line),
-     * to where two of those lines meet: of the pairs it falls short of one at least, the meeting
-     * nearest p. Each such pair met in turn, the last won: in a pit (a triangle whose three edges
-     * are concave) paper by one corner went where the two edges of another corner meet, across
-     * the triangle: a bumpy sphere's squashed slivers stretched from end to end of an edge, 0.14
-     * in space for 3e-5 on the sheet, and its layers "crept" 1,304 thicknesses.
+     * to where two of those lines meet: of the pairs that hold it between them, the meeting
+     * nearest p. A pair holds it where it falls short of both, or where moved straight in from
+     * the one it falls short of it would fall short of the other. Each pair it fell short of one
+     * of met in turn, the last won: in a pit (a triangle whose three edges are concave) paper by
+     * one corner went where the two edges of another corner meet, across the triangle (a bumpy
+     * sphere's squashed slivers stretched from end to end of an edge, 0.14 in space for 3e-5 on
+     * the sheet, its layers "creeping" 1,304 thicknesses); and paper on an edge whose mitre is
+     * a hair's breadth (a turn of 0.0024 degrees), moved in by the hair and left short again by
+     * rounding round after round, went to the far end of that edge, where the next edge's mitre
+     * meets it (the elephant with holes, 1,503 thicknesses).
      *
      * @return whether p moved
      */
@@ -237,7 +242,7 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
         double[] q = new double[2];
         for (int k = 0; k < n; k++) {
             for (int j = k + 1; j < n; j++) {
-                if (keep[k] > 0 && keep[j] > 0 && (inside(k, p) < keep[k] * (1 - 1e-9) || inside(j, p) < keep[j] * (1 - 1e-9))) {
+                if (keep[k] > 0 && keep[j] > 0 && holds(k, keep[k], j, keep[j], p)) {
                     q[0] = Double.NaN;
                     meet(k, keep[k], j, keep[j], q);
                     double distance = Math.hypot(q[0] - p[0], q[1] - p[1]);
@@ -255,6 +260,30 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
         p[0] = nearestX;
         p[1] = nearestY;
         return true;
+    }
+
+    /** Whether the lines {@code keepK} in from edge k and {@code keepJ} in from edge j hold point p between them ({@link #meetNearest}). */
+    private boolean holds(int k, double keepK, int j, double keepJ, double[] p) {
+        double shortK = keepK - inside(k, p);
+        double shortJ = keepJ - inside(j, p);
+        boolean beforeK = shortK > keepK * 1e-9;
+        boolean beforeJ = shortJ > keepJ * 1e-9;
+        if (beforeK && beforeJ) {
+            return true;
+        }
+        if (!beforeK && !beforeJ) {
+            return false;
+        }
+        // Straight in from the one it falls short of: short of the other then?
+        int from = beforeK ? k : j;
+        int other = beforeK ? j : k;
+        double need = beforeK ? shortK : shortJ;
+        double dx = edgeDx(from);
+        double dy = edgeDy(from);
+        double length = Polygons2.length(dx, dy);
+        double[] moved = {p[0] - dy / length * need, p[1] + dx / length * need};
+        double keepOther = beforeK ? keepJ : keepK;
+        return keepOther - inside(other, moved) > keepOther * 1e-9;
     }
 
     /**

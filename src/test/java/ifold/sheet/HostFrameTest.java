@@ -143,4 +143,31 @@ class HostFrameTest {
         assertFalse(stopped.stopped(tops, 1e-12, over, at), "a face across with no paper on it stops nothing");
         assertThrows(IllegalArgumentException.class, () -> SQUARE.withStops(new HostFrame.Stop[] {new HostFrame.Stop(4, 0, 1, 0, 1)}));
     }
+    /**
+     * A pit: a triangle whose three edges are concave. Paper by one corner, held there between
+     * two mitres, goes where those two meet, not where another corner's do (each pair met in
+     * turn, the last won: across the triangle); and paper on an edge whose mitre is a hair's
+     * breadth stays by where it lay, not sent to the far end of that edge, where the next edge's
+     * mitre meets it (moved in by the hair, rounding left it short again round after round).
+     */
+    @Test
+    void inAPitPaperMeetsTheMitresOfItsOwnCorner() {
+        // Corners (0, 0), (1, 0), (0.4, 1): edges 0 (base), 1 and 2 (back to the origin), all concave by 90 degrees.
+        HostFrame pit = host(new double[] {0, 0, 1, 0, 0.4, 1}, new double[][] {{0, 1, 1}, {0, Math.hypot(0.6, 1), 1}, {0, Math.hypot(0.4, 1), 1}});
+        double[] at = new double[2];
+        assertTrue(pit.mitred(0.01, 0.005, 0.05, at));
+        double toBase = at[1];
+        double toEdge2 = pit.inside(2, at);
+        assertTrue(Math.hypot(at[0], at[1]) < 0.2, "by the origin, where edges 0 and 2 meet: " + at[0] + ", " + at[1]);
+        assertTrue(toBase >= 0.05 - 1e-12 && toEdge2 >= 0.05 - 1e-12, "0.05 from both: " + toBase + ", " + toEdge2);
+
+        // Edge 2's mitre a turn of 0.0024 degrees, edge 1's of 0.7: a host of the elephant with
+        // holes, and a corner of a piece of paper on edge 2 two and a half thicknesses up (its numbers).
+        HostFrame gentle = host(new double[] {0, 0, 0.025673047228562493, 0, 0.009111924533825535, 0.022383074194128647},
+                new double[][] {null, {0, 0.027843720931118372, 0.006083959160276323}, {0, 0.024166695659315927, 2.0822114818028354E-5}});
+        double[] onEdge2 = {0.0017022697770602536, 0.004181556879325518};
+        assertTrue(Math.abs(gentle.inside(2, onEdge2)) < 1e-12, "check the setup: on edge 2");
+        gentle.mitred(onEdge2[0], onEdge2[1], 0.0019281604574434928, 0.004701787437474755, 2.5 * 1.3067365247860811E-5, at);
+        assertTrue(Math.hypot(at[0] - onEdge2[0], at[1] - onEdge2[1]) < 1e-8, "stays by where it lay: " + at[0] + ", " + at[1]);
+    }
 }
