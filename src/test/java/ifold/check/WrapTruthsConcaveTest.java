@@ -37,30 +37,25 @@ class WrapTruthsConcaveTest {
 
     /** As {@link #insideCorner(double, double)}, the sheets {@code up} from the surface. */
     private static String insideCorner(double floorIn, double wallIn, double up) {
-        return String.format(java.util.Locale.ROOT, """
-                o strip-1
-                v %1$s 0 %3$s
-                vt 0 0
-                v 1 0 %3$s
-                vt 1 0
-                v 1 1 %3$s
-                vt 1 1
-                v %1$s 1 %3$s
-                vt 0 1
-                g paper
-                f 1/1 2/2 3/3 4/4
-                o strip-2
-                v %3$s 0 %2$s
-                vt 0 0
-                v %3$s 1 %2$s
-                vt 1 0
-                v %3$s 1 1
-                vt 1 1
-                v %3$s 0 1
-                vt 0 1
-                g paper
-                f 5/5 6/6 7/7 8/8
-                """, floorIn, wallIn, up);
+        return quad(1, new double[][] {{floorIn, 0, up}, {1, 0, up}, {1, 1, up}, {floorIn, 1, up}}, 1, 1)
+                + quad(2, new double[][] {{up, 0, wallIn}, {up, 1, wallIn}, {up, 1, 1}, {up, 0, 1}}, 1, 1);
+    }
+
+    /**
+     * Strip {@code strip} of the file: one face, its sheet the rectangle [0, u] x [0, v] laid on
+     * the four {@code corners} in space (counter-clockwise on the sheet from its origin); its
+     * vertices numbered on from the strips before, four each.
+     */
+    private static String quad(int strip, double[][] corners, double u, double v) {
+        double[][] sheet = {{0, 0}, {u, 0}, {u, v}, {0, v}};
+        StringBuilder obj = new StringBuilder("o strip-" + strip + "\n");
+        for (int k = 0; k < 4; k++) {
+            obj.append(String.format(java.util.Locale.ROOT, "v %s %s %s%nvt %s %s%n", corners[k][0], corners[k][1], corners[k][2], sheet[k][0],
+                    sheet[k][1]));
+        }
+        int first = 4 * (strip - 1) + 1;
+        return obj.append(String.format("g paper%nf %d/%d %d/%d %d/%d %d/%d%n", first, first, first + 1, first + 1, first + 2, first + 2, first + 3,
+                first + 3)).toString();
     }
 
     /**
@@ -280,7 +275,11 @@ class WrapTruthsConcaveTest {
         List<Violation> violations = check(obj, SLIGHT_FOLD, T);
         assertTrue(violations.stream().noneMatch(v -> v.truth().equals(WrapTruths.ISOMETRIC)), violations.toString());
     }
-    /** An L of three unit squares in z = 0 (normal +z): A at the origin, B beside it along x, C beside it along y; the side x = 1 between A and B is a cut of a non-convex face. */
+
+    /**
+     * An L of three unit squares in z = 0 (normal +z): A at the origin, B beside it along x, C
+     * beside it along y; the side x = 1 between A and B is a cut of a non-convex face.
+     */
     private static final List<double[]> FLAT_L = List.of(
             new double[] {0, 0, 0, 1, 0, 0, 1, 1, 0},
             new double[] {0, 0, 0, 1, 1, 0, 0, 1, 0},
@@ -295,42 +294,9 @@ class WrapTruthsConcaveTest {
      */
     private static String flatL(double gap, double squashed) {
         double x = 1 - gap;
-        double u = x + squashed;
-        return """
-                o strip-1
-                v 1 0 0.005
-                vt 0 0
-                v 2 0 0.005
-                vt 1 0
-                v 2 1 0.005
-                vt 1 1
-                v 1 1 0.005
-                vt 0 1
-                g paper
-                f 1/1 2/2 3/3 4/4
-                o strip-2
-                v 0 1 0.005
-                vt 0 0
-                v 1 1 0.005
-                vt 1 0
-                v 1 2 0.005
-                vt 1 1
-                v 0 2 0.005
-                vt 0 1
-                g paper
-                f 5/5 6/6 7/7 8/8
-                o strip-3
-                v 0 0 0.005
-                vt 0 0
-                v %s 0 0.005
-                vt %s 0
-                v %s 1 0.005
-                vt %s 1
-                v 0 1 0.005
-                vt 0 1
-                g paper
-                f 9/9 10/10 11/11 12/12
-                """.formatted(x, u, x, u);
+        return quad(1, new double[][] {{1, 0, 0.005}, {2, 0, 0.005}, {2, 1, 0.005}, {1, 1, 0.005}}, 1, 1)
+                + quad(2, new double[][] {{0, 1, 0.005}, {1, 1, 0.005}, {1, 2, 0.005}, {0, 2, 0.005}}, 1, 1)
+                + quad(3, new double[][] {{0, 0, 0.005}, {x, 0, 0.005}, {x, 1, 0.005}, {0, 1, 0.005}}, x + squashed, 1);
     }
 
     /**
