@@ -29,7 +29,7 @@ final class TruthSurface {
             boolean rests = false;
             for (int k = 0; k < candidates.size() && !rests; k++) {
                 int t = candidates.get(k);
-                if (!WrapTruths.parallel(geometry.normal(f), model.normal(t)) && !(squashed(f) && equallyHigh(f, model, t, eps))) {
+                if (!WrapTruths.parallel(geometry.normal(f), model.normal(t)) && !equallyHigh(f, model, t, eps)) {
                     continue;
                 }
                 parallels++;
@@ -124,7 +124,7 @@ final class TruthSurface {
         int plane = -1;
         for (int k = 0; k < candidates.size() && plane < 0; k++) {
             int t = candidates.get(k);
-            if (!WrapTruths.parallel(geometryNormal(f), model.normal(t)) && !(squashed(f) && equallyHigh(f, model, t, eps))) {
+            if (!WrapTruths.parallel(geometryNormal(f), model.normal(t)) && !equallyHigh(f, model, t, eps)) {
                 continue;
             }
             boolean within = true;
@@ -330,7 +330,14 @@ final class TruthSurface {
         return Math.sqrt(TruthIsometry.times(n, n)) / 2 < 1e-3 * Math.abs(sheetArea(f));
     }
 
-    /** Whether every corner of face f stands equally high above model triangle t's plane. */
+    /**
+     * Whether every corner of face f stands equally high above model triangle t's plane, to
+     * {@code eps}: the face lies parallel to it as closely as lengths are measured, though its
+     * own normal says otherwise. That normal is noise for a face squashed to a sliver (crept at a
+     * concave edge) and for a speck: on fertility's wrap, triangles of paper 7·10⁻⁶ across (its
+     * size about 150) leaned by more than the 10⁻⁷ radians of {@link WrapTruths#PARALLEL}, their
+     * corners as high as each other to the lengths' tolerance: 5 faces "off the surface".
+     */
     boolean equallyHigh(int f, TruthModel model, int t, double eps) {
         double low = Double.POSITIVE_INFINITY;
         double high = Double.NEGATIVE_INFINITY;

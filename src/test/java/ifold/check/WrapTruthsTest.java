@@ -387,6 +387,39 @@ class WrapTruthsTest {
         assertBroken(violations, WrapTruths.ON_SURFACE, "face 1", "none within reach is parallel to it");
     }
 
+    /**
+     * A speck of paper leaning far more than {@link WrapTruths#PARALLEL} whose corners stand as
+     * high as each other to the lengths' tolerance rests on its triangle: its normal is noise
+     * (fertility's wrap had five such, 7e-6 across); leaning so that they do not, it is off.
+     */
+    @Test
+    void aSpeckRestsWhereItsCornersAreEquallyHigh() {
+        String speck = """
+                o strip-1
+                v 0.0 0.0 0.005
+                vt 0.0 0.0
+                v 1e-8 0.0 %s
+                vt 1e-8 0.0
+                v 0.0 1e-8 0.005
+                vt 0.0 1e-8
+                v 1.0 0.0 0.005
+                vt 1.0 0.0
+                v 1.0 1.0 0.005
+                vt 1.0 1.0
+                v 0.0 1.0 0.005
+                vt 0.0 1.0
+                g paper
+                f 1/1 2/2 3/3
+                f 2/2 4/4 5/5 6/6 3/3
+                """;
+        // Leaning 0.05 radians: its corners 5e-10 apart in height, under the square's 1.4e-9.
+        List<Violation> leaning = WrapTruths.read(speck.formatted(0.005 + 5e-10)).check(SQUARE, T, 1, 0, 7);
+        assertTrue(leaning.stream().noneMatch(v -> v.truth().equals(WrapTruths.ON_SURFACE)), leaning.toString());
+        // Leaning 0.5 radians: 5e-9 apart, off.
+        List<Violation> off = WrapTruths.read(speck.formatted(0.005 + 5e-9)).check(SQUARE, T, 1, 0, 7);
+        assertBroken(off, WrapTruths.ON_SURFACE, "face 1", "none within reach is parallel to it");
+    }
+
     @Test
     void faceOverhangingItsTriangleIsOffTheSurface() {
         // Slid 0.1 along x: the faces stick out of the square and of their triangles.
