@@ -44,8 +44,8 @@ final class TruthCoverage {
 
     /**
      * Whether model point p, on a triangle of outward normal n, lies within {@code widest} of a
-     * crept face on its plane (one truth 2 let stand back from a concave edge or a cut between
-     * coplanar hosts): where layers joined at a crease creep by different amounts, the crease
+     * crept face on a plane parallel to its own (one truth 2 let stand back from a concave edge or
+     * a cut between coplanar hosts): where layers joined at a crease creep by different amounts, the crease
      * opens a sliver no wider than the widest creep zone, which can run from the edge along the
      * crease; and a fold nested along a cut stands back a thickness for each fold wrapping it
      * along the whole of its crease, beyond where those folds end, over bare surface no wider
@@ -72,9 +72,10 @@ final class TruthCoverage {
     /**
      * How far model point p, on a triangle of outward normal n, lies across from crept face f, seen
      * along n: 0 under it, else the distance to its nearest side; infinity where a corner of f is
-     * not between 0 and {@code top} above p. Unlike {@link #depthOver} this does not ask f's own
-     * normal: the crept faces at a bend are often squashed to slivers (the paper that went into
-     * the bend), whose normal is noise; they lie where the bend begins.
+     * not between 0 and {@code top} above p, or its corners are not equally high above p's plane
+     * (to {@code eps}: f lies on a plane parallel to the triangle's). Unlike {@link #depthOver}
+     * this does not ask f's own normal: the crept faces at a bend are often squashed to slivers
+     * (the paper that went into the bend), whose normal is noise; they lie where the bend begins.
      */
     double gapTo(int f, double[] p, double[] n, double top, double eps) {
         int start = wrap.faceStart[f];
@@ -88,11 +89,15 @@ final class TruthCoverage {
         double[] e2 = TruthIsometry.crossed(n, e1);
         double[] u = new double[count];
         double[] v = new double[count];
+        double lowest = Double.POSITIVE_INFINITY;
+        double highest = Double.NEGATIVE_INFINITY;
         for (int i = 0; i < count; i++) {
             int c = 3 * wrap.cornerV[start + i];
             double[] r = {wrap.xyz[c] - p[0], wrap.xyz[c + 1] - p[1], wrap.xyz[c + 2] - p[2]};
             double height = TruthIsometry.times(r, n);
-            if (height < -eps || height > top + eps) {
+            lowest = Math.min(lowest, height);
+            highest = Math.max(highest, height);
+            if (height < -eps || height > top + eps || highest - lowest > eps) {
                 return Double.POSITIVE_INFINITY;
             }
             u[i] = TruthIsometry.times(r, e1);

@@ -542,7 +542,7 @@ class WrapTruthsTest {
      * own normal: a sliver squashed where a fold's bend begins, wound the wrong way round (its
      * normal -z over a +z triangle), is 0 away from a point under it, the distance to its long
      * side from one beside it and to its end from one beyond it, and nowhere where it lies above
-     * the highest paper may lie.
+     * the highest paper may lie or on a plane not parallel to the point's triangle.
      */
     @Test
     void theGapToASquashedSliverIsMeasuredInTheModelsPlane() {
@@ -568,5 +568,10 @@ class WrapTruthsTest {
         assertEquals(0.002, coverage.gapTo(0, new double[] {0.5, 1.002, 0}, up, 0.01, eps), 1e-12);
         assertEquals(Double.POSITIVE_INFINITY, coverage.gapTo(0, new double[] {0.5, 0.5, 0}, up, 0.004, eps));
         assertEquals(Double.POSITIVE_INFINITY, coverage.gapTo(0, new double[] {0.5, 0.5, 0.006}, up, 0.01, eps));
+        // Seen from a triangle it does not lie parallel to (tilted 0.1 about the x axis), every
+        // corner between 0 and 0.2 above it: no gap to it.
+        double[] tilted = {0, Math.sin(0.1), Math.cos(0.1)};
+        assertEquals(Double.POSITIVE_INFINITY, coverage.gapTo(0, new double[] {0.497, 0.5, -0.06}, tilted, 0.2, eps));
+        assertEquals(0.003, coverage.gapTo(0, new double[] {0.497, 0.5, -0.06}, up, 0.2, eps), 1e-12);
     }
 }
