@@ -44,12 +44,12 @@ final class TruthCoverage {
 
     /**
      * Whether model point p, on a triangle of outward normal n, lies within {@code widest} of a
-     * crept face on a plane parallel to its own (one truth 2 let stand back from a concave edge or
-     * a cut between coplanar hosts): where layers joined at a crease creep by different amounts, the crease
-     * opens a sliver no wider than the widest creep zone, which can run from the edge along the
-     * crease; and a fold nested along a cut stands back a thickness for each fold wrapping it
-     * along the whole of its crease, beyond where those folds end, over bare surface no wider
-     * than that. A gap any wider, or beside paper that did not creep, is a hole.
+     * crept face on a plane parallel to its own (one truth 2 let stand back from a concave edge
+     * or a cut between coplanar hosts): where layers joined at a crease creep by different
+     * amounts, the crease opens a sliver no wider than the widest creep zone, which can run from
+     * the edge along the crease; and a fold nested along a cut stands back a thickness for each
+     * fold wrapping it along the whole of its crease, beyond where those folds end, over bare
+     * surface no wider than that. A gap any wider, or beside paper that did not creep, is a hole.
      */
     boolean nearPaper(double[] p, double[] n, Faces geometry, double top, double eps, Ints candidates, boolean[] crept, double widest) {
         if (widest == 0) {
