@@ -1198,6 +1198,9 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 }
                 pieces = next;
             }
+            if (pieces.size() > 1) {
+                mergeNearCuts(pieces, tiny);
+            }
             if (pieces.size() <= 1) {
                 // Whole: met by no region, or lying wholly in one (placed whole, pressed onto its line).
                 return pieces.size() == 1 && inside.contains(pieces.get(0)) ? new FacePieces(pieces, new boolean[] {true}) : null;
@@ -1283,6 +1286,126 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                 piece.clear(); // the same list: which pieces lie in a region is known by the list
                 piece.addAll(joined);
             }
+        }
+
+        /**
+         * Makes two cut points one where they lie on one cut closer than {@code tiny}: a line that
+         * cut the pieces on one side of a cut but not those on the other (a region nearer the edge
+         * that they already lay in) left a point beside the other side's, too near to be put on
+         * its edge ({@link #joinCuts}), and the pieces either side met at different points, placed
+         * on different walls with no cap between (a thickness apart on a bumpy sphere, where the
+         * bands of two walls 2·10⁻⁷ apart crossed the start of a region). The point kept is one on
+         * a side of the face (shared with the face across it), else the one made first. Two points
+         * are not joined where that would leave a piece fewer than three corners or take the length
+         * from a side of the face: the side's paper would be lost to its bend (a sliver between a
+         * crease and a cut 5·10⁻⁸ off it).
+         */
+        private void mergeNearCuts(List<List<Corner>> pieces, double tiny) {
+            java.util.Map<Integer, Corner> byId = new java.util.LinkedHashMap<>();
+            for (List<Corner> piece : pieces) {
+                for (Corner c : piece) {
+                    if (c.id < 0) {
+                        byId.putIfAbsent(c.id, c);
+                    }
+                }
+            }
+            if (byId.size() < 2) {
+                return;
+            }
+            List<Corner> cuts = new ArrayList<>(byId.values());
+            java.util.Map<Integer, Integer> kept = new java.util.HashMap<>();
+            for (List<Corner> piece : pieces) {
+                for (int k = 0; k < piece.size(); k++) {
+                    Corner here = piece.get(k);
+                    Corner there = piece.get((k + 1) % piece.size());
+                    double dx = there.x - here.x;
+                    double dy = there.y - here.y;
+                    double length = Math.hypot(dx, dy);
+                    if (here.side >= 0 || !(length > 0)) {
+                        continue; // along the face's own side, or of no length
+                    }
+                    for (Corner c : cuts) {
+                        if (c.id == here.id || c.id == there.id) {
+                            continue;
+                        }
+                        double off = Math.abs((c.x - here.x) * dy - (c.y - here.y) * dx) / length;
+                        if (!(off <= 1e-6 * tiny)) {
+                            continue; // not a crossing of this cut's line
+                        }
+                        for (Corner end : new Corner[] {here, there}) {
+                            if (end.id < 0 && Math.hypot(c.x - end.x, c.y - end.y) <= tiny) {
+                                join(kept, c.id, end.id, pieces);
+                            }
+                        }
+                    }
+                }
+            }
+            if (kept.isEmpty()) {
+                return;
+            }
+            for (List<Corner> piece : pieces) {
+                List<Corner> merged = new ArrayList<>(piece.size());
+                for (Corner c : piece) {
+                    int id = c.id < 0 ? keptOf(kept, c.id) : c.id;
+                    Corner k = id == c.id ? c : byId.get(id);
+                    merged.add(k == c ? c : new Corner(k.x, k.y, k.u, k.v, k.id, c.side));
+                }
+                for (int k = merged.size() - 1; k >= 0 && merged.size() > 1; k--) {
+                    if (merged.get(k).id == merged.get((k + 1) % merged.size()).id) {
+                        merged.remove(k); // a cut of no length: the next corner starts the edge after it
+                    }
+                }
+                piece.clear(); // the same list: which pieces lie in a region is known by the list
+                piece.addAll(merged);
+            }
+        }
+
+        /**
+         * Joins cut points a and b in {@code kept} (each point to the one kept for it), keeping one
+         * on a side of the face, else the one made first; not where both lie on sides, or where a
+         * piece would lose its area or a side its length ({@link #mergeNearCuts}).
+         */
+        private void join(java.util.Map<Integer, Integer> kept, int a, int b, List<List<Corner>> pieces) {
+            a = keptOf(kept, a);
+            b = keptOf(kept, b);
+            if (a == b) {
+                return;
+            }
+            boolean aOnSide = cutPoints.get(CUT_POINT * (-1 - a) + 4) >= 0;
+            boolean bOnSide = cutPoints.get(CUT_POINT * (-1 - b) + 4) >= 0;
+            if (aOnSide && bOnSide) {
+                return; // both shared with faces across: neither may move
+            }
+            boolean keepA = aOnSide || !bOnSide && a > b; // made first: the nearer zero
+            int gone = keepA ? b : a;
+            int stays = keepA ? a : b;
+            kept.put(gone, stays);
+            for (List<Corner> piece : pieces) {
+                int corners = 0;
+                for (int k = 0; k < piece.size(); k++) {
+                    Corner here = piece.get(k);
+                    Corner there = piece.get((k + 1) % piece.size());
+                    boolean noLength = here.id < 0 && there.id < 0 && keptOf(kept, here.id) == keptOf(kept, there.id);
+                    if (noLength && here.side >= 0) {
+                        corners = -1;
+                        break;
+                    }
+                    corners += noLength ? 0 : 1;
+                }
+                if (corners < 3) {
+                    kept.remove(gone);
+                    return;
+                }
+            }
+        }
+
+        /** The cut point kept for {@code id} ({@link #join}). */
+        private static int keptOf(java.util.Map<Integer, Integer> kept, int id) {
+            Integer next;
+            while ((next = kept.get(id)) != null) {
+                id = next;
+            }
+            return id;
         }
 
         private static void add(List<List<Corner>> pieces, List<Corner> piece) {
