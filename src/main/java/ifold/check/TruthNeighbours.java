@@ -65,8 +65,8 @@ final class TruthNeighbours {
                     for (int end = 0; end < 2; end++) {
                         double u = shared[2 * end];
                         double v = shared[2 * end + 1];
-                        wrap.toSpace(f, u, v, a);
-                        wrap.toSpace(h, u, v, b);
+                        onSide(f, edgeCorner.get(e), u, v, a);
+                        onSide(h, edgeCorner.get(g), u, v, b);
                         double apart = WrapTruths.distance(a, 0, b, 0);
                         if (apart <= eps) {
                             continue;
@@ -81,6 +81,28 @@ final class TruthNeighbours {
                     }
                 }
             }
+        }
+    }
+
+    /**
+     * Face f's point in space at sheet point (u, v) on its side from corner c: between the side's
+     * two corners as they lie, as far along as the point is. Two sides lie on one line to the
+     * shared segment's tolerance, which is wider along a long strip than the billionth of the face
+     * by which the point was taken to lie on the side: beyond that, it was mapped through three
+     * corners of the face, and a face whose corners are not its rigid image (squashed onto a wall,
+     * standing back from a concave edge) put it elsewhere. The CGAL elephant with holes had 18
+     * "tears" so, each between a piece along the strip's border and one squashed above it whose
+     * side ran up from the border at a slope of 10⁻⁵.
+     */
+    void onSide(int f, int c, double u, double v, double[] out) {
+        int n = nextCorner(f, c);
+        int a = wrap.cornerT[c];
+        int b = wrap.cornerT[n];
+        double su = wrap.uv[2 * b] - wrap.uv[2 * a];
+        double sv = wrap.uv[2 * b + 1] - wrap.uv[2 * a + 1];
+        double along = Math.max(0, Math.min(1, ((u - wrap.uv[2 * a]) * su + (v - wrap.uv[2 * a + 1]) * sv) / (su * su + sv * sv)));
+        for (int d = 0; d < 3; d++) {
+            out[d] = wrap.xyz[3 * wrap.cornerV[c] + d] + along * (wrap.xyz[3 * wrap.cornerV[n] + d] - wrap.xyz[3 * wrap.cornerV[c] + d]);
         }
     }
 
@@ -154,13 +176,6 @@ final class TruthNeighbours {
         int a = wrap.cornerT[ca];
         int b = wrap.cornerT[cb];
         return Math.hypot(wrap.uv[2 * b] - wrap.uv[2 * a], wrap.uv[2 * b + 1] - wrap.uv[2 * a + 1]);
-    }
-
-    double sheetCross(int ca, int cb, int cc) {
-        int a = wrap.cornerT[ca];
-        int b = wrap.cornerT[cb];
-        int c = wrap.cornerT[cc];
-        return (wrap.uv[2 * b] - wrap.uv[2 * a]) * (wrap.uv[2 * c + 1] - wrap.uv[2 * a + 1]) - (wrap.uv[2 * b + 1] - wrap.uv[2 * a + 1]) * (wrap.uv[2 * c] - wrap.uv[2 * a]);
     }
 
     /** The vertices of strip s's cap faces, each once. */
