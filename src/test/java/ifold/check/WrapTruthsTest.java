@@ -624,4 +624,42 @@ class WrapTruthsTest {
         assertBroken(check(paper.replace("Z", "0.0075"), longBox, T), WrapTruths.NOT_TORN, "face 2 (line 26, strip-1) and face 4 (line 28, strip-1)",
                 "with no cap there");
     }
+
+    /**
+     * Three corners lie on one plane: a sliver triangle congruent to its sheet triangle is
+     * isometric, though the normal found from its corners is rounding (the CGAL elephant's, 6e-9
+     * high and 1.6e-3 long, had its far corner 3.8e-12 off the plane so found, four billionths of
+     * its size); a quadrilateral bent as much is not.
+     */
+    @Test
+    void aSliverTriangleIsFlatWhateverItsNormal() {
+        WrapTruths sliver = WrapTruths.read("""
+                o strip-1
+                v 0.2510447432033847 0.0827657355902774 -0.009030432057403453
+                vt 3.0519023087182338 0.0
+                v 0.251719705903706 0.08334605690637605 -0.007861812964347554
+                vt 3.0533713281399564 0.0
+                v 0.2517197112576472 0.08334605393642193 -0.00786180695829938
+                vt 3.0533713342045226 6.06456639676442E-9
+                g paper
+                f 1/1 2/2 3/3
+                """);
+        StringBuilder why = new StringBuilder();
+        assertTrue(sliver.isometry.isometryError(0, why) <= WrapTruths.RELATIVE, why.toString());
+        WrapTruths bent = WrapTruths.read("""
+                o strip-1
+                v 0.0 0.0 0.0
+                vt 0.0 0.0
+                v 1.0 0.0 0.0
+                vt 1.0 0.0
+                v 1.0 1.0 1e-8
+                vt 1.0 1.0
+                v 0.0 1.0 0.0
+                vt 0.0 1.0
+                g paper
+                f 1/1 2/2 3/3 4/4
+                """);
+        assertTrue(bent.isometry.isometryError(0, why) > WrapTruths.RELATIVE, why.toString());
+        assertTrue(why.toString().contains("off the face's plane"), why.toString());
+    }
 }
