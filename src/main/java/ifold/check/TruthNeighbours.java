@@ -95,6 +95,16 @@ final class TruthNeighbours {
      * side ran up from the border at a slope of 10⁻⁵.
      */
     void onSide(int f, int c, double u, double v, double[] out) {
+        // A corner of the face at the point is where the face puts it, whichever side was paired
+        // (the cow's sliver of a side 2.6e-9 long lay on the line of another side of its face to
+        // the tolerance, and read along that one, its corner came out 2.6e-9 from its cap).
+        double near = WrapTruths.RELATIVE * Math.max(wrap.surface.sheetSize(f), wrap.stripW[wrap.faceStrip[f]]);
+        for (int k = wrap.faceStart[f]; k < wrap.faceStart[f + 1]; k++) {
+            if (Math.hypot(wrap.uv[2 * wrap.cornerT[k]] - u, wrap.uv[2 * wrap.cornerT[k] + 1] - v) <= near) {
+                System.arraycopy(wrap.xyz, 3 * wrap.cornerV[k], out, 0, 3);
+                return;
+            }
+        }
         int n = nextCorner(f, c);
         int a = wrap.cornerT[c];
         int b = wrap.cornerT[n];

@@ -619,6 +619,33 @@ class WrapTruthsTest {
                 """;
         List<Violation> violations = check(paper.replace("Z", "0.005"), longBox, T);
         assertTrue(!truths(violations).contains(WrapTruths.NOT_TORN), violations.toString());
+        // A face's own corner is read where it lies, whichever of its sides was paired: face 1's
+        // side D-A, 8e-9 long and squashed to a point in space, lies on the line of its side A-B
+        // to the tolerance, and face 2 across it stands a quarter of a thickness up, capped.
+        String squashedSide = """
+                o strip-1
+                v 1.0 1.0 0.005
+                vt 1.0 1.0
+                v 0.0 1.0 0.005
+                vt 0.0 1.0
+                v 0.2 0.95 0.005
+                vt 0.2 0.95
+                v 1.0 1.0 0.005
+                vt 0.999999992 0.9999999995
+                v 1.0 1.0 0.0075
+                vt 1.0 1.0
+                v 0.999999992 0.9999999995 0.0075
+                vt 0.999999992 0.9999999995
+                v 1.0 0.8 0.0075
+                vt 1.0 0.8
+                g paper
+                f 1 2 3 4
+                f 5 6 7
+                g cap
+                f 4 1 5 6
+                """;
+        List<Violation> squashed = check(squashedSide, SQUARE, T);
+        assertTrue(!truths(squashed).contains(WrapTruths.NOT_TORN), squashed.toString());
         assertBroken(violations, WrapTruths.ISOMETRIC, "face 4"); // the corner a thousandth short
         // The slivers a quarter of a thickness up, with no cap: torn from face 4, as they lie.
         assertBroken(check(paper.replace("Z", "0.0075"), longBox, T), WrapTruths.NOT_TORN, "face 2 (line 26, strip-1) and face 4 (line 28, strip-1)",
