@@ -243,7 +243,7 @@ public record HostFrame(double[] origin, double[] ex, double[] ey, double[] norm
         for (int k = 0; k < n; k++) {
             for (int j = k + 1; j < n; j++) {
                 if (keep[k] > 0 && keep[j] > 0 && holds(k, keep[k], j, keep[j], p)) {
-                    q[0] = Double.NaN;
+                    q[0] = Double.NaN; // left so where the lines do not meet in the polygon: no distance
                     meet(k, keep[k], j, keep[j], q);
                     double distance = Math.hypot(q[0] - p[0], q[1] - p[1]);
                     if (distance < least) {

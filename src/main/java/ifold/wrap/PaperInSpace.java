@@ -1225,15 +1225,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          * that the two are joined corner to corner, where a cap closes any gap between them.
          */
         private static void joinCuts(List<List<Corner>> pieces, double tiny) {
-            java.util.Map<Integer, Corner> byId = new java.util.LinkedHashMap<>();
-            for (List<Corner> piece : pieces) {
-                for (Corner c : piece) {
-                    if (c.id < 0) {
-                        byId.putIfAbsent(c.id, c);
-                    }
-                }
-            }
-            List<Corner> cuts = new ArrayList<>(byId.values());
+            List<Corner> cuts = new ArrayList<>(cutCorners(pieces).values());
             for (int p = 0; p < pieces.size(); p++) {
                 List<Corner> piece = pieces.get(p);
                 List<Corner> joined = new ArrayList<>(piece.size());
@@ -1301,14 +1293,7 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
          * crease and a cut 5·10⁻⁸ off it).
          */
         private void mergeNearCuts(List<List<Corner>> pieces, double tiny) {
-            java.util.Map<Integer, Corner> byId = new java.util.LinkedHashMap<>();
-            for (List<Corner> piece : pieces) {
-                for (Corner c : piece) {
-                    if (c.id < 0) {
-                        byId.putIfAbsent(c.id, c);
-                    }
-                }
-            }
+            java.util.Map<Integer, Corner> byId = cutCorners(pieces);
             if (byId.size() < 2) {
                 return;
             }
@@ -1397,6 +1382,19 @@ public record PaperInSpace(double[] xyz, double[] uv, List<int[]> paperFaces, in
                     return;
                 }
             }
+        }
+
+        /** The pieces' corners on cuts, each point once (the first corner made of it), in the order met. */
+        private static java.util.Map<Integer, Corner> cutCorners(List<List<Corner>> pieces) {
+            java.util.Map<Integer, Corner> byId = new java.util.LinkedHashMap<>();
+            for (List<Corner> piece : pieces) {
+                for (Corner c : piece) {
+                    if (c.id < 0) {
+                        byId.putIfAbsent(c.id, c);
+                    }
+                }
+            }
+            return byId;
         }
 
         /** The cut point kept for {@code id} ({@link #join}). */
