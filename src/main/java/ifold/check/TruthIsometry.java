@@ -132,6 +132,96 @@ final class TruthIsometry {
         return cuts;
     }
 
+    /**
+     * The least cosine between a convex edge and the normal of a face at its end that keeps
+     * paper from that end ({@link #stopSides}): a face rising 30 degrees or more across the edge.
+     * Looser than any wrap keeps to, so the truth does not hang on where a wrap draws that line;
+     * the zone it allows is at most two stacks long.
+     */
+    static final double LEAST_STOP_COSINE = 0.5;
+
+    /**
+     * Both sides of the end of each convex edge where a face at that corner rises across the
+     * wedge of air above the edge (a wall the edge runs into: a polycube's step, a pit's rim
+     * on a scan), as a side of no mitre along the edge from the corner, as long as the stack
+     * stands high ({@code top}) over the cosine between the edge and that face's normal. The
+     * face's layers stand that far out along the edge, where paper bent over the edge would run
+     * into them: the ends of creases along the edge keep from the corner by as much, and the
+     * faces whose sides they end are shorter by as much, as paper creeps at a concave edge.
+     */
+    static List<ConcaveSide> stopSides(TruthModel model, double eps, double top) {
+        int n = model.corners.length / 9;
+        List<ConcaveSide> stops = new ArrayList<>();
+        if (!(top > 0)) {
+            return stops;
+        }
+        Map<String, List<Integer>> trianglesAt = new HashMap<>();
+        for (int t = 0; t < n; t++) {
+            for (int k = 0; k < 3; k++) {
+                trianglesAt.computeIfAbsent(Arrays.toString(corner(model, t, k)), key -> new ArrayList<>()).add(t);
+            }
+        }
+        Map<String, int[]> sides = new HashMap<>();
+        for (int t = 0; t < n; t++) {
+            for (int k = 0; k < 3; k++) {
+                double[] a = corner(model, t, k);
+                double[] b = corner(model, t, (k + 1) % 3);
+                int[] other = sides.remove(Arrays.toString(b) + Arrays.toString(a));
+                if (other == null) {
+                    sides.put(Arrays.toString(a) + Arrays.toString(b), new int[] {t, k});
+                    continue;
+                }
+                int u = other[0];
+                double below = 0; // how far the far corner of u lies below t's plane: convex where it does
+                for (int c = 0; c < 3; c++) {
+                    below = Math.min(below, model.height(t, model.corners, 9 * u + 3 * c));
+                }
+                if (below >= -eps) {
+                    continue; // flat or concave
+                }
+                for (double[][] ends : new double[][][] {{a, b}, {b, a}}) {
+                    stopsAt(model, trianglesAt.get(Arrays.toString(ends[0])), ends[0], ends[1], t, u, top, stops);
+                }
+            }
+        }
+        return stops;
+    }
+
+    /** The stops ({@link #stopSides}) at corner {@code at} of the convex edge from there to {@code to} between triangles t and u. */
+    private static void stopsAt(TruthModel model, List<Integer> around, double[] at, double[] to, int t, int u, double top,
+            List<ConcaveSide> stops) {
+        double[] along = minus(to, at);
+        double length = Math.sqrt(times(along, along));
+        double[] nt = model.normal(t);
+        double[] nu = model.normal(u);
+        double reach = 1e-3 * length;
+        double[] over = new double[3]; // a point a little out over the edge, in the wedge of air above it
+        for (int d = 0; d < 3; d++) {
+            along[d] /= length;
+            over[d] = at[d] + reach * (nt[d] + nu[d]);
+        }
+        double most = 0;
+        double[] weights = new double[3];
+        for (int w : around) {
+            double cos = times(along, model.normal(w));
+            if (w == t || w == u || !(cos >= LEAST_STOP_COSINE)) {
+                continue;
+            }
+            model.barycentric(w, over, 0, weights);
+            if (Math.min(weights[0], Math.min(weights[1], weights[2])) >= -1e-6) {
+                most = Math.max(most, top / cos);
+            }
+        }
+        if (most > 0) {
+            double[] end = new double[3];
+            for (int d = 0; d < 3; d++) {
+                end[d] = at[d] + Math.min(most, length) * along[d];
+            }
+            stops.add(new ConcaveSide(nt, at, end, 0));
+            stops.add(new ConcaveSide(nu, at, end, 0));
+        }
+    }
+
     private static double[] corner(TruthModel model, int t, int k) {
         return Arrays.copyOfRange(model.corners, 9 * t + 3 * k, 9 * t + 3 * k + 3);
     }

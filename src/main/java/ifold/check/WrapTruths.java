@@ -25,7 +25,11 @@ import java.util.Map;
  * its height times tan(φ/2) in from it (the plane halving the wedge of air above the edge,
  * which the layers of the face across keep to from the other side); and so at an edge between
  * coplanar triangles of a plane region that is not convex, where the wrap may cut the region into
- * convex hosts (a cut: φ = 0, no mitre to keep from);</li>
+ * convex hosts (a cut: φ = 0, no mitre to keep from); and at the end of a convex edge where a
+ * face at that corner rises across the edge (at least 30 degrees), whose layers stand out along
+ * it as far as the stack is high over the cosine between the edge and that face's normal: paper
+ * bent over the edge keeps from the corner by as much (a zone along the edge that long, a stack
+ * wide, with no mitre);</li>
  * <li>{@link #NOT_TORN}: faces that are neighbours on the sheet are neighbours in space (or
  * joined by a cap across at most a few thicknesses), but for two squashed to a sliver in space
  * (paper whose layer ends by a concave edge, pressed onto the line where it ends: truth 2 holds
@@ -370,6 +374,8 @@ public final class WrapTruths {
         // Folds tucked along a cut between coplanar hosts stand back from it as at a concave edge.
         List<TruthIsometry.ConcaveSide> creepSides = new ArrayList<>(concave);
         creepSides.addAll(TruthIsometry.cutSides(model, eps));
+        // Paper over a convex edge keeps from its end where a face rises across it, as far as that face's stack stands out.
+        creepSides.addAll(TruthIsometry.stopSides(model, eps, top));
         boolean[] crept = new boolean[faces()];
         isometry.checkIsometry(report, creepSides, thickness, maxStack, eps, crept);
         neighbours.checkNotTorn(report, eps, 2 * top);

@@ -1,18 +1,14 @@
 package ifold.cli;
 
-import ifold.check.WrapTruths;
 import ifold.io.AtomicFile;
 import ifold.job.CheckJob;
-import ifold.job.Collisions;
 import ifold.job.JobWatcher;
 import ifold.job.Json;
 import ifold.job.ModelFiles;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
-import java.util.Map;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -112,19 +108,12 @@ final class CheckCommand implements Callable<Integer> {
             bar.wipe();
         }
         PrintWriter out = spec.commandLine().getOut();
-        Map<String, Object> figures = checked.figures();
-        out.println(model + ", " + paper + ": " + figures.get("strips") + (figures.get("strips").equals(1) ? " strip, " : " strips, ")
-                + String.format(java.util.Locale.ROOT, "%,d faces of paper and %,d caps, thickness %s, a stack of %s levels",
-                        (Integer) figures.get("paperFaces"), (Integer) figures.get("capFaces"), figures.get("thickness"), figures.get("stackLayers")));
-        out.println("truths: " + truths(checked.truths(), figures.get("truths")));
-        out.println(checked.collisions() == null ? "collisions: not checked: " + Collisions.NO_THICKNESS
-                : checked.collisions().summary()); // "collisions: ..."
-        if (checked.layerOrder() != null) {
-            out.println(checked.layerOrder().summary()); // "layer order: ..."
+        for (String line : CheckJob.lines(checked, model + ", " + paper)) {
+            out.println(line);
         }
         out.flush();
         if (report != null) {
-            String json = Json.write(figures);
+            String json = Json.write(checked.figures());
             try {
                 AtomicFile.write(report, stream -> stream.write(json.getBytes(StandardCharsets.UTF_8)), true);
             } catch (java.io.IOException e) {
@@ -132,34 +121,5 @@ final class CheckCommand implements Callable<Integer> {
             }
         }
         return checked.holds() ? 0 : UserError.EXIT_CODE;
-    }
-
-    /** A truth's name without its number: "isometric" for "2 isometric". */
-    private static String name(String truth) {
-        return truth.replaceFirst("^\\d+ ", "");
-    }
-
-    /** The truths' line: all hold, or each broken one counted, and the first violation in words. */
-    private static String truths(Map<String, Integer> counts, Object figures) {
-        if (counts.isEmpty()) {
-            List<String> names = new ArrayList<>();
-            for (String truth : List.of(WrapTruths.TILED, WrapTruths.ISOMETRIC, WrapTruths.NOT_TORN, WrapTruths.COVERED, WrapTruths.ON_SURFACE)) {
-                names.add(name(truth));
-            }
-            return "every one holds (" + String.join(", ", names) + ")";
-        }
-        int total = 0;
-        List<String> broken = new ArrayList<>();
-        String first = null;
-        for (Map.Entry<String, Integer> count : counts.entrySet()) {
-            total += count.getValue();
-            broken.add(name(count.getKey()) + " " + String.format(java.util.Locale.ROOT, "%,d", count.getValue()));
-            if (first == null && figures instanceof Map<?, ?> map && map.get(count.getKey()) instanceof Map<?, ?> truth
-                    && truth.get("first") instanceof List<?> listed && !listed.isEmpty()) {
-                first = listed.get(0).toString();
-            }
-        }
-        return String.format(java.util.Locale.ROOT, "%,d %s: %s", total, total == 1 ? "violation" : "violations",
-                String.join(", ", broken)) + (first == null ? "" : "; the first: " + first);
     }
 }

@@ -198,6 +198,55 @@ public final class CheckJob {
         }
     }
 
+    /**
+     * The check in lines, as {@code ifold check} prints them and the window shows them: what was
+     * checked ({@code what}: the files' names) and the paper's counts; the truths; the
+     * collisions; the layer order where a FOLD file was checked.
+     */
+    public static List<String> lines(Checked checked, String what) {
+        Map<String, Object> figures = checked.figures();
+        List<String> lines = new ArrayList<>();
+        lines.add(what + ": " + figures.get("strips") + (figures.get("strips").equals(1) ? " strip, " : " strips, ")
+                + String.format(java.util.Locale.ROOT, "%,d faces of paper and %,d caps, thickness %s, a stack of %s levels",
+                        (Integer) figures.get("paperFaces"), (Integer) figures.get("capFaces"), figures.get("thickness"), figures.get("stackLayers")));
+        lines.add("truths: " + truthsLine(checked.truths(), figures.get("truths")));
+        lines.add(checked.collisions() == null ? "collisions: not checked: " + Collisions.NO_THICKNESS
+                : checked.collisions().summary()); // "collisions: ..."
+        if (checked.layerOrder() != null) {
+            lines.add(checked.layerOrder().summary()); // "layer order: ..."
+        }
+        return lines;
+    }
+
+    /** A truth's name without its number: "isometric" for "2 isometric". */
+    private static String name(String truth) {
+        return truth.replaceFirst("^\\d+ ", "");
+    }
+
+    /** The truths' line: all hold, or each broken one counted, and the first violation in words. */
+    private static String truthsLine(Map<String, Integer> counts, Object figures) {
+        if (counts.isEmpty()) {
+            List<String> names = new ArrayList<>();
+            for (String truth : List.of(WrapTruths.TILED, WrapTruths.ISOMETRIC, WrapTruths.NOT_TORN, WrapTruths.COVERED, WrapTruths.ON_SURFACE)) {
+                names.add(name(truth));
+            }
+            return "every one holds (" + String.join(", ", names) + ")";
+        }
+        int total = 0;
+        List<String> broken = new ArrayList<>();
+        String first = null;
+        for (Map.Entry<String, Integer> count : counts.entrySet()) {
+            total += count.getValue();
+            broken.add(name(count.getKey()) + " " + String.format(java.util.Locale.ROOT, "%,d", count.getValue()));
+            if (first == null && figures instanceof Map<?, ?> map && map.get(count.getKey()) instanceof Map<?, ?> truth
+                    && truth.get("first") instanceof List<?> listed && !listed.isEmpty()) {
+                first = listed.get(0).toString();
+            }
+        }
+        return String.format(java.util.Locale.ROOT, "%,d %s: %s", total, total == 1 ? "violation" : "violations",
+                String.join(", ", broken)) + (first == null ? "" : "; the first: " + first);
+    }
+
     /** {@code "hold"}, or the violations of each truth counted and the first few in words. */
     static Object truthFigures(Map<String, Integer> counts, List<WrapTruths.Violation> violations) {
         if (counts.isEmpty()) {

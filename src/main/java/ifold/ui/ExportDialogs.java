@@ -55,7 +55,8 @@ final class ExportDialogs {
         Path choose(String title, boolean save, FileNameExtensionFilter filter);
 
         /**
-         * Writes {@code file} in the background; {@code written} hears the summary, and a failure
+         * Writes {@code file} in the background (null: no file the user chose, as a check's);
+         * {@code written} hears the summary, and a failure
          * is said after {@code failed} ("cannot export the movie").
          */
         void write(String doing, String failed, Path file, Worker.Task<String> task, Consumer<String> written);
@@ -375,6 +376,38 @@ final class ExportDialogs {
             return String.format(Locale.ROOT, "wrote %d %s of %dx%d to %s in %.1f s", result.frames(),
                     result.frames() == 1 ? "frame" : "frames", chosen.width(),
                     chosen.height(), folder, result.seconds());
+        });
+    }
+
+    /**
+     * Fold, Check the wrap: the wrap shown checked as {@code ifold check} checks it, by the
+     * independent checkers reading its OBJ and FOLD files (the truths, the collisions, the layer
+     * order), in the background; the lines shown when it ends, the truths' on the status line.
+     */
+    void checkAsk() {
+        Plan shown = host.plan();
+        if (shown == null) {
+            host.say("nothing to check yet: the fold is still being planned");
+            return;
+        }
+        if (!(shown.job() instanceof ifold.ui.model.Job.WrapModel)) {
+            host.say("only a wrap of a model is checked: Fold, Wrap the model first");
+            return;
+        }
+        // The task's summary: the verdict and the truths on its first line, then the check's lines.
+        host.write("checking the wrap", "cannot check the wrap", null, progress -> {
+            Exports.Checked checked = Exports.check(shown, progress);
+            return (checked.holds() ? "every check holds; " : "a check fails; ") + checked.lines().get(1) + "\n"
+                    + String.join("\n", checked.lines());
+        }, summary -> {
+            int end = summary.indexOf('\n');
+            host.say(summary.substring(0, end));
+            javax.swing.JTextArea lines = new javax.swing.JTextArea(summary.substring(end + 1), 0, 80);
+            lines.setEditable(false);
+            lines.setLineWrap(true);
+            lines.setWrapStyleWord(true);
+            JOptionPane.showMessageDialog(parent, new javax.swing.JScrollPane(lines), "Check the wrap",
+                    summary.startsWith("every") ? JOptionPane.INFORMATION_MESSAGE : JOptionPane.WARNING_MESSAGE);
         });
     }
 

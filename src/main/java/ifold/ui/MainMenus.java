@@ -84,6 +84,7 @@ final class MainMenus {
         fold.add(item("Wrap the model", KeyEvent.VK_3, ctrl, window::wrapModel));
         fold.add(item("Play a script", KeyEvent.VK_4, ctrl, window::playScript));
         fold.add(item("View a model", KeyEvent.VK_5, ctrl, window::viewModel));
+        fold.add(item("Check the wrap", KeyEvent.VK_6, ctrl, window.exports::checkAsk));
         fold.addSeparator();
         fold.add(item("Play / pause", KeyEvent.VK_P, ctrl, window.timeline::togglePlaying));
         fold.add(item("Previous fold", KeyEvent.VK_OPEN_BRACKET, ctrl, () -> window.timeline.step(-1)));

@@ -440,15 +440,16 @@ final class MainWindow extends JFrame {
     }
 
     /**
-     * Writes {@code file} in the background with progress and Cancel; {@code written} hears the
-     * summary, and a failure is said after {@code failed} ("cannot export the movie").
+     * Writes {@code file} in the background with progress and Cancel (null: the task writes no
+     * file the user chose, as a check); {@code written} hears the summary, and a failure is said
+     * after {@code failed} ("cannot export the movie").
      */
     void write(String doing, String failed, Path file, Worker.Task<String> task, Consumer<String> written) {
         workStarted(doing);
         exporter.submit(task, new StatusLine<String>() {
             @Override
             void finished(String summary) {
-                Path folder = file.toAbsolutePath().getParent();
+                Path folder = file == null ? null : file.toAbsolutePath().getParent();
                 if (folder != null) {
                     settings.put("folder", folder.toString());
                 }

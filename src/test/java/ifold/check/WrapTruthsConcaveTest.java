@@ -315,4 +315,50 @@ class WrapTruthsConcaveTest {
         List<Violation> far = check(flatL(0.03, 0.001), FLAT_L, T);
         assertBroken(far, WrapTruths.COVERED, "of triangle 1 ", "lies under no paper face");
     }
+    /**
+     * A step's corner: the top A (z = 0, normal +z) and front B (y = 0, normal -y) of a low block
+     * meet at the convex edge along x from (0, 0, 0) to (1, 0, 0); at its end (1, 0, 0) a wall W
+     * (x = 1, normal -x, fanned from that corner) rises across the wedge of air above the edge.
+     */
+    private static final List<double[]> STEP_CORNER = List.of(
+            new double[] {0, 0, 0, 1, 0, 0, 1, 1, 0},
+            new double[] {0, 0, 0, 1, 1, 0, 0, 1, 0},
+            new double[] {0, 0, 0, 0, 0, -1, 1, 0, -1},
+            new double[] {0, 0, 0, 1, 0, -1, 1, 0, 0},
+            new double[] {1, 0, 0, 1, 1, -1, 1, -1, -1},
+            new double[] {1, 0, 0, 1, -1, -1, 1, -1, 1},
+            new double[] {1, 0, 0, 1, -1, 1, 1, 1, 1},
+            new double[] {1, 0, 0, 1, 1, 1, 1, 1, -1});
+
+    /** The step's top and front without the wall: nothing rises at the edge's end. */
+    private static final List<double[]> STEP_WITHOUT_WALL = STEP_CORNER.subList(0, 4);
+
+    /**
+     * A unit sheet on the step's top, half a thickness up, its corner on the convex edge at
+     * {@code x} moved {@code kept} along the edge away from that end (a crease's end kept from it).
+     */
+    private static String keptAlongTheEdge(double x, double kept) {
+        double[][] corners = {{0, 0, 0.005}, {1, 0, 0.005}, {1, 1, 0.005}, {0, 1, 0.005}};
+        corners[x == 0 ? 0 : 1][0] = x == 0 ? kept : 1 - kept;
+        return quad(1, corners, 1, 1);
+    }
+
+    private static List<Violation> isometric(List<Violation> violations) {
+        return violations.stream().filter(v -> v.truth().equals(WrapTruths.ISOMETRIC)).toList();
+    }
+
+    /**
+     * Paper over a convex edge keeps from its end where a face at that corner rises across it,
+     * as far as that face's stack stands out along the edge: a face whose corner there is kept
+     * 1.5 thicknesses along the edge (within the stack of 2 T over the cosine, 1) is no stretch;
+     * kept farther than the zone allows, or at the other end of the edge where nothing rises,
+     * or with the wall gone, it is one.
+     */
+    @Test
+    void paperKeepsFromAConvexEdgesEndWhereAFaceRisesAcrossIt() {
+        assertEquals(List.of(), isometric(check(keptAlongTheEdge(1, 0.015), STEP_CORNER, T)), "kept 1.5 T from the wall's corner");
+        assertBroken(check(keptAlongTheEdge(1, 0.2), STEP_CORNER, T), WrapTruths.ISOMETRIC, "is stretched");
+        assertBroken(check(keptAlongTheEdge(0, 0.015), STEP_CORNER, T), WrapTruths.ISOMETRIC, "is stretched");
+        assertBroken(check(keptAlongTheEdge(1, 0.015), STEP_WITHOUT_WALL, T), WrapTruths.ISOMETRIC, "is stretched");
+    }
 }

@@ -314,6 +314,39 @@ class MainWindowFilesTest extends WindowTestBase {
         assertTrue(said.stream().anyMatch(m -> m.contains("wrote " + menuSteps + ": 4 pages, 12 steps")), said.toString());
     }
 
+    /**
+     * Fold, Check the wrap checks the wrap shown as {@code ifold check} does and shows its lines;
+     * the zig-zag demo, which wraps no model, has nothing to check and says so.
+     */
+    @Test
+    void theWrapShownIsCheckedThroughTheMenu() throws Exception {
+        Settings settings = settings();
+        settings.addRecent(Path.of("models", "tetrahedron.off"));
+        window = App.open(null, settings);
+        settled();
+        List<String> said = new java.util.concurrent.CopyOnWriteArrayList<>();
+        window.messages = said::add;
+        onEdt(() -> {
+            menuItem(window, "Check the wrap").doClick();
+            return null;
+        });
+        assertTrue(said.stream().anyMatch(m -> m.contains("only a wrap of a model is checked")), said.toString());
+        onEdt(() -> {
+            menuItem(window, "1  tetrahedron.off").doClick();
+            return null;
+        });
+        waitFor("the tetrahedron wrapped", 60, () -> window.plan() != null && window.plan().job() instanceof Job.WrapModel && !window.isWorking());
+        clickLater(window, "Check the wrap");
+        javax.swing.JTextArea lines = inDialog(javax.swing.JTextArea.class);
+        String text = onEdt(lines::getText);
+        assertTrue(text.startsWith("tetrahedron.off: 1 strip, "), text);
+        assertTrue(text.contains("\ntruths: every one holds (tiled, isometric, not torn, covered, on surface)\n"), text);
+        assertTrue(text.contains("\ncollisions: 0 crossing pairs"), text);
+        assertTrue(text.contains("\nlayer order: valid"), text);
+        assertTrue(said.stream().anyMatch(m -> m.startsWith("every check holds; truths: every one holds")), said.toString());
+        pressOk(lines);
+    }
+
     /** The pings below would see a held event thread: one held for 0.6 s keeps a ping waiting that long, whatever the load. */
     @Test
     void aPingWaitsWhileTheEventThreadIsHeld() throws Exception {

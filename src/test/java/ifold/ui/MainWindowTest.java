@@ -37,7 +37,7 @@ class MainWindowTest extends WindowTestBase {
         // Every menu the issue asks for, each item with its shortcut.
         for (String item : List.of("Open model", "Open fold script", "Export frames", "Export movie", "Export OBJ", "Export FOLD",
                 "Export report", "Export figure", "Quit", "Model", "Path of triangles", "Collisions", "Paper colours", "Captions", "Reset camera", "Underside", "Zig-zag a triangle", "Turn gadget",
-                "Wrap the model", "Play a script", "Keys", "New model", "Model information", "Export refinement")) {
+                "Wrap the model", "Play a script", "Check the wrap", "Keys", "New model", "Model information", "Export refinement")) {
             assertNotNull(onEdt(() -> menuItem(window, item).getAccelerator()), item + " has a shortcut");
         }
         // Shortcuts of punctuation keys read as the key: "Ctrl+[", not "Ctrl+Open Bracket".

@@ -212,6 +212,59 @@ public final class Exports {
         }
     }
 
+    /** A wrap checked: the check's lines, as {@code ifold check} prints them, and whether every check holds. */
+    public record Checked(List<String> lines, boolean holds) {
+    }
+
+    /** How many random points of the model the window's check tries, as {@code ifold check} does by default. */
+    public static final int CHECK_SAMPLES = 2000;
+
+    /**
+     * Checks a wrap as {@code ifold check} does, by the independent checkers alone: its paper
+     * written as OBJ and FOLD into a folder of its own, read back against the model's file, the
+     * folder taken back whatever happens.
+     */
+    public static Checked check(Plan plan, Progress progress) throws JobFailure {
+        if (!(plan.job() instanceof Job.WrapModel wrap)) {
+            throw new JobFailure("only a wrap of a model is checked: Fold, Wrap the model first");
+        }
+        Path folder;
+        try {
+            folder = Files.createTempDirectory("ifold-check");
+        } catch (IOException e) {
+            throw new JobFailure("cannot make a folder for the check's files: " + e.getMessage());
+        }
+        try {
+            Path paper = folder.resolve(suggestedName(plan.job(), "obj"));
+            Path fold = folder.resolve(suggestedName(plan.job(), "fold"));
+            obj(plan, paper, progress);
+            progress.check();
+            fold(plan, fold, progress);
+            progress.check();
+            ifold.job.CheckJob.Checked checked = ifold.job.CheckJob.run(new ifold.job.CheckJob.Request(wrap.model(), paper, fold, Double.NaN, -1,
+                    CHECK_SAMPLES, wrap.strict()), progress.watcher());
+            return new Checked(ifold.job.CheckJob.lines(checked, wrap.model().getFileName().toString()), checked.holds());
+        } catch (ifold.job.ModelFiles.LoadFailure e) {
+            throw new JobFailure(e.getMessage());
+        } catch (ifold.job.CheckJob.Unreadable e) {
+            throw new JobFailure(e.getMessage());
+        } finally {
+            deleteAll(folder);
+        }
+    }
+
+    /** Deletes a folder of files this class made; what cannot be deleted stays, as a temporary file would. */
+    private static void deleteAll(Path folder) {
+        try (var files = Files.list(folder)) {
+            for (Path file : (Iterable<Path>) files::iterator) {
+                Files.deleteIfExists(file);
+            }
+            Files.deleteIfExists(folder);
+        } catch (IOException e) {
+            // left in the temporary folder, where the system clears it
+        }
+    }
+
     /**
      * Prints the crease pattern at real size, as {@code --export-pdf} and {@code --export-svg} do:
      * PDF or SVG by the file's name, the strip {@code options} wide on its pages.

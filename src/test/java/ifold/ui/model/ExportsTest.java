@@ -63,6 +63,37 @@ class ExportsTest {
     }
 
     /**
+     * Fold, Check the wrap checks the wrap shown as {@code ifold check} does, from its OBJ and
+     * FOLD files written into a folder of their own, which it takes back; a plan that wraps no
+     * model has nothing to check.
+     */
+    @Test
+    void aWrapIsCheckedFromItsFilesAndTheFilesTakenBack() throws Exception {
+        Path temporary = Path.of(System.getProperty("java.io.tmpdir"));
+        java.util.function.Supplier<java.util.Set<Path>> checkFolders = () -> {
+            try (var files = java.nio.file.Files.list(temporary)) {
+                return files.filter(f -> f.getFileName().toString().startsWith("ifold-check")).collect(java.util.stream.Collectors.toSet());
+            } catch (java.io.IOException e) {
+                throw new java.io.UncheckedIOException(e);
+            }
+        };
+        java.util.Set<Path> before = checkFolders.get();
+        Plan tetrahedron = Planning.plan(new Job.WrapModel(Path.of("models", "tetrahedron.off"), "", ""), Progress.NONE);
+        Exports.Checked checked = Exports.check(tetrahedron, Progress.NONE);
+        assertTrue(checked.holds(), String.join("\n", checked.lines()));
+        assertEquals(4, checked.lines().size(), "what was checked, the truths, the collisions, the layer order: " + checked.lines());
+        assertTrue(checked.lines().get(0).startsWith("tetrahedron.off: 1 strip, "), checked.lines().get(0));
+        assertEquals("truths: every one holds (tiled, isometric, not torn, covered, on surface)", checked.lines().get(1));
+        assertTrue(checked.lines().get(2).startsWith("collisions: 0 crossing pairs"), checked.lines().get(2));
+        assertTrue(checked.lines().get(3).startsWith("layer order: valid"), checked.lines().get(3));
+        assertEquals(before, checkFolders.get(), "the check's files are taken back");
+
+        Plan zigzag = Planning.plan(Job.ZigZag.DEMO, Progress.NONE);
+        JobFailure none = org.junit.jupiter.api.Assertions.assertThrows(JobFailure.class, () -> Exports.check(zigzag, Progress.NONE));
+        assertTrue(none.getMessage().contains("only a wrap of a model is checked"), none.getMessage());
+    }
+
+    /**
      * The window's model draws nothing itself: where nothing can draw, an export fails in the
      * renderer's one line and takes back the folder it made, with no display needed to test it.
      */
