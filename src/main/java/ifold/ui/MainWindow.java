@@ -49,6 +49,8 @@ final class MainWindow extends JFrame {
     final transient Settings settings;
     final transient Worker planner = new Worker("ifold plan", SwingUtilities::invokeLater);
     final transient Worker exporter = new Worker("ifold export", SwingUtilities::invokeLater);
+    /** What the exporter's task does where it writes no file (a check), for Cancel to say; null for an export. */
+    private String exporting;
     /** Measures a model for Model information: of its own, so that it neither stops nor waits for a plan or an export. */
     final transient Worker inspector = new Worker("ifold info", SwingUtilities::invokeLater);
     final SceneView view;
@@ -446,6 +448,7 @@ final class MainWindow extends JFrame {
      */
     void write(String doing, String failed, Path file, Worker.Task<String> task, Consumer<String> written) {
         workStarted(doing);
+        exporting = file == null ? doing : null;
         exporter.submit(task, new StatusLine<String>() {
             @Override
             void finished(String summary) {
@@ -537,7 +540,7 @@ final class MainWindow extends JFrame {
     /** Cancel: the export if one runs (its file is not written), else the planning (the last plan stays). */
     void cancelWork() {
         if (exporter.cancel()) {
-            say("export cancelled: nothing written");
+            say(exporting != null ? exporting + " cancelled" : "export cancelled: nothing written");
         } else if (inspector.cancel()) {
             say("model information cancelled");
         } else if (planner.cancel()) {

@@ -237,6 +237,11 @@ public final class Exports {
         try {
             Path paper = folder.resolve(suggestedName(plan.job(), "obj"));
             Path fold = folder.resolve(suggestedName(plan.job(), "fold"));
+            // Should the window close mid-check (its cancel is heard between the check's stages),
+            // the files go as the program ends: the folder registered first, deleted last.
+            folder.toFile().deleteOnExit();
+            paper.toFile().deleteOnExit();
+            fold.toFile().deleteOnExit();
             obj(plan, paper, progress);
             progress.check();
             fold(plan, fold, progress);
