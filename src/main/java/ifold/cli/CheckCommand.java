@@ -48,7 +48,7 @@ final class CheckCommand implements Callable<Integer> {
     Integer stack;
 
     @Option(names = "--samples", paramLabel = "N", description = "random points of the model that must lie under paper (default: 2000)")
-    int samples = 2000;
+    int samples = CheckJob.DEFAULT_SAMPLES;
 
     @Option(names = "--report", paramLabel = "FILE", description = "write the figures of the checks as JSON")
     Path report;

@@ -92,6 +92,9 @@ public final class CheckJob {
     /** The most random points of the model the coverage truth tries: ten million take minutes. */
     public static final int MOST_SAMPLES = 10_000_000;
 
+    /** How many random points of the model the coverage truth tries unless told: {@code ifold check}'s and the window's. */
+    public static final int DEFAULT_SAMPLES = 2000;
+
     /** How many violations of each truth the figures list in words. */
     static final int LISTED = 5;
 

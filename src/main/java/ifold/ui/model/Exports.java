@@ -216,9 +216,6 @@ public final class Exports {
     public record Checked(List<String> lines, boolean holds) {
     }
 
-    /** How many random points of the model the window's check tries, as {@code ifold check} does by default. */
-    public static final int CHECK_SAMPLES = 2000;
-
     /**
      * Checks a wrap as {@code ifold check} does, by the independent checkers alone: its paper
      * written as OBJ and FOLD into a folder of its own, read back against the model's file, the
@@ -247,7 +244,7 @@ public final class Exports {
             fold(plan, fold, progress);
             progress.check();
             ifold.job.CheckJob.Checked checked = ifold.job.CheckJob.run(new ifold.job.CheckJob.Request(wrap.model(), paper, fold, Double.NaN, -1,
-                    CHECK_SAMPLES, wrap.strict()), progress.watcher());
+                    ifold.job.CheckJob.DEFAULT_SAMPLES, wrap.strict()), progress.watcher());
             return new Checked(ifold.job.CheckJob.lines(checked, wrap.model().getFileName().toString()), checked.holds());
         } catch (ifold.job.ModelFiles.LoadFailure e) {
             throw new JobFailure(e.getMessage());
