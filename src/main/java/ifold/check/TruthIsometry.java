@@ -30,38 +30,49 @@ final class TruthIsometry {
         }
     }
 
-    /** Every side of every concave edge of the model: edges are matched by their corners' coordinates. */
-    static List<ConcaveSide> concaveSides(TruthModel model, double eps) {
+    /**
+     * Each edge two triangles share, matched by its corners' coordinates, in the order the second
+     * triangle's side is met: {t, k, u, l}, side k of t (met second) and side l of u. The sides
+     * no other triangle shares (an open surface's border) go into {@code lone}, as {t, k}.
+     */
+    private static List<int[]> sharedEdges(TruthModel model, List<int[]> lone) {
         int n = model.corners.length / 9;
         Map<String, int[]> sides = new HashMap<>();
-        List<ConcaveSide> concave = new ArrayList<>();
+        List<int[]> shared = new ArrayList<>();
         for (int t = 0; t < n; t++) {
             for (int k = 0; k < 3; k++) {
-                double[] a = Arrays.copyOfRange(model.corners, 9 * t + 3 * k, 9 * t + 3 * k + 3);
-                double[] b = Arrays.copyOfRange(model.corners, 9 * t + 3 * ((k + 1) % 3), 9 * t + 3 * ((k + 1) % 3) + 3);
-                String ab = Arrays.toString(a) + Arrays.toString(b);
-                String ba = Arrays.toString(b) + Arrays.toString(a);
-                int[] other = sides.remove(ba);
+                String a = Arrays.toString(corner(model, t, k));
+                String b = Arrays.toString(corner(model, t, (k + 1) % 3));
+                int[] other = sides.remove(b + a);
                 if (other == null) {
-                    sides.put(ab, new int[] {t, k});
-                    continue;
+                    sides.put(a + b, new int[] {t, k});
+                } else {
+                    shared.add(new int[] {t, k, other[0], other[1]});
                 }
-                for (int[] side : List.of(new int[] {t, k}, other)) {
-                    int near = side[0];
-                    int far = side == other ? t : other[0];
-                    double rise = 0;
-                    for (int c = 0; c < 3; c++) {
-                        rise = Math.max(rise, model.height(near, model.corners, 9 * far + 3 * c));
-                    }
-                    if (rise > eps) {
-                        double[] m = model.normal(near);
-                        double[] o = model.normal(far);
-                        double cos = Math.max(-1, Math.min(1, m[0] * o[0] + m[1] * o[1] + m[2] * o[2]));
-                        double[] p = Arrays.copyOfRange(model.corners, 9 * near + 3 * side[1], 9 * near + 3 * side[1] + 3);
-                        double[] q = Arrays.copyOfRange(model.corners, 9 * near + 3 * ((side[1] + 1) % 3), 9 * near + 3 * ((side[1] + 1) % 3) + 3);
-                        double[] r = Arrays.copyOfRange(model.corners, 9 * near + 3 * ((side[1] + 2) % 3), 9 * near + 3 * ((side[1] + 2) % 3) + 3);
-                        concave.add(new ConcaveSide(m, p, q, Math.sqrt((1 - cos) / Math.max(1 + cos, 1e-12)), r));
-                    }
+            }
+        }
+        lone.addAll(sides.values());
+        return shared;
+    }
+
+    /** Every side of every concave edge of the model: edges are matched by their corners' coordinates. */
+    static List<ConcaveSide> concaveSides(TruthModel model, double eps) {
+        List<ConcaveSide> concave = new ArrayList<>();
+        for (int[] edge : sharedEdges(model, new ArrayList<>())) {
+            // Each side of the edge, the triangle across rising above its plane.
+            for (int[] side : List.of(new int[] {edge[0], edge[1], edge[2]}, new int[] {edge[2], edge[3], edge[0]})) {
+                int near = side[0];
+                int far = side[2];
+                double rise = 0;
+                for (int c = 0; c < 3; c++) {
+                    rise = Math.max(rise, model.height(near, model.corners, 9 * far + 3 * c));
+                }
+                if (rise > eps) {
+                    double[] m = model.normal(near);
+                    double[] o = model.normal(far);
+                    double cos = Math.max(-1, Math.min(1, m[0] * o[0] + m[1] * o[1] + m[2] * o[2]));
+                    concave.add(new ConcaveSide(m, corner(model, near, side[1]), corner(model, near, (side[1] + 1) % 3),
+                            Math.sqrt((1 - cos) / Math.max(1 + cos, 1e-12)), corner(model, near, (side[1] + 2) % 3)));
                 }
             }
         }
@@ -83,26 +94,19 @@ final class TruthIsometry {
         for (int t = 0; t < n; t++) {
             region[t] = t;
         }
-        Map<String, int[]> sides = new HashMap<>();
         List<int[]> inner = new ArrayList<>();
         List<int[]> borders = new ArrayList<>();
-        for (int t = 0; t < n; t++) {
-            for (int k = 0; k < 3; k++) {
-                String ab = Arrays.toString(corner(model, t, k)) + Arrays.toString(corner(model, t, (k + 1) % 3));
-                String ba = Arrays.toString(corner(model, t, (k + 1) % 3)) + Arrays.toString(corner(model, t, k));
-                int[] other = sides.remove(ba);
-                if (other == null) {
-                    sides.put(ab, new int[] {t, k});
-                } else if (coplanar(model, t, other[0], eps)) {
-                    inner.add(new int[] {t, k, other[0], other[1]});
-                    SolidInside.union(region, t, other[0]);
-                } else {
-                    borders.add(new int[] {t, k});
-                    borders.add(other);
-                }
+        List<int[]> open = new ArrayList<>(); // edges of an open surface
+        for (int[] edge : sharedEdges(model, open)) {
+            if (coplanar(model, edge[0], edge[2], eps)) {
+                inner.add(edge);
+                SolidInside.union(region, edge[0], edge[2]);
+            } else {
+                borders.add(new int[] {edge[0], edge[1]});
+                borders.add(new int[] {edge[2], edge[3]});
             }
         }
-        borders.addAll(sides.values()); // edges of an open surface
+        borders.addAll(open);
         // A region is convex when every corner of it lies on the inner side of every border edge's line.
         boolean[] notConvex = new boolean[n];
         Map<Integer, List<Integer>> members = new HashMap<>();
@@ -161,27 +165,20 @@ final class TruthIsometry {
                 trianglesAt.computeIfAbsent(Arrays.toString(corner(model, t, k)), key -> new ArrayList<>()).add(t);
             }
         }
-        Map<String, int[]> sides = new HashMap<>();
-        for (int t = 0; t < n; t++) {
-            for (int k = 0; k < 3; k++) {
-                double[] a = corner(model, t, k);
-                double[] b = corner(model, t, (k + 1) % 3);
-                int[] other = sides.remove(Arrays.toString(b) + Arrays.toString(a));
-                if (other == null) {
-                    sides.put(Arrays.toString(a) + Arrays.toString(b), new int[] {t, k});
-                    continue;
-                }
-                int u = other[0];
-                double below = 0; // how far the far corner of u lies below t's plane: convex where it does
-                for (int c = 0; c < 3; c++) {
-                    below = Math.min(below, model.height(t, model.corners, 9 * u + 3 * c));
-                }
-                if (below >= -eps) {
-                    continue; // flat or concave
-                }
-                for (double[][] ends : new double[][][] {{a, b}, {b, a}}) {
-                    stopsAt(model, trianglesAt.get(Arrays.toString(ends[0])), ends[0], ends[1], t, u, top, stops);
-                }
+        for (int[] edge : sharedEdges(model, new ArrayList<>())) {
+            int t = edge[0];
+            int u = edge[2];
+            double below = 0; // how far the far corner of u lies below t's plane: convex where it does
+            for (int c = 0; c < 3; c++) {
+                below = Math.min(below, model.height(t, model.corners, 9 * u + 3 * c));
+            }
+            if (below >= -eps) {
+                continue; // flat or concave
+            }
+            double[] a = corner(model, t, edge[1]);
+            double[] b = corner(model, t, (edge[1] + 1) % 3);
+            for (double[][] ends : new double[][][] {{a, b}, {b, a}}) {
+                stopsAt(model, trianglesAt.get(Arrays.toString(ends[0])), ends[0], ends[1], t, u, top, stops);
             }
         }
         return stops;
