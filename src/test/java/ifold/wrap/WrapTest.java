@@ -315,6 +315,21 @@ public class WrapTest {
     }
 
     /**
+     * The issue's big torus ({@code ifold generate torus --around 50 --across 22}, 2,200
+     * triangles), which went over the face limit at the defaults when issue 20 was filed (22 s;
+     * 47 s and 1.4 GB with the limit raised, 51 layers): wrapped as the command wraps it, every
+     * truth read from its OBJ, its layer order from its FOLD file, no paper crossing (18 layers
+     * at most, 242,684 faces; the cap the issue sets is 24).
+     */
+    @Test
+    void theIssuesBigTorusWrapsAtTheDefaultsKeepingEveryTruth() throws Exception {
+        HalfedgeMesh torus = build(Solids.torus(3, 1, 50, 22));
+        assertEquals(2200, torus.faceCount(), "setup: the issue's torus");
+        int layers = wrapAsTheCommandDoesAndCheck(dir, torus);
+        assertTrue(layers <= 24, "most layers " + layers);
+    }
+
+    /**
      * A strip 150 million widths long (the cube at width 2e-4: 196,000 turns, 30,000 long): its
      * poses, composed fold after fold, gather rounding past the tolerance, and a crossing made to
      * meet a turn's crease on the strip's side missed it by 3.2e-9 against 2.4e-9, refusing the
