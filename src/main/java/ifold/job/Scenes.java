@@ -125,12 +125,13 @@ public final class Scenes {
     /**
      * The stages of the seed's Figure 11 re-made from a lone triangle's playback, as
      * {@link #FIGURE11_LABELS} name them: the first turn, every pass laid, the excess tucked
-     * under, the underside.
+     * under (the wrapped triangle from above, as the final turn ends: the moment the last tuck
+     * is made the camera is still under it, where it followed the tucks), the underside.
      */
     public static double[] figure11Stages(WrapPlayback playback, Wrap.Result result) {
         int laid = result.count(Wrap.Kind.ZIGZAG_TURN) + result.count(Wrap.Kind.OVERLAP);
-        return new double[] {playback.positionAfter(Math.min(2, laid)), playback.positionAfter(laid),
-            playback.positionAfter(result.steps().size()), playback.halfTurn()};
+        return new double[] {playback.positionAfter(Math.min(2, laid)), playback.positionAfter(laid), playback.stepCount(),
+            playback.halfTurn()};
     }
 
     /** The turn gadget's strip folded on an empty table. */

@@ -52,6 +52,32 @@ public final class WrapView {
     public record Strips(SceneMesh mesh, int[][] trianglesAfter, List<PaperInSpace> geometries) {
     }
 
+    /**
+     * Whether paper on {@code mesh} can be seen from below its faces too: an open surface (an
+     * edge with one face, the zig-zag demo's lone triangle), or no surface at all (the turn
+     * gadget's strip on an empty table). A closed solid hides what lies under its paper.
+     */
+    static boolean seenFromBothSides(IndexedPolygons mesh) {
+        if (mesh == null || mesh.faceCount() == 0) {
+            return true;
+        }
+        java.util.Map<Long, Integer> uses = new java.util.HashMap<>();
+        for (int f = 0; f < mesh.faceCount(); f++) {
+            int n = mesh.faceSize(f);
+            for (int k = 0; k < n; k++) {
+                long a = mesh.faceVertex(f, k);
+                long b = mesh.faceVertex(f, (k + 1) % n);
+                uses.merge(Math.min(a, b) << 32 | Math.max(a, b), 1, Integer::sum);
+            }
+        }
+        for (int count : uses.values()) {
+            if (count == 1) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     public static Strips strips(Wrap.Result result, List<PaperInSpace> geometries) {
         int total = 0;
         for (PaperInSpace g : geometries) {
@@ -66,6 +92,7 @@ public final class WrapView {
         BitSet seams = new BitSet();
         IntList patchOf = new IntList();
         HostPatches patches = new HostPatches(result);
+        boolean bothSides = seenFromBothSides(result.mesh());
         int[][] after = new int[geometries.size()][];
         int base = 0;
         for (int k = 0; k < geometries.size(); k++) {
@@ -88,7 +115,7 @@ public final class WrapView {
                 capsAfter[filled[g.capAfter()[c]]++] = c;
             }
             // What lies under other paper is not drawn once that paper is there.
-            CoveredPaper.Covered covered = CoveredPaper.of(g, result.frames(), strip.sheet().thickness());
+            CoveredPaper.Covered covered = CoveredPaper.of(g, result.frames(), strip.sheet().thickness(), bothSides);
             int[] levels = strip.sheet().levels();
             int[] trianglesAtFace = new int[faceCount + 1];
             for (int f = 0; f < faceCount; f++) {

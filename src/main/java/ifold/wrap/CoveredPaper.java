@@ -22,6 +22,11 @@ import java.util.List;
  * paper of the same host covers: what lies under a neighbour host's paper, past a concave
  * edge, is drawn. Where the subtraction would split a face into many pieces, the face is kept:
  * every face called covered is covered.
+ *
+ * <p>A solid hides its paper from below; an open surface does not (the zig-zag demo's lone
+ * triangle, seen from below, shows the excess tucked under its strip). Where paper can be seen
+ * from both sides of its host, a face is covered only where the paper lower than it covers it
+ * too, from the moment the later of the two covers is laid.
  */
 public final class CoveredPaper {
     /** More pieces left than this, the face is kept rather than followed further. */
@@ -51,9 +56,18 @@ public final class CoveredPaper {
 
     /**
      * The covered paper of {@code geometry}, whose faces rest on {@code frames} (by
-     * {@code paperHosts}) in layers {@code thickness} apart.
+     * {@code paperHosts}) in layers {@code thickness} apart, on a solid that hides what lies under
+     * its paper.
      */
     public static Covered of(PaperInSpace geometry, HostFrame[] frames, double thickness) {
+        return of(geometry, frames, thickness, false);
+    }
+
+    /**
+     * As {@link #of(PaperInSpace, HostFrame[], double)}, the paper seen from below its hosts too
+     * where {@code bothSides} (an open surface's).
+     */
+    public static Covered of(PaperInSpace geometry, HostFrame[] frames, double thickness, boolean bothSides) {
         Projected paper = new Projected(geometry, frames);
         int[] faces = new int[geometry.paperFaces().size()];
         int[] caps = new int[geometry.caps().size()];
@@ -102,7 +116,10 @@ public final class CoveredPaper {
             HostGrid grid = new HostGrid(paper, byHost, start[h], start[h + 1]);
             for (int i = start[h]; i < start[h + 1]; i++) {
                 int f = byHost[i];
-                faces[f] = cover(paper.polygon(f), paper.height(f) + margin, paper.box(f), grid, paper, stamp, round);
+                faces[f] = cover(paper.polygon(f), paper.height(f) + margin, true, paper.box(f), grid, paper, stamp, round);
+                if (bothSides && faces[f] >= 0) {
+                    faces[f] = later(faces[f], cover(paper.polygon(f), paper.height(f) - margin, false, paper.box(f), grid, paper, stamp, round));
+                }
             }
             for (int i = capStart[h]; i < capStart[h + 1]; i++) {
                 int c = capsByHost[i];
@@ -110,33 +127,46 @@ public final class CoveredPaper {
                 HostFrame frame = frames[h];
                 double[] footprint = new double[2 * cap.length];
                 double top = Double.NEGATIVE_INFINITY;
+                double bottom = Double.POSITIVE_INFINITY;
                 double[] p = new double[3];
                 for (int k = 0; k < cap.length; k++) {
                     System.arraycopy(geometry.xyz(), 3 * cap[k], p, 0, 3);
                     footprint[2 * k] = frame.localX(p);
                     footprint[2 * k + 1] = frame.localY(p);
                     top = Math.max(top, frame.height(p));
+                    bottom = Math.min(bottom, frame.height(p));
                 }
                 footprint = convexHull(footprint);
                 if (footprint == null) {
                     continue; // on edge, seen from the plane: a cap over the host's edge, or none
                 }
-                caps[c] = cover(footprint, top + margin, Polygons2.bounds(footprint), grid, paper, stamp, round);
+                double[] box = Polygons2.bounds(footprint);
+                caps[c] = cover(footprint, top + margin, true, box, grid, paper, stamp, round);
+                if (bothSides && caps[c] >= 0) {
+                    caps[c] = later(caps[c], cover(footprint, bottom - margin, false, box, grid, paper, stamp, round));
+                }
             }
         }
         return covered;
     }
 
+    /** Covered from above by {@code above} and from below by {@code below} (faces, or -1): covered once both are laid. */
+    private static int later(int above, int below) {
+        return below < 0 ? -1 : Math.max(above, below);
+    }
+
     /**
-     * The last of the faces of {@code grid} higher than {@code above} that together cover convex
-     * {@code polygon} (counter-clockwise), taken in the order they were laid; -1 where they do not.
+     * The last of the faces of {@code grid} beyond height {@code beyond} (higher where {@code up},
+     * else lower) that together cover convex {@code polygon} (counter-clockwise), taken in the
+     * order they were laid; -1 where they do not.
      */
-    private static int cover(double[] polygon, double above, double[] box, HostGrid grid, Projected paper, int[] stamp, int[] round) {
+    private static int cover(double[] polygon, double beyond, boolean up, double[] box, HostGrid grid, Projected paper, int[] stamp,
+            int[] round) {
         double area = twiceArea(polygon);
         if (!(area > 0)) {
             return -1;
         }
-        List<Integer> over = grid.above(box, above, paper, stamp, ++round[0]);
+        List<Integer> over = grid.beyond(box, beyond, up, paper, stamp, ++round[0]);
         if (over.isEmpty()) {
             return -1;
         }
@@ -387,8 +417,8 @@ public final class CoveredPaper {
             return Math.max(0, Math.min(rows - 1, (int) ((y - y0) / cell)));
         }
 
-        /** The faces higher than {@code above} whose boxes meet {@code box}, each once. */
-        List<Integer> above(double[] box, double above, Projected paper, int[] stamp, int round) {
+        /** The faces higher than {@code beyond} where {@code up}, else lower, whose boxes meet {@code box}, each once. */
+        List<Integer> beyond(double[] box, double beyond, boolean up, Projected paper, int[] stamp, int round) {
             List<Integer> found = new ArrayList<>();
             for (int r = row(box[1]); r <= row(box[3]); r++) {
                 for (int c = column(box[0]); c <= column(box[2]); c++) {
@@ -398,7 +428,7 @@ public final class CoveredPaper {
                             continue;
                         }
                         stamp[g] = round;
-                        if (paper.height(g) > above && paper.boxesMeet(g, box)) {
+                        if ((up ? paper.height(g) > beyond : paper.height(g) < beyond) && paper.boxesMeet(g, box)) {
                             found.add(g);
                         }
                     }

@@ -1,6 +1,7 @@
 package ifold.scene;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import ifold.mesh.HalfedgeMesh;
@@ -16,6 +17,21 @@ import org.junit.jupiter.api.Test;
 
 /** The wrap's animation, headless: it lays the strip in order, follows it, and ends on the whole wrap. */
 class WrapViewTest {
+    /**
+     * A solid hides the paper under its strip; an open surface does not, and a strip on no
+     * surface neither (the zig-zag demo's underside showed none of its tucks while every face
+     * under other paper was left out).
+     */
+    @Test
+    void onlyASolidHidesWhatLiesUnderItsPaper() {
+        assertFalse(WrapView.seenFromBothSides(Solids.cube()));
+        assertFalse(WrapView.seenFromBothSides(Solids.torus(3, 1, 9, 5)));
+        ifold.mesh.PolygonSoup triangle = new ifold.mesh.PolygonSoup();
+        triangle.addTriangle(triangle.addVertex(0, 0, 0), triangle.addVertex(1, 0, 0), triangle.addVertex(0, 1, 0));
+        assertTrue(WrapView.seenFromBothSides(triangle), "a lone triangle");
+        assertTrue(WrapView.seenFromBothSides(new ifold.mesh.PolygonSoup()), "an empty table");
+    }
+
     @Test
     void theAnimationLaysTheStripInOrderAndEndsWithAllOfIt() throws Exception {
         HalfedgeMesh mesh = MeshBuilder.build(Solids.tetrahedron(), MeshBuilder.Options.REPAIR_TRIANGULATE).mesh();

@@ -55,13 +55,17 @@ class CoveredPaperTest {
         }
 
         CoveredPaper.Covered covered(double thickness) {
+            return covered(thickness, false);
+        }
+
+        CoveredPaper.Covered covered(double thickness, boolean bothSides) {
             double[] xyz = new double[3 * points.size()];
             for (int i = 0; i < points.size(); i++) {
                 System.arraycopy(points.get(i), 0, xyz, 3 * i, 3);
             }
             PaperInSpace geometry = new PaperInSpace(xyz, new double[2 * points.size()], faces, new int[faces.size()], caps,
                     capAfter.stream().mapToInt(Integer::intValue).toArray());
-            return CoveredPaper.of(geometry, PLANE, thickness);
+            return CoveredPaper.of(geometry, PLANE, thickness, bothSides);
         }
     }
 
@@ -150,6 +154,34 @@ class CoveredPaperTest {
         bare.rectangle(0, 0, 0.5, 1, 5, false); // ends at the crease: the bulge beyond it is seen
         CoveredPaper.Covered seen = bare.covered(T);
         assertFalse(seen.cap(0) || seen.cap(1));
+    }
+
+    /**
+     * An open surface is seen from below too (the zig-zag demo's lone triangle): a flap tucked
+     * under the strip, lower than the paper over it, is seen from below, not covered (the demo's
+     * underside showed all of one colour, its tucks hidden); paper under both higher and lower
+     * paper is covered from the moment the later of them is laid, and a cap likewise.
+     */
+    @Test
+    void seenFromBothSidesPaperIsCoveredOnlyFromBoth() {
+        Layout layout = new Layout();
+        int flap = layout.rectangle(0.2, 0.2, 0.8, 0.8, 0, true);
+        int strip = layout.rectangle(0, 0, 1, 1, 2, false);
+        assertTrue(layout.covered(T).face(flap), "setup: on a solid the strip hides the flap");
+        CoveredPaper.Covered both = layout.covered(T, true);
+        assertFalse(both.face(flap), "the flap under the strip is seen from below");
+        assertFalse(both.face(strip));
+        Layout between = new Layout();
+        int below = between.rectangle(0, 0, 1, 1, 0, false);
+        int middle = between.rectangle(0.2, 0.2, 0.5, 0.8, 2, false);
+        int top = between.rectangle(0.2, 0.2, 0.5, 0.8, 4, false);
+        between.cap(0.5, 0.2, 0.8, 2, 4, top);
+        int over = between.rectangle(0, 0, 1, 1, 7, false);
+        CoveredPaper.Covered hidden = between.covered(T, true);
+        assertEquals(top, hidden.faceCover()[middle], "hidden from above by the face laid over it, from below by the first");
+        assertEquals(over, hidden.faceCover()[top]);
+        assertTrue(hidden.cap(0) && hidden.cap(1), "the cap between them is hidden from both sides");
+        assertFalse(hidden.face(below) || hidden.face(over), "the outermost paper on each side is seen");
     }
 
     @Test
