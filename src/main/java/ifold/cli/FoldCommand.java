@@ -71,6 +71,10 @@ final class FoldCommand implements Callable<Integer> {
         }
         // Without a display it does the exports asked for and renders frames where the viewer was
         // wanted, as the demos and the wrap do.
+        // The script first: a movie said to be rendered for a script that is not there was one line too many.
+        if (Files.notExists(script)) {
+            throw new UserError(script + ": no such file");
+        }
         outputs.check("fold", spec.commandLine().getErr(), true);
         diagrams.check(outputs);
         if (foldFrames && outputs.exportFold == null) {

@@ -34,6 +34,14 @@ public final class Main implements Runnable {
         }
     }
 
+    /** Gives {@code command}'s subcommands, and theirs, {@code version}. */
+    private static void versionEverywhere(CommandLine command, String[] version) {
+        for (CommandLine sub : command.getSubcommands().values()) {
+            sub.getCommandSpec().version(version);
+            versionEverywhere(sub, version);
+        }
+    }
+
     /** Set once main has its exit code: a shutdown before that is a signal's (Ctrl-C, SIGTERM, SIGHUP). */
     private static volatile boolean ended;
 
@@ -159,6 +167,8 @@ public final class Main implements Runnable {
         for (String name : subcommands) {
             commandLine.addSubcommand(name, SUBCOMMANDS.get(name));
         }
+        // Every subcommand's help lists --version: each prints the program's, not nothing.
+        versionEverywhere(commandLine, commandLine.getCommandSpec().version());
         commandLine.setOut(out);
         commandLine.setErr(err);
         commandLine.setParameterExceptionHandler((ex, args) -> {

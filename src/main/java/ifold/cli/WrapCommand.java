@@ -103,6 +103,11 @@ final class WrapCommand implements Callable<Integer> {
         } catch (ParameterException e) {
             throw UserError.usage(e);
         }
+        // The model first: a movie said to be rendered for a model that is not there was one line too many.
+        LoadedModel.requireRegularFile(model);
+        if (java.nio.file.Files.notExists(model)) {
+            throw new UserError(model + ": no such file");
+        }
         outputs.check("wrap", spec.commandLine().getErr(), true);
         diagrams.check(outputs);
         try {

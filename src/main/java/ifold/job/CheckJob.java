@@ -204,7 +204,7 @@ public final class CheckJob {
     /**
      * The check in lines, as {@code ifold check} prints them and the window shows them: what was
      * checked ({@code what}: the files' names) and the paper's counts; the truths; the
-     * collisions; the layer order where a FOLD file was checked.
+     * collisions; the layer order where a FOLD file was checked; and where one fails, which.
      */
     public static List<String> lines(Checked checked, String what) {
         Map<String, Object> figures = checked.figures();
@@ -217,6 +217,21 @@ public final class CheckJob {
                 : checked.collisions().summary()); // "collisions: ..."
         if (checked.layerOrder() != null) {
             lines.add(checked.layerOrder().summary()); // "layer order: ..."
+        }
+        if (!checked.holds()) {
+            // One line naming what failed: "truths: every one holds" first, then a line of
+            // collisions, read as though the check had passed.
+            List<String> failed = new ArrayList<>();
+            if (!checked.truths().isEmpty()) {
+                failed.add("truths");
+            }
+            if (checked.collisions() != null && !checked.collisions().isClean()) {
+                failed.add("collisions");
+            }
+            if (checked.layerOrder() != null && !checked.layerOrder().valid()) {
+                failed.add("layer order");
+            }
+            lines.add("failed: " + String.join(", ", failed));
         }
         return lines;
     }

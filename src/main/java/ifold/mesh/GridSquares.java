@@ -96,8 +96,8 @@ public final class GridSquares {
             double length = Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
             int a = Math.abs(n[0]) >= Math.abs(n[1]) && Math.abs(n[0]) >= Math.abs(n[2]) ? 0 : Math.abs(n[1]) >= Math.abs(n[2]) ? 1 : 2;
             if (!(length > 0) || Math.abs(n[(a + 1) % 3]) > OFF_LATTICE * length || Math.abs(n[(a + 2) % 3]) > OFF_LATTICE * length) {
-                throw new NotGrid(String.format(Locale.ROOT, "the face through %s is not square to the axes: the hinge strip "
-                        + "wraps grid polyhedra, every face of which is", corners(mesh, f)));
+                throw new NotGrid(String.format(Locale.ROOT, "the face through %s is not square to the axes, as every face of "
+                        + "a grid polyhedron (a polycube, a box) is: the hinge strip wraps those only", corners(mesh, f)));
             }
             normalAxis[f] = a;
             normalSign[f] = n[a] > 0 ? 1 : -1;

@@ -518,9 +518,9 @@ public final class CreasePatternPages {
         // Two lines of about equal length, small enough to fit an A4 page upright between its margins.
         canvas.text(MARGIN, y + 5, 2.4, "Numbers: the order of the folds, as the step diagrams number them. Printed side: the "
                 + (sheet ? "sheet's" : "strip's") + " top side, so its valleys fold towards you.", false);
+        // At most about 165 characters a line: 190 ended 2 mm from an A4 page's edge, where a printer cuts.
         canvas.text(MARGIN, y + 8.6, 2.4, (glued ? "Glue each piece's start on the tab before it, mark on mark. " : "")
-                + "Where a fold has turned the paper over, its printed valleys fold away from you: the step diagrams show each fold as it"
-                + " is seen.", false);
+                + "Where a fold turned the paper over, its printed valleys fold away from you, as the step diagrams show.", false);
         // The scale bar: 5 cm, a tick each centimetre.
         double bar = page.height() - MARGIN - 1.5;
         canvas.line(MARGIN, bar, MARGIN + 50, bar, Ink.SCALE);

@@ -140,7 +140,7 @@ public final class Seam {
      */
     public static Chosen wrap(HamiltonianRefinement.Result refinement, HamiltonianRefinement.Result instead, Wrap.Options options,
             Wrap.Watcher watcher, PaperCheck check) throws Wrap.WrapException {
-        Wrap.WrapException insteadFailure = null;
+        RuntimeException insteadFailure = null;
         if (instead != null) {
             try {
                 Chosen alone = placed(instead, Wrap.wrap(instead, options, watcher), 0);
@@ -155,7 +155,9 @@ public final class Seam {
                 // Folded along the refinement instead; where that fails too, this failure is the
                 // wrap's: the own triangles are the likelier to fit (igl_fertility.off's refusal
                 // names their widest strip, 832,963 faces likely, not the refinement's 2.8 million).
-                insteadFailure = e;
+                insteadFailure = new FailedPath(e);
+            } catch (ifold.geom.ParameterException e) {
+                insteadFailure = pathsOwn(e);
             }
         }
         int tries = tries(refinement, options.width());
@@ -182,18 +184,22 @@ public final class Seam {
         List<Integer> layers = new ArrayList<>();
         List<Integer> collisions = new ArrayList<>();
         HamiltonianRefinement.Result own = ownPath(refinement, options.width());
-        Wrap.WrapException firstFailure = null;
+        RuntimeException firstFailure = null;
         for (int k = 0; k < tries; k++) {
             HamiltonianRefinement.Result begun = k == 0 ? refinement : refinement.begunAt(shares.get(k));
             Wrap.Result result;
             try {
                 result = Wrap.wrap(begun, options, share(watcher, k, tries));
-            } catch (Wrap.WrapException e) {
+            } catch (Wrap.WrapException | ifold.geom.ParameterException e) {
+                RuntimeException failure = e instanceof Wrap.WrapException w ? new FailedPath(w) : pathsOwn((ifold.geom.ParameterException) e);
                 if (k == 0 && own == null) {
-                    throw insteadFailure != null ? insteadFailure : e;
+                    throw rethrown(insteadFailure != null ? insteadFailure : failure);
                 }
-                // A width too wide for the refinement's pieces may suit the own triangles.
-                firstFailure = k == 0 ? e : firstFailure;
+                // A width too wide for the refinement's pieces may suit the own triangles, and a
+                // thickness too thick for the refinement's default width their wider default (the
+                // cube's --thickness 0.03: a quarter of the refinement's 0.064 is 0.016, of its own
+                // triangles' 0.236, 0.059).
+                firstFailure = k == 0 ? failure : firstFailure;
                 layers.add(null); // kept in its place: the report lists the starts in order
                 collisions.add(null);
                 continue;
@@ -239,6 +245,7 @@ public final class Seam {
         // layers, or the refinement's paper collides from every start.
         List<Integer> ownLayers = new ArrayList<>();
         List<Integer> ownCollisions = new ArrayList<>();
+        ifold.geom.ParameterException ownRefused = null;
         if (own != null) {
             Wrap.Watcher quiet = stoppedBy(watcher);
             for (double share : OWN_TRIED) {
@@ -246,7 +253,8 @@ public final class Seam {
                 Wrap.Result result;
                 try {
                     result = Wrap.wrap(begun, options, quiet);
-                } catch (Wrap.WrapException e) {
+                } catch (Wrap.WrapException | ifold.geom.ParameterException e) {
+                    ownRefused = ownRefused == null && e instanceof ifold.geom.ParameterException p ? p : ownRefused;
                     ownLayers.add(null);
                     ownCollisions.add(null);
                     continue;
@@ -277,12 +285,43 @@ public final class Seam {
             }
         }
         if (best == null) {
-            throw firstFailure;
+            // A thickness no path takes: the own triangles' refusal names their wider width.
+            throw rethrown(ownRefused != null && firstFailure instanceof ifold.geom.ParameterException ? ownRefused : firstFailure);
         }
         return new Chosen(best.refinement(), best.result(), best.placed(), best.along(),
                 tries > 1 ? java.util.Collections.unmodifiableList(layers) : List.of(),
                 tries > 1 ? java.util.Collections.unmodifiableList(collisions) : List.of(),
                 best.measureSeconds(), java.util.Collections.unmodifiableList(ownLayers), java.util.Collections.unmodifiableList(ownCollisions), bestChecked);
+    }
+
+    /** A path's wrap that failed, carried until no other path wraps. */
+    private static final class FailedPath extends RuntimeException {
+        private static final long serialVersionUID = 1L;
+        final transient Wrap.WrapException failure;
+
+        FailedPath(Wrap.WrapException failure) {
+            super(null, null, false, false);
+            this.failure = failure;
+        }
+    }
+
+    /**
+     * A value given that one path's strip cannot take (a thickness over a quarter of its default
+     * width) is another path's to take; any other is the wrap's, whatever the path.
+     */
+    private static ifold.geom.ParameterException pathsOwn(ifold.geom.ParameterException e) {
+        if (!"thickness".equals(e.parameter())) {
+            throw e;
+        }
+        return e;
+    }
+
+    /** The failure of the paths tried, as the wrap's. */
+    private static RuntimeException rethrown(RuntimeException failure) throws Wrap.WrapException {
+        if (failure instanceof FailedPath path) {
+            throw path.failure;
+        }
+        return failure;
     }
 
     /**

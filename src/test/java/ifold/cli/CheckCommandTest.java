@@ -76,6 +76,8 @@ class CheckCommandTest {
         CliTest.Run check = run("check", "models/cube.off", moved.toString());
         assertEquals(UserError.EXIT_CODE, check.code(), check.out());
         assertTrue(check.out().contains("truths: ") && check.out().contains(" isometric ") && check.out().contains("is stretched"), check.out());
+        String[] out = check.out().strip().split("\n");
+        assertTrue(out[out.length - 1].startsWith("failed: truths"), "the last line says what failed: " + check.out());
     }
 
     /**

@@ -84,6 +84,17 @@ class CliTest {
         }
     }
 
+    /** Every command's help lists --version, and each prints the program's (the subcommands printed nothing). */
+    @Test
+    void everyCommandPrintsTheVersion() {
+        for (String[] args : new String[][] {{"--version"}, {"wrap", "--version"}, {"check", "-V"}, {"demo", "zigzag", "--version"},
+            {"demo", "--version"}}) {
+            Run run = run(args);
+            assertEquals(0, run.code(), String.join(" ", args) + ": " + run.err());
+            assertEquals("ifold 0.1.0", run.out().strip(), String.join(" ", args));
+        }
+    }
+
     /** main() builds only the subcommands a run needs (picocli's annotation reading is most of start-up). */
     @Test
     void aRunBuildsOnlyTheSubcommandItNeeds() {

@@ -208,6 +208,25 @@ class MovieTest {
         assertTrue(output.contains("wrote " + name + ".mp4: 30 frames of 160x90"), output);
     }
 
+    /** A model or script that is not there is said first, and alone: no movie is announced for it. */
+    @ParameterizedTest
+    @ValueSource(strings = {"wrap", "fold"})
+    void withoutADisplayAMissingInputIsOneLineAndNoMovie(String command) throws Exception {
+        Path launcher = Path.of("build", "install", "ifold", "bin", "ifold").toAbsolutePath();
+        assumeTrue(Files.isExecutable(launcher), "not installed (gradle installDist)");
+        Path log = dir.resolve("log");
+        ProcessBuilder builder = new ProcessBuilder(launcher.toString(), command, "missing.off").directory(dir.toFile())
+                .redirectErrorStream(true).redirectOutput(log.toFile());
+        builder.environment().remove("DISPLAY");
+        builder.environment().remove("IFOLD_IN_XVFB");
+        Process process = builder.start();
+        assertTrue(process.waitFor(60, java.util.concurrent.TimeUnit.SECONDS), "it ends");
+        String output = Files.readString(log);
+        assertEquals(1, process.exitValue(), output);
+        assertEquals("ifold: missing.off: no such file", output.strip(), "one line, and no movie announced");
+        assertFalse(Files.exists(dir.resolve(command + ".mp4")) || Files.exists(dir.resolve(command + ".gif")), "no movie");
+    }
+
     @Test
     void framesCarryALegendOfTheColoursAndTheCornersNamesUnlessToldNot() throws Exception {
         assumeDisplay();

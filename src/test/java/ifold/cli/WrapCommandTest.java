@@ -72,6 +72,23 @@ class WrapCommandTest {
     }
 
     /**
+     * A thickness is checked against the width of the strip that wraps: the cube follows its own
+     * triangles at 0.2357, where a quarter is 0.059, but the refinement's path, tried too, has a
+     * default of 0.064, and --thickness 0.03 was refused naming that width while the summary of a
+     * wrap without it says 0.2357. Thicker than a quarter of every path's width, it is refused
+     * naming the widest.
+     */
+    @Test
+    void aThicknessIsCheckedAgainstTheWidthOfTheStripThatWraps() throws Exception {
+        CliTest.Run run = CliTest.run("wrap", "models/cube.off", "--no-view", "--thickness", "0.03");
+        assertEquals(0, run.code(), run.err());
+        assertTrue(run.out().contains("x 0.2357"), run.out());
+        CliTest.Run thick = CliTest.run("wrap", "models/cube.off", "--no-view", "--thickness", "0.06");
+        assertEquals(2, thick.code(), thick.err());
+        assertTrue(thick.err().contains("option --thickness: must be at most a quarter of the width 0.2357"), thick.err());
+    }
+
+    /**
      * --export-mesh writes the same paper and caps as the OBJ, as one mesh: as binary PLY the
      * same vertices and faces; as STL the same triangles, fanned, with the layers' corners
      * welded where they coincide.
