@@ -144,6 +144,9 @@ public final class Scenes {
     public static WrapPlayback wrap(Scene scene, HalfedgeMesh mesh, Wrap.Result result, List<PaperInSpace> geometries) {
         Geometry solid = new Geometry(MODEL, SceneMesh.of(mesh), new Material(WrapView.MODEL, 0xFF4A5460, false, false));
         scene.root().attach(solid);
+        // White paper on white: only its outlines showed where it stands out from the model (a
+        // newcomer's trial of the cube's frames), as on the demos' table before it was grey-blue.
+        scene.setBackground(BACKGROUND);
         // Blue-grey underside over a grey-blue model reads as a hole: the legend says which is which.
         scene.setLegend(List.of(WrapView.TOP_SIDE, WrapView.UNDERSIDE, new Scene.Swatch(WrapView.MODEL, "the model")));
         return WrapView.play(scene, result, geometries);

@@ -53,7 +53,7 @@ class MainWindowFilesTest extends WindowTestBase {
         assertEquals("12", onEdt(() -> window.report.value("inputTriangles")));
         assertEquals("wrap", onEdt(() -> window.parameters.card()));
         assertTrue(onEdt(() -> window.getTitle()).contains("cube.off"));
-        assertTrue(pixelsOf(picture, 0xFFFFFF, 0) > 1000, "the cube's white background");
+        assertTrue(pixelsOf(picture, 0xD3DAE2, 3) > 1000, "the wrap on the demos' grey-blue background, where white paper stands out");
         onEdt(() -> {
             window.timeline.seek(0);
             return null;
