@@ -6,6 +6,7 @@ import ifold.job.JobWatcher;
 import ifold.geom.ParameterException;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -54,6 +55,14 @@ final class GenerateCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
+        // An option the shape does not take was ignored in silence (generate cube --size 3x3x3).
+        for (String option : List.of("around", "across", "subdivisions", "size", "cubes", "seed")) {
+            if (spec.commandLine().getParseResult().hasMatchedOption("--" + option) && !BuiltInModels.parametersOf(shape).contains(option)) {
+                BuiltInModels.Shape taker = java.util.Arrays.stream(BuiltInModels.Shape.values())
+                        .filter(s -> BuiltInModels.parametersOf(s).contains(option)).findFirst().orElseThrow();
+                throw UserError.usage("option --" + option + ": only " + taker + " takes it, not " + shape);
+            }
+        }
         OutputFiles.checkWritableFile(output, "-o", ".off", ".obj", ".ply", ".stl");
         String[] sides = size.strip().toLowerCase(java.util.Locale.ROOT).split("x", -1);
         int[] box = new int[sides.length];

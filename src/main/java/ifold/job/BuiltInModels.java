@@ -4,6 +4,7 @@ import ifold.mesh.PolygonSoup;
 import ifold.mesh.Polycubes;
 import ifold.mesh.Solids;
 import ifold.geom.ParameterException;
+import java.util.List;
 import java.util.Locale;
 
 /**
@@ -122,6 +123,21 @@ public final class BuiltInModels {
             case torus -> Solids.torus(3, 1, around, across);
             case triangle -> Solids.triangle();
             case figure3 -> Solids.figure3();
+        };
+    }
+
+    /**
+     * The parameters {@code shape} takes, as the requests name them ({@code around}, {@code
+     * across}, {@code subdivisions}, {@code size}, {@code cubes}, {@code seed}); none for a
+     * fixed shape.
+     */
+    public static List<String> parametersOf(Shape shape) {
+        return switch (shape) {
+            case torus -> List.of("around", "across");
+            case icosphere -> List.of("subdivisions");
+            case box -> List.of("size");
+            case polycube -> List.of("cubes", "seed");
+            default -> List.of();
         };
     }
 

@@ -233,6 +233,23 @@ class CliTest {
         assertOneLineError(run("refine", model.toString(), "-o", locked.resolve("x.off").toString()), "not writable");
     }
 
+    /** An option the shape does not take is refused, naming the shape that takes it (they were ignored in silence). */
+    @Test
+    void generateRefusesAnOptionTheShapeDoesNotTake() {
+        String[][] cases = {{"cube", "--size", "3x3x3", "option --size: only box takes it, not cube"},
+            {"icosahedron", "--cubes", "5", "option --cubes: only polycube takes it, not icosahedron"},
+            {"box", "--around", "5", "option --around: only torus takes it, not box"},
+            {"torus", "--subdivisions", "2", "option --subdivisions: only icosphere takes it, not torus"}};
+        for (String[] c : cases) {
+            Path out = dir.resolve(c[0] + "-refused.off");
+            Run run = run("generate", c[0], c[1], c[2], "-o", out.toString());
+            assertEquals(2, run.code(), run.err());
+            assertTrue(run.err().startsWith("ifold: " + c[3]), run.err());
+            assertFalse(Files.exists(out), "nothing written");
+        }
+        assertEquals(0, run("generate", "torus", "--around", "8", "--across", "4", "-o", dir.resolve("t.off").toString()).code());
+    }
+
     /** Every option's value shows as N, not as picocli's placeholder made of the field's name. */
     @Test
     void generateHelpNamesItsValues() {
