@@ -152,7 +152,7 @@ final class CornerTucks {
         }
         return String.format(Locale.ROOT, "a strip %.4g wide would need %,d passes, and the corner of %.2g degrees at (%.6g %.6g %.6g)%s"
                 + " about %,d tucks (a flap tucked there bounces between its edges about 180/angle times): at least %,d faces of paper"
-                + " (%,d for the passes, %d a tuck; likely about %,d), more than the limit of %d faces; %s", width, passes, smallest[h],
+                + " (%,d for the passes, %d a tuck; likely about %,d), more than the limit of %,d faces; %s", width, passes, smallest[h],
                 p[0], p[1], p[2], sharpCorners > 1 ? String.format(Locale.ROOT, " with %d other host%s corners under %.0f degree", sharpCorners - 1,
                 sharpCorners > 2 ? "s'" : "'s", SHARP_DEGREES) : "", tucks(), passesFewest + fewestFaces(), passesFewest, FEWEST_FACES_A_TUCK,
                 likely.applyAsLong(width), limit, !Double.isNaN(fits)

@@ -66,7 +66,7 @@ public final class HingeStrip {
         }
         if (faces > maxFaces) {
             throw new Wrap.FaceLimitException(String.format(Locale.ROOT, "the hinge strip passes %,d times through %,d squares and "
-                    + "makes %,d faces of paper, more than the limit of %d", tour.passes(), squares.count(), faces,
+                    + "makes %,d faces of paper, more than the limit of %,d", tour.passes(), squares.count(), faces,
                     maxFaces));
         }
         double tolerance = Tolerance.ON_PLANE * Wrap.modelSize(layout.mesh);
@@ -271,7 +271,7 @@ public final class HingeStrip {
             }
             if (sheet.faceCount() > maxFaces) {
                 throw new Wrap.FaceLimitException(String.format(Locale.ROOT, "the strip has %d faces of paper at pass %d of %d, more "
-                        + "than the limit of %d faces", sheet.faceCount(), pass - first + 1, end - first, maxFaces));
+                        + "than the limit of %,d faces", sheet.faceCount(), pass - first + 1, end - first, maxFaces));
             }
             TailMove move = new TailMove(hostBefore, before, sheet.tailHost(), sheet.tailPose(), sheet.tailStart(false),
                     sheet.tailStart(true), over);

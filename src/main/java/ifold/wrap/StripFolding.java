@@ -1233,7 +1233,7 @@ final class StripFolding {
             long whole = (long) Math.ceil(faces * all / done);
             long enough = (long) Math.ceil(whole * 1.1 / 1000) * 1000; // a tenth to spare, in thousands
             throw new FaceLimitException(String.format(Locale.ROOT, "the strip %s %,d faces of paper on triangle %d of %d on the "
-                    + "path (%s)%s, more than the limit of %d faces; at this rate the whole path makes about %,d, and a limit "
+                    + "path (%s)%s, more than the limit of %,d faces; at this rate the whole path makes about %,d, and a limit "
                     + "of %d (about %,d MiB) would likely let it finish", cuts == 0 ? "has" : "would have", faces, pathIndex + 1,
                     plan.m, cornersText(mesh, plan.first + pathIndex), cuts == 0 ? ""
                     : String.format(Locale.ROOT, " once its next tuck cuts through %,d more", cuts), maxFaces, whole, enough, enough * BYTES_PER_FACE >> 20));

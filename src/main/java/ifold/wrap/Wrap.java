@@ -609,7 +609,7 @@ public final class Wrap {
         if (fewestFaces > options.maxFaces()) {
             double fits = narrowestFitting(plans, alone, width, widest, options.maxFaces());
             throw new FaceLimitException(String.format(Locale.ROOT, "a strip %.4g wide would need %,d passes and make about %,d faces "
-                    + "of paper (at least %,d), more than the limit of %d faces: triangle %s alone needs %,d passes; %s", width, passes,
+                    + "of paper (at least %,d), more than the limit of %,d faces: triangle %s alone needs %,d passes; %s", width, passes,
                     faces(plans, width, alone, true), fewestFaces, options.maxFaces(), cornersText(mesh, most), mostPasses,
                     !Double.isNaN(fits) ? String.format(Locale.ROOT, "the narrowest strip that fits is about %.4g wide", fits)
                     : String.format(Locale.ROOT, "no strip the path takes fits: the widest, %.4g, which the narrowest triangle (%s) "

@@ -141,7 +141,7 @@ class WrapCommandTest {
         CliTest.Run run = CliTest.run("wrap", model.toString(), "--no-view");
         CliTest.assertOneLineError(run, model + ": cannot wrap: a strip 2.909e-06 wide would need 243,096 passes, and the corner of 0.0010 degrees"
                 + " at (0.00000 0.00000 0.00000) about 180,000 tucks", "at least 846,192 faces",
-                "more than the limit of " + ifold.wrap.Wrap.DEFAULT_MAX_FACES + " faces", "no strip the path takes fits", "--max-faces raises the limit");
+                "more than the limit of " + String.format(java.util.Locale.ROOT, "%,d", ifold.wrap.Wrap.DEFAULT_MAX_FACES) + " faces", "no strip the path takes fits", "--max-faces raises the limit");
     }
 
     /**
@@ -320,7 +320,7 @@ class WrapCommandTest {
         // own triangles would widen to fit (WrapJob.widened).
         CliTest.assertOneLineError(CliTest.run(concat(new String[] {"wrap", "models/figure3.off", "--width", "0.04475", "--max-faces", "1000"},
                 outputs)),
-                "figure3.off", "faces of paper on triangle", "more than the limit of 1000 faces", "--max-faces");
+                "figure3.off", "faces of paper on triangle", "more than the limit of 1,000 faces", "--max-faces");
         assertFalse(Files.exists(report), "no report after a failure");
         assertFalse(Files.exists(obj), "no OBJ after a failure");
         assertEquals(0, CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--max-faces", "100000"}, outputs)).code());

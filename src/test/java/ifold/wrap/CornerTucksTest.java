@@ -73,7 +73,7 @@ public class CornerTucksTest {
         String message = e.getMessage();
         assertTrue(message.startsWith("a strip 2.909e-06 wide would need 243,096 passes, and the corner of 0.0010 degrees at (0.00000 0.00000 0.00000)"
                 + " about 180,000 tucks") && message.contains("at least 846,192 faces of paper (486,192 for the passes, 2 a tuck; likely about ")
-                && message.contains("more than the limit of " + Wrap.DEFAULT_MAX_FACES + " faces; no strip the path takes fits: the widest, 8.727e-06,")
+                && message.contains("more than the limit of " + String.format(java.util.Locale.ROOT, "%,d", Wrap.DEFAULT_MAX_FACES) + " faces; no strip the path takes fits: the widest, 8.727e-06,")
                 && message.endsWith("widen the corner"), message);
     }
 
@@ -126,7 +126,7 @@ public class CornerTucksTest {
         assertTrue(after - before > 100, "setup: a tuck that cuts through the passes, " + before + " -> " + after);
         Wrap.FaceLimitException e = assertThrows(Wrap.FaceLimitException.class, () -> Wrap.wrap(sharp, options.withMaxFaces(after - 1)));
         assertTrue(e.getMessage().startsWith(String.format(Locale.ROOT, "the strip would have %,d faces of paper on triangle ", after))
-                && e.getMessage().contains(String.format(Locale.ROOT, " once its next tuck cuts through %,d more, more than the limit of %d faces",
+                && e.getMessage().contains(String.format(Locale.ROOT, " once its next tuck cuts through %,d more, more than the limit of %,d faces",
                 after - before, after - 1)), e.getMessage());
     }
 }

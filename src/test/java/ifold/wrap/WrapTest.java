@@ -658,7 +658,7 @@ public class WrapTest {
         Wrap.WrapException e = assertThrows(Wrap.FaceLimitException.class,
                 () -> Wrap.wrap(refinement, new Wrap.Options(Double.NaN, Double.NaN)));
         assertTrue(e.getMessage().contains("faces of paper (at least ")
-                && e.getMessage().contains("more than the limit of " + Wrap.DEFAULT_MAX_FACES + " faces") && e.getMessage().contains("no strip the path takes fits")
+                && e.getMessage().contains("more than the limit of " + String.format(java.util.Locale.ROOT, "%,d", Wrap.DEFAULT_MAX_FACES) + " faces") && e.getMessage().contains("no strip the path takes fits")
                 && e.getMessage().contains("narrowest triangle"),
                 e.getMessage());
     }
@@ -739,7 +739,7 @@ public class WrapTest {
                 () -> Wrap.wrap(refinement, options.withMaxFaces(faces - 1)));
         // The last fold is a tuck: stopped before it cuts, the strip would have the faces it has whole.
         assertTrue(during.getMessage().matches("the strip (has|would have) " + String.format(java.util.Locale.ROOT, "%,d", faces) + " faces of paper on triangle \\d+ of 58 .*more than the "
-                + "limit of " + (faces - 1) + " faces; at this rate .*"), during.getMessage());
+                + "limit of " + String.format(java.util.Locale.ROOT, "%,d", faces - 1) + " faces; at this rate .*"), during.getMessage());
         // Stopped part way, it says about how many the whole makes, and a limit that lets it finish does.
         Wrap.FaceLimitException half = assertThrows(Wrap.FaceLimitException.class,
                 () -> Wrap.wrap(refinement, options.withMaxFaces(7 * faces / 10)));
@@ -802,7 +802,7 @@ public class WrapTest {
                 "a third where that fits");
         Wrap.FaceLimitException none = assertThrows(Wrap.FaceLimitException.class,
                 () -> Wrap.wrap(refinement, new Wrap.Options(Double.NaN, Double.NaN, null, (int) (atWidest / 2))));
-        assertTrue(none.getMessage().contains("more than the limit of " + atWidest / 2 + " faces"), none.getMessage());
+        assertTrue(none.getMessage().contains("more than the limit of " + String.format(java.util.Locale.ROOT, "%,d", atWidest / 2) + " faces"), none.getMessage());
     }
 
     private static ParameterException assertParameter(String parameter, org.junit.jupiter.api.function.Executable make) {
