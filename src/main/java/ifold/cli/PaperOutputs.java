@@ -355,7 +355,15 @@ final class PaperOutputs {
         }
         PaperCollisions.Result result = Collisions.addTo(figures, strips, thickness, model, exportObj);
         collisions = result != null ? result.summary() : "collisions: not checked: " + Collisions.notChecked(strips, thickness);
+        collided = result != null && !result.isClean();
     }
+
+    /** Whether the collision check ran and found paper crossing itself or the model. */
+    boolean collided() {
+        return collided;
+    }
+
+    private boolean collided;
 
     /**
      * The lines saying which files were written, kept for after the summary: what was made comes

@@ -72,6 +72,24 @@ class WrapCommandTest {
     }
 
     /**
+     * Where the zig-zag's paper crosses itself on a grid polyhedron (a random polycube of 30
+     * cubes: 357 crossing pairs), the wrap says the hinge strip wraps it; not where it is sound
+     * (the cube), nor on a model that is no grid polyhedron.
+     */
+    @Test
+    void aGridPolyhedronWhosePaperCollidesIsPointedToTheHingeStrip() throws Exception {
+        Path polycube = dir.resolve("pc30.off");
+        assertEquals(0, CliTest.run("generate", "polycube", "--cubes", "30", "--seed", "5", "-o", polycube.toString()).code());
+        CliTest.Run run = CliTest.run("wrap", polycube.toString(), "--no-view", "--report", dir.resolve("pc30.json").toString());
+        assertEquals(0, run.code(), run.err());
+        assertTrue(run.out().contains("collisions: ") && !run.out().contains("collisions: 0 crossing pairs (0 with caps), 0 pairs"),
+                "setup: its paper collides: " + run.out());
+        assertTrue(run.err().contains("pc30.off is a grid polyhedron: the hinge strip wraps it in two layers (--method hinge)"), run.err());
+        CliTest.Run cube = CliTest.run("wrap", "models/cube.off", "--no-view", "--report", dir.resolve("cube.json").toString());
+        assertFalse(cube.err().contains("hinge"), "sound paper: " + cube.err());
+    }
+
+    /**
      * A thickness is checked against the width of the strip that wraps: the cube follows its own
      * triangles at 0.2357, where a quarter is 0.059, but the refinement's path, tried too, has a
      * default of 0.064, and --thickness 0.03 was refused naming that width while the summary of a
