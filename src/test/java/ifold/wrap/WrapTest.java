@@ -315,6 +315,23 @@ public class WrapTest {
     }
 
     /**
+     * The issue's one 100 × 1 triangle, an open surface, refused at the default width and at
+     * widths of 0.01 and 0.003 when issue 20 was filed: wrapped as the command wraps it, every
+     * truth, its layer order and no crossing. Its corners of 0.57° make a vertex of 1.15° whose
+     * floor is 79 layers for any strip; it lays 174, within three times the floor.
+     */
+    @Test
+    void theIssuesHundredByOneTriangleWrapsAtTheDefaultsKeepingEveryTruth() throws Exception {
+        PolygonSoup soup = new PolygonSoup();
+        soup.addTriangle(soup.addVertex(0, 0, 0), soup.addVertex(100, 0, 0), soup.addVertex(50, 1, 0));
+        HalfedgeMesh triangle = build(soup);
+        int layers = wrapAsTheCommandDoesAndCheck(dir, triangle);
+        int floor = LayerFloor.of(triangle).layers();
+        assertEquals(79, floor, "setup: the floor of its 1.15° vertex");
+        assertTrue(layers <= 3 * floor, layers + " layers against the floor " + floor);
+    }
+
+    /**
      * The issue's big torus ({@code ifold generate torus --around 50 --across 22}, 2,200
      * triangles), which went over the face limit at the defaults when issue 20 was filed (22 s;
      * 47 s and 1.4 GB with the limit raised, 51 layers): wrapped as the command wraps it, every
