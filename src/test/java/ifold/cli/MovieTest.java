@@ -193,11 +193,7 @@ class MovieTest {
             args.add(Path.of("models", "cube.off").toAbsolutePath().toString());
         }
         args.addAll(java.util.List.of("--seconds", "1", "--size", "160x90"));
-        ProcessBuilder builder = new ProcessBuilder(args).directory(dir.toFile()).redirectErrorStream(true).redirectOutput(log.toFile());
-        builder.environment().remove("DISPLAY");
-        builder.environment().remove("IFOLD_IN_XVFB");
-        Process process = builder.start();
-        assertTrue(process.waitFor(120, java.util.concurrent.TimeUnit.SECONDS), "it ends");
+        Process process = withoutDisplay(args, log, 120);
         String output = Files.readString(log);
         assertEquals(0, process.exitValue(), output);
         Path movie = dir.resolve(name + ".mp4");
@@ -215,16 +211,21 @@ class MovieTest {
         Path launcher = Path.of("build", "install", "ifold", "bin", "ifold").toAbsolutePath();
         assumeTrue(Files.isExecutable(launcher), "not installed (gradle installDist)");
         Path log = dir.resolve("log");
-        ProcessBuilder builder = new ProcessBuilder(launcher.toString(), command, "missing.off").directory(dir.toFile())
-                .redirectErrorStream(true).redirectOutput(log.toFile());
-        builder.environment().remove("DISPLAY");
-        builder.environment().remove("IFOLD_IN_XVFB");
-        Process process = builder.start();
-        assertTrue(process.waitFor(60, java.util.concurrent.TimeUnit.SECONDS), "it ends");
+        Process process = withoutDisplay(java.util.List.of(launcher.toString(), command, "missing.off"), log, 60);
         String output = Files.readString(log);
         assertEquals(1, process.exitValue(), output);
         assertEquals("ifold: missing.off: no such file", output.strip(), "one line, and no movie announced");
         assertFalse(Files.exists(dir.resolve(command + ".mp4")) || Files.exists(dir.resolve(command + ".gif")), "no movie");
+    }
+
+    /** Runs {@code args} in the test's folder with no display, its output and errors into {@code log}; ended within {@code seconds}. */
+    private Process withoutDisplay(java.util.List<String> args, Path log, int seconds) throws Exception {
+        ProcessBuilder builder = new ProcessBuilder(args).directory(dir.toFile()).redirectErrorStream(true).redirectOutput(log.toFile());
+        builder.environment().remove("DISPLAY");
+        builder.environment().remove("IFOLD_IN_XVFB");
+        Process process = builder.start();
+        assertTrue(process.waitFor(seconds, java.util.concurrent.TimeUnit.SECONDS), "it ends");
+        return process;
     }
 
     @Test
