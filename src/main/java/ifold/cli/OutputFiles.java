@@ -39,5 +39,11 @@ final class OutputFiles {
         if (!Files.isWritable(folder)) {
             throw UserError.usage("option " + option + ": folder " + folder + " is not writable");
         }
+        // A folder can say it is writable and take no file (/proc, to root): found now, not after the wrap.
+        try {
+            Files.delete(Files.createTempFile(folder, ".ifold-", ".probe"));
+        } catch (java.io.IOException e) {
+            throw UserError.usage("option " + option + ": cannot create a file in folder " + folder);
+        }
     }
 }

@@ -113,8 +113,10 @@ public final class AtomicFile {
         if (e instanceof AccessDeniedException) {
             return "permission denied";
         }
-        if (e instanceof NoSuchFileException) {
-            return "no such folder";
+        if (e instanceof NoSuchFileException missing) {
+            // The folder may be there and take no file (/proc).
+            Path folder = missing.getFile() == null ? null : Path.of(missing.getFile()).getParent();
+            return folder != null && Files.isDirectory(folder) ? "cannot create a file in that folder" : "no such folder";
         }
         if (e instanceof FileSystemException fse && fse.getReason() != null) {
             return fse.getReason();

@@ -264,6 +264,10 @@ class WrapCommandTest {
         CliTest.assertOneLineError(negative, "--width: must be a positive number, got -1");
         assertFalse(negative.err().contains("-1.0"), negative.err());
         assertOptionError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--thickness", "-0.1"}, outputs)), "--thickness");
+        if (Files.isDirectory(Path.of("/proc"))) {
+            // A folder that takes no file, found before the wrap (it said "no such folder" after it).
+            assertOptionError(CliTest.run("wrap", "models/cube.off", "--no-view", "--export-obj", "/proc/x.obj"), "--export-obj");
+        }
         // NaN stands for the default inside: typed, it is refused rather than taken for it.
         assertOptionError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--width", "NaN"}, outputs)), "--width");
         assertOptionError(CliTest.run(concat(new String[] {"wrap", "models/cube.off", "--thickness", "NaN"}, outputs)), "--thickness");
