@@ -71,7 +71,12 @@ final class FoldCommand implements Callable<Integer> {
         }
         // Without a display it does the exports asked for and renders frames where the viewer was
         // wanted, as the demos and the wrap do.
-        // The script first: a movie said to be rendered for a script that is not there was one line too many.
+        // The script first: a movie said to be rendered for a script that is not there, or is a
+        // folder, was one line too many.
+        if (Files.isDirectory(script)) {
+            throw new UserError(script + ": is a folder, expected a fold script");
+        }
+        LoadedModel.requireRegularFile(script);
         if (Files.notExists(script)) {
             throw new UserError(script + ": no such file");
         }
@@ -80,10 +85,6 @@ final class FoldCommand implements Callable<Integer> {
         if (foldFrames && outputs.exportFold == null) {
             throw UserError.usage("option --fold-frames: only with --export-fold, whose file holds the frames");
         }
-        if (Files.isDirectory(script)) {
-            throw new UserError(script + ": is a folder, expected a fold script");
-        }
-        LoadedModel.requireRegularFile(script);
         ScriptJob.Outcome folding;
         try {
             folding = ScriptJob.run(script, maxFaces, stage -> { });

@@ -56,11 +56,12 @@ final class GenerateCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         // An option the shape does not take was ignored in silence (generate cube --size 3x3x3).
-        for (String option : List.of("around", "across", "subdivisions", "size", "cubes", "seed")) {
-            if (spec.commandLine().getParseResult().hasMatchedOption("--" + option) && !BuiltInModels.parametersOf(shape).contains(option)) {
-                BuiltInModels.Shape taker = java.util.Arrays.stream(BuiltInModels.Shape.values())
-                        .filter(s -> BuiltInModels.parametersOf(s).contains(option)).findFirst().orElseThrow();
-                throw UserError.usage("option --" + option + ": only " + taker + " takes it, not " + shape);
+        // Each shape's parameters are the options of the same names.
+        for (BuiltInModels.Shape taker : BuiltInModels.Shape.values()) {
+            for (String option : BuiltInModels.parametersOf(taker)) {
+                if (spec.commandLine().getParseResult().hasMatchedOption("--" + option) && !BuiltInModels.parametersOf(shape).contains(option)) {
+                    throw UserError.usage("option --" + option + ": only " + taker + " takes it, not " + shape);
+                }
             }
         }
         OutputFiles.checkWritableFile(output, "-o", ".off", ".obj", ".ply", ".stl");

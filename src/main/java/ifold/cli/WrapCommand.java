@@ -104,6 +104,9 @@ final class WrapCommand implements Callable<Integer> {
             throw UserError.usage(e);
         }
         // The model first: a movie said to be rendered for a model that is not there was one line too many.
+        if (java.nio.file.Files.isDirectory(model)) {
+            throw new UserError(model + ": is a folder, expected a model file"); // as the loader says it
+        }
         LoadedModel.requireRegularFile(model);
         if (java.nio.file.Files.notExists(model)) {
             throw new UserError(model + ": no such file");
@@ -226,7 +229,8 @@ final class WrapCommand implements Callable<Integer> {
         if (result.method() == Wrap.Method.ZIGZAG && outputs.collided() && gridPolyhedron(mesh)) {
             // A polycube's zig-zag paper may cross itself (a random one of 30 cubes: 357 pairs),
             // where the method made for such models lays two layers that do not.
-            err.println("ifold: " + model + " is a grid polyhedron: the hinge strip wraps it in two layers (--method hinge)");
+            err.println("ifold: " + model + ": its paper crosses itself; it is a grid polyhedron, which the hinge strip wraps in two layers"
+                    + " (--method hinge)");
         }
         if (outputs.frameOptions.frames != null || !outputs.noView) {
             show(mesh, result, geometries, written);

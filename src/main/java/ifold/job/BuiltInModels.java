@@ -137,7 +137,7 @@ public final class BuiltInModels {
             case icosphere -> List.of("subdivisions");
             case box -> List.of("size");
             case polycube -> List.of("cubes", "seed");
-            default -> List.of();
+            case tetrahedron, cube, octahedron, icosahedron, triangle, figure3, l, t, plus, staircase -> List.of();
         };
     }
 

@@ -62,7 +62,22 @@ public final class CheckJob {
          * checked, else null) is valid.
          */
         public boolean holds() {
-            return truths.isEmpty() && (collisions == null || collisions.isClean()) && (layerOrder == null || layerOrder.valid());
+            return failures().isEmpty();
+        }
+
+        /** The checks that fail, in words ("truths", "collisions", "layer order"); empty where every one holds. */
+        public List<String> failures() {
+            List<String> failed = new ArrayList<>();
+            if (!truths.isEmpty()) {
+                failed.add("truths");
+            }
+            if (collisions != null && !collisions.isClean()) {
+                failed.add("collisions");
+            }
+            if (layerOrder != null && !layerOrder.valid()) {
+                failed.add("layer order");
+            }
+            return failed;
         }
     }
 
@@ -219,19 +234,9 @@ public final class CheckJob {
             lines.add(checked.layerOrder().summary()); // "layer order: ..."
         }
         if (!checked.holds()) {
-            // One line naming what failed: "truths: every one holds" first, then a line of
-            // collisions, read as though the check had passed.
-            List<String> failed = new ArrayList<>();
-            if (!checked.truths().isEmpty()) {
-                failed.add("truths");
-            }
-            if (checked.collisions() != null && !checked.collisions().isClean()) {
-                failed.add("collisions");
-            }
-            if (checked.layerOrder() != null && !checked.layerOrder().valid()) {
-                failed.add("layer order");
-            }
-            lines.add("failed: " + String.join(", ", failed));
+            // Said in one line: a run whose first line of checks is "truths: every one holds"
+            // and whose collisions fail was read as one that passed.
+            lines.add("failed: " + String.join(", ", checked.failures()));
         }
         return lines;
     }

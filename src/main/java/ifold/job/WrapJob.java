@@ -190,6 +190,11 @@ public final class WrapJob {
                 } catch (Wrap.WrapException e) {
                     stopIfAsked(watcher); // the other path refused: the first stands
                     otherTried.put("refused", e.getMessage());
+                } catch (ifold.geom.ParameterException e) {
+                    if (!"thickness".equals(e.parameter())) {
+                        throw e;
+                    }
+                    otherTried.put("refused", e.getMessage()); // too thick for its narrower strip: the first stands
                 }
             }
             String passedOver = passedOver(model.toString(), seam);

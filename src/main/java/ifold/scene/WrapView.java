@@ -54,8 +54,8 @@ public final class WrapView {
 
     /**
      * Whether paper on {@code mesh} can be seen from below its faces too: an open surface (an
-     * edge with one face, the zig-zag demo's lone triangle), or no surface at all (the turn
-     * gadget's strip on an empty table). A closed solid hides what lies under its paper.
+     * edge with one face: the zig-zag demo's lone triangle, the turn gadget's table), or no
+     * surface at all. A closed solid hides what lies under its paper. Asked once a wrap drawn.
      */
     static boolean seenFromBothSides(IndexedPolygons mesh) {
         if (mesh == null || mesh.faceCount() == 0) {

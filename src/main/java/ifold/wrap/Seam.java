@@ -1,5 +1,6 @@
 package ifold.wrap;
 
+import ifold.geom.ParameterException;
 import ifold.mesh.IndexedPolygons;
 import ifold.refine.CycleCoverPath;
 import ifold.refine.HamiltonianRefinement;
@@ -127,6 +128,8 @@ public final class Seam {
      * refinement's first start failed, its first that wraps is kept as the first start would be.
      *
      * @throws Wrap.WrapException as {@link Wrap#wrap(HamiltonianRefinement.Result, Wrap.Options, Wrap.Watcher)}, from the refinement's own start
+     * @throws ParameterException where no path takes the thickness asked (over a quarter of
+     *     each one's default width), or a start refuses any other value
      */
     public static Chosen wrap(HamiltonianRefinement.Result refinement, Wrap.Options options, Wrap.Watcher watcher, PaperCheck check)
             throws Wrap.WrapException {
@@ -140,7 +143,7 @@ public final class Seam {
      */
     public static Chosen wrap(HamiltonianRefinement.Result refinement, HamiltonianRefinement.Result instead, Wrap.Options options,
             Wrap.Watcher watcher, PaperCheck check) throws Wrap.WrapException {
-        RuntimeException insteadFailure = null;
+        Exception insteadFailure = null;
         if (instead != null) {
             try {
                 Chosen alone = placed(instead, Wrap.wrap(instead, options, watcher), 0);
@@ -155,9 +158,9 @@ public final class Seam {
                 // Folded along the refinement instead; where that fails too, this failure is the
                 // wrap's: the own triangles are the likelier to fit (igl_fertility.off's refusal
                 // names their widest strip, 832,963 faces likely, not the refinement's 2.8 million).
-                insteadFailure = new FailedPath(e);
-            } catch (ifold.geom.ParameterException e) {
-                insteadFailure = pathsOwn(e);
+                insteadFailure = e;
+            } catch (ParameterException e) {
+                insteadFailure = thicknessOnly(e);
             }
         }
         int tries = tries(refinement, options.width());
@@ -184,16 +187,16 @@ public final class Seam {
         List<Integer> layers = new ArrayList<>();
         List<Integer> collisions = new ArrayList<>();
         HamiltonianRefinement.Result own = ownPath(refinement, options.width());
-        RuntimeException firstFailure = null;
+        Exception firstFailure = null;
         for (int k = 0; k < tries; k++) {
             HamiltonianRefinement.Result begun = k == 0 ? refinement : refinement.begunAt(shares.get(k));
             Wrap.Result result;
             try {
                 result = Wrap.wrap(begun, options, share(watcher, k, tries));
-            } catch (Wrap.WrapException | ifold.geom.ParameterException e) {
-                RuntimeException failure = e instanceof Wrap.WrapException w ? new FailedPath(w) : pathsOwn((ifold.geom.ParameterException) e);
+            } catch (Wrap.WrapException | ParameterException e) {
+                Exception failure = e instanceof ParameterException p ? thicknessOnly(p) : e;
                 if (k == 0 && own == null) {
-                    throw rethrown(insteadFailure != null ? insteadFailure : failure);
+                    throw thrown(insteadFailure != null ? insteadFailure : failure);
                 }
                 // A width too wide for the refinement's pieces may suit the own triangles, and a
                 // thickness too thick for the refinement's default width their wider default (the
@@ -245,7 +248,7 @@ public final class Seam {
         // layers, or the refinement's paper collides from every start.
         List<Integer> ownLayers = new ArrayList<>();
         List<Integer> ownCollisions = new ArrayList<>();
-        ifold.geom.ParameterException ownRefused = null;
+        Exception ownFailure = null; // the own triangles' first failure
         if (own != null) {
             Wrap.Watcher quiet = stoppedBy(watcher);
             for (double share : OWN_TRIED) {
@@ -253,8 +256,8 @@ public final class Seam {
                 Wrap.Result result;
                 try {
                     result = Wrap.wrap(begun, options, quiet);
-                } catch (Wrap.WrapException | ifold.geom.ParameterException e) {
-                    ownRefused = ownRefused == null && e instanceof ifold.geom.ParameterException p ? p : ownRefused;
+                } catch (Wrap.WrapException | ParameterException e) {
+                    ownFailure = ownFailure == null ? (e instanceof ParameterException p ? thicknessOnly(p) : e) : ownFailure;
                     ownLayers.add(null);
                     ownCollisions.add(null);
                     continue;
@@ -285,8 +288,10 @@ public final class Seam {
             }
         }
         if (best == null) {
-            // A thickness no path takes: the own triangles' refusal names their wider width.
-            throw rethrown(ownRefused != null && firstFailure instanceof ifold.geom.ParameterException ? ownRefused : firstFailure);
+            // Where the refinement refused the thickness, the own triangles' failure is the
+            // wrap's: their wider width's refusal, or what stopped them once they took it (the
+            // cube at --thickness 0.03 --max-faces 200: the face limit, not the thickness).
+            throw thrown(ownFailure != null && firstFailure instanceof ParameterException ? ownFailure : firstFailure);
         }
         return new Chosen(best.refinement(), best.result(), best.placed(), best.along(),
                 tries > 1 ? java.util.Collections.unmodifiableList(layers) : List.of(),
@@ -294,34 +299,24 @@ public final class Seam {
                 best.measureSeconds(), java.util.Collections.unmodifiableList(ownLayers), java.util.Collections.unmodifiableList(ownCollisions), bestChecked);
     }
 
-    /** A path's wrap that failed, carried until no other path wraps. */
-    private static final class FailedPath extends RuntimeException {
-        private static final long serialVersionUID = 1L;
-        final transient Wrap.WrapException failure;
-
-        FailedPath(Wrap.WrapException failure) {
-            super(null, null, false, false);
-            this.failure = failure;
-        }
-    }
-
     /**
-     * A value given that one path's strip cannot take (a thickness over a quarter of its default
-     * width) is another path's to take; any other is the wrap's, whatever the path.
+     * {@code e} where it refuses a thickness, which one path's strip cannot take (over a quarter
+     * of its default width) and another's may; thrown where it refuses anything else, whatever
+     * the path.
      */
-    private static ifold.geom.ParameterException pathsOwn(ifold.geom.ParameterException e) {
+    private static ParameterException thicknessOnly(ParameterException e) {
         if (!"thickness".equals(e.parameter())) {
             throw e;
         }
         return e;
     }
 
-    /** The failure of the paths tried, as the wrap's. */
-    private static RuntimeException rethrown(RuntimeException failure) throws Wrap.WrapException {
-        if (failure instanceof FailedPath path) {
-            throw path.failure;
+    /** The failure of the paths tried, as the wrap's: a refusal of the thickness, or the wrap's own exception. */
+    private static Wrap.WrapException thrown(Exception failure) {
+        if (failure instanceof ParameterException p) {
+            throw p;
         }
-        return failure;
+        return (Wrap.WrapException) failure;
     }
 
     /**

@@ -84,7 +84,7 @@ class WrapCommandTest {
         assertEquals(0, run.code(), run.err());
         assertTrue(run.out().contains("collisions: ") && !run.out().contains("collisions: 0 crossing pairs (0 with caps), 0 pairs"),
                 "setup: its paper collides: " + run.out());
-        assertTrue(run.err().contains("pc30.off is a grid polyhedron: the hinge strip wraps it in two layers (--method hinge)"), run.err());
+        assertTrue(run.err().contains("pc30.off: its paper crosses itself; it is a grid polyhedron, which the hinge strip wraps in two layers (--method hinge)"), run.err());
         CliTest.Run cube = CliTest.run("wrap", "models/cube.off", "--no-view", "--report", dir.resolve("cube.json").toString());
         assertFalse(cube.err().contains("hinge"), "sound paper: " + cube.err());
     }
@@ -104,6 +104,10 @@ class WrapCommandTest {
         CliTest.Run thick = CliTest.run("wrap", "models/cube.off", "--no-view", "--thickness", "0.06");
         assertEquals(2, thick.code(), thick.err());
         assertTrue(thick.err().contains("option --thickness: must be at most a quarter of the width 0.2357"), thick.err());
+        // Taken by the own triangles, which then pass the face limit: that is the wrap's failure.
+        CliTest.Run limited = CliTest.run("wrap", "models/cube.off", "--no-view", "--thickness", "0.03", "--max-faces", "200");
+        assertEquals(1, limited.code(), limited.err());
+        assertTrue(limited.err().contains("more than the limit of 200 faces") && !limited.err().contains("--thickness"), limited.err());
     }
 
     /**

@@ -182,6 +182,11 @@ class CoveredPaperTest {
         assertEquals(over, hidden.faceCover()[top]);
         assertTrue(hidden.cap(0) && hidden.cap(1), "the cap between them is hidden from both sides");
         assertFalse(hidden.face(below) || hidden.face(over), "the outermost paper on each side is seen");
+        Layout tuckedLast = new Layout();
+        tuckedLast.rectangle(0, 0, 1, 1, 4, false);
+        int lying = tuckedLast.rectangle(0.2, 0.2, 0.8, 0.8, 2, false);
+        int lastFlap = tuckedLast.rectangle(0, 0, 1, 1, 0, true); // tucked under both, laid last
+        assertEquals(lastFlap, tuckedLast.covered(T, true).faceCover()[lying], "hidden once the flap under it is laid, not before");
     }
 
     @Test
