@@ -225,8 +225,9 @@ public final class CheckJob {
         Map<String, Object> figures = checked.figures();
         List<String> lines = new ArrayList<>();
         lines.add(what + ": " + figures.get("strips") + (figures.get("strips").equals(1) ? " strip, " : " strips, ")
-                + String.format(java.util.Locale.ROOT, "%,d faces of paper and %,d caps, thickness %s, a stack of %s levels",
-                        (Integer) figures.get("paperFaces"), (Integer) figures.get("capFaces"), figures.get("thickness"), figures.get("stackLayers")));
+                + String.format(java.util.Locale.ROOT, "%,d faces of paper and %,d caps, thickness %.4g, a stack of %s levels",
+                        (Integer) figures.get("paperFaces"), (Integer) figures.get("capFaces"), ((Number) figures.get("thickness")).doubleValue(),
+                        figures.get("stackLayers")));
         lines.add("truths: " + truthsLine(checked.truths(), figures.get("truths")));
         lines.add(checked.collisions() == null ? "collisions: not checked: " + Collisions.NO_THICKNESS
                 : checked.collisions().summary()); // "collisions: ..."

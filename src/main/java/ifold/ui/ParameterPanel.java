@@ -123,9 +123,9 @@ final class ParameterPanel extends JPanel implements javax.swing.Scrollable {
         chooseModelButton.addActionListener(e -> chooseModel.run());
         wrap.row("model", "Model", modelName, null);
         wrap.wide(chooseModelButton);
-        wrap.row("method", "Method", wrapMethod, "the hinge strip: grid polyhedra (--method hinge)");
+        wrap.row("method", "Method", wrapMethod, "zig-zag: any polyhedron; hinge strip: grid polyhedra only (--method hinge)");
         wrapMethod.addActionListener(e -> edited());
-        wrap.row("width", "Width", wrapWidth, "blank: a third of the widest possible; the hinge strip's square");
+        wrap.row("width", "Width", wrapWidth, "blank: a third of the widest (zig-zag), the lattice's square (hinge strip)");
         wrap.row("thickness", "Thickness", wrapThickness, "blank: the width / " + Wrap.WIDTHS_A_THICKNESS);
         wrap.row("maxFaces", "Max faces", wrapMaxFaces, String.format(java.util.Locale.ROOT, "blank: %,d, a gibibyte's worth (about %,d bytes each)", Wrap.DEFAULT_MAX_FACES,
                 Wrap.BYTES_PER_FACE));

@@ -300,6 +300,18 @@ final class SceneView extends JComponent {
         }
     }
 
+    /** {@code text}, cut short with an ellipsis where it is wider than {@code room} pixels. */
+    static String cutShort(String text, FontMetrics metrics, int room) {
+        if (metrics.stringWidth(text) <= room) {
+            return text;
+        }
+        String cut = text;
+        while (cut.length() > 1 && metrics.stringWidth(cut + "…") > room) {
+            cut = cut.substring(0, cut.length() - 1);
+        }
+        return cut.stripTrailing() + "…";
+    }
+
     @Override
     protected void paintComponent(Graphics g) {
         Graphics2D g2 = (Graphics2D) g.create();
@@ -315,23 +327,24 @@ final class SceneView extends JComponent {
             g2.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
             FontMetrics metrics = g2.getFontMetrics();
             if (showStatus) {
-                // The key to the help stays in sight at the right; the rest is cut short before it.
+                // The key to the help stays in sight at the right. Where the line does not fit,
+                // the step shown (the status) has a line of its own above the rest: cut short with
+                // them, a step read "tuck 2: excess folded under along edge CA (seen fro…".
                 String help = "H: help";
-                String line = String.format(Locale.ROOT, "%s | %.0f ms a frame | %s", caption, frameMillis, status);
+                String timing = String.format(Locale.ROOT, "%.0f ms a frame", frameMillis);
                 int room = getWidth() - 12 - metrics.stringWidth(" | " + help) - 6;
-                if (metrics.stringWidth(line) > room) {
-                    while (line.length() > 1 && metrics.stringWidth(line + "…") > room) {
-                        line = line.substring(0, line.length() - 1);
-                    }
-                    line = line.stripTrailing() + "…";
-                }
-                int band = metrics.getHeight() + 6;
-                int baseline = getHeight() - 6 - metrics.getDescent();
+                String line = caption + " | " + timing + " | " + status;
+                List<String> lines = metrics.stringWidth(line) <= room || status.isBlank() ? List.of(cutShort(line, metrics, room))
+                        : List.of(cutShort(status, metrics, getWidth() - 12), cutShort(caption + " | " + timing, metrics, room));
+                int band = lines.size() * metrics.getHeight() + 6;
                 g2.setColor(new Color(0, 0, 0, 150));
                 g2.fillRect(0, getHeight() - band, getWidth(), band);
                 g2.setColor(Color.WHITE);
-                g2.drawString(line + " | ", 6, baseline);
-                g2.drawString(help, getWidth() - 6 - metrics.stringWidth(help), baseline);
+                for (int i = 0; i < lines.size(); i++) {
+                    int baseline = getHeight() - 6 - metrics.getDescent() - (lines.size() - 1 - i) * metrics.getHeight();
+                    g2.drawString(lines.get(i) + (i == lines.size() - 1 ? " | " : ""), 6, baseline);
+                }
+                g2.drawString(help, getWidth() - 6 - metrics.stringWidth(help), getHeight() - 6 - metrics.getDescent());
             }
             if (showHelp) {
                 int lineHeight = metrics.getHeight();

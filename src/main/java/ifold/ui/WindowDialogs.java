@@ -84,7 +84,7 @@ final class WindowDialogs {
         if (chosen == null) {
             return;
         }
-        JFileChooser chooser = new JFileChooser(window.settings.get("folder", System.getProperty("user.dir")));
+        JFileChooser chooser = new SaveChooser(window.settings.get("folder", System.getProperty("user.dir")), this::mayReplace);
         chooser.setDialogTitle("Save the new model");
         chooser.setFileFilter(new FileNameExtensionFilter("Meshes (OFF, OBJ, PLY, STL)", "off", "obj", "ply", "stl"));
         chooser.setSelectedFile(new File(chooser.getCurrentDirectory(), chosen.fileName()));
@@ -142,7 +142,8 @@ final class WindowDialogs {
     }
 
     Path choose(String title, boolean save, FileNameExtensionFilter filter) {
-        JFileChooser chooser = new JFileChooser(window.settings.get("folder", System.getProperty("user.dir")));
+        String lastFolder = window.settings.get("folder", System.getProperty("user.dir"));
+        JFileChooser chooser = save ? new SaveChooser(lastFolder, this::mayReplace) : new JFileChooser(lastFolder);
         chooser.setDialogTitle(title);
         if (filter != null) {
             chooser.setFileFilter(filter);
@@ -164,5 +165,41 @@ final class WindowDialogs {
             window.settings.put("folder", folder.toString());
         }
         return chosen.toPath();
+    }
+
+    /** Asks whether {@code file}, which is there, may be replaced. */
+    private boolean mayReplace(Path file) {
+        return JOptionPane.showConfirmDialog(window, file.getFileName() + " is there already, in " + file.toAbsolutePath().getParent()
+                + ".\nReplace it?", "Replace the file?", JOptionPane.YES_NO_OPTION, JOptionPane.WARNING_MESSAGE) == JOptionPane.YES_OPTION;
+    }
+
+    /**
+     * A save dialog that asks before it replaces a file that is there: exports open in the folder
+     * a model was opened from, with its name, and File, Export OBJ on models/cube.off offered
+     * models/cube.obj, another model, which it replaced without a word.
+     */
+    static final class SaveChooser extends JFileChooser {
+        private static final long serialVersionUID = 1L;
+        private final transient java.util.function.Predicate<Path> mayReplace;
+
+        SaveChooser(String folder, java.util.function.Predicate<Path> mayReplace) {
+            super(folder);
+            this.mayReplace = mayReplace;
+        }
+
+        @Override
+        public void approveSelection() {
+            File file = getSelectedFile();
+            if (file != null && getFileFilter() instanceof FileNameExtensionFilter filter && !file.exists()) {
+                // A name typed without its extension is given the filter's first, as the exports do.
+                String name = file.getName().toLowerCase(java.util.Locale.ROOT);
+                boolean named = java.util.Arrays.stream(filter.getExtensions()).anyMatch(e -> name.endsWith("." + e));
+                file = named ? file : new File(file.getPath() + "." + filter.getExtensions()[0]);
+            }
+            if (file != null && file.exists() && !file.isDirectory() && !mayReplace.test(file.toPath())) {
+                return; // the dialog stays, for another name
+            }
+            super.approveSelection();
+        }
     }
 }
