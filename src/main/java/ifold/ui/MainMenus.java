@@ -162,7 +162,13 @@ final class MainMenus {
             text.append("  ").append(line).append('\n');
         }
         text.append("\nEverywhere: the shortcuts shown in the menus.");
-        JOptionPane.showMessageDialog(window, text.toString(), "Keys", JOptionPane.INFORMATION_MESSAGE);
+        // In the view's own monospaced letters: its lines are aligned by spaces, which a
+        // proportional font scattered.
+        javax.swing.JTextArea keys = new javax.swing.JTextArea(text.toString());
+        keys.setEditable(false);
+        keys.setOpaque(false);
+        keys.setFont(new java.awt.Font(java.awt.Font.MONOSPACED, java.awt.Font.PLAIN, keys.getFont().getSize()));
+        JOptionPane.showMessageDialog(window, keys, "Keys", JOptionPane.INFORMATION_MESSAGE);
     }
 
     void showAbout() {

@@ -161,11 +161,11 @@ public final class Wrap {
             }
             if (w > altitude * LONE_WIDEST) {
                 throw new ParameterException("width", String.format(Locale.ROOT, "%s is wider than the altitude %.4g from the start "
-                        + "corner: one pass of that width already covers the triangle", w, altitude));
+                        + "corner: one pass of that width already covers the triangle", ParameterException.shown(w), altitude));
             }
             if (w < altitude * LONE_NARROWEST) {
                 throw new ParameterException("width", String.format(Locale.ROOT, "%s is under 1/400 of the altitude %.4g from the "
-                        + "start corner: a lone triangle takes at most 400 passes", w, altitude));
+                        + "start corner: a lone triangle takes at most 400 passes", ParameterException.shown(w), altitude));
             }
             return new Options(w, Double.isNaN(thickness) ? defaultThickness(w) : thickness, ends, DEFAULT_MAX_FACES);
         }

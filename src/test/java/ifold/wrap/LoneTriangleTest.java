@@ -157,6 +157,9 @@ class LoneTriangleTest {
                 () -> Wrap.Options.loneTriangle(triangle, ends, altitude / 401, 0)).parameter());
         assertEquals("thickness", assertThrows(ParameterException.class,
                 () -> Wrap.Options.loneTriangle(triangle, ends, 1, 0.3)).parameter());
+        // The width as typed, 50 and not "50.0" (the window's width field said so).
+        assertTrue(assertThrows(ParameterException.class, () -> Wrap.Options.loneTriangle(triangle, ends, 50, Double.NaN)).getMessage()
+                .startsWith("50 is wider than the altitude 8.000"));
     }
 
     @Test
