@@ -149,10 +149,14 @@ public final class AtomicFile {
     /** The files this run has written whole, in order: what an interrupted run leaves. */
     private static final java.util.List<Path> WRITTEN = java.util.Collections.synchronizedList(new java.util.ArrayList<>());
 
-    /** The files this run has written whole so far (renamed into place), in order. */
+    /**
+     * The files this run has written whole so far (renamed into place), in order, and still
+     * there: a file written and taken back since (the window's check writes the wrap into a
+     * folder of its own and deletes it) is no file left, and an interrupted run named one.
+     */
     public static java.util.List<Path> written() {
         synchronized (WRITTEN) {
-            return java.util.List.copyOf(WRITTEN);
+            return WRITTEN.stream().filter(Files::exists).toList();
         }
     }
 

@@ -25,6 +25,19 @@ class AtomicFileTest {
         return file;
     }
 
+    /** What an interrupted run says it left is what is there: a file written and deleted since is not named. */
+    @Test
+    void theFilesWrittenAreThoseStillThere() throws Exception {
+        Path kept = dir.resolve("kept.txt");
+        Path taken = dir.resolve("taken.txt");
+        AtomicFile.write(kept, out -> out.write(1), true);
+        AtomicFile.write(taken, out -> out.write(2), true);
+        assertTrue(AtomicFile.written().containsAll(List.of(kept, taken)), "setup: both written");
+        Files.delete(taken);
+        assertTrue(AtomicFile.written().contains(kept));
+        assertFalse(AtomicFile.written().contains(taken), "taken back: no file left");
+    }
+
     @Test
     void staleTemporaryFilesOfTheSameNameAreSwept() throws Exception {
         Path old = stale(".out.off.47e1c33894c13d2a.tmp");
