@@ -76,11 +76,11 @@ final class Captions {
                 first = text.substring(0, cut);
                 rest = text.substring(cut + 1).strip();
             } else {
-                first = fit(text, small, room);
+                first = TextFit.cutShort(text, small, room);
                 first = first.substring(0, first.length() - 1); // no ellipsis mid-word: it goes on
                 rest = text.substring(first.length()).strip();
             }
-            return new Layout(List.of(first, fit(rest, small, room)), smallFont, tallBand);
+            return new Layout(List.of(first, TextFit.cutShort(rest, small, room)), smallFont, tallBand);
         } finally {
             g.dispose();
         }
@@ -173,7 +173,7 @@ final class Captions {
             Font font = new Font(Font.SANS_SERIF, Font.BOLD, Math.max(13, height / 20));
             FontMetrics metrics = g.getFontMetrics(font);
             int pad = font.getSize() / 2;
-            String shown = fit(text, metrics, width - 4 * pad);
+            String shown = TextFit.cutShort(text, metrics, width - 4 * pad);
             g.setComposite(AlphaComposite.getInstance(AlphaComposite.SRC_OVER, 0.75f));
             g.setColor(Color.WHITE);
             g.fillRoundRect(pad, pad, metrics.stringWidth(shown) + 2 * pad, metrics.getHeight() + pad, pad, pad);
@@ -195,16 +195,4 @@ final class Captions {
         }
     }
 
-    /** The text, cut short with an ellipsis where it would run past {@code room} pixels. */
-
-    private static String fit(String text, FontMetrics metrics, int room) {
-        if (metrics.stringWidth(text) <= room) {
-            return text;
-        }
-        String shown = text;
-        while (shown.length() > 1 && metrics.stringWidth(shown + "…") > room) {
-            shown = shown.substring(0, shown.length() - 1);
-        }
-        return shown.strip() + "…";
-    }
 }

@@ -2,6 +2,7 @@ package ifold.ui;
 
 import ifold.render.OffscreenRenderer;
 import ifold.render.RenderUnavailableException;
+import ifold.render.TextFit;
 import ifold.scene.Scene;
 import ifold.scene.Trackball;
 import ifold.ui.model.Plan;
@@ -300,18 +301,6 @@ final class SceneView extends JComponent {
         }
     }
 
-    /** {@code text}, cut short with an ellipsis where it is wider than {@code room} pixels. */
-    static String cutShort(String text, FontMetrics metrics, int room) {
-        if (metrics.stringWidth(text) <= room) {
-            return text;
-        }
-        String cut = text;
-        while (cut.length() > 1 && metrics.stringWidth(cut + "…") > room) {
-            cut = cut.substring(0, cut.length() - 1);
-        }
-        return cut.stripTrailing() + "…";
-    }
-
     @Override
     protected void paintComponent(Graphics g) {
         Graphics2D g2 = (Graphics2D) g.create();
@@ -334,8 +323,8 @@ final class SceneView extends JComponent {
                 String timing = String.format(Locale.ROOT, "%.0f ms a frame", frameMillis);
                 int room = getWidth() - 12 - metrics.stringWidth(" | " + help) - 6;
                 String line = caption + " | " + timing + " | " + status;
-                List<String> lines = metrics.stringWidth(line) <= room || status.isBlank() ? List.of(cutShort(line, metrics, room))
-                        : List.of(cutShort(status, metrics, getWidth() - 12), cutShort(caption + " | " + timing, metrics, room));
+                List<String> lines = metrics.stringWidth(line) <= room || status.isBlank() ? List.of(TextFit.cutShort(line, metrics, room))
+                        : List.of(TextFit.cutShort(status, metrics, getWidth() - 12), TextFit.cutShort(caption + " | " + timing, metrics, room));
                 int band = lines.size() * metrics.getHeight() + 6;
                 g2.setColor(new Color(0, 0, 0, 150));
                 g2.fillRect(0, getHeight() - band, getWidth(), band);
