@@ -316,6 +316,12 @@ final class MainWindow extends JFrame {
                 }
                 parameters.mark(List.of(problem));
                 say(problem.message());
+                if (job instanceof Job.WrapModel wrap && "model".equals(problem.field()) && !wrap.strict()) {
+                    // Not a model iFold can read (strict, it may be one its repairs would mend):
+                    // recent when it was opened, it is not one to open again.
+                    settings.removeRecent(wrap.model());
+                    menuBar.refreshRecent();
+                }
                 if (job instanceof Job.WrapModel wrap && !shows(wrap.model())) {
                     showModelAlone(wrap, problem.message());
                 }

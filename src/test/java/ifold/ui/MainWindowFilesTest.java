@@ -152,6 +152,32 @@ class MainWindowFilesTest extends WindowTestBase {
         assertTrue(settings.recent().contains(good), "recent once it plays: " + settings.recent());
     }
 
+    /**
+     * A model file that cannot be read is refused at its field and is not left among the recent
+     * files (it went to the top of Open recent); one that can is recent.
+     */
+    @Test
+    void aModelThatCannotBeReadIsNotLeftRecent() throws Exception {
+        Settings settings = settings();
+        window = App.open(null, settings);
+        settled();
+        Path garbage = dir.resolve("garbage.off");
+        Files.writeString(garbage, "OFF\n3 1 0\n0 0 0\nzz 1 0\n0 1 0\n3 0 1 2\n");
+        onEdt(() -> {
+            window.open(garbage);
+            return null;
+        });
+        waitFor("the model refused", 60, () -> !window.isWorking() && window.parameters.isMarked("model"));
+        assertTrue(onEdt(() -> window.parameters.note("model")).contains("garbage.off:4"), "refused at its field, naming the line");
+        assertFalse(settings.recent().contains(garbage.toAbsolutePath().normalize()), "not recent: " + settings.recent());
+        onEdt(() -> {
+            window.open(Path.of("models", "cube.off"));
+            return null;
+        });
+        waitFor("the cube wrapped", 60, () -> !window.isWorking() && window.plan() != null && window.plan().job() instanceof Job.WrapModel);
+        assertTrue(settings.recent().contains(Path.of("models", "cube.off").toAbsolutePath().normalize()), settings.recent().toString());
+    }
+
     /** The progress bar is as high as its text ("1234 / 6398"): it was a few pixels high, the text cut in half. */
     @Test
     void theProgressBarHoldsItsText() throws Exception {

@@ -143,6 +143,21 @@ public final class Settings {
         }
     }
 
+    /** Takes {@code file} off the recent files, where it is among them. */
+    public void removeRecent(Path file) {
+        List<Path> recent = recent();
+        if (!recent.remove(file.toAbsolutePath().normalize())) {
+            return;
+        }
+        for (int i = 0; i < RECENT; i++) {
+            if (i < recent.size()) {
+                values.setProperty("recent." + i, recent.get(i).toString());
+            } else {
+                values.remove("recent." + i);
+            }
+        }
+    }
+
     /** Writes the settings, whole; the folder is made if need be. A file that is not a regular file is left as it is. */
     public void save() throws IOException {
         if (notAFile) {
