@@ -226,26 +226,14 @@ final class WrapCommand implements Callable<Integer> {
         out.println(summary(model, mesh, wrapped.path(), result, wrapped.analysis()));
         outputs.printChecksAndFiles(out);
         out.flush();
-        if (result.method() == Wrap.Method.ZIGZAG && outputs.collided() && gridPolyhedron(mesh)) {
-            // A polycube's zig-zag paper may cross itself (a random one of 30 cubes: 357 pairs),
-            // where the method made for such models lays two layers that do not.
-            err.println("ifold: " + model + ": its paper crosses itself; it is a grid polyhedron, which the hinge strip wraps in two layers"
-                    + " (--method hinge)");
+        String hinge = WrapJob.hingeInstead(model.toString(), mesh, result.method(), outputs.collided());
+        if (hinge != null) {
+            err.println("ifold: " + hinge + " (--method hinge)");
         }
         if (outputs.frameOptions.frames != null || !outputs.noView) {
             show(mesh, result, geometries, written);
         }
         return 0;
-    }
-
-    /** Whether {@code mesh} is a grid polyhedron, every face square to the axes and its corners on one lattice: the hinge strip's. */
-    private static boolean gridPolyhedron(HalfedgeMesh mesh) {
-        try {
-            ifold.mesh.GridSquares.of(mesh, Double.NaN);
-            return true;
-        } catch (ifold.mesh.GridSquares.NotGrid e) {
-            return false;
-        }
     }
 
     /** The model, solid, and the strips laid over it along the path; then a turn around it. */

@@ -245,7 +245,15 @@ public final class Exports {
             progress.check();
             ifold.job.CheckJob.Checked checked = ifold.job.CheckJob.run(new ifold.job.CheckJob.Request(wrap.model(), paper, fold, Double.NaN, -1,
                     ifold.job.CheckJob.DEFAULT_SAMPLES, wrap.strict()), progress.watcher());
-            return new Checked(ifold.job.CheckJob.lines(checked, wrap.model().getFileName().toString()), checked.holds());
+            List<String> lines = new ArrayList<>(ifold.job.CheckJob.lines(checked, wrap.model().getFileName().toString()));
+            if (checked.failures().contains("collisions") && wrap.method() == ifold.wrap.Wrap.Method.ZIGZAG) {
+                String hinge = ifold.job.WrapJob.hingeInstead(wrap.model().getFileName().toString(), ifold.job.ModelFiles.load(wrap.model(),
+                        new ifold.mesh.MeshBuilder.Options(wrap.strict(), true)).built().mesh(), wrap.method(), true);
+                if (hinge != null) {
+                    lines.add(hinge + " (Method: Hinge strip)");
+                }
+            }
+            return new Checked(lines, checked.holds());
         } catch (ifold.job.ModelFiles.LoadFailure e) {
             throw new JobFailure(e.getMessage());
         } catch (ifold.job.CheckJob.Unreadable e) {

@@ -1,6 +1,7 @@
 package ifold.ui.model;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
@@ -8,6 +9,7 @@ import ifold.image.FrameWriter;
 import java.awt.image.BufferedImage;
 import java.nio.file.Path;
 import java.util.Arrays;
+import java.util.List;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -91,6 +93,24 @@ class ExportsTest {
         Plan zigzag = Planning.plan(Job.ZigZag.DEMO, Progress.NONE);
         JobFailure none = org.junit.jupiter.api.Assertions.assertThrows(JobFailure.class, () -> Exports.check(zigzag, Progress.NONE));
         assertTrue(none.getMessage().contains("only a wrap of a model is checked"), none.getMessage());
+    }
+
+    /**
+     * A grid polyhedron whose zig-zag paper crosses itself (a random polycube of 30 cubes): the
+     * check says so and, as the command line does, that the hinge strip wraps it in two layers.
+     */
+    @Test
+    void aCollidingPolycubesCheckPointsToTheHingeStrip() throws Exception {
+        Path polycube = dir.resolve("pc30.off");
+        ifold.job.GenerateJob.run(new ifold.job.GenerateJob.Request(ifold.job.BuiltInModels.Shape.polycube, 24, 12, 3,
+                new ifold.job.BuiltInModels.Grid(new int[] {2, 1, 1}, 30, 5), polycube, false), ifold.job.JobWatcher.NONE);
+        Plan wrapped = Planning.plan(new Job.WrapModel(polycube, "", ""), Progress.NONE);
+        Exports.Checked checked = Exports.check(wrapped, Progress.NONE);
+        assertFalse(checked.holds(), "setup: its paper collides: " + checked.lines());
+        List<String> lines = checked.lines();
+        assertTrue(lines.get(lines.size() - 2).startsWith("failed: collisions"), lines.toString());
+        assertTrue(lines.get(lines.size() - 1).endsWith("its paper crosses itself; it is a grid polyhedron, which the hinge strip"
+                + " wraps in two layers (Method: Hinge strip)"), lines.toString());
     }
 
     /**
