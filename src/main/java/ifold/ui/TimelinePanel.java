@@ -69,10 +69,14 @@ final class TimelinePanel extends JPanel {
         buttons.add(play);
         buttons.add(forward);
         buttons.add(speed);
-        add(buttons, BorderLayout.WEST);
-        add(slider, BorderLayout.CENTER);
+        // The slider on a row of its own, as wide as the view: beside the buttons, a window of
+        // 1024 × 640 left it no width at all, and "fold 5 of 279" shrank to "279".
+        JPanel controls = new JPanel(new BorderLayout(8, 0));
+        controls.add(buttons, BorderLayout.WEST);
         where.setBorder(BorderFactory.createEmptyBorder(0, 8, 0, 0));
-        add(where, BorderLayout.EAST);
+        controls.add(where, BorderLayout.EAST);
+        add(slider, BorderLayout.NORTH);
+        add(controls, BorderLayout.SOUTH);
         folds.setSelectionMode(ListSelectionModel.SINGLE_SELECTION);
         javax.swing.ToolTipManager.sharedInstance().registerComponent(folds);
         folds.setPrototypeCellValue("pass 12 of 40: turn, 45° valley fold and more"); // a fixed height: 100,000 folds list at once
